@@ -1,0 +1,84 @@
+#include "EditorOptions.h"
+
+#include <charconv>
+#include <tuple>
+#include <utility>
+
+namespace lit::editor {
+
+namespace {
+
+// Largest window side accepted, in screen coordinates (GL_MAX_TEXTURE_SIZE on current drivers).
+constexpr int kMaxWindowSide = 16384;
+// Upper bound for --frames: a screenshot run is a test tool, not a benchmark.
+constexpr int kMaxFrames = 100000;
+
+int parseInt(std::string_view text, std::string_view what) {
+    int value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size())
+        throw OptionsError(std::string(what) + ": '" + std::string(text) + "' is not a whole number");
+    return value;
+}
+
+// "1280x720" → {1280, 720}.
+std::pair<int, int> parseSize(std::string_view text) {
+    const std::size_t x = text.find('x');
+    if (x == std::string_view::npos)
+        throw OptionsError("--size: '" + std::string(text) + "' is not WIDTHxHEIGHT (e.g. 1280x720)");
+    const int width = parseInt(text.substr(0, x), "--size width");
+    const int height = parseInt(text.substr(x + 1), "--size height");
+    if (width < 1 || height < 1 || width > kMaxWindowSide || height > kMaxWindowSide)
+        throw OptionsError("--size: " + std::string(text) + " is outside 1x1.." + std::to_string(kMaxWindowSide) + "x" +
+                           std::to_string(kMaxWindowSide));
+    return {width, height};
+}
+
+}  // namespace
+
+EditorOptions parseEditorOptions(std::span<const std::string_view> args) {
+    EditorOptions options;
+    bool framesGiven = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view arg = args[i];
+        auto value = [&]() -> std::string_view {
+            if (i + 1 >= args.size()) throw OptionsError(std::string(arg) + " needs a value");
+            return args[++i];
+        };
+        if (arg == "-h" || arg == "--help") {
+            options.help = true;
+        } else if (arg == "--screenshot") {
+            const std::string_view file = value();
+            if (file.empty()) throw OptionsError("--screenshot needs a file name");
+            options.screenshot = std::filesystem::path(file);
+        } else if (arg == "--frames") {
+            options.frames = parseInt(value(), "--frames");
+            if (options.frames < 1 || options.frames > kMaxFrames)
+                throw OptionsError("--frames must be in 1.." + std::to_string(kMaxFrames));
+            framesGiven = true;
+        } else if (arg == "--size") {
+            std::tie(options.width, options.height) = parseSize(value());
+        } else if (arg.starts_with("-") && arg.size() > 1) {
+            throw OptionsError("unknown option '" + std::string(arg) + "'");
+        } else {
+            if (options.scene)
+                throw OptionsError("more than one scene given ('" + options.scene->string() + "' and '" +
+                                   std::string(arg) + "')");
+            options.scene = std::filesystem::path(arg);
+        }
+    }
+    if (framesGiven && !options.screenshot) throw OptionsError("--frames only applies with --screenshot");
+    return options;
+}
+
+std::string editorUsage() {
+    return "usage: lit-editor [SCENE.gltf|.glb] [--screenshot FILE.png [--frames N]] [--size WxH]\n"
+           "  SCENE              glTF scene to open (default: the built-in Cornell box)\n"
+           "  --screenshot FILE  render N frames, save the window (UI included) as a PNG, exit\n"
+           "  --frames N         frames to render before the screenshot (default 8)\n"
+           "  --size WxH         window size in screen coordinates (default 1280x720)\n"
+           "Controls: right mouse drag to look, WASD to move, Q/E down/up, Shift to go faster,\n"
+           "mouse wheel to change the speed.\n";
+}
+
+}  // namespace lit::editor

@@ -1,0 +1,39 @@
+#pragma once
+// lit-editor's command line:
+//   lit-editor [SCENE] [--screenshot FILE.png [--frames N]] [--size WxH]
+// Parsed into plain data so it can be tested without a window.
+
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace lit::editor {
+
+struct EditorOptions {
+    // Scene to open; none = the built-in Cornell box (lit::defaultScenePath()).
+    std::optional<std::filesystem::path> scene;
+    // Screenshot mode: render `frames` frames (UI included), save the window as this PNG, exit.
+    std::optional<std::filesystem::path> screenshot;
+    // More than Profiler::kFramesInFlight by default, so the stats overlay in the capture
+    // already shows GPU timings (they arrive that many frames late).
+    int frames = 8;
+    int width = 1280;  // window size, screen coordinates
+    int height = 720;
+    bool help = false;
+};
+
+// A command line that cannot be used; the message says which argument and why.
+class OptionsError : public std::runtime_error {
+public:
+    explicit OptionsError(const std::string& message) : std::runtime_error(message) {}
+};
+
+// `args` excludes the program name. Throws OptionsError.
+EditorOptions parseEditorOptions(std::span<const std::string_view> args);
+
+std::string editorUsage();
+
+}  // namespace lit::editor

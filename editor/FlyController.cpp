@@ -1,0 +1,39 @@
+#include "FlyController.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lit::editor {
+
+void applyFlyInput(FlyCamera& camera, const FlyInput& input, float dtSeconds, const FlyControlSettings& settings) {
+    // Look first, so the motion of this frame follows the direction the user now sees.
+    // FlyCamera: positive yaw turns left, positive pitch looks up.
+    camera.yaw -= input.lookPixels.x * settings.radiansPerPixel;
+    camera.pitch -= input.lookPixels.y * settings.radiansPerPixel;
+    camera.pitch = std::clamp(camera.pitch, -settings.maxPitch, settings.maxPitch);
+    // Keep yaw in (−π, π] so it does not grow without bound (and lose float precision).
+    constexpr float kPi = 3.14159265358979f;
+    camera.yaw = std::remainder(camera.yaw, 2.0f * kPi);
+    if (camera.yaw <= -kPi) camera.yaw += 2.0f * kPi;
+
+    if (input.wheelSteps != 0.0f)
+        camera.speed = std::clamp(camera.speed * std::pow(settings.speedStepFactor, input.wheelSteps),
+                                  settings.minSpeed, settings.maxSpeed);
+
+    glm::vec3 direction =
+        camera.right() * input.move.x + glm::vec3(0.0f, 1.0f, 0.0f) * input.move.y + camera.forward() * input.move.z;
+    const float length = glm::length(direction);
+    if (length < 1e-6f || dtSeconds <= 0.0f) return;
+    // Diagonal motion is not faster than straight motion.
+    if (length > 1.0f) direction /= length;
+    const float speed = camera.speed * (input.fast ? settings.fastMultiplier : 1.0f);
+    camera.position += direction * speed * dtSeconds;
+}
+
+float flySpeedForBounds(const Aabb& bounds) {
+    if (bounds.empty()) return 2.0f;
+    const float side = glm::length(bounds.size());
+    return std::clamp(side / 4.0f, 0.1f, 100.0f);
+}
+
+}  // namespace lit::editor

@@ -1,0 +1,38 @@
+#pragma once
+// Turns one frame of input into FlyCamera motion. Input is gathered by the App (from GLFW,
+// filtered by what ImGui wants), so this stays free of any window library and is unit-tested.
+
+#include <glm/glm.hpp>
+
+#include "scene/CameraView.h"
+
+namespace lit::editor {
+
+struct FlyInput {
+    // Requested motion in camera terms, each axis in [−1, 1]: x right, y world up, z forward.
+    glm::vec3 move{0.0f};
+    bool fast = false;
+    // Mouse movement while looking, in pixels (x right, y down as windows report it).
+    glm::vec2 lookPixels{0.0f};
+    // Mouse wheel steps this frame (positive = away from the user = faster).
+    float wheelSteps = 0.0f;
+};
+
+struct FlyControlSettings {
+    float radiansPerPixel = 0.003f;  // look sensitivity: ~0.17° per pixel
+    float fastMultiplier = 5.0f;     // speed factor while Shift is held
+    float speedStepFactor = 1.2f;    // speed multiplied per wheel step
+    float minSpeed = 0.01f;          // metres per second
+    float maxSpeed = 500.0f;         // metres per second
+    // Pitch stays just short of straight up/down so "forward" keeps a horizontal part.
+    float maxPitch = 1.55334f;  // radians (89°)
+};
+
+// Applies `input` over `dtSeconds`: moves along the camera's forward/right and world up,
+// turns (mouse right = turn right, mouse down = look down) and scales the speed by the wheel.
+void applyFlyInput(FlyCamera& camera, const FlyInput& input, float dtSeconds, const FlyControlSettings& settings = {});
+
+// A comfortable default speed for a scene of this size: crossing it takes about 4 seconds.
+float flySpeedForBounds(const Aabb& bounds);
+
+}  // namespace lit::editor

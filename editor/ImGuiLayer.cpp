@@ -1,0 +1,111 @@
+#include "ImGuiLayer.h"
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <array>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+namespace lit::editor {
+
+namespace {
+
+// Text size in pixels: the UI stays readable at 1280x720 and fits the panel layout.
+constexpr float kFontPixels = 15.0f;
+
+// Characters the fonts provide beyond ASCII: Latin-1 and Latin Extended-A (names in files),
+// general punctuation (the driver string's em dash, ellipses), Greek and arrows (units, notes).
+// Zero-terminated pairs of inclusive ranges; ImGui keeps the pointer until the atlas is built.
+constexpr std::array<ImWchar, 11> kGlyphRanges = {
+    0x0020, 0x017F, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0,
+};
+
+ImFont* addFontIfPresent(const char* path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) return nullptr;
+    return ImGui::GetIO().Fonts->AddFontFromFileTTF(path, kFontPixels, nullptr, kGlyphRanges.data());
+}
+
+}  // namespace
+
+ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    // The layout is computed from the window size each run; an imgui.ini written into whatever
+    // directory the editor was started from would override it and make screenshots depend on
+    // earlier sessions.
+    io.IniFilename = nullptr;
+    // The first font added is the default one.
+    uiFont_ = addFontIfPresent("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+    monoFont_ = addFontIfPresent("/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf");
+    if (uiFont_ == nullptr) uiFont_ = io.Fonts->AddFontDefault();
+    if (monoFont_ == nullptr) monoFont_ = uiFont_;
+    io.FontDefault = uiFont_;
+    ImGui::StyleColorsDark();
+    ImGuiStyle& style = ImGui::GetStyle();
+    style.WindowRounding = 4.0f;
+    style.FrameRounding = 3.0f;
+    style.Colors[ImGuiCol_WindowBg].w = 0.90f;  // the viewport shows faintly behind panels
+
+    if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) {
+        ImGui::DestroyContext();
+        throw std::runtime_error("cannot initialise Dear ImGui's GLFW backend");
+    }
+    if (!ImGui_ImplOpenGL3_Init("#version 450")) {
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+        throw std::runtime_error("cannot initialise Dear ImGui's OpenGL 3 backend");
+    }
+    // Ours wraps ImGui's key callback; ImGui_ImplGlfw_Shutdown puts the original back.
+    glfwSetWindowUserPointer(window, this);
+    glfwSetKeyCallback(window, &ImGuiLayer::keyCallback);
+}
+
+void ImGuiLayer::keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+    auto* self = static_cast<ImGuiLayer*>(glfwGetWindowUserPointer(window));
+    if (self != nullptr && action == GLFW_PRESS && key >= 0 && key < kKeyCount)
+        self->pressedSinceFrame_[static_cast<std::size_t>(key)] = true;
+}
+
+void ImGuiLayer::latchShortKeyPresses() {
+    ImGuiIO& io = ImGui::GetIO();
+    for (int key = 0; key < kKeyCount; ++key) {
+        const auto k = static_cast<std::size_t>(key);
+        // A key latched last frame is released now unless it is really held.
+        if (latched_[k] && glfwGetKey(window_, key) != GLFW_PRESS) io.KeysDown[k] = false;
+        latched_[k] = false;
+        // Pressed and already released since the last frame: ImGui would never have seen it.
+        if (pressedSinceFrame_[k] && !io.KeysDown[k]) {
+            io.KeysDown[k] = true;
+            latched_[k] = true;
+        }
+        pressedSinceFrame_[k] = false;
+    }
+}
+
+ImGuiLayer::~ImGuiLayer() {
+    glfwSetWindowUserPointer(window_, nullptr);
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+void ImGuiLayer::beginFrame() {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    latchShortKeyPresses();
+    ImGui::NewFrame();
+}
+
+void ImGuiLayer::render() {
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+}  // namespace lit::editor

@@ -1,0 +1,46 @@
+#pragma once
+// Dear ImGui's context and its GLFW + OpenGL3 backends, created and destroyed together.
+
+#include <array>
+
+struct GLFWwindow;
+struct ImFont;
+
+namespace lit::editor {
+
+class ImGuiLayer {
+public:
+    // Needs the window's GL context current. Installs ImGui's GLFW callbacks (chaining any
+    // installed before) and takes the window's user pointer for its key callback.
+    explicit ImGuiLayer(GLFWwindow* window);
+    ~ImGuiLayer();
+    ImGuiLayer(const ImGuiLayer&) = delete;
+    ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+    // Proportional font for the UI and a monospaced one for numbers and logs. Both are
+    // DejaVu (Debian's fonts-dejavu-core) when installed, else Dear ImGui's built-in font.
+    ImFont* uiFont() const { return uiFont_; }
+    ImFont* monoFont() const { return monoFont_; }
+
+    void beginFrame();
+    // Builds the draw lists and draws them into the current framebuffer (the window's).
+    void render();
+
+private:
+    static constexpr int kKeyCount = 512;  // size of ImGuiIO::KeysDown in 1.86 (GLFW key codes)
+
+    static void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods);
+    void latchShortKeyPresses();
+
+    GLFWwindow* window_;
+    // Dear ImGui 1.86 samples key state once per frame (its input queue came in 1.87), so a key
+    // pressed and released between two frames is lost; with llvmpipe's frames of a second that
+    // is most key presses (Enter, Backspace in text fields). Presses are recorded here and such
+    // keys read as down for one frame.
+    std::array<bool, kKeyCount> pressedSinceFrame_{};
+    std::array<bool, kKeyCount> latched_{};
+    ImFont* uiFont_ = nullptr;
+    ImFont* monoFont_ = nullptr;
+};
+
+}  // namespace lit::editor

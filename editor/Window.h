@@ -1,0 +1,54 @@
+#pragma once
+// The editor's GLFW window with its OpenGL 4.5 core context (current on the creating thread).
+
+#include <glm/glm.hpp>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+struct GLFWwindow;
+
+namespace lit::editor {
+
+// The window system or the driver cannot give us what we need; the message says why.
+class WindowError : public std::runtime_error {
+public:
+    explicit WindowError(const std::string& message) : std::runtime_error(message) {}
+};
+
+// glfwInit / glfwTerminate. Outlives every Window.
+class GlfwLibrary {
+public:
+    GlfwLibrary();  // throws WindowError
+    ~GlfwLibrary();
+    GlfwLibrary(const GlfwLibrary&) = delete;
+    GlfwLibrary& operator=(const GlfwLibrary&) = delete;
+};
+
+class Window {
+public:
+    // Requests a 4.5 core, forward-compatible context (a debug context when `debugContext`),
+    // makes it current and sets the swap interval. Throws WindowError naming GLFW's reason.
+    Window(int width, int height, const char* title, bool debugContext, bool vsync);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    GLFWwindow* handle() const { return window_.get(); }
+    bool shouldClose() const;
+    void requestClose();
+    glm::ivec2 framebufferSize() const;  // pixels; 0×0 while minimized on some platforms
+    // X11 keeps reporting the old framebuffer size while a window is iconified, so the size
+    // alone does not tell whether there is anything to draw.
+    bool iconified() const;
+    void setTitle(const std::string& title);
+    void swapBuffers();
+
+private:
+    struct Destroy {
+        void operator()(GLFWwindow* window) const;
+    };
+    std::unique_ptr<GLFWwindow, Destroy> window_;
+};
+
+}  // namespace lit::editor

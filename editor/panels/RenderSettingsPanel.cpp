@@ -1,0 +1,167 @@
+#include "panels/RenderSettingsPanel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+namespace lit::editor {
+
+namespace {
+
+// Every lit::View, in menu order. Keep in step with the enum in RenderSettings.h.
+constexpr std::array kViews = {
+    View::Final,  View::DirectDiffuse, View::IndirectDiffuse, View::DirectSpecular, View::IndirectSpecular,
+    View::Albedo, View::Normal,        View::ShadowMap,       View::Voxels,         View::RoughnessMetalness,
+};
+
+// A combo over a fixed list of integer choices (texture sizes); returns true on change.
+template <std::size_t N>
+bool comboInt(const char* label, int& value, const std::array<int, N>& choices) {
+    bool changed = false;
+    const std::string preview = std::to_string(value);
+    if (ImGui::BeginCombo(label, preview.c_str())) {
+        for (const int choice : choices) {
+            const std::string text = std::to_string(choice);
+            if (ImGui::Selectable(text.c_str(), choice == value)) {
+                changed = value != choice;
+                value = choice;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+// Angles are stored in radians and shown in degrees.
+bool sliderDegrees(const char* label, float& radians, float minDegrees, float maxDegrees) {
+    constexpr float kDegPerRad = 57.2957795f;
+    float degrees = radians * kDegPerRad;
+    if (!ImGui::SliderFloat(label, &degrees, minDegrees, maxDegrees, "%.1f deg")) return false;
+    radians = degrees / kDegPerRad;
+    return true;
+}
+
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
+    bool changed = false;
+    const std::string current(toString(s.view));
+    if (ImGui::BeginCombo("View", current.c_str())) {
+        for (const View view : kViews) {
+            const std::string name(toString(view));
+            if (ImGui::Selectable(name.c_str(), view == s.view)) {
+                changed |= view != s.view;
+                s.view = view;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    changed |= ImGui::SliderFloat("Exposure", &s.exposure, 0.01f, 16.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    tooltip("Linear multiplier applied before tone mapping");
+    ImGui::SliderFloat("Render scale", &viewport.renderScale, 0.25f, 1.0f, "%.2f");
+    tooltip("Render resolution as a fraction of the window (stretched to fit)");
+    return changed;
+}
+
+bool drawTerms(RenderSettings& s) {
+    bool changed = false;
+    // Two columns (diffuse | specular); a table clips labels in a narrow panel instead of
+    // letting them run into each other.
+    if (ImGui::BeginTable("terms", 2)) {
+        ImGui::TableNextColumn();
+        changed |= ImGui::Checkbox("Direct diffuse", &s.directDiffuse);
+        ImGui::TableNextColumn();
+        changed |= ImGui::Checkbox("Direct specular", &s.directSpecular);
+        ImGui::TableNextColumn();
+        changed |= ImGui::Checkbox("Indirect diffuse", &s.indirectDiffuse);
+        ImGui::TableNextColumn();
+        changed |= ImGui::Checkbox("Indirect specular", &s.indirectSpecular);
+        ImGui::EndTable();
+    }
+    return changed;
+}
+
+bool drawShadows(RenderSettings& s, int lightCount) {
+    bool changed = ImGui::Checkbox("Shadows", &s.shadows);
+    ImGui::BeginDisabled(!s.shadows);
+    changed |= comboInt("Map size", s.shadowMapSize, std::array{256, 512, 1024, 2048, 4096});
+    tooltip("Texels per side of each shadow map (and of each cube face)");
+    changed |= ImGui::DragFloat("Depth bias", &s.shadowDepthBias, 0.00001f, 0.0f, 0.01f, "%.5f");
+    tooltip("Constant bias in light clip-space depth");
+    changed |= ImGui::DragFloat("Slope bias", &s.shadowSlopeBias, 0.05f, 0.0f, 10.0f, "%.2f");
+    tooltip("Multiplies the depth slope (glPolygonOffset factor)");
+    changed |= ImGui::DragFloat("Normal offset", &s.shadowNormalOffset, 0.05f, 0.0f, 10.0f, "%.2f texels");
+    tooltip("Receiver offset along its normal, in shadow-map texels");
+    changed |= ImGui::SliderFloat("PCF radius", &s.shadowPcfRadius, 0.0f, 5.0f, "%.2f texels");
+    tooltip("Filter kernel radius, in shadow-map texels");
+    ImGui::EndDisabled();
+    if (s.view == View::ShadowMap) {
+        const int lastLight = std::max(lightCount - 1, 0);
+        changed |= ImGui::SliderInt("Shown light", &s.shadowDebugLight, 0, lastLight);
+        s.shadowDebugLight = std::clamp(s.shadowDebugLight, 0, lastLight);
+    }
+    return changed;
+}
+
+bool drawGlobalIllumination(RenderSettings& s) {
+    bool changed = ImGui::Checkbox("Cone-traced GI", &s.gi);
+    ImGui::BeginDisabled(!s.gi);
+    changed |= comboInt("Voxels per side", s.voxelResolution, std::array{64, 128, 256, 512});
+    changed |= ImGui::SliderFloat("Indirect intensity", &s.indirectIntensity, 0.0f, 4.0f, "%.2f");
+    changed |= ImGui::SliderInt("Specular cones", &s.specularSamples, 1, 8);
+    changed |= sliderDegrees("Diffuse aperture", s.diffuseConeAperture, 10.0f, 90.0f);
+    tooltip("Full opening angle of each diffuse cone");
+    changed |= ImGui::SliderFloat("Max distance", &s.maxTraceDistance, 0.05f, 1.0f, "%.2f");
+    tooltip("Longest cone, as a fraction of the voxel volume's side");
+    changed |= ImGui::SliderFloat("Step scale", &s.coneStepScale, 0.1f, 2.0f, "%.2f");
+    tooltip("Step along a cone = scale x cone diameter (smaller is slower and smoother)");
+    ImGui::EndDisabled();
+    if (s.view == View::Voxels) {
+        ImGui::Separator();
+        ImGui::TextDisabled("Voxel view");
+        changed |= ImGui::SliderFloat("Slice", &s.voxelSlice, 0.0f, 1.0f, "%.3f");
+        constexpr std::array kAxes = {"X", "Y", "Z"};
+        changed |= ImGui::Combo("Slice axis", &s.voxelSliceAxis, kAxes.data(), static_cast<int>(kAxes.size()));
+        const int lastMip = std::max(static_cast<int>(std::log2(std::max(s.voxelResolution, 1))), 0);
+        changed |= ImGui::SliderInt("Mip", &s.voxelMip, 0, lastMip);
+    }
+    return changed;
+}
+
+}  // namespace
+
+bool drawRenderSettingsPanel(RenderSettings& settings, ViewportSettings& viewport, int lightCount,
+                             const Placement& placement, bool* open) {
+    placeNextWindow(placement);
+    if (!ImGui::Begin("Render settings", open)) {
+        ImGui::End();
+        return false;
+    }
+    // Labels on the right take ~45% of the width; sliders get the rest.
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+    bool changed = drawOutput(settings, viewport);
+    if (ImGui::CollapsingHeader("Terms", ImGuiTreeNodeFlags_DefaultOpen)) changed |= drawTerms(settings);
+    if (ImGui::CollapsingHeader("Shadows", ImGuiTreeNodeFlags_DefaultOpen))
+        changed |= drawShadows(settings, lightCount);
+    if (ImGui::CollapsingHeader("Global illumination")) changed |= drawGlobalIllumination(settings);
+    ImGui::Separator();
+    if (ImGui::Button("Reset to defaults")) {
+        // Keep the output size: it belongs to the window, not to the user's choices.
+        RenderSettings defaults;
+        defaults.width = settings.width;
+        defaults.height = settings.height;
+        changed |= defaults != settings;
+        settings = defaults;
+        viewport = ViewportSettings{};
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return changed;
+}
+
+}  // namespace lit::editor

@@ -1,0 +1,85 @@
+#pragma once
+// Per-pass GPU and CPU timings without stalling the pipeline.
+//
+// Each pass is bracketed by a Scope (RAII) that pushes a KHR_debug group with the pass name,
+// issues GL_TIME_ELAPSED queries and measures CPU time. Query results are read back
+// kFramesInFlight frames later, when they are ready, so reading never waits on the GPU.
+// Passes that did not run in a frame (e.g. voxelization when nothing changed) report 0 for it.
+
+#include "gl/Handle.h"
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace lit {
+
+struct PassTiming {
+    std::string name;
+    double gpuMs = 0.0;  // GPU time of the pass in the latest frame whose queries are ready
+    double cpuMs = 0.0;  // CPU time spent issuing the pass
+    bool ran = false;    // whether the pass ran in that frame
+};
+
+class Profiler {
+public:
+    static constexpr int kFramesInFlight = 4;
+
+    class Scope {
+    public:
+        Scope(Profiler& profiler, const char* name);
+        ~Scope();
+        Scope(const Scope&) = delete;
+        Scope& operator=(const Scope&) = delete;
+
+    private:
+        Profiler& profiler_;
+        int slot_;
+        std::chrono::steady_clock::time_point start_;
+    };
+
+    Profiler();
+
+    // Frame boundaries: beginFrame collects finished queries from earlier frames.
+    void beginFrame();
+    void endFrame();
+
+    // Latest completed timings, in first-use pass order.
+    const std::vector<PassTiming>& timings() const { return latest_; }
+    double gpuMs(const std::string& pass) const;  // 0 when unknown
+    double totalGpuMs() const;
+    double lastCpuFrameMs() const { return lastCpuFrameMs_; }
+    std::uint64_t completedFrames() const { return completedFrames_; }
+
+    // Blocks until every issued query is available and collects them (for benchmarks and tests
+    // that need the timings of the frame they just rendered).
+    void flush();
+
+private:
+    struct Sample {
+        int passIndex;
+        gl::QueryHandle begin, end;  // GL_TIMESTAMP pairs: nested scopes stay correct
+        double cpuMs;
+    };
+    struct Frame {
+        std::vector<Sample> samples;
+        bool pending = false;
+    };
+
+    int passIndex(const char* name);
+    bool collect(Frame& frame, bool wait);
+
+    std::vector<std::string> passNames_;
+    std::array<Frame, kFramesInFlight> frames_;
+    int current_ = 0;
+    std::vector<PassTiming> latest_;
+    std::uint64_t completedFrames_ = 0;
+    std::chrono::steady_clock::time_point frameStart_;
+    double lastCpuFrameMs_ = 0.0;
+    std::vector<gl::QueryHandle> pool_;
+};
+
+}  // namespace lit

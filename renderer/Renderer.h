@@ -1,0 +1,77 @@
+#pragma once
+// The renderer: owns the GPU copy of a Scene and the passes, and renders a frame from a
+// CameraView with RenderSettings into its own output textures. Front ends (lit-editor,
+// lit-render, tests) use only this API; none of them reaches into a pass.
+//
+// Frame (see docs/ARCHITECTURE.md): shadow maps → G-buffer → [voxelize → inject → mipmaps when
+// dirty] → lighting terms → compose → tone map. The output is an sRGB8 texture; the linear HDR
+// image of the chosen view is kept too, for --hdr and the tests.
+
+#include "Log.h"
+#include "Profiler.h"
+#include "RenderSettings.h"
+#include "scene/CameraView.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace lit {
+
+struct Scene;
+namespace gl {
+class Texture;
+}
+
+struct FrameStats {
+    int drawCalls = 0;          // draw calls issued this frame (all passes)
+    std::size_t triangles = 0;  // triangles drawn in the G-buffer pass
+    bool voxelized = false;     // the voxel volume was rebuilt this frame
+    bool injected = false;      // radiance was re-injected this frame
+    std::size_t voxelBytes = 0; // GPU memory of the voxel volumes
+};
+
+class Renderer {
+public:
+    // Needs a current GL 4.5 core context; throws gl::GlError when it lacks features or the
+    // shaders do not build. `shaderRoot` is the shaders/ folder.
+    Renderer(std::filesystem::path shaderRoot, Log& log);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Uploads meshes, materials and textures. Call again after loading another scene.
+    void setScene(const Scene& scene);
+
+    // Renders one frame of `scene` (the one given to setScene, possibly edited since) into the
+    // output textures, sized settings.width × settings.height. A 0×0 size renders nothing.
+    void render(const Scene& scene, const CameraView& camera, const RenderSettings& settings);
+
+    // Output of the last frame: tone-mapped sRGB (GL_SRGB8_ALPHA8) and linear HDR (GL_RGBA16F
+    // → GL_RGBA32F on read) of settings.view.
+    const gl::Texture& outputTexture() const;
+    const gl::Texture& hdrTexture() const;
+    std::vector<std::uint8_t> readOutputRgba8() const;  // bottom-up rows, RGBA8
+    std::vector<float> readHdrRgb() const;              // bottom-up rows, linear RGB float
+
+    // Recompiles shaders whose files changed; on error the log says so and the last good
+    // program stays. Returns true if anything was reloaded.
+    bool reloadChangedShaders();
+
+    Profiler& profiler();
+    const FrameStats& stats() const;
+    Log& log();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Where shaders/ and assets/ are: $LIT_SHADER_DIR / $LIT_ASSET_DIR when set, else the source
+// tree this binary was built from.
+std::filesystem::path defaultShaderRoot();
+std::filesystem::path defaultAssetRoot();
+std::filesystem::path defaultScenePath();  // the built-in Cornell box
+
+}  // namespace lit

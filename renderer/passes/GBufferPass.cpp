@@ -1,0 +1,60 @@
+#include "passes/GBufferPass.h"
+
+#include "scene/GpuScene.h"
+
+#include <shared.h>
+
+namespace lit {
+
+GBufferPass::GBufferPass(const std::filesystem::path& shaderRoot)
+    : program_(shaderRoot, "gbuffer",
+               {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "gbuffer.frag.glsl"}}) {}
+
+void GBufferPass::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    width_ = width;
+    height_ = height;
+    albedo_ = gl::Texture("gbuffer albedo", {GL_TEXTURE_2D, GL_SRGB8_ALPHA8, width, height, 1, 1});
+    normal_ = gl::Texture("gbuffer normal", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
+    material_ = gl::Texture("gbuffer material", {GL_TEXTURE_2D, GL_RGBA8, width, height, 1, 1});
+    emissive_ = gl::Texture("gbuffer emissive", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
+    depth_ = gl::Texture("gbuffer depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, 1});
+    for (const gl::Texture* t : {&albedo_, &normal_, &material_, &emissive_, &depth_}) t->setFilter(GL_NEAREST, GL_NEAREST);
+    framebuffer_ = gl::Framebuffer("gbuffer");
+    framebuffer_.attach(GL_COLOR_ATTACHMENT0, albedo_);
+    framebuffer_.attach(GL_COLOR_ATTACHMENT1, normal_);
+    framebuffer_.attach(GL_COLOR_ATTACHMENT2, material_);
+    framebuffer_.attach(GL_COLOR_ATTACHMENT3, emissive_);
+    framebuffer_.attach(GL_DEPTH_ATTACHMENT, depth_);
+    framebuffer_.setDrawBuffers(4);
+    framebuffer_.checkComplete("gbuffer");
+}
+
+void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters) {
+    framebuffer_.bind();
+    glViewport(0, 0, width_, height_);
+    const float zero[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);  // back faces are shaded with flipped normals (see gbuffer.frag.glsl)
+    // Linear values written to the sRGB albedo target are encoded by the hardware.
+    glEnable(GL_FRAMEBUFFER_SRGB);
+    program_.use();
+    gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
+    gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+}
+
+void GBufferPass::bindTargets() const {
+    albedo_.bind(LIT_TEX_GBUFFER_ALBEDO);
+    normal_.bind(LIT_TEX_GBUFFER_NORMAL);
+    material_.bind(LIT_TEX_GBUFFER_MATERIAL);
+    emissive_.bind(LIT_TEX_GBUFFER_EMISSIVE);
+    depth_.bind(LIT_TEX_GBUFFER_DEPTH);
+}
+
+}  // namespace lit

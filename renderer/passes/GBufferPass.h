@@ -1,0 +1,33 @@
+#pragma once
+// G-buffer pass: rasterizes the scene once from the camera and stores per-pixel surface data.
+// Targets: albedo (SRGB8_A8: base colour + occlusion), normal (RGBA16F world normal),
+// material (RGBA8: roughness, metalness), emissive (RGBA16F radiance), depth (32F).
+
+#include "passes/Pass.h"
+
+namespace lit {
+
+class GpuScene;
+struct DrawCounters;
+struct Scene;
+
+class GBufferPass : public Pass {
+public:
+    explicit GBufferPass(const std::filesystem::path& shaderRoot);
+
+    void resize(int width, int height);
+    void execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters);
+    // Binds the targets to LIT_TEX_GBUFFER_* for the full-screen passes.
+    void bindTargets() const;
+
+    const gl::Texture& depth() const { return depth_; }
+    std::vector<gl::Program*> programs() override { return {&program_}; }
+
+private:
+    gl::Program program_;
+    gl::Texture albedo_, normal_, material_, emissive_, depth_;
+    gl::Framebuffer framebuffer_;
+    int width_ = 0, height_ = 0;
+};
+
+}  // namespace lit

@@ -1,0 +1,41 @@
+#pragma once
+// Radiance injection: lights the voxel volume. For every occupied voxel, the outgoing radiance of
+// a Lambertian surface under the scene's direct light (with shadows) plus its emission goes into
+// level 0 of the radiance volume; empty voxels get 0 (opacity 0). See shaders/inject.comp.glsl.
+
+#include "passes/Pass.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace lit {
+
+class VoxelVolume;
+
+class InjectPass : public Pass {
+public:
+    explicit InjectPass(const std::filesystem::path& shaderRoot);
+
+    // Writes level 0 of volume.radiance() from the material volumes (after VoxelizePass).
+    // The caller must have bound, as for the direct-lighting pass:
+    //   - the frame UBO at LIT_UBO_FRAME (only counts.x, the light count, is read),
+    //   - the light table SSBO at LIT_SSBO_LIGHTS,
+    //   - the shadow maps (ShadowPass::bindMaps) at LIT_TEX_SHADOW_2D / LIT_TEX_SHADOW_CUBE.
+    // Binds itself: the voxel UBO (volume.uniforms(), which must be up to date) and the image
+    // units LIT_IMG_VOXEL_ALBEDO/NORMAL/EMISSION (read) and LIT_IMG_VOXEL_RADIANCE (write).
+    // Ends with an image-access + texture-fetch barrier; the mip levels are left to the mipmap pass.
+    void execute(const VoxelVolume& volume);
+
+    std::vector<gl::Program*> programs() override { return {&program_}; }
+
+private:
+    gl::Program program_;
+};
+
+// Level `level` of the radiance volume as linear radiance, rgb W/(sr·m²), a opacity; x fastest,
+// then y, then z. An RGBA8 volume is decoded with `rgba8Range`, the RenderSettings::
+// voxelRadianceRange it was injected with. Stalls the pipeline (tests, debug tools).
+std::vector<glm::vec4> readRadianceVoxels(const VoxelVolume& volume, int level = 0, float rgba8Range = 1.0f);
+
+}  // namespace lit

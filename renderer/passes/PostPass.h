@@ -1,0 +1,36 @@
+#pragma once
+// Post processing: the composite (sum of terms or a debug view → linear HDR image) and the tone
+// mapper (exposure + ACES → sRGB output). Both are full-screen passes.
+
+#include "RenderSettings.h"
+#include "passes/Pass.h"
+
+namespace lit {
+
+class PostPass : public Pass {
+public:
+    explicit PostPass(const std::filesystem::path& shaderRoot);
+
+    void resize(int width, int height);
+    // Writes the HDR image of settings.view. Expects G-buffer, terms and frame UBO bound.
+    // `shadowLayer` is the 2D shadow-array layer the shadow-map view shows (-1 for none).
+    void composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer);
+    // Tone maps the HDR image into the sRGB output.
+    void tonemap(const RenderSettings& settings);
+
+    const gl::Texture& hdr() const { return hdr_; }
+    const gl::Texture& output() const { return output_; }
+    std::vector<gl::Program*> programs() override { return {&composite_, &tonemap_}; }
+
+private:
+    gl::Program composite_, tonemap_;
+    FullscreenTriangle triangle_;
+    gl::Texture hdr_, output_;
+    gl::Framebuffer hdrFramebuffer_, outputFramebuffer_;
+    gl::Sampler plainSampler_;
+    int width_ = 0, height_ = 0;
+};
+
+bool isDataView(View view);
+
+}  // namespace lit

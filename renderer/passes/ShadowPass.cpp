@@ -1,0 +1,95 @@
+#include "passes/ShadowPass.h"
+
+#include "scene/GpuScene.h"
+#include "scene/Scene.h"
+
+#include <shared.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+
+namespace lit {
+
+ShadowPass::ShadowPass(const std::filesystem::path& shaderRoot)
+    : program_(shaderRoot, "shadow",
+               {{GL_VERTEX_SHADER, "shadow.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow.frag.glsl"}}),
+      framebuffer_("shadow"),
+      uniforms_("shadow pass uniforms", sizeof(gpu::ShadowPassUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT),
+      comparisonSampler_("shadow comparison") {
+    comparisonSampler_.set(GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    comparisonSampler_.set(GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    comparisonSampler_.set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    comparisonSampler_.set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    comparisonSampler_.set(GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    comparisonSampler_.set(GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    ensureMaps(16, 1, 1);
+}
+
+void ShadowPass::ensureMaps(int size, int layers2d, int cubes) {
+    layers2d = std::max(layers2d, 1);
+    cubes = std::max(cubes, 1);
+    if (size == size_ && layers2d == layers2d_ && cubes == cubes_) return;
+    size_ = size;
+    layers2d_ = layers2d;
+    cubes_ = cubes;
+    maps2d_ = gl::Texture("shadow maps 2D", {GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, size, size, layers2d, 1});
+    mapsCube_ = gl::Texture("shadow maps cube", {GL_TEXTURE_CUBE_MAP_ARRAY, GL_DEPTH_COMPONENT32F, size, size, 6 * cubes, 1});
+    // Clear to the far plane so lights without a rendered map (none yet) see everything lit.
+    const float one = 1.0f;
+    glClearTexImage(maps2d_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+    glClearTexImage(mapsCube_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+}
+
+std::size_t ShadowPass::memoryBytes() const {
+    return static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_) * 4u *
+           static_cast<std::size_t>(layers2d_ + 6 * cubes_);
+}
+
+void ShadowPass::bindMaps() const {
+    maps2d_.bind(LIT_TEX_SHADOW_2D);
+    mapsCube_.bind(LIT_TEX_SHADOW_CUBE);
+    comparisonSampler_.bind(LIT_TEX_SHADOW_2D);
+    comparisonSampler_.bind(LIT_TEX_SHADOW_CUBE);
+}
+
+void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
+                         const RenderSettings& settings, DrawCounters& counters) {
+    const int size = std::clamp(settings.shadowMapSize, 16, 8192);
+    ensureMaps(size, static_cast<int>(lights.shadows2d.size()), static_cast<int>(lights.shadowsCube.size()));
+    if (gpuScene.empty()) return;
+
+    glViewport(0, 0, size, size);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);  // both faces cast: thin single-sided walls must block light
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    // Slope-scaled bias in depth-buffer units; the constant part is in the receiver test.
+    glPolygonOffset(settings.shadowSlopeBias, 1.0f);
+    program_.use();
+    uniforms_.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_SHADOW_PASS);
+    gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
+    framebuffer_.bind();
+    framebuffer_.setDrawBuffers(0);
+
+    const auto renderView = [&](const gl::Texture& target, int layer, const glm::mat4& viewProjection,
+                                const glm::vec3& position, float farPlane) {
+        framebuffer_.attachLayer(GL_DEPTH_ATTACHMENT, target, layer);
+        const float one = 1.0f;
+        glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
+        gpu::ShadowPassUniforms u{viewProjection, glm::vec4(position, farPlane)};
+        uniforms_.update(u);
+        gpuScene.draw(scene, program_, GpuScene::Bind::AlphaOnly, counters);
+    };
+    for (const ShadowView& view : lights.shadows2d)
+        renderView(maps2d_, view.layer, view.viewProjection[0], view.position, view.farPlane);
+    for (const ShadowView& view : lights.shadowsCube)
+        for (int face = 0; face < 6; ++face)
+            renderView(mapsCube_, view.layer * 6 + face, view.viewProjection[face], view.position, view.farPlane);
+
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace lit

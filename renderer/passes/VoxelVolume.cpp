@@ -1,0 +1,153 @@
+#include "passes/VoxelVolume.h"
+
+#include "Log.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+
+namespace lit {
+
+namespace {
+constexpr int kMinResolution = 64;
+constexpr int kMaxResolution = 512;
+
+std::size_t bytesFor(int n, bool rgba8) {
+    const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
+    const std::size_t material = voxels * 4 * 3;
+    // A full 3D mip chain adds 1/8 + 1/64 + ... ≈ 1/7 of the base level.
+    const std::size_t radiance = voxels * (rgba8 ? 4 : 8) * 8 / 7;
+    return material + radiance;
+}
+
+std::string mib(std::size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    return text;
+}
+}  // namespace
+
+std::size_t queryFreeGpuMemory() {
+    GLint kb[4] = {0, 0, 0, 0};
+    if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
+        glGetIntegerv(GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX, kb);
+        return static_cast<std::size_t>(kb[0]) * 1024;
+    }
+    if (epoxy_has_gl_extension("GL_ATI_meminfo")) {
+        glGetIntegerv(GL_TEXTURE_FREE_MEMORY_ATI, kb);
+        return static_cast<std::size_t>(kb[0]) * 1024;
+    }
+    return 0;
+}
+
+int largestVoxelResolutionFor(std::size_t availableBytes, bool radianceRgba8) {
+    if (availableBytes == 0) return kMaxResolution;
+    int n = kMaxResolution;
+    // Leave a quarter of the free memory to everything else.
+    while (n > kMinResolution && bytesFor(n, radianceRgba8) > availableBytes / 4 * 3) n /= 2;
+    return n;
+}
+
+VoxelVolume::VoxelVolume() : uniforms_("voxel uniforms", sizeof(gpu::VoxelUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
+
+bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
+    int n = requested;
+    if (n < kMinResolution || n > kMaxResolution || !std::has_single_bit(static_cast<unsigned>(std::max(n, 1)))) {
+        // Nearest power of two inside the supported range.
+        const int clamped = std::clamp(n, kMinResolution, kMaxResolution);
+        const int below = static_cast<int>(std::bit_floor(static_cast<unsigned>(clamped)));
+        n = (clamped - below < below * 2 - clamped || below * 2 > kMaxResolution) ? below : below * 2;
+        log.warning("voxel resolution " + std::to_string(requested) + " is not a power of two in [" +
+                    std::to_string(kMinResolution) + ", " + std::to_string(kMaxResolution) + "]; using " +
+                    std::to_string(n));
+    }
+    GLint max3d = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
+    if (n > max3d) {
+        log.warning("voxel resolution " + std::to_string(n) + " exceeds this GPU's 3D texture limit " +
+                    std::to_string(max3d) + "; using " + std::to_string(max3d));
+        n = static_cast<int>(std::bit_floor(static_cast<unsigned>(max3d)));
+    }
+    if (n == resolution_ && radianceRgba8 == rgba8_) return false;
+    const std::size_t free = queryFreeGpuMemory();
+    const int fits = largestVoxelResolutionFor(free, radianceRgba8);
+    if (n > fits) {
+        log.warning("a " + std::to_string(n) + "³ voxel volume needs " + mib(bytesFor(n, radianceRgba8)) +
+                    " but the GPU reports " + mib(free) + " free; using " + std::to_string(fits) + "³");
+        n = fits;
+        if (n == resolution_ && radianceRgba8 == rgba8_) return false;
+    }
+
+    resolution_ = n;
+    rgba8_ = radianceRgba8;
+    mipCount_ = gl::Texture::mipCount(n, n, n);
+    albedo_ = gl::Texture("voxel albedo", {GL_TEXTURE_3D, GL_R32UI, n, n, n, 1});
+    normal_ = gl::Texture("voxel normal", {GL_TEXTURE_3D, GL_R32UI, n, n, n, 1});
+    emission_ = gl::Texture("voxel emission", {GL_TEXTURE_3D, GL_R32UI, n, n, n, 1});
+    for (const gl::Texture* t : {&albedo_, &normal_, &emission_}) t->setFilter(GL_NEAREST, GL_NEAREST);
+    radiance_ = gl::Texture("voxel radiance", {GL_TEXTURE_3D, radianceFormat(), n, n, n, mipCount_});
+    radiance_.setFilter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    radiance_.setWrap(GL_CLAMP_TO_BORDER);  // outside the volume is empty: opacity 0
+    const float transparent[4] = {0, 0, 0, 0};
+    glTextureParameterfv(radiance_.id(), GL_TEXTURE_BORDER_COLOR, transparent);
+    for (int level = 0; level < mipCount_; ++level)
+        glClearTexImage(radiance_.id(), level, GL_RGBA, GL_FLOAT, transparent);
+    clearMaterials();
+    log.info("voxel volume " + std::to_string(n) + "³ (" + (rgba8_ ? "RGBA8" : "RGBA16F") + " radiance): " +
+             memoryReport());
+    return true;
+}
+
+bool VoxelVolume::fitTo(const Aabb& sceneBounds) {
+    const Aabb bounds = sceneBounds.empty() ? Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)} : sceneBounds;
+    const float extent = std::max({bounds.size().x, bounds.size().y, bounds.size().z, 1e-3f});
+    // Pad by 2 voxels on each side so surfaces on the bounds (walls) lie inside, with room for
+    // the conservative-rasterization expansion.
+    const float side = extent * static_cast<float>(resolution_) / static_cast<float>(std::max(resolution_ - 4, 1));
+    const glm::vec3 min = bounds.center() - glm::vec3(0.5f * side);
+    const bool moved = side != side_ || min != min_;
+    side_ = side;
+    min_ = min;
+    return moved;
+}
+
+void VoxelVolume::updateUniforms(const RenderSettings& settings, int frameIndex) {
+    gpu::VoxelUniforms u{};
+    u.volumeMin = glm::vec4(min_, side_);
+    const float n = static_cast<float>(resolution_);
+    u.voxelInfo = glm::vec4(n, 1.0f / n, side_ / n, static_cast<float>(mipCount_));
+    u.traceParams = glm::vec4(settings.indirectIntensity, settings.maxTraceDistance * side_,
+                              std::max(settings.coneStepScale, 0.05f), settings.diffuseConeAperture);
+    u.traceOptions = glm::ivec4(std::clamp(settings.specularSamples, 1, 8), frameIndex,
+                                rgba8_ ? LIT_RADIANCE_RGBA8 : LIT_RADIANCE_FLOAT16, 0);
+    const float range = rgba8_ ? std::max(settings.voxelRadianceRange, 1e-3f) : 1.0f;
+    u.radianceScale = glm::vec4(1.0f / range, range, 0.0f, 0.0f);
+    uniforms_.update(u);
+    uniforms_.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
+}
+
+void VoxelVolume::clearMaterials() const {
+    const GLuint zero = 0;
+    for (const gl::Texture* t : {&albedo_, &normal_, &emission_})
+        if (*t) glClearTexImage(t->id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+std::size_t VoxelVolume::materialBytes() const {
+    return static_cast<std::size_t>(resolution_) * resolution_ * resolution_ * 4 * 3;
+}
+
+std::size_t VoxelVolume::radianceBytes() const {
+    std::size_t bytes = 0;
+    for (int level = 0, n = resolution_; level < mipCount_; ++level, n = std::max(n / 2, 1))
+        bytes += static_cast<std::size_t>(n) * n * n * (rgba8_ ? 4 : 8);
+    return bytes;
+}
+
+std::string VoxelVolume::memoryReport() const {
+    const std::size_t each = materialBytes() / 3;
+    return "albedo " + mib(each) + ", normal " + mib(each) + ", emission " + mib(each) + ", radiance " +
+           mib(radianceBytes()) + " (with mips), total " + mib(totalBytes());
+}
+
+}  // namespace lit

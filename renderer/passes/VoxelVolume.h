@@ -1,0 +1,80 @@
+#pragma once
+// The voxel volume of voxel cone tracing: a cube around the scene, N voxels per side.
+//
+//   albedo    r32ui  N³, 1 level   packed RGBA8: rgb base colour (linear), a = sample count (running average)
+//   normal    r32ui  N³, 1 level   packed RGBA8: xyz normal·0.5+0.5, a = sample count
+//   emission  r32ui  N³, 1 level   packed RGBA8: rgb emitted radiance / emission range, a = sample count
+//   radiance  RGBA16F (or RGBA8) N³, full mip chain: rgb outgoing radiance, a opacity (0..1)
+//
+// The material volumes use r32ui because GLSL has atomics only on 32-bit integers: fragments that
+// land in the same voxel average with a compare-and-swap loop (voxel.glsl) instead of flickering.
+// A voxel is occupied when its albedo count (alpha) is non-zero.
+
+#include "RenderSettings.h"
+#include "gl/Objects.h"
+#include "scene/Aabb.h"
+
+#include <shared.h>
+
+#include <string>
+
+namespace lit {
+
+class Log;
+
+class VoxelVolume {
+public:
+    VoxelVolume();
+
+    // Validates `requested` (power of two, 64..512, fits in GPU memory): an invalid value is
+    // clamped to the nearest valid one with a warning in `log`. Reallocates when the resolution
+    // or format changes and returns true (the caller must re-voxelize).
+    bool ensure(int requested, bool radianceRgba8, Log& log);
+    // Places the cube around `sceneBounds` (padded by a few voxels so geometry on the bounds is
+    // inside) and returns whether it moved (the caller must re-voxelize).
+    bool fitTo(const Aabb& sceneBounds);
+    // Uploads VoxelUniforms from the volume placement and `settings`, binds it to LIT_UBO_VOXEL.
+    void updateUniforms(const RenderSettings& settings, int frameIndex);
+
+    // Zeroes the material volumes (before voxelization).
+    void clearMaterials() const;
+
+    int resolution() const { return resolution_; }
+    int mipCount() const { return mipCount_; }
+    glm::vec3 minCorner() const { return min_; }
+    float side() const { return side_; }
+    float voxelSize() const { return side_ / static_cast<float>(resolution_); }
+    bool radianceRgba8() const { return rgba8_; }
+    GLenum radianceFormat() const { return rgba8_ ? GL_RGBA8 : GL_RGBA16F; }
+
+    const gl::Texture& albedo() const { return albedo_; }
+    const gl::Texture& normal() const { return normal_; }
+    const gl::Texture& emission() const { return emission_; }
+    const gl::Texture& radiance() const { return radiance_; }
+    const gl::Buffer& uniforms() const { return uniforms_; }
+
+    // Bytes of GPU memory per volume and in total (radiance counted with its mip chain).
+    std::size_t materialBytes() const;   // albedo + normal + emission
+    std::size_t radianceBytes() const;
+    std::size_t totalBytes() const { return materialBytes() + radianceBytes(); }
+    std::string memoryReport() const;  // "albedo 8.0 MiB, normal 8.0 MiB, ... total 54.9 MiB"
+
+    // Radiance that maps to 1.0 in the packed emission volume (W/(sr·m²)).
+    static constexpr float kEmissionRange = 16.0f;
+
+private:
+    int resolution_ = 0;
+    int mipCount_ = 0;
+    bool rgba8_ = false;
+    glm::vec3 min_{0.0f};
+    float side_ = 1.0f;
+    gl::Texture albedo_, normal_, emission_, radiance_;
+    gl::Buffer uniforms_;
+};
+
+// Largest N the volumes may use given `availableBytes` of GPU memory (0 = unknown → 512).
+int largestVoxelResolutionFor(std::size_t availableBytes, bool radianceRgba8);
+// GPU memory still free in bytes if the driver says (NVX_gpu_memory_info, ATI_meminfo), else 0.
+std::size_t queryFreeGpuMemory();
+
+}  // namespace lit

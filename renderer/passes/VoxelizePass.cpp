@@ -1,0 +1,93 @@
+#include "passes/VoxelizePass.h"
+
+#include "passes/VoxelVolume.h"
+#include "scene/GpuScene.h"
+
+#include <shared.h>
+
+namespace lit {
+
+static_assert(VoxelVolume::kEmissionRange == static_cast<float>(LIT_VOXEL_EMISSION_RANGE),
+              "voxelize/inject shaders decode emission with LIT_VOXEL_EMISSION_RANGE");
+
+VoxelizePass::VoxelizePass(const std::filesystem::path& shaderRoot)
+    : program_(shaderRoot, "voxelize",
+               {{GL_VERTEX_SHADER, "voxelize.vert.glsl"},
+                {GL_GEOMETRY_SHADER, "voxelize.geom.glsl"},
+                {GL_FRAGMENT_SHADER, "voxelize.frag.glsl"}}),
+      framebuffer_("voxelize (no attachments)") {}
+
+void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume,
+                           DrawCounters& counters) {
+    volume.clearMaterials();
+    const int n = volume.resolution();
+    if (n <= 0 || gpuScene.empty()) {
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        return;
+    }
+    if (framebufferSize_ != n) {
+        // Rasterization without attachments takes its size from these defaults (GL 4.3).
+        glNamedFramebufferParameteri(framebuffer_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, n);
+        glNamedFramebufferParameteri(framebuffer_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, n);
+        framebufferSize_ = n;
+    }
+
+    framebuffer_.bind();
+    glViewport(0, 0, n, n);
+    glDisable(GL_DEPTH_TEST);  // every fragment counts, not only the nearest
+    glDisable(GL_CULL_FACE);   // both windings: the projection axis flips some triangles
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+
+    program_.use();
+    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
+    gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
+    // Image atomics need an integer format; the volumes are 3D, so bind all slices (layered).
+    glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_EMISSION, volume.emission().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+
+    gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters);
+
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    // Injection reads the volumes as images; debug views and tests read them as textures.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+std::vector<std::uint32_t> readMaterialVoxels(const gl::Texture& materialVolume) {
+    const gl::TextureDesc& d = materialVolume.desc();
+    std::vector<std::uint32_t> texels(static_cast<std::size_t>(d.width) * d.height * d.depth);
+    if (texels.empty() || !materialVolume) return {};
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(materialVolume.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                      static_cast<GLsizei>(texels.size() * sizeof(std::uint32_t)), texels.data());
+    return texels;
+}
+
+glm::vec4 unpackVoxel(std::uint32_t packed) {
+    return glm::vec4(static_cast<float>(packed & 0xffu), static_cast<float>((packed >> 8) & 0xffu),
+                     static_cast<float>((packed >> 16) & 0xffu), static_cast<float>(packed >> 24)) /
+           255.0f;
+}
+
+std::size_t countOccupiedVoxels(const VoxelVolume& volume) {
+    std::size_t count = 0;
+    for (std::uint32_t texel : readMaterialVoxels(volume.albedo()))
+        if ((texel >> 24) != 0) ++count;
+    return count;
+}
+
+std::vector<glm::ivec3> occupiedVoxels(const VoxelVolume& volume) {
+    const std::vector<std::uint32_t> texels = readMaterialVoxels(volume.albedo());
+    const int n = volume.resolution();
+    std::vector<glm::ivec3> voxels;
+    for (std::size_t i = 0; i < texels.size(); ++i) {
+        if ((texels[i] >> 24) == 0) continue;
+        const int index = static_cast<int>(i);
+        voxels.emplace_back(index % n, (index / n) % n, index / (n * n));
+    }
+    return voxels;
+}
+
+}  // namespace lit

@@ -1,0 +1,55 @@
+#pragma once
+// Voxelization: rasterizes the scene into the material volumes of a VoxelVolume (albedo, normal,
+// emission as running averages; see VoxelVolume.h and shaders/voxelize.*.glsl).
+//
+// Each triangle is projected along its dominant axis into an N×N viewport of an attachment-less
+// framebuffer and enlarged for conservative rasterization; each fragment is one voxel the
+// triangle touches and averages its material into that voxel with image atomics.
+//
+// Also here: read-backs of the volumes for tests and debug views (they stall the pipeline).
+
+#include "passes/Pass.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace lit {
+
+class GpuScene;
+class VoxelVolume;
+struct DrawCounters;
+struct Scene;
+
+class VoxelizePass : public Pass {
+public:
+    explicit VoxelizePass(const std::filesystem::path& shaderRoot);
+
+    // Clears the material volumes, then voxelizes every item of `gpuScene` into them. Needs
+    // `volume` allocated (ensure), placed (fitTo) and its uniforms uploaded (updateUniforms);
+    // binds what it uses itself: the voxel UBO, the material SSBO, the three material images.
+    // Changes GL state: viewport (N×N), draw framebuffer (0 afterwards), depth test and face
+    // culling off. Ends with an image-access + texture-fetch barrier.
+    void execute(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume, DrawCounters& counters);
+
+    std::vector<gl::Program*> programs() override { return {&program_}; }
+
+private:
+    gl::Program program_;
+    gl::Framebuffer framebuffer_;  // no attachments: its default size is the volume's N
+    int framebufferSize_ = 0;
+};
+
+// Packed RGBA8 values of one material volume (albedo, normal or emission), x fastest, then y,
+// then z: index = x + N·(y + N·z). Unpack with unpackVoxel.
+std::vector<std::uint32_t> readMaterialVoxels(const gl::Texture& materialVolume);
+// RGBA8 packed as in voxel.glsl (x in the low byte) → [0,1]⁴; alpha × 255 is the sample count.
+glm::vec4 unpackVoxel(std::uint32_t packed);
+
+// Voxels whose albedo sample count is non-zero.
+std::size_t countOccupiedVoxels(const VoxelVolume& volume);
+// Integer coordinates of the occupied voxels, in index order (x fastest).
+std::vector<glm::ivec3> occupiedVoxels(const VoxelVolume& volume);
+
+}  // namespace lit

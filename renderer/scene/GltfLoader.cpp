@@ -1,0 +1,992 @@
+// glTF 2.0 import. tinygltf parses the JSON/GLB container and loads buffers; everything it hands
+// over is validated here before use (indices, offsets, lengths), because tinygltf 2.7 checks
+// little of it and a bad file must give a SceneLoadError, never a crash.
+//
+// Decisions worth knowing:
+// - Only the nodes of the chosen scene (the default scene, else scene 0, else every parentless
+//   node) are imported; nodes of other scenes are dropped and indices remapped.
+// - Missing NORMALs are computed as flat normals (the primitive is unwelded, as glTF requires);
+//   missing TANGENTs are always computed (not only for normal-mapped materials), so every
+//   vertex carries a valid tangent frame. A file's TANGENTs are ignored when its NORMALs are
+//   missing (glTF 2.0 §3.7.2.1).
+// - Images are decoded by stb_image to RGBA8 on up to hardware_concurrency threads. An image that
+//   is missing or cannot be decoded becomes 1×1 white with a warning, and materials that used it
+//   as a normal map drop the normal map (normalTexture = -1) so they fall back to vertex normals.
+// - Only mode TRIANGLES is imported; other primitive modes are skipped with a warning.
+//   Orthographic cameras become perspective cameras with yfov 0.8 (warning).
+
+#include "scene/GltfLoader.h"
+
+#include "Log.h"
+#include "scene/Tangents.h"
+
+#define GLM_ENABLE_EXPERIMENTAL
+#include <stb_image.h>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <future>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/gtx/matrix_decompose.hpp>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+namespace lit {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------------
+// Container detection
+
+enum class Container { Json, Binary };
+
+std::string lowercase(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+std::uint32_t readLittleEndian32(const unsigned char* p) {
+    return std::uint32_t(p[0]) | (std::uint32_t(p[1]) << 8) | (std::uint32_t(p[2]) << 16) | (std::uint32_t(p[3]) << 24);
+}
+
+// Decides how to parse `path` from its first bytes and extension, and checks a GLB's header
+// against the file size so a truncated file is reported as such.
+Container detectContainer(const fs::path& path) {
+    const std::string name = path.string();
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) throw SceneLoadError(name + ": file not found");
+    if (fs::is_directory(status)) throw SceneLoadError(name + ": is a directory, not a glTF file");
+    const std::uintmax_t fileSize = fs::file_size(path, ec);
+    if (ec) throw SceneLoadError(name + ": cannot read the file size (" + ec.message() + ")");
+
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneLoadError(name + ": cannot open the file for reading");
+    std::array<unsigned char, 20> head{};
+    in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+    const std::size_t got = static_cast<std::size_t>(in.gcount());
+    if (got == 0) throw SceneLoadError(name + ": the file is empty, not a glTF file");
+
+    const bool glbMagic = got >= 4 && std::memcmp(head.data(), "glTF", 4) == 0;
+    // JSON starts with '{', possibly after whitespace and a UTF-8 byte order mark.
+    std::size_t first = 0;
+    if (got >= 3 && head[0] == 0xEF && head[1] == 0xBB && head[2] == 0xBF) first = 3;
+    while (first < got && std::isspace(head[first])) ++first;
+    const bool looksJson = first < got && head[first] == '{';
+
+    const std::string ext = lowercase(path.extension().string());
+    if (ext == ".glb" && !glbMagic) {
+        if (looksJson)
+            throw SceneLoadError(name + ": has the extension .glb but holds JSON text; was a .gltf file renamed?");
+        throw SceneLoadError(name + ": not a glTF file (a .glb file must start with the magic bytes \"glTF\")");
+    }
+    if (ext == ".gltf" && glbMagic)
+        throw SceneLoadError(name +
+                             ": is a binary glTF (GLB) file but has the extension .gltf; was a .glb file renamed?");
+    if (!glbMagic && !looksJson)
+        throw SceneLoadError(name + ": not a glTF file (neither JSON text nor the GLB magic bytes \"glTF\")");
+    if (!glbMagic) {
+        // tinygltf reports a JSON syntax error without saying so; check the syntax here first
+        // so a truncated or hand-broken file gets a message that names the problem and place.
+        std::ifstream whole(path, std::ios::binary);
+        const std::string text{std::istreambuf_iterator<char>(whole), std::istreambuf_iterator<char>()};
+        if (nlohmann::json::accept(text)) return Container::Json;
+        std::string reason = "syntax error";
+        try {
+            // Parse again only to get the error's position and reason.
+            const nlohmann::json parsed = nlohmann::json::parse(text);
+            (void)parsed;
+        } catch (const nlohmann::json::parse_error& e) {
+            reason = e.what();
+            // "[json.exception.parse_error.101] parse error at line 3, ..." → "parse error at line 3, ..."
+            if (const auto bracket = reason.find("] ");
+                reason.starts_with("[json.exception") && bracket != std::string::npos)
+                reason.erase(0, bracket + 2);
+        }
+        throw SceneLoadError(name + ": invalid JSON (is the file truncated?): " + reason);
+    }
+
+    // GLB header: magic, version, total length; then the JSON chunk's length and type.
+    if (got < 12) throw SceneLoadError(name + ": truncated GLB: the file is shorter than the 12-byte header");
+    const std::uint32_t version = readLittleEndian32(head.data() + 4);
+    const std::uint32_t declared = readLittleEndian32(head.data() + 8);
+    if (version != 2)
+        throw SceneLoadError(name + ": GLB container version " + std::to_string(version) +
+                             " is not supported (only 2)");
+    if (declared > fileSize)
+        throw SceneLoadError(name + ": truncated GLB: the header declares " + std::to_string(declared) +
+                             " bytes but the file has " + std::to_string(fileSize));
+    if (got < 20) throw SceneLoadError(name + ": truncated GLB: the file ends inside the JSON chunk header");
+    const std::uint64_t jsonEnd = 20ull + readLittleEndian32(head.data() + 12);
+    if (jsonEnd > declared)
+        throw SceneLoadError(name + ": truncated GLB: the JSON chunk (" + std::to_string(jsonEnd - 20) +
+                             " bytes) runs past the declared length of " + std::to_string(declared) + " bytes");
+    return Container::Binary;
+}
+
+// ---------------------------------------------------------------------------------------------
+// tinygltf image callback: keep the encoded bytes; decoding happens later, in parallel, by stb.
+
+struct ImageCallbackContext {
+    const tinygltf::Model* model = nullptr;  // being filled by tinygltf (buffers are parsed first)
+    std::vector<std::string> problems;       // images whose bytes could not be taken safely
+};
+
+bool keepEncodedImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void* user) {
+    auto& context = *static_cast<ImageCallbackContext*>(user);
+    // tinygltf 2.7 does not check that an image's buffer view lies inside its buffer before
+    // handing us the pointer: check it here, before reading the bytes.
+    if (image->bufferView >= 0 && context.model) {
+        const auto& views = context.model->bufferViews;
+        const auto& buffers = context.model->buffers;
+        const auto view = static_cast<std::size_t>(image->bufferView);
+        const bool inside =
+            view < views.size() && views[view].buffer >= 0 &&
+            static_cast<std::size_t>(views[view].buffer) < buffers.size() &&
+            views[view].byteOffset <= buffers[static_cast<std::size_t>(views[view].buffer)].data.size() &&
+            views[view].byteLength <=
+                buffers[static_cast<std::size_t>(views[view].buffer)].data.size() - views[view].byteOffset;
+        if (!inside) {
+            context.problems.push_back("image " + std::to_string(imageIndex) + ": buffer view " +
+                                       std::to_string(image->bufferView) + " lies outside its buffer");
+            image->image.clear();
+            image->as_is = true;
+            return true;
+        }
+    }
+    if (bytes && size > 0) image->image.assign(bytes, bytes + size);
+    image->as_is = true;  // encoded bytes, not pixels
+    return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The loader proper
+
+class Loader {
+public:
+    Loader(const fs::path& path, const tinygltf::Model& model, Log& log) : path_(path), model_(model), log_(log) {}
+
+    Scene run();
+
+private:
+    [[noreturn]] void fail(const std::string& problem) const { throw SceneLoadError(path_.string() + ": " + problem); }
+    void warn(const std::string& problem) const { log_.warning(path_.filename().string() + ": " + problem); }
+
+    // A validated view of an accessor's elements.
+    struct AccessorData {
+        const unsigned char* first = nullptr;  // first element
+        std::size_t count = 0;
+        std::size_t stride = 0;  // bytes between consecutive elements
+        int componentType = 0;
+        int components = 0;
+        bool normalized = false;
+
+        // Component c of element i as float, normalised integers mapped to [0,1] / [-1,1].
+        float component(std::size_t i, int c) const;
+        // Component 0 of element i as an unsigned integer (index data).
+        std::uint32_t index(std::size_t i) const;
+    };
+
+    AccessorData accessor(int index, int expectedType, const std::string& role) const;
+    void checkExtensions() const;
+    void loadNodes(Scene& scene) const;
+    void loadMeshes(Scene& scene) const;
+    void loadPrimitive(const tinygltf::Primitive& in, const std::string& meshName, std::size_t primitiveIndex,
+                       Primitive& out) const;
+    void loadMaterials(Scene& scene) const;
+    void loadTextures(Scene& scene) const;
+    void loadImages(Scene& scene) const;
+    void loadLights(Scene& scene) const;
+    void loadCameras(Scene& scene) const;
+    int textureIndex(int index, const std::string& what) const;
+
+    const fs::path& path_;
+    const tinygltf::Model& model_;
+    Log& log_;
+};
+
+std::string describeNode(const tinygltf::Model& model, std::size_t index) {
+    const std::string& name = model.nodes[index].name;
+    return "node " + std::to_string(index) + (name.empty() ? "" : " ('" + name + "')");
+}
+
+// An integer index from a JSON number, or `fallback` for anything that is not an exact int.
+int integerOr(const tinygltf::Value& value, int fallback) {
+    if (!value.IsNumber()) return fallback;
+    const double d = value.GetNumberAsDouble();
+    if (!std::isfinite(d) || d != std::floor(d) || d < std::numeric_limits<int>::min() ||
+        d > std::numeric_limits<int>::max())
+        return fallback;
+    return static_cast<int>(d);
+}
+
+// A JSON value for a message: "2", "2.5", or "(missing)".
+std::string numberText(const tinygltf::Value& value) {
+    if (!value.IsNumber()) return "(missing)";
+    std::ostringstream out;
+    out << value.GetNumberAsDouble();
+    return out.str();
+}
+
+float Loader::AccessorData::component(std::size_t i, int c) const {
+    const unsigned char* p = first + i * stride;
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+            float v;
+            std::memcpy(&v, p + 4 * c, 4);
+            return v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+            const float v = p[c];
+            return normalized ? v / 255.0f : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            const float v = static_cast<std::int8_t>(p[c]);
+            return normalized ? std::max(v / 127.0f, -1.0f) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            std::uint16_t v;
+            std::memcpy(&v, p + 2 * c, 2);
+            return normalized ? float(v) / 65535.0f : float(v);
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            std::int16_t v;
+            std::memcpy(&v, p + 2 * c, 2);
+            return normalized ? std::max(float(v) / 32767.0f, -1.0f) : float(v);
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            std::uint32_t v;
+            std::memcpy(&v, p + 4 * c, 4);
+            return float(v);
+        }
+        default:
+            return 0.0f;  // rejected in accessor()
+    }
+}
+
+std::uint32_t Loader::AccessorData::index(std::size_t i) const {
+    const unsigned char* p = first + i * stride;
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return p[0];
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            std::uint16_t v;
+            std::memcpy(&v, p, 2);
+            return v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            std::uint32_t v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        default:
+            return 0;  // rejected in accessor()
+    }
+}
+
+int componentSize(int componentType) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return 4;
+        default:
+            return 0;
+    }
+}
+
+const char* typeName(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        case TINYGLTF_TYPE_MAT2:
+            return "MAT2";
+        case TINYGLTF_TYPE_MAT3:
+            return "MAT3";
+        case TINYGLTF_TYPE_MAT4:
+            return "MAT4";
+        default:
+            return "unknown";
+    }
+}
+
+int componentsOf(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        case TINYGLTF_TYPE_VEC4:
+            return 4;
+        default:
+            return 0;
+    }
+}
+
+Loader::AccessorData Loader::accessor(int index, int expectedType, const std::string& role) const {
+    const std::string what = "accessor " + std::to_string(index) + " (" + role + ")";
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size())
+        fail("accessor index " + std::to_string(index) + " (" + role + ") is out of range: the file has " +
+             std::to_string(model_.accessors.size()) + " accessors");
+    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+    if (a.sparse.isSparse) fail(what + " is a sparse accessor, which Lit does not support");
+    if (a.type != expectedType) fail(what + " has type " + typeName(a.type) + ", expected " + typeName(expectedType));
+    const int size = componentSize(a.componentType);
+    if (size == 0) fail(what + " has unsupported component type " + std::to_string(a.componentType));
+    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && expectedType != TINYGLTF_TYPE_SCALAR)
+        fail(what + " has component type UNSIGNED_INT, which glTF allows only for indices");
+
+    AccessorData data;
+    data.count = a.count;
+    data.componentType = a.componentType;
+    data.components = componentsOf(a.type);
+    data.normalized = a.normalized;
+    if (a.count == 0) return data;
+    if (a.bufferView < 0) fail(what + " has no buffer view (all-zero accessors are not supported)");
+    if (static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size())
+        fail(what + " refers to buffer view " + std::to_string(a.bufferView) + ", which does not exist (the file has " +
+             std::to_string(model_.bufferViews.size()) + ")");
+    const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    const std::string viewName = "buffer view " + std::to_string(a.bufferView);
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size())
+        fail(viewName + " (used by " + what + ") refers to buffer " + std::to_string(view.buffer) +
+             ", which does not exist (the file has " + std::to_string(model_.buffers.size()) + ")");
+    const tinygltf::Buffer& buffer = model_.buffers[static_cast<std::size_t>(view.buffer)];
+    if (view.byteOffset > buffer.data.size() || view.byteLength > buffer.data.size() - view.byteOffset)
+        fail(viewName + " (used by " + what + ") extends past the end of buffer " + std::to_string(view.buffer) +
+             " (offset " + std::to_string(view.byteOffset) + " + length " + std::to_string(view.byteLength) + " > " +
+             std::to_string(buffer.data.size()) + " bytes)");
+
+    const std::size_t elementSize = static_cast<std::size_t>(size) * static_cast<std::size_t>(data.components);
+    data.stride = view.byteStride ? view.byteStride : elementSize;
+    if (data.stride < elementSize)
+        fail(viewName + " (used by " + what + ") has byteStride " + std::to_string(view.byteStride) +
+             ", smaller than one element (" + std::to_string(elementSize) + " bytes)");
+    // The last byte read is byteOffset + (count − 1)·stride + elementSize; compare without overflow.
+    const std::size_t available = view.byteLength;
+    const bool fits = a.byteOffset <= available && elementSize <= available - a.byteOffset &&
+                      (a.count - 1) <= (available - a.byteOffset - elementSize) / data.stride;
+    if (!fits)
+        fail(what + " reads past the end of " + viewName + " (offset " + std::to_string(a.byteOffset) + ", " +
+             std::to_string(a.count) + " elements of " + std::to_string(elementSize) + " bytes every " +
+             std::to_string(data.stride) + " bytes; the view has " + std::to_string(available) + " bytes)");
+    data.first = buffer.data.data() + view.byteOffset + a.byteOffset;
+    return data;
+}
+
+void Loader::checkExtensions() const {
+    // Extensions whose data the loader reads. KHR_mesh_quantization only widens the accessor
+    // types allowed for attributes, which the generic accessor reader handles.
+    static const std::array<std::string_view, 3> supported = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                                              "KHR_mesh_quantization"};
+    const auto isSupported = [&](const std::string& e) {
+        return std::find(supported.begin(), supported.end(), e) != supported.end();
+    };
+    for (const std::string& e : model_.extensionsRequired)
+        if (!isSupported(e)) fail("requires the glTF extension " + e + ", which Lit does not support");
+    for (const std::string& e : model_.extensionsUsed)
+        if (!isSupported(e)) warn("ignores the glTF extension " + e + " (not supported)");
+}
+
+void Loader::loadNodes(Scene& scene) const {
+    const std::size_t n = model_.nodes.size();
+    // Parents, with every index checked, and the tree property (one parent per node) enforced.
+    std::vector<int> parent(n, -1);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int child : model_.nodes[i].children) {
+            if (child < 0 || static_cast<std::size_t>(child) >= n)
+                fail(describeNode(model_, i) + " has child index " + std::to_string(child) +
+                     ", which is out of range (the file has " + std::to_string(n) + " nodes)");
+            const auto c = static_cast<std::size_t>(child);
+            if (c == i) fail("node cycle: " + describeNode(model_, i) + " is its own child");
+            if (parent[c] >= 0)
+                fail(describeNode(model_, c) + " is a child of both node " + std::to_string(parent[c]) + " and node " +
+                     std::to_string(i) + " (a node may have only one parent)");
+            parent[c] = static_cast<int>(i);
+        }
+    }
+    // With one parent per node, a cycle is a parent chain that never reaches a root. Walk each
+    // chain once: state 1 = on the current walk, 2 = known to reach a root.
+    std::vector<std::uint8_t> state(n, 0);
+    std::vector<std::size_t> walk;
+    for (std::size_t start = 0; start < n; ++start) {
+        walk.clear();
+        std::size_t i = start;
+        while (true) {
+            if (state[i] == 2) break;
+            if (state[i] == 1) {
+                std::string cycle = describeNode(model_, i);
+                for (std::size_t j = static_cast<std::size_t>(parent[i]); j != i;
+                     j = static_cast<std::size_t>(parent[j]))
+                    cycle = describeNode(model_, j) + " → " + cycle;
+                fail("node cycle: " + describeNode(model_, i) + " is its own ancestor (" + cycle + ")");
+            }
+            state[i] = 1;
+            walk.push_back(i);
+            if (parent[i] < 0) break;
+            i = static_cast<std::size_t>(parent[i]);
+        }
+        for (std::size_t j : walk) state[j] = 2;
+    }
+
+    // The scene's roots.
+    std::vector<int> roots;
+    const int sceneIndex = model_.defaultScene >= 0 ? model_.defaultScene : (model_.scenes.empty() ? -1 : 0);
+    if (sceneIndex >= 0) {
+        if (static_cast<std::size_t>(sceneIndex) >= model_.scenes.size())
+            fail("the default scene " + std::to_string(sceneIndex) + " does not exist (the file has " +
+                 std::to_string(model_.scenes.size()) + " scenes)");
+        const tinygltf::Scene& s = model_.scenes[static_cast<std::size_t>(sceneIndex)];
+        scene.name = s.name;
+        for (int root : s.nodes) {
+            if (root < 0 || static_cast<std::size_t>(root) >= n)
+                fail("scene " + std::to_string(sceneIndex) + " lists node " + std::to_string(root) +
+                     ", which is out of range (the file has " + std::to_string(n) + " nodes)");
+            if (parent[static_cast<std::size_t>(root)] >= 0)
+                fail("scene " + std::to_string(sceneIndex) + " lists " +
+                     describeNode(model_, static_cast<std::size_t>(root)) + " as a root, but it is a child of node " +
+                     std::to_string(parent[static_cast<std::size_t>(root)]));
+            if (std::find(roots.begin(), roots.end(), root) == roots.end()) roots.push_back(root);
+        }
+    } else {
+        for (std::size_t i = 0; i < n; ++i)
+            if (parent[i] < 0) roots.push_back(static_cast<int>(i));
+    }
+
+    // Keep the nodes reachable from the roots, in file order, and remap indices.
+    std::vector<int> remap(n, -1);
+    {
+        std::vector<std::uint8_t> reachable(n, 0);
+        std::vector<int> stack(roots.begin(), roots.end());
+        while (!stack.empty()) {
+            const auto i = static_cast<std::size_t>(stack.back());
+            stack.pop_back();
+            reachable[i] = 1;
+            for (int child : model_.nodes[i].children) stack.push_back(child);
+        }
+        int next = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            if (reachable[i]) remap[i] = next++;
+        if (static_cast<std::size_t>(next) < n)
+            log_.info(path_.filename().string() + ": " + std::to_string(n - static_cast<std::size_t>(next)) +
+                      " nodes are not part of the scene and were not imported");
+    }
+
+    for (std::size_t i = 0; i < n; ++i) {
+        if (remap[i] < 0) continue;
+        const tinygltf::Node& in = model_.nodes[i];
+        const std::string what = describeNode(model_, i);
+        Node node;
+        node.name = in.name;
+        node.parent = parent[i] >= 0 ? remap[static_cast<std::size_t>(parent[i])] : -1;
+        for (int child : in.children) node.children.push_back(remap[static_cast<std::size_t>(child)]);
+
+        if (in.mesh >= 0 && static_cast<std::size_t>(in.mesh) >= model_.meshes.size())
+            fail(what + " refers to mesh " + std::to_string(in.mesh) + ", which is out of range (the file has " +
+                 std::to_string(model_.meshes.size()) + " meshes)");
+        node.mesh = in.mesh;
+        if (in.camera >= 0 && static_cast<std::size_t>(in.camera) >= model_.cameras.size())
+            fail(what + " refers to camera " + std::to_string(in.camera) + ", which is out of range (the file has " +
+                 std::to_string(model_.cameras.size()) + " cameras)");
+        node.camera = in.camera;
+        if (auto it = in.extensions.find("KHR_lights_punctual"); it != in.extensions.end()) {
+            const int light = integerOr(it->second.Get("light"), -1);
+            if (light < 0 || static_cast<std::size_t>(light) >= model_.lights.size())
+                fail(what + " refers to light " + numberText(it->second.Get("light")) +
+                     ", which is out of range (the file has " + std::to_string(model_.lights.size()) + " lights)");
+            node.light = light;
+        }
+        if (in.skin >= 0) warn(what + " is skinned; skinning is not supported and the mesh is drawn in its bind pose");
+
+        if (!in.matrix.empty()) {
+            if (in.matrix.size() != 16)
+                fail(what + " has a 'matrix' with " + std::to_string(in.matrix.size()) + " numbers, expected 16");
+            std::array<float, 16> m{};
+            for (std::size_t k = 0; k < 16; ++k) m[k] = static_cast<float>(in.matrix[k]);
+            const glm::mat4 local = glm::make_mat4(m.data());  // glTF matrices are column-major, as GLM's
+            glm::vec3 skew;
+            glm::vec4 perspective;
+            if (!glm::decompose(local, node.scale, node.rotation, node.translation, skew, perspective)) {
+                // Singular (a zero scale hides a node): keep translation and column lengths.
+                warn(what + " has a singular matrix; its rotation is dropped");
+                node.translation = glm::vec3(local[3]);
+                node.rotation = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+                node.scale = {glm::length(glm::vec3(local[0])), glm::length(glm::vec3(local[1])),
+                              glm::length(glm::vec3(local[2]))};
+            }
+        } else {
+            if (!in.translation.empty()) {
+                if (in.translation.size() != 3)
+                    fail(what + " has a 'translation' with " + std::to_string(in.translation.size()) +
+                         " numbers, expected 3");
+                node.translation = glm::vec3(in.translation[0], in.translation[1], in.translation[2]);
+            }
+            if (!in.rotation.empty()) {
+                if (in.rotation.size() != 4)
+                    fail(what + " has a 'rotation' with " + std::to_string(in.rotation.size()) +
+                         " numbers, expected 4");
+                // glTF stores x, y, z, w; glm::quat's constructor takes w first.
+                const glm::quat q(static_cast<float>(in.rotation[3]), static_cast<float>(in.rotation[0]),
+                                  static_cast<float>(in.rotation[1]), static_cast<float>(in.rotation[2]));
+                const float len = glm::length(q);
+                if (std::isfinite(len) && len > 1e-6f) {
+                    node.rotation = q / len;
+                } else {
+                    warn(what + " has a zero rotation quaternion; using the identity");
+                }
+            }
+            if (!in.scale.empty()) {
+                if (in.scale.size() != 3)
+                    fail(what + " has a 'scale' with " + std::to_string(in.scale.size()) + " numbers, expected 3");
+                node.scale = glm::vec3(in.scale[0], in.scale[1], in.scale[2]);
+            }
+        }
+        scene.nodes.push_back(std::move(node));
+    }
+    for (int root : roots) scene.roots.push_back(remap[static_cast<std::size_t>(root)]);
+}
+
+void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& meshName, std::size_t primitiveIndex,
+                           Primitive& out) const {
+    const std::string where = "mesh '" + meshName + "' primitive " + std::to_string(primitiveIndex);
+    const auto attribute = [&](const char* name) {
+        auto it = in.attributes.find(name);
+        return it == in.attributes.end() ? -1 : it->second;
+    };
+    const int positionIndex = attribute("POSITION");
+    if (positionIndex < 0) fail(where + " has no POSITION attribute");
+    const AccessorData positions = accessor(positionIndex, TINYGLTF_TYPE_VEC3, "POSITION of " + where);
+    const std::size_t vertexCount = positions.count;
+    if (vertexCount > std::numeric_limits<std::uint32_t>::max())
+        fail(where + " has " + std::to_string(vertexCount) + " vertices, more than 32-bit indices can address");
+
+    out.vertices.resize(vertexCount);
+    for (std::size_t i = 0; i < vertexCount; ++i)
+        out.vertices[i].position = {positions.component(i, 0), positions.component(i, 1), positions.component(i, 2)};
+
+    const auto checkCount = [&](const AccessorData& a, int index, const char* name) {
+        if (a.count != vertexCount)
+            fail("accessor " + std::to_string(index) + " (" + name + " of " + where + ") has " +
+                 std::to_string(a.count) + " elements, but POSITION has " + std::to_string(vertexCount));
+    };
+
+    const int normalIndex = attribute("NORMAL");
+    if (normalIndex >= 0) {
+        const AccessorData normals = accessor(normalIndex, TINYGLTF_TYPE_VEC3, "NORMAL of " + where);
+        checkCount(normals, normalIndex, "NORMAL");
+        for (std::size_t i = 0; i < vertexCount; ++i)
+            out.vertices[i].normal = {normals.component(i, 0), normals.component(i, 1), normals.component(i, 2)};
+    }
+    const int uvIndex = attribute("TEXCOORD_0");
+    if (uvIndex >= 0) {
+        const AccessorData uvs = accessor(uvIndex, TINYGLTF_TYPE_VEC2, "TEXCOORD_0 of " + where);
+        checkCount(uvs, uvIndex, "TEXCOORD_0");
+        for (std::size_t i = 0; i < vertexCount; ++i) out.vertices[i].uv = {uvs.component(i, 0), uvs.component(i, 1)};
+    }
+    // A file's tangents are only meaningful with the file's normals (glTF 2.0 §3.7.2.1).
+    const int tangentIndex = normalIndex >= 0 ? attribute("TANGENT") : -1;
+    bool haveTangents = false;
+    if (tangentIndex >= 0) {
+        const AccessorData tangents = accessor(tangentIndex, TINYGLTF_TYPE_VEC4, "TANGENT of " + where);
+        checkCount(tangents, tangentIndex, "TANGENT");
+        haveTangents = true;
+        for (std::size_t i = 0; i < vertexCount; ++i) {
+            const glm::vec3 t{tangents.component(i, 0), tangents.component(i, 1), tangents.component(i, 2)};
+            const float len = glm::length(t);
+            if (!std::isfinite(len) || len < 1e-12f) {
+                haveTangents = false;  // unusable data: recompute the whole primitive below
+                break;
+            }
+            out.vertices[i].tangent = glm::vec4(t / len, tangents.component(i, 3) < 0.0f ? -1.0f : 1.0f);
+        }
+        if (!haveTangents) warn(where + " has zero or non-finite TANGENTs; they are recomputed");
+    }
+
+    // Indices: from the accessor, or 0..n−1 for non-indexed geometry.
+    if (in.indices >= 0) {
+        const AccessorData indices = accessor(in.indices, TINYGLTF_TYPE_SCALAR, "indices of " + where);
+        if (indices.count > 0 && indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            fail("accessor " + std::to_string(in.indices) + " (indices of " + where +
+                 ") must have an unsigned integer component type, not " + std::to_string(indices.componentType));
+        out.indices.resize(indices.count);
+        for (std::size_t i = 0; i < indices.count; ++i) {
+            const std::uint32_t value = indices.index(i);
+            if (value >= vertexCount)
+                fail(where + ": index " + std::to_string(i) + " has the value " + std::to_string(value) +
+                     ", which is out of range (the primitive has " + std::to_string(vertexCount) + " vertices)");
+            out.indices[i] = value;
+        }
+    } else {
+        out.indices.resize(vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i) out.indices[i] = static_cast<std::uint32_t>(i);
+    }
+    if (out.indices.size() % 3 != 0) {
+        warn(where + " has " + std::to_string(out.indices.size()) +
+             " indices, not a multiple of 3; the incomplete last triangle is dropped");
+        out.indices.resize(out.indices.size() - out.indices.size() % 3);
+    }
+
+    if (normalIndex < 0) computeNormals(out);
+    if (!haveTangents) computeTangents(out);
+    for (const Vertex& v : out.vertices) out.bounds.extend(v.position);
+}
+
+void Loader::loadMeshes(Scene& scene) const {
+    scene.meshes.reserve(model_.meshes.size());
+    for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
+        const tinygltf::Mesh& in = model_.meshes[m];
+        Mesh mesh;
+        mesh.name = in.name.empty() ? "mesh " + std::to_string(m) : in.name;
+        for (std::size_t p = 0; p < in.primitives.size(); ++p) {
+            const tinygltf::Primitive& prim = in.primitives[p];
+            const std::string where = "mesh '" + mesh.name + "' primitive " + std::to_string(p);
+            // tinygltf reports an absent mode as -1; glTF's default is TRIANGLES.
+            if (prim.mode != -1 && prim.mode != TINYGLTF_MODE_TRIANGLES) {
+                warn(where + " has mode " + std::to_string(prim.mode) + " (only TRIANGLES is supported); skipped");
+                continue;
+            }
+            if (prim.material >= 0 && static_cast<std::size_t>(prim.material) >= model_.materials.size())
+                fail(where + " refers to material " + std::to_string(prim.material) +
+                     ", which is out of range (the file has " + std::to_string(model_.materials.size()) +
+                     " materials)");
+            if (!prim.targets.empty()) warn(where + " has morph targets; they are ignored");
+            Primitive out;
+            out.material = prim.material;
+            loadPrimitive(prim, mesh.name, p, out);
+            if (out.indices.empty()) {
+                warn(where + " has no triangles; skipped");
+                continue;
+            }
+            mesh.primitives.push_back(std::move(out));
+        }
+        scene.meshes.push_back(std::move(mesh));
+    }
+}
+
+int Loader::textureIndex(int index, const std::string& what) const {
+    if (index < -1 || index >= static_cast<int>(model_.textures.size()))
+        fail(what + " refers to texture " + std::to_string(index) + ", which is out of range (the file has " +
+             std::to_string(model_.textures.size()) + " textures)");
+    return index;
+}
+
+void Loader::loadMaterials(Scene& scene) const {
+    for (std::size_t m = 0; m < model_.materials.size(); ++m) {
+        const tinygltf::Material& in = model_.materials[m];
+        const std::string what = "material " + std::to_string(m) + (in.name.empty() ? "" : " ('" + in.name + "')");
+        const auto texture = [&](int index, int texCoord, const char* slot) {
+            const int t = textureIndex(index, what + " " + slot);
+            if (t >= 0 && texCoord != 0)
+                warn(what + " " + slot + " uses TEXCOORD_" + std::to_string(texCoord) +
+                     "; only TEXCOORD_0 is supported");
+            return t;
+        };
+        Material out;
+        out.name = in.name;
+        const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
+        if (pbr.baseColorFactor.size() == 4)
+            out.baseColorFactor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
+                                            pbr.baseColorFactor[3]);
+        out.baseColorTexture = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, "baseColorTexture");
+        out.metallic = static_cast<float>(pbr.metallicFactor);
+        out.roughness = static_cast<float>(pbr.roughnessFactor);
+        out.metallicRoughnessTexture = texture(pbr.metallicRoughnessTexture.index,
+                                               pbr.metallicRoughnessTexture.texCoord, "metallicRoughnessTexture");
+        out.normalTexture = texture(in.normalTexture.index, in.normalTexture.texCoord, "normalTexture");
+        out.normalScale = static_cast<float>(in.normalTexture.scale);
+        if (in.emissiveFactor.size() == 3)
+            out.emissiveFactor = glm::vec3(in.emissiveFactor[0], in.emissiveFactor[1], in.emissiveFactor[2]);
+        out.emissiveTexture = texture(in.emissiveTexture.index, in.emissiveTexture.texCoord, "emissiveTexture");
+        out.occlusionTexture = texture(in.occlusionTexture.index, in.occlusionTexture.texCoord, "occlusionTexture");
+        out.occlusionStrength = static_cast<float>(in.occlusionTexture.strength);
+        if (auto it = in.extensions.find("KHR_materials_emissive_strength"); it != in.extensions.end()) {
+            const tinygltf::Value& strength = it->second.Get("emissiveStrength");
+            if (strength.IsNumber()) out.emissiveStrength = static_cast<float>(strength.GetNumberAsDouble());
+        }
+        if (in.alphaMode == "OPAQUE" || in.alphaMode.empty()) {
+            out.alphaMode = AlphaMode::Opaque;
+        } else if (in.alphaMode == "MASK") {
+            out.alphaMode = AlphaMode::Mask;
+        } else if (in.alphaMode == "BLEND") {
+            out.alphaMode = AlphaMode::Blend;
+        } else {
+            warn(what + " has unknown alphaMode '" + in.alphaMode + "'; treated as OPAQUE");
+        }
+        out.alphaCutoff = static_cast<float>(in.alphaCutoff);
+        out.doubleSided = in.doubleSided;
+        scene.materials.push_back(std::move(out));
+    }
+}
+
+void Loader::loadTextures(Scene& scene) const {
+    for (std::size_t t = 0; t < model_.textures.size(); ++t) {
+        const tinygltf::Texture& in = model_.textures[t];
+        Texture out;
+        if (in.source >= 0) {
+            if (static_cast<std::size_t>(in.source) >= model_.images.size())
+                fail("texture " + std::to_string(t) + " refers to image " + std::to_string(in.source) +
+                     ", which is out of range (the file has " + std::to_string(model_.images.size()) + " images)");
+            out.image = in.source;
+        }
+        if (in.sampler >= 0) {
+            if (static_cast<std::size_t>(in.sampler) >= model_.samplers.size())
+                fail("texture " + std::to_string(t) + " refers to sampler " + std::to_string(in.sampler) +
+                     ", which is out of range (the file has " + std::to_string(model_.samplers.size()) + " samplers)");
+            const tinygltf::Sampler& s = model_.samplers[static_cast<std::size_t>(in.sampler)];
+            out.wrapS = s.wrapS;
+            out.wrapT = s.wrapT;
+            // tinygltf reports unset filters as -1: keep the defaults then.
+            if (s.minFilter >= 0) out.minFilter = s.minFilter;
+            if (s.magFilter >= 0) out.magFilter = s.magFilter;
+        }
+        scene.textures.push_back(out);
+    }
+}
+
+// Pixels decoded from one image, or why not.
+struct DecodedImage {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;
+    std::string error;  // empty on success
+};
+
+DecodedImage decodeImage(const std::vector<unsigned char>& encoded) {
+    DecodedImage out;
+    if (encoded.empty()) {
+        out.error = "the file is missing or could not be read";
+        return out;
+    }
+    if (encoded.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+        out.error = "the image is larger than 2 GiB";
+        return out;
+    }
+    int width = 0, height = 0, channels = 0;
+    // stb_image's failure reason is thread-local in stb 2.27, so workers do not race on it.
+    std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+        stbi_load_from_memory(encoded.data(), static_cast<int>(encoded.size()), &width, &height, &channels, 4),
+        stbi_image_free);
+    if (!pixels) {
+        const char* reason = stbi_failure_reason();
+        out.error = std::string("stb_image could not decode it (") + (reason ? reason : "unknown reason") + ")";
+        return out;
+    }
+    out.width = width;
+    out.height = height;
+    out.rgba.assign(pixels.get(),
+                    pixels.get() + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4u);
+    return out;
+}
+
+void Loader::loadImages(Scene& scene) const {
+    const std::size_t count = model_.images.size();
+    std::vector<DecodedImage> decoded(count);
+    // Decode on a few worker threads pulling image indices from a shared counter (Sponza has 69
+    // 1024² JPEGs; decoding dominates its load time).
+    const std::size_t workers = std::min<std::size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t i = next++; i < count; i = next++) decoded[i] = decodeImage(model_.images[i].image);
+    };
+    std::vector<std::future<void>> tasks;
+    for (std::size_t w = 1; w < workers; ++w) tasks.push_back(std::async(std::launch::async, work));
+    work();                               // the calling thread works too
+    for (auto& task : tasks) task.get();  // rethrows a worker's exception (e.g. std::bad_alloc)
+
+    // How materials use each image: colour slots are sRGB; normal maps need care on failure.
+    std::vector<std::uint8_t> usedAsColour(count, 0), usedAsData(count, 0);
+    const auto imageOf = [&](int texture) {
+        return texture >= 0 ? scene.textures[static_cast<std::size_t>(texture)].image : -1;
+    };
+    for (const Material& m : scene.materials) {
+        for (int t : {m.baseColorTexture, m.emissiveTexture})
+            if (int i = imageOf(t); i >= 0) usedAsColour[static_cast<std::size_t>(i)] = 1;
+        for (int t : {m.metallicRoughnessTexture, m.normalTexture, m.occlusionTexture})
+            if (int i = imageOf(t); i >= 0) usedAsData[static_cast<std::size_t>(i)] = 1;
+    }
+
+    std::vector<std::uint8_t> failed(count, 0);
+    scene.images.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const tinygltf::Image& in = model_.images[i];
+        Image& out = scene.images[i];
+        out.name = in.name;
+        out.uri = in.uri;
+        out.srgb = usedAsColour[i] != 0;
+        if (usedAsColour[i] && usedAsData[i])
+            warn("image " + std::to_string(i) + " is used both as colour and as data; it is treated as sRGB colour");
+        if (decoded[i].error.empty()) {
+            out.width = decoded[i].width;
+            out.height = decoded[i].height;
+            out.rgba = std::move(decoded[i].rgba);
+            continue;
+        }
+        failed[i] = 1;
+        const std::string label =
+            !in.uri.empty() ? "'" + in.uri + "'" : (in.name.empty() ? "(embedded)" : "'" + in.name + "'");
+        warn("image " + std::to_string(i) + " " + label + ": " + decoded[i].error + "; using a 1x1 white texture");
+        out.width = 1;
+        out.height = 1;
+        out.rgba = {255, 255, 255, 255};
+    }
+
+    // Textures without a source (only an unsupported extension's image) get one white image.
+    int neutral = -1;
+    for (std::size_t t = 0; t < scene.textures.size(); ++t) {
+        if (scene.textures[t].image >= 0) continue;
+        if (neutral < 0) {
+            neutral = static_cast<int>(scene.images.size());
+            scene.images.push_back(Image{"neutral", "", 1, 1, {255, 255, 255, 255}, false});
+            failed.push_back(1);
+        }
+        warn("texture " + std::to_string(t) + " has no image Lit can read; using a 1x1 white texture");
+        scene.textures[t].image = neutral;
+    }
+
+    // A white normal map would tilt every normal; drop it so the material uses vertex normals.
+    for (Material& m : scene.materials) {
+        const int image = imageOf(m.normalTexture);
+        if (image >= 0 && failed[static_cast<std::size_t>(image)]) m.normalTexture = -1;
+    }
+}
+
+void Loader::loadLights(Scene& scene) const {
+    for (std::size_t l = 0; l < model_.lights.size(); ++l) {
+        const tinygltf::Light& in = model_.lights[l];
+        Light out;
+        out.name = in.name;
+        if (in.type == "directional") {
+            out.type = LightType::Directional;
+        } else if (in.type == "point") {
+            out.type = LightType::Point;
+        } else if (in.type == "spot") {
+            out.type = LightType::Spot;
+            out.innerConeAngle = static_cast<float>(in.spot.innerConeAngle);
+            out.outerConeAngle = static_cast<float>(in.spot.outerConeAngle);
+        } else {
+            fail("light " + std::to_string(l) + " has unknown type '" + in.type + "'");
+        }
+        if (in.color.size() == 3) out.color = glm::vec3(in.color[0], in.color[1], in.color[2]);
+        out.intensity = static_cast<float>(in.intensity);
+        out.range = static_cast<float>(in.range);
+        scene.lights.push_back(std::move(out));
+    }
+}
+
+void Loader::loadCameras(Scene& scene) const {
+    for (std::size_t c = 0; c < model_.cameras.size(); ++c) {
+        const tinygltf::Camera& in = model_.cameras[c];
+        Camera out;
+        out.name = in.name;
+        if (in.type == "perspective") {
+            if (in.perspective.yfov > 0.0) out.yfov = static_cast<float>(in.perspective.yfov);
+            out.aspectRatio = static_cast<float>(std::max(in.perspective.aspectRatio, 0.0));
+            if (in.perspective.znear > 0.0) out.znear = static_cast<float>(in.perspective.znear);
+            out.zfar = static_cast<float>(std::max(in.perspective.zfar, 0.0));
+        } else {
+            warn("camera " + std::to_string(c) + " is " + (in.type.empty() ? std::string("untyped") : in.type) +
+                 "; Lit renders it as a perspective camera with yfov 0.8");
+            if (in.orthographic.znear > 0.0) out.znear = static_cast<float>(in.orthographic.znear);
+            if (in.orthographic.zfar > in.orthographic.znear) out.zfar = static_cast<float>(in.orthographic.zfar);
+        }
+        scene.cameras.push_back(std::move(out));
+    }
+}
+
+Scene Loader::run() {
+    Scene scene;
+    scene.sourcePath = path_;
+    checkExtensions();
+    loadNodes(scene);
+    if (scene.name.empty()) scene.name = path_.stem().string();
+    loadMeshes(scene);
+    loadMaterials(scene);
+    loadTextures(scene);
+    loadImages(scene);
+    loadLights(scene);
+    loadCameras(scene);
+    scene.updateWorldTransforms();
+    return scene;
+}
+
+// Splits tinygltf's newline-separated messages.
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) out.push_back(line);
+    return out;
+}
+
+}  // namespace
+
+Scene loadGltf(const std::filesystem::path& path, Log& log) {
+    const auto start = std::chrono::steady_clock::now();
+    const Container container = detectContainer(path);
+
+    tinygltf::Model model;
+    tinygltf::TinyGLTF parser;
+    ImageCallbackContext imageContext;
+    imageContext.model = &model;
+    parser.SetImageLoader(&keepEncodedImage, &imageContext);
+    std::string err, warn;
+    bool ok = false;
+    try {
+        ok = container == Container::Binary ? parser.LoadBinaryFromFile(&model, &err, &warn, path.string())
+                                            : parser.LoadASCIIFromFile(&model, &err, &warn, path.string());
+    } catch (const std::exception& e) {
+        throw SceneLoadError(path.string() + ": tinygltf failed: " + e.what());
+    }
+    const std::string file = path.filename().string();
+    for (const std::string& line : lines(warn)) log.warning(file + ": " + line);
+    for (const std::string& problem : imageContext.problems) log.warning(file + ": " + problem);
+    if (!ok) {
+        std::string message =
+            path.string() + ": " +
+            (container == Container::Binary ? "cannot load the GLB file" : "cannot load the glTF file");
+        const std::vector<std::string> errors = lines(err);
+        for (std::size_t i = 0; i < errors.size(); ++i) message += (i == 0 ? ": " : "; ") + errors[i];
+        throw SceneLoadError(message);
+    }
+
+    Scene scene = Loader(path, model, log).run();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::ostringstream summary;
+    summary << "loaded " << file << ": " << scene.nodes.size() << " nodes, " << scene.meshes.size() << " meshes, "
+            << scene.triangleCount() << " triangles, " << scene.materials.size() << " materials, "
+            << scene.textures.size() << " textures, " << scene.lights.size() << " lights, " << scene.cameras.size()
+            << " cameras in " << static_cast<long long>(ms + 0.5) << " ms";
+    log.info(summary.str());
+    return scene;
+}
+
+}  // namespace lit

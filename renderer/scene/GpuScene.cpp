@@ -1,0 +1,180 @@
+#include "scene/GpuScene.h"
+
+#include "Log.h"
+#include "gl/Shader.h"
+#include "scene/Scene.h"
+
+#include <shared.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cassert>
+#include <string>
+
+namespace lit {
+
+namespace {
+
+gl::Texture uploadImage(const Image& image, const Texture& sampler, const std::string& label) {
+    const int levels = gl::Texture::mipCount(image.width, image.height);
+    gl::Texture texture(label, {GL_TEXTURE_2D, image.srgb ? GLenum(GL_SRGB8_ALPHA8) : GLenum(GL_RGBA8), image.width,
+                                image.height, 1, levels});
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        image.rgba.data());
+    glGenerateTextureMipmap(texture.id());
+    // glTF sampler values are GL enums; always trilinear when minification asks for mipmaps.
+    const bool mipFilter = sampler.minFilter == GL_NEAREST_MIPMAP_NEAREST || sampler.minFilter == GL_LINEAR_MIPMAP_NEAREST ||
+                           sampler.minFilter == GL_NEAREST_MIPMAP_LINEAR || sampler.minFilter == GL_LINEAR_MIPMAP_LINEAR;
+    texture.setFilter(mipFilter || sampler.minFilter == 0 ? GL_LINEAR_MIPMAP_LINEAR : GLenum(sampler.minFilter),
+                      sampler.magFilter == GL_NEAREST ? GL_NEAREST : GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, sampler.wrapS);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, sampler.wrapT);
+    if (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
+        glTextureParameterf(texture.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
+    return texture;
+}
+
+gpu::GpuMaterial toGpu(const Material& m) {
+    gpu::GpuMaterial g{};
+    g.baseColorFactor = m.baseColorFactor;
+    g.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
+    g.params = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
+    g.textures = glm::ivec4(m.baseColorTexture >= 0, m.metallicRoughnessTexture >= 0, m.normalTexture >= 0,
+                            m.emissiveTexture >= 0);
+    const int alphaMode = m.alphaMode == AlphaMode::Mask    ? LIT_ALPHA_MASK
+                          : m.alphaMode == AlphaMode::Blend ? LIT_ALPHA_BLEND
+                                                            : LIT_ALPHA_OPAQUE;
+    g.modes = glm::ivec4(m.occlusionTexture >= 0, alphaMode, m.doubleSided ? 1 : 0, 0);
+    g.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
+    return g;
+}
+
+}  // namespace
+
+GpuScene::GpuScene(const Scene& scene, Log& log) {
+    // Geometry: every primitive once, instanced by the nodes that reference its mesh.
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    struct Range {
+        GLint baseVertex;
+        std::uint32_t firstIndex, indexCount;
+    };
+    std::vector<std::vector<Range>> meshRanges(scene.meshes.size());
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        for (const Primitive& p : scene.meshes[m].primitives) {
+            meshRanges[m].push_back({static_cast<GLint>(vertices.size()), static_cast<std::uint32_t>(indices.size()),
+                                     static_cast<std::uint32_t>(p.indices.size())});
+            vertices.insert(vertices.end(), p.vertices.begin(), p.vertices.end());
+            indices.insert(indices.end(), p.indices.begin(), p.indices.end());
+        }
+    }
+    for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+        const Node& node = scene.nodes[n];
+        if (node.mesh < 0) continue;
+        const Mesh& mesh = scene.meshes[static_cast<std::size_t>(node.mesh)];
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const Range& r = meshRanges[static_cast<std::size_t>(node.mesh)][p];
+            if (r.indexCount == 0) continue;
+            items_.push_back({static_cast<int>(n), mesh.primitives[p].material, r.baseVertex, r.firstIndex,
+                              r.indexCount, mesh.primitives[p].bounds});
+        }
+    }
+    vertices_ = gl::Buffer::fromSpan<Vertex>("scene vertices", vertices);
+    indices_ = gl::Buffer::fromSpan<std::uint32_t>("scene indices", indices);
+    vertexArray_ = gl::VertexArray("scene geometry");
+    const GLuint vao = vertexArray_.id();
+    glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(vao, indices_.id());
+    const auto attribute = [vao](GLuint location, GLint size, std::size_t offset) {
+        glEnableVertexArrayAttrib(vao, location);
+        glVertexArrayAttribFormat(vao, location, size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(offset));
+        glVertexArrayAttribBinding(vao, location, 0);
+    };
+    attribute(0, 3, offsetof(Vertex, position));
+    attribute(1, 3, offsetof(Vertex, normal));
+    attribute(2, 2, offsetof(Vertex, uv));
+    attribute(3, 4, offsetof(Vertex, tangent));
+
+    // Textures.
+    whiteTexture_ = gl::Texture("white 1x1", {GL_TEXTURE_2D, GL_RGBA8, 1, 1, 1, 1});
+    const std::uint8_t white[4] = {255, 255, 255, 255};
+    glTextureSubImage2D(whiteTexture_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    std::size_t textureBytes = 0;
+    for (std::size_t t = 0; t < scene.textures.size(); ++t) {
+        const Texture& tex = scene.textures[t];
+        const bool valid = tex.image >= 0 && static_cast<std::size_t>(tex.image) < scene.images.size() &&
+                           scene.images[static_cast<std::size_t>(tex.image)].width > 0;
+        if (!valid) {
+            log.warning("texture " + std::to_string(t) + " has no usable image; using a neutral texture");
+            textures_.emplace_back();
+            continue;
+        }
+        const Image& image = scene.images[static_cast<std::size_t>(tex.image)];
+        textures_.push_back(uploadImage(image, tex, image.name.empty() ? "texture " + std::to_string(t) : image.name));
+        textureBytes += image.rgba.size() * 4 / 3;
+    }
+    if (!scene.textures.empty())
+        log.info("uploaded " + std::to_string(scene.textures.size()) + " textures (" +
+                 std::to_string(textureBytes / (1024 * 1024)) + " MB with mipmaps)");
+    updateMaterials(scene);
+}
+
+void GpuScene::updateMaterials(const Scene& scene) {
+    std::vector<gpu::GpuMaterial> table;
+    table.reserve(scene.materials.size() + 1);
+    materialTextures_.clear();
+    const auto textureId = [this](int index) -> GLuint {
+        if (index < 0 || static_cast<std::size_t>(index) >= textures_.size()) return 0;
+        return textures_[static_cast<std::size_t>(index)].id();
+    };
+    for (const Material& m : scene.materials) {
+        gpu::GpuMaterial g = toGpu(m);
+        MaterialTextures t{textureId(m.baseColorTexture), textureId(m.metallicRoughnessTexture),
+                           textureId(m.normalTexture), textureId(m.emissiveTexture), textureId(m.occlusionTexture)};
+        // A texture that failed to load must not be sampled as if present.
+        g.textures = glm::ivec4(t.baseColor != 0, t.metallicRoughness != 0, t.normal != 0, t.emissive != 0);
+        g.modes.x = t.occlusion != 0;
+        table.push_back(g);
+        materialTextures_.push_back(t);
+    }
+    // The default material (glTF spec: white, metallic 1, roughness 1; we use metallic 0 so
+    // untextured test geometry is visible as diffuse white).
+    Material fallback;
+    fallback.metallic = 0.0f;
+    table.push_back(toGpu(fallback));
+    materialTextures_.push_back({});
+    materials_ = gl::Buffer::fromSpan<gpu::GpuMaterial>("materials", table);
+}
+
+void GpuScene::bindMaterialTextures(int material, Bind bind) const {
+    const MaterialTextures& t = materialTextures_[static_cast<std::size_t>(material)];
+    const GLuint white = whiteTexture_.id();
+    glBindTextureUnit(LIT_TEX_BASE_COLOR, t.baseColor ? t.baseColor : white);
+    if (bind == Bind::AlphaOnly) return;
+    glBindTextureUnit(LIT_TEX_METALLIC_ROUGHNESS, t.metallicRoughness ? t.metallicRoughness : white);
+    glBindTextureUnit(LIT_TEX_NORMAL, t.normal ? t.normal : white);
+    glBindTextureUnit(LIT_TEX_EMISSIVE, t.emissive ? t.emissive : white);
+    glBindTextureUnit(LIT_TEX_OCCLUSION, t.occlusion ? t.occlusion : white);
+}
+
+void GpuScene::drawItem(const Scene& scene, const DrawItem& item, const gl::Program& program, Bind bind,
+                        DrawCounters& counters) const {
+    const glm::mat4& model = scene.nodes[static_cast<std::size_t>(item.node)].world;
+    const glm::mat4 normalMatrix = glm::transpose(glm::inverse(model));
+    glProgramUniformMatrix4fv(program.id(), LIT_LOC_MODEL, 1, GL_FALSE, glm::value_ptr(model));
+    glProgramUniformMatrix4fv(program.id(), LIT_LOC_NORMAL_MATRIX, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+    const int material = (item.material >= 0 && static_cast<std::size_t>(item.material) + 1 < materialTextures_.size())
+                             ? item.material
+                             : static_cast<int>(materialTextures_.size()) - 1;
+    glProgramUniform1i(program.id(), LIT_LOC_MATERIAL, material);
+    bindMaterialTextures(material, bind);
+    glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(item.indexCount), GL_UNSIGNED_INT,
+                             reinterpret_cast<const void*>(static_cast<std::uintptr_t>(item.firstIndex) * 4u),
+                             item.baseVertex);
+    ++counters.drawCalls;
+    counters.triangles += item.indexCount / 3;
+}
+
+}  // namespace lit

@@ -1,0 +1,91 @@
+#pragma once
+// The GPU copy of a Scene: one vertex and one index buffer for all primitives, one texture per
+// image (sRGB or linear by use, mipmapped), and the material table as an SSBO. Passes draw
+// through it; they never touch the CPU Scene's vectors directly.
+
+#include "gl/Objects.h"
+#include "scene/Aabb.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace lit {
+
+struct Scene;
+class Log;
+namespace gl {
+class Program;
+}
+
+// One primitive of one node instance.
+struct DrawItem {
+    int node = -1;
+    int material = -1;         // -1: the default material (last entry of the material table)
+    GLint baseVertex = 0;
+    std::uint32_t firstIndex = 0;
+    std::uint32_t indexCount = 0;
+    Aabb localBounds;
+};
+
+struct DrawCounters {
+    int drawCalls = 0;
+    std::size_t triangles = 0;
+};
+
+class GpuScene {
+public:
+    GpuScene() = default;
+    GpuScene(const Scene& scene, Log& log);
+
+    // Re-uploads the material table (after material edits).
+    void updateMaterials(const Scene& scene);
+
+    // Which material state a draw needs bound.
+    enum class Bind { Everything, AlphaOnly };
+
+    // Draws every item (optionally filtered) with `program` bound by the caller. Sets the
+    // uniforms uModel, uNormalMatrix, uMaterialIndex and binds the material's textures.
+    template <typename Filter>
+    void draw(const Scene& scene, const gl::Program& program, Bind bind, DrawCounters& counters, Filter&& keep) const;
+    void draw(const Scene& scene, const gl::Program& program, Bind bind, DrawCounters& counters) const {
+        draw(scene, program, bind, counters, [](const DrawItem&) { return true; });
+    }
+
+    const std::vector<DrawItem>& items() const { return items_; }
+    bool empty() const { return items_.empty(); }
+    const gl::Buffer& materials() const { return materials_; }
+
+    // Binds the vertex array (call once before a batch of draws).
+    void bindGeometry() const { vertexArray_.bind(); }
+    // Issues one draw with per-draw uniforms and textures.
+    void drawItem(const Scene& scene, const DrawItem& item, const gl::Program& program, Bind bind,
+                  DrawCounters& counters) const;
+
+private:
+    void bindMaterialTextures(int material, Bind bind) const;
+
+    gl::Buffer vertices_;
+    gl::Buffer indices_;
+    gl::VertexArray vertexArray_;
+    gl::Buffer materials_;
+    std::vector<gl::Texture> textures_;     // per Scene::textures entry (may be a fallback)
+    gl::Texture whiteTexture_;              // bound where a material has no texture
+    std::vector<DrawItem> items_;
+    struct MaterialTextures {
+        GLuint baseColor = 0, metallicRoughness = 0, normal = 0, emissive = 0, occlusion = 0;
+    };
+    std::vector<MaterialTextures> materialTextures_;  // per material, + default at the end
+};
+
+template <typename Filter>
+void GpuScene::draw(const Scene& scene, const gl::Program& program, Bind bind, DrawCounters& counters,
+                    Filter&& keep) const {
+    if (items_.empty()) return;
+    bindGeometry();
+    for (const DrawItem& item : items_)
+        if (keep(item)) drawItem(scene, item, program, bind, counters);
+}
+
+}  // namespace lit

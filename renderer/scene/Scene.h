@@ -1,0 +1,147 @@
+#pragma once
+// Scene data on the CPU: what a glTF file describes, in the units and conventions of
+// docs/CONVENTIONS.md (metres, +Y up, right-handed, cameras look down −Z, linear colours).
+// The Renderer uploads it; the editor edits it and bumps the revision counters so the renderer
+// knows what to redo (geometry → re-voxelize, lights → re-inject).
+
+#include "scene/Aabb.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lit {
+
+struct Vertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};
+    glm::vec2 uv{0.0f};
+    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent, w bitangent sign (glTF convention)
+};
+static_assert(sizeof(Vertex) == 48, "Vertex is uploaded as-is; keep it tightly packed");
+
+struct Primitive {
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;  // always triangles; non-indexed input gets 0,1,2,...
+    int material = -1;                   // index into Scene::materials, -1 = default material
+    Aabb bounds;                         // object space
+};
+
+struct Mesh {
+    std::string name;
+    std::vector<Primitive> primitives;
+};
+
+// Decoded pixels, RGBA8. Whether they hold sRGB colour or linear data depends on the material
+// slot that uses them (base colour and emissive are sRGB): see Image::srgb.
+struct Image {
+    std::string name;
+    std::string uri;  // as written in the file ("" for embedded images)
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;
+    bool srgb = false;  // set by the loader from how materials use it
+};
+
+struct Texture {
+    int image = -1;
+    int wrapS = 10497;  // glTF sampler values are GL enums: 10497 REPEAT, 33071 CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT
+    int wrapT = 10497;
+    int minFilter = 9987;  // LINEAR_MIPMAP_LINEAR
+    int magFilter = 9729;  // LINEAR
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// glTF 2.0 metallic-roughness material. Texture fields are indices into Scene::textures, -1 = none.
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.0f};  // linear RGBA
+    int baseColorTexture = -1;
+    float metallic = 1.0f;
+    float roughness = 1.0f;
+    int metallicRoughnessTexture = -1;  // G roughness, B metalness
+    int normalTexture = -1;
+    float normalScale = 1.0f;
+    glm::vec3 emissiveFactor{0.0f};  // linear RGB
+    float emissiveStrength = 1.0f;   // KHR_materials_emissive_strength
+    int emissiveTexture = -1;
+    int occlusionTexture = -1;  // R channel
+    float occlusionStrength = 1.0f;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = false;
+};
+
+enum class LightType { Directional, Point, Spot };
+
+// KHR_lights_punctual. Position and direction come from the node that holds the light: it shines
+// down the node's local −Z. Units: see docs/UNITS.md.
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    glm::vec3 color{1.0f};  // linear RGB
+    float intensity = 1.0f;  // candela (point, spot) or lux (directional)
+    float range = 0.0f;      // metres; 0 = infinite
+    float innerConeAngle = 0.0f;                  // radians, spot only
+    float outerConeAngle = 0.7853981633974483f;   // radians (π/4), spot only
+    bool castsShadow = true;
+};
+
+// Perspective camera (glTF). The node that holds it gives its pose; it looks down local −Z.
+struct Camera {
+    std::string name;
+    float yfov = 0.8f;         // radians
+    float aspectRatio = 0.0f;  // 0 = use the output's aspect
+    float znear = 0.05f;       // metres
+    float zfar = 0.0f;         // metres; 0 = fitted to the scene bounds
+};
+
+struct Node {
+    std::string name;
+    int parent = -1;
+    std::vector<int> children;
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::vec3 scale{1.0f};
+    int mesh = -1;
+    int light = -1;
+    int camera = -1;
+    glm::mat4 world{1.0f};  // computed by Scene::updateWorldTransforms()
+
+    glm::mat4 localMatrix() const;
+};
+
+struct Scene {
+    std::string name;
+    std::filesystem::path sourcePath;
+    std::vector<Node> nodes;
+    std::vector<int> roots;
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<Image> images;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;
+
+    // Bumped by whoever edits the scene; the renderer redoes only what changed.
+    std::uint64_t geometryRevision = 0;  // meshes, node transforms → shadows, voxels
+    std::uint64_t materialRevision = 0;  // material parameters → voxels (albedo, emission)
+    std::uint64_t lightRevision = 0;     // lights → shadows, radiance injection
+
+    // Recomputes Node::world for every node from the roots down.
+    void updateWorldTransforms();
+    // World-space bounds of all mesh primitives (needs up-to-date world transforms).
+    Aabb worldBounds() const;
+    // The first node holding camera `cameraIndex`, or -1.
+    int nodeOfCamera(int cameraIndex) const;
+    int nodeOfLight(int lightIndex) const;
+    int findCamera(const std::string& name) const;  // by camera or node name; -1 if none
+    std::size_t triangleCount() const;
+};
+
+}  // namespace lit

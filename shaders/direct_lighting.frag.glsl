@@ -1,0 +1,51 @@
+#version 450 core
+// Direct lighting pass: for every pixel, the two direct terms from all punctual lights.
+//   L_DD = Σ V · E · (albedo_d / π) · max(n·l, 0)                      (Lambert)
+//   L_DS = Σ V · E · D·G·F / (4 (n·l)(n·v)) · max(n·l, 0)              (GGX microfacet)
+// where E is the light's irradiance at normal incidence (docs/UNITS.md) and V the shadow-map
+// visibility. Emission is added to L_DD so that the four terms still sum to the final image.
+#include "frame.glsl"
+#include "gbuffer.glsl"
+#include "brdf.glsl"
+#include "lights.glsl"
+
+in vec2 vUv;
+
+layout(location = 0) out vec4 outDirectDiffuse;
+layout(location = 1) out vec4 outDirectSpecular;
+
+uniform float uShadowNormalOffset;  // shadow lookup offset along the normal, in shadow texels
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    Surface s = readSurface(pixel, vUv);
+    if (!s.valid) {
+        outDirectDiffuse = vec4(0.0);
+        outDirectSpecular = vec4(0.0);
+        return;
+    }
+    vec3 v = normalize(frame.cameraPosition.xyz - s.position);
+    vec3 n = s.normal;
+    // Normals facing away from the viewer (interpolation, normal maps) would go black; bend them.
+    if (dot(n, v) < 0.0) n = normalize(n - v * (dot(n, v) * 1.01));
+    float alpha = alphaFromRoughness(s.roughness);
+    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);
+    vec3 f0 = specularF0(s.baseColor, s.metalness);
+
+    vec3 diffuse = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    int count = frame.counts.x;
+    for (int i = 0; i < count; ++i) {
+        GpuLight light = lights[i];
+        LightSample ls = sampleLight(light, s.position);
+        float NdotL = dot(n, ls.l);
+        if (NdotL <= 0.0 || max(ls.radiance.r, max(ls.radiance.g, ls.radiance.b)) <= 0.0) continue;
+        float visibility = shadowVisibility(light, s.position, n, frame.exposure.y, uShadowNormalOffset);
+        if (visibility <= 0.0) continue;
+        vec3 E = ls.radiance * visibility * NdotL;
+        diffuse += E * albedo / PI;
+        specular += E * specularBrdf(n, v, ls.l, f0, alpha);
+    }
+    outDirectDiffuse = vec4(diffuse + s.emissive, 1.0);
+    outDirectSpecular = vec4(specular, 1.0);
+}

@@ -1,0 +1,53 @@
+#version 450 core
+// G-buffer pass: writes the surface attributes the lighting passes need.
+#include "frame.glsl"
+#include "material.glsl"
+
+in VertexData {
+    vec3 worldPosition;
+    vec3 worldNormal;
+    vec2 uv;
+    vec4 worldTangent;
+} fs;
+
+layout(location = 0) out vec4 outAlbedo;    // rgb base colour (linear, stored sRGB), a occlusion
+layout(location = 1) out vec4 outNormal;    // rgb world normal
+layout(location = 2) out vec4 outMaterial;  // r roughness, g metalness
+layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance
+
+void main() {
+    GpuMaterial m = materials[uMaterialIndex];
+    vec4 baseColor = materialBaseColor(m, fs.uv);
+    if (materialAlphaDiscard(m, baseColor.a)) discard;
+
+    vec3 n = normalize(fs.worldNormal);
+    // Double-sided materials (and back faces seen through open geometry) face the viewer.
+    if (!gl_FrontFacing) n = -n;
+    if (m.textures.z != 0) {
+        vec3 t = fs.worldTangent.xyz - n * dot(n, fs.worldTangent.xyz);
+        if (dot(t, t) > 1e-10) {
+            t = normalize(t);
+            vec3 b = cross(n, t) * (fs.worldTangent.w < 0.0 ? -1.0 : 1.0);
+            vec3 tn = texture(normalTexture, fs.uv).xyz * 2.0 - 1.0;
+            tn.xy *= m.params.z;
+            n = normalize(mat3(t, b, n) * tn);
+        }
+    }
+
+    float metalness = m.params.x;
+    float roughness = m.params.y;
+    if (m.textures.y != 0) {
+        vec4 mr = texture(metallicRoughnessTexture, fs.uv);
+        roughness *= mr.g;
+        metalness *= mr.b;
+    }
+    float occlusion = 1.0;
+    if (m.modes.x != 0) occlusion = 1.0 + m.params.w * (texture(occlusionTexture, fs.uv).r - 1.0);
+    vec3 emissive = m.emissive.rgb;
+    if (m.textures.w != 0) emissive *= texture(emissiveTexture, fs.uv).rgb;
+
+    outAlbedo = vec4(baseColor.rgb, occlusion);
+    outNormal = vec4(n, 1.0);
+    outMaterial = vec4(clamp(roughness, 0.0, 1.0), clamp(metalness, 0.0, 1.0), 0.0, 1.0);
+    outEmissive = vec4(emissive, 1.0);
+}

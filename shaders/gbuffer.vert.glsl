@@ -1,0 +1,27 @@
+#version 450 core
+// G-buffer pass: transforms scene geometry to clip space and passes world-space attributes.
+#include "frame.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;
+
+layout(location = LIT_LOC_MODEL) uniform mat4 uModel;
+layout(location = LIT_LOC_NORMAL_MATRIX) uniform mat4 uNormalMatrix;
+
+out VertexData {
+    vec3 worldPosition;
+    vec3 worldNormal;
+    vec2 uv;
+    vec4 worldTangent;
+} vs;
+
+void main() {
+    vec4 world = uModel * vec4(inPosition, 1.0);
+    vs.worldPosition = world.xyz;
+    vs.worldNormal = mat3(uNormalMatrix) * inNormal;
+    vs.worldTangent = vec4(mat3(uModel) * inTangent.xyz, inTangent.w);
+    vs.uv = inUv;
+    gl_Position = frame.viewProjection * world;
+}

@@ -1,0 +1,105 @@
+// Punctual lights (KHR_lights_punctual) and their shadow maps.
+// Units (docs/UNITS.md): intensity is candela for point/spot lights and lux for directional
+// lights, used as radiometric W/sr and W/m² at exposure 1.
+#include "shared.h"
+
+layout(std430, binding = LIT_SSBO_LIGHTS) readonly buffer LightBlock {
+    GpuLight lights[];
+};
+
+layout(binding = LIT_TEX_SHADOW_2D) uniform sampler2DArrayShadow shadowMaps2d;
+layout(binding = LIT_TEX_SHADOW_CUBE) uniform samplerCubeArrayShadow shadowMapsCube;
+
+// The spec's recommended range window: smooth falloff to 0 at `range`, then inverse square.
+float rangeAttenuation(float distance, float range) {
+    float invSquare = 1.0 / max(distance * distance, 1e-4);
+    if (range <= 0.0) return invSquare;
+    float ratio = distance / range;
+    float window = clamp(1.0 - ratio * ratio * ratio * ratio, 0.0, 1.0);
+    return window * invSquare;
+}
+
+// The spec's spot falloff between inner and outer cone: saturate(cos·scale + offset)².
+float spotAttenuation(GpuLight light, vec3 toLight) {
+    float cd = dot(light.directionType.xyz, -toLight);
+    float a = clamp(cd * light.spotShadow.x + light.spotShadow.y, 0.0, 1.0);
+    return a * a;
+}
+
+struct LightSample {
+    vec3 l;          // unit vector from the surface to the light
+    vec3 radiance;   // incident radiance scale: E⊥ = intensity × attenuation × colour (W/m²)
+    float distance;  // metres (1e30 for directional lights)
+};
+
+LightSample sampleLight(GpuLight light, vec3 position) {
+    LightSample s;
+    int type = int(light.directionType.w);
+    if (type == LIT_LIGHT_DIRECTIONAL) {
+        s.l = -light.directionType.xyz;
+        s.distance = 1e30;
+        s.radiance = light.colorIntensity.rgb * light.colorIntensity.a;
+        return s;
+    }
+    vec3 d = light.positionRange.xyz - position;
+    s.distance = length(d);
+    s.l = d / max(s.distance, 1e-6);
+    float attenuation = rangeAttenuation(s.distance, light.positionRange.w);
+    if (type == LIT_LIGHT_SPOT) attenuation *= spotAttenuation(light, s.l);
+    s.radiance = light.colorIntensity.rgb * light.colorIntensity.a * attenuation;
+    return s;
+}
+
+// Fraction of the light reaching `position` (1 = lit), with PCF over a (2k+1)² texel grid of
+// hardware 2×2 comparisons. `normal` offsets the lookup to avoid acne on grazing surfaces.
+float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadius, float normalOffsetTexels) {
+    float index = light.spotShadow.z;
+    if (index < 0.0) return 1.0;
+    int type = int(light.directionType.w);
+    if (type == LIT_LIGHT_POINT) {
+        vec3 fromLight = position - light.positionRange.xyz;
+        float dist = length(fromLight);
+        float texel = 2.0 * dist / float(textureSize(shadowMapsCube, 0).x);  // world size of one texel at this distance
+        vec3 p = position + normal * texel * normalOffsetTexels;
+        vec3 v = p - light.positionRange.xyz;
+        // Depth the cube face's perspective projection gives this point (major-axis distance).
+        float n = light.shadowParams.x, f = light.shadowParams.y;
+        float m = max(abs(v.x), max(abs(v.y), abs(v.z)));
+        float ndc = (f + n) / (f - n) - 2.0 * f * n / ((f - n) * m);
+        float depth = ndc * 0.5 + 0.5 - light.shadowParams.z;
+        // PCF on the cube: jitter the direction in the face plane by ±radius texels.
+        vec3 major = abs(v.x) >= m ? vec3(1, 0, 0) : (abs(v.y) >= m ? vec3(0, 1, 0) : vec3(0, 0, 1));
+        vec3 t1 = normalize(cross(major, abs(major.y) > 0.5 ? vec3(0, 0, 1) : vec3(0, 1, 0)));
+        vec3 t2 = cross(major, t1);
+        float step = 2.0 * m / float(textureSize(shadowMapsCube, 0).x) * max(pcfRadius, 0.0) * 0.5;
+        float sum = 0.0;
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x)
+                sum += texture(shadowMapsCube, vec4(v + (float(x) * t1 + float(y) * t2) * step, index), depth);
+        return sum / 9.0;
+    }
+    vec2 size = vec2(textureSize(shadowMaps2d, 0).xy);
+    // Normal offset scaled by the world size of a texel at this receiver.
+    vec4 clip0 = light.shadowViewProjection * vec4(position, 1.0);
+    float worldTexel;
+    if (type == LIT_LIGHT_DIRECTIONAL) {
+        worldTexel = 2.0 / (size.x * length(vec3(light.shadowViewProjection[0][0], light.shadowViewProjection[1][0],
+                                                  light.shadowViewProjection[2][0])));
+    } else {
+        worldTexel = 2.0 * clip0.w / (size.x * length(vec3(light.shadowViewProjection[0][0],
+                                                          light.shadowViewProjection[1][0],
+                                                          light.shadowViewProjection[2][0])));
+    }
+    vec4 clip = light.shadowViewProjection * vec4(position + normal * worldTexel * normalOffsetTexels, 1.0);
+    vec3 ndc = clip.xyz / clip.w;
+    vec3 uvz = ndc * 0.5 + 0.5;
+    if (any(lessThan(uvz.xy, vec2(0.0))) || any(greaterThan(uvz.xy, vec2(1.0))) || uvz.z > 1.0) return 1.0;
+    float depth = uvz.z - light.shadowParams.z;
+    vec2 texel = 1.0 / size;
+    float radius = max(pcfRadius, 0.0);
+    float sum = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x)
+            sum += texture(shadowMaps2d, vec4(uvz.xy + vec2(x, y) * texel * radius, index, depth));
+    return sum / 9.0;
+}

@@ -1,0 +1,169 @@
+// shared.h — the one header read by both C++ and GLSL.
+//
+// Binding points, limits and the std140/std430 structs that cross the CPU/GPU boundary live
+// here and nowhere else. C++ includes it as <shared.h> (namespace lit::gpu) with static_asserts
+// on every struct size; GLSL gets it through the shader loader's #include.
+// Every struct uses only vec4/ivec4/mat4 members so std140 and std430 lay them out like C++.
+#ifndef LIT_SHARED_H
+#define LIT_SHARED_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace lit::gpu {
+using vec4 = glm::vec4;
+using ivec4 = glm::ivec4;
+using mat4 = glm::mat4;
+#endif
+
+// ---- Uniform buffer binding points -------------------------------------------------------
+#define LIT_UBO_FRAME 0        // FrameUniforms: camera, viewport, exposure, view mode
+#define LIT_UBO_SHADOW_PASS 1  // ShadowPassUniforms: the light view being rendered
+#define LIT_UBO_VOXEL 2        // VoxelUniforms: where the voxel volume is and how to trace it
+
+// ---- Shader storage buffer binding points ------------------------------------------------
+#define LIT_SSBO_LIGHTS 0      // GpuLight[lightCount]
+#define LIT_SSBO_MATERIALS 1   // GpuMaterial[materialCount]
+
+// ---- Uniform locations of per-draw values (layout(location = N) uniform ...) ----------------
+#define LIT_LOC_MODEL 0            // mat4 object → world
+#define LIT_LOC_NORMAL_MATRIX 1    // mat4 inverse transpose of the model matrix
+#define LIT_LOC_MATERIAL 2         // int index into GpuMaterial[]
+
+// ---- Texture units -----------------------------------------------------------------------
+// Material textures (G-buffer, shadow alpha test, voxelization).
+#define LIT_TEX_BASE_COLOR 0
+#define LIT_TEX_METALLIC_ROUGHNESS 1
+#define LIT_TEX_NORMAL 2
+#define LIT_TEX_EMISSIVE 3
+#define LIT_TEX_OCCLUSION 4
+// G-buffer read by the lighting passes.
+#define LIT_TEX_GBUFFER_ALBEDO 5     // rgb albedo (linear), a occlusion
+#define LIT_TEX_GBUFFER_NORMAL 6     // rgb world normal, a unused
+#define LIT_TEX_GBUFFER_MATERIAL 7   // r roughness, g metalness
+#define LIT_TEX_GBUFFER_EMISSIVE 8   // rgb emitted radiance (W/(sr·m²))
+#define LIT_TEX_GBUFFER_DEPTH 9      // window-space depth [0,1]
+// Shadow maps.
+#define LIT_TEX_SHADOW_2D 10         // sampler2DArrayShadow: directional and spot lights
+#define LIT_TEX_SHADOW_CUBE 11       // samplerCubeArrayShadow: point lights
+// Post processing and debug views.
+#define LIT_TEX_HDR_INPUT 12
+#define LIT_TEX_TERM_DIRECT_DIFFUSE 13
+#define LIT_TEX_TERM_DIRECT_SPECULAR 14
+#define LIT_TEX_TERM_INDIRECT_DIFFUSE 15
+#define LIT_TEX_TERM_INDIRECT_SPECULAR 16
+#define LIT_TEX_DEBUG_INPUT 17       // whatever a debug view shows (shadow map layer, ...)
+// Voxel volumes (voxel cone tracing).
+#define LIT_TEX_VOXEL_RADIANCE 18
+#define LIT_TEX_VOXEL_ALBEDO 19
+#define LIT_TEX_VOXEL_NORMAL 20
+#define LIT_TEX_VOXEL_EMISSION 21
+// Cone tracing (ConeTracePass): the GGX lobe's directional albedo table, RG16F, x = n·v,
+// y = roughness, E = F0·r + g (cone.glsl, specularAlbedo).
+#define LIT_TEX_SPECULAR_ALBEDO 22
+#define LIT_SPECULAR_ALBEDO_SIZE 32    // texels per side of that table
+
+// ---- Image units (image load/store) ------------------------------------------------------
+#define LIT_IMG_VOXEL_ALBEDO 0
+#define LIT_IMG_VOXEL_NORMAL 1
+#define LIT_IMG_VOXEL_EMISSION 2
+#define LIT_IMG_VOXEL_RADIANCE 3
+#define LIT_IMG_MIP_SOURCE 4
+#define LIT_IMG_MIP_DEST 5
+// Mipmap pass (MipmapPass): one dispatch writes up to three levels, k+1 at LIT_IMG_MIP_DEST,
+// k+2 and k+3 at these. Units 4..7 stay below GL 4.5's guaranteed minimum of 8 image units.
+#define LIT_IMG_MIP_DEST2 6
+#define LIT_IMG_MIP_DEST3 7
+
+// ---- Voxelization and radiance injection (VoxelizePass, InjectPass) ------------------------
+#define LIT_VOXEL_EMISSION_RANGE 16.0  // radiance (W/(sr·m²)) stored as 1.0 in the emission volume; = VoxelVolume::kEmissionRange
+#define LIT_INJECT_GROUP_SIZE 8        // inject.comp.glsl work group: 8×8×8 voxels
+
+// ---- Limits -------------------------------------------------------------------------------
+#define LIT_MAX_LIGHTS 64            // lights beyond this are ignored with a warning
+#define LIT_MAX_SHADOW_2D 16         // layers of the directional/spot shadow-map array
+#define LIT_MAX_SHADOW_CUBE 8        // cubes in the point-light shadow-map array
+
+// ---- Enumerations -------------------------------------------------------------------------
+#define LIT_LIGHT_DIRECTIONAL 0
+#define LIT_LIGHT_POINT 1
+#define LIT_LIGHT_SPOT 2
+
+// Which image the lighting/tonemap passes show (RenderSettings::View).
+#define LIT_VIEW_FINAL 0
+#define LIT_VIEW_DIRECT_DIFFUSE 1
+#define LIT_VIEW_INDIRECT_DIFFUSE 2
+#define LIT_VIEW_DIRECT_SPECULAR 3
+#define LIT_VIEW_INDIRECT_SPECULAR 4
+#define LIT_VIEW_ALBEDO 5
+#define LIT_VIEW_NORMAL 6
+#define LIT_VIEW_SHADOW_MAP 7
+#define LIT_VIEW_VOXELS 8
+#define LIT_VIEW_ROUGHNESS_METALNESS 9
+
+// How the radiance volume stores radiance (VoxelUniforms::traceOptions.z).
+#define LIT_RADIANCE_FLOAT16 0  // RGBA16F: radiance as is
+#define LIT_RADIANCE_RGBA8 1    // RGBA8: radiance × radianceScale.x, clipped to [0,1] (4× less memory)
+
+#define LIT_ALPHA_OPAQUE 0
+#define LIT_ALPHA_MASK 1
+#define LIT_ALPHA_BLEND 2
+
+// ---- Structs ------------------------------------------------------------------------------
+// Per-frame camera and output parameters. std140, binding LIT_UBO_FRAME.
+struct FrameUniforms {
+    mat4 view;
+    mat4 projection;
+    mat4 viewProjection;
+    mat4 inverseViewProjection;
+    vec4 cameraPosition;   // xyz world position (m), w unused
+    vec4 viewport;         // width, height (pixels), 1/width, 1/height
+    vec4 exposure;         // x linear exposure multiplier, y shadow PCF radius (texels), zw unused
+    ivec4 counts;          // x light count, y view (LIT_VIEW_*), z shadow debug layer, w flags
+};
+
+// One punctual light (KHR_lights_punctual). std430, binding LIT_SSBO_LIGHTS.
+struct GpuLight {
+    vec4 positionRange;    // xyz world position (m), w range (m; 0 = infinite)
+    vec4 directionType;    // xyz unit direction the light travels (world), w LIT_LIGHT_*
+    vec4 colorIntensity;   // rgb linear colour, a intensity (cd for point/spot, lux for directional)
+    vec4 spotShadow;       // x spot angle scale, y spot angle offset (KHR spec), z shadow index (-1 none), w unused
+    vec4 shadowParams;     // x near (m), y far (m), z depth bias (constant), w slope-scaled bias
+    mat4 shadowViewProjection;  // world → light clip space (directional, spot)
+};
+
+// One material. std430, binding LIT_SSBO_MATERIALS.
+struct GpuMaterial {
+    vec4 baseColorFactor;     // linear RGBA
+    vec4 emissive;            // rgb emissive factor × strength, a unused
+    vec4 params;              // x metallic, y roughness, z normal scale, w occlusion strength
+    ivec4 textures;           // x base colour, y metallic-roughness, z normal, w emissive (1 = present)
+    ivec4 modes;              // x occlusion texture present, y alpha mode (LIT_ALPHA_*), z double sided, w unused
+    vec4 alpha;               // x alpha cutoff, yzw unused
+};
+
+// The light view a shadow pass renders. std140, binding LIT_UBO_SHADOW_PASS.
+struct ShadowPassUniforms {
+    mat4 viewProjection;   // world → light clip space for this layer / cube face
+    vec4 lightPosition;    // xyz world position (point lights), w far plane (m)
+};
+
+// The voxel volume and cone-tracing parameters. std140, binding LIT_UBO_VOXEL.
+// The volume is a cube: world point p maps to texture coordinate (p − volumeMin.xyz) / volumeMin.w.
+struct VoxelUniforms {
+    vec4 volumeMin;      // xyz world-space minimum corner (m), w side length of the cube (m)
+    vec4 voxelInfo;      // x resolution N (voxels per side), y 1/N, z voxel size (m), w mip level count
+    vec4 traceParams;    // x indirect intensity, y max trace distance (m), z step (× cone diameter), w diffuse cone aperture (rad)
+    ivec4 traceOptions;  // x specular samples per pixel, y frame index (sample rotation), z radiance encoding (LIT_RADIANCE_*), w unused
+    vec4 radianceScale;  // x multiplier applied when storing radiance, y multiplier when reading it back (= 1/x)
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(VoxelUniforms) == 5 * 16);
+static_assert(sizeof(FrameUniforms) == 4 * 64 + 4 * 16);
+static_assert(sizeof(GpuLight) == 5 * 16 + 64);
+static_assert(sizeof(GpuMaterial) == 6 * 16);
+static_assert(sizeof(ShadowPassUniforms) == 64 + 16);
+}  // namespace lit::gpu
+#endif
+
+#endif  // LIT_SHARED_H

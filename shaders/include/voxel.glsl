@@ -1,0 +1,50 @@
+// The voxel volume: placement, packing of the r32ui material volumes, and the atomic running
+// average that lets many fragments write one voxel without flicker (Crassin & Green 2012,
+// "Octree-Based Sparse Voxelization Using the GPU Hardware Rasterizer", OpenGL Insights ch. 22).
+#include "shared.h"
+
+layout(std140, binding = LIT_UBO_VOXEL) uniform VoxelBlock {
+    VoxelUniforms voxel;
+};
+
+// World position → volume texture coordinate in [0,1]³.
+vec3 worldToVolume(vec3 p) { return (p - voxel.volumeMin.xyz) / voxel.volumeMin.w; }
+// Volume texture coordinate → world position.
+vec3 volumeToWorld(vec3 uvw) { return voxel.volumeMin.xyz + uvw * voxel.volumeMin.w; }
+// Integer voxel → world position of its centre.
+vec3 voxelCenter(ivec3 v) { return voxel.volumeMin.xyz + (vec3(v) + 0.5) * voxel.voxelInfo.z; }
+
+// Radiance as stored in the volume (RGBA8 volumes hold radiance × radianceScale.x).
+vec3 encodeRadiance(vec3 radiance) { return radiance * voxel.radianceScale.x; }
+vec3 decodeRadiance(vec3 stored) { return stored * voxel.radianceScale.y; }
+
+// RGBA8 packed in a uint, as unpackUnorm4x8 expects (x in the low byte).
+vec4 unpackVoxel(uint bits) { return unpackUnorm4x8(bits); }
+
+// The packed running average `current` with `value` (rgb in [0,1]) added. The alpha byte counts
+// the samples averaged so far (saturating at 255, after which it is a moving average).
+uint averageRgbAdd(uint current, vec3 value) {
+    vec4 average = unpackUnorm4x8(current);
+    float count = average.a * 255.0;
+    vec3 sum = average.rgb * count + value;
+    return packUnorm4x8(vec4(sum / (count + 1.0), min(count + 1.0, 255.0) / 255.0));
+}
+
+// Adds `value` (rgb in [0,1]) to the running average stored in `image` at `coord`, with a
+// compare-and-swap loop. `image` must be declared `layout(r32ui) coherent volatile uimage3D`.
+// A macro rather than a function: GLSL allows no format qualifier on a function parameter, and
+// image atomics need one (Mesa: "Image atomic functions should use r32i/r32ui format qualifier").
+// At most a few hundred iterations in pathological cases; bounded so a driver bug cannot hang.
+#define atomicAverageRgb(image, coord, value)                                                   \
+    {                                                                                           \
+        ivec3 avgCoord_ = (coord);                                                              \
+        vec3 avgValue_ = (value);                                                               \
+        uint avgExpected_ = 0u;                                                                 \
+        uint avgDesired_ = averageRgbAdd(0u, avgValue_);                                        \
+        for (int avgTry_ = 0; avgTry_ < 255; ++avgTry_) {                                       \
+            uint avgCurrent_ = imageAtomicCompSwap(image, avgCoord_, avgExpected_, avgDesired_); \
+            if (avgCurrent_ == avgExpected_) break;                                             \
+            avgExpected_ = avgCurrent_;                                                         \
+            avgDesired_ = averageRgbAdd(avgCurrent_, avgValue_);                                \
+        }                                                                                       \
+    }

@@ -1,0 +1,94 @@
+# Command-line tests of lit-render, run by CTest as `cmake -P` (see tests/CMakeLists.txt).
+# Inputs: LIT_RENDER (the executable), SOURCE_DIR (the source tree), OUT_DIR (scratch folder).
+#
+# One good render of the Cornell box, then every kind of bad input must fail with a non-zero
+# exit status and a message on stderr — never a crash, never silence.
+
+foreach(var LIT_RENDER SOURCE_DIR OUT_DIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "lit_render_cli.cmake needs -D${var}=...")
+  endif()
+endforeach()
+
+file(REMOVE_RECURSE "${OUT_DIR}")
+file(MAKE_DIRECTORY "${OUT_DIR}")
+set(cornell "${SOURCE_DIR}/assets/cornell_box.gltf")
+
+# Runs lit-render with the given arguments; sets rc, out and err in the caller's scope.
+function(run_lit_render)
+  execute_process(COMMAND "${LIT_RENDER}" ${ARGN}
+    RESULT_VARIABLE result OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr TIMEOUT 300)
+  set(rc "${result}" PARENT_SCOPE)
+  set(out "${stdout}" PARENT_SCOPE)
+  set(err "${stderr}" PARENT_SCOPE)
+endfunction()
+
+# ---- A good render ----------------------------------------------------------------------------
+set(png "${OUT_DIR}/cornell.png")
+set(hdr "${OUT_DIR}/cornell.hdr")
+run_lit_render("${cornell}" --out "${png}" --hdr "${hdr}" --size 64x64)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "rendering the Cornell box failed (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
+endif()
+foreach(file "${png}" "${hdr}")
+  if(NOT EXISTS "${file}")
+    message(FATAL_ERROR "lit-render exited 0 but did not write ${file}\nstdout:\n${out}\nstderr:\n${err}")
+  endif()
+  file(SIZE "${file}" size)
+  if(size EQUAL 0)
+    message(FATAL_ERROR "lit-render wrote an empty ${file}")
+  endif()
+endforeach()
+file(READ "${png}" signature LIMIT 8 HEX)
+if(NOT signature STREQUAL "89504e470d0a1a0a")
+  message(FATAL_ERROR "${png} is not a PNG file (starts with ${signature})")
+endif()
+if(NOT out MATCHES "wrote .*cornell\\.png")
+  message(FATAL_ERROR "lit-render printed no summary line; stdout:\n${out}")
+endif()
+foreach(tmp "${png}.tmp" "${hdr}.tmp")
+  if(EXISTS "${tmp}")
+    message(FATAL_ERROR "lit-render left its temporary file ${tmp} behind")
+  endif()
+endforeach()
+
+# ---- Bad inputs -------------------------------------------------------------------------------
+# expect_failure(NAME EXPECTED_RC STDERR_REGEX ARGS...): EXPECTED_RC is 1 (runtime) or 2 (usage).
+function(expect_failure name expected_rc stderr_regex)
+  run_lit_render(${ARGN})
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "${name}: lit-render succeeded but should have failed\nstdout:\n${out}\nstderr:\n${err}")
+  endif()
+  if(NOT rc STREQUAL "${expected_rc}")
+    message(FATAL_ERROR "${name}: expected exit status ${expected_rc}, got '${rc}' (a crash?)\nstderr:\n${err}")
+  endif()
+  if(err STREQUAL "")
+    message(FATAL_ERROR "${name}: lit-render failed without a message on stderr")
+  endif()
+  if(NOT err MATCHES "${stderr_regex}")
+    message(FATAL_ERROR "${name}: stderr does not match '${stderr_regex}':\n${err}")
+  endif()
+  message(STATUS "${name}: exit ${rc}, stderr: ${err}")
+endfunction()
+
+set(not_gltf "${OUT_DIR}/not_a_scene.gltf")
+file(WRITE "${not_gltf}" "This is a text file, not glTF.\n")
+
+expect_failure("missing scene file" 1 "cannot load .*does_not_exist\\.gltf"
+  "${OUT_DIR}/does_not_exist.gltf" --out "${OUT_DIR}/a.png" --size 16x16)
+expect_failure("non-glTF file" 1 "cannot load .*not_a_scene\\.gltf"
+  "${not_gltf}" --out "${OUT_DIR}/b.png" --size 16x16)
+expect_failure("bad --size" 2 "--size expects WxH with 1\\.\\.16384, got '12x'"
+  "${cornell}" --out "${OUT_DIR}/c.png" --size 12x)
+expect_failure("unknown flag" 2 "unknown option '--sparkles'"
+  "${cornell}" --out "${OUT_DIR}/d.png" --sparkles)
+expect_failure("unknown view" 2 "unknown view 'xray'"
+  "${cornell}" --out "${OUT_DIR}/e.png" --view xray)
+expect_failure("unknown camera" 2 "unknown camera 'nowhere'.*'camera'"
+  "${cornell}" --out "${OUT_DIR}/f.png" --size 16x16 --camera nowhere)
+
+foreach(file a b c d e f)
+  if(EXISTS "${OUT_DIR}/${file}.png")
+    message(FATAL_ERROR "a failed run still wrote ${OUT_DIR}/${file}.png")
+  endif()
+endforeach()

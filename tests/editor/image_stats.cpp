@@ -1,0 +1,68 @@
+// lit_image_stats FILE.png [X Y W H]
+// Prints "WIDTH HEIGHT MEAN STDDEV": the image size and the mean and standard deviation of its
+// R, G and B values (0..255), over the whole image or the rectangle given (pixels, origin top
+// left). The editor tests use it to tell a real capture from a blank one.
+
+#include <stb_image.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+namespace {
+
+struct StbiFree {
+    void operator()(unsigned char* pixels) const { stbi_image_free(pixels); }
+};
+
+bool parseInt(const char* text, int& value) {
+    char* end = nullptr;
+    const long parsed = std::strtol(text, &end, 10);
+    if (end == text || *end != '\0' || parsed < 0 || parsed > 1 << 20) return false;
+    value = static_cast<int>(parsed);
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2 && argc != 6) {
+        std::fprintf(stderr, "usage: lit_image_stats FILE.png [X Y W H]\n");
+        return 2;
+    }
+    int width = 0, height = 0, channels = 0;
+    const std::unique_ptr<unsigned char, StbiFree> pixels(stbi_load(argv[1], &width, &height, &channels, 3));
+    if (!pixels) {
+        std::fprintf(stderr, "lit_image_stats: cannot read %s: %s\n", argv[1], stbi_failure_reason());
+        return 1;
+    }
+    int x = 0, y = 0, w = width, h = height;
+    if (argc == 6 && !(parseInt(argv[2], x) && parseInt(argv[3], y) && parseInt(argv[4], w) && parseInt(argv[5], h))) {
+        std::fprintf(stderr, "lit_image_stats: X Y W H must be whole numbers\n");
+        return 2;
+    }
+    if (w == 0 || h == 0 || x + w > width || y + h > height) {
+        std::fprintf(stderr, "lit_image_stats: rectangle %d,%d %dx%d is empty or outside the %dx%d image\n", x, y, w, h,
+                     width, height);
+        return 2;
+    }
+    double sum = 0.0, sumSquares = 0.0;
+    for (int row = y; row < y + h; ++row) {
+        for (int column = x; column < x + w; ++column) {
+            const unsigned char* p = pixels.get() + (static_cast<std::size_t>(row) * width + column) * 3;
+            for (int c = 0; c < 3; ++c) {
+                const double v = p[c];
+                sum += v;
+                sumSquares += v * v;
+            }
+        }
+    }
+    const double count = 3.0 * w * h;
+    const double mean = sum / count;
+    const double variance = std::max(sumSquares / count - mean * mean, 0.0);
+    std::printf("%d %d %.3f %.3f\n", width, height, mean, std::sqrt(variance));
+    return 0;
+}

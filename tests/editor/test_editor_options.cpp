@@ -1,0 +1,75 @@
+#include <gtest/gtest.h>
+
+#include <string_view>
+#include <vector>
+
+#include "EditorOptions.h"
+
+namespace {
+
+using lit::editor::EditorOptions;
+using lit::editor::OptionsError;
+using lit::editor::parseEditorOptions;
+
+EditorOptions parse(std::vector<std::string_view> args) { return parseEditorOptions(args); }
+
+// The message names the offending argument, so a test can tell one mistake from another.
+std::string errorOf(std::vector<std::string_view> args) {
+    try {
+        parseEditorOptions(args);
+    } catch (const OptionsError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+TEST(EditorOptions, DefaultsOpenTheBuiltInSceneInA1280x720Window) {
+    const EditorOptions options = parse({});
+    EXPECT_FALSE(options.scene);
+    EXPECT_FALSE(options.screenshot);
+    EXPECT_EQ(options.width, 1280);
+    EXPECT_EQ(options.height, 720);
+    EXPECT_FALSE(options.help);
+}
+
+TEST(EditorOptions, ParsesSceneScreenshotFramesAndSize) {
+    const EditorOptions options =
+        parse({"scene.gltf", "--screenshot", "out.png", "--frames", "5", "--size", "640x360"});
+    ASSERT_TRUE(options.scene);
+    EXPECT_EQ(*options.scene, "scene.gltf");
+    ASSERT_TRUE(options.screenshot);
+    EXPECT_EQ(*options.screenshot, "out.png");
+    EXPECT_EQ(options.frames, 5);
+    EXPECT_EQ(options.width, 640);
+    EXPECT_EQ(options.height, 360);
+}
+
+TEST(EditorOptions, OptionsMayComeBeforeTheScene) {
+    const EditorOptions options = parse({"--size", "800x600", "box.glb"});
+    ASSERT_TRUE(options.scene);
+    EXPECT_EQ(*options.scene, "box.glb");
+    EXPECT_EQ(options.width, 800);
+}
+
+TEST(EditorOptions, ScreenshotDefaultsToEnoughFramesForGpuTimings) {
+    // The profiler's timings arrive kFramesInFlight (4) frames late.
+    EXPECT_GT(parse({"--screenshot", "a.png"}).frames, 4);
+}
+
+TEST(EditorOptions, Help) {
+    EXPECT_TRUE(parse({"--help"}).help);
+    EXPECT_TRUE(parse({"-h"}).help);
+}
+
+TEST(EditorOptions, RejectsBadInputWithMessagesNamingTheProblem) {
+    EXPECT_NE(errorOf({"--size", "640"}).find("WIDTHxHEIGHT"), std::string::npos);
+    EXPECT_NE(errorOf({"--size", "0x360"}).find("--size"), std::string::npos);
+    EXPECT_NE(errorOf({"--size", "640xabc"}).find("--size height"), std::string::npos);
+    EXPECT_NE(errorOf({"--frames", "0", "--screenshot", "a.png"}).find("--frames"), std::string::npos);
+    EXPECT_NE(errorOf({"--frames", "3"}).find("only applies with --screenshot"), std::string::npos);
+    EXPECT_NE(errorOf({"--screenshot"}).find("needs a value"), std::string::npos);
+    EXPECT_NE(errorOf({"--bogus"}).find("unknown option '--bogus'"), std::string::npos);
+    EXPECT_NE(errorOf({"a.gltf", "b.gltf"}).find("more than one scene"), std::string::npos);
+}
+
+}  // namespace

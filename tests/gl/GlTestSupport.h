@@ -1,0 +1,122 @@
+#pragma once
+// Shared helpers for GL tests: a headless context per process, the Cornell box, and image
+// sampling in normalized coordinates.
+
+#include "Log.h"
+#include "RenderSettings.h"
+#include "Renderer.h"
+#include "context/HeadlessContext.h"
+#include "scene/CameraView.h"
+#include "scene/GltfLoader.h"
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace lit::test {
+
+inline std::filesystem::path sourceDir() { return LIT_SOURCE_DIR; }
+inline std::filesystem::path outputDir() {
+    std::filesystem::path dir = LIT_TEST_OUTPUT_DIR;
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// Linear HDR image, rows bottom-up as GL returns them.
+struct HdrImage {
+    int width = 0, height = 0;
+    std::vector<float> rgb;
+
+    glm::vec3 at(int x, int y) const {
+        const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
+        return {rgb[i], rgb[i + 1], rgb[i + 2]};
+    }
+    // Mean over a rectangle given in [0,1]² image coordinates, origin top-left (as in a picture).
+    glm::vec3 mean(float u0, float v0, float u1, float v1) const {
+        glm::dvec3 sum(0.0);
+        int count = 0;
+        const int x0 = static_cast<int>(u0 * width), x1 = static_cast<int>(u1 * width);
+        const int y0 = static_cast<int>(v0 * height), y1 = static_cast<int>(v1 * height);
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                sum += glm::dvec3(at(x, height - 1 - y));
+                ++count;
+            }
+        return count ? glm::vec3(sum / double(count)) : glm::vec3(0.0f);
+    }
+};
+
+// Mean of a (2r+1)² pixel window around pixel (x, y) given bottom-up (GL) coordinates.
+inline glm::vec3 windowMean(const HdrImage& image, int cx, int cy, int r) {
+    glm::dvec3 sum(0.0);
+    int count = 0;
+    for (int y = cy - r; y <= cy + r; ++y)
+        for (int x = cx - r; x <= cx + r; ++x) {
+            if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+            sum += glm::dvec3(image.at(x, y));
+            ++count;
+        }
+    return count ? glm::vec3(sum / double(count)) : glm::vec3(0.0f);
+}
+
+// Pixel (bottom-up) where a world-space point appears.
+inline glm::ivec2 projectToPixel(const CameraView& camera, const glm::vec3& world, int width, int height) {
+    const glm::vec4 clip = camera.projection * camera.view * glm::vec4(world, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {static_cast<int>((ndc.x * 0.5f + 0.5f) * width), static_cast<int>((ndc.y * 0.5f + 0.5f) * height)};
+}
+
+inline float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// One context and renderer per test process (each test case runs in its own process).
+class GlFixture : public ::testing::Test {
+protected:
+    void SetUp() override {
+        try {
+            context_ = std::make_unique<HeadlessContext>();
+        } catch (const std::exception& e) {
+            GTEST_FAIL() << "no headless GL 4.5 context: " << e.what();
+        }
+        renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
+    }
+
+    Scene loadCornellBox() { return loadGltf(sourceDir() / "assets" / "cornell_box.gltf", log_); }
+
+    CameraView cameraFor(const Scene& scene, const RenderSettings& settings) const {
+        return sceneCameraView(scene, scene.cameras.empty() ? -1 : 0, float(settings.width) / float(settings.height));
+    }
+
+    HdrImage render(const Scene& scene, const RenderSettings& settings, int frames = 1) {
+        renderer_->setScene(scene);
+        const CameraView camera = cameraFor(scene, settings);
+        for (int i = 0; i < frames; ++i) renderer_->render(scene, camera, settings);
+        HdrImage image{settings.width, settings.height, renderer_->readHdrRgb()};
+        return image;
+    }
+
+    static RenderSettings smallSettings(int size = 128) {
+        RenderSettings s;
+        s.width = size;
+        s.height = size;
+        s.gi = false;
+        s.voxelResolution = 64;
+        return s;
+    }
+
+    // Mean radiance around where `world` appears in `image` (rendered with cameraFor(scene, settings)).
+    glm::vec3 radianceAt(const Scene& scene, const RenderSettings& settings, const HdrImage& image,
+                         const glm::vec3& world, int radius = 2) const {
+        const glm::ivec2 p = projectToPixel(cameraFor(scene, settings), world, image.width, image.height);
+        return windowMean(image, p.x, p.y, radius);
+    }
+
+    Log log_;
+    std::unique_ptr<HeadlessContext> context_;
+    std::unique_ptr<Renderer> renderer_;
+};
+
+}  // namespace lit::test

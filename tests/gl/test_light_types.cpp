@@ -1,0 +1,108 @@
+// Every light type casts a shadow and follows the KHR_lights_punctual falloff, on a scene built in
+// code: a 4 m white floor, a 0.6 m box floating 1 m above its centre, one light 3 m up.
+#include "GlTestSupport.h"
+
+#include "scene/SceneBuilder.h"
+
+#include <glm/gtc/constants.hpp>
+
+namespace lit::test {
+namespace {
+
+struct LightCase {
+    const char* name;
+    LightType type;
+};
+
+class LightTypes : public GlFixture, public ::testing::WithParamInterface<LightCase> {
+protected:
+    Scene makeScene(LightType type) {
+        Scene scene;
+        const int white = addMaterial(scene, glm::vec3(0.8f), 0.9f, 0.0f, "white");
+        addMeshNode(scene, makePlaneMesh("floor", 4.0f, white, 4), glm::vec3(0.0f));
+        addMeshNode(scene, makeBoxMesh("occluder", glm::vec3(0.6f), white), glm::vec3(0.0f, 1.0f, 0.0f));
+        Light light;
+        light.type = type;
+        light.intensity = type == LightType::Directional ? 3.0f : 27.0f;
+        light.outerConeAngle = 0.9f;
+        light.innerConeAngle = 0.7f;
+        addLightNode(scene, light, glm::vec3(0.0f, 3.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+        Camera camera;
+        camera.yfov = 0.9f;
+        addCameraNode(scene, camera, glm::vec3(0.0f, 4.0f, 3.0f), glm::vec3(0.0f, 0.0f, 0.0f));
+        return scene;
+    }
+};
+
+TEST_P(LightTypes, OccluderCastsAShadowBelowIt) {
+    const Scene scene = makeScene(GetParam().type);
+    const RenderSettings settings = smallSettings();
+    const HdrImage image = render(scene, settings);
+    // (0,0,0.05) is below the box for every light type; (1.2,0,0) is outside its shadow.
+    const float shadowed = luminance(radianceAt(scene, settings, image, {0.0f, 0.0f, 0.05f}, 1));
+    const float lit = luminance(radianceAt(scene, settings, image, {1.2f, 0.0f, 0.0f}, 1));
+    EXPECT_GT(lit, 0.1f);
+    EXPECT_LT(shadowed, 0.1f * lit) << "shadowed " << shadowed << " lit " << lit;
+}
+
+TEST_P(LightTypes, WithoutShadowsTheSamePointIsLit) {
+    const Scene scene = makeScene(GetParam().type);
+    RenderSettings settings = smallSettings();
+    settings.shadows = false;
+    const HdrImage image = render(scene, settings);
+    const float below = luminance(radianceAt(scene, settings, image, {0.0f, 0.0f, 0.05f}, 1));
+    EXPECT_GT(below, 0.1f);
+}
+
+TEST_P(LightTypes, IrradianceFollowsTheUnits) {
+    // L = albedo/π · E, E = I·cosθ/d² (point, spot inside the inner cone) or E = lux·cosθ.
+    const Scene scene = makeScene(GetParam().type);
+    RenderSettings settings = smallSettings();
+    const HdrImage image = render(scene, settings);
+    const glm::vec3 p{1.2f, 0.0f, 0.0f};
+    const glm::vec3 toLight = glm::vec3(0.0f, 3.0f, 0.0f) - p;
+    const float d = glm::length(toLight);
+    const float cosTheta = toLight.y / d;
+    const float E = GetParam().type == LightType::Directional ? 3.0f : 27.0f * cosTheta / (d * d);
+    const float expected = 0.8f / glm::pi<float>() * E;
+    const float measured = luminance(radianceAt(scene, settings, image, p, 1));
+    EXPECT_NEAR(measured, expected, 0.04f * expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllTypes, LightTypes,
+                         ::testing::Values(LightCase{"directional", LightType::Directional},
+                                           LightCase{"point", LightType::Point}, LightCase{"spot", LightType::Spot}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST_F(GlFixture, SpotFalloffMatchesTheSpec) {
+    // A spot straight down over a floor: radiance at increasing angles follows
+    // saturate(cosθ·scale + offset)² · cosθ / d² (KHR_lights_punctual).
+    Scene scene;
+    const int white = addMaterial(scene, glm::vec3(1.0f), 1.0f, 0.0f, "white");
+    addMeshNode(scene, makePlaneMesh("floor", 8.0f, white, 8), glm::vec3(0.0f));
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.intensity = 10.0f;
+    spot.innerConeAngle = 0.2f;
+    spot.outerConeAngle = 0.6f;
+    spot.castsShadow = false;
+    addLightNode(scene, spot, glm::vec3(0.0f, 2.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+    Camera camera;
+    camera.yfov = 1.2f;
+    addCameraNode(scene, camera, glm::vec3(0.0f, 3.0f, 0.01f), glm::vec3(0.0f, 0.0f, 0.0f));
+    const RenderSettings settings = smallSettings(256);
+    const HdrImage image = render(scene, settings);
+    const float scale = 1.0f / (std::cos(0.2f) - std::cos(0.6f));
+    const float offset = -std::cos(0.6f) * scale;
+    for (float angle : {0.1f, 0.3f, 0.4f, 0.5f, 0.7f}) {
+        const float x = 2.0f * std::tan(angle);
+        const float d = 2.0f / std::cos(angle);
+        const float cone = std::clamp(std::cos(angle) * scale + offset, 0.0f, 1.0f);
+        const float expected = 1.0f / glm::pi<float>() * 10.0f * cone * cone * std::cos(angle) / (d * d);
+        const float measured = luminance(radianceAt(scene, settings, image, {x, 0.0f, 0.0f}, 0));
+        EXPECT_NEAR(measured, expected, 0.03f * expected + 2e-3f) << "angle " << angle;
+    }
+}
+
+}  // namespace
+}  // namespace lit::test

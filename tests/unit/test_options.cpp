@@ -1,0 +1,200 @@
+// lit-render's command line (tools/lit_render/Options.cpp): what is accepted, what it means, and
+// the exact message for what is rejected (the message is the only help a user gets).
+
+#include "Options.h"
+
+#include "scene/Scene.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+using lit::cli::Options;
+using lit::cli::parseOptions;
+using lit::cli::UsageError;
+
+// The message parseOptions throws for `args`, or "" when it accepts them.
+std::string usageError(const std::vector<std::string>& args) {
+    try {
+        parseOptions(args);
+    } catch (const UsageError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(Options, MinimalCommandLine) {
+    const Options o = parseOptions({"scene.gltf", "--out", "image.png"});
+    EXPECT_FALSE(o.help);
+    EXPECT_EQ(o.scene, "scene.gltf");
+    EXPECT_EQ(o.out, "image.png");
+    EXPECT_TRUE(o.hdr.empty());
+    EXPECT_FALSE(o.width.has_value());
+    EXPECT_FALSE(o.camera.has_value());
+    EXPECT_EQ(o.frameCount(), 1);
+    EXPECT_EQ(o.benchFrames, 0);
+    // No flag given: the settings come through untouched.
+    EXPECT_EQ(lit::cli::applyOptions(o, lit::RenderSettings{}), lit::RenderSettings{});
+}
+
+TEST(Options, EveryFlag) {
+    const Options o = parseOptions({"--size", "320x200", "s.glb", "--out", "a/b.png", "--hdr", "c.hdr", "--camera", "top",
+                                    "--exposure", "2.5", "--no-shadows", "--view", "indirect-diffuse", "--gi", "off",
+                                    "--voxels", "256", "--frames", "3", "--settings", "s.json"});
+    EXPECT_EQ(o.scene, "s.glb");
+    EXPECT_EQ(o.out, "a/b.png");
+    EXPECT_EQ(o.hdr, "c.hdr");
+    EXPECT_EQ(o.camera, "top");
+    EXPECT_EQ(o.settings, "s.json");
+    EXPECT_EQ(o.frameCount(), 3);
+
+    const lit::RenderSettings s = lit::cli::applyOptions(o, lit::RenderSettings{});
+    EXPECT_EQ(s.width, 320);
+    EXPECT_EQ(s.height, 200);
+    EXPECT_FLOAT_EQ(s.exposure, 2.5f);
+    EXPECT_FALSE(s.shadows);
+    EXPECT_EQ(s.view, lit::View::IndirectDiffuse);
+    EXPECT_FALSE(s.gi);
+    EXPECT_EQ(s.voxelResolution, 256);
+}
+
+TEST(Options, FlagsOverrideOnlyWhatTheyName) {
+    lit::RenderSettings base;
+    base.width = 64;
+    base.height = 48;
+    base.gi = false;
+    base.exposure = 3.0f;
+    const lit::RenderSettings s = lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--gi", "on"}), base);
+    EXPECT_EQ(s.width, 64);
+    EXPECT_EQ(s.height, 48);
+    EXPECT_TRUE(s.gi);
+    EXPECT_FLOAT_EQ(s.exposure, 3.0f);
+}
+
+TEST(Options, EqualsFormAndUppercaseSizeSeparator) {
+    const Options o = parseOptions({"x.gltf", "--out=x.png", "--size=16X9", "--exposure=0.5"});
+    EXPECT_EQ(o.out, "x.png");
+    EXPECT_EQ(o.width, 16);
+    EXPECT_EQ(o.height, 9);
+    EXPECT_FLOAT_EQ(*o.exposure, 0.5f);
+}
+
+TEST(Options, HelpWinsOverEverythingElse) {
+    EXPECT_TRUE(parseOptions({"--help"}).help);
+    EXPECT_EQ(usageError({"--bogus", "-h"}), "unknown option '--bogus'");  // arguments are read in order
+    EXPECT_TRUE(parseOptions({"scene.gltf", "--help", "--size", "0x0"}).help);
+    EXPECT_FALSE(lit::cli::usageText().empty());
+}
+
+TEST(Options, BenchNeedsNoOutput) {
+    const Options o = parseOptions({"x.gltf", "--bench", "10", "--json", "bench.json"});
+    EXPECT_EQ(o.benchFrames, 10);
+    EXPECT_EQ(o.frameCount(), 10);
+    EXPECT_EQ(o.benchJson, "bench.json");
+    EXPECT_TRUE(o.out.empty());
+}
+
+TEST(Options, SizeMessages) {
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size", "12x"}), "--size expects WxH with 1..16384, got '12x'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size", "0x10"}), "--size expects WxH with 1..16384, got '0x10'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size", "16385x1"}), "--size expects WxH with 1..16384, got '16385x1'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size", "64"}), "--size expects WxH with 1..16384, got '64'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size", "-4x4"}), "--size expects WxH with 1..16384, got '-4x4'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size", "4x4x4"}), "--size expects WxH with 1..16384, got '4x4x4'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size", " 4x4"}), "--size expects WxH with 1..16384, got ' 4x4'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size", "16384x1"}), "");
+}
+
+TEST(Options, NumberMessages) {
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--exposure", "bright"}), "--exposure expects a positive number, got 'bright'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--exposure", "0"}), "--exposure expects a positive number, got '0'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--exposure", "-1"}), "--exposure expects a positive number, got '-1'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--exposure", "inf"}), "--exposure expects a positive number, got 'inf'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--exposure", "1.5x"}), "--exposure expects a positive number, got '1.5x'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--frames", "0"}), "--frames expects an integer from 1 to 100000, got '0'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--frames", "2.5"}), "--frames expects an integer from 1 to 100000, got '2.5'");
+    EXPECT_EQ(usageError({"x.gltf", "--bench", "many"}), "--bench expects a frame count from 1 to 100000, got 'many'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--voxels", "100"}), "--voxels expects a power of two from 64 to 512, got '100'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--voxels", "1024"}), "--voxels expects a power of two from 64 to 512, got '1024'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--gi", "yes"}), "--gi expects on or off, got 'yes'");
+}
+
+TEST(Options, ViewMessageListsTheViews) {
+    const std::string message = usageError({"x.gltf", "--out", "x.png", "--view", "fancy"});
+    EXPECT_EQ(message.rfind("unknown view 'fancy'; views are: final, direct-diffuse", 0), 0u) << message;
+    EXPECT_NE(message.find("indirect-diffuse"), std::string::npos) << message;
+}
+
+TEST(Options, StructuralMessages) {
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--fast"}), "unknown option '--fast'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "-q"}), "unknown option '-q'");
+    EXPECT_EQ(usageError({"--out", "x.png"}), "no scene given (lit-render SCENE.gltf --out image.png)");
+    EXPECT_EQ(usageError({}), "no scene given (lit-render SCENE.gltf --out image.png)");
+    EXPECT_EQ(usageError({"x.gltf"}), "--out is required (unless --bench)");
+    EXPECT_EQ(usageError({"x.gltf", "--out"}), "missing value for --out (expects FILE.png)");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "--size", "4x4"}), "missing value for --out (expects FILE.png)");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size"}), "missing value for --size (expects WxH)");
+    EXPECT_EQ(usageError({"x.gltf", "y.gltf", "--out", "x.png"}), "unexpected argument 'y.gltf' (the scene is already 'x.gltf')");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.jpg"}), "--out writes a .png file; got 'x.jpg'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--hdr", "x.exr"}), "--hdr writes a .hdr file; got 'x.exr'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--json", "b.json"}), "--json needs --bench");
+    EXPECT_EQ(usageError({"x.gltf", "--bench", "5", "--frames", "2"}),
+              "--frames and --bench both set the number of frames; give one of them");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--no-shadows=1"}), "--no-shadows takes no value, got '--no-shadows=1'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--camera", ""}), "--camera expects a camera name or index, got ''");
+}
+
+lit::Scene sceneWithCameras() {
+    lit::Scene scene;
+    scene.cameras.push_back({.name = "front"});
+    scene.cameras.push_back({.name = "top"});
+    lit::Node node;
+    node.name = "top_node";
+    node.camera = 1;
+    scene.nodes.push_back(node);
+    return scene;
+}
+
+TEST(Options, CameraByIndexOrName) {
+    const lit::Scene scene = sceneWithCameras();
+    const auto camera = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args{"x.gltf", "--out", "x.png"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        return lit::cli::resolveCamera(parseOptions(args), scene);
+    };
+    EXPECT_EQ(camera({}), 0);  // default: the scene's first camera
+    EXPECT_EQ(camera({"--camera", "1"}), 1);
+    EXPECT_EQ(camera({"--camera", "top"}), 1);
+    EXPECT_EQ(camera({"--camera", "top_node"}), 1);  // node names work too
+    EXPECT_EQ(camera({"--camera", "front"}), 0);
+}
+
+TEST(Options, UnknownCameraListsTheCameras) {
+    const lit::Scene scene = sceneWithCameras();
+    const auto message = [&](const std::string& name) {
+        try {
+            lit::cli::resolveCamera(parseOptions({"x.gltf", "--out", "x.png", "--camera", name}), scene);
+        } catch (const UsageError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(message("side"), "unknown camera 'side'; the scene's cameras are: 0 'front', 1 'top'");
+    EXPECT_EQ(message("2"), "unknown camera '2'; the scene's cameras are: 0 'front', 1 'top'");
+}
+
+TEST(Options, SceneWithoutCamerasUsesTheFramingCamera) {
+    const lit::Scene empty;
+    EXPECT_EQ(lit::cli::resolveCamera(parseOptions({"x.gltf", "--out", "x.png"}), empty), -1);
+    try {
+        lit::cli::resolveCamera(parseOptions({"x.gltf", "--out", "x.png", "--camera", "0"}), empty);
+        FAIL() << "camera 0 of a scene without cameras was accepted";
+    } catch (const UsageError& e) {
+        EXPECT_STREQ(e.what(), "unknown camera '0'; the scene has no cameras");
+    }
+}
+
+}  // namespace

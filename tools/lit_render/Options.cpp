@@ -1,0 +1,231 @@
+#include "Options.h"
+
+#include "scene/Scene.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
+namespace lit::cli {
+
+namespace {
+
+// Integer in [lo, hi] spelled exactly (no sign, spaces or trailing text), else nullopt.
+std::optional<int> parseInt(std::string_view text, int lo, int hi) {
+    int value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || value < lo || value > hi) return std::nullopt;
+    return value;
+}
+
+// A finite number spelled exactly, else nullopt.
+std::optional<float> parseFloat(std::string_view text) {
+    float value = 0.0f;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::string lower(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+// "final, direct-diffuse, ..." — every View, in declaration order (RoughnessMetalness is last).
+std::string viewNames() {
+    std::string names;
+    for (int i = 0; i <= static_cast<int>(View::RoughnessMetalness); ++i)
+        names += (i ? ", " : "") + std::string(toString(static_cast<View>(i)));
+    return names;
+}
+
+void requireExtension(const std::filesystem::path& path, const char* flag, const char* extension) {
+    if (lower(path.extension().string()) != extension)
+        throw UsageError(std::string(flag) + " writes a " + extension + " file; got '" + path.string() + "'");
+}
+
+}  // namespace
+
+Options parseOptions(const std::vector<std::string>& args) {
+    Options options;
+    bool haveScene = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg.size() < 2 || arg[0] != '-') {
+            if (haveScene)
+                throw UsageError("unexpected argument '" + arg + "' (the scene is already '" + options.scene.string() + "')");
+            if (arg.empty()) throw UsageError("the scene file name is empty");
+            options.scene = arg;
+            haveScene = true;
+            continue;
+        }
+
+        // "--flag value" or "--flag=value".
+        std::string flag = arg;
+        std::optional<std::string> inlineValue;
+        if (const std::size_t eq = arg.find('='); arg.starts_with("--") && eq != std::string::npos) {
+            flag = arg.substr(0, eq);
+            inlineValue = arg.substr(eq + 1);
+        }
+        // The value of a flag is the next argument, unless that is another flag: then the value
+        // was forgotten, and taking "--size" as a file name would only confuse later.
+        const auto value = [&](const char* expects) -> std::string {
+            if (inlineValue) return *inlineValue;
+            if (i + 1 >= args.size() || args[i + 1].starts_with("--"))
+                throw UsageError("missing value for " + flag + " (expects " + expects + ")");
+            return args[++i];
+        };
+        const auto noValue = [&] {
+            if (inlineValue) throw UsageError(flag + " takes no value, got '" + arg + "'");
+        };
+
+        if (flag == "--help" || flag == "-h") {
+            noValue();
+            Options help;
+            help.help = true;
+            return help;
+        } else if (flag == "--out" || flag == "-o") {
+            options.out = value("FILE.png");
+            if (options.out.empty()) throw UsageError("--out expects a file name, got ''");
+        } else if (flag == "--hdr") {
+            options.hdr = value("FILE.hdr");
+            if (options.hdr.empty()) throw UsageError("--hdr expects a file name, got ''");
+        } else if (flag == "--size") {
+            const std::string text = value("WxH");
+            const std::size_t x = text.find_first_of("xX");
+            const auto w = x == std::string::npos ? std::nullopt : parseInt(std::string_view(text).substr(0, x), 1, kMaxImageSide);
+            const auto h = x == std::string::npos ? std::nullopt : parseInt(std::string_view(text).substr(x + 1), 1, kMaxImageSide);
+            if (!w || !h)
+                throw UsageError("--size expects WxH with 1.." + std::to_string(kMaxImageSide) + ", got '" + text + "'");
+            options.width = *w;
+            options.height = *h;
+        } else if (flag == "--camera") {
+            const std::string text = value("NAME or INDEX");
+            if (text.empty()) throw UsageError("--camera expects a camera name or index, got ''");
+            options.camera = text;
+        } else if (flag == "--exposure") {
+            const std::string text = value("a number");
+            const auto exposure = parseFloat(text);
+            if (!exposure || *exposure <= 0.0f) throw UsageError("--exposure expects a positive number, got '" + text + "'");
+            options.exposure = *exposure;
+        } else if (flag == "--no-shadows") {
+            noValue();
+            options.noShadows = true;
+        } else if (flag == "--view") {
+            const std::string text = value("a view name");
+            const auto view = parseView(text);
+            if (!view) throw UsageError("unknown view '" + text + "'; views are: " + viewNames());
+            options.view = *view;
+        } else if (flag == "--gi") {
+            const std::string text = value("on or off");
+            if (text == "on")
+                options.gi = true;
+            else if (text == "off")
+                options.gi = false;
+            else
+                throw UsageError("--gi expects on or off, got '" + text + "'");
+        } else if (flag == "--voxels") {
+            const std::string text = value("64, 128, 256 or 512");
+            const auto n = parseInt(text, 64, 512);
+            if (!n || (*n & (*n - 1)) != 0)
+                throw UsageError("--voxels expects a power of two from 64 to 512, got '" + text + "'");
+            options.voxels = *n;
+        } else if (flag == "--frames") {
+            const std::string text = value("a frame count");
+            const auto n = parseInt(text, 1, kMaxFrames);
+            if (!n) throw UsageError("--frames expects an integer from 1 to " + std::to_string(kMaxFrames) + ", got '" + text + "'");
+            options.frames = *n;
+        } else if (flag == "--bench") {
+            const std::string text = value("a frame count");
+            const auto n = parseInt(text, 1, kMaxFrames);
+            if (!n) throw UsageError("--bench expects a frame count from 1 to " + std::to_string(kMaxFrames) + ", got '" + text + "'");
+            options.benchFrames = *n;
+        } else if (flag == "--json") {
+            options.benchJson = value("FILE.json");
+            if (options.benchJson.empty()) throw UsageError("--json expects a file name, got ''");
+        } else if (flag == "--settings") {
+            options.settings = value("FILE.json");
+            if (options.settings.empty()) throw UsageError("--settings expects a file name, got ''");
+        } else {
+            throw UsageError("unknown option '" + flag + "'");
+        }
+    }
+
+    if (!haveScene) throw UsageError("no scene given (lit-render SCENE.gltf --out image.png)");
+    if (options.benchFrames == 0 && options.out.empty()) throw UsageError("--out is required (unless --bench)");
+    if (!options.out.empty()) requireExtension(options.out, "--out", ".png");
+    if (!options.hdr.empty()) requireExtension(options.hdr, "--hdr", ".hdr");
+    if (!options.benchJson.empty() && options.benchFrames == 0) throw UsageError("--json needs --bench");
+    if (options.frames && options.benchFrames > 0)
+        throw UsageError("--frames and --bench both set the number of frames; give one of them");
+    return options;
+}
+
+RenderSettings applyOptions(const Options& options, RenderSettings base) {
+    if (options.width) base.width = *options.width;
+    if (options.height) base.height = *options.height;
+    if (options.exposure) base.exposure = *options.exposure;
+    if (options.noShadows) base.shadows = false;
+    if (options.view) base.view = *options.view;
+    if (options.gi) base.gi = *options.gi;
+    if (options.voxels) base.voxelResolution = *options.voxels;
+    return base;
+}
+
+int resolveCamera(const Options& options, const Scene& scene) {
+    if (!options.camera) return scene.cameras.empty() ? -1 : 0;
+    const std::string& wanted = *options.camera;
+    int index = -1;
+    if (std::all_of(wanted.begin(), wanted.end(), [](unsigned char c) { return std::isdigit(c); })) {
+        const auto n = parseInt(wanted, 0, std::max(0, static_cast<int>(scene.cameras.size()) - 1));
+        if (n && !scene.cameras.empty()) index = *n;
+    } else {
+        index = scene.findCamera(wanted);
+    }
+    if (index >= 0) return index;
+
+    std::string message = "unknown camera '" + wanted + "'; ";
+    if (scene.cameras.empty()) throw UsageError(message + "the scene has no cameras");
+    message += "the scene's cameras are:";
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
+        message += (i ? ", " : " ") + std::to_string(i) + " '" + scene.cameras[i].name + "'";
+    throw UsageError(message);
+}
+
+std::string shortUsage() {
+    return "usage: lit-render SCENE.gltf --out image.png [--hdr image.hdr] [--size WxH] [--camera NAME|INDEX]\n"
+           "                  [--exposure X] [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
+           "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n";
+}
+
+std::string usageText() {
+    const RenderSettings defaults;  // the defaults quoted below come from the struct, not from memory
+    const std::string size = std::to_string(defaults.width) + "x" + std::to_string(defaults.height);
+    return shortUsage() +
+           "\n"
+           "Renders a glTF scene headless (EGL, no window) with voxel cone traced global illumination.\n"
+           "\n"
+           "  --out FILE.png       tone-mapped sRGB image (required unless --bench)\n"
+           "  --hdr FILE.hdr       also write the linear HDR image of the chosen view (Radiance .hdr)\n"
+           "  --size WxH           output size in pixels, 1.." + std::to_string(kMaxImageSide) + " each (default: the settings', " + size + ")\n"
+           "  --camera NAME|INDEX  scene camera by name or index (default: the scene's first camera, else a\n"
+           "                       camera framing the whole scene)\n"
+           "  --exposure X         linear exposure multiplier before tone mapping (default 1)\n"
+           "  --no-shadows         render without shadow maps\n"
+           "  --view VIEW          what to write (default final), one of:\n"
+           "                       " + viewNames() + "\n"
+           "  --gi on|off          voxel cone traced indirect light (default on)\n"
+           "  --voxels N           voxel volume resolution per side: 64, 128, 256 or 512 (default " +
+           std::to_string(defaults.voxelResolution) + ")\n"
+           "  --frames N           frames rendered before the image is read (default 1)\n"
+           "  --bench FRAMES       render FRAMES frames and print per-pass GPU times and the frame rate\n"
+           "  --json FILE          with --bench: also write the results as JSON\n"
+           "  --settings FILE      RenderSettings JSON (as saved by the editor); flags override it\n"
+           "  --help               this text\n"
+           "\n"
+           "Exit status: 0 success, 1 runtime failure (scene, GL, file), 2 bad command line.\n";
+}
+
+}  // namespace lit::cli

@@ -1,0 +1,65 @@
+#pragma once
+// lit-render's command line: parsed by a pure function so every accepted and rejected form is a
+// unit test (tests/unit/test_options.cpp), then applied to RenderSettings in one place.
+
+#include "RenderSettings.h"
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lit {
+struct Scene;
+}
+
+namespace lit::cli {
+
+// A command line that cannot be run; the message says what is wrong with which argument.
+// lit-render prints it with a short usage and exits with status 2.
+class UsageError : public std::runtime_error {
+public:
+    explicit UsageError(const std::string& message) : std::runtime_error(message) {}
+};
+
+inline constexpr int kMaxImageSide = 16384;  // pixels; GL_MAX_TEXTURE_SIZE on llvmpipe and most GPUs
+inline constexpr int kMaxFrames = 100000;    // a guard against typos, not a GPU limit
+
+struct Options {
+    bool help = false;                 // --help: print usage, ignore the rest
+    std::filesystem::path scene;       // SCENE.gltf or .glb
+    std::filesystem::path out;         // PNG (tone-mapped, sRGB); may be empty with --bench
+    std::filesystem::path hdr;         // optional Radiance .hdr of the linear image
+    std::optional<int> width, height;  // pixels; unset = the settings' size
+    std::optional<std::string> camera; // camera name or index as typed; unset = the scene's first
+    std::optional<float> exposure;     // linear multiplier
+    bool noShadows = false;
+    std::optional<View> view;
+    std::optional<bool> gi;
+    std::optional<int> voxels;         // voxels per side
+    std::optional<int> frames;         // frames rendered before the image is read (GI settles)
+    int benchFrames = 0;               // 0 = no benchmark
+    std::filesystem::path benchJson;   // --json: benchmark results as JSON
+    std::filesystem::path settings;    // --settings: RenderSettings JSON applied before the flags
+
+    int frameCount() const { return benchFrames > 0 ? benchFrames : frames.value_or(1); }
+};
+
+// Parses the arguments after the program name. Throws UsageError for unknown flags, missing or
+// malformed values, a missing scene, or a missing --out (required unless --bench).
+Options parseOptions(const std::vector<std::string>& args);
+
+// `base` (defaults or a --settings file) with the flags that were given applied on top.
+RenderSettings applyOptions(const Options& options, RenderSettings base);
+
+// The scene camera the options choose: an integer is an index into scene.cameras, anything else
+// a camera or node name. Returns -1 (the framing camera) when the scene has no camera and none
+// was asked for. Throws UsageError listing the scene's cameras when the choice matches none.
+int resolveCamera(const Options& options, const Scene& scene);
+
+// The usage text printed by --help (the short form follows usage errors).
+std::string usageText();
+std::string shortUsage();
+
+}  // namespace lit::cli
