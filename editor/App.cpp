@@ -20,6 +20,7 @@
 #include "panels/RenderSettingsPanel.h"
 #include "panels/StatsOverlay.h"
 #include "scene/GltfLoader.h"
+#include "scene/SceneBuilder.h"
 
 namespace lit::editor {
 
@@ -45,7 +46,9 @@ Scene loadSceneFile(const std::filesystem::path& path, Log& log) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
         throw SceneLoadError("cannot open scene '" + path.string() + "': no such file");
-    return loadGltf(path, log);
+    Scene scene = loadGltf(path, log);
+    addDefaultLightAndCamera(scene, log);
+    return scene;
 }
 
 }  // namespace

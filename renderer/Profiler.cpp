@@ -60,7 +60,10 @@ bool Profiler::collect(Frame& frame, bool wait) {
         }
     }
     std::vector<PassTiming> timings(passNames_.size());
-    for (std::size_t i = 0; i < passNames_.size(); ++i) timings[i].name = passNames_[i];
+    for (std::size_t i = 0; i < passNames_.size(); ++i) {
+        timings[i].name = passNames_[i];
+        timings[i].frame = frame.number;
+    }
     for (Sample& s : frame.samples) {
         GLuint64 t0 = 0, t1 = 0;
         glGetQueryObjectui64v(s.begin.id(), GL_QUERY_RESULT, &t0);
@@ -74,6 +77,9 @@ bool Profiler::collect(Frame& frame, bool wait) {
     }
     frame.samples.clear();
     frame.pending = false;
+    lastRun_.resize(timings.size());
+    for (std::size_t i = 0; i < timings.size(); ++i)
+        if (timings[i].ran) lastRun_[i] = timings[i];
     latest_ = std::move(timings);
     ++completedFrames_;
     return true;
@@ -81,6 +87,7 @@ bool Profiler::collect(Frame& frame, bool wait) {
 
 void Profiler::beginFrame() {
     frameStart_ = std::chrono::steady_clock::now();
+    ++frameNumber_;
     // Slot current_ was filled kFramesInFlight frames ago and is about to be reused: collect it
     // even if that means waiting (the GPU is that far behind). Then collect younger frames that
     // are already finished, oldest first, so `latest_` ends on the newest one.
@@ -93,6 +100,7 @@ void Profiler::beginFrame() {
 
 void Profiler::endFrame() {
     frames_[static_cast<std::size_t>(current_)].pending = true;
+    frames_[static_cast<std::size_t>(current_)].number = frameNumber_;
     current_ = (current_ + 1) % kFramesInFlight;
     lastCpuFrameMs_ = msSince(frameStart_);
 }
@@ -106,6 +114,12 @@ double Profiler::gpuMs(const std::string& pass) const {
     for (const PassTiming& t : latest_)
         if (t.name == pass) return t.gpuMs;
     return 0.0;
+}
+
+const PassTiming* Profiler::lastRun(const std::string& pass) const {
+    for (const PassTiming& t : lastRun_)
+        if (t.name == pass && t.ran) return &t;
+    return nullptr;
 }
 
 double Profiler::totalGpuMs() const {

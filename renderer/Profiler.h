@@ -22,6 +22,7 @@ struct PassTiming {
     double gpuMs = 0.0;  // GPU time of the pass in the latest frame whose queries are ready
     double cpuMs = 0.0;  // CPU time spent issuing the pass
     bool ran = false;    // whether the pass ran in that frame
+    std::uint64_t frame = 0;  // Profiler frame number the timing comes from
 };
 
 class Profiler {
@@ -50,6 +51,11 @@ public:
     // Latest completed timings, in first-use pass order.
     const std::vector<PassTiming>& timings() const { return latest_; }
     double gpuMs(const std::string& pass) const;  // 0 when unknown
+    // The timing of the most recent completed frame in which `pass` ran (passes that run only
+    // when something changed, like voxelization, keep their last cost here); nullptr if never.
+    const PassTiming* lastRun(const std::string& pass) const;
+    // Number of the frame currently being recorded (frames are numbered from 1 by beginFrame).
+    std::uint64_t currentFrame() const { return frameNumber_; }
     double totalGpuMs() const;
     double lastCpuFrameMs() const { return lastCpuFrameMs_; }
     std::uint64_t completedFrames() const { return completedFrames_; }
@@ -67,6 +73,7 @@ private:
     struct Frame {
         std::vector<Sample> samples;
         bool pending = false;
+        std::uint64_t number = 0;
     };
 
     int passIndex(const char* name);
@@ -76,6 +83,8 @@ private:
     std::array<Frame, kFramesInFlight> frames_;
     int current_ = 0;
     std::vector<PassTiming> latest_;
+    std::vector<PassTiming> lastRun_;
+    std::uint64_t frameNumber_ = 0;
     std::uint64_t completedFrames_ = 0;
     std::chrono::steady_clock::time_point frameStart_;
     double lastCpuFrameMs_ = 0.0;

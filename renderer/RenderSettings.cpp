@@ -51,6 +51,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("voxelSlice", s.voxelSlice);
     visit("voxelSliceAxis", s.voxelSliceAxis);
     visit("voxelMip", s.voxelMip);
+    visit("frustumCulling", s.frustumCulling);
 }
 }  // namespace
 

@@ -61,6 +61,9 @@ struct RenderSettings {
     int voxelSliceAxis = 2;           // debug view: 0 X, 1 Y, 2 Z
     int voxelMip = 0;                 // debug view: mip level
 
+    // Performance
+    bool frustumCulling = true;  // G-buffer and shadow views draw only items their frustum may see
+
     bool operator==(const RenderSettings&) const = default;
 };
 

@@ -2,18 +2,29 @@
 
 #include "gl/Capabilities.h"
 #include "gl/GlError.h"
+#include "passes/ConeTracePass.h"
 #include "passes/DirectLightingPass.h"
+#include "passes/InjectPass.h"
+#include "passes/MipmapPass.h"
+#include "passes/VoxelVolume.h"
+#include "passes/VoxelizePass.h"
 #include "passes/GBufferPass.h"
 #include "passes/LightSetup.h"
 #include "passes/LightingTerms.h"
 #include "passes/PostPass.h"
 #include "passes/ShadowPass.h"
+#include "scene/Bvh.h"
+#include "scene/Frustum.h"
 #include "scene/GpuScene.h"
 #include "scene/Scene.h"
 
 #include <shared.h>
 
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
+#include <numeric>
+#include <string>
 #include <tuple>
 
 namespace lit {
@@ -48,6 +59,19 @@ struct ShadowKey {
     bool operator==(const ShadowKey&) const = default;
 };
 
+// What the voxel material volumes depend on; re-voxelized only when it changes.
+struct VoxelKey {
+    std::uint64_t geometry = ~0ull, materials = ~0ull;
+    const Scene* scene = nullptr;
+    bool operator==(const VoxelKey&) const = default;
+};
+
+std::string formatMs(double ms) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f ms", ms);
+    return text;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -58,10 +82,19 @@ struct Renderer::Impl {
           gbuffer(shaderRoot),
           direct(shaderRoot),
           post(shaderRoot),
+          voxelize(shaderRoot),
+          inject(shaderRoot),
+          mipmap(shaderRoot),
+          coneTrace(shaderRoot),
           frameUniforms("frame uniforms", sizeof(gpu::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT),
           lightBuffer("lights", sizeof(gpu::GpuLight) * LIT_MAX_LIGHTS, nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
-    std::vector<Pass*> passes() { return {&shadow, &gbuffer, &direct, &post}; }
+    std::vector<Pass*> passes() { return {&shadow, &gbuffer, &direct, &post, &voxelize, &inject, &mipmap, &coneTrace}; }
+
+    // Voxelize / inject / mipmaps when what they depend on changed. Returns whether it ran.
+    void updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty, DrawCounters& counters);
+    // Logs what the last GI update did and what it cost, once its GPU timings are in.
+    void reportGiUpdate();
 
     Log& log;
     fs::path shaderRoot;
@@ -70,10 +103,22 @@ struct Renderer::Impl {
     GBufferPass gbuffer;
     DirectLightingPass direct;
     PostPass post;
+    VoxelizePass voxelize;
+    InjectPass inject;
+    MipmapPass mipmap;
+    ConeTracePass coneTrace;
+    VoxelVolume voxels;
     LightingTerms terms;
     gl::Buffer frameUniforms;
     gl::Buffer lightBuffer;
     std::unique_ptr<GpuScene> gpuScene;
+    // Frustum culling: a BVH over gpuScene->items(), refit when transforms change.
+    Bvh bvh;
+    std::uint64_t bvhRevision = ~0ull;      // Scene::geometryRevision the BVH's boxes come from
+    std::vector<std::uint32_t> cameraItems;  // the camera's culling result this frame
+    // Fills `visible` with the items `viewProjection` may see (every item when culling is off)
+    // and adds the view to the culling stats.
+    void cullView(const glm::mat4& viewProjection, bool culling, std::vector<std::uint32_t>& visible);
     std::uint64_t uploadedMaterialRevision = 0;
     FrameStats stats;
 
@@ -81,7 +126,81 @@ struct Renderer::Impl {
     std::uint64_t boundsRevision = ~0ull;
     LightSetup lights;
     ShadowKey shadowKey;
+    VoxelKey voxelKey;
+    float injectedRadianceRange = 0.0f;
+    bool voxelsValid = false;
+    // The GI update waiting for its GPU timings to be logged: what ran, why, in which frame.
+    std::string pendingGiReason;
+    std::uint64_t pendingGiFrame = 0;
+    bool pendingVoxelize = false;
 };
+
+void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty,
+                                  DrawCounters& counters) {
+    std::string reason;
+    const bool reallocated = voxels.ensure(settings.voxelResolution, settings.voxelRadianceRgba8, log);
+    const bool moved = voxels.fitTo(bounds);
+    // Sample pattern index 0 every frame: without temporal accumulation a pattern that moves
+    // only adds flicker, and a fixed one keeps each term image consistent with the final image.
+    voxels.updateUniforms(settings, 0);
+    const VoxelKey key{scene.geometryRevision, scene.materialRevision, &scene};
+    bool voxelDirty = !voxelsValid || reallocated || moved || !(key == voxelKey);
+    if (!voxelsValid) reason = "first GI frame";
+    else if (reallocated) reason = "voxel resolution or format changed";
+    else if (moved || key.geometry != voxelKey.geometry || key.scene != voxelKey.scene) reason = "geometry changed";
+    else if (key.materials != voxelKey.materials) reason = "materials changed";
+    const bool injectDirty = voxelDirty || shadowsDirty || settings.voxelRadianceRange != injectedRadianceRange;
+    if (!voxelDirty && injectDirty) reason = "lights or shadows changed";
+    if (voxelDirty) {
+        Profiler::Scope scope(profiler, "voxelize");
+        voxelize.execute(scene, *gpuScene, voxels, counters);
+        voxelKey = key;
+        voxelsValid = true;
+    }
+    if (injectDirty) {
+        shadow.bindMaps();
+        {
+            Profiler::Scope scope(profiler, "inject");
+            inject.execute(voxels);
+        }
+        Profiler::Scope scope(profiler, "mipmap");
+        mipmap.execute(voxels);
+        injectedRadianceRange = settings.voxelRadianceRange;
+        pendingGiReason = reason;
+        pendingGiFrame = profiler.currentFrame();
+        pendingVoxelize = voxelDirty;
+    }
+    stats.voxelized = voxelDirty;
+    stats.injected = injectDirty;
+}
+
+void Renderer::Impl::cullView(const glm::mat4& viewProjection, bool culling, std::vector<std::uint32_t>& visible) {
+    const auto start = std::chrono::steady_clock::now();
+    if (culling) {
+        bvh.cull(Frustum(viewProjection), visible);
+    } else {
+        visible.resize(gpuScene->items().size());
+        std::iota(visible.begin(), visible.end(), 0u);
+    }
+    stats.cullMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats.drawsTotal += static_cast<int>(gpuScene->items().size());
+    stats.drawsSubmitted += static_cast<int>(visible.size());
+}
+
+void Renderer::Impl::reportGiUpdate() {
+    if (pendingGiFrame == 0) return;
+    const PassTiming* injectTiming = profiler.lastRun("inject");
+    if (!injectTiming || injectTiming->frame < pendingGiFrame) return;
+    const PassTiming* voxelizeTiming = profiler.lastRun("voxelize");
+    const PassTiming* mipTiming = profiler.lastRun("mipmap");
+    std::string text = pendingVoxelize ? "re-voxelized " : "re-injected ";
+    text += std::to_string(voxels.resolution()) + "³ (" + pendingGiReason + "): ";
+    if (pendingVoxelize && voxelizeTiming) text += "voxelize " + formatMs(voxelizeTiming->gpuMs) + ", ";
+    text += "inject " + formatMs(injectTiming->gpuMs);
+    if (mipTiming) text += ", mipmap " + formatMs(mipTiming->gpuMs);
+    log.info(text);
+    pendingGiFrame = 0;
+}
 
 Renderer::Renderer(fs::path shaderRoot, Log& log) {
     gl::requireCapabilities();
@@ -93,9 +212,12 @@ Renderer::~Renderer() = default;
 
 void Renderer::setScene(const Scene& scene) {
     impl_->gpuScene = std::make_unique<GpuScene>(scene, impl_->log);
+    impl_->bvh = Bvh(scene, impl_->gpuScene->items());
+    impl_->bvhRevision = scene.geometryRevision;
     impl_->uploadedMaterialRevision = scene.materialRevision;
     impl_->boundsRevision = ~0ull;
     impl_->shadowKey = {};
+    impl_->voxelsValid = false;
 }
 
 void Renderer::render(const Scene& scene, const CameraView& camera, const RenderSettings& settings) {
@@ -104,6 +226,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     if (!r.gpuScene) setScene(scene);
 
     r.profiler.beginFrame();
+    r.reportGiUpdate();
     r.stats = {};
     DrawCounters counters;
 
@@ -114,6 +237,12 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     if (scene.geometryRevision != r.boundsRevision) {
         r.bounds = scene.worldBounds();
         r.boundsRevision = scene.geometryRevision;
+    }
+    if (scene.geometryRevision != r.bvhRevision) {  // transforms moved: new boxes, same tree
+        const auto start = std::chrono::steady_clock::now();
+        r.bvh.refit(scene);
+        r.bvhRevision = scene.geometryRevision;
+        r.stats.cullMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
 
     // Lights and shadow maps: rebuilt only when the scene or shadow settings change; the camera
@@ -143,35 +272,48 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
 
     if (shadowsDirty) {
         Profiler::Scope scope(r.profiler, "shadow");
-        r.shadow.execute(scene, *r.gpuScene, r.lights, settings, counters);
+        const ItemCuller cullShadowView = [&r, &settings](const glm::mat4& viewProjection,
+                                                          std::vector<std::uint32_t>& visible) {
+            r.cullView(viewProjection, settings.frustumCulling, visible);
+        };
+        r.shadow.execute(scene, *r.gpuScene, r.lights, settings, counters, cullShadowView);
         r.shadowKey = key;
     }
 
     r.gbuffer.resize(settings.width, settings.height);
     r.terms.resize(settings.width, settings.height);
     r.post.resize(settings.width, settings.height);
+    r.cullView(frame.viewProjection, settings.frustumCulling, r.cameraItems);
     {
         Profiler::Scope scope(r.profiler, "g-buffer");
-        const int before = counters.drawCalls;
-        r.gbuffer.execute(scene, *r.gpuScene, counters);
-        r.stats.triangles = counters.triangles;
-        (void)before;
+        const std::size_t trianglesBefore = counters.triangles;  // the shadow pass counts its own
+        r.gbuffer.execute(scene, *r.gpuScene, counters, &r.cameraItems);
+        r.stats.triangles = counters.triangles - trianglesBefore;
     }
+    // GI: the voxel volume follows the scene; nothing is allocated while GI is off.
+    const bool giWanted = settings.gi;
+    if (giWanted) r.updateVoxels(scene, settings, shadowsDirty, counters);
     r.gbuffer.bindTargets();
     r.shadow.bindMaps();
     {
         Profiler::Scope scope(r.profiler, "lighting");
         r.direct.execute(r.terms, settings);
     }
-    // Indirect terms: written by the cone-tracing pass when GI is on; zero otherwise.
-    r.terms.clearIndirect();
+    if (giWanted) {
+        Profiler::Scope scope(r.profiler, "cone trace");
+        r.coneTrace.execute(r.terms, r.voxels, settings);
+    } else {
+        r.terms.clearIndirect();
+    }
+    r.stats.voxelBytes = giWanted ? r.voxels.totalBytes() : 0;
     {
         Profiler::Scope scope(r.profiler, "post");
         r.terms.bind();
         int shadowLayer = -1;
         for (const ShadowView& v : r.lights.shadows2d)
             if (v.light == settings.shadowDebugLight) shadowLayer = v.layer;
-        r.post.composite(settings, r.shadow.maps2d(), shadowLayer);
+        if (giWanted) r.voxels.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
+        r.post.composite(settings, r.shadow.maps2d(), shadowLayer, giWanted ? r.voxels.mipCount() : 0);
         r.post.tonemap(settings);
     }
     r.profiler.endFrame();
@@ -207,6 +349,13 @@ bool Renderer::reloadChangedShaders() {
     if (any) impl_->shadowKey = {};  // a new shadow shader must re-render the maps
     return any;
 }
+
+MipmapTimings Renderer::benchmarkMipmaps(int repetitions) {
+    if (!impl_->voxelsValid) return {};
+    return lit::benchmarkMipmaps(impl_->mipmap, impl_->voxels, repetitions);
+}
+
+const VoxelVolume* Renderer::voxels() const { return impl_->voxelsValid ? &impl_->voxels : nullptr; }
 
 Profiler& Renderer::profiler() { return impl_->profiler; }
 const FrameStats& Renderer::stats() const { return impl_->stats; }

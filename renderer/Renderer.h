@@ -20,6 +20,8 @@
 namespace lit {
 
 struct Scene;
+struct MipmapTimings;
+class VoxelVolume;
 namespace gl {
 class Texture;
 }
@@ -30,6 +32,11 @@ struct FrameStats {
     bool voxelized = false;     // the voxel volume was rebuilt this frame
     bool injected = false;      // radiance was re-injected this frame
     std::size_t voxelBytes = 0; // GPU memory of the voxel volumes
+    // Frustum culling, over the views rendered this frame: the camera's G-buffer pass and the
+    // shadow views when shadow maps were re-rendered (voxelization draws everything, uncounted).
+    int drawsSubmitted = 0;     // scene draws those views issued
+    int drawsTotal = 0;         // scene draws they would have issued without culling
+    double cullMs = 0.0;        // CPU time of BVH refit and culling, milliseconds
 };
 
 class Renderer {
@@ -58,6 +65,12 @@ public:
     // Recompiles shaders whose files changed; on error the log says so and the last good
     // program stays. Returns true if anything was reloaded.
     bool reloadChangedShaders();
+
+    // Times the compute mip chain against glGenerateTextureMipmap on the current radiance volume
+    // (after a GI frame; returns zeros before one).
+    MipmapTimings benchmarkMipmaps(int repetitions);
+    // The voxel volume of the last GI frame, for debug views and tests; nullptr before one.
+    const VoxelVolume* voxels() const;
 
     Profiler& profiler();
     const FrameStats& stats() const;

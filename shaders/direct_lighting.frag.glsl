@@ -25,9 +25,7 @@ void main() {
         return;
     }
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
-    vec3 n = s.normal;
-    // Normals facing away from the viewer (interpolation, normal maps) would go black; bend them.
-    if (dot(n, v) < 0.0) n = normalize(n - v * (dot(n, v) * 1.01));
+    vec3 n = shadingNormal(s.normal, v);
     float alpha = alphaFromRoughness(s.roughness);
     vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);
     vec3 f0 = specularF0(s.baseColor, s.metalness);

@@ -11,6 +11,7 @@ packages=(
     libegl-mesa0 libgl1-mesa-dri libglx-mesa0 # Mesa (llvmpipe) for machines without a GPU driver
     libgtest-dev                              # tests
     xvfb xauth                                # editor tests without a display
+    fonts-dejavu-core                         # editor UI font (falls back to ImGui's own)
 )
 
 missing=()

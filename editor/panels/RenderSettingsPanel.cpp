@@ -149,6 +149,8 @@ bool drawRenderSettingsPanel(RenderSettings& settings, ViewportSettings& viewpor
     if (ImGui::CollapsingHeader("Shadows", ImGuiTreeNodeFlags_DefaultOpen))
         changed |= drawShadows(settings, lightCount);
     if (ImGui::CollapsingHeader("Global illumination")) changed |= drawGlobalIllumination(settings);
+    changed |= ImGui::Checkbox("Frustum culling", &settings.frustumCulling);
+    tooltip("Camera and shadow views draw only what their frustum may see (a BVH over the draw items)");
     ImGui::Separator();
     if (ImGui::Button("Reset to defaults")) {
         // Keep the output size: it belongs to the window, not to the user's choices.

@@ -20,6 +20,8 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
     ImGui::Text("GPU   %8.1f ms  (all passes)", profiler.totalGpuMs());
     ImGui::Text("Render %d x %d px", renderSize.x, renderSize.y);
     ImGui::Text("Draw calls %d   Triangles %zu", stats.drawCalls, stats.triangles);
+    ImGui::Text("Culled views: %d of %d draws submitted, %.3f ms CPU", stats.drawsSubmitted, stats.drawsTotal,
+                stats.cullMs);
     constexpr double kMiB = 1024.0 * 1024.0;
     ImGui::Text("Voxels %.1f MiB%s%s", static_cast<double>(stats.voxelBytes) / kMiB,
                 stats.voxelized ? "  [voxelized]" : "", stats.injected ? "  [injected]" : "");

@@ -30,7 +30,8 @@ void GBufferPass::resize(int width, int height) {
     framebuffer_.checkComplete("gbuffer");
 }
 
-void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters) {
+void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters,
+                          const std::vector<std::uint32_t>* visibleItems) {
     framebuffer_.bind();
     glViewport(0, 0, width_, height_);
     const float zero[4] = {0, 0, 0, 0};
@@ -45,7 +46,10 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
     glEnable(GL_FRAMEBUFFER_SRGB);
     program_.use();
     gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
-    gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters);
+    if (visibleItems)
+        gpuScene.drawList(scene, program_, GpuScene::Bind::Everything, counters, *visibleItems);
+    else
+        gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters);
     glDisable(GL_FRAMEBUFFER_SRGB);
 }
 

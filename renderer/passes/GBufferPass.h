@@ -5,6 +5,9 @@
 
 #include "passes/Pass.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace lit {
 
 class GpuScene;
@@ -16,7 +19,10 @@ public:
     explicit GBufferPass(const std::filesystem::path& shaderRoot);
 
     void resize(int width, int height);
-    void execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters);
+    // Draws the items listed in `visibleItems` (indices into gpuScene.items(), e.g. the camera's
+    // culling result), or every item when it is null.
+    void execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters,
+                 const std::vector<std::uint32_t>* visibleItems = nullptr);
     // Binds the targets to LIT_TEX_GBUFFER_* for the full-screen passes.
     void bindTargets() const;
 

@@ -2,11 +2,13 @@
 
 #include <shared.h>
 
+#include <algorithm>
+
 namespace lit {
 
 bool isDataView(View view) {
     return view == View::Albedo || view == View::Normal || view == View::RoughnessMetalness ||
-           view == View::ShadowMap || view == View::Voxels;
+           view == View::ShadowMap;
 }
 
 PostPass::PostPass(const std::filesystem::path& shaderRoot)
@@ -38,7 +40,8 @@ void PostPass::resize(int width, int height) {
     outputFramebuffer_.checkComplete("output");
 }
 
-void PostPass::composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer) {
+void PostPass::composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer,
+                         int voxelMipLevels) {
     hdrFramebuffer_.bind();
     glViewport(0, 0, width_, height_);
     glDisable(GL_DEPTH_TEST);
@@ -47,6 +50,7 @@ void PostPass::composite(const RenderSettings& settings, const gl::Texture& shad
                        settings.gi && settings.indirectDiffuse, settings.directSpecular,
                        settings.gi && settings.indirectSpecular);
     composite_.set("uShadowLayer", shadowLayer);
+    composite_.set("uVoxelMip", voxelMipLevels > 0 ? std::clamp(settings.voxelMip, 0, voxelMipLevels - 1) : -1);
     shadowMaps.bind(LIT_TEX_DEBUG_INPUT);
     plainSampler_.bind(LIT_TEX_DEBUG_INPUT);
     triangle_.draw();

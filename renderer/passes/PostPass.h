@@ -13,8 +13,11 @@ public:
 
     void resize(int width, int height);
     // Writes the HDR image of settings.view. Expects G-buffer, terms and frame UBO bound.
-    // `shadowLayer` is the 2D shadow-array layer the shadow-map view shows (-1 for none).
-    void composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer);
+    // `shadowLayer` is the 2D shadow-array layer the shadow-map view shows (-1 for none);
+    // `voxelMipLevels` the voxel volume's mip count (0 when there is none: GI off). The voxel
+    // view expects the radiance volume bound to LIT_TEX_VOXEL_RADIANCE and the voxel UBO.
+    void composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer,
+                   int voxelMipLevels);
     // Tone maps the HDR image into the sRGB output.
     void tonemap(const RenderSettings& settings);
 

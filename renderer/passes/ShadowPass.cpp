@@ -54,7 +54,7 @@ void ShadowPass::bindMaps() const {
 }
 
 void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
-                         const RenderSettings& settings, DrawCounters& counters) {
+                         const RenderSettings& settings, DrawCounters& counters, const ItemCuller& cull) {
     const int size = std::clamp(settings.shadowMapSize, 16, 8192);
     ensureMaps(size, static_cast<int>(lights.shadows2d.size()), static_cast<int>(lights.shadowsCube.size()));
     if (gpuScene.empty()) return;
@@ -80,7 +80,12 @@ void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const Lig
         glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
         gpu::ShadowPassUniforms u{viewProjection, glm::vec4(position, farPlane)};
         uniforms_.update(u);
-        gpuScene.draw(scene, program_, GpuScene::Bind::AlphaOnly, counters);
+        if (cull) {
+            cull(viewProjection, visibleItems_);
+            gpuScene.drawList(scene, program_, GpuScene::Bind::AlphaOnly, counters, visibleItems_);
+        } else {
+            gpuScene.draw(scene, program_, GpuScene::Bind::AlphaOnly, counters);
+        }
     };
     for (const ShadowView& view : lights.shadows2d)
         renderView(maps2d_, view.layer, view.viewProjection[0], view.position, view.farPlane);

@@ -5,19 +5,19 @@
 
 #include "passes/LightSetup.h"
 #include "passes/Pass.h"
+#include "scene/GpuScene.h"
 
 namespace lit {
-
-class GpuScene;
-struct DrawCounters;
 
 class ShadowPass : public Pass {
 public:
     explicit ShadowPass(const std::filesystem::path& shaderRoot);
 
     // Renders every shadow view of `lights`. Reallocates the maps when the size or count changes.
+    // Each view (each cube face of a point light) draws the items `cull` picks for its
+    // view-projection; every item when `cull` is empty.
     void execute(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
-                 const RenderSettings& settings, DrawCounters& counters);
+                 const RenderSettings& settings, DrawCounters& counters, const ItemCuller& cull = {});
 
     // Binds the shadow arrays to their texture units (LIT_TEX_SHADOW_2D / _CUBE).
     void bindMaps() const;
@@ -36,6 +36,7 @@ private:
     gl::Buffer uniforms_;
     gl::Sampler comparisonSampler_;
     int size_ = 0, layers2d_ = 0, cubes_ = 0;
+    std::vector<std::uint32_t> visibleItems_;  // the current view's culling result (kept to reuse its memory)
 };
 
 }  // namespace lit

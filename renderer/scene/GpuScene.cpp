@@ -159,6 +159,16 @@ void GpuScene::bindMaterialTextures(int material, Bind bind) const {
     glBindTextureUnit(LIT_TEX_OCCLUSION, t.occlusion ? t.occlusion : white);
 }
 
+void GpuScene::drawList(const Scene& scene, const gl::Program& program, Bind bind, DrawCounters& counters,
+                        std::span<const std::uint32_t> itemIndices) const {
+    if (itemIndices.empty()) return;
+    bindGeometry();
+    for (const std::uint32_t index : itemIndices) {
+        assert(index < items_.size() && "drawList: item index out of range (a culling result of another scene?)");
+        if (index < items_.size()) drawItem(scene, items_[index], program, bind, counters);
+    }
+}
+
 void GpuScene::drawItem(const Scene& scene, const DrawItem& item, const gl::Program& program, Bind bind,
                         DrawCounters& counters) const {
     const glm::mat4& model = scene.nodes[static_cast<std::size_t>(item.node)].world;

@@ -9,6 +9,8 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <vector>
 
 namespace lit {
@@ -28,6 +30,11 @@ struct DrawItem {
     std::uint32_t indexCount = 0;
     Aabb localBounds;
 };
+
+// Chooses the items one view draws: fills `visibleItems` with indices into GpuScene::items() of
+// the items that may be visible under `viewProjection` (world → clip), ascending. Passes that
+// render several views (shadow maps) call it once per view; an empty function means "draw all".
+using ItemCuller = std::function<void(const glm::mat4& viewProjection, std::vector<std::uint32_t>& visibleItems)>;
 
 struct DrawCounters {
     int drawCalls = 0;
@@ -52,6 +59,11 @@ public:
     void draw(const Scene& scene, const gl::Program& program, Bind bind, DrawCounters& counters) const {
         draw(scene, program, bind, counters, [](const DrawItem&) { return true; });
     }
+
+    // Draws the items whose indices into items() are listed, in the order listed (a culling
+    // result: see Bvh::cull). Same bindings and uniforms as draw().
+    void drawList(const Scene& scene, const gl::Program& program, Bind bind, DrawCounters& counters,
+                  std::span<const std::uint32_t> itemIndices) const;
 
     const std::vector<DrawItem>& items() const { return items_; }
     bool empty() const { return items_.empty(); }

@@ -125,3 +125,38 @@ int addCameraNode(Scene& scene, const Camera& camera, const glm::vec3& position,
 }
 
 }  // namespace lit
+
+#include "Log.h"
+#include "scene/CameraView.h"
+
+namespace lit {
+
+bool addDefaultLightAndCamera(Scene& scene, Log& log) {
+    bool added = false;
+    if (scene.lights.empty()) {
+        Light sun;
+        sun.name = "default sun";
+        sun.type = LightType::Directional;
+        sun.intensity = 3.0f;
+        addLightNode(scene, sun, glm::vec3(0.0f), glm::vec3(-0.3f, -1.0f, -0.45f));
+        log.info("the scene has no lights: added a default directional light (3 lx from above)");
+        added = true;
+    }
+    if (scene.cameras.empty()) {
+        const Aabb bounds = scene.worldBounds();
+        if (!bounds.empty()) {
+            const CameraView framing = frameBounds(bounds, 16.0f / 9.0f);
+            Camera camera;
+            camera.name = "default camera";
+            camera.yfov = framing.yfov;
+            camera.znear = framing.znear;
+            camera.zfar = framing.zfar;
+            addCameraNode(scene, camera, framing.position, framing.position + framing.forward());
+            log.info("the scene has no cameras: added a default camera framing its bounds");
+            added = true;
+        }
+    }
+    return added;
+}
+
+}  // namespace lit

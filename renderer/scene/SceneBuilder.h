@@ -25,3 +25,12 @@ int addCameraNode(Scene& scene, const Camera& camera, const glm::vec3& position,
 glm::quat rotationLookingAlong(const glm::vec3& direction);
 
 }  // namespace lit
+
+namespace lit {
+class Log;
+
+// Gives a scene without lights a directional "sun" (3 lux from above, slightly tilted so walls
+// facing it are lit too) and a scene without cameras a camera framing its bounds; each addition is
+// reported in `log`. Returns true if anything was added. Front ends call it after loading.
+bool addDefaultLightAndCamera(Scene& scene, Log& log);
+}  // namespace lit

@@ -33,3 +33,11 @@ Surface readSurface(ivec2 pixel, vec2 uv) {
     s.emissive = texelFetch(gbufferEmissive, pixel, 0).rgb;
     return s;
 }
+
+// The normal used for shading, seen from view direction v (unit, towards the eye). Interpolated
+// and normal-mapped normals can face away from the viewer, which would shade them black: bend
+// such a normal just past perpendicular to v.
+vec3 shadingNormal(vec3 n, vec3 v) {
+    float nv = dot(n, v);
+    return nv < 0.0 ? normalize(n - v * (nv * 1.01)) : n;
+}

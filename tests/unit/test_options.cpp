@@ -43,7 +43,7 @@ TEST(Options, MinimalCommandLine) {
 TEST(Options, EveryFlag) {
     const Options o = parseOptions({"--size", "320x200", "s.glb", "--out", "a/b.png", "--hdr", "c.hdr", "--camera", "top",
                                     "--exposure", "2.5", "--no-shadows", "--view", "indirect-diffuse", "--gi", "off",
-                                    "--voxels", "256", "--frames", "3", "--settings", "s.json"});
+                                    "--voxels", "256", "--frames", "3", "--settings", "s.json", "--culling", "off"});
     EXPECT_EQ(o.scene, "s.glb");
     EXPECT_EQ(o.out, "a/b.png");
     EXPECT_EQ(o.hdr, "c.hdr");
@@ -59,6 +59,27 @@ TEST(Options, EveryFlag) {
     EXPECT_EQ(s.view, lit::View::IndirectDiffuse);
     EXPECT_FALSE(s.gi);
     EXPECT_EQ(s.voxelResolution, 256);
+    EXPECT_FALSE(s.frustumCulling);
+}
+
+TEST(Options, CullingOnOrOff) {
+    const auto culling = [](std::vector<std::string> extra) {
+        std::vector<std::string> args{"x.gltf", "--out", "x.png"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        return lit::cli::applyOptions(parseOptions(args), lit::RenderSettings{}).frustumCulling;
+    };
+    EXPECT_TRUE(lit::RenderSettings{}.frustumCulling) << "on by default";
+    EXPECT_TRUE(culling({}));
+    EXPECT_FALSE(culling({"--culling", "off"}));
+    EXPECT_FALSE(culling({"--culling=off"}));
+    EXPECT_TRUE(culling({"--culling", "on"}));
+    lit::RenderSettings off;
+    off.frustumCulling = false;  // e.g. from --settings
+    EXPECT_FALSE(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png"}), off).frustumCulling);
+    EXPECT_TRUE(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--culling", "on"}), off).frustumCulling);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--culling", "yes"}), "--culling expects on or off, got 'yes'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--culling"}), "missing value for --culling (expects on or off)");
+    EXPECT_NE(lit::cli::usageText().find("--culling on|off"), std::string::npos);
 }
 
 TEST(Options, FlagsOverrideOnlyWhatTheyName) {
@@ -133,18 +154,60 @@ TEST(Options, StructuralMessages) {
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "-q"}), "unknown option '-q'");
     EXPECT_EQ(usageError({"--out", "x.png"}), "no scene given (lit-render SCENE.gltf --out image.png)");
     EXPECT_EQ(usageError({}), "no scene given (lit-render SCENE.gltf --out image.png)");
-    EXPECT_EQ(usageError({"x.gltf"}), "--out is required (unless --bench)");
+    EXPECT_EQ(usageError({"x.gltf"}), "--out is required (unless --bench or --path)");
     EXPECT_EQ(usageError({"x.gltf", "--out"}), "missing value for --out (expects FILE.png)");
     EXPECT_EQ(usageError({"x.gltf", "--out", "--size", "4x4"}), "missing value for --out (expects FILE.png)");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size"}), "missing value for --size (expects WxH)");
     EXPECT_EQ(usageError({"x.gltf", "y.gltf", "--out", "x.png"}), "unexpected argument 'y.gltf' (the scene is already 'x.gltf')");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.jpg"}), "--out writes a .png file; got 'x.jpg'");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--hdr", "x.exr"}), "--hdr writes a .hdr file; got 'x.exr'");
-    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--json", "b.json"}), "--json needs --bench");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--json", "b.json"}), "--json needs --bench or --bench-path");
     EXPECT_EQ(usageError({"x.gltf", "--bench", "5", "--frames", "2"}),
               "--frames and --bench both set the number of frames; give one of them");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--no-shadows=1"}), "--no-shadows takes no value, got '--no-shadows=1'");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--camera", ""}), "--camera expects a camera name or index, got ''");
+}
+
+TEST(Options, PathFlags) {
+    const Options o = parseOptions({"x.gltf", "--path", "orbit.path.json", "--fps", "12.5", "--frames-out", "frames"});
+    EXPECT_EQ(o.path, "orbit.path.json");
+    EXPECT_TRUE(o.pathIsFile());
+    EXPECT_DOUBLE_EQ(o.pathFps(), 12.5);
+    EXPECT_EQ(o.framesOut, "frames");
+    EXPECT_FALSE(o.benchPath);
+    EXPECT_TRUE(o.out.empty());
+
+    const Options bench = parseOptions({"x.gltf", "--path", "camera path", "--bench-path", "--json", "b.json", "--gi", "off"});
+    EXPECT_FALSE(bench.pathIsFile());  // no .json: an animation in the scene file
+    EXPECT_TRUE(bench.benchPath);
+    EXPECT_DOUBLE_EQ(bench.pathFps(), lit::cli::kDefaultPathFps);
+    EXPECT_EQ(bench.benchJson, "b.json");
+    EXPECT_TRUE(parseOptions({"x.gltf", "--path", "P.JSON", "--bench-path"}).pathIsFile());
+    EXPECT_NE(lit::cli::usageText().find("--frames-out DIR"), std::string::npos);
+}
+
+TEST(Options, PathFlagsThatDoNotGoTogether) {
+    EXPECT_EQ(usageError({"x.gltf", "--frames-out", "d"}), "--frames-out needs --path");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--frames-out", "d"}), "--frames-out needs --path");
+    EXPECT_EQ(usageError({"x.gltf", "--bench-path"}), "--bench-path needs --path");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--fps", "30"}), "--fps needs --path");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json"}), "--path needs --frames-out DIR or --bench-path");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json", "--bench-path", "--out", "x.png"}),
+              "--out writes one image; with --path use --frames-out DIR");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json", "--bench-path", "--hdr", "x.hdr"}),
+              "--hdr writes one image; with --path use --frames-out DIR");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json", "--bench-path", "--camera", "top"}),
+              "--path and --camera both choose the camera; give one of them");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json", "--frames-out", "d", "--frames", "3"}),
+              "--frames does not apply to --path (each frame of the path is rendered once)");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json", "--bench", "10"}),
+              "--bench renders a still view; use --bench-path to time the path");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json", "--bench-path", "--fps", "0"}),
+              "--fps expects frames per second above 0 and up to 1000, got '0'");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json", "--bench-path", "--fps", "fast"}),
+              "--fps expects frames per second above 0 and up to 1000, got 'fast'");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "", "--bench-path"}), "--path expects a .json file or an animation name, got ''");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json", "--bench-path=yes"}), "--bench-path takes no value, got '--bench-path=yes'");
 }
 
 lit::Scene sceneWithCameras() {

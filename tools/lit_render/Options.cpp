@@ -126,6 +126,14 @@ Options parseOptions(const std::vector<std::string>& args) {
                 options.gi = false;
             else
                 throw UsageError("--gi expects on or off, got '" + text + "'");
+        } else if (flag == "--culling") {
+            const std::string text = value("on or off");
+            if (text == "on")
+                options.culling = true;
+            else if (text == "off")
+                options.culling = false;
+            else
+                throw UsageError("--culling expects on or off, got '" + text + "'");
         } else if (flag == "--voxels") {
             const std::string text = value("64, 128, 256 or 512");
             const auto n = parseInt(text, 64, 512);
@@ -148,20 +156,54 @@ Options parseOptions(const std::vector<std::string>& args) {
         } else if (flag == "--settings") {
             options.settings = value("FILE.json");
             if (options.settings.empty()) throw UsageError("--settings expects a file name, got ''");
+        } else if (flag == "--path") {
+            const std::string text = value("FILE.json or an animation name");
+            if (text.empty()) throw UsageError("--path expects a .json file or an animation name, got ''");
+            options.path = text;
+        } else if (flag == "--fps") {
+            const std::string text = value("frames per second");
+            const auto fps = parseFloat(text);
+            if (!fps || !(*fps > 0.0f) || *fps > kMaxPathFps)
+                throw UsageError("--fps expects frames per second above 0 and up to " +
+                                 std::to_string(static_cast<int>(kMaxPathFps)) + ", got '" + text + "'");
+            options.fps = *fps;
+        } else if (flag == "--frames-out") {
+            options.framesOut = value("DIR");
+            if (options.framesOut.empty()) throw UsageError("--frames-out expects a folder, got ''");
+        } else if (flag == "--bench-path") {
+            noValue();
+            options.benchPath = true;
         } else {
             throw UsageError("unknown option '" + flag + "'");
         }
     }
 
     if (!haveScene) throw UsageError("no scene given (lit-render SCENE.gltf --out image.png)");
-    if (options.benchFrames == 0 && options.out.empty()) throw UsageError("--out is required (unless --bench)");
+    if (options.path) {
+        // A path renders many frames: its outputs and its camera are its own.
+        if (!options.out.empty()) throw UsageError("--out writes one image; with --path use --frames-out DIR");
+        if (!options.hdr.empty()) throw UsageError("--hdr writes one image; with --path use --frames-out DIR");
+        if (options.camera) throw UsageError("--path and --camera both choose the camera; give one of them");
+        if (options.frames) throw UsageError("--frames does not apply to --path (each frame of the path is rendered once)");
+        if (options.benchFrames > 0) throw UsageError("--bench renders a still view; use --bench-path to time the path");
+        if (options.framesOut.empty() && !options.benchPath) throw UsageError("--path needs --frames-out DIR or --bench-path");
+    } else {
+        if (!options.framesOut.empty()) throw UsageError("--frames-out needs --path");
+        if (options.benchPath) throw UsageError("--bench-path needs --path");
+        if (options.fps) throw UsageError("--fps needs --path");
+    }
+    if (options.benchFrames == 0 && !options.path && options.out.empty())
+        throw UsageError("--out is required (unless --bench or --path)");
     if (!options.out.empty()) requireExtension(options.out, "--out", ".png");
     if (!options.hdr.empty()) requireExtension(options.hdr, "--hdr", ".hdr");
-    if (!options.benchJson.empty() && options.benchFrames == 0) throw UsageError("--json needs --bench");
+    if (!options.benchJson.empty() && options.benchFrames == 0 && !options.benchPath)
+        throw UsageError("--json needs --bench or --bench-path");
     if (options.frames && options.benchFrames > 0)
         throw UsageError("--frames and --bench both set the number of frames; give one of them");
     return options;
 }
+
+bool Options::pathIsFile() const { return path && lower(std::filesystem::path(*path).extension().string()) == ".json"; }
 
 RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.width) base.width = *options.width;
@@ -171,6 +213,7 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.view) base.view = *options.view;
     if (options.gi) base.gi = *options.gi;
     if (options.voxels) base.voxelResolution = *options.voxels;
+    if (options.culling) base.frustumCulling = *options.culling;
     return base;
 }
 
@@ -197,7 +240,8 @@ int resolveCamera(const Options& options, const Scene& scene) {
 std::string shortUsage() {
     return "usage: lit-render SCENE.gltf --out image.png [--hdr image.hdr] [--size WxH] [--camera NAME|INDEX]\n"
            "                  [--exposure X] [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
-           "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n";
+           "                  [--culling on|off] [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
+           "       lit-render SCENE.gltf --path FILE.json|ANIMATION [--fps N] [--frames-out DIR] [--bench-path]\n";
 }
 
 std::string usageText() {
@@ -207,7 +251,7 @@ std::string usageText() {
            "\n"
            "Renders a glTF scene headless (EGL, no window) with voxel cone traced global illumination.\n"
            "\n"
-           "  --out FILE.png       tone-mapped sRGB image (required unless --bench)\n"
+           "  --out FILE.png       tone-mapped sRGB image (required unless --bench or --path)\n"
            "  --hdr FILE.hdr       also write the linear HDR image of the chosen view (Radiance .hdr)\n"
            "  --size WxH           output size in pixels, 1.." + std::to_string(kMaxImageSide) + " each (default: the settings', " + size + ")\n"
            "  --camera NAME|INDEX  scene camera by name or index (default: the scene's first camera, else a\n"
@@ -220,9 +264,18 @@ std::string usageText() {
            "  --voxels N           voxel volume resolution per side: 64, 128, 256 or 512 (default " +
            std::to_string(defaults.voxelResolution) + ")\n"
            "  --frames N           frames rendered before the image is read (default 1)\n"
+           "  --culling on|off     frustum culling of the camera and shadow views against a BVH (default " +
+           std::string(defaults.frustumCulling ? "on" : "off") + ")\n"
            "  --bench FRAMES       render FRAMES frames and print per-pass GPU times and the frame rate\n"
-           "  --json FILE          with --bench: also write the results as JSON\n"
+           "  --json FILE          with --bench or --bench-path: also write the results as JSON\n"
            "  --settings FILE      RenderSettings JSON (as saved by the editor); flags override it\n"
+           "  --path FILE|NAME     fly a camera path: a .json path file, or the name of a camera animation\n"
+           "                       in the scene file (see renderer/animation/CameraPathIO.h)\n"
+           "  --fps N              frames per second along the path (default " +
+           std::to_string(static_cast<int>(kDefaultPathFps)) + ")\n"
+           "  --frames-out DIR     write every frame of the path to DIR/frame_00000.png, ... (creates DIR)\n"
+           "  --bench-path         time every frame of the path (after one untimed warm-up frame) and\n"
+           "                       print the lowest and highest FPS and the mean frame time\n"
            "  --help               this text\n"
            "\n"
            "Exit status: 0 success, 1 runtime failure (scene, GL, file), 2 bad command line.\n";

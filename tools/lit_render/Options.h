@@ -25,6 +25,8 @@ public:
 
 inline constexpr int kMaxImageSide = 16384;  // pixels; GL_MAX_TEXTURE_SIZE on llvmpipe and most GPUs
 inline constexpr int kMaxFrames = 100000;    // a guard against typos, not a GPU limit
+inline constexpr double kDefaultPathFps = 30.0;  // frames per second of --path renders
+inline constexpr double kMaxPathFps = 1000.0;    // a guard against typos
 
 struct Options {
     bool help = false;                 // --help: print usage, ignore the rest
@@ -38,16 +40,27 @@ struct Options {
     std::optional<View> view;
     std::optional<bool> gi;
     std::optional<int> voxels;         // voxels per side
+    std::optional<bool> culling;       // --culling on|off: frustum culling of the G-buffer and shadow views
     std::optional<int> frames;         // frames rendered before the image is read (GI settles)
     int benchFrames = 0;               // 0 = no benchmark
     std::filesystem::path benchJson;   // --json: benchmark results as JSON
     std::filesystem::path settings;    // --settings: RenderSettings JSON applied before the flags
+    // Camera paths: --path FILE.json (a path file) or NAME (a camera animation in the scene file).
+    std::optional<std::string> path;
+    std::optional<double> fps;         // --fps: frames per second along the path
+    std::filesystem::path framesOut;   // --frames-out DIR: every frame as DIR/frame_00000.png, ...
+    bool benchPath = false;            // --bench-path: per-frame times along the path
+
+    double pathFps() const { return fps.value_or(kDefaultPathFps); }
+    // --path names a JSON file when it ends in .json (any case), else an animation in the scene.
+    bool pathIsFile() const;
 
     int frameCount() const { return benchFrames > 0 ? benchFrames : frames.value_or(1); }
 };
 
 // Parses the arguments after the program name. Throws UsageError for unknown flags, missing or
-// malformed values, a missing scene, or a missing --out (required unless --bench).
+// malformed values, a missing scene, a missing --out (required unless --bench or --path), or
+// flags that do not go together (--frames-out without --path, --path with --out, ...).
 Options parseOptions(const std::vector<std::string>& args);
 
 // `base` (defaults or a --settings file) with the flags that were given applied on top.

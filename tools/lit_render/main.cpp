@@ -1,17 +1,22 @@
 // lit-render — renders a glTF scene headless (EGL, no window or X server) to PNG/HDR, or
-// benchmarks it. Exit status: 0 success, 1 runtime failure, 2 bad command line.
+// benchmarks it, or flies a camera path (frames to PNGs, or per-frame timings).
+// Exit status: 0 success, 1 runtime failure, 2 bad command line.
 
 #include "Options.h"
 
 #include "Log.h"
 #include "Renderer.h"
 #include "RenderSettings.h"
+#include "animation/CameraPath.h"
+#include "animation/CameraPathIO.h"
 #include "context/HeadlessContext.h"
 #include "gl/Capabilities.h"
 #include "gl/GlError.h"
 #include "image/ImageIO.h"
 #include "scene/CameraView.h"
+#include "passes/MipmapPass.h"
 #include "scene/GltfLoader.h"
+#include "scene/SceneBuilder.h"
 #include "scene/Scene.h"
 
 #include <epoxy/gl.h>
@@ -20,6 +25,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <unistd.h>
 #include <exception>
 #include <fstream>
 #include <map>
@@ -93,9 +99,11 @@ struct BenchResult {
     std::vector<PassSamples> passes;
     std::vector<double> frameMs;     // wall time per frame: issuing plus waiting for the GPU
     std::vector<double> cpuFrameMs;  // time spent issuing the frame on the CPU
+    std::vector<double> cullMs;      // CPU time of BVH refit + frustum culling per frame
+    lit::MipmapTimings mipmaps;      // compute chain vs glGenerateTextureMipmap (GI only)
 };
 
-void printBench(const BenchResult& bench, const lit::RenderSettings& settings) {
+void printBench(const BenchResult& bench, const lit::RenderSettings& settings, const lit::FrameStats& lastFrame) {
     const auto row = [](const std::string& name, const Summary& s, std::size_t frames) {
         std::printf("%-28s %10.3f %10.3f %10.3f %10.3f %8zu\n", name.c_str(), s.min, s.median, s.mean, s.max, frames);
     };
@@ -104,8 +112,18 @@ void printBench(const BenchResult& bench, const lit::RenderSettings& settings) {
     const Summary frame = summarize(bench.frameMs);
     row("frame (wall ms)", frame, bench.frameMs.size());
     row("frame (CPU issue ms)", summarize(bench.cpuFrameMs), bench.cpuFrameMs.size());
-    std::printf("%dx%d: mean frame %.3f ms, %.2f FPS\n", settings.width, settings.height, frame.mean,
-                frame.mean > 0 ? 1000.0 / frame.mean : 0.0);
+    std::printf("%dx%d, GI %s: lowest FPS %.2f, highest FPS %.2f, mean frame %.3f ms (%.2f FPS)\n", settings.width,
+                settings.height, settings.gi ? "on" : "off", frame.max > 0 ? 1000.0 / frame.max : 0.0,
+                frame.min > 0 ? 1000.0 / frame.min : 0.0, frame.mean, frame.mean > 0 ? 1000.0 / frame.mean : 0.0);
+    // Draws of the last frame's culled views (the camera; shadow views only when they were redrawn).
+    std::printf("draws: %d of %d submitted (culling %s), culling %.3f ms CPU (mean), %zu triangles\n",
+                lastFrame.drawsSubmitted, lastFrame.drawsTotal, settings.frustumCulling ? "on" : "off",
+                summarize(bench.cullMs).mean, lastFrame.triangles);
+    if (bench.mipmaps.computeMinMs > 0.0)
+        std::printf("radiance mipmaps (%s): compute %.3f ms, glGenerateTextureMipmap %.3f ms (min of runs): "
+                    "compute is %.2fx as fast\n",
+                    bench.mipmaps.rgba8 ? "RGBA8" : "RGBA16F", bench.mipmaps.computeMinMs, bench.mipmaps.generateMinMs,
+                    bench.mipmaps.speedup());
 }
 
 nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& options, const lit::RenderSettings& settings,
@@ -128,9 +146,171 @@ nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& option
             {"frameMs", toJson(frame)},
             {"cpuFrameMs", toJson(summarize(bench.cpuFrameMs))},
             {"fps", frame.mean > 0 ? 1000.0 / frame.mean : 0.0},
+            {"lowestFps", frame.max > 0 ? 1000.0 / frame.max : 0.0},
+            {"highestFps", frame.min > 0 ? 1000.0 / frame.min : 0.0},
+            {"mipmaps",
+             {{"computeMinMs", bench.mipmaps.computeMinMs},
+              {"computeMedianMs", bench.mipmaps.computeMedianMs},
+              {"generateMinMs", bench.mipmaps.generateMinMs},
+              {"generateMedianMs", bench.mipmaps.generateMedianMs},
+              {"speedup", bench.mipmaps.speedup()}}},
             {"triangles", stats.triangles},
             {"drawCalls", stats.drawCalls},
+            {"frustumCulling", settings.frustumCulling},
+            {"drawsSubmitted", stats.drawsSubmitted},
+            {"drawsTotal", stats.drawsTotal},
+            {"cullMs", toJson(summarize(bench.cullMs))},
             {"passes", passes}};
+}
+
+// Waits for the frame just issued and records its timings. Waiting for this frame's queries
+// serialises CPU and GPU: the wall time per frame is then the true cost of a frame, and the pass
+// timings belong to this very frame.
+void recordBenchFrame(BenchResult& bench, std::map<std::string, std::size_t>& passIndex, lit::Renderer& renderer,
+                      Clock::time_point frameStart) {
+    renderer.profiler().flush();
+    bench.frameMs.push_back(secondsSince(frameStart) * 1000.0);
+    bench.cpuFrameMs.push_back(renderer.profiler().lastCpuFrameMs());
+    bench.cullMs.push_back(renderer.stats().cullMs);
+    for (const lit::PassTiming& timing : renderer.profiler().timings()) {
+        auto [it, inserted] = passIndex.try_emplace(timing.name, bench.passes.size());
+        if (inserted) bench.passes.push_back({timing.name, {}, {}});
+        if (!timing.ran) continue;
+        bench.passes[it->second].gpuMs.push_back(timing.gpuMs);
+        bench.passes[it->second].cpuMs.push_back(timing.cpuMs);
+    }
+}
+
+// Progress of a long render on stderr: "frame 12/90, 3.1 s elapsed, 20.2 s remaining". Silent for
+// the first second (short renders print nothing); then rewritten in place on a terminal (at most
+// 10 times a second), or one line a second when stderr is a file or pipe.
+class Progress {
+public:
+    explicit Progress(std::size_t total) : total_(total), start_(Clock::now()), terminal_(isatty(fileno(stderr)) != 0) {}
+
+    void update(std::size_t done) {
+        const double elapsed = secondsSince(start_);
+        if (elapsed < 1.0) return;
+        if (elapsed - lastPrint_ < (terminal_ ? 0.1 : 1.0) && done < total_) return;
+        lastPrint_ = elapsed;
+        printed_ = true;
+        const double remaining = done > 0 ? elapsed / static_cast<double>(done) * static_cast<double>(total_ - done) : 0.0;
+        char line[128];
+        std::snprintf(line, sizeof line, "frame %zu/%zu, %.1f s elapsed, %.1f s remaining", done, total_, elapsed, remaining);
+        if (terminal_)
+            std::fprintf(stderr, "\r%-60s", line);
+        else
+            std::fprintf(stderr, "%s\n", line);
+        std::fflush(stderr);
+    }
+    // Ends the in-place line so later output starts on a line of its own.
+    void finish() {
+        if (printed_ && terminal_) std::fputc('\n', stderr);
+    }
+
+private:
+    std::size_t total_;
+    Clock::time_point start_;
+    bool terminal_;
+    bool printed_ = false;
+    double lastPrint_ = 0.0;  // seconds since start_
+};
+
+// The camera path --path names: a .json file, or a camera animation in the scene file. Runs
+// before any GL work so a bad path is reported at once.
+lit::CameraPath loadPath(const Options& options) {
+    const std::string& what = *options.path;
+    try {
+        lit::CameraPath path;
+        if (options.pathIsFile()) {
+            path = lit::loadCameraPathJson(what);
+        } else {
+            const std::vector<std::string> names = lit::cameraAnimationNames(options.scene);
+            if (std::find(names.begin(), names.end(), what) == names.end()) {
+                std::string message = "no camera animation '" + what + "' in " + options.scene.string() + "; ";
+                if (names.empty()) message += "the scene has none";
+                else message += "its camera animations are:";
+                for (std::size_t i = 0; i < names.size(); ++i) message += (i ? ", '" : " '") + names[i] + "'";
+                throw UsageError(message + " (a path file's name ends in .json)");
+            }
+            path = lit::loadCameraPathFromGltf(options.scene, what);
+        }
+        if (path.empty()) throw RunError("the camera path " + what + " has no keys");
+        return path;
+    } catch (const lit::CameraPathError& e) {
+        throw RunError(std::string("cannot use the camera path: ") + e.what());
+    }
+}
+
+// --path: renders every frame of the path (to PNGs with --frames-out) and times them (--bench-path).
+int runPath(const Options& options, const lit::CameraPath& path, const lit::Scene& scene, lit::Renderer& renderer,
+            const lit::RenderSettings& settings, const lit::HeadlessContext& context) {
+    std::vector<double> times;
+    try {
+        times = path.frameTimes(options.pathFps());
+    } catch (const std::invalid_argument& e) {
+        throw RunError(std::string("cannot render the camera path: ") + e.what());
+    }
+    if (times.size() > static_cast<std::size_t>(lit::cli::kMaxFrames))
+        throw RunError("the camera path is " + std::to_string(path.duration()) + " s long: " + std::to_string(times.size()) +
+                       " frames at this --fps, more than " + std::to_string(lit::cli::kMaxFrames));
+    if (!options.framesOut.empty()) {
+        std::error_code ec;
+        fs::create_directories(options.framesOut, ec);
+        if (ec || !fs::is_directory(options.framesOut))
+            throw RunError("cannot create the folder " + options.framesOut.string() + ": " + ec.message());
+    }
+
+    const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+    const lit::Aabb bounds = scene.worldBounds();
+    const auto viewAt = [&](double t) { return *path.view(t, aspect, bounds); };
+
+    const Clock::time_point renderStart = Clock::now();
+    if (options.benchPath) {
+        // One untimed warm-up frame: voxelization, shader and driver warm-up happen once per
+        // scene, not per frame of a fly-through.
+        renderer.render(scene, viewAt(times.front()), settings);
+        renderer.profiler().flush();
+        glFinish();
+    }
+    BenchResult bench;
+    std::map<std::string, std::size_t> passIndex;
+    Progress progress(times.size());
+    std::vector<std::uint8_t> rgba;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        const lit::CameraView view = viewAt(times[i]);
+        const Clock::time_point frameStart = Clock::now();
+        renderer.render(scene, view, settings);
+        if (options.benchPath) recordBenchFrame(bench, passIndex, renderer, frameStart);
+        if (!options.framesOut.empty()) {
+            char name[32];
+            std::snprintf(name, sizeof name, "frame_%05zu.png", i);
+            rgba = renderer.readOutputRgba8();
+            lit::writePng(options.framesOut / name, settings.width, settings.height, rgba);
+        }
+        progress.update(i + 1);
+    }
+    glFinish();
+    progress.finish();
+
+    const double seconds = secondsSince(renderStart);
+    if (options.benchPath) {
+        std::printf("camera path %s: %zu frames at %g fps over %.3f s\n", options.path->c_str(), times.size(),
+                    options.pathFps(), static_cast<double>(path.duration()));
+        printBench(bench, settings, renderer.stats());
+        if (!options.benchJson.empty()) {
+            nlohmann::ordered_json json = benchJson(bench, options, settings, context.description(), renderer.stats());
+            json["path"] = *options.path;
+            json["pathFps"] = options.pathFps();
+            json["pathSeconds"] = path.duration();
+            writeTextFileAtomic(options.benchJson, json.dump(2) + "\n");
+            std::printf("wrote %s\n", options.benchJson.string().c_str());
+        }
+    }
+    if (!options.framesOut.empty())
+        std::printf("wrote %zu frames to %s (%dx%d, %g fps, %.2f s)\n", times.size(), options.framesOut.string().c_str(),
+                    settings.width, settings.height, options.pathFps(), seconds);
+    return 0;
 }
 
 int run(const Options& options) {
@@ -159,13 +339,16 @@ int run(const Options& options) {
         if (reason.starts_with(prefix)) reason.erase(0, prefix.size());
         throw RunError("cannot load " + options.scene.string() + ": " + reason);
     }
+    lit::addDefaultLightAndCamera(scene, log);
     const int cameraIndex = lit::cli::resolveCamera(options, scene);
+    const std::optional<lit::CameraPath> path = options.path ? std::optional(loadPath(options)) : std::nullopt;
 
     lit::HeadlessContext context;
     lit::gl::requireCapabilities();
     lit::gl::installDebugOutput(log);
     lit::Renderer renderer(lit::defaultShaderRoot(), log);
     renderer.setScene(scene);
+    if (path) return runPath(options, *path, scene, renderer, settings, context);
 
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
@@ -176,24 +359,13 @@ int run(const Options& options) {
     for (int frame = 0; frame < options.frameCount(); ++frame) {
         const Clock::time_point frameStart = Clock::now();
         renderer.render(scene, camera, settings);
-        if (options.benchFrames == 0) continue;
-        // Waiting for this frame's queries serialises CPU and GPU: the wall time per frame is
-        // then the true cost of a frame, and the pass timings belong to this very frame.
-        renderer.profiler().flush();
-        bench.frameMs.push_back(secondsSince(frameStart) * 1000.0);
-        bench.cpuFrameMs.push_back(renderer.profiler().lastCpuFrameMs());
-        for (const lit::PassTiming& timing : renderer.profiler().timings()) {
-            auto [it, inserted] = passIndex.try_emplace(timing.name, bench.passes.size());
-            if (inserted) bench.passes.push_back({timing.name, {}, {}});
-            if (!timing.ran) continue;
-            bench.passes[it->second].gpuMs.push_back(timing.gpuMs);
-            bench.passes[it->second].cpuMs.push_back(timing.cpuMs);
-        }
+        if (options.benchFrames > 0) recordBenchFrame(bench, passIndex, renderer, frameStart);
     }
     glFinish();
+    if (options.benchFrames > 0 && settings.gi) bench.mipmaps = renderer.benchmarkMipmaps(7);
 
     if (options.benchFrames > 0) {
-        printBench(bench, settings);
+        printBench(bench, settings, renderer.stats());
         if (!options.benchJson.empty()) {
             writeTextFileAtomic(options.benchJson,
                                 benchJson(bench, options, settings, context.description(), renderer.stats()).dump(2) + "\n");

@@ -1,0 +1,206 @@
+#include "passes/MipmapPass.h"
+
+#include "gl/GlError.h"
+#include "passes/VoxelVolume.h"
+
+#include <shared.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <utility>
+
+namespace lit {
+
+namespace {
+
+// How each format is reduced. Chosen by timing every variant against the others in one process
+// (Mesa 22.3.6 llvmpipe, AVX2, 2 cores, 256³, process CPU time per chain, min of 5-9; alternatives
+// in brackets), with the earlier straight-colour reduction (rgb = Σ rgb·a / Σ a):
+//   RGBA16F: one level per dispatch, 8×8×8 groups: 39-44 ms [one dispatch for 2 or 3 levels:
+//            82-105 ms; 4×4×4 groups: 73 ms; shared-memory reduction of 3 levels with barriers:
+//            118-140 ms; rg32ui packed loads: 69 ms].
+//   RGBA8:   three levels per dispatch, each invocation an 8³ block, 8×8×1 groups, r32ui packed
+//            loads: 61-62 ms [one level per dispatch: 66-73 ms packed, 95-101 ms as rgba8 images;
+//            shared-memory reduction: 100-137 ms].
+// Measured, not explained: per texel, llvmpipe's RGBA8 image loads cost about twice its RGBA16F
+// ones, so RGBA8 gains from reading each level once, while RGBA16F loses when one invocation
+// walks a whole block. Not measured on a GPU, where the usual shared-memory reduction may win:
+// time it with benchmarkMipmaps before changing these.
+// The plain average of the premultiplied volume (same layouts, alternatives not re-timed;
+// benchmarkMipmaps, process CPU time, medians of 7, 7 runs alternating with the old shader on a
+// machine loaded by parallel builds): RGBA8 30-46 ms (old 55-70), where the r32ui path now averages
+// four bytes at once in integers, and RGBA16F 37-70 ms (old 40-89); glGenerateTextureMipmap 53-80 ms.
+// RGBA8 bound as rgba8 images (the fallback) took 49 ms in the same session.
+// Directional opacity stacking (the current shader; 3 runs alternating with the plain average,
+// same binary, quiet machine; GPU min / process CPU median):
+//   128³ RGBA8   3.0-4.1 / 5.5-5.8 ms   (plain average 1.9-2.1 / 3.6-4.1)
+//   128³ RGBA16F 3.7-4.4 / 6.7-7.6 ms   (plain average 2.6-2.9 / 4.6-5.3)
+//   256³ RGBA8   22.9-23.8 / 46-51 ms   (plain average 14.6-14.9 / 29-30)
+//   256³ RGBA16F 23.1-32.6 / 45-58 ms   (plain average 18.0-21.9 / 36-46)
+// glGenerateTextureMipmap (plain average) ~42-55 ms GPU at 256³. Re-timed layouts at 256³, CPU ms:
+// RGBA8 3 levels 8×8×1 47, 2 levels 8×8×1 51, 1 level 8³ 43-46, 1 level 8×8×1 51-53, 2 levels 4³
+// 68 (all within the noise but the last: kept 3 levels); RGBA16F 1 level 8³ 44-54, 2 levels
+// 8×8×1 116, 3 levels 8×8×1 81, 1 level 4³ 100-104 (kept). The RGBA8 reduction in fp32 (exact
+// integers below 2^24) took 53 ms against 47 for 32-bit integers; choosing one axis on ties
+// instead of averaging them saved nothing measurable. Of the added cost, unpacking the bytes is
+// ~5 ms and the reduction itself ~10-12 ms (a plain average in the same code layout: RGBA8 34-38,
+// RGBA16F 37 ms).
+struct Reduction {
+    int levelsPerDispatch;         // 1..3
+    std::array<int, 3> groupSize;  // local_size_x/y/z
+};
+constexpr Reduction kRgba16f{1, {8, 8, 8}};
+constexpr Reduction kRgba8{3, {8, 8, 1}};
+
+std::string definesFor(bool rgba8, bool packed, const Reduction& r) {
+    const std::pair<const char*, int> values[] = {
+        {"LIT_MIP_RGBA8", rgba8 ? 1 : 0},        {"LIT_MIP_PACKED", packed ? 1 : 0},
+        {"LIT_MIP_LEVELS", r.levelsPerDispatch}, {"LIT_MIP_GROUP_X", r.groupSize[0]},
+        {"LIT_MIP_GROUP_Y", r.groupSize[1]},     {"LIT_MIP_GROUP_Z", r.groupSize[2]},
+    };
+    std::string defines;
+    for (const auto& [name, value] : values)
+        defines += "#define " + std::string(name) + " " + std::to_string(value) + "\n";
+    return defines;
+}
+
+// RGBA8 textures may be bound as r32ui images when the driver matches image formats by texel
+// size (every desktop GL 4.5 driver we know does; the spec lets it match by class instead).
+bool rgba8BindsAsR32ui() {
+    GLint compatibility = GL_NONE;
+    glGetInternalformativ(GL_TEXTURE_3D, GL_RGBA8, GL_IMAGE_FORMAT_COMPATIBILITY_TYPE, 1, &compatibility);
+    return compatibility == GL_IMAGE_FORMAT_COMPATIBILITY_BY_SIZE;
+}
+
+int ceilDiv(int a, int b) { return (a + b - 1) / b; }
+
+std::string hexFormat(GLenum format) {
+    char text[16];
+    std::snprintf(text, sizeof text, "0x%04X", format);
+    return text;
+}
+
+}  // namespace
+
+MipmapPass::MipmapPass(const std::filesystem::path& shaderRoot)
+    : rgba8Packed_(rgba8BindsAsR32ui()),
+      rgba8_(shaderRoot, "mipmap rgba8", {{GL_COMPUTE_SHADER, "mipmap.comp.glsl"}},
+             definesFor(true, rgba8Packed_, kRgba8)),
+      rgba16f_(shaderRoot, "mipmap rgba16f", {{GL_COMPUTE_SHADER, "mipmap.comp.glsl"}},
+               definesFor(false, false, kRgba16f)) {}
+
+void MipmapPass::execute(const VoxelVolume& volume) { execute(volume.radiance()); }
+
+void MipmapPass::execute(const gl::Texture& volume) {
+    const gl::TextureDesc& desc = volume.desc();
+    if (!volume || desc.target != GL_TEXTURE_3D) throw gl::GlError("MipmapPass: the volume must be a GL_TEXTURE_3D");
+    if (desc.format != GL_RGBA8 && desc.format != GL_RGBA16F)
+        throw gl::GlError("MipmapPass: the volume must be GL_RGBA8 or GL_RGBA16F, not format " +
+                          hexFormat(desc.format));
+    const int n = desc.width;
+    if (desc.height != n || desc.depth != n || n < 1 || !std::has_single_bit(static_cast<unsigned>(n)))
+        throw gl::GlError("MipmapPass: the volume must be a cube with a power-of-two side, not " +
+                          std::to_string(desc.width) + "×" + std::to_string(desc.height) + "×" +
+                          std::to_string(desc.depth));
+    const int levels = std::min(desc.levels, gl::Texture::mipCount(n, n, n));
+    if (levels < 2) return;
+
+    const bool rgba8 = desc.format == GL_RGBA8;
+    const Reduction& reduction = rgba8 ? kRgba8 : kRgba16f;
+    const gl::Program& program = rgba8 ? rgba8_ : rgba16f_;
+    const GLenum imageFormat = rgba8 ? (rgba8Packed_ ? GL_R32UI : GL_RGBA8) : GL_RGBA16F;
+    const GLint dispatchLocation = program.location("uDispatch");
+    constexpr std::array<GLuint, 3> kDestUnits{LIT_IMG_MIP_DEST, LIT_IMG_MIP_DEST2, LIT_IMG_MIP_DEST3};
+
+    // Level 0 may just have been written with imageStore (radiance injection).
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    program.use();
+    for (int source = 0; source + 1 < levels;) {
+        const int count = std::min(reduction.levelsPerDispatch, levels - 1 - source);
+        glBindImageTexture(LIT_IMG_MIP_SOURCE, volume.id(), source, GL_TRUE, 0, GL_READ_ONLY, imageFormat);
+        // Units past `count` are not written this time; they get the last level so every image
+        // the shader declares is bound to something valid.
+        for (int i = 0; i < static_cast<int>(kDestUnits.size()); ++i)
+            glBindImageTexture(kDestUnits[i], volume.id(), source + 1 + std::min(i, count - 1), GL_TRUE, 0,
+                               GL_WRITE_ONLY, imageFormat);
+        // One invocation per voxel of the last level this dispatch writes.
+        const int lastEdge = std::max(n >> (source + count), 1);
+        glProgramUniform2i(program.id(), dispatchLocation, lastEdge, count);
+        glDispatchCompute(static_cast<GLuint>(ceilDiv(lastEdge, reduction.groupSize[0])),
+                          static_cast<GLuint>(ceilDiv(lastEdge, reduction.groupSize[1])),
+                          static_cast<GLuint>(ceilDiv(lastEdge, reduction.groupSize[2])));
+        // The next dispatch reads what this one wrote.
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        source += count;
+    }
+    // Cone tracing samples the levels through a sampler.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+namespace {
+
+// Times `work` with a GL_TIMESTAMP pair (GPU ms) and the process CPU clock (ms, all threads).
+template <typename Work>
+void timeOnce(Work&& work, std::vector<double>& gpuMs, std::vector<double>& cpuMs) {
+    std::array<GLuint, 2> ids{};
+    glCreateQueries(GL_TIMESTAMP, 2, ids.data());
+    const gl::QueryHandle begin(ids[0]), end(ids[1]);
+    glFinish();  // the previous run must not overlap this one
+    const std::clock_t cpuStart = std::clock();
+    glQueryCounter(begin.id(), GL_TIMESTAMP);
+    work();
+    glQueryCounter(end.id(), GL_TIMESTAMP);
+    glFinish();
+    const std::clock_t cpuEnd = std::clock();
+    GLuint64 t0 = 0, t1 = 0;
+    glGetQueryObjectui64v(begin.id(), GL_QUERY_RESULT, &t0);
+    glGetQueryObjectui64v(end.id(), GL_QUERY_RESULT, &t1);
+    gpuMs.push_back(t1 >= t0 ? static_cast<double>(t1 - t0) * 1e-6 : 0.0);
+    cpuMs.push_back(static_cast<double>(cpuEnd - cpuStart) * 1000.0 / CLOCKS_PER_SEC);
+}
+
+double minOf(std::vector<double> v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
+double medianOf(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t mid = v.size() / 2;
+    return v.size() % 2 ? v[mid] : 0.5 * (v[mid - 1] + v[mid]);
+}
+
+}  // namespace
+
+MipmapTimings benchmarkMipmaps(MipmapPass& pass, const VoxelVolume& volume, int repetitions) {
+    MipmapTimings t;
+    t.resolution = volume.resolution();
+    t.rgba8 = volume.radianceRgba8();
+    t.repetitions = std::clamp(repetitions, 1, 100);
+    const GLuint texture = volume.radiance().id();
+    const auto compute = [&] { pass.execute(volume); };
+    const auto generate = [&] { glGenerateTextureMipmap(texture); };
+
+    // Warm-up: llvmpipe compiles the blit shaders of glGenerateMipmap on first use (~0.25 s).
+    std::vector<double> ignoredGpu, ignoredCpu;
+    timeOnce(compute, ignoredGpu, ignoredCpu);
+    timeOnce(generate, ignoredGpu, ignoredCpu);
+
+    std::vector<double> computeGpu, computeCpu, generateGpu, generateCpu;
+    for (int i = 0; i < t.repetitions; ++i) {
+        timeOnce(compute, computeGpu, computeCpu);
+        timeOnce(generate, generateGpu, generateCpu);
+    }
+    compute();  // leave execute()'s chain in place, rounded as the cone tracer expects
+
+    t.computeMinMs = minOf(computeGpu);
+    t.computeMedianMs = medianOf(computeGpu);
+    t.generateMinMs = minOf(generateGpu);
+    t.generateMedianMs = medianOf(generateGpu);
+    t.computeCpuMedianMs = medianOf(computeCpu);
+    t.generateCpuMedianMs = medianOf(generateCpu);
+    return t;
+}
+
+}  // namespace lit

@@ -1,0 +1,45 @@
+#version 450 core
+// Cone-tracing pass: the two indirect terms of every pixel from the radiance volume.
+//   L_ID = albedo_d · Σ_i W_i/π · C_i                      (six diffuse cones, cone.glsl)
+//   L_IS = E(F0, roughness, n·v) · Σ_k w_k C(l_k) / Σ_k w_k   (N GGX-sampled cones, split sum, cone.glsl)
+// both × indirect intensity (traceParams.x) × the material's ambient occlusion (G-buffer albedo.a).
+// Background pixels write 0. docs/GI.md derives the weights.
+#include "frame.glsl"
+#include "gbuffer.glsl"
+#include "cone.glsl"
+
+in vec2 vUv;
+
+layout(location = 0) out vec4 outIndirectDiffuse;
+layout(location = 1) out vec4 outIndirectSpecular;
+
+uniform ivec2 uTraceTerms;  // x: trace L_ID, y: trace L_IS (1/0); a term not traced writes 0
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    Surface s = readSurface(pixel, vUv);
+    float scale = voxel.traceParams.x * s.occlusion;
+    if (!s.valid || scale <= 0.0) {
+        outIndirectDiffuse = vec4(0.0);
+        outIndirectSpecular = vec4(0.0);
+        return;
+    }
+    vec3 v = normalize(frame.cameraPosition.xyz - s.position);
+    vec3 n = shadingNormal(s.normal, v);
+    vec3 origin = coneOrigin(s.position, n);
+    float maxDistance = voxel.traceParams.y;
+
+    vec3 diffuse = vec3(0.0);
+    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);
+    if (uTraceTerms.x != 0 && max(albedo.r, max(albedo.g, albedo.b)) > 0.0)
+        diffuse = albedo * traceDiffuse(origin, n, voxel.traceParams.w, maxDistance);
+
+    vec3 specular = vec3(0.0);
+    if (uTraceTerms.y != 0) {
+        int count = clamp(voxel.traceOptions.x, 1, 8);
+        specular = traceSpecular(origin, n, v, specularF0(s.baseColor, s.metalness), s.roughness, count,
+                                 gl_FragCoord.xy, voxel.traceOptions.y, maxDistance);
+    }
+    outIndirectDiffuse = vec4(diffuse * scale, 1.0);
+    outIndirectSpecular = vec4(specular * scale, 1.0);
+}

@@ -1,0 +1,281 @@
+// Voxel cone tracing through the radiance volume (Crassin et al. 2011, "Interactive Indirect
+// Illumination Using Voxel Cone Tracing", Computer Graphics Forum 30(7)). docs/GI.md explains the
+// whole pipeline; this file holds the marching loop, the diffuse cone table and the specular
+// importance sampling.
+//
+// The radiance volume (VoxelVolume.h) holds, per voxel and mip level, opacity a (0..1) and
+// opacity-PREMULTIPLIED outgoing radiance rgb = a·L. Level 0 voxels are either opaque (a = 1,
+// rgb = L) or empty (0), so premultiplied and straight colour agree there; a mip level is the
+// plain average of its eight children, and trilinear filtering is a plain weighted average too,
+// so every filtered sample stays premultiplied and rgb / a is its straight colour. (A straight-
+// colour mip chain cannot be filtered correctly: trilinear mixing with empty texels would darken
+// it, and dividing it by a filtered opacity below 1 would brighten it by 1/a.)
+#include "voxel.glsl"
+#include "brdf.glsl"
+
+layout(binding = LIT_TEX_VOXEL_RADIANCE) uniform sampler3D voxelRadianceTexture;
+
+// A cone stops once it is this opaque: the rest (≤ 5 % of its transmittance) would change the
+// result by less than the filtering error and costs as many steps again.
+const float kConeStopOpacity = 0.95;
+// Samples below this opacity are empty space (a 16F/8-bit zero after filtering).
+const float kConeMinOpacity = 1.0 / 1024.0;
+// Upper bound on the steps of one cone, so a bad uniform (zero voxel size) cannot hang the GPU.
+// The shortest step is half a voxel: 2·512·√3 ≈ 1774 steps cross the largest (512³) volume.
+const int kConeMaxSteps = 1800;
+
+// Start of every cone, to keep it out of the voxels of its own surface (self-occlusion):
+//  - the origin moves along the surface normal by √3 voxels, the diagonal of one voxel, so the
+//    voxel that holds the surface (whose centre may be up to √3/2 voxel away in any direction)
+//    and its trilinear footprint (one more voxel) lie behind the first sample;
+//  - the march starts one voxel along the cone axis (t = voxelSize), and its first sample is
+//    the middle of the first step, so it lies 2.4 (side cones) to 3 (normal cone) voxels off the
+//    surface.
+// The price is that occluders closer than that to a surface are missed (contact shadows are left
+// to direct lighting) and light may leak through walls thinner than that (docs/GI.md).
+const float kConeNormalOffsetVoxels = 1.7320508;
+const float kConeStartVoxels = 1.0;
+
+vec3 coneOrigin(vec3 position, vec3 normal) {
+    return position + normal * (kConeNormalOffsetVoxels * voxel.voxelInfo.z);
+}
+
+// Front-to-back marching of one cone through the mipmapped radiance volume.
+//   origin       world position (m) where the cone's apex is (use coneOrigin)
+//   direction    unit world direction of the axis
+//   aperture     full apex angle (rad)
+//   maxDistance  world distance (m) after which the cone stops
+// Returns rgb: radiance arriving along the cone (W/(sr·m²)), averaged over its solid angle;
+// a: how much of the cone was blocked (0 open, 1 occluded). Space outside the volume is empty
+// and black (no sky light).
+//
+// At distance t the cone is d = max(voxelSize, 2·t·tan(aperture/2)) wide and is sampled with one
+// trilinear lookup at mip level log2(d / voxelSize), whose voxels are d wide. Steps are
+// max(stepScale·d, voxelSize/2) long. Opacity is corrected for the step length: a voxel of size
+// s with opacity a blocks a ray through it with probability a, so a step of length Δ through it
+// blocks 1 − (1 − a)^(Δ/s). Without the correction a step scale of 0.25 would sample every voxel
+// twice as often as 0.5 and make the same wall twice as opaque; with it the result depends on the
+// step scale only through sampling error.
+vec4 traceCone(vec3 origin, vec3 direction, float aperture, float maxDistance) {
+    float voxelSize = voxel.voxelInfo.z;
+    float maxLevel = voxel.voxelInfo.w - 1.0;
+    float stepScale = voxel.traceParams.z;
+    float widthPerDistance = 2.0 * tan(0.5 * clamp(aperture, 0.0, 3.0));
+    vec3 radiance = vec3(0.0);
+    float opacity = 0.0;
+    float t = kConeStartVoxels * voxelSize;
+    for (int i = 0; i < kConeMaxSteps && t <= maxDistance; ++i) {
+        // The step [t, t + Δ] is sampled at its middle (midpoint rule): the cone widens along the
+        // step, and sampling its start would use a footprint too fine for the rest of it and
+        // overestimate the opacity of thin layers by up to 2× at step scale 1.
+        float stepLength = max(stepScale * max(voxelSize, widthPerDistance * t), 0.5 * voxelSize);
+        float tMid = t + 0.5 * stepLength;
+        vec3 uvw = worldToVolume(origin + tMid * direction);
+        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
+        float diameter = max(voxelSize, widthPerDistance * tMid);
+        float level = min(log2(diameter / voxelSize), maxLevel);
+        vec4 s = textureLod(voxelRadianceTexture, uvw, level);
+        if (s.a > kConeMinOpacity) {
+            float levelVoxelSize = voxelSize * exp2(level);
+            float a = 1.0 - pow(max(1.0 - s.a, 0.0), stepLength / levelVoxelSize);
+            // Straight colour = rgb / a of the premultiplied sample, weighted by the corrected opacity.
+            radiance += (1.0 - opacity) * (a / s.a) * decodeRadiance(s.rgb);
+            opacity += (1.0 - opacity) * a;
+            if (opacity >= kConeStopOpacity) {
+                // The last ≤ 5 % of the cone would see more of what it has been seeing (its
+                // radiance averaged by opacity), not black: count it so, which keeps a closed
+                // room's cones unbiased and makes the furnace exact for any opacity.
+                return vec4(radiance / opacity, 1.0);
+            }
+        }
+        t += stepLength;
+    }
+    // Left the volume or reached maxDistance: the rest of the cone sees empty space (black).
+    return vec4(radiance, opacity);
+}
+
+// An orthonormal basis (t, b, n) around a unit normal, continuous except at n.z = −1
+// (Duff et al. 2017, "Building an Orthonormal Basis, Revisited", JCGT 6(1), listing 3).
+mat3 tangentFrame(vec3 n) {
+    float s = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float b = n.x * n.y * a;
+    vec3 t = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
+    vec3 bt = vec3(b, s + n.y * n.y * a, -n.y);
+    return mat3(t, bt, n);
+}
+
+// ---- Indirect diffuse: six cones -----------------------------------------------------------
+// Layout: one cone along the normal and five around it at 60° from the normal, 72° apart in
+// azimuth, each 60° wide. This is the six-cone layout used by many VXGI renderers after Crassin
+// et al. 2011, e.g. jose-villegas/VCTRenderer (engine/assets/shaders/light_pass.frag, which has
+// the same directions with the axes permuted and the weights π/4, 3π/20).
+//
+// Weights: the irradiance E = ∫_hemisphere L(ω) cosθ dω is split into six regions, and each cone
+// estimates the mean radiance C_i of its region, so E ≈ Σ C_i · W_i with W_i = ∫_region cosθ dω
+// (the region's projected solid angle). The normal cone owns the cap θ < 30° (its own half
+// aperture): W_0 = 2π ∫_0^{30°} cosθ sinθ dθ = π sin²30° = π/4. The five side cones share the ring
+// 30° < θ < 90° (the side cones' axes at 60° sit in its middle): W_i = (π − π/4) / 5 = 3π/20.
+// Σ W_i = π exactly, so in a uniform field L (every C_i = L) E = π·L and
+//   L_ID = albedo_d/π · E = albedo_d · L   (the furnace test, tests/gl/test_cone_trace.cpp).
+// In the "w_i·(n·c_i)" form the same weights are w_0 = π/4 and w_i = (3π/20)/cos60° = 3π/10.
+// The table stores W_i / π, so L_ID = albedo_d · Σ kDiffuseConeWeights[i] · C_i.
+// The regions stay fixed when the user changes the aperture (traceParams.w): a wider or narrower
+// cone only blurs or sharpens each estimate, and the furnace still holds.
+const int kDiffuseConeCount = 6;
+// Tangent space: x, y along the surface, z along the normal. sin60° = 0.8660254, cos60° = 0.5.
+const vec3 kDiffuseConeDirections[kDiffuseConeCount] = vec3[](
+    vec3(0.0, 0.0, 1.0),
+    vec3(0.8660254, 0.0, 0.5),             // azimuth   0°
+    vec3(0.2676166, 0.8236391, 0.5),       // azimuth  72°
+    vec3(-0.7006293, 0.5090370, 0.5),      // azimuth 144°
+    vec3(-0.7006293, -0.5090370, 0.5),     // azimuth 216°
+    vec3(0.2676166, -0.8236391, 0.5));     // azimuth 288°
+const float kDiffuseConeWeights[kDiffuseConeCount] = float[](0.25, 0.15, 0.15, 0.15, 0.15, 0.15);
+
+// Irradiance / π at a surface point: Σ W_i/π · C_i, so that L_ID = albedo_d · traceDiffuse(...).
+// `origin` from coneOrigin(), `n` the unit surface normal.
+vec3 traceDiffuse(vec3 origin, vec3 n, float aperture, float maxDistance) {
+    mat3 basis = tangentFrame(n);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < kDiffuseConeCount; ++i) {
+        vec3 direction = basis * kDiffuseConeDirections[i];
+        sum += kDiffuseConeWeights[i] * traceCone(origin, direction, aperture, maxDistance).rgb;
+    }
+    return sum;
+}
+
+// ---- Indirect specular: GGX importance sampling --------------------------------------------
+// L_IS = ∫ f_s(l, v) L(l) (n·l) dl with f_s = D·G·F / (4 (n·l)(n·v)) (brdf.glsl).
+//
+// Importance sampling. Half vectors h are drawn from D(h)(n·h) (which integrates to 1 over the
+// hemisphere) and l = reflect(−v, h); the change of variables h → l has Jacobian 1/(4 (v·h)), so
+//   p(l) = D(h)(n·h) / (4 (v·h))
+// and the Monte Carlo weight of a sample reduces to
+//   f_s (n·l) / p(l) = F(v, h) · G(l, v) · (v·h) / ((n·h)(n·v))
+// (Karis 2013, "Real Shading in Unreal Engine 4", SIGGRAPH course notes, "Image-based lighting":
+// D cancels). The plain estimator 1/N Σ F·w_k·L(l_k) is unbiased, but with N = 2 its weights
+// alone scatter by ±15 % on a mirror seen at grazing angles and by ±50 % on rough surfaces, even
+// where L is uniform: visible per-pixel noise.
+//
+// Split sum. Writing L_IS = E · ⟨L⟩ with E = ∫ f_s (n·l) dl (the lobe's directional albedo,
+// which depends only on F0, roughness and n·v) and ⟨L⟩ the radiance averaged over the lobe with
+// weights f_s (n·l), Lit estimates ⟨L⟩ by self-normalised importance sampling,
+//   ⟨L⟩ ≈ Σ w_k L(l_k) / Σ w_k,   w_k = G(l_k, v)·(v·h_k) / ((n·h_k)(n·v))   (F's colour is in E),
+// and reads E = F0·A + B from a table integrated once with these same samples and weights
+// (ConeTracePass builds it with specular_albedo.frag.glsl). This is the split sum of Karis 2013
+// with the lobe weights in place of n·l, so it converges to the exact integral as N grows; at any
+// N a uniform field gives exactly E·L (no weight noise), and the noise left comes from radiance
+// that varies inside the lobe, which wide cones on rough surfaces smooth out.
+// Each sample's radiance L(l_k) is a cone traced along l_k (see specularConeAperture).
+
+layout(binding = LIT_TEX_SPECULAR_ALBEDO) uniform sampler2D specularAlbedoTable;
+
+// Van der Corput radical inverse in base 2 (Hammersley point set).
+float radicalInverse(uint bits) { return float(bitfieldReverse(bits)) * 2.3283064365386963e-10; }
+
+// Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
+// Advanced Warfare"): per-pixel values in [0,1) whose neighbours differ a lot, so the samples of
+// neighbouring pixels spread around the lobe and the eye averages them.
+float interleavedGradientNoise(vec2 pixel) {
+    return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+}
+
+// PCG hash (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering", JCGT 9(3)).
+uint pcgHash(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+// Share of the GGX lobe (of the D(h)(n·h) probability) the samples are drawn from: the last
+// quarter is the long tail, h up to 90° from n, whose rare samples make isolated bright or dark
+// pixels at 2 samples per pixel. Dropping it is a bias (reflections lose their faint halo), not
+// an energy loss: E from the table still counts the whole lobe. Measured on the Cornell box
+// (rough 0.4 metal, 2 samples): visibly fewer speckles than 1.0, the lobe still as wide.
+const float kSpecularLobeShare = 0.75;
+
+// Sample k of N: the Hammersley point (k/N, radicalInverse(k)) shifted per pixel
+// (Cranley-Patterson rotation) and per frame. The azimuth shift comes from interleaved gradient
+// noise, the polar one from a hash: with both from the gradient noise its line structure showed
+// as diagonal moiré stripes.
+vec2 specularSample(int k, int count, vec2 pixel, int frameIndex) {
+    uvec2 p = uvec2(pixel);
+    uint hash = pcgHash(p.x + pcgHash(p.y + pcgHash(uint(frameIndex))));
+    vec2 rotation = vec2(float(hash) * 2.3283064365386963e-10,
+                         interleavedGradientNoise(pixel + vec2(float(frameIndex % 64) * 5.588238)));
+    vec2 u = fract(vec2(float(k) / float(count), radicalInverse(uint(k))) + rotation);
+    return vec2(u.x * kSpecularLobeShare, u.y);
+}
+
+// GGX half vector in tangent space from uniform u ∈ [0,1)²: pdf D(h)(n·h) (Walter et al. 2007,
+// eq. 35-36): cos²θ_h = (1 − u.x) / (1 + (α² − 1) u.x), φ = 2π u.y.
+vec3 sampleGgxHalfVector(vec2 u, float alpha) {
+    float a2 = alpha * alpha;
+    float cos2 = (1.0 - u.x) / (1.0 + (a2 - 1.0) * u.x);
+    float cosTheta = sqrt(clamp(cos2, 0.0, 1.0));
+    float sinTheta = sqrt(clamp(1.0 - cos2, 0.0, 1.0));
+    float phi = 2.0 * PI * u.y;
+    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
+}
+
+// The importance weight of a GGX sample without F: G(l, v)·(v·h) / ((n·h)(n·v)); 0 when l falls
+// below the surface or h faces away from v. Sets `l` to the sampled light direction.
+float ggxSampleWeight(vec3 n, vec3 v, vec3 h, float alpha, out vec3 l) {
+    float VdotH = dot(v, h);
+    l = 2.0 * VdotH * h - v;  // reflect(−v, h)
+    float NdotL = dot(n, l);
+    if (VdotH <= 0.0 || NdotL <= 0.0) return 0.0;
+    float NdotV = max(dot(n, v), 1e-4);
+    float NdotH = max(dot(n, h), 1e-4);
+    return G_SmithGGXCorrelated(NdotL, NdotV, alpha) * VdotH / (NdotH * NdotV);
+}
+
+// Directional albedo E = ∫ f_s (n·l) dl of the GGX lobe with Schlick's F: E = F0·A + B, where
+// A = ∫ w·(1 − (1 − v·h)^5) and B = ∫ w·(1 − v·h)^5 are read from the table (`roughness`
+// perceptual, the table's texel centres at (i + ½)/size).
+vec3 specularAlbedo(vec3 f0, float roughness, float NdotV) {
+    vec2 ab = textureLod(specularAlbedoTable, vec2(NdotV, roughness), 0.0).rg;
+    return f0 * ab.x + ab.y;
+}
+
+// Cones narrower than this march half a voxel per step for the whole volume; 0.02 rad is about
+// one voxel wide at 50 voxels, so mirror reflections stay sharp at voxel resolution.
+const float kMinSpecularAperture = 0.02;
+const float kMaxSpecularAperture = 1.0471976;  // π/3: wider lobes are diffuse-like anyway
+
+// Full aperture of the cone that stands for one of `count` samples of a GGX lobe with roughness
+// α. The median half-vector angle of GGX is atan(α) (u.x = 1/2 above), so the reflected lobe is
+// about 2·atan(α) ≈ 2α wide around the mirror direction; each of N samples covers 1/N of its
+// solid angle, a cone of half angle ≈ 2α/√N:
+//   aperture = 2·atan(2α/√N), clamped to [0.02, π/3].
+float specularConeAperture(float alpha, int count) {
+    float halfAngle = atan(2.0 * alpha * inversesqrt(float(count)));
+    return clamp(2.0 * halfAngle, kMinSpecularAperture, kMaxSpecularAperture);
+}
+
+// Indirect specular radiance L_IS for a surface with normal n (unit, facing v), view vector v
+// (unit, towards the eye), F0 and perceptual roughness, from `count` (1..8) importance-sampled
+// cones.
+vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, vec3 f0, float roughness, int count, vec2 pixel, int frameIndex,
+                   float maxDistance) {
+    float alpha = alphaFromRoughness(roughness);
+    mat3 basis = tangentFrame(n);
+    float aperture = specularConeAperture(alpha, count);
+    vec3 weightedRadiance = vec3(0.0);
+    float weightSum = 0.0;
+    for (int k = 0; k < count; ++k) {
+        vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, pixel, frameIndex), alpha);
+        vec3 l;
+        float w = ggxSampleWeight(n, v, h, alpha, l);
+        if (w <= 0.0) continue;
+        weightedRadiance += w * traceCone(origin, l, aperture, maxDistance).rgb;
+        weightSum += w;
+    }
+    if (weightSum <= 0.0) {
+        // Every sample fell below the horizon (rough surface seen edge-on): use the mirror direction.
+        weightedRadiance = traceCone(origin, reflect(-v, n), aperture, maxDistance).rgb;
+        weightSum = 1.0;
+    }
+    return specularAlbedo(f0, roughness, max(dot(n, v), 0.0)) * weightedRadiance / weightSum;
+}
