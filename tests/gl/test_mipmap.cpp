@@ -42,9 +42,11 @@ int edgeOf(const Level& level) { return static_cast<int>(std::lround(std::cbrt(s
 float roundToHalf(float x) {
     if (x == 0.0f || !std::isfinite(x)) return x;
     int exponent = 0;
-    std::frexp(x, &exponent);  // |x| = m·2^exponent, m in [0.5, 1): half step 2^(exponent−11)
-    const int step = std::max(exponent - 11, -24);  // subnormal halves: steps of 2^-24
-    const float rounded = std::ldexp(std::nearbyint(std::ldexp(x, -step)), step);  // default mode: ties to even
+    // |x| = m·2^exponent with m in [0.5, 1): the half-float step there is 2^(exponent − 11), and
+    // 2^-24 for subnormal halves. nearbyint rounds in the default mode, to nearest, ties to even.
+    std::frexp(x, &exponent);
+    const int step = std::max(exponent - 11, -24);
+    const float rounded = std::ldexp(std::nearbyint(std::ldexp(x, -step)), step);
     return std::clamp(rounded, -65504.0f, 65504.0f);
 }
 
@@ -68,8 +70,8 @@ glm::vec<3, Alpha> overlapOf(const std::array<Alpha, 8>& a) {
     glm::vec<3, Alpha> overlap;
     for (int axis = 0; axis < 3; ++axis) {
         const auto& p = kAxisPairs[axis];
-        overlap[axis] = (a[p[0][0]] * a[p[0][1]] + a[p[1][0]] * a[p[1][1]]) +
-                        (a[p[2][0]] * a[p[2][1]] + a[p[3][0]] * a[p[3][1]]);
+        overlap[axis] =
+            (a[p[0][0]] * a[p[0][1]] + a[p[1][0]] * a[p[1][1]]) + (a[p[2][0]] * a[p[2][1]] + a[p[3][0]] * a[p[3][1]]);
     }
     return overlap;
 }
@@ -114,8 +116,8 @@ glm::vec4 reduceBlockFloat(const Block& c) {
     const int count = int(tied.x) + int(tied.y) + int(tied.z);
     glm::vec3 cross(0.0f);
     for (int i = 0; i < 8; ++i) {
-        const float partners = ((tied.x ? alpha[i ^ 1] : 0.0f) + (tied.y ? alpha[i ^ 2] : 0.0f)) +
-                               (tied.z ? alpha[i ^ 4] : 0.0f);
+        const float partners =
+            ((tied.x ? alpha[i ^ 1] : 0.0f) + (tied.y ? alpha[i ^ 2] : 0.0f)) + (tied.z ? alpha[i ^ 4] : 0.0f);
         cross = cross + glm::vec3(c[i]) * partners;
     }
     const float scale = count == 1 ? 0.25f : count == 2 ? 0.125f : 0.25f / 3.0f;
@@ -447,9 +449,8 @@ TEST_P(MipmapFormat, OneVoxelWallStaysOpaqueAtEveryLevel) {
                 if (glm::all(glm::lessThanEqual(glm::abs(v - want), glm::vec4(1e-6f)))) continue;
                 if (wrong++ == 0)
                     first = "(" + std::to_string(p.x) + "," + std::to_string(p.y) + "," + std::to_string(p.z) +
-                            ") = " + std::to_string(v.r) + "," + std::to_string(v.g) + "," + std::to_string(v.b) +
-                            "," + std::to_string(v.a) + ", want " + std::to_string(want.r) + ",...," +
-                            std::to_string(want.a);
+                            ") = " + std::to_string(v.r) + "," + std::to_string(v.g) + "," + std::to_string(v.b) + "," +
+                            std::to_string(v.a) + ", want " + std::to_string(want.r) + ",...," + std::to_string(want.a);
             }
             EXPECT_EQ(wrong, 0) << "level " << level << ": first " << first;
         }
