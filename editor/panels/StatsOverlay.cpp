@@ -45,11 +45,14 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
                 ImGui::TableNextColumn();
                 ImGui::Text("%7.2f", pass.cpuMs);
             } else {
+                // Passes that run only when something changed (shadows, voxelize, inject,
+                // mipmap) show, greyed, what they cost the last time they ran.
                 ImGui::TextDisabled("%s", pass.name.c_str());
+                const PassTiming* last = profiler.lastRun(pass.name);
                 ImGui::TableNextColumn();
-                ImGui::TextDisabled("%8s", "-");
+                if (last) ImGui::TextDisabled("%8.2f", last->gpuMs); else ImGui::TextDisabled("%8s", "-");
                 ImGui::TableNextColumn();
-                ImGui::TextDisabled("%7s", "-");
+                if (last) ImGui::TextDisabled("%7.2f", last->cpuMs); else ImGui::TextDisabled("%7s", "-");
             }
         }
         ImGui::EndTable();
