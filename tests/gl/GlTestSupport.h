@@ -72,8 +72,9 @@ inline glm::ivec2 projectToPixel(const CameraView& camera, const glm::vec3& worl
 
 inline float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
-// One context and renderer per test process (each test case runs in its own process).
-class GlFixture : public ::testing::Test {
+// A headless GL 4.5 context for the duration of one test (each test case runs in its own
+// process). Fixtures that build passes derive from it and return early when it failed.
+class ContextFixture : public ::testing::Test {
 protected:
     void SetUp() override {
         try {
@@ -81,6 +82,17 @@ protected:
         } catch (const std::exception& e) {
             GTEST_FAIL() << "no headless GL 4.5 context: " << e.what();
         }
+    }
+
+    std::unique_ptr<HeadlessContext> context_;
+};
+
+// A context and a Renderer.
+class GlFixture : public ContextFixture {
+protected:
+    void SetUp() override {
+        ContextFixture::SetUp();
+        if (HasFatalFailure()) return;
         renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
     }
 
@@ -115,7 +127,6 @@ protected:
     }
 
     Log log_;
-    std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<Renderer> renderer_;
 };
 

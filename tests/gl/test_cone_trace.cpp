@@ -90,14 +90,11 @@ Scene planeScene(float y, float size, const glm::vec3& baseColor, float roughnes
     return scene;
 }
 
-class ConeTrace : public ::testing::Test {
+class ConeTrace : public ContextFixture {
 protected:
     void SetUp() override {
-        try {
-            context_ = std::make_unique<HeadlessContext>();
-        } catch (const std::exception& e) {
-            GTEST_FAIL() << "no headless GL 4.5 context: " << e.what();
-        }
+        ContextFixture::SetUp();
+        if (HasFatalFailure()) return;
         const auto shaders = sourceDir() / "shaders";
         gbuffer_ = std::make_unique<GBufferPass>(shaders);
         cone_ = std::make_unique<ConeTracePass>(shaders);
@@ -185,7 +182,6 @@ protected:
 
     Log log_;
     RenderSettings settings_;
-    std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<GBufferPass> gbuffer_;
     std::unique_ptr<ConeTracePass> cone_;
     std::unique_ptr<LightingTerms> terms_;

@@ -304,19 +304,15 @@ TEST(MipmapFormula, ShaderFormEqualsCompositingInBothOrders) {
     EXPECT_GT(partialBlocks, 3000);
 }
 
-class Mipmap : public ::testing::Test {
+class Mipmap : public ContextFixture {
 protected:
     void SetUp() override {
-        try {
-            context_ = std::make_unique<HeadlessContext>();
-        } catch (const std::exception& e) {
-            GTEST_FAIL() << "no headless GL 4.5 context: " << e.what();
-        }
+        ContextFixture::SetUp();
+        if (HasFatalFailure()) return;
         pass_ = std::make_unique<MipmapPass>(sourceDir() / "shaders");
     }
 
     Log log_;
-    std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<MipmapPass> pass_;
 };
 

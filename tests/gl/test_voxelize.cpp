@@ -26,14 +26,11 @@ namespace lit::test {
 namespace {
 
 // Builds the voxel passes directly (no Renderer) and runs them the way the Renderer does.
-class VoxelFixture : public ::testing::Test {
+class VoxelFixture : public ContextFixture {
 protected:
     void SetUp() override {
-        try {
-            context_ = std::make_unique<HeadlessContext>();
-        } catch (const std::exception& e) {
-            GTEST_FAIL() << "no headless GL 4.5 context: " << e.what();
-        }
+        ContextFixture::SetUp();
+        if (HasFatalFailure()) return;
         voxelize_ = std::make_unique<VoxelizePass>(sourceDir() / "shaders");
         inject_ = std::make_unique<InjectPass>(sourceDir() / "shaders");
     }
@@ -79,7 +76,6 @@ protected:
     glm::vec3 toVoxels(const glm::vec3& p) const { return (p - volume_->minCorner()) / voxelSize(); }
 
     Log log_;
-    std::unique_ptr<HeadlessContext> context_;
     std::unique_ptr<VoxelizePass> voxelize_;
     std::unique_ptr<InjectPass> inject_;
     std::unique_ptr<ShadowPass> shadow_;
