@@ -4,6 +4,7 @@
 #include "gl/GlError.h"
 #include "passes/ConeTracePass.h"
 #include "passes/DirectLightingPass.h"
+#include "passes/FrameUniforms.h"
 #include "passes/InjectPass.h"
 #include "passes/MipmapPass.h"
 #include "passes/VoxelVolume.h"
@@ -257,15 +258,8 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
                              r.lights.lights.data());
     }
 
-    gpu::FrameUniforms frame{};
-    frame.view = camera.view;
-    frame.projection = camera.projection;
-    frame.viewProjection = camera.projection * camera.view;
-    frame.inverseViewProjection = glm::inverse(frame.viewProjection);
-    frame.cameraPosition = glm::vec4(camera.position, 1.0f);
-    frame.viewport = glm::vec4(settings.width, settings.height, 1.0f / settings.width, 1.0f / settings.height);
-    frame.exposure = glm::vec4(settings.exposure, settings.shadowPcfRadius, 0.0f, 0.0f);
-    frame.counts = glm::ivec4(static_cast<int>(r.lights.lights.size()), toShaderView(settings.view), 0, 0);
+    const gpu::FrameUniforms frame = makeFrameUniforms(camera, settings, toShaderView(settings.view),
+                                                       static_cast<int>(r.lights.lights.size()));
     r.frameUniforms.update(frame);
     r.frameUniforms.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FRAME);
     r.lightBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_LIGHTS);

@@ -5,6 +5,8 @@
 // the tracer's.
 #include "GlTestSupport.h"
 
+#include "passes/FrameUniforms.h"
+
 #include "passes/ConeTracePass.h"
 #include "passes/GBufferPass.h"
 #include "passes/LightingTerms.h"
@@ -140,14 +142,7 @@ protected:
     TraceImages trace(const Scene& scene, const CameraView& camera) {
         const int w = settings_.width, h = settings_.height;
         gpuScene_ = std::make_unique<GpuScene>(scene, log_);
-        gpu::FrameUniforms frame{};
-        frame.view = camera.view;
-        frame.projection = camera.projection;
-        frame.viewProjection = camera.projection * camera.view;
-        frame.inverseViewProjection = glm::inverse(frame.viewProjection);
-        frame.cameraPosition = glm::vec4(camera.position, 1.0f);
-        frame.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
-        frame.exposure = glm::vec4(1.0f, 1.5f, 0.0f, 0.0f);
+        const gpu::FrameUniforms frame = makeFrameUniforms(camera, settings_, LIT_VIEW_FINAL, 0);
         frameUniforms_->update(frame);
         frameUniforms_->bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FRAME);
 
