@@ -26,6 +26,17 @@ protected:
         FrameStats steady;  // a later frame: shadow maps cached, only the camera view is culled
     };
 
+    // The same scene rendered with culling off, then on (each from a fresh upload).
+    struct OffOn {
+        Frame off, on;
+    };
+    OffOn renderCullingOffAndOn(const Scene& scene, RenderSettings settings) {
+        settings.frustumCulling = false;
+        Frame off = renderTwice(scene, settings);
+        settings.frustumCulling = true;
+        return {std::move(off), renderTwice(scene, settings)};
+    }
+
     // Renders `scene` from a fresh upload (so the shadow maps are redrawn under these settings).
     Frame renderTwice(const Scene& scene, const RenderSettings& settings) {
         renderer_->setScene(scene);
@@ -115,10 +126,7 @@ TEST_F(Culling, SameImageFewerDraws) {
     const Scene scene = makeScene();
     RenderSettings settings = smallSettings(128);
     settings.shadowMapSize = 256;
-    settings.frustumCulling = false;
-    const Frame off = renderTwice(scene, settings);
-    settings.frustumCulling = true;
-    const Frame on = renderTwice(scene, settings);
+    const auto [off, on] = renderCullingOffAndOn(scene, settings);
     expectIdentical(on, off);
 
     constexpr int kItems = 10;
@@ -174,10 +182,7 @@ TEST_F(Culling, SameImageWithGlobalIllumination) {
     settings.gi = true;
     settings.voxelResolution = 64;
     settings.shadowMapSize = 256;
-    settings.frustumCulling = false;
-    const Frame off = renderTwice(scene, settings);
-    settings.frustumCulling = true;
-    const Frame on = renderTwice(scene, settings);
+    const auto [off, on] = renderCullingOffAndOn(scene, settings);
     expectIdentical(on, off);
     EXPECT_LT(on.steady.drawsSubmitted, off.steady.drawsSubmitted);
 }
@@ -193,10 +198,7 @@ TEST_F(Culling, SponzaDrawCountsFromTheDefaultCamera) {
     settings.width = 256;  // 16:9, the aspect of 1280×720: culling depends on the aspect, not the size
     settings.height = 144;
     settings.shadowMapSize = 512;
-    settings.frustumCulling = false;
-    const Frame off = renderTwice(scene, settings);
-    settings.frustumCulling = true;
-    const Frame on = renderTwice(scene, settings);
+    const auto [off, on] = renderCullingOffAndOn(scene, settings);
     std::printf("Sponza (default camera, 16:9): G-buffer draws %d with culling off, %d of %d with culling on; "
                 "triangles %zu -> %zu; culling %.3f ms CPU; load %.1f s\n",
                 off.steady.drawsSubmitted, on.steady.drawsSubmitted, on.steady.drawsTotal, off.steady.triangles,
