@@ -5,13 +5,22 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "FlyController.h"
+#include "Properties.h"
+#include "ScreenshotNames.h"
+#include "SettingCommand.h"
+#include "ViewportOverlay.h"
+#include "passes/VoxelVolume.h"
 #include "gl/Capabilities.h"
 #include "image/ImageIO.h"
 #include "panels/CameraPanel.h"
@@ -19,7 +28,6 @@
 #include "panels/Layout.h"
 #include "panels/RenderSettingsPanel.h"
 #include "panels/StatsOverlay.h"
-#include "scene/GltfLoader.h"
 #include "scene/SceneBuilder.h"
 
 namespace lit::editor {
@@ -33,6 +41,8 @@ constexpr double kShaderReloadInterval = 0.5;
 constexpr float kMaxCameraStep = 1.0f;
 // Window background where the renderer has not drawn (before the first frame): dark grey, sRGB.
 constexpr float kBackground[4] = {0.08f, 0.08f, 0.09f, 1.0f};
+// Where F12 and the File menu put screenshots, relative to the working directory.
+constexpr const char* kScreenshotFolder = "screenshots";
 
 #ifdef NDEBUG
 constexpr bool kDebugContext = false;
@@ -40,23 +50,31 @@ constexpr bool kDebugContext = false;
 constexpr bool kDebugContext = true;
 #endif
 
-// Loads a glTF file, with a clear message for the commonest mistake (a wrong path) before the
-// loader's own checks.
-Scene loadSceneFile(const std::filesystem::path& path, Log& log) {
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error))
-        throw SceneLoadError("cannot open scene '" + path.string() + "': no such file");
-    Scene scene = loadGltf(path, log);
-    addDefaultLightAndCamera(scene, log);
-    return scene;
+bool isSceneFile(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension == ".gltf" || extension == ".glb";
+}
+
+std::string displayName(const std::filesystem::path& file) {
+    return file.empty() ? std::string("untitled") : file.filename().string();
+}
+
+void createParentFolder(const std::filesystem::path& file) {
+    const std::filesystem::path parent = file.parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
 }
 
 }  // namespace
 
-App::App(const EditorOptions& options)
+App::App(const EditorOptions& options, std::vector<ScriptCommand> script)
     : options_(options),
-      scene_(loadInitialScene()),
-      window_(options.width, options.height, "Lit editor", kDebugContext, /*vsync=*/!options.screenshot) {
+      doc_(loadInitialDocument()),
+      window_(options.width, options.height, "Lit editor", kDebugContext,
+              /*vsync=*/!options.screenshot && !options.script),
+      script_(std::move(script)),
+      scriptSource_(options.script ? options.script->string() : std::string()) {
     // The window's context is current from here on.
     gl::requireCapabilities();
 #ifndef NDEBUG
@@ -66,10 +84,18 @@ App::App(const EditorOptions& options)
     renderer_ = std::make_unique<Renderer>(defaultShaderRoot(), log_);
     imgui_.emplace(window_.handle());
     blitSource_ = gl::Framebuffer("editor viewport blit source");
-    renderer_->setScene(scene_);
-    if (sceneError_.empty()) recent_.add(options_.scene.value_or(defaultScenePath()));
+    renderer_->setScene(doc_.scene);
+    std::optional<std::filesystem::path> initialLoad;
+    if (!options_.screenshot && !options_.script) initialLoad = options_.scene.value_or(defaultScenePath());
+    if (sceneError_.empty() && !initialLoad) recent_.add(options_.scene.value_or(defaultScenePath()));
     resetCamera();
     updateTitle();
+    if (!scriptMode() && !options_.screenshot) {
+        autosave_.emplace();
+        // A recovered copy must not be replaced by the scene still loading: ask once it is in.
+        if (initialLoad) recoveryAfterLoad_ = true; else offerRecovery();
+    }
+    if (initialLoad) startLoading(*initialLoad);
 }
 
 App::~App() {
@@ -77,51 +103,249 @@ App::~App() {
     if (looking_) glfwSetInputMode(window_.handle(), GLFW_CURSOR, GLFW_CURSOR_NORMAL);
 }
 
-// Runs in the member initialiser list: only members declared before scene_ exist yet.
-Scene App::loadInitialScene() {
+// Runs in the member initialiser list: only members declared before doc_ exist yet.
+Document App::loadInitialDocument() {
     const std::filesystem::path path = options_.scene.value_or(defaultScenePath());
+    // Interactively the window opens at once and the scene loads behind a progress bar (the
+    // constructor starts it: members after doc_ do not exist yet here).
+    if (!options_.screenshot && !options_.script) return Document{};
     try {
-        Scene scene = loadSceneFile(path, log_);
+        Document doc = openDocument(path, log_);
         log_.info("opened scene " + path.string());
-        return scene;
+        return doc;
     } catch (const std::exception& error) {
-        // A screenshot run exists to check a scene: fail loudly. Interactively, start empty and
-        // let the user open another file.
-        if (options_.screenshot) throw;
+        // Screenshot and script runs exist to check a scene: fail loudly. Interactively, start
+        // empty and let the user open another file.
+        if (options_.screenshot || options_.script) throw;
         sceneError_ = error.what();
         log_.error(sceneError_);
-        return Scene{};
+        return Document{};
     }
 }
 
-void App::openScene(const std::filesystem::path& path) {
-    Scene loaded;
+// ---- files -------------------------------------------------------------------------------------
+
+void App::requestOpen(const std::filesystem::path& path) {
+    if (scriptMode() || !doc_.dirty()) {
+        openScene(path);
+        return;
+    }
+    askAboutUnsavedChanges({PendingAction::Kind::Open, path});
+}
+
+void App::requestQuit() {
+    if (scriptMode() || !doc_.dirty()) {
+        exitCode_ = 0;
+        return;
+    }
+    askAboutUnsavedChanges({PendingAction::Kind::Quit, {}});
+}
+
+void App::askAboutUnsavedChanges(PendingAction action) {
+    pending_ = std::move(action);
+    const std::string name = displayName(doc_.file);
+    const std::string before = pending_.kind == PendingAction::Kind::Quit
+                                   ? "before quitting"
+                                   : "before opening " + pending_.file.filename().string();
+    unsavedQuestion_.ask({"Unsaved changes", name + " has unsaved changes. Save them " + before + "?", "Save",
+                          "Discard", /*cancellable=*/true});
+}
+
+void App::answerUnsavedChanges(Answer answer) {
+    switch (answer) {
+    case Answer::None: return;
+    case Answer::Cancel: pending_ = {}; return;
+    case Answer::No: carryOut(std::exchange(pending_, {})); return;
+    case Answer::Yes:
+        if (doc_.file.empty()) {
+            // No file yet: the Save As dialog finishes the job (or its Cancel drops it).
+            saveAsForPending_ = true;
+            mainMenu_.askSaveAs("untitled.gltf");
+            return;
+        }
+        // A failed save loses nothing: the error is shown and the action is dropped.
+        if (saveTo(doc_.file).empty()) carryOut(std::exchange(pending_, {}));
+        else pending_ = {};
+        return;
+    }
+}
+
+void App::carryOut(PendingAction action) {
+    switch (action.kind) {
+    case PendingAction::Kind::None: break;
+    case PendingAction::Kind::Quit: exitCode_ = 0; break;
+    case PendingAction::Kind::Open: openScene(action.file); break;
+    }
+}
+
+std::string App::openScene(const std::filesystem::path& path) {
+    if (!scriptMode() && !options_.screenshot) {
+        startLoading(path);
+        return "";
+    }
+    Document loaded;
     try {
-        loaded = loadSceneFile(path, log_);
+        loaded = openDocument(path, log_);
     } catch (const std::exception& error) {
         sceneError_ = error.what();
         log_.error(sceneError_);
-        return;  // the current scene stays
+        return sceneError_;  // the current document stays
     }
-    scene_ = std::move(loaded);
+    return adoptDocument(std::move(loaded), path);
+}
+
+void App::startLoading(const std::filesystem::path& path) {
+    if (loading_) {
+        log_.warning("still loading " + loading_->file.filename().string() + "; open " + path.filename().string() +
+                     " when it is done");
+        return;
+    }
+    Loading loading;
+    loading.file = path;
+    loading.status = std::make_shared<LoadStatus>();
+    loading.startSeconds = glfwGetTime();
+    // The worker gets its own copies: the path, the status it reports into, and the log, which
+    // is thread-safe. The Document comes back through the future (or its exception does).
+    loading.result = std::async(std::launch::async, [path, status = loading.status, &log = log_] {
+        return openDocument(path, log, [status](const LoadProgress& progress) {
+            const std::lock_guard lock(status->mutex);
+            status->progress = progress;
+        });
+    });
+    loading_ = std::move(loading);
+    log_.info("loading " + path.string());
+}
+
+void App::finishLoading() {
+    if (!loading_ || loading_->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    Loading loading = std::move(*loading_);
+    loading_.reset();
     try {
-        renderer_->setScene(scene_);
+        adoptDocument(loading.result.get(), loading.file);
+    } catch (const std::exception& error) {
+        sceneError_ = error.what();
+        log_.error(sceneError_);  // the current document stays
+    }
+    if (std::exchange(recoveryAfterLoad_, false)) offerRecovery();
+}
+
+void App::drawLoadingWindow() {
+    if (!loading_) return;
+    LoadProgress progress;
+    {
+        const std::lock_guard lock(loading_->status->mutex);
+        progress = loading_->status->progress;
+    }
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(420.0f, 0.0f), ImGuiCond_Always);
+    constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
+                                        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize;
+    if (ImGui::Begin("Loading", nullptr, kFlags)) {
+        ImGui::Text("Loading %s", loading_->file.filename().string().c_str());
+        // The stages in order, each counted from 0 to its total: show the stage's own fraction.
+        const float fraction =
+            progress.total > 0 ? static_cast<float>(progress.done) / static_cast<float>(progress.total) : 0.0f;
+        char overlay[96];
+        std::snprintf(overlay, sizeof overlay, "%s %d / %d", progress.stage.empty() ? "starting" : progress.stage.c_str(),
+                      progress.done, progress.total);
+        ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), overlay);
+        ImGui::TextDisabled("%.1f s", glfwGetTime() - loading_->startSeconds);
+    }
+    ImGui::End();
+}
+
+std::string App::adoptDocument(Document loaded, const std::filesystem::path& path) {
+    // The view and tuning stay as the user set them when the new file brings no settings of
+    // its own; openDocument gives defaults then.
+    doc_ = std::move(loaded);
+    try {
+        renderer_->setScene(doc_.scene);
     } catch (const std::exception& error) {
         // The file parsed but the GPU copy failed (e.g. a texture over the driver's limits):
         // fall back to an empty scene rather than render a half-uploaded one.
         sceneError_ = "cannot upload scene '" + path.string() + "': " + error.what();
         log_.error(sceneError_);
-        scene_ = Scene{};
-        renderer_->setScene(scene_);
+        doc_ = Document{};
+        renderer_->setScene(doc_.scene);
         resetCamera();
         updateTitle();
-        return;
+        return sceneError_;
     }
     recent_.add(path);
     sceneError_.clear();
     log_.info("opened scene " + path.string());
     resetCamera();
     updateTitle();
+    return "";
+}
+
+std::string App::saveTo(const std::filesystem::path& target) {
+    // A copy: `target` may be doc_.file itself, which saving updates.
+    const std::filesystem::path path = target;
+    try {
+        saveDocument(doc_, path);
+    } catch (const std::exception& error) {
+        sceneError_ = std::string("Not saved: ") + error.what();
+        log_.error(sceneError_);
+        return error.what();
+    }
+    recent_.add(path);
+    log_.info("saved " + path.string());
+    updateTitle();
+    return "";
+}
+
+void App::saveOrAskForName() {
+    if (doc_.file.empty())
+        mainMenu_.askSaveAs("untitled.gltf");
+    else
+        saveTo(doc_.file);
+}
+
+void App::offerRecovery() {
+    const std::optional<AutosaveInfo> info = autosave_->recoverable();
+    if (!info) return;
+    recoverQuestion_.ask({"Recover autosave",
+                          "The editor did not exit cleanly. Recover the autosave from " + info->timeText + " of " +
+                              displayName(info->documentFile) + "?",
+                          "Recover", "Discard", /*cancellable=*/false});
+}
+
+void App::answerRecovery(Answer answer) {
+    switch (answer) {
+    case Answer::None:
+    case Answer::Cancel: return;  // left as it is: offered again next start
+    case Answer::No: autosave_->discard(); return;
+    case Answer::Yes: {
+        try {
+            Document recovered = autosave_->recover(log_);
+            doc_ = std::move(recovered);
+            renderer_->setScene(doc_.scene);
+            resetCamera();
+            updateTitle();
+            log_.info("recovered the autosave of " + displayName(doc_.file));
+        } catch (const std::exception& error) {
+            sceneError_ = std::string("cannot recover the autosave: ") + error.what();
+            log_.error(sceneError_);
+        }
+        return;
+    }
+    }
+}
+
+void App::handleDroppedFiles() {
+    bool opened = false;
+    for (const std::filesystem::path& path : window_.takeDroppedPaths()) {
+        if (!isSceneFile(path)) {
+            log_.error("cannot open dropped file '" + path.string() + "': only glTF scenes (.gltf, .glb) can be opened");
+        } else if (opened) {
+            log_.warning("dropped several scenes; opened the first, ignored '" + path.string() + "'");
+        } else {
+            opened = true;
+            requestOpen(path);
+        }
+    }
 }
 
 void App::resetCamera() {
@@ -130,26 +354,43 @@ void App::resetCamera() {
                              ? static_cast<float>(size.x) / static_cast<float>(size.y)
                              : static_cast<float>(options_.width) / static_cast<float>(options_.height);
     // The scene's first camera if it has one, else a view framing the whole scene.
-    const int cameraIndex = scene_.cameras.empty() ? -1 : 0;
-    const CameraView view = sceneCameraView(scene_, cameraIndex, aspect);
+    const int cameraIndex = doc_.scene.cameras.empty() ? -1 : 0;
+    const CameraView view = sceneCameraView(doc_.scene, cameraIndex, aspect);
     camera_.setFromView(view);
-    camera_.speed = flySpeedForBounds(scene_.worldBounds());
+    camera_.speed = flySpeedForBounds(doc_.scene.worldBounds());
     znear_ = view.znear;
     zfar_ = view.zfar;
 }
 
 void App::updateTitle() {
-    const std::string name =
-        scene_.sourcePath.empty() ? std::string("no scene") : scene_.sourcePath.filename().string();
-    window_.setTitle("Lit editor - " + name);
+    // "*" marks unsaved changes, as most editors do.
+    const std::string name = doc_.file.empty() && doc_.scene.nodes.empty() ? std::string("no scene")
+                                                                           : displayName(doc_.file);
+    std::string title = "Lit editor - " + name + (doc_.dirty() ? "*" : "");
+    if (title == title_) return;
+    title_ = std::move(title);
+    window_.setTitle(title_);
 }
+
+// ---- frame -------------------------------------------------------------------------------------
 
 int App::run() {
     double previousTime = glfwGetTime();
     double nextShaderCheck = previousTime + kShaderReloadInterval;
     int framesRendered = 0;
-    while (!window_.shouldClose()) {
+    while (!exitCode_) {
         glfwPollEvents();
+        if (window_.shouldClose()) {
+            // The close button: ask first when there are unsaved changes.
+            window_.cancelClose();
+            requestQuit();
+        }
+        if (!scriptMode()) handleDroppedFiles();
+        finishLoading();
+        // Script commands run before the frame so the frame shows their effect.
+        if (scriptMode()) runScriptStep();
+        if (exitCode_) break;
+
         const glm::ivec2 framebuffer = window_.framebufferSize();
         if (framebuffer.x <= 0 || framebuffer.y <= 0 || window_.iconified()) {
             // Minimised: nothing to draw into. Sleep until the window system has news instead
@@ -165,17 +406,22 @@ int App::run() {
 
         imgui_->beginFrame();
         updateCamera(std::min(static_cast<float>(frameSeconds), kMaxCameraStep));
+        updatePlayback(frameSeconds);
+        handleViewportMouse(currentView());
         const glm::ivec2 renderSize =
             glm::max(glm::ivec2(glm::round(glm::vec2(framebuffer) * std::clamp(viewport_.renderScale, 0.1f, 1.0f))),
                      glm::ivec2(1));
         drawUi(renderSize);
 
-        settings_.width = renderSize.x;
-        settings_.height = renderSize.y;
-        const float aspect = static_cast<float>(framebuffer.x) / static_cast<float>(framebuffer.y);
-        renderer_->render(scene_, camera_.view(aspect, znear_, zfar_), settings_);
+        doc_.settings.width = renderSize.x;
+        doc_.settings.height = renderSize.y;
+        const CameraView view = currentView();
+        updateOverlay(view);
+        renderer_->render(doc_.scene, view, doc_.settings);
+        takeScreenshots(/*withUi=*/false, framebuffer);
         presentViewport(framebuffer);
         imgui_->render();
+        takeScreenshots(/*withUi=*/true, framebuffer);
         ++framesRendered;
 
         if (options_.screenshot && framesRendered >= options_.frames) {
@@ -183,13 +429,17 @@ int App::run() {
             return 0;
         }
         window_.swapBuffers();
+        updateTitle();
+        if (autosave_) autosave_->maybeSave(doc_, now);  // glfwGetTime: a steady clock
 
         if (now >= nextShaderCheck) {
             renderer_->reloadChangedShaders();
             nextShaderCheck = now + kShaderReloadInterval;
         }
     }
-    return 0;
+    // A normal quit: the autosave copy is not needed at the next start.
+    if (autosave_ && *exitCode_ == 0) autosave_->cleanExit();
+    return *exitCode_;
 }
 
 void App::updateCamera(float dtSeconds) {
@@ -221,8 +471,9 @@ void App::updateCamera(float dtSeconds) {
         lastCursor_ = cursor;
     }
 
-    // Keys move the camera unless a text field or a dragged widget has the keyboard.
-    if (!io.WantCaptureKeyboard) {
+    // Keys move the camera unless a text field or a dragged widget has the keyboard, or Ctrl
+    // makes them shortcuts (Ctrl+S saves rather than backing away).
+    if (!io.WantCaptureKeyboard && !io.KeyCtrl) {
         auto held = [window](int key) { return glfwGetKey(window, key) == GLFW_PRESS ? 1.0f : 0.0f; };
         input.move.x = held(GLFW_KEY_D) - held(GLFW_KEY_A);
         input.move.y = held(GLFW_KEY_E) - held(GLFW_KEY_Q);
@@ -233,9 +484,28 @@ void App::updateCamera(float dtSeconds) {
     applyFlyInput(camera_, input, dtSeconds);
 }
 
+void App::handleShortcuts() {
+    // Only when no text field, dragged widget or modal dialog has the keyboard.
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureKeyboard || unsavedQuestion_.asking() || recoverQuestion_.asking()) return;
+    // ImGui 1.86 indexes keys by the backend's codes (GLFW's); repeats are not wanted here.
+    auto pressed = [](int key) { return ImGui::IsKeyPressed(key, /*repeat=*/false); };
+    if (io.KeyCtrl && pressed(GLFW_KEY_S)) saveOrAskForName();
+    if (io.KeyCtrl && !io.KeyShift && pressed(GLFW_KEY_Z)) doc_.undo();
+    if (io.KeyCtrl && ((io.KeyShift && pressed(GLFW_KEY_Z)) || pressed(GLFW_KEY_Y))) doc_.redo();
+    if (pressed(GLFW_KEY_F12)) requestTimestampedScreenshot(/*withUi=*/false, 0);
+    if (pressed(GLFW_KEY_F2)) visible_.stats = !visible_.stats;
+    if (pressed(GLFW_KEY_SPACE) && !doc_.cameraPath.empty()) {
+        if (playback_.playing) playback_.playing = false; else playback_.play(doc_.cameraPath);
+    }
+    if (pressed(GLFW_KEY_ESCAPE)) doc_.selectedNode = -1;
+}
+
 void App::drawUi(glm::ivec2 renderSize) {
     float menuHeight = 0.0f;
-    const MenuRequests menu = mainMenu_.draw(visible_, recent_, scene_.sourcePath, menuHeight);
+    const MenuContext menuContext{recent_, doc_.file.empty() ? std::filesystem::path("untitled.gltf") : doc_.file,
+                                  doc_.undoLabel(), doc_.redoLabel()};
+    const MenuRequests menu = mainMenu_.draw(visible_, menuContext, menuHeight);
 
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const bool resized = display.x != lastDisplaySize_.x || display.y != lastDisplaySize_.y;
@@ -245,18 +515,50 @@ void App::drawUi(glm::ivec2 renderSize) {
     const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(),
                                                   resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
 
-    if (visible_.stats)
+    if (visible_.hierarchy) hierarchyPanel_.draw(doc_, layout.hierarchy, &visible_.hierarchy);
+    if (visible_.inspector) inspectorPanel_.draw(doc_, layout.inspector, &visible_.inspector);
+    if (visible_.stats) {
+        const VoxelVolume* voxels = renderer_->voxels();
         drawStatsOverlay(frameTimer_, renderer_->profiler(), renderer_->stats(), renderSize, imgui_->monoFont(),
-                         layout.stats, &visible_.stats);
-    if (visible_.renderSettings)
-        drawRenderSettingsPanel(settings_, viewport_, static_cast<int>(scene_.lights.size()), layout.renderSettings,
-                                &visible_.renderSettings);
+                         layout.stats, &visible_.stats, voxels ? voxels->memoryReport() : std::string());
+    }
+    if (visible_.renderSettings) {
+        const RenderSettingsRequests requests =
+            drawRenderSettingsPanel(doc_.settings, viewport_, static_cast<int>(doc_.scene.lights.size()),
+                                    layout.renderSettings, &visible_.renderSettings);
+        // The renderer redoes the voxels when the geometry revision moves; nothing is edited.
+        if (requests.revoxelize) ++doc_.scene.geometryRevision;
+        if (!viewport_.coneDirections) coneSurface_.reset();
+    }
+    if (visible_.timeline) timelinePanel_.draw(doc_, playback_, camera_, layout.timeline, &visible_.timeline);
     if (visible_.camera && drawCameraPanel(camera_, layout.camera, &visible_.camera).resetToSceneCamera) resetCamera();
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
     drawErrorPanel(sceneError_, display, menuHeight);
+    drawLoadingWindow();
+    // An edit opened by a widget that never reported its deactivation (a colour picker popup)
+    // ends once nothing is being dragged or typed into.
+    if (doc_.editOpen() && !ImGui::IsAnyItemActive() && !gizmo_.active()) doc_.endEdit();
 
-    if (menu.quit) window_.requestClose();
-    if (menu.open) openScene(*menu.open);
+    handleShortcuts();
+    answerUnsavedChanges(unsavedQuestion_.draw());
+    answerRecovery(recoverQuestion_.draw());
+
+    if (menu.undo) doc_.undo();
+    if (menu.redo) doc_.redo();
+    if (menu.save) saveOrAskForName();
+    if (menu.saveAs) {
+        const bool saved = saveTo(*menu.saveAs).empty();
+        if (std::exchange(saveAsForPending_, false)) {
+            if (saved) carryOut(std::exchange(pending_, {}));
+            else pending_ = {};
+        }
+    }
+    if (menu.saveAsCancelled && std::exchange(saveAsForPending_, false)) pending_ = {};
+    if (menu.screenshot) requestTimestampedScreenshot(/*withUi=*/false, 0);
+    // One frame later, once the menu that was clicked has closed.
+    if (menu.screenshotWithUi) requestTimestampedScreenshot(/*withUi=*/true, 1);
+    if (menu.quit) requestQuit();
+    if (menu.open) requestOpen(*menu.open);
 }
 
 void App::presentViewport(glm::ivec2 framebufferSize) {
@@ -298,6 +600,244 @@ void App::saveScreenshot(glm::ivec2 framebufferSize, const std::filesystem::path
     for (std::size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
     writePng(path, framebufferSize.x, framebufferSize.y, rgba);
     std::printf("lit-editor: wrote %s (%d x %d)\n", path.string().c_str(), framebufferSize.x, framebufferSize.y);
+}
+
+void App::saveViewportScreenshot(const std::filesystem::path& path) {
+    // The renderer's own output at its render size: no UI, no stretching to the window.
+    const int width = doc_.settings.width;
+    const int height = doc_.settings.height;
+    std::vector<std::uint8_t> rgba = renderer_->readOutputRgba8();
+    if (rgba.size() != static_cast<std::size_t>(width) * height * 4)
+        throw std::runtime_error("the renderer has no output to save yet");
+    for (std::size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
+    writePng(path, width, height, rgba);  // bottom-up rows, flipped by writePng
+    std::printf("lit-editor: wrote %s (%d x %d)\n", path.string().c_str(), width, height);
+}
+
+void App::requestTimestampedScreenshot(bool withUi, int delayFrames) {
+    const std::filesystem::path file =
+        timestampedScreenshotPath(kScreenshotFolder, withUi, std::chrono::system_clock::now());
+    screenshots_.push_back({file, withUi, delayFrames, std::nullopt});
+}
+
+void App::takeScreenshots(bool withUi, glm::ivec2 framebufferSize) {
+    for (auto it = screenshots_.begin(); it != screenshots_.end();) {
+        if (it->withUi != withUi) {
+            ++it;
+            continue;
+        }
+        if (it->delayFrames > 0) {
+            --it->delayFrames;
+            ++it;
+            continue;
+        }
+        const ScreenshotRequest request = std::move(*it);
+        it = screenshots_.erase(it);
+        try {
+            createParentFolder(request.file);
+            if (withUi)
+                saveScreenshot(framebufferSize, request.file);
+            else
+                saveViewportScreenshot(request.file);
+            if (!request.command) log_.info("saved screenshot " + request.file.string());
+        } catch (const std::exception& error) {
+            const std::string message = "cannot save screenshot '" + request.file.string() + "': " + error.what();
+            if (request.command) {
+                failScript(*request.command, message);
+                return;
+            }
+            sceneError_ = message;
+            log_.error(message);
+        }
+    }
+}
+
+// ---- scripts -----------------------------------------------------------------------------------
+
+void App::runScriptStep() {
+    if (scriptWaitFrames_ > 0) {
+        --scriptWaitFrames_;
+        return;
+    }
+    if (scriptNext_ >= script_.size()) {
+        exitCode_ = 0;  // the end of the script: like quit
+        return;
+    }
+    const ScriptCommand& command = script_[scriptNext_++];
+    const std::string error = runScriptCommand(command);
+    if (!error.empty()) failScript(command, error);
+}
+
+void App::failScript(const ScriptCommand& command, const std::string& message) {
+    std::fprintf(stderr, "lit-editor: %s\n", scriptErrorAt(command, scriptSource_, message).c_str());
+    exitCode_ = 1;
+}
+
+std::string App::runScriptCommand(const ScriptCommand& command) {
+    const std::string& name = command.name;
+    const std::vector<std::string>& args = command.args;
+    // parseScript has checked the argument counts and the values it can; the checks below are
+    // the ones that need the scene or the editor.
+    auto arg = [&](std::size_t i) -> const std::string& {
+        static const std::string kNone;
+        return i < args.size() ? args[i] : kNone;
+    };
+    if (name == "select") {
+        if (arg(0) == "-") {
+            doc_.selectedNode = -1;
+            return "";
+        }
+        const int node = findNode(doc_.scene, arg(0));
+        if (node < 0) return "no node called '" + arg(0) + "'";
+        doc_.selectedNode = node;
+        return "";
+    }
+    if (name == "set") return setProperty(doc_, arg(0), arg(1));
+    if (name == "setting") return applySetting(doc_.settings, arg(0), arg(1));
+    if (name == "view") {
+        viewport_.coneDirections = arg(0) == kConeDirectionsView;
+        if (viewport_.coneDirections) {
+            doc_.settings.view = View::Final;
+            return "";
+        }
+        coneSurface_.reset();
+        const std::optional<View> view = parseView(arg(0));
+        if (!view) return "unknown view '" + arg(0) + "'";
+        doc_.settings.view = *view;
+        return "";
+    }
+    if (name == "panel") {
+        bool* flag = panelFlag(visible_, arg(0));
+        if (flag == nullptr) return "unknown panel '" + arg(0) + "'";
+        *flag = arg(1) == "on";
+        return "";
+    }
+    if (name == "pick") {
+        float x = 0.0f, y = 0.0f;
+        const auto parse = [](const std::string& text, float& value) {
+            const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+            return ec == std::errc() && end == text.data() + text.size();
+        };
+        if (!parse(arg(0), x) || !parse(arg(1), y)) return "pick: expected window pixels X Y";
+        return pickAt({x, y});
+    }
+    if (name == "screenshot") {
+        screenshots_.push_back({arg(0), arg(1) == "ui" || arg(1).empty(), 0, command});
+        return "";
+    }
+    if (name == "save") {
+        const std::filesystem::path file = args.empty() ? doc_.file : std::filesystem::path(arg(0));
+        if (file.empty()) return "the document has no file yet: give one (save PATH)";
+        return saveTo(file);
+    }
+    if (name == "open") return openScene(arg(0));
+    if (name == "undo") return doc_.undo() ? "" : "nothing to undo";
+    if (name == "redo") return doc_.redo() ? "" : "nothing to redo";
+    if (name == "wait") {
+        int frames = 0;
+        const auto [end, ec] = std::from_chars(arg(0).data(), arg(0).data() + arg(0).size(), frames);
+        if (ec != std::errc() || end != arg(0).data() + arg(0).size() || frames < 1)
+            return "wait: expected a whole number of frames, got '" + arg(0) + "'";
+        scriptWaitFrames_ = frames - 1;  // this frame is the first
+        return "";
+    }
+    if (name == "key" || name == "play" || name == "pause" || name == "time") return runTimelineCommand(command);
+    if (name == "quit") {
+        exitCode_ = 0;
+        return "";
+    }
+    return "unknown command '" + name + "'";
+}
+
+std::string App::runTimelineCommand(const ScriptCommand& command) {
+    return runPathCommand(doc_, playback_, camera_, command.name, command.args);
+}
+
+// ---- viewport interaction ----------------------------------------------------------------------
+
+CameraView App::currentView() const {
+    const glm::ivec2 framebuffer = window_.framebufferSize();
+    const float aspect = framebuffer.x > 0 && framebuffer.y > 0
+                             ? static_cast<float>(framebuffer.x) / static_cast<float>(framebuffer.y)
+                             : 1.0f;
+    return camera_.view(aspect, znear_, zfar_);
+}
+
+void App::updatePlayback(double dtSeconds) {
+    if (!playback_.playing) return;
+    playback_.advance(doc_.cameraPath, dtSeconds);
+    if (!playback_.lookThrough) return;
+    if (const auto pose = doc_.cameraPath.evaluate(playback_.time)) applyPoseToCamera(*pose, camera_);
+}
+
+std::string App::pickAt(glm::vec2 windowPixel) {
+    // Window pixels → the renderer's output, which is the window scaled by the render scale.
+    const glm::vec2 display(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);
+    const glm::vec2 output(static_cast<float>(doc_.settings.width), static_cast<float>(doc_.settings.height));
+    if (display.x <= 0.0f || display.y <= 0.0f || windowPixel.x < 0.0f || windowPixel.y < 0.0f ||
+        windowPixel.x >= display.x || windowPixel.y >= display.y)
+        return "pick: (" + std::to_string(windowPixel.x) + ", " + std::to_string(windowPixel.y) +
+               ") is outside the window";
+    const glm::ivec2 pixel(glm::floor(windowPixel * output / display));
+    if (viewport_.coneDirections) {
+        coneSurface_ = renderer_->surfaceAt(pixel);
+        coneCameraPosition_ = camera_.position;
+        if (!coneSurface_) log_.info("cone directions: no surface under the cursor");
+        return "";
+    }
+    doc_.selectedNode = renderer_->pickNode(pixel);
+    return "";
+}
+
+void App::handleViewportMouse(const CameraView& view) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const glm::vec2 display(io.DisplaySize.x, io.DisplaySize.y);
+    const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
+    const bool selection = doc_.selectedNode >= 0 && doc_.selectedNode < static_cast<int>(doc_.scene.nodes.size());
+    const bool gizmoShown = selection && viewport_.markers && !viewport_.coneDirections;
+
+    if (gizmo_.active()) {
+        if (io.MouseDown[ImGuiMouseButton_Left] && selection) {
+            // The gizmo moves the node's world position; the node stores a translation relative
+            // to its parent.
+            Node& node = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)];
+            const glm::mat4 parentWorld =
+                node.parent >= 0 ? doc_.scene.nodes[static_cast<std::size_t>(node.parent)].world : glm::mat4(1.0f);
+            const glm::vec3 world = gizmo_.drag(view, display, mouse);
+            node.translation = glm::vec3(glm::inverse(parentWorld) * glm::vec4(world, 1.0f));
+            doc_.touched(Change::Transform);
+        } else {
+            gizmo_.end();
+            doc_.endEdit();
+        }
+        return;
+    }
+    hoveredGizmoAxis_ = -1;
+    if (io.WantCaptureMouse || looking_) return;
+    if (gizmoShown)
+        hoveredGizmoAxis_ = TranslateGizmo::hitTest(view, display, nodeWorldPosition(doc_.scene, doc_.selectedNode), mouse);
+    if (!ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
+    if (hoveredGizmoAxis_ >= 0 &&
+        gizmo_.begin(hoveredGizmoAxis_, view, display, nodeWorldPosition(doc_.scene, doc_.selectedNode), mouse)) {
+        const Node& node = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)];
+        doc_.beginEdit("Move " + (node.name.empty() ? std::string("node") : node.name));
+        return;
+    }
+    pickAt(mouse);
+}
+
+void App::updateOverlay(const CameraView& view) {
+    OverlayOptions options;
+    options.markers = viewport_.markers;
+    options.gizmo = viewport_.markers && !viewport_.coneDirections;
+    options.cameraPath = viewport_.markers;
+    options.hoveredGizmoAxis = gizmo_.active() ? gizmo_.axis() : hoveredGizmoAxis_;
+    if (viewport_.coneDirections && coneSurface_) {
+        options.coneSurface = coneSurface_;
+        options.coneCameraPosition = coneCameraPosition_;
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    renderer_->setOverlay(buildViewportOverlay(doc_, view, {io.DisplaySize.x, io.DisplaySize.y}, options));
 }
 
 }  // namespace lit::editor

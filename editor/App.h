@@ -1,29 +1,40 @@
 #pragma once
-// The editor application: owns the window, the UI, the renderer, the scene and the settings,
-// and runs the frame loop. Panels edit the Scene / RenderSettings / editor state they are
-// given; the App turns their requests (open a file, quit, reset the camera) into actions and is
-// the only place that talks to GL directly (presenting the renderer's output to the window).
+// The editor application: owns the window, the UI, the renderer and the Document (scene, camera
+// path, settings, selection, undo), and runs the frame loop. Panels edit the Document and the
+// editor state they are given; the App turns their requests (open, save, quit, screenshot)
+// into actions, asks before unsaved changes are lost, runs --script files, and is the only
+// place that talks to GL directly (presenting the renderer's output to the window).
 
 #include <filesystem>
+#include <future>
+#include <mutex>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "Document.h"
+#include "DocumentIO.h"
 #include "EditorOptions.h"
 #include "EditorState.h"
 #include "FrameTimer.h"
 #include "ImGuiLayer.h"
 #include "Log.h"
 #include "RecentFiles.h"
-#include "RenderSettings.h"
 #include "Renderer.h"
+#include "PathEditing.h"
+#include "Script.h"
+#include "TranslateGizmo.h"
 #include "Window.h"
 #include "gl/Objects.h"
+#include "panels/Dialogs.h"
+#include "panels/HierarchyPanel.h"
+#include "panels/InspectorPanel.h"
 #include "panels/LogPanel.h"
 #include "panels/MainMenu.h"
+#include "panels/TimelinePanel.h"
 #include "scene/CameraView.h"
-#include "scene/Scene.h"
 
 namespace lit::editor {
 
@@ -31,35 +42,101 @@ class App {
 public:
     // Loads the scene, opens the window, checks the GL context and builds the renderer.
     // Throws (with a message meant for the user) when any of that fails; a scene that cannot
-    // be loaded is fatal only in screenshot mode, otherwise the editor starts empty and says why.
-    explicit App(const EditorOptions& options);
+    // be loaded is fatal only in screenshot and script mode, otherwise the editor starts empty
+    // and says why. `script`: the parsed --script file (Script.h), run one command per frame.
+    explicit App(const EditorOptions& options, std::vector<ScriptCommand> script = {});
     ~App();
     App(const App&) = delete;
     App& operator=(const App&) = delete;
 
-    // Runs until the window closes (or, in screenshot mode, until the capture is written).
-    // Returns the process exit code.
+    // Runs until the user quits (or, in screenshot mode, until the capture is written; in script
+    // mode, until the script ends, quits or fails). Returns the process exit code: 0, or 1 when
+    // a script command failed.
     int run();
 
 private:
-    Scene loadInitialScene();
-    void openScene(const std::filesystem::path& path);
+    // An action that waits for the answer to "save changes?".
+    struct PendingAction {
+        enum class Kind { None, Quit, Open } kind = Kind::None;
+        std::filesystem::path file;  // Open: the scene to open
+    };
+    struct ScreenshotRequest {
+        std::filesystem::path file;
+        bool withUi = false;
+        int delayFrames = 0;                   // frames to let pass first (a menu must close)
+        std::optional<ScriptCommand> command;  // the script line that asked, for error messages
+    };
+
+    bool scriptMode() const { return options_.script.has_value(); }
+    Document loadInitialDocument();
+
+    // ---- files -----------------------------------------------------------------------------
+    // Open/quit as the user asks: with unsaved changes (and not in a script) ask first.
+    void requestOpen(const std::filesystem::path& path);
+    void requestQuit();
+    void askAboutUnsavedChanges(PendingAction action);
+    void answerUnsavedChanges(Answer answer);
+    void carryOut(PendingAction action);
+    // Open without asking. Returns "" or the error, which is also shown and logged; on error
+    // the current document stays. Interactively the file loads on a worker thread (startLoading)
+    // while the UI shows its progress; scripts and screenshots load at once.
+    std::string openScene(const std::filesystem::path& path);
+    void startLoading(const std::filesystem::path& path);
+    // Once the worker is done: takes its document (or shows its error).
+    void finishLoading();
+    void drawLoadingWindow();
+    // Makes `loaded` the document: uploads it (falls back to an empty one when that fails).
+    std::string adoptDocument(Document loaded, const std::filesystem::path& path);
+    // Save to `path` (Save As) or the document's file. Returns "" or the error, which is also
+    // shown and logged; a failed save changes nothing on disk or in the document.
+    std::string saveTo(const std::filesystem::path& path);
+    void saveOrAskForName();
+    void offerRecovery();
+    void answerRecovery(Answer answer);
+    void handleDroppedFiles();
     void resetCamera();
     void updateTitle();
 
+    // ---- frame -----------------------------------------------------------------------------
     void updateCamera(float dtSeconds);
+    // Left mouse in the viewport: grab and drag the gizmo, else select what is under the cursor
+    // (or, with the cone directions view, pick the pixel whose cones to draw).
+    void handleViewportMouse(const CameraView& view);
+    // Window pixel (top-left origin) → the renderer's last frame: select its node, or sample its
+    // surface for the cone directions view. Returns "" or why nothing could be picked.
+    std::string pickAt(glm::vec2 windowPixel);
+    // Plays the camera path and, when looking through it, moves the fly camera along.
+    void updatePlayback(double dtSeconds);
+    // Markers, gizmo, path, selection and cones for this frame, handed to the renderer.
+    void updateOverlay(const CameraView& view);
+    CameraView currentView() const;
+    void handleShortcuts();
     void drawUi(glm::ivec2 renderSize);
     void presentViewport(glm::ivec2 framebufferSize);
     void saveScreenshot(glm::ivec2 framebufferSize, const std::filesystem::path& path);
+    void saveViewportScreenshot(const std::filesystem::path& path);
+    // Writes the requests due this frame (`withUi` ones after the UI is drawn); returns false
+    // when a script's screenshot failed (the App is then exiting with status 1).
+    void takeScreenshots(bool withUi, glm::ivec2 framebufferSize);
+    void requestTimestampedScreenshot(bool withUi, int delayFrames);
+
+    // ---- scripts ---------------------------------------------------------------------------
+    // Runs the next command unless waiting; sets exitCode_ at the end, on quit or on an error.
+    void runScriptStep();
+    // Returns "" or the error message for the command's line.
+    std::string runScriptCommand(const ScriptCommand& command);
+    // The camera path family (key add|delete|select|time|update, play, pause, time T): the
+    // timeline's actions. Returns "" or an error message.
+    std::string runTimelineCommand(const ScriptCommand& command);
+    void failScript(const ScriptCommand& command, const std::string& message);
 
     EditorOptions options_;
-    // Declared before the window: the scene is loaded before there is one (loadInitialScene()
-    // may use only the members above scene_), and the log outlives the GL context whose debug
+    // Declared before the window: the scene is loaded before there is one (loadInitialDocument()
+    // may use only the members above doc_), and the log outlives the GL context whose debug
     // callback writes into it.
     Log log_;
     std::string sceneError_;  // shown in the UI until dismissed
-    Scene scene_;
-    RenderSettings settings_;
+    Document doc_;
 
     // GL context holders, in creation order (members are destroyed in reverse, so GL objects go
     // before ImGui, ImGui before the window, the window before glfwTerminate).
@@ -77,8 +154,48 @@ private:
     float zfar_ = 100.0f;  // metres
     RecentFiles recent_;
     MainMenu mainMenu_;
+    HierarchyPanel hierarchyPanel_;
+    InspectorPanel inspectorPanel_;
+    TimelinePanel timelinePanel_;
+    PathPlayback playback_;
+    TranslateGizmo gizmo_;
+    int hoveredGizmoAxis_ = -1;
+    // Cone directions view: the surface last clicked and where the camera was then.
+    std::optional<SurfaceSample> coneSurface_;
+    glm::vec3 coneCameraPosition_{0.0f};
     LogPanel logPanel_;
     FrameTimer frameTimer_;
+    QuestionDialog unsavedQuestion_;
+    QuestionDialog recoverQuestion_;
+    PendingAction pending_;
+    bool saveAsForPending_ = false;  // the Save As dialog was opened by "Save" in the question
+    // Periodic copies of the document, offered after a crash. Not in script mode: a script must
+    // neither be interrupted by an old crash's offer nor leave copies behind.
+    std::optional<Autosave> autosave_;
+    std::vector<ScreenshotRequest> screenshots_;
+
+    // Script state.
+    std::vector<ScriptCommand> script_;
+    std::string scriptSource_;  // the script file, as error messages name it
+    std::size_t scriptNext_ = 0;
+    int scriptWaitFrames_ = 0;  // frames still to let pass before the next command
+
+    // A scene loading on a worker thread; its progress is written there and read by the UI.
+    struct LoadStatus {
+        std::mutex mutex;
+        LoadProgress progress;
+    };
+    struct Loading {
+        std::filesystem::path file;
+        std::shared_ptr<LoadStatus> status;
+        std::future<Document> result;
+        double startSeconds = 0.0;
+    };
+    std::optional<Loading> loading_;
+    bool recoveryAfterLoad_ = false;  // offer the autosave once the initial scene is in
+
+    std::optional<int> exitCode_;  // set when the loop should end
+    std::string title_;            // the window title last set
 
     // Input and layout bookkeeping.
     bool looking_ = false;             // right mouse drag in progress

@@ -51,6 +51,10 @@ EditorOptions parseEditorOptions(std::span<const std::string_view> args) {
             const std::string_view file = value();
             if (file.empty()) throw OptionsError("--screenshot needs a file name");
             options.screenshot = std::filesystem::path(file);
+        } else if (arg == "--script") {
+            const std::string_view file = value();
+            if (file.empty()) throw OptionsError("--script needs a file name");
+            options.script = std::filesystem::path(file);
         } else if (arg == "--frames") {
             options.frames = parseInt(value(), "--frames");
             if (options.frames < 1 || options.frames > kMaxFrames)
@@ -68,14 +72,20 @@ EditorOptions parseEditorOptions(std::span<const std::string_view> args) {
         }
     }
     if (framesGiven && !options.screenshot) throw OptionsError("--frames only applies with --screenshot");
+    // Both would decide when the editor exits; a script takes its screenshots with "screenshot".
+    if (options.script && options.screenshot)
+        throw OptionsError("--script and --screenshot cannot be combined (use the script's screenshot command)");
     return options;
 }
 
 std::string editorUsage() {
-    return "usage: lit-editor [SCENE.gltf|.glb] [--screenshot FILE.png [--frames N]] [--size WxH]\n"
+    return "usage: lit-editor [SCENE.gltf|.glb] [--screenshot FILE.png [--frames N] | --script FILE] [--size WxH]\n"
            "  SCENE              glTF scene to open (default: the built-in Cornell box)\n"
            "  --screenshot FILE  render N frames, save the window (UI included) as a PNG, exit\n"
            "  --frames N         frames to render before the screenshot (default 8)\n"
+           "  --script FILE      run the editor actions in FILE, one per frame, then exit\n"
+           "                     (select, set, setting, view, panel, screenshot, save, undo, redo,\n"
+           "                     wait N, quit; see editor/Script.h)\n"
            "  --size WxH         window size in screen coordinates (default 1280x720)\n"
            "Controls: right mouse drag to look, WASD to move, Q/E down/up, Shift to go faster,\n"
            "mouse wheel to change the speed.\n";

@@ -1,6 +1,6 @@
 #pragma once
 // lit-editor's command line:
-//   lit-editor [SCENE] [--screenshot FILE.png [--frames N]] [--size WxH]
+//   lit-editor [SCENE] [--screenshot FILE.png [--frames N] | --script FILE] [--size WxH]
 // Parsed into plain data so it can be tested without a window.
 
 #include <filesystem>
@@ -20,6 +20,8 @@ struct EditorOptions {
     // More than Profiler::kFramesInFlight by default, so the stats overlay in the capture
     // already shows GPU timings (they arrive that many frames late).
     int frames = 8;
+    // Script mode: run the editor actions in this file (Script.h), one per frame, then exit.
+    std::optional<std::filesystem::path> script;
     int width = 1280;  // window size, screen coordinates
     int height = 720;
     bool help = false;

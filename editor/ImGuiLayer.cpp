@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "Window.h"
+
 namespace lit::editor {
 
 namespace {
@@ -61,14 +63,15 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
         ImGui::DestroyContext();
         throw std::runtime_error("cannot initialise Dear ImGui's OpenGL 3 backend");
     }
-    // Ours wraps ImGui's key callback; ImGui_ImplGlfw_Shutdown puts the original back.
-    glfwSetWindowUserPointer(window, this);
+    // Ours wraps ImGui's key callback; ImGui_ImplGlfw_Shutdown puts the original back. The
+    // window's GLFW user pointer is the Window's; it keeps ours.
+    Window::setCallbackUser(window, this);
     glfwSetKeyCallback(window, &ImGuiLayer::keyCallback);
 }
 
 void ImGuiLayer::keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods) {
     ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
-    auto* self = static_cast<ImGuiLayer*>(glfwGetWindowUserPointer(window));
+    auto* self = static_cast<ImGuiLayer*>(Window::callbackUser(window));
     if (self != nullptr && action == GLFW_PRESS && key >= 0 && key < kKeyCount)
         self->pressedSinceFrame_[static_cast<std::size_t>(key)] = true;
 }
@@ -90,7 +93,7 @@ void ImGuiLayer::latchShortKeyPresses() {
 }
 
 ImGuiLayer::~ImGuiLayer() {
-    glfwSetWindowUserPointer(window_, nullptr);
+    Window::setCallbackUser(window_, nullptr);
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

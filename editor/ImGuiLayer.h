@@ -11,7 +11,7 @@ namespace lit::editor {
 class ImGuiLayer {
 public:
     // Needs the window's GL context current. Installs ImGui's GLFW callbacks (chaining any
-    // installed before) and takes the window's user pointer for its key callback.
+    // installed before) and keeps itself in Window::setCallbackUser for its key callback.
     explicit ImGuiLayer(GLFWwindow* window);
     ~ImGuiLayer();
     ImGuiLayer(const ImGuiLayer&) = delete;

@@ -2,6 +2,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <utility>
+
 namespace lit::editor {
 
 namespace {
@@ -37,13 +39,37 @@ Window::Window(int width, int height, const char* title, bool debugContext, bool
     if (!window_) throw WindowError("cannot create an OpenGL 4.5 core window: " + lastGlfwError());
     glfwMakeContextCurrent(window_.get());
     glfwSwapInterval(vsync ? 1 : 0);
+    glfwSetWindowUserPointer(window_.get(), this);
+    glfwSetDropCallback(window_.get(), &Window::dropCallback);
 }
 
-Window::~Window() = default;
+Window::~Window() {
+    if (window_) glfwSetWindowUserPointer(window_.get(), nullptr);
+}
+
+void Window::dropCallback(GLFWwindow* window, int count, const char** paths) {
+    auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+    if (self == nullptr) return;
+    for (int i = 0; i < count; ++i)
+        if (paths[i] != nullptr) self->dropped_.emplace_back(paths[i]);
+}
+
+std::vector<std::filesystem::path> Window::takeDroppedPaths() { return std::exchange(dropped_, {}); }
+
+void Window::setCallbackUser(GLFWwindow* window, void* user) {
+    if (auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window))) self->callbackUser_ = user;
+}
+
+void* Window::callbackUser(GLFWwindow* window) {
+    const auto* self = static_cast<const Window*>(glfwGetWindowUserPointer(window));
+    return self != nullptr ? self->callbackUser_ : nullptr;
+}
 
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_.get()) == GLFW_TRUE; }
 
 void Window::requestClose() { glfwSetWindowShouldClose(window_.get(), GLFW_TRUE); }
+
+void Window::cancelClose() { glfwSetWindowShouldClose(window_.get(), GLFW_FALSE); }
 
 glm::ivec2 Window::framebufferSize() const {
     glm::ivec2 size{0};

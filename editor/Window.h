@@ -1,10 +1,12 @@
 #pragma once
 // The editor's GLFW window with its OpenGL 4.5 core context (current on the creating thread).
 
+#include <filesystem>
 #include <glm/glm.hpp>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -37,6 +39,9 @@ public:
     GLFWwindow* handle() const { return window_.get(); }
     bool shouldClose() const;
     void requestClose();
+    // Takes back a close request (the window's close button) so the App can ask about unsaved
+    // changes first.
+    void cancelClose();
     glm::ivec2 framebufferSize() const;  // pixels; 0×0 while minimized on some platforms
     // X11 keeps reporting the old framebuffer size while a window is iconified, so the size
     // alone does not tell whether there is anything to draw.
@@ -44,11 +49,24 @@ public:
     void setTitle(const std::string& title);
     void swapBuffers();
 
+    // Files dropped onto the window since the last call, in the order they arrived.
+    std::vector<std::filesystem::path> takeDroppedPaths();
+
+    // GLFW has one user pointer per window, and callbacks have no other way to find their
+    // object. Window keeps it (its drop callback needs it) and holds one more pointer here for
+    // the UI layer's key callback.
+    static void setCallbackUser(GLFWwindow* window, void* user);
+    static void* callbackUser(GLFWwindow* window);
+
 private:
     struct Destroy {
         void operator()(GLFWwindow* window) const;
     };
+    static void dropCallback(GLFWwindow* window, int count, const char** paths);
+
     std::unique_ptr<GLFWwindow, Destroy> window_;
+    std::vector<std::filesystem::path> dropped_;
+    void* callbackUser_ = nullptr;
 };
 
 }  // namespace lit::editor

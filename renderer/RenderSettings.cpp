@@ -4,12 +4,13 @@
 
 #include <array>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 namespace lit {
 
 namespace {
-constexpr std::array<std::pair<View, std::string_view>, 10> kViewNames{{
+constexpr std::array<std::pair<View, std::string_view>, 11> kViewNames{{
     {View::Final, "final"},
     {View::DirectDiffuse, "direct-diffuse"},
     {View::IndirectDiffuse, "indirect-diffuse"},
@@ -20,7 +21,19 @@ constexpr std::array<std::pair<View, std::string_view>, 10> kViewNames{{
     {View::ShadowMap, "shadow-map"},
     {View::Voxels, "voxels"},
     {View::RoughnessMetalness, "roughness-metalness"},
+    {View::VoxelSlice, "voxel-slice"},
 }};
+
+constexpr std::array<std::pair<VoxelChannel, std::string_view>, 5> kVoxelChannelNames{{
+    {VoxelChannel::Radiance, "radiance"},
+    {VoxelChannel::Albedo, "albedo"},
+    {VoxelChannel::Normal, "normal"},
+    {VoxelChannel::Opacity, "opacity"},
+    {VoxelChannel::Emission, "emission"},
+}};
+
+// Text of an enum field in JSON, and back (overloads picked by the field's type).
+std::optional<VoxelChannel> parseEnum(std::string_view text, VoxelChannel*) { return parseVoxelChannel(text); }
 
 // One table drives both directions so a new field cannot be saved but not loaded.
 template <typename Visitor>
@@ -51,6 +64,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("voxelSlice", s.voxelSlice);
     visit("voxelSliceAxis", s.voxelSliceAxis);
     visit("voxelMip", s.voxelMip);
+    visit("voxelChannel", s.voxelChannel);
     visit("frustumCulling", s.frustumCulling);
 }
 }  // namespace
@@ -67,10 +81,27 @@ std::optional<View> parseView(std::string_view text) {
     return std::nullopt;
 }
 
+std::string_view toString(VoxelChannel channel) {
+    for (const auto& [c, name] : kVoxelChannelNames)
+        if (c == channel) return name;
+    return "radiance";
+}
+
+std::optional<VoxelChannel> parseVoxelChannel(std::string_view text) {
+    for (const auto& [c, name] : kVoxelChannelNames)
+        if (name == text) return c;
+    return std::nullopt;
+}
+
 std::string toJson(const RenderSettings& settings) {
     nlohmann::json j;
     RenderSettings copy = settings;
-    visitFields(copy, [&](const char* key, auto& value) { j[key] = value; });
+    visitFields(copy, [&](const char* key, auto& value) {
+        if constexpr (std::is_enum_v<std::decay_t<decltype(value)>>)
+            j[key] = std::string(toString(value));
+        else
+            j[key] = value;
+    });
     j["view"] = std::string(toString(settings.view));
     return j.dump(2);
 }
@@ -88,11 +119,17 @@ RenderSettings renderSettingsFromJson(std::string_view text, const RenderSetting
         using T = std::decay_t<decltype(value)>;
         auto it = j.find(key);
         if (it == j.end()) return;
-        const bool ok = std::is_same_v<T, bool> ? it->is_boolean()
-                        : std::is_integral_v<T> ? it->is_number_integer()
-                                                : it->is_number();
-        if (!ok) throw std::runtime_error(std::string("render settings: '") + key + "' has the wrong type");
-        value = it->template get<T>();
+        if constexpr (std::is_enum_v<T>) {
+            const auto parsed = it->is_string() ? parseEnum(it->template get<std::string>(), &value) : std::nullopt;
+            if (!parsed) throw std::runtime_error(std::string("render settings: '") + key + "' is not a known name");
+            value = *parsed;
+        } else {
+            const bool ok = std::is_same_v<T, bool> ? it->is_boolean()
+                            : std::is_integral_v<T> ? it->is_number_integer()
+                                                    : it->is_number();
+            if (!ok) throw std::runtime_error(std::string("render settings: '") + key + "' has the wrong type");
+            value = it->template get<T>();
+        }
     });
     if (auto it = j.find("view"); it != j.end()) {
         const auto view = it->is_string() ? parseView(it->get<std::string>()) : std::nullopt;

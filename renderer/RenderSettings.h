@@ -18,12 +18,27 @@ enum class View {
     Albedo,
     Normal,
     ShadowMap,
-    Voxels,
+    Voxels,              // the voxel volume ray-marched as cubes (one mip level, one channel)
     RoughnessMetalness,
+    VoxelSlice,          // one slice of the voxel volume filling the viewport (axis, position, mip, channel)
 };
+// Voxels and VoxelSlice write display values in [0,1] to the HDR image too (radiance and emission
+// already tone-mapped with the exposure), so tests read what the user sees.
 
 std::string_view toString(View view);
-std::optional<View> parseView(std::string_view text);  // "final", "direct-diffuse", ...
+std::optional<View> parseView(std::string_view text);  // "final", "direct-diffuse", ..., "voxel-slice"
+
+// What the voxel debug views show of each voxel.
+enum class VoxelChannel {
+    Radiance,  // outgoing radiance after injection, tone-mapped with the exposure
+    Albedo,    // base colour as voxelized
+    Normal,    // averaged normal as 0.5 + 0.5·n
+    Opacity,   // radiance volume alpha as grey
+    Emission,  // emitted radiance, tone-mapped with the exposure
+};
+
+std::string_view toString(VoxelChannel channel);
+std::optional<VoxelChannel> parseVoxelChannel(std::string_view text);  // "radiance", "albedo", ...
 
 struct RenderSettings {
     // Output
@@ -57,9 +72,10 @@ struct RenderSettings {
     float diffuseConeAperture = 1.0471975511965976f;  // radians (60°)
     float maxTraceDistance = 1.0f;    // fraction of the voxel volume's side
     float coneStepScale = 0.5f;       // step = scale × cone diameter
-    float voxelSlice = 0.5f;          // debug view: slice position (0..1)
-    int voxelSliceAxis = 2;           // debug view: 0 X, 1 Y, 2 Z
-    int voxelMip = 0;                 // debug view: mip level
+    float voxelSlice = 0.5f;          // slice view: slice position along the axis (0..1)
+    int voxelSliceAxis = 2;           // slice view: 0 X, 1 Y, 2 Z
+    int voxelMip = 0;                 // voxel views: mip level (clamped to the volume's levels)
+    VoxelChannel voxelChannel = VoxelChannel::Radiance;  // voxel views: what each voxel shows
 
     // Performance
     bool frustumCulling = true;  // G-buffer and shadow views draw only items their frustum may see
@@ -67,8 +83,8 @@ struct RenderSettings {
     bool operator==(const RenderSettings&) const = default;
 };
 
-// JSON in/out with the field names above; unknown keys are ignored, bad values throw
-// std::runtime_error naming the key.
+// JSON in/out with the field names above (enums by their text names); unknown keys are ignored,
+// bad values throw std::runtime_error naming the key.
 std::string toJson(const RenderSettings& settings);
 RenderSettings renderSettingsFromJson(std::string_view json, const RenderSettings& defaults = {});
 

@@ -7,6 +7,8 @@
 #include "passes/FrameUniforms.h"
 #include "passes/InjectPass.h"
 #include "passes/MipmapPass.h"
+#include "passes/OverlayPass.h"
+#include "passes/VoxelDebugPass.h"
 #include "passes/VoxelVolume.h"
 #include "passes/VoxelizePass.h"
 #include "passes/GBufferPass.h"
@@ -46,6 +48,7 @@ int toShaderView(View view) {
         case View::ShadowMap: return LIT_VIEW_SHADOW_MAP;
         case View::Voxels: return LIT_VIEW_VOXELS;
         case View::RoughnessMetalness: return LIT_VIEW_ROUGHNESS_METALNESS;
+        case View::VoxelSlice: return LIT_VIEW_VOXEL_SLICE;
     }
     return LIT_VIEW_FINAL;
 }
@@ -87,10 +90,14 @@ struct Renderer::Impl {
           inject(shaderRoot),
           mipmap(shaderRoot),
           coneTrace(shaderRoot),
+          overlayPass(shaderRoot),
+          voxelDebug(shaderRoot),
           frameUniforms("frame uniforms", sizeof(gpu::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT),
           lightBuffer("lights", sizeof(gpu::GpuLight) * LIT_MAX_LIGHTS, nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
-    std::vector<Pass*> passes() { return {&shadow, &gbuffer, &direct, &post, &voxelize, &inject, &mipmap, &coneTrace}; }
+    std::vector<Pass*> passes() {
+        return {&shadow, &gbuffer, &direct, &post, &voxelize, &inject, &mipmap, &coneTrace, &overlayPass, &voxelDebug};
+    }
 
     // Voxelize / inject / mipmaps when what they depend on changed. Returns whether it ran.
     void updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty, DrawCounters& counters);
@@ -108,6 +115,12 @@ struct Renderer::Impl {
     InjectPass inject;
     MipmapPass mipmap;
     ConeTracePass coneTrace;
+    OverlayPass overlayPass;
+    VoxelDebugPass voxelDebug;
+    ViewportOverlay overlay;
+    // What picking needs of the last frame: its camera (to unproject depth) and voxel volume.
+    std::optional<gpu::FrameUniforms> lastFrame;
+    float lastVoxelSize = 0.0f, lastVolumeSide = 0.0f;  // m; 0 when that frame had no GI
     VoxelVolume voxels;
     LightingTerms terms;
     gl::Buffer frameUniforms;
@@ -130,6 +143,7 @@ struct Renderer::Impl {
     VoxelKey voxelKey;
     float injectedRadianceRange = 0.0f;
     bool voxelsValid = false;
+    std::uint64_t voxelGeneration = 0;  // counts voxelizations (the voxel debug views cache by it)
     // The GI update waiting for its GPU timings to be logged: what ran, why, in which frame.
     std::string pendingGiReason;
     std::uint64_t pendingGiFrame = 0;
@@ -157,6 +171,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         voxelize.execute(scene, *gpuScene, voxels, counters);
         voxelKey = key;
         voxelsValid = true;
+        ++voxelGeneration;
     }
     if (injectDirty) {
         shadow.bindMaps();
@@ -219,6 +234,7 @@ void Renderer::setScene(const Scene& scene) {
     impl_->boundsRevision = ~0ull;
     impl_->shadowKey = {};
     impl_->voxelsValid = false;
+    impl_->lastFrame.reset();  // the G-buffer's node IDs belong to the previous scene
 }
 
 void Renderer::render(const Scene& scene, const CameraView& camera, const RenderSettings& settings) {
@@ -306,10 +322,26 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
         int shadowLayer = -1;
         for (const ShadowView& v : r.lights.shadows2d)
             if (v.light == settings.shadowDebugLight) shadowLayer = v.layer;
-        if (giWanted) r.voxels.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-        r.post.composite(settings, r.shadow.maps2d(), shadowLayer, giWanted ? r.voxels.mipCount() : 0);
+        if (isVoxelView(settings.view)) {
+            r.post.bindHdrTarget();
+            r.voxelDebug.execute(settings, giWanted ? &r.voxels : nullptr, r.voxelGeneration);
+        } else {
+            r.post.composite(settings, r.shadow.maps2d(), shadowLayer);
+        }
         r.post.tonemap(settings);
     }
+    if (!r.overlay.empty()) {
+        Profiler::Scope scope(r.profiler, "overlay");
+        r.frameUniforms.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FRAME);
+        Aabb highlightBounds;  // of the highlighted node's draw items, world space
+        for (const DrawItem& item : r.gpuScene->items())
+            if (item.node == r.overlay.highlightNode)
+                highlightBounds.extend(item.localBounds.transformed(scene.nodes[static_cast<std::size_t>(item.node)].world));
+        r.overlayPass.execute(r.overlay, r.post.output(), r.gbuffer, highlightBounds, frame.viewProjection);
+    }
+    r.lastFrame = frame;
+    r.lastVoxelSize = giWanted ? r.voxels.voxelSize() : 0.0f;
+    r.lastVolumeSide = giWanted ? r.voxels.side() : 0.0f;
     r.profiler.endFrame();
     r.stats.drawCalls = counters.drawCalls;
 }
@@ -333,6 +365,57 @@ std::vector<float> Renderer::readHdrRgb() const {
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(t.id(), 0, GL_RGB, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(float)), pixels.data());
     return pixels;
+}
+
+void Renderer::setOverlay(ViewportOverlay overlay) { impl_->overlay = std::move(overlay); }
+const ViewportOverlay& Renderer::overlay() const { return impl_->overlay; }
+
+namespace {
+// Reads texel `pixel` (top-left origin) of a G-buffer target into `out`; false when out of range.
+bool readTexel(const gl::Texture& texture, glm::ivec2 pixel, GLenum format, GLenum type, GLsizei bytes, void* out) {
+    const int width = texture.desc().width, height = texture.desc().height;
+    if (!texture || pixel.x < 0 || pixel.y < 0 || pixel.x >= width || pixel.y >= height) return false;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureSubImage(texture.id(), 0, pixel.x, height - 1 - pixel.y, 0, 1, 1, 1, format, type, bytes, out);
+    return true;
+}
+}  // namespace
+
+int Renderer::pickNode(glm::ivec2 pixel) const {
+    if (!impl_->lastFrame) return -1;
+    GLuint id = 0;
+    if (!readTexel(impl_->gbuffer.nodeId(), pixel, GL_RED_INTEGER, GL_UNSIGNED_INT, sizeof id, &id)) return -1;
+    return static_cast<int>(id) - 1;
+}
+
+std::optional<SurfaceSample> Renderer::surfaceAt(glm::ivec2 pixel) const {
+    const Impl& r = *impl_;
+    const int node = pickNode(pixel);
+    if (node < 0) return std::nullopt;
+    float depth = 1.0f;
+    glm::vec4 albedo(0.0f), normal(0.0f), material(0.0f);
+    readTexel(r.gbuffer.albedo(), pixel, GL_RGBA, GL_FLOAT, sizeof albedo, &albedo);
+    readTexel(r.gbuffer.depth(), pixel, GL_DEPTH_COMPONENT, GL_FLOAT, sizeof depth, &depth);
+    readTexel(r.gbuffer.normal(), pixel, GL_RGBA, GL_FLOAT, sizeof normal, &normal);
+    readTexel(r.gbuffer.material(), pixel, GL_RGBA, GL_FLOAT, sizeof material, &material);
+    const int width = r.gbuffer.depth().desc().width, height = r.gbuffer.depth().desc().height;
+    const glm::ivec2 glPixel(pixel.x, height - 1 - pixel.y);
+    // As gbuffer.glsl's worldPositionFromDepth at the pixel centre.
+    const glm::vec2 uv = (glm::vec2(glPixel) + 0.5f) / glm::vec2(width, height);
+    const glm::vec4 clip(uv * 2.0f - 1.0f, depth * 2.0f - 1.0f, 1.0f);
+    const glm::vec4 world = r.lastFrame->inverseViewProjection * clip;
+    SurfaceSample s;
+    s.position = glm::vec3(world) / world.w;
+    s.normal = glm::length(glm::vec3(normal)) > 0.0f ? glm::normalize(glm::vec3(normal)) : glm::vec3(0, 1, 0);
+    s.roughness = material.r;
+    s.metalness = material.g;
+    // Zero or not in either encoding (the albedo target is sRGB): as cone_trace.frag.glsl decides.
+    s.diffuse = glm::any(glm::greaterThan(glm::vec3(albedo) * (1.0f - s.metalness), glm::vec3(0.0f)));
+    s.node = node;
+    s.glPixel = glPixel;
+    s.voxelSize = r.lastVoxelSize;
+    s.volumeSide = r.lastVolumeSide;
+    return s;
 }
 
 bool Renderer::reloadChangedShaders() {

@@ -8,6 +8,7 @@
 // image of the chosen view is kept too, for --hdr and the tests.
 
 #include "Log.h"
+#include "Overlay.h"
 #include "Profiler.h"
 #include "RenderSettings.h"
 #include "scene/CameraView.h"
@@ -15,6 +16,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace lit {
@@ -61,6 +63,16 @@ public:
     const gl::Texture& hdrTexture() const;
     std::vector<std::uint8_t> readOutputRgba8() const;  // bottom-up rows, RGBA8
     std::vector<float> readHdrRgb() const;              // bottom-up rows, linear RGB float
+
+    // Viewport overlay drawn by every later render() into the output texture (not the HDR one):
+    // selection outline, depth-tested lines, lines on top. An empty overlay costs nothing.
+    void setOverlay(ViewportOverlay overlay);
+    const ViewportOverlay& overlay() const;
+    // Picking in the last frame. `pixel` is in output-texture pixels with the origin at the TOP
+    // left (as windows report the mouse). Both read one G-buffer texel back (a GPU stall: call on
+    // a click, not every frame).
+    int pickNode(glm::ivec2 pixel) const;  // node index drawn there; -1 for background, out of range or no frame
+    std::optional<SurfaceSample> surfaceAt(glm::ivec2 pixel) const;  // nullopt where pickNode is -1
 
     // Recompiles shaders whose files changed; on error the log says so and the last good
     // program stays. Returns true if anything was reloaded.

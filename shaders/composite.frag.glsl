@@ -2,10 +2,10 @@
 // Composite pass: writes the linear HDR image of the chosen view.
 //   final = L_DD + L_ID + L_DS + L_IS (the terms that are switched on)
 // Data views (albedo, normal, roughness/metalness, shadow map) write display values in [0,1]
-// and set uDataView so the tone mapper shows them as they are.
+// and set uDataView so the tone mapper shows them as they are. The voxel views are drawn by
+// VoxelDebugPass instead.
 #include "frame.glsl"
 #include "gbuffer.glsl"
-#include "voxel.glsl"
 
 in vec2 vUv;
 layout(location = 0) out vec4 outColor;
@@ -18,33 +18,6 @@ layout(binding = LIT_TEX_DEBUG_INPUT) uniform sampler2DArray debugShadowMap;
 
 uniform ivec4 uTerms;        // which of DD, ID, DS, IS are on (1/0)
 uniform int uShadowLayer;    // layer of the 2D shadow array for the shadow-map view (-1: none)
-uniform int uVoxelMip;       // voxel view: mip level shown (-1: no voxel volume, GI off)
-
-layout(binding = LIT_TEX_VOXEL_RADIANCE) uniform sampler3D voxelRadiance;
-
-// Voxel view: march the camera ray through the radiance volume at one mip level and show the
-// first voxel that is at least half opaque, with its radiance (stored premultiplied by opacity).
-vec3 voxelView(vec2 uv) {
-    if (uVoxelMip < 0) return vec3(0.0);
-    vec4 nearH = frame.inverseViewProjection * vec4(uv * 2.0 - 1.0, -1.0, 1.0);
-    vec4 farH = frame.inverseViewProjection * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
-    vec3 origin = nearH.xyz / nearH.w;
-    vec3 dir = normalize(farH.xyz / farH.w - origin);
-    // Ray/box intersection with the volume cube.
-    vec3 boxMin = voxel.volumeMin.xyz, boxMax = voxel.volumeMin.xyz + voxel.volumeMin.w;
-    vec3 inv = 1.0 / dir;
-    vec3 t0 = (boxMin - origin) * inv, t1 = (boxMax - origin) * inv;
-    float tNear = max(max(min(t0.x, t1.x), min(t0.y, t1.y)), min(t0.z, t1.z));
-    float tFar = min(min(max(t0.x, t1.x), max(t0.y, t1.y)), max(t0.z, t1.z));
-    if (tFar < max(tNear, 0.0)) return vec3(0.0);
-    float level = float(uVoxelMip);
-    float step = voxel.voxelInfo.z * exp2(level) * 0.5;
-    for (float t = max(tNear, 0.0); t < tFar; t += step) {
-        vec4 v = textureLod(voxelRadiance, worldToVolume(origin + dir * t), level);
-        if (v.a >= 0.5) return decodeRadiance(v.rgb / v.a);
-    }
-    return vec3(0.0);
-}
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -72,8 +45,6 @@ void main() {
     } else if (view == LIT_VIEW_ROUGHNESS_METALNESS) {
         float depth = texelFetch(gbufferDepth, pixel, 0).r;
         color = depth < 1.0 ? vec3(texelFetch(gbufferMaterial, pixel, 0).rg, 0.0) : vec3(0.0);
-    } else if (view == LIT_VIEW_VOXELS) {
-        color = voxelView(vUv);
     } else if (view == LIT_VIEW_SHADOW_MAP) {
         // Depth of the chosen light's shadow map, letterboxed into the viewport as a square.
         vec2 size = frame.viewport.xy;

@@ -2,17 +2,13 @@
 // Tone mapping: exposure, then the ACES filmic curve fitted by Narkowicz 2015 ("ACES Filmic Tone
 // Mapping Curve"), written to an sRGB target (the hardware applies the sRGB transfer function).
 #include "frame.glsl"
+#include "tonemap.glsl"
 
 in vec2 vUv;
 layout(location = 0) out vec4 outColor;
 
 layout(binding = LIT_TEX_HDR_INPUT) uniform sampler2D hdrImage;
 uniform int uDataView;  // 1: the input holds display values (albedo, normals...): no tone mapping
-
-vec3 acesFilmic(vec3 x) {
-    const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
-    return clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0, 1.0);
-}
 
 void main() {
     vec3 hdr = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0).rgb;

@@ -9,51 +9,86 @@ namespace lit::editor {
 
 namespace {
 constexpr const char* kOpenPopup = "Open scene";
+constexpr const char* kSaveAsPopup = "Save scene as";
+
+// Centres the next popup and gives it a width that fits a long path.
+void placePathPopup() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(560.0f, display.x * 0.9f), 0.0f), ImGuiCond_Appearing);
 }
 
-MenuRequests MainMenu::draw(PanelVisibility& visible, const RecentFiles& recent,
-                            const std::filesystem::path& currentScene, float& height) {
+bool cancelPressed() {
+    return ImGui::Button("Cancel", ImVec2(100.0f, 0.0f)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+}
+}  // namespace
+
+MenuRequests MainMenu::draw(PanelVisibility& visible, const MenuContext& context, float& height) {
     MenuRequests requests;
     height = 0.0f;
     if (ImGui::BeginMainMenuBar()) {
         if (ImGui::BeginMenu("File")) {
             if (ImGui::MenuItem("Open...")) {
                 openRequested_ = true;
-                pathInput_ = currentScene.string();
+                pathInput_ = context.currentScene.string();
             }
-            if (ImGui::BeginMenu("Open recent", !recent.empty())) {
-                for (const std::filesystem::path& path : recent.paths())
+            if (ImGui::BeginMenu("Open recent", !context.recent.empty())) {
+                for (const std::filesystem::path& path : context.recent.paths())
                     if (ImGui::MenuItem(path.string().c_str())) requests.open = path;
                 ImGui::EndMenu();
             }
             ImGui::Separator();
+            if (ImGui::MenuItem("Save", "Ctrl+S")) requests.save = true;
+            if (ImGui::MenuItem("Save As...")) askSaveAs(context.currentScene);
+            ImGui::Separator();
+            if (ImGui::MenuItem("Screenshot", "F12")) requests.screenshot = true;
+            if (ImGui::MenuItem("Screenshot with UI")) requests.screenshotWithUi = true;
+            ImGui::Separator();
             if (ImGui::MenuItem("Quit")) requests.quit = true;
             ImGui::EndMenu();
         }
+        if (ImGui::BeginMenu("Edit")) {
+            const std::string undo = context.undoLabel.empty() ? "Undo" : "Undo " + context.undoLabel;
+            const std::string redo = context.redoLabel.empty() ? "Redo" : "Redo " + context.redoLabel;
+            if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, !context.undoLabel.empty())) requests.undo = true;
+            if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, !context.redoLabel.empty())) requests.redo = true;
+            ImGui::EndMenu();
+        }
         if (ImGui::BeginMenu("View")) {
-            ImGui::MenuItem("Stats", nullptr, &visible.stats);
+            ImGui::MenuItem("Hierarchy", nullptr, &visible.hierarchy);
+            ImGui::MenuItem("Inspector", nullptr, &visible.inspector);
             ImGui::MenuItem("Render settings", nullptr, &visible.renderSettings);
             ImGui::MenuItem("Camera", nullptr, &visible.camera);
+            ImGui::MenuItem("Timeline", nullptr, &visible.timeline);
             ImGui::MenuItem("Log", nullptr, &visible.log);
+            ImGui::MenuItem("Stats", nullptr, &visible.stats);
             ImGui::EndMenu();
         }
         height = ImGui::GetWindowSize().y;
         ImGui::EndMainMenuBar();
     }
-    // Popups opened from inside a menu live in the menu's ID scope; open it from the top level
-    // so BeginPopupModal below finds it.
+    // Popups opened from inside a menu live in the menu's ID scope; open them from the top level
+    // so BeginPopupModal below finds them.
     if (openRequested_) {
         ImGui::OpenPopup(kOpenPopup);
         openRequested_ = false;
     }
-    drawOpenPopup(recent, requests);
+    if (saveAsRequested_) {
+        ImGui::OpenPopup(kSaveAsPopup);
+        saveAsRequested_ = false;
+    }
+    drawOpenPopup(context.recent, requests);
+    drawSaveAsPopup(requests);
     return requests;
 }
 
+void MainMenu::askSaveAs(const std::filesystem::path& suggestion) {
+    saveAsRequested_ = true;
+    saveAsInput_ = suggestion.string();
+}
+
 void MainMenu::drawOpenPopup(const RecentFiles& recent, MenuRequests& requests) {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(560.0f, display.x * 0.9f), 0.0f), ImGuiCond_Appearing);
+    placePathPopup();
     if (!ImGui::BeginPopupModal(kOpenPopup, nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
 
     ImGui::TextUnformatted("glTF scene (.gltf or .glb):");
@@ -84,8 +119,35 @@ void MainMenu::drawOpenPopup(const RecentFiles& recent, MenuRequests& requests) 
     }
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(100.0f, 0.0f)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
+    if (cancelPressed()) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+void MainMenu::drawSaveAsPopup(MenuRequests& requests) {
+    placePathPopup();
+    if (!ImGui::BeginPopupModal(kSaveAsPopup, nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
+
+    ImGui::TextUnformatted("Save as glTF (.gltf with a .bin beside it, or one .glb):");
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(-1.0f);
+    const bool entered = ImGui::InputText("##path", &saveAsInput_,
+                                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+    const std::filesystem::path path(saveAsInput_);
+    const std::string extension = path.extension().string();
+    const bool validName = extension == ".gltf" || extension == ".glb";
+    if (!saveAsInput_.empty() && !validName) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "The name must end in .gltf or .glb");
+    ImGui::Spacing();
+    ImGui::BeginDisabled(!validName);
+    if ((ImGui::Button("Save", ImVec2(100.0f, 0.0f)) || entered) && validName) {
+        requests.saveAs = path;
         ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (cancelPressed()) {
+        requests.saveAsCancelled = true;
+        ImGui::CloseCurrentPopup();
+    }
     ImGui::EndPopup();
 }
 

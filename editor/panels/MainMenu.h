@@ -1,6 +1,7 @@
 #pragma once
-// The main menu bar: File (Open… with a path field, recent files, Quit) and View (panel
-// toggles). It returns what the user asked for; the App carries it out.
+// The main menu bar: File (Open… with a path field and recent files, Save, Save As…, the two
+// screenshots, Quit), Edit (Undo / Redo with the step's name) and View (panel toggles). It
+// returns what the user asked for; the App carries it out, asking about unsaved changes first.
 
 #include <filesystem>
 #include <optional>
@@ -11,23 +12,42 @@
 
 namespace lit::editor {
 
+// What the menu shows besides the panel flags.
+struct MenuContext {
+    const RecentFiles& recent;
+    std::filesystem::path currentScene;  // pre-fills the Open and Save As path fields
+    std::string undoLabel;               // "" = nothing to undo
+    std::string redoLabel;
+};
+
 struct MenuRequests {
-    std::optional<std::filesystem::path> open;  // scene to load
+    std::optional<std::filesystem::path> open;    // scene to load
+    bool save = false;                            // save to the current file (Save As when none)
+    std::optional<std::filesystem::path> saveAs;  // save to this file
+    bool saveAsCancelled = false;                 // the Save As dialog was closed without saving
+    bool screenshot = false;                      // the viewport alone, to screenshots/
+    bool screenshotWithUi = false;                // the whole window
+    bool undo = false;
+    bool redo = false;
     bool quit = false;
 };
 
 class MainMenu {
 public:
-    // `currentScene` pre-fills the Open dialog's path field. Returns the menu bar's height
-    // through `height` (screen coordinates) so panels can be laid out below it.
-    MenuRequests draw(PanelVisibility& visible, const RecentFiles& recent, const std::filesystem::path& currentScene,
-                      float& height);
+    // Returns the menu bar's height through `height` (screen coordinates) so panels can be laid
+    // out below it.
+    MenuRequests draw(PanelVisibility& visible, const MenuContext& context, float& height);
+    // Opens the Save As dialog (for Save on a document that has no file yet).
+    void askSaveAs(const std::filesystem::path& suggestion);
 
 private:
     void drawOpenPopup(const RecentFiles& recent, MenuRequests& requests);
+    void drawSaveAsPopup(MenuRequests& requests);
 
     std::string pathInput_;       // the Open dialog's text field
     bool openRequested_ = false;  // File > Open… was chosen this frame
+    std::string saveAsInput_;     // the Save As dialog's text field
+    bool saveAsRequested_ = false;
 };
 
 }  // namespace lit::editor

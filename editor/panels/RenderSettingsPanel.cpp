@@ -14,8 +14,12 @@ namespace {
 // Every lit::View, in menu order. Keep in step with the enum in RenderSettings.h.
 constexpr std::array kViews = {
     View::Final,  View::DirectDiffuse, View::IndirectDiffuse, View::DirectSpecular, View::IndirectSpecular,
-    View::Albedo, View::Normal,        View::ShadowMap,       View::Voxels,         View::RoughnessMetalness,
+    View::Albedo, View::Normal,        View::RoughnessMetalness, View::ShadowMap,     View::Voxels,
+    View::VoxelSlice,
 };
+
+constexpr std::array kVoxelChannels = {VoxelChannel::Radiance, VoxelChannel::Albedo, VoxelChannel::Normal,
+                                       VoxelChannel::Opacity, VoxelChannel::Emission};
 
 // A combo over a fixed list of integer choices (texture sizes); returns true on change.
 template <std::size_t N>
@@ -65,6 +69,11 @@ bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
     tooltip("Linear multiplier applied before tone mapping");
     ImGui::SliderFloat("Render scale", &viewport.renderScale, 0.25f, 1.0f, "%.2f");
     tooltip("Render resolution as a fraction of the window (stretched to fit)");
+    ImGui::Checkbox("Markers and gizmo", &viewport.markers);
+    tooltip("Light and camera markers, the camera path and the translate gizmo");
+    ImGui::Checkbox("Cone directions", &viewport.coneDirections);
+    tooltip("Click a pixel in the viewport to draw the cones the cone-trace pass traces from it:\n"
+            "green = the six diffuse cones, pink = the specular cones");
     return changed;
 }
 
@@ -121,26 +130,47 @@ bool drawGlobalIllumination(RenderSettings& s) {
     changed |= ImGui::SliderFloat("Step scale", &s.coneStepScale, 0.1f, 2.0f, "%.2f");
     tooltip("Step along a cone = scale x cone diameter (smaller is slower and smoother)");
     ImGui::EndDisabled();
-    if (s.view == View::Voxels) {
+    if (s.view == View::Voxels || s.view == View::VoxelSlice) {
         ImGui::Separator();
-        ImGui::TextDisabled("Voxel view");
-        changed |= ImGui::SliderFloat("Slice", &s.voxelSlice, 0.0f, 1.0f, "%.3f");
-        constexpr std::array kAxes = {"X", "Y", "Z"};
-        changed |= ImGui::Combo("Slice axis", &s.voxelSliceAxis, kAxes.data(), static_cast<int>(kAxes.size()));
+        ImGui::TextDisabled(s.view == View::Voxels ? "Voxel view (ray-marched)" : "Voxel slice");
+        const std::string channel(toString(s.voxelChannel));
+        if (ImGui::BeginCombo("Channel", channel.c_str())) {
+            for (const VoxelChannel choice : kVoxelChannels) {
+                const std::string name(toString(choice));
+                if (ImGui::Selectable(name.c_str(), choice == s.voxelChannel)) {
+                    changed |= choice != s.voxelChannel;
+                    s.voxelChannel = choice;
+                }
+            }
+            ImGui::EndCombo();
+        }
         const int lastMip = std::max(static_cast<int>(std::log2(std::max(s.voxelResolution, 1))), 0);
         changed |= ImGui::SliderInt("Mip", &s.voxelMip, 0, lastMip);
+        if (s.view == View::VoxelSlice) {
+            constexpr std::array kAxes = {"X", "Y", "Z"};
+            changed |= ImGui::Combo("Slice axis", &s.voxelSliceAxis, kAxes.data(), static_cast<int>(kAxes.size()));
+            // Shown as a voxel index at the chosen mip; stored as a fraction so it survives
+            // resolution changes.
+            const int voxels = std::max(s.voxelResolution >> std::clamp(s.voxelMip, 0, lastMip), 1);
+            int slice = std::clamp(static_cast<int>(s.voxelSlice * static_cast<float>(voxels)), 0, voxels - 1);
+            if (ImGui::SliderInt("Slice", &slice, 0, voxels - 1)) {
+                s.voxelSlice = (static_cast<float>(slice) + 0.5f) / static_cast<float>(voxels);
+                changed = true;
+            }
+        }
     }
     return changed;
 }
 
 }  // namespace
 
-bool drawRenderSettingsPanel(RenderSettings& settings, ViewportSettings& viewport, int lightCount,
-                             const Placement& placement, bool* open) {
+RenderSettingsRequests drawRenderSettingsPanel(RenderSettings& settings, ViewportSettings& viewport, int lightCount,
+                                               const Placement& placement, bool* open) {
     placeNextWindow(placement);
+    RenderSettingsRequests requests;
     if (!ImGui::Begin("Render settings", open)) {
         ImGui::End();
-        return false;
+        return requests;
     }
     // Labels on the right take ~45% of the width; sliders get the rest.
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
@@ -148,7 +178,13 @@ bool drawRenderSettingsPanel(RenderSettings& settings, ViewportSettings& viewpor
     if (ImGui::CollapsingHeader("Terms", ImGuiTreeNodeFlags_DefaultOpen)) changed |= drawTerms(settings);
     if (ImGui::CollapsingHeader("Shadows", ImGuiTreeNodeFlags_DefaultOpen))
         changed |= drawShadows(settings, lightCount);
-    if (ImGui::CollapsingHeader("Global illumination")) changed |= drawGlobalIllumination(settings);
+    if (ImGui::CollapsingHeader("Global illumination", ImGuiTreeNodeFlags_DefaultOpen)) {
+        changed |= drawGlobalIllumination(settings);
+        ImGui::BeginDisabled(!settings.gi);
+        requests.revoxelize = ImGui::Button("Re-voxelize");
+        tooltip("Rebuild the voxel volume and re-inject light now (edits do this by themselves)");
+        ImGui::EndDisabled();
+    }
     changed |= ImGui::Checkbox("Frustum culling", &settings.frustumCulling);
     tooltip("Camera and shadow views draw only what their frustum may see (a BVH over the draw items)");
     ImGui::Separator();
@@ -163,7 +199,8 @@ bool drawRenderSettingsPanel(RenderSettings& settings, ViewportSettings& viewpor
     }
     ImGui::PopItemWidth();
     ImGui::End();
-    return changed;
+    requests.changed = changed;
+    return requests;
 }
 
 }  // namespace lit::editor

@@ -10,7 +10,12 @@ namespace lit::editor {
 
 // Returns true when any field changed this frame. width/height are not shown: the editor sets
 // them from the window.
-bool drawRenderSettingsPanel(RenderSettings& settings, ViewportSettings& viewport, int lightCount,
-                             const Placement& placement, bool* open);
+struct RenderSettingsRequests {
+    bool changed = false;     // any RenderSettings field changed
+    bool revoxelize = false;  // "Re-voxelize" was pressed: rebuild the voxel volume now
+};
+
+RenderSettingsRequests drawRenderSettingsPanel(RenderSettings& settings, ViewportSettings& viewport, int lightCount,
+                                               const Placement& placement, bool* open);
 
 }  // namespace lit::editor

@@ -2,61 +2,170 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
 namespace lit::editor {
 
+namespace {
+
+constexpr float kGraphHeight = 48.0f;  // ImGui units
+constexpr float kBarHeight = 14.0f;
+
+// The GPU cost of a pass to show: this frame's when it ran, else what it cost the last time it
+// ran (greyed in the table), so the bar does not flicker between "voxelize" and nothing.
+struct ShownTiming {
+    const PassTiming* timing = nullptr;
+    bool current = false;
+};
+
+ShownTiming shownTiming(const Profiler& profiler, const PassTiming& pass) {
+    if (pass.ran) return {&pass, true};
+    return {profiler.lastRun(pass.name), false};
+}
+
+void drawFrameGraph(const FrameTimer& timer, float width) {
+    const std::vector<float> history = timer.historyMs();
+    if (history.empty()) return;
+    const float worst = *std::max_element(history.begin(), history.end());
+    // Round the scale up to a readable value so the graph does not rescale every frame.
+    constexpr std::array<float, 10> kScales = {8.0f, 17.0f, 34.0f, 50.0f, 100.0f, 250.0f, 500.0f, 1000.0f, 2500.0f, 10000.0f};
+    float scale = kScales.back();
+    for (float s : kScales)
+        if (worst <= s) {
+            scale = s;
+            break;
+        }
+    char label[64];
+    std::snprintf(label, sizeof label, "0-%.0f ms", static_cast<double>(scale));
+    ImGui::PlotLines("##frame-times", history.data(), static_cast<int>(history.size()), 0, label, 0.0f, scale,
+                     ImVec2(width, kGraphHeight));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Frame time over the last %.0f s (%zu frames); worst %.1f ms", FrameTimer::kHistorySeconds,
+                          history.size(), static_cast<double>(worst));
+}
+
+void drawStackedBar(const Profiler& profiler, float width) {
+    double total = 0.0;
+    for (const PassTiming& pass : profiler.timings()) {
+        const ShownTiming shown = shownTiming(profiler, pass);
+        if (shown.timing && shown.current) total += shown.timing->gpuMs;
+    }
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + kBarHeight), IM_COL32(40, 40, 40, 200));
+    float x = origin.x;
+    const PassTiming* hovered = nullptr;
+    if (total > 0.0) {
+        for (const PassTiming& pass : profiler.timings()) {
+            const ShownTiming shown = shownTiming(profiler, pass);
+            if (!shown.timing || !shown.current || shown.timing->gpuMs <= 0.0) continue;
+            const float w = static_cast<float>(shown.timing->gpuMs / total) * width;
+            const ImVec2 a(x, origin.y), b(x + w, origin.y + kBarHeight);
+            draw->AddRectFilled(a, b, passColor(pass.name));
+            if (ImGui::IsMouseHoveringRect(a, b)) hovered = &pass;
+            x += w;
+        }
+    }
+    ImGui::Dummy(ImVec2(width, kBarHeight));
+    if (hovered && ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s: %.2f ms (%.0f%% of the GPU frame)", hovered->name.c_str(), hovered->gpuMs,
+                          100.0 * hovered->gpuMs / total);
+}
+
+}  // namespace
+
+ImU32 passColor(const std::string& passName) {
+    struct Entry {
+        const char* name;
+        ImU32 color;
+    };
+    static constexpr std::array<Entry, 9> kColors = {{
+        {"shadow", IM_COL32(120, 120, 200, 255)},
+        {"g-buffer", IM_COL32(90, 170, 230, 255)},
+        {"voxelize", IM_COL32(230, 160, 60, 255)},
+        {"inject", IM_COL32(240, 210, 80, 255)},
+        {"mipmap", IM_COL32(200, 120, 60, 255)},
+        {"lighting", IM_COL32(110, 200, 120, 255)},
+        {"cone trace", IM_COL32(220, 90, 90, 255)},
+        {"post", IM_COL32(180, 110, 200, 255)},
+        {"overlay", IM_COL32(160, 160, 160, 255)},
+    }};
+    for (const Entry& entry : kColors)
+        if (passName == entry.name) return entry.color;
+    // Unknown passes: a stable colour from the name.
+    std::size_t hash = std::hash<std::string>{}(passName);
+    return IM_COL32(100 + hash % 130, 100 + (hash >> 8) % 130, 100 + (hash >> 16) % 130, 255);
+}
+
 void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
-                      ImFont* monoFont, const Placement& placement, bool* open) {
+                      ImFont* monoFont, const Placement& placement, bool* open, const std::string& voxelMemory) {
     placeNextWindow(placement);
-    ImGui::SetNextWindowBgAlpha(0.6f);  // an overlay: the image stays visible behind it
+    ImGui::SetNextWindowBgAlpha(0.72f);  // an overlay: the image stays visible behind it
     constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                         ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
                                         ImGuiWindowFlags_NoSavedSettings;
-    if (!ImGui::Begin("Stats", open, kFlags)) {
+    if (!ImGui::Begin("Performance", open, kFlags)) {
         ImGui::End();
         return;
     }
     ImGui::PushFont(monoFont);
-    ImGui::Text("Frame %8.1f ms  %6.1f FPS", timer.averageMs(), timer.fps());
-    ImGui::Text("GPU   %8.1f ms  (all passes)", profiler.totalGpuMs());
+    const float width = std::max(ImGui::CalcTextSize("Draws 000000  Triangles 00000000000").x, 260.0f);
+    ImGui::Text("%6.1f FPS  frame %7.1f ms", timer.fps(), timer.averageMs());
+    ImGui::Text("CPU %7.1f ms  GPU %7.1f ms", profiler.lastCpuFrameMs(), profiler.totalGpuMs());
+    drawFrameGraph(timer, width);
     ImGui::Text("Render %d x %d px", renderSize.x, renderSize.y);
-    ImGui::Text("Draw calls %d   Triangles %zu", stats.drawCalls, stats.triangles);
-    ImGui::Text("Culled views: %d of %d draws submitted, %.3f ms CPU", stats.drawsSubmitted, stats.drawsTotal,
-                stats.cullMs);
+    ImGui::Text("Draws %d  Triangles %zu", stats.drawCalls, stats.triangles);
+    ImGui::Text("Culling: %d of %d draws, %.2f ms", stats.drawsSubmitted, stats.drawsTotal, stats.cullMs);
     constexpr double kMiB = 1024.0 * 1024.0;
-    ImGui::Text("Voxels %.1f MiB%s%s", static_cast<double>(stats.voxelBytes) / kMiB,
-                stats.voxelized ? "  [voxelized]" : "", stats.injected ? "  [injected]" : "");
+    ImGui::Text("Voxels %.1f MiB%s%s", static_cast<double>(stats.voxelBytes) / kMiB, stats.voxelized ? " [voxelized]" : "",
+                stats.injected ? " [injected]" : "");
+    if (!voxelMemory.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", voxelMemory.c_str());
 
     const auto& timings = profiler.timings();
     if (timings.empty()) {
         ImGui::TextDisabled("GPU timings arrive a few frames late");
-    } else if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("Pass");
-        ImGui::TableSetupColumn("GPU ms");
-        ImGui::TableSetupColumn("CPU ms");
-        ImGui::TableHeadersRow();
-        for (const PassTiming& pass : timings) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            // Passes that did not run in that frame (nothing to redo) are greyed out.
-            if (pass.ran) {
-                ImGui::TextUnformatted(pass.name.c_str());
+    } else {
+        drawStackedBar(profiler, width);
+        if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
+            ImGui::TableSetupColumn("Pass");
+            ImGui::TableSetupColumn("GPU ms");
+            ImGui::TableSetupColumn("CPU ms");
+            ImGui::TableHeadersRow();
+            for (const PassTiming& pass : timings) {
+                ImGui::TableNextRow();
                 ImGui::TableNextColumn();
-                ImGui::Text("%8.2f", pass.gpuMs);
-                ImGui::TableNextColumn();
-                ImGui::Text("%7.2f", pass.cpuMs);
-            } else {
+                // A colour swatch ties the row to its segment in the bar.
+                const ImVec2 p = ImGui::GetCursorScreenPos();
+                const float h = ImGui::GetTextLineHeight();
+                ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(p.x, p.y + 2.0f), ImVec2(p.x + h - 4.0f, p.y + h - 2.0f),
+                                                          passColor(pass.name));
+                ImGui::Dummy(ImVec2(h - 2.0f, h));
+                ImGui::SameLine();
                 // Passes that run only when something changed (shadows, voxelize, inject,
                 // mipmap) show, greyed, what they cost the last time they ran.
-                ImGui::TextDisabled("%s", pass.name.c_str());
-                const PassTiming* last = profiler.lastRun(pass.name);
-                ImGui::TableNextColumn();
-                if (last) ImGui::TextDisabled("%8.2f", last->gpuMs); else ImGui::TextDisabled("%8s", "-");
-                ImGui::TableNextColumn();
-                if (last) ImGui::TextDisabled("%7.2f", last->cpuMs); else ImGui::TextDisabled("%7s", "-");
+                const ShownTiming shown = shownTiming(profiler, pass);
+                if (shown.current) {
+                    ImGui::TextUnformatted(pass.name.c_str());
+                    ImGui::TableNextColumn();
+                    ImGui::Text("%8.2f", pass.gpuMs);
+                    ImGui::TableNextColumn();
+                    ImGui::Text("%7.2f", pass.cpuMs);
+                } else {
+                    ImGui::TextDisabled("%s", pass.name.c_str());
+                    ImGui::TableNextColumn();
+                    if (shown.timing) ImGui::TextDisabled("%8.2f", shown.timing->gpuMs); else ImGui::TextDisabled("%8s", "-");
+                    ImGui::TableNextColumn();
+                    if (shown.timing) ImGui::TextDisabled("%7.2f", shown.timing->cpuMs); else ImGui::TextDisabled("%7s", "-");
+                }
             }
+            ImGui::EndTable();
         }
-        ImGui::EndTable();
     }
+    ImGui::TextDisabled("F2 hides this overlay");
     ImGui::PopFont();
     ImGui::End();
 }

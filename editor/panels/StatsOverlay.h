@@ -1,8 +1,10 @@
 #pragma once
-// Frame statistics in the top left corner of the viewport: frame time and FPS, per-pass GPU
-// and CPU times from the Profiler, and what the renderer drew.
+// The performance overlay: FPS, a frame-time graph of the last few seconds, GPU time per pass as
+// a stacked bar and a table, CPU frame time, draw calls, triangles, culling and voxel memory.
+// Drawn semi-transparent in the viewport's corner so it reads over any scene.
 
 #include <glm/glm.hpp>
+#include <string>
 
 #include "FrameTimer.h"
 #include "Profiler.h"
@@ -11,9 +13,13 @@
 
 namespace lit::editor {
 
-// `renderSize`: the renderer's output size in pixels; `monoFont` keeps the columns of numbers
-// aligned. `open` is cleared by the close button.
+// `voxelMemory`: the voxel volume's per-texture report ("" when GI has not run), shown as a
+// tooltip on the voxel memory line.
 void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
-                      ImFont* monoFont, const Placement& placement, bool* open);
+                      ImFont* monoFont, const Placement& placement, bool* open, const std::string& voxelMemory = {});
+
+// The colour a pass has in the stacked bar and the table: fixed per pass name, so a pass keeps
+// its colour when others appear or vanish.
+ImU32 passColor(const std::string& passName);
 
 }  // namespace lit::editor

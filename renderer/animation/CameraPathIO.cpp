@@ -1,5 +1,8 @@
 #include "animation/CameraPathIO.h"
 
+#include "io/AtomicFile.h"
+#include "io/GltfFile.h"
+
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -13,7 +16,6 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
-#include <random>
 #include <set>
 #include <sstream>
 
@@ -614,10 +616,6 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
     return true;
 }
 
-bool keepImageUri(const std::string*, const std::string*, const tinygltf::Image*, bool, std::string*, void*) {
-    return false;  // "not written": tinygltf then keeps the image's uri as it is
-}
-
 std::string lowerExtension(const fs::path& file) {
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -652,39 +650,6 @@ LoadedModel loadModel(const fs::path& file) {
     return loaded;
 }
 
-bool isDataUri(const std::string& uri) { return uri.rfind("data:", 0) == 0; }
-
-std::string base64(const std::vector<unsigned char>& bytes) {
-    static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((bytes.size() + 2) / 3 * 4);
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const std::uint32_t b0 = bytes[i];
-        const std::uint32_t b1 = i + 1 < bytes.size() ? bytes[i + 1] : 0;
-        const std::uint32_t b2 = i + 2 < bytes.size() ? bytes[i + 2] : 0;
-        const std::uint32_t triple = (b0 << 16) | (b1 << 8) | b2;
-        out += kAlphabet[(triple >> 18) & 63];
-        out += kAlphabet[(triple >> 12) & 63];
-        out += i + 1 < bytes.size() ? kAlphabet[(triple >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? kAlphabet[triple & 63] : '=';
-    }
-    return out;
-}
-
-std::string percentDecode(const std::string& text) {
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (text[i] == '%' && i + 2 < text.size() && std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(text[i + 2]))) {
-            out += static_cast<char>(std::stoi(text.substr(i + 1, 2), nullptr, 16));
-            i += 2;
-        } else {
-            out += text[i];
-        }
-    }
-    return out;
-}
-
 std::string slug(const std::string& name) {
     std::string out;
     for (const unsigned char c : name) {
@@ -696,29 +661,6 @@ std::string slug(const std::string& name) {
     while (!out.empty() && out.back() == '_') out.pop_back();
     return out.empty() ? "camera_path" : out;
 }
-
-// A relative path inside the scene's folder (no root, no "..").
-bool staysInFolder(const std::string& uri) {
-    const fs::path path(percentDecode(uri));
-    if (path.empty() || path.is_absolute() || path.has_root_name()) return false;
-    return std::none_of(path.begin(), path.end(), [](const fs::path& part) { return part == ".."; });
-}
-
-// Removes a folder tree when it goes out of scope (the temporary folder of a save).
-class TemporaryFolder {
-public:
-    explicit TemporaryFolder(fs::path path) : path_(std::move(path)) { fs::create_directory(path_); }
-    ~TemporaryFolder() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    TemporaryFolder(const TemporaryFolder&) = delete;
-    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
 
 }  // namespace
 
@@ -741,22 +683,10 @@ CameraPath cameraPathFromJson(std::string_view text) {
 }
 
 void saveCameraPathJson(const fs::path& file, const CameraPath& path) {
-    const std::string text = cameraPathToJson(path);
-    std::error_code ec;
-    if (file.has_parent_path()) fs::create_directories(file.parent_path(), ec);
-    const fs::path temporary = file.string() + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << text;
-        if (!out.flush()) {
-            fs::remove(temporary, ec);
-            throw CameraPathError(file.string() + ": cannot write the file");
-        }
-    }
-    fs::rename(temporary, file, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        throw CameraPathError(file.string() + ": cannot replace the file: " + ec.message());
+    try {
+        writeFileAtomically(file, cameraPathToJson(path));
+    } catch (const std::runtime_error& e) {
+        throw CameraPathError(e.what());  // starts with the file name
     }
 }
 
@@ -941,7 +871,6 @@ void saveCameraPathToGltf(const fs::path& scene, const CameraPath& path, const s
     // A .glb keeps everything in one file (buffer 0 is its BIN chunk, the rest embedded); an
     // embedded .gltf stays embedded; otherwise buffers live in files next to the scene.
     const bool embedBuffers = loaded.binary || allEmbedded;
-    const fs::path folder = scene.has_parent_path() ? scene.parent_path() : fs::path(".");
     if (!embedBuffers) {
         std::set<std::string> used;
         for (const tinygltf::Buffer& b : model.buffers)
@@ -966,40 +895,18 @@ void saveCameraPathToGltf(const fs::path& scene, const CameraPath& path, const s
         if (!image.uri.empty() || image.bufferView >= 0 || image.image.empty()) continue;
         std::string mime = image.mimeType;
         if (mime.empty()) mime = image.image.size() > 3 && image.image[0] == 0x89 ? "image/png" : "image/jpeg";
-        image.uri = "data:" + mime + ";base64," + base64(image.image);
+        image.uri = "data:" + mime + ";base64," + base64Encode(image.image);
     }
 
-    std::random_device random;
-    std::ostringstream suffix;
-    suffix << std::hex << random() << random();
-    const TemporaryFolder temporary(folder / ("." + scene.filename().string() + ".tmp-" + suffix.str()));
-    const fs::path written = temporary.path() / scene.filename();
-    for (const tinygltf::Buffer& b : model.buffers)
-        if (!embedBuffers && fs::path(b.uri).has_parent_path())
-            fs::create_directories(temporary.path() / fs::path(b.uri).parent_path());
-
-    tinygltf::TinyGLTF writer;
-    writer.SetImageWriter(&keepImageUri, nullptr);
-    if (!writer.WriteGltfSceneToFile(&model, written.string(), /*embedImages=*/false, embedBuffers,
-                                     /*prettyPrint=*/true, /*writeBinary=*/loaded.binary))
-        throw CameraPathError(scene.string() + ": tinygltf could not write the file (disk full or no permission?)");
-
-    // Buffers first, the scene file last. Each rename replaces a whole file; only between the
-    // renames can the old scene file meet the new path buffer (its other buffers are unchanged).
-    std::error_code ec;
-    std::vector<fs::path> files;
-    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(temporary.path()))
-        if (entry.is_regular_file() && entry.path() != written) files.push_back(entry.path());
-    for (const fs::path& file : files) {
-        const fs::path destination =
-            folder / fs::path(percentDecode(fs::relative(file, temporary.path()).generic_string()));
-        if (destination.has_parent_path()) fs::create_directories(destination.parent_path(), ec);
-        fs::rename(file, destination, ec);
-        if (ec)
-            throw CameraPathError(scene.string() + ": cannot replace " + destination.string() + ": " + ec.message());
+    // A .glb's extra buffers and an embedded .gltf's buffers are embedded (no uri): see writeGltfModel.
+    if (embedBuffers)
+        for (tinygltf::Buffer& b : model.buffers) b.uri.clear();
+    try {
+        writeGltfModel(std::move(model), scene, loaded.binary);
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        throw CameraPathError(what.starts_with(scene.string() + ": ") ? what : scene.string() + ": " + what);
     }
-    fs::rename(written, scene, ec);
-    if (ec) throw CameraPathError(scene.string() + ": cannot replace the file: " + ec.message());
 }
 
 CameraPath loadCameraPathFromGltf(const fs::path& scene, const std::string& name) {

@@ -43,7 +43,8 @@ inline constexpr const char* kCameraPathExtrasKey = "litCameraPath";   // in the
 // ---- JSON ------------------------------------------------------------------------------------
 std::string cameraPathToJson(const CameraPath& path);  // pretty-printed, ends with a newline
 CameraPath cameraPathFromJson(std::string_view text);  // throws CameraPathError
-// Writes `<file>.tmp` and renames it over `file`; creates the folder. Throws CameraPathError.
+// Writes a temporary beside `file` and renames it over `file` (io/AtomicFile.h); creates the
+// folder. Throws CameraPathError whose message starts with the file name.
 void saveCameraPathJson(const std::filesystem::path& file, const CameraPath& path);
 // Throws CameraPathError whose message starts with the file name.
 CameraPath loadCameraPathJson(const std::filesystem::path& file);
@@ -66,9 +67,9 @@ std::vector<std::string> cameraAnimationNames(const tinygltf::Model& model);
 
 // ---- glTF, files (.gltf or .glb) -------------------------------------------------------------
 // Loads the scene file with tinygltf, writes the animation into it and writes it back with
-// tinygltf's WriteGltfSceneToFile into a temporary folder beside the file, then renames each
-// written file into place (buffers first, the .gltf/.glb last), so a failure leaves the old
-// files intact. A .glb stays one file (extra buffers embedded); a .gltf whose buffers were all
+// writeGltfModel (io/GltfFile.h): every file goes to a temporary beside its target and is
+// renamed into place (buffers first, the .gltf/.glb last), so a failure leaves the old files
+// intact. A .glb stays one file (extra buffers embedded); a .gltf whose buffers were all
 // embedded stays embedded; otherwise the path's buffer is written next to the scene as
 // "<scene>_<name>.bin". Images are kept as they were (not decoded or re-encoded).
 void saveCameraPathToGltf(const std::filesystem::path& scene, const CameraPath& path,

@@ -1,5 +1,7 @@
 #include "image/ImageIO.h"
 
+#include "io/AtomicFile.h"
+
 // The implementation lives in libstb (Debian); only the declarations are included here.
 #include <stb_image_write.h>
 
@@ -7,7 +9,6 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <vector>
 
 namespace lit {
@@ -30,56 +31,53 @@ std::vector<T> rowsInFileOrder(std::span<const T> pixels, std::size_t rowElement
     return out;
 }
 
-void checkInput(const fs::path& path, int width, int height, std::size_t have, int channels) {
+// `what` starts the message: "cannot write out.png" or "cannot encode a PNG".
+void checkInput(const std::string& what, int width, int height, std::size_t have, int channels) {
     if (width <= 0 || height <= 0)
-        throw std::runtime_error("cannot write " + path.string() + ": image size " + std::to_string(width) + "x" +
-                                 std::to_string(height) + " is empty");
+        throw std::runtime_error(what + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                                 " is empty");
     const std::size_t need = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels);
     if (have < need)
-        throw std::runtime_error("cannot write " + path.string() + ": " + std::to_string(have) + " values given for a " +
-                                 std::to_string(width) + "x" + std::to_string(height) + " image that needs " +
-                                 std::to_string(need));
+        throw std::runtime_error(what + ": " + std::to_string(have) + " values given for a " + std::to_string(width) +
+                                 "x" + std::to_string(height) + " image that needs " + std::to_string(need));
 }
 
-// Creates the parent folder, lets `write` fill "<path>.tmp", then renames it over `path`, so a
-// failed write never leaves a truncated image where a good one was.
-template <typename WriteFn>
-void writeAtomically(const fs::path& path, WriteFn write) {
-    std::error_code ec;
-    if (path.has_parent_path()) {
-        fs::create_directories(path.parent_path(), ec);
-        if (ec) throw std::runtime_error("cannot write " + path.string() + ": cannot create folder " +
-                                         path.parent_path().string() + " (" + ec.message() + ")");
-    }
-    const fs::path tmp = fs::path(path.string() + ".tmp");
-    if (!write(tmp.string().c_str())) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error("cannot write " + path.string() + " (stb_image_write failed to write " + tmp.string() + ")");
-    }
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(tmp, ignored);
-        throw std::runtime_error("cannot write " + path.string() + ": rename from " + tmp.string() + " failed (" +
-                                 ec.message() + ")");
-    }
+// stb_image_write's callback: append the encoded bytes to a vector.
+void appendBytes(void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    out->insert(out->end(), bytes, bytes + size);
+}
+
+std::vector<std::uint8_t> encodePngRows(int width, int height, std::span<const std::uint8_t> rgba, bool flip,
+                                        const std::string& what) {
+    checkInput(what, width, height, rgba.size(), 4);
+    const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
+    const std::vector<std::uint8_t> rows = rowsInFileOrder(rgba, rowBytes, height, flip);
+    std::vector<std::uint8_t> png;
+    if (!stbi_write_png_to_func(&appendBytes, &png, width, height, 4, rows.data(), static_cast<int>(rowBytes)))
+        throw std::runtime_error(what + ": stb_image_write could not encode the PNG");
+    return png;
 }
 
 }  // namespace
 
+std::vector<std::uint8_t> encodePng(int width, int height, std::span<const std::uint8_t> rgba, bool flipVertically) {
+    return encodePngRows(width, height, rgba, flipVertically, "cannot encode a PNG");
+}
+
 void writePng(const fs::path& path, int width, int height, std::span<const std::uint8_t> rgba, bool flipVertically) {
-    checkInput(path, width, height, rgba.size(), 4);
-    const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
-    const std::vector<std::uint8_t> rows = rowsInFileOrder(rgba, rowBytes, height, flipVertically);
-    writeAtomically(path, [&](const char* file) {
-        return stbi_write_png(file, width, height, 4, rows.data(), static_cast<int>(rowBytes)) != 0;
-    });
+    writeFileAtomically(path, encodePngRows(width, height, rgba, flipVertically, "cannot write " + path.string()));
 }
 
 void writeHdr(const fs::path& path, int width, int height, std::span<const float> rgb, bool flipVertically) {
-    checkInput(path, width, height, rgb.size(), 3);
+    const std::string what = "cannot write " + path.string();
+    checkInput(what, width, height, rgb.size(), 3);
     const std::vector<float> rows = rowsInFileOrder(rgb, static_cast<std::size_t>(width) * 3, height, flipVertically);
-    writeAtomically(path, [&](const char* file) { return stbi_write_hdr(file, width, height, 3, rows.data()) != 0; });
+    std::vector<std::uint8_t> hdr;
+    if (!stbi_write_hdr_to_func(&appendBytes, &hdr, width, height, 3, rows.data()))
+        throw std::runtime_error(what + ": stb_image_write could not encode the HDR image");
+    writeFileAtomically(path, hdr);
 }
 
 }  // namespace lit

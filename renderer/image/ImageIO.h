@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <vector>
 
 namespace lit {
 
@@ -14,7 +15,12 @@ void writePng(const std::filesystem::path& path, int width, int height, std::spa
 void writeHdr(const std::filesystem::path& path, int width, int height, std::span<const float> rgb,
               bool flipVertically = true);
 
-// Files are written to "<path>.tmp" first and renamed, so a failed write never leaves a
-// truncated image where a good one was.
+// Files are written to a temporary beside `path` first and renamed (io/AtomicFile.h), so a
+// failed write never leaves a truncated image where a good one was.
+
+// 8-bit RGBA → PNG bytes in memory (for images embedded in a glTF buffer). Throws
+// std::runtime_error when the size is empty or `rgba` holds too few values.
+std::vector<std::uint8_t> encodePng(int width, int height, std::span<const std::uint8_t> rgba,
+                                    bool flipVertically = true);
 
 }  // namespace lit

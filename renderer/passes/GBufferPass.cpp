@@ -18,15 +18,18 @@ void GBufferPass::resize(int width, int height) {
     normal_ = gl::Texture("gbuffer normal", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
     material_ = gl::Texture("gbuffer material", {GL_TEXTURE_2D, GL_RGBA8, width, height, 1, 1});
     emissive_ = gl::Texture("gbuffer emissive", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
+    nodeId_ = gl::Texture("gbuffer node id", {GL_TEXTURE_2D, GL_R32UI, width, height, 1, 1});
     depth_ = gl::Texture("gbuffer depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, 1});
-    for (const gl::Texture* t : {&albedo_, &normal_, &material_, &emissive_, &depth_}) t->setFilter(GL_NEAREST, GL_NEAREST);
+    for (const gl::Texture* t : {&albedo_, &normal_, &material_, &emissive_, &nodeId_, &depth_})
+        t->setFilter(GL_NEAREST, GL_NEAREST);
     framebuffer_ = gl::Framebuffer("gbuffer");
     framebuffer_.attach(GL_COLOR_ATTACHMENT0, albedo_);
     framebuffer_.attach(GL_COLOR_ATTACHMENT1, normal_);
     framebuffer_.attach(GL_COLOR_ATTACHMENT2, material_);
     framebuffer_.attach(GL_COLOR_ATTACHMENT3, emissive_);
+    framebuffer_.attach(GL_COLOR_ATTACHMENT4, nodeId_);
     framebuffer_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    framebuffer_.setDrawBuffers(4);
+    framebuffer_.setDrawBuffers(5);
     framebuffer_.checkComplete("gbuffer");
 }
 
@@ -36,6 +39,8 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
     glViewport(0, 0, width_, height_);
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+    const GLuint background = 0;
+    glClearNamedFramebufferuiv(framebuffer_.id(), GL_COLOR, 4, &background);
     const float one = 1.0f;
     glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
@@ -46,10 +51,19 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
     glEnable(GL_FRAMEBUFFER_SRGB);
     program_.use();
     gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
-    if (visibleItems)
-        gpuScene.drawList(scene, program_, GpuScene::Bind::Everything, counters, *visibleItems);
-    else
-        gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters);
+    // Items are drawn one by one (as GpuScene::drawList does) to give each its node ID.
+    const std::vector<DrawItem>& items = gpuScene.items();
+    const auto drawOne = [&](const DrawItem& item) {
+        glProgramUniform1ui(program_.id(), LIT_LOC_NODE_ID, static_cast<GLuint>(item.node + 1));
+        gpuScene.drawItem(scene, item, program_, GpuScene::Bind::Everything, counters);
+    };
+    gpuScene.bindGeometry();
+    if (visibleItems) {
+        for (const std::uint32_t index : *visibleItems)
+            if (index < items.size()) drawOne(items[index]);
+    } else {
+        for (const DrawItem& item : items) drawOne(item);
+    }
     glDisable(GL_FRAMEBUFFER_SRGB);
 }
 

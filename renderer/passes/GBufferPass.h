@@ -1,7 +1,8 @@
 #pragma once
 // G-buffer pass: rasterizes the scene once from the camera and stores per-pixel surface data.
 // Targets: albedo (SRGB8_A8: base colour + occlusion), normal (RGBA16F world normal),
-// material (RGBA8: roughness, metalness), emissive (RGBA16F radiance), depth (32F).
+// material (RGBA8: roughness, metalness), emissive (RGBA16F radiance), node ID (R32UI: index of
+// the scene node drawn there + 1, 0 = background; for picking and the selection outline), depth (32F).
 
 #include "passes/Pass.h"
 
@@ -27,11 +28,15 @@ public:
     void bindTargets() const;
 
     const gl::Texture& depth() const { return depth_; }
+    const gl::Texture& albedo() const { return albedo_; }
+    const gl::Texture& normal() const { return normal_; }
+    const gl::Texture& material() const { return material_; }
+    const gl::Texture& nodeId() const { return nodeId_; }
     std::vector<gl::Program*> programs() override { return {&program_}; }
 
 private:
     gl::Program program_;
-    gl::Texture albedo_, normal_, material_, emissive_, depth_;
+    gl::Texture albedo_, normal_, material_, emissive_, nodeId_, depth_;
     gl::Framebuffer framebuffer_;
     int width_ = 0, height_ = 0;
 };

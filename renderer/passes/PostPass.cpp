@@ -2,13 +2,11 @@
 
 #include <shared.h>
 
-#include <algorithm>
-
 namespace lit {
 
 bool isDataView(View view) {
     return view == View::Albedo || view == View::Normal || view == View::RoughnessMetalness ||
-           view == View::ShadowMap;
+           view == View::ShadowMap || view == View::Voxels || view == View::VoxelSlice;
 }
 
 PostPass::PostPass(const std::filesystem::path& shaderRoot)
@@ -40,17 +38,19 @@ void PostPass::resize(int width, int height) {
     outputFramebuffer_.checkComplete("output");
 }
 
-void PostPass::composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer,
-                         int voxelMipLevels) {
+void PostPass::bindHdrTarget() const {
     hdrFramebuffer_.bind();
     glViewport(0, 0, width_, height_);
+}
+
+void PostPass::composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer) {
+    bindHdrTarget();
     glDisable(GL_DEPTH_TEST);
     composite_.use();
     glProgramUniform4i(composite_.id(), composite_.location("uTerms"), settings.directDiffuse,
                        settings.gi && settings.indirectDiffuse, settings.directSpecular,
                        settings.gi && settings.indirectSpecular);
     composite_.set("uShadowLayer", shadowLayer);
-    composite_.set("uVoxelMip", voxelMipLevels > 0 ? std::clamp(settings.voxelMip, 0, voxelMipLevels - 1) : -1);
     shadowMaps.bind(LIT_TEX_DEBUG_INPUT);
     plainSampler_.bind(LIT_TEX_DEBUG_INPUT);
     triangle_.draw();

@@ -12,12 +12,13 @@ public:
     explicit PostPass(const std::filesystem::path& shaderRoot);
 
     void resize(int width, int height);
-    // Writes the HDR image of settings.view. Expects G-buffer, terms and frame UBO bound.
-    // `shadowLayer` is the 2D shadow-array layer the shadow-map view shows (-1 for none);
-    // `voxelMipLevels` the voxel volume's mip count (0 when there is none: GI off). The voxel
-    // view expects the radiance volume bound to LIT_TEX_VOXEL_RADIANCE and the voxel UBO.
-    void composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer,
-                   int voxelMipLevels);
+    // Writes the HDR image of settings.view (any but the voxel views, see VoxelDebugPass).
+    // Expects G-buffer, terms and frame UBO bound. `shadowLayer` is the 2D shadow-array layer the
+    // shadow-map view shows (-1 for none).
+    void composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer);
+    // Binds the HDR image as the render target with its viewport, for passes that write a view
+    // in place of the composite (VoxelDebugPass).
+    void bindHdrTarget() const;
     // Tone maps the HDR image into the sRGB output.
     void tonemap(const RenderSettings& settings);
 
@@ -34,6 +35,7 @@ private:
     int width_ = 0, height_ = 0;
 };
 
+// Views whose HDR image already holds display values in [0,1] (the tone mapper only clamps).
 bool isDataView(View view);
 
 }  // namespace lit

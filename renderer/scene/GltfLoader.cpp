@@ -9,7 +9,8 @@
 //   missing TANGENTs are always computed (not only for normal-mapped materials), so every
 //   vertex carries a valid tangent frame. A file's TANGENTs are ignored when its NORMALs are
 //   missing (glTF 2.0 §3.7.2.1).
-// - Images are decoded by stb_image to RGBA8 on up to hardware_concurrency threads. An image that
+// - Images are decoded by stb_image to RGBA8 on up to hardware_concurrency threads (or
+//   GltfLoadOptions::decodeThreads); progress is reported on the calling thread. An image that
 //   is missing or cannot be decoded becomes 1×1 white with a warning, and materials that used it
 //   as a normal map drop the normal map (normalTexture = -1) so they fall back to vertex normals.
 // - Only mode TRIANGLES is imported; other primitive modes are skipped with a warning.
@@ -30,14 +31,17 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <future>
+#include <condition_variable>
+#include <exception>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/gtx/matrix_decompose.hpp>
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
@@ -178,13 +182,17 @@ bool keepEncodedImage(tinygltf::Image* image, const int imageIndex, std::string*
 
 class Loader {
 public:
-    Loader(const fs::path& path, const tinygltf::Model& model, Log& log) : path_(path), model_(model), log_(log) {}
+    Loader(const fs::path& path, const tinygltf::Model& model, Log& log, const GltfLoadOptions& options)
+        : path_(path), model_(model), log_(log), options_(options) {}
 
     Scene run();
 
 private:
     [[noreturn]] void fail(const std::string& problem) const { throw SceneLoadError(path_.string() + ": " + problem); }
     void warn(const std::string& problem) const { log_.warning(path_.filename().string() + ": " + problem); }
+    void report(const char* stage, std::size_t done, std::size_t total) const {
+        if (options_.progress) options_.progress({stage, static_cast<int>(done), static_cast<int>(total)});
+    }
 
     // A validated view of an accessor's elements.
     struct AccessorData {
@@ -217,6 +225,7 @@ private:
     const fs::path& path_;
     const tinygltf::Model& model_;
     Log& log_;
+    const GltfLoadOptions& options_;
 };
 
 std::string describeNode(const tinygltf::Model& model, std::size_t index) {
@@ -662,6 +671,7 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
 
 void Loader::loadMeshes(Scene& scene) const {
     scene.meshes.reserve(model_.meshes.size());
+    report("meshes", 0, model_.meshes.size());
     for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
         const tinygltf::Mesh& in = model_.meshes[m];
         Mesh mesh;
@@ -689,6 +699,7 @@ void Loader::loadMeshes(Scene& scene) const {
             mesh.primitives.push_back(std::move(out));
         }
         scene.meshes.push_back(std::move(mesh));
+        report("meshes", m + 1, model_.meshes.size());
     }
 }
 
@@ -810,17 +821,54 @@ DecodedImage decodeImage(const std::vector<unsigned char>& encoded) {
 void Loader::loadImages(Scene& scene) const {
     const std::size_t count = model_.images.size();
     std::vector<DecodedImage> decoded(count);
-    // Decode on a few worker threads pulling image indices from a shared counter (Sponza has 69
-    // 1024² JPEGs; decoding dominates its load time).
-    const std::size_t workers = std::min<std::size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
-    std::atomic<std::size_t> next{0};
-    const auto work = [&] {
-        for (std::size_t i = next++; i < count; i = next++) decoded[i] = decodeImage(model_.images[i].image);
-    };
-    std::vector<std::future<void>> tasks;
-    for (std::size_t w = 1; w < workers; ++w) tasks.push_back(std::async(std::launch::async, work));
-    work();                               // the calling thread works too
-    for (auto& task : tasks) task.get();  // rethrows a worker's exception (e.g. std::bad_alloc)
+    report("images", 0, count);
+    const std::size_t threads = std::min<std::size_t>(
+        count, options_.decodeThreads > 0 ? static_cast<std::size_t>(options_.decodeThreads)
+                                          : std::max(1u, std::thread::hardware_concurrency()));
+    if (threads <= 1) {
+        for (std::size_t i = 0; i < count; ++i) {
+            decoded[i] = decodeImage(model_.images[i].image);
+            report("images", i + 1, count);
+        }
+    } else {
+        // Workers pull image indices from a shared counter (Sponza has 69 1024² JPEGs; decoding
+        // dominates its load time) and each writes only its own slot, so the result does not
+        // depend on the thread count. The calling thread only waits and reports progress, so the
+        // callback runs on it.
+        std::atomic<std::size_t> next{0};
+        std::mutex mutex;
+        std::condition_variable imageDone;
+        std::size_t finished = 0;
+        std::exception_ptr error;  // the first worker exception (std::bad_alloc), rethrown here
+        const auto work = [&] {
+            for (std::size_t i = next++; i < count; i = next++) {
+                try {
+                    decoded[i] = decodeImage(model_.images[i].image);
+                } catch (...) {
+                    const std::lock_guard lock(mutex);
+                    if (!error) error = std::current_exception();
+                }
+                {
+                    const std::lock_guard lock(mutex);
+                    ++finished;
+                }
+                imageDone.notify_one();
+            }
+        };
+        {
+            std::vector<std::jthread> workers;
+            for (std::size_t w = 0; w < threads; ++w) workers.emplace_back(work);
+            std::unique_lock lock(mutex);
+            for (std::size_t reported = 0; reported < count;) {
+                imageDone.wait(lock, [&] { return finished != reported; });
+                reported = finished;
+                lock.unlock();
+                report("images", reported, count);
+                lock.lock();
+            }
+        }  // joins the workers
+        if (error) std::rethrow_exception(error);
+    }
 
     // How materials use each image: colour slots are sRGB; normal maps need care on failure.
     std::vector<std::uint8_t> usedAsColour(count, 0), usedAsData(count, 0);
@@ -898,6 +946,9 @@ void Loader::loadLights(Scene& scene) const {
         if (in.color.size() == 3) out.color = glm::vec3(in.color[0], in.color[1], in.color[2]);
         out.intensity = static_cast<float>(in.intensity);
         out.range = static_cast<float>(in.range);
+        // Lit's own flag (scene/GltfWriter.cpp writes it); glTF has no shadow switch.
+        if (in.extras.Has("litCastsShadow") && in.extras.Get("litCastsShadow").IsBool())
+            out.castsShadow = in.extras.Get("litCastsShadow").Get<bool>();
         scene.lights.push_back(std::move(out));
     }
 }
@@ -932,9 +983,11 @@ Scene Loader::run() {
     loadMaterials(scene);
     loadTextures(scene);
     loadImages(scene);
+    report("scene", 0, 1);
     loadLights(scene);
     loadCameras(scene);
     scene.updateWorldTransforms();
+    report("scene", 1, 1);
     return scene;
 }
 
@@ -949,8 +1002,9 @@ std::vector<std::string> lines(const std::string& text) {
 
 }  // namespace
 
-Scene loadGltf(const std::filesystem::path& path, Log& log) {
+Scene loadGltf(const std::filesystem::path& path, Log& log, const GltfLoadOptions& options) {
     const auto start = std::chrono::steady_clock::now();
+    if (options.progress) options.progress({"file", 0, 1});
     const Container container = detectContainer(path);
 
     tinygltf::Model model;
@@ -978,7 +1032,8 @@ Scene loadGltf(const std::filesystem::path& path, Log& log) {
         throw SceneLoadError(message);
     }
 
-    Scene scene = Loader(path, model, log).run();
+    if (options.progress) options.progress({"file", 1, 1});
+    Scene scene = Loader(path, model, log, options).run();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::ostringstream summary;
     summary << "loaded " << file << ": " << scene.nodes.size() << " nodes, " << scene.meshes.size() << " meshes, "
@@ -987,6 +1042,40 @@ Scene loadGltf(const std::filesystem::path& path, Log& log) {
             << " cameras in " << static_cast<long long>(ms + 0.5) << " ms";
     log.info(summary.str());
     return scene;
+}
+
+SceneSummary summarize(const Scene& scene) {
+    SceneSummary s;
+    s.name = !scene.sourcePath.empty() ? scene.sourcePath.filename().string() : scene.name;
+    s.nodes = scene.nodes.size();
+    s.meshes = scene.meshes.size();
+    for (const Mesh& mesh : scene.meshes)
+        for (const Primitive& p : mesh.primitives) {
+            ++s.primitives;
+            s.triangles += p.indices.size() / 3;
+            s.vertices += p.vertices.size();
+            s.vertexBytes += p.vertices.size() * sizeof(Vertex);
+            s.indexBytes += p.indices.size() * sizeof(std::uint32_t);
+        }
+    s.materials = scene.materials.size();
+    s.textures = scene.textures.size();
+    s.images = scene.images.size();
+    for (const Image& image : scene.images) s.pixelBytes += image.rgba.size();
+    s.lights = scene.lights.size();
+    s.cameras = scene.cameras.size();
+    return s;
+}
+
+std::string toString(const SceneSummary& summary) {
+    const auto count = [](std::size_t n, const char* one, const char* many) {
+        const std::string number = n >= 10000 ? std::to_string((n + 500) / 1000) + "k" : std::to_string(n);
+        return number + " " + (n == 1 ? one : many);
+    };
+    char megabytes[32];
+    std::snprintf(megabytes, sizeof megabytes, "%.0f MB", static_cast<double>(summary.cpuBytes()) / 1e6);
+    return summary.name + ": " + count(summary.meshes, "mesh", "meshes") + ", " +
+           count(summary.triangles, "triangle", "triangles") + ", " +
+           count(summary.textures, "texture", "textures") + ", " + megabytes;
 }
 
 }  // namespace lit

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <stdexcept>
 #include <string>
 
 namespace lit {
@@ -53,32 +54,53 @@ gpu::GpuMaterial toGpu(const Material& m) {
 
 }  // namespace
 
-GpuScene::GpuScene(const Scene& scene, Log& log) {
+GpuScene::GpuScene(const Scene& scene, Log& log, std::uint32_t maxChunkTriangles) {
     // Geometry: every primitive once, instanced by the nodes that reference its mesh.
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
     struct Range {
         GLint baseVertex;
         std::uint32_t firstIndex, indexCount;
+        Aabb bounds;
     };
-    std::vector<std::vector<Range>> meshRanges(scene.meshes.size());
+    // Per mesh, per primitive: its chunks (one range when it was not split).
+    std::vector<std::vector<std::vector<Range>>> meshRanges(scene.meshes.size());
+    std::size_t splitPrimitives = 0, chunkCount = 0;
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         for (const Primitive& p : scene.meshes[m].primitives) {
-            meshRanges[m].push_back({static_cast<GLint>(vertices.size()), static_cast<std::uint32_t>(indices.size()),
-                                     static_cast<std::uint32_t>(p.indices.size())});
+            const auto baseVertex = static_cast<GLint>(vertices.size());
+            const auto firstIndex = static_cast<std::uint32_t>(indices.size());
             vertices.insert(vertices.end(), p.vertices.begin(), p.vertices.end());
             indices.insert(indices.end(), p.indices.begin(), p.indices.end());
+            const std::span<std::uint32_t> own(indices.data() + firstIndex, p.indices.size());
+            std::vector<Range>& ranges = meshRanges[m].emplace_back();
+            try {
+                for (const TriangleChunk& c : splitIntoChunks(p.vertices, own, maxChunkTriangles))
+                    ranges.push_back({baseVertex, firstIndex + c.firstIndex, c.indexCount, c.bounds});
+            } catch (const std::invalid_argument& e) {
+                throw std::invalid_argument("mesh " + std::to_string(m) + " \"" + scene.meshes[m].name + "\": " + e.what());
+            }
+            // An unsplit primitive keeps the box the Scene computed for it.
+            if (ranges.size() == 1) ranges.front().bounds = p.bounds;
+            if (ranges.size() > 1) {
+                ++splitPrimitives;
+                chunkCount += ranges.size();
+            }
         }
     }
+    if (splitPrimitives > 0)
+        log.info("split " + std::to_string(splitPrimitives) + " large primitives into " + std::to_string(chunkCount) +
+                 " chunks of at most " + std::to_string(maxChunkTriangles) + " triangles for culling");
     for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
         const Node& node = scene.nodes[n];
         if (node.mesh < 0) continue;
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(node.mesh)];
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-            const Range& r = meshRanges[static_cast<std::size_t>(node.mesh)][p];
-            if (r.indexCount == 0) continue;
-            items_.push_back({static_cast<int>(n), mesh.primitives[p].material, r.baseVertex, r.firstIndex,
-                              r.indexCount, mesh.primitives[p].bounds});
+            for (const Range& r : meshRanges[static_cast<std::size_t>(node.mesh)][p]) {
+                if (r.indexCount == 0) continue;
+                items_.push_back({static_cast<int>(n), mesh.primitives[p].material, r.baseVertex, r.firstIndex,
+                                  r.indexCount, r.bounds});
+            }
         }
     }
     vertices_ = gl::Buffer::fromSpan<Vertex>("scene vertices", vertices);

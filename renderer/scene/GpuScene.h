@@ -5,6 +5,7 @@
 
 #include "gl/Objects.h"
 #include "scene/Aabb.h"
+#include "scene/TriangleChunks.h"
 
 #include <glm/glm.hpp>
 
@@ -21,14 +22,15 @@ namespace gl {
 class Program;
 }
 
-// One primitive of one node instance.
+// One primitive of one node instance, or one chunk of a large primitive (TriangleChunks.h): the
+// chunks of a primitive share its node and material and split its index range.
 struct DrawItem {
     int node = -1;
     int material = -1;         // -1: the default material (last entry of the material table)
     GLint baseVertex = 0;
     std::uint32_t firstIndex = 0;
     std::uint32_t indexCount = 0;
-    Aabb localBounds;
+    Aabb localBounds;          // of this item's triangles (a chunk's own box), object space
 };
 
 // Chooses the items one view draws: fills `visibleItems` with indices into GpuScene::items() of
@@ -44,7 +46,10 @@ struct DrawCounters {
 class GpuScene {
 public:
     GpuScene() = default;
-    GpuScene(const Scene& scene, Log& log);
+    // Primitives of more than `maxChunkTriangles` triangles are split into chunks of at most that
+    // many (their indices reordered on the GPU, the Scene unchanged), one draw item each, so
+    // culling can drop the parts out of view; 0 keeps one item per primitive.
+    GpuScene(const Scene& scene, Log& log, std::uint32_t maxChunkTriangles = kDefaultChunkTriangles);
 
     // Re-uploads the material table (after material edits).
     void updateMaterials(const Scene& scene);

@@ -75,6 +75,8 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
+
+    bool operator==(const Material&) const = default;
 };
 
 enum class LightType { Directional, Point, Spot };
@@ -90,6 +92,8 @@ struct Light {
     float innerConeAngle = 0.0f;                  // radians, spot only
     float outerConeAngle = 0.7853981633974483f;   // radians (π/4), spot only
     bool castsShadow = true;
+
+    bool operator==(const Light&) const = default;
 };
 
 // Perspective camera (glTF). The node that holds it gives its pose; it looks down local −Z.
@@ -99,6 +103,8 @@ struct Camera {
     float aspectRatio = 0.0f;  // 0 = use the output's aspect
     float znear = 0.05f;       // metres
     float zfar = 0.0f;         // metres; 0 = fitted to the scene bounds
+
+    bool operator==(const Camera&) const = default;
 };
 
 struct Node {

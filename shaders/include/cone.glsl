@@ -33,11 +33,22 @@ const int kConeMaxSteps = 1800;
 //    surface.
 // The price is that occluders closer than that to a surface are missed (contact shadows are left
 // to direct lighting) and light may leak through walls thinner than that (docs/GI.md).
-const float kConeNormalOffsetVoxels = 1.7320508;
+const float kConeNormalOffsetVoxels = LIT_CONE_NORMAL_OFFSET_VOXELS;
 const float kConeStartVoxels = 1.0;
 
 vec3 coneOrigin(vec3 position, vec3 normal) {
     return position + normal * (kConeNormalOffsetVoxels * voxel.voxelInfo.z);
+}
+
+// The ray uvw(t) = uvwOrigin + t · uvwPerMetre inside the unit cube [0,1]³ of the volume:
+// t ∈ [span.x, span.y] (an empty span, x > y, when it misses). Slab test; an axis the ray runs
+// parallel to gets a huge but finite slope, so no division by zero.
+vec2 volumeSpan(vec3 uvwOrigin, vec3 uvwPerMetre) {
+    vec3 slope = mix(vec3(1e-20), uvwPerMetre, greaterThan(abs(uvwPerMetre), vec3(1e-20)));
+    vec3 t0 = -uvwOrigin / slope;
+    vec3 t1 = (vec3(1.0) - uvwOrigin) / slope;
+    vec3 tNear = min(t0, t1), tFar = max(t0, t1);
+    return vec2(max(max(tNear.x, tNear.y), tNear.z), min(min(tFar.x, tFar.y), tFar.z));
 }
 
 // Front-to-back marching of one cone through the mipmapped radiance volume.
@@ -56,11 +67,24 @@ vec3 coneOrigin(vec3 position, vec3 normal) {
 // blocks 1 − (1 − a)^(Δ/s). Without the correction a step scale of 0.25 would sample every voxel
 // twice as often as 0.5 and make the same wall twice as opaque; with it the result depends on the
 // step scale only through sampling error.
+//
+// Per step the loop does one texture fetch and a little scalar math; what can be done once per
+// cone is hoisted out of it (measured on llvmpipe, where every instruction runs on the CPU; see
+// docs/PERFORMANCE.md): the volume is clipped against the ray once (volumeSpan) instead of
+// testing each sample's coordinates, sample coordinates step linearly in volume space, and the
+// sampled level's voxel size is the cone diameter itself (clamped to the coarsest level) rather
+// than exp2 of the log2 that chose the level.
 vec4 traceCone(vec3 origin, vec3 direction, float aperture, float maxDistance) {
     float voxelSize = voxel.voxelInfo.z;
     float maxLevel = voxel.voxelInfo.w - 1.0;
+    float maxLevelVoxelSize = voxelSize * exp2(maxLevel);
     float stepScale = voxel.traceParams.z;
     float widthPerDistance = 2.0 * tan(0.5 * clamp(aperture, 0.0, 3.0));
+    // Samples at tMid in [span.x, span.y] lie inside the volume; the first one outside ends the
+    // march (space outside the volume is empty and black).
+    vec3 uvwOrigin = worldToVolume(origin);
+    vec3 uvwPerMetre = direction / voxel.volumeMin.w;
+    vec2 span = volumeSpan(uvwOrigin, uvwPerMetre);
     vec3 radiance = vec3(0.0);
     float opacity = 0.0;
     float t = kConeStartVoxels * voxelSize;
@@ -70,13 +94,12 @@ vec4 traceCone(vec3 origin, vec3 direction, float aperture, float maxDistance) {
         // overestimate the opacity of thin layers by up to 2× at step scale 1.
         float stepLength = max(stepScale * max(voxelSize, widthPerDistance * t), 0.5 * voxelSize);
         float tMid = t + 0.5 * stepLength;
-        vec3 uvw = worldToVolume(origin + tMid * direction);
-        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
+        if (tMid < span.x || tMid > span.y) break;
+        // Level log2(d / voxelSize) has voxels d wide (clamped to the coarsest level).
         float diameter = max(voxelSize, widthPerDistance * tMid);
-        float level = min(log2(diameter / voxelSize), maxLevel);
-        vec4 s = textureLod(voxelRadianceTexture, uvw, level);
+        float levelVoxelSize = min(diameter, maxLevelVoxelSize);
+        vec4 s = textureLod(voxelRadianceTexture, uvwOrigin + tMid * uvwPerMetre, log2(levelVoxelSize / voxelSize));
         if (s.a > kConeMinOpacity) {
-            float levelVoxelSize = voxelSize * exp2(level);
             float a = 1.0 - pow(max(1.0 - s.a, 0.0), stepLength / levelVoxelSize);
             // Straight colour = rgb / a of the premultiplied sample, weighted by the corrected opacity.
             radiance += (1.0 - opacity) * (a / s.a) * decodeRadiance(s.rgb);
@@ -122,27 +145,44 @@ mat3 tangentFrame(vec3 n) {
 // The table stores W_i / π, so L_ID = albedo_d · Σ kDiffuseConeWeights[i] · C_i.
 // The regions stay fixed when the user changes the aperture (traceParams.w): a wider or narrower
 // cone only blurs or sharpens each estimate, and the furnace still holds.
-const int kDiffuseConeCount = 6;
-// Tangent space: x, y along the surface, z along the normal. sin60° = 0.8660254, cos60° = 0.5.
-const vec3 kDiffuseConeDirections[kDiffuseConeCount] = vec3[](
-    vec3(0.0, 0.0, 1.0),
-    vec3(0.8660254, 0.0, 0.5),             // azimuth   0°
-    vec3(0.2676166, 0.8236391, 0.5),       // azimuth  72°
-    vec3(-0.7006293, 0.5090370, 0.5),      // azimuth 144°
-    vec3(-0.7006293, -0.5090370, 0.5),     // azimuth 216°
-    vec3(0.2676166, -0.8236391, 0.5));     // azimuth 288°
-const float kDiffuseConeWeights[kDiffuseConeCount] = float[](0.25, 0.15, 0.15, 0.15, 0.15, 0.15);
+// The table lives in shared.h so that C++ (the cone-direction debug view) draws the same cones.
+// Tangent space: x, y along the surface, z along the normal; azimuths 0°, 72°, ... 288°.
+const int kDiffuseConeCount = LIT_DIFFUSE_CONE_COUNT;
+const vec3 kDiffuseConeDirections[kDiffuseConeCount] = vec3[](LIT_DIFFUSE_CONE_DIRECTIONS);
+const float kDiffuseConeWeights[kDiffuseConeCount] = float[](LIT_DIFFUSE_CONE_WEIGHTS);
 
 // Irradiance / π at a surface point: Σ W_i/π · C_i, so that L_ID = albedo_d · traceDiffuse(...).
 // `origin` from coneOrigin(), `n` the unit surface normal.
-vec3 traceDiffuse(vec3 origin, vec3 n, float aperture, float maxDistance) {
+// `cones` receives each cone's C_i, for rough specular to reuse (radianceFromDiffuseCones).
+vec3 traceDiffuse(vec3 origin, vec3 n, float aperture, float maxDistance, out vec3 cones[kDiffuseConeCount]) {
     mat3 basis = tangentFrame(n);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < kDiffuseConeCount; ++i) {
         vec3 direction = basis * kDiffuseConeDirections[i];
-        sum += kDiffuseConeWeights[i] * traceCone(origin, direction, aperture, maxDistance).rgb;
+        cones[i] = traceCone(origin, direction, aperture, maxDistance).rgb;
+        sum += kDiffuseConeWeights[i] * cones[i];
     }
     return sum;
+}
+
+vec3 traceDiffuse(vec3 origin, vec3 n, float aperture, float maxDistance) {
+    vec3 cones[kDiffuseConeCount];
+    return traceDiffuse(origin, n, aperture, maxDistance, cones);
+}
+
+// Radiance arriving from unit direction l (tangent space of the diffuse cones, above the surface)
+// estimated from the six diffuse cones' C_i: a blend of the cones whose axes lie within 60° of l,
+// weighted by (cos∠(l, axis) − ½)². Some axis is always within 46° of a direction above the
+// surface, so the weights never all vanish; a uniform field gives exactly its radiance.
+vec3 radianceFromDiffuseCones(vec3 l, vec3 cones[kDiffuseConeCount]) {
+    vec3 sum = vec3(0.0);
+    float weightSum = 0.0;
+    for (int i = 0; i < kDiffuseConeCount; ++i) {
+        float w = max(dot(l, kDiffuseConeDirections[i]) - 0.5, 0.0);
+        sum += (w * w) * cones[i];
+        weightSum += w * w;
+    }
+    return weightSum > 0.0 ? sum / weightSum : cones[0];
 }
 
 // ---- Indirect specular: GGX importance sampling --------------------------------------------
@@ -193,7 +233,7 @@ uint pcgHash(uint v) {
 // pixels at 2 samples per pixel. Dropping it is a bias (reflections lose their faint halo), not
 // an energy loss: E from the table still counts the whole lobe. Measured on the Cornell box
 // (rough 0.4 metal, 2 samples): visibly fewer speckles than 1.0, the lobe still as wide.
-const float kSpecularLobeShare = 0.75;
+const float kSpecularLobeShare = LIT_SPECULAR_LOBE_SHARE;
 
 // Sample k of N: the Hammersley point (k/N, radicalInverse(k)) shifted per pixel
 // (Cranley-Patterson rotation) and per frame. The azimuth shift comes from interleaved gradient
@@ -241,8 +281,8 @@ vec3 specularAlbedo(vec3 f0, float roughness, float NdotV) {
 
 // Cones narrower than this march half a voxel per step for the whole volume; 0.02 rad is about
 // one voxel wide at 50 voxels, so mirror reflections stay sharp at voxel resolution.
-const float kMinSpecularAperture = 0.02;
-const float kMaxSpecularAperture = 1.0471976;  // π/3: wider lobes are diffuse-like anyway
+const float kMinSpecularAperture = LIT_SPECULAR_APERTURE_MIN;
+const float kMaxSpecularAperture = LIT_SPECULAR_APERTURE_MAX;  // π/3: wider lobes are diffuse-like anyway
 
 // Full aperture of the cone that stands for one of `count` samples of a GGX lobe with roughness
 // α. The median half-vector angle of GGX is atan(α) (u.x = 1/2 above), so the reflected lobe is
@@ -254,11 +294,23 @@ float specularConeAperture(float alpha, int count) {
     return clamp(2.0 * halfAngle, kMinSpecularAperture, kMaxSpecularAperture);
 }
 
+// Whether the specular cones of a lobe with roughness α are no narrower than the diffuse cones
+// (of full aperture `diffuseAperture`): then a specular cone would only blur what the diffuse
+// cones already saw, and rough specular reuses them (radianceFromDiffuseCones) instead of
+// marching `count` cones of its own. With the defaults (60° diffuse cones, 2 samples) that is
+// perceptual roughness ≥ 0.64, where the specular cones are clamped to 60° themselves; most
+// dielectric surfaces of real scenes are that rough. A quarter of the cone marching per pixel
+// (2 of 8 cones) is saved there, the largest cost of the frame on a software rasterizer.
+bool specularCanReuseDiffuseCones(float alpha, int count, float diffuseAperture) {
+    return specularConeAperture(alpha, count) >= diffuseAperture - 1e-3;
+}
+
 // Indirect specular radiance L_IS for a surface with normal n (unit, facing v), view vector v
 // (unit, towards the eye), F0 and perceptual roughness, from `count` (1..8) importance-sampled
-// cones.
+// cones, or when `reuseDiffuse` from the diffuse cones' radiance `cones` in the same directions
+// (see specularCanReuseDiffuseCones; the diffuse cones must be traced around the same n).
 vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, vec3 f0, float roughness, int count, vec2 pixel, int frameIndex,
-                   float maxDistance) {
+                   float maxDistance, bool reuseDiffuse, vec3 cones[kDiffuseConeCount]) {
     float alpha = alphaFromRoughness(roughness);
     mat3 basis = tangentFrame(n);
     float aperture = specularConeAperture(alpha, count);
@@ -269,12 +321,17 @@ vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, vec3 f0, float roughness, int co
         vec3 l;
         float w = ggxSampleWeight(n, v, h, alpha, l);
         if (w <= 0.0) continue;
-        weightedRadiance += w * traceCone(origin, l, aperture, maxDistance).rgb;
+        // basis is orthonormal: its transpose takes world directions to tangent space.
+        vec3 radiance = reuseDiffuse ? radianceFromDiffuseCones(normalize(l * basis), cones)
+                                     : traceCone(origin, l, aperture, maxDistance).rgb;
+        weightedRadiance += w * radiance;
         weightSum += w;
     }
     if (weightSum <= 0.0) {
         // Every sample fell below the horizon (rough surface seen edge-on): use the mirror direction.
-        weightedRadiance = traceCone(origin, reflect(-v, n), aperture, maxDistance).rgb;
+        vec3 mirror = reflect(-v, n);
+        weightedRadiance = reuseDiffuse ? radianceFromDiffuseCones(normalize(mirror * basis), cones)
+                                        : traceCone(origin, mirror, aperture, maxDistance).rgb;
         weightSum = 1.0;
     }
     return specularAlbedo(f0, roughness, max(dot(n, v), 0.0)) * weightedRadiance / weightSum;

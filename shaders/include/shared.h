@@ -10,6 +10,7 @@
 #ifdef __cplusplus
 #include <glm/glm.hpp>
 namespace lit::gpu {
+using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using ivec4 = glm::ivec4;
 using mat4 = glm::mat4;
@@ -28,6 +29,7 @@ using mat4 = glm::mat4;
 #define LIT_LOC_MODEL 0            // mat4 object → world
 #define LIT_LOC_NORMAL_MATRIX 1    // mat4 inverse transpose of the model matrix
 #define LIT_LOC_MATERIAL 2         // int index into GpuMaterial[]
+#define LIT_LOC_NODE_ID 3          // uint node index + 1 the G-buffer writes to its ID target (0 = background)
 
 // ---- Texture units -----------------------------------------------------------------------
 // Material textures (G-buffer, shadow alpha test, voxelization).
@@ -61,6 +63,9 @@ using mat4 = glm::mat4;
 // y = roughness, E = F0·r + g (cone.glsl, specularAlbedo).
 #define LIT_TEX_SPECULAR_ALBEDO 22
 #define LIT_SPECULAR_ALBEDO_SIZE 32    // texels per side of that table
+// Viewport overlay (OverlayPass): the G-buffer's R32UI node IDs (node index + 1, 0 = background).
+#define LIT_TEX_GBUFFER_ID 23
+#define LIT_OUTLINE_RADIUS 2           // selection outline width (pixels outside the silhouette)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
@@ -77,6 +82,20 @@ using mat4 = glm::mat4;
 // ---- Voxelization and radiance injection (VoxelizePass, InjectPass) ------------------------
 #define LIT_VOXEL_EMISSION_RANGE 16.0  // radiance (W/(sr·m²)) stored as 1.0 in the emission volume; = VoxelVolume::kEmissionRange
 #define LIT_INJECT_GROUP_SIZE 8        // inject.comp.glsl work group: 8×8×8 voxels
+
+// ---- Cone choice (cone.glsl), mirrored by tracedCones() in renderer/scene/OverlayShapes.cpp ------
+// Written once here so the cone-direction debug view draws the cones the shader traces.
+// Diffuse: one cone along the normal, five at 60° from it, 72° apart in azimuth, in tangent space
+// (x, y along the surface, z along the normal; sin60° = 0.8660254, cos60° = 0.5), weights W_i/π.
+// cone.glsl explains the layout and derives the weights.
+#define LIT_DIFFUSE_CONE_COUNT 6
+#define LIT_DIFFUSE_CONE_DIRECTIONS vec3(0.0, 0.0, 1.0), vec3(0.8660254, 0.0, 0.5), vec3(0.2676166, 0.8236391, 0.5), vec3(-0.7006293, 0.5090370, 0.5), vec3(-0.7006293, -0.5090370, 0.5), vec3(0.2676166, -0.8236391, 0.5)
+#define LIT_DIFFUSE_CONE_WEIGHTS 0.25, 0.15, 0.15, 0.15, 0.15, 0.15
+#define LIT_CONE_NORMAL_OFFSET_VOXELS 1.7320508  // cone apex: √3 voxels along the normal off the surface
+#define LIT_SPECULAR_LOBE_SHARE 0.75             // share of the GGX lobe specular samples are drawn from
+#define LIT_SPECULAR_APERTURE_MIN 0.02           // rad, narrowest specular cone
+#define LIT_SPECULAR_APERTURE_MAX 1.0471976      // rad (π/3), widest specular cone
+#define LIT_SPECULAR_MAX_SAMPLES 8               // specular cones per pixel at most
 
 // ---- Limits -------------------------------------------------------------------------------
 #define LIT_MAX_LIGHTS 64            // lights beyond this are ignored with a warning
@@ -99,6 +118,14 @@ using mat4 = glm::mat4;
 #define LIT_VIEW_SHADOW_MAP 7
 #define LIT_VIEW_VOXELS 8
 #define LIT_VIEW_ROUGHNESS_METALNESS 9
+#define LIT_VIEW_VOXEL_SLICE 10
+
+// What the voxel debug views show (RenderSettings::voxelChannel, VoxelDebugPass).
+#define LIT_VOXEL_CHANNEL_RADIANCE 0
+#define LIT_VOXEL_CHANNEL_ALBEDO 1
+#define LIT_VOXEL_CHANNEL_NORMAL 2
+#define LIT_VOXEL_CHANNEL_OPACITY 3
+#define LIT_VOXEL_CHANNEL_EMISSION 4
 
 // How the radiance volume stores radiance (VoxelUniforms::traceOptions.z).
 #define LIT_RADIANCE_FLOAT16 0  // RGBA16F: radiance as is
@@ -163,6 +190,8 @@ static_assert(sizeof(FrameUniforms) == 4 * 64 + 4 * 16);
 static_assert(sizeof(GpuLight) == 5 * 16 + 64);
 static_assert(sizeof(GpuMaterial) == 6 * 16);
 static_assert(sizeof(ShadowPassUniforms) == 64 + 16);
+inline const vec3 kDiffuseConeDirections[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_DIRECTIONS};
+inline const float kDiffuseConeWeights[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_WEIGHTS};
 }  // namespace lit::gpu
 #endif
 

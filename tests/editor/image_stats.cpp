@@ -1,7 +1,8 @@
 // lit_image_stats FILE.png [X Y W H]
-// Prints "WIDTH HEIGHT MEAN STDDEV": the image size and the mean and standard deviation of its
-// R, G and B values (0..255), over the whole image or the rectangle given (pixels, origin top
-// left). The editor tests use it to tell a real capture from a blank one.
+// Prints "WIDTH HEIGHT MEAN STDDEV MEAN_R MEAN_G MEAN_B": the image size, the mean and standard
+// deviation of its R, G and B values together (0..255), and the mean of each channel, over the
+// whole image or the rectangle given (pixels, origin top left). The editor tests use it to tell
+// a real capture from a blank one and to see which way a colour edit moved the render.
 
 #include <stb_image.h>
 
@@ -50,12 +51,14 @@ int main(int argc, char** argv) {
         return 2;
     }
     double sum = 0.0, sumSquares = 0.0;
+    double channelSum[3] = {0.0, 0.0, 0.0};
     for (int row = y; row < y + h; ++row) {
         for (int column = x; column < x + w; ++column) {
             const unsigned char* p = pixels.get() + (static_cast<std::size_t>(row) * width + column) * 3;
             for (int c = 0; c < 3; ++c) {
                 const double v = p[c];
                 sum += v;
+                channelSum[c] += v;
                 sumSquares += v * v;
             }
         }
@@ -63,6 +66,8 @@ int main(int argc, char** argv) {
     const double count = 3.0 * w * h;
     const double mean = sum / count;
     const double variance = std::max(sumSquares / count - mean * mean, 0.0);
-    std::printf("%d %d %.3f %.3f\n", width, height, mean, std::sqrt(variance));
+    const double pixelCount = static_cast<double>(w) * h;
+    std::printf("%d %d %.3f %.3f %.3f %.3f %.3f\n", width, height, mean, std::sqrt(variance), channelSum[0] / pixelCount,
+                channelSum[1] / pixelCount, channelSum[2] / pixelCount);
     return 0;
 }

@@ -73,3 +73,21 @@ TEST(EditorOptions, RejectsBadInputWithMessagesNamingTheProblem) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(EditorOptions, ParsesScript) {
+    const EditorOptions options = lit::editor::parseEditorOptions(
+        std::vector<std::string_view>{"scene.gltf", "--script", "walk.txt", "--size", "640x360"});
+    ASSERT_TRUE(options.script);
+    EXPECT_EQ(*options.script, "walk.txt");
+    EXPECT_FALSE(options.screenshot);
+}
+
+TEST(EditorOptions, ScriptNeedsAFileAndExcludesScreenshotMode) {
+    EXPECT_NE(errorOf({"--script"}).find("needs a value"), std::string::npos);
+    EXPECT_NE(errorOf({"--script", ""}).find("--script needs a file name"), std::string::npos);
+    EXPECT_NE(errorOf({"--script", "a.txt", "--screenshot", "a.png"}).find("cannot be combined"), std::string::npos);
+}
+
+}  // namespace

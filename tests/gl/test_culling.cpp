@@ -2,6 +2,7 @@
 // and off must be identical to the bit, while culling submits fewer draws. The scene has boxes in
 // view, boxes behind the camera (some of them casting shadows into view) and boxes outside a spot
 // light's cone, lit by a directional, a spot and a point light (one frustum per cube face).
+// A floor of one large primitive, split into chunks on upload, is culled chunk by chunk.
 // Also: the draw counts on Sponza from its default framing camera (skipped when it is absent).
 
 #include "GlTestSupport.h"
@@ -96,17 +97,35 @@ protected:
         return scene;
     }
 
-    // Items the camera's frustum keeps, by brute force over every item's world box.
-    std::size_t visibleFromCamera(const Scene& scene, const RenderSettings& settings) const {
-        std::vector<DrawItem> items;
-        for (std::size_t n = 0; n < scene.nodes.size(); ++n)
-            if (scene.nodes[n].mesh >= 0)
-                for (const Primitive& p : scene.meshes[static_cast<std::size_t>(scene.nodes[n].mesh)].primitives)
-                    items.push_back({static_cast<int>(n), p.material, 0, 0, static_cast<std::uint32_t>(p.indices.size()), p.bounds});
+    // Items the camera's frustum keeps, by brute force over every item's world box. The items
+    // are a GpuScene's own (large primitives split into chunks, as the renderer uploads them).
+    std::size_t visibleFromCamera(const Scene& scene, const RenderSettings& settings) {
+        const GpuScene gpuScene(scene, log_);
         const Frustum frustum(cameraFor(scene, settings).viewProjection());
         std::size_t visible = 0;
-        for (const Aabb& box : itemWorldBounds(scene, items)) visible += frustum.intersects(box);
+        for (const Aabb& box : itemWorldBounds(scene, gpuScene.items())) visible += frustum.intersects(box);
         return visible;
+    }
+
+    // A 24 m floor of 131072 triangles in one primitive (split into chunks on upload), a few
+    // boxes on it, a sun; the camera stands in the middle of the floor, looking along it.
+    static Scene makeBigFloorScene() {
+        Scene scene;
+        const int white = addMaterial(scene, glm::vec3(0.8f), 0.9f, 0.0f, "white");
+        const int red = addMaterial(scene, glm::vec3(0.8f, 0.1f, 0.1f), 0.5f, 0.0f, "red");
+        addMeshNode(scene, makePlaneMesh("big floor", 24.0f, white, 256), glm::vec3(0.0f));
+        addMeshNode(scene, makeBoxMesh("ahead", glm::vec3(1.0f, 2.0f, 1.0f), red), glm::vec3(-1.0f, 1.0f, -4.0f));
+        addMeshNode(scene, makeBoxMesh("behind", glm::vec3(1.0f, 3.0f, 1.0f), red), glm::vec3(0.5f, 1.5f, 4.0f));
+        Light sun;
+        sun.type = LightType::Directional;
+        sun.intensity = 2.0f;
+        addLightNode(scene, sun, glm::vec3(0.0f), glm::vec3(0.3f, -0.7f, -0.5f));
+        Camera camera;
+        camera.yfov = 0.8f;
+        camera.znear = 0.1f;
+        camera.zfar = 40.0f;
+        addCameraNode(scene, camera, glm::vec3(0.0f, 1.6f, 0.0f), glm::vec3(0.0f, 0.8f, -6.0f));
+        return scene;
     }
 
     static void expectIdentical(const Frame& on, const Frame& off) {
@@ -147,6 +166,28 @@ TEST_F(Culling, SameImageFewerDraws) {
     EXPECT_GE(on.steady.cullMs, 0.0);
     std::printf("culling test scene: camera view %d of %d draws; first frame (camera + 8 shadow views) %d of %d\n",
                 on.steady.drawsSubmitted, on.steady.drawsTotal, on.first.drawsSubmitted, on.first.drawsTotal);
+}
+
+TEST_F(Culling, SplitPrimitiveSameImageFewerDraws) {
+    const Scene scene = makeBigFloorScene();
+    const std::size_t floorTriangles = scene.meshes[0].primitives[0].indices.size() / 3;
+    ASSERT_GT(floorTriangles, std::size_t{kDefaultChunkTriangles}) << "the floor must be large enough to be split";
+    const int items = static_cast<int>(GpuScene(scene, log_).items().size());
+    EXPECT_GE(items, static_cast<int>(floorTriangles / kDefaultChunkTriangles) + 2) << "the floor is split into chunks";
+
+    RenderSettings settings = smallSettings(128);
+    settings.shadowMapSize = 256;
+    const auto [off, on] = renderCullingOffAndOn(scene, settings);
+    expectIdentical(on, off);
+    EXPECT_EQ(off.steady.drawsTotal, items);
+    EXPECT_EQ(off.steady.drawsSubmitted, items);
+    EXPECT_EQ(off.steady.triangles, floorTriangles + 2 * 12);
+    EXPECT_EQ(on.steady.drawsSubmitted, static_cast<int>(visibleFromCamera(scene, settings)));
+    // Standing in the middle of the floor, the chunks behind the camera (about half) are culled.
+    EXPECT_LE(on.steady.drawsSubmitted, items * 3 / 4);
+    EXPECT_LT(on.steady.triangles, off.steady.triangles * 3 / 4);
+    std::printf("split floor: camera view %d of %d draws, %zu of %zu triangles\n", on.steady.drawsSubmitted,
+                on.steady.drawsTotal, on.steady.triangles, off.steady.triangles);
 }
 
 TEST_F(Culling, MovedObjectsAreRefitNotLost) {
@@ -209,6 +250,35 @@ TEST_F(Culling, SponzaDrawCountsFromTheDefaultCamera) {
     EXPECT_LE(on.steady.drawsSubmitted, off.steady.drawsSubmitted);
     EXPECT_EQ(on.steady.drawsSubmitted, static_cast<int>(visibleFromCamera(scene, settings)));
     expectIdentical(on, off);
+
+    // The default camera frames the whole building, so every item is in view. From inside the
+    // atrium (its middle, at a fifth of its height, looking down its long axis) the chunks of the
+    // big primitives behind the camera are culled.
+    Scene inside = loadGltf(path, log_);
+    const Aabb bounds = inside.worldBounds();
+    const glm::vec3 size = bounds.size();
+    const int longAxis = size.x >= size.z ? 0 : 2;
+    glm::vec3 eye = bounds.center();
+    eye.y = bounds.min.y + 0.2f * size.y;
+    glm::vec3 target = eye;
+    target[longAxis] += 1.0f;
+    Camera camera;
+    camera.yfov = 0.9f;
+    camera.znear = 0.05f;
+    camera.zfar = 2.0f * glm::length(size);
+    addCameraNode(inside, camera, eye, target);
+    addDefaultLightAndCamera(inside, log_);
+    const auto [insideOff, insideOn] = renderCullingOffAndOn(inside, settings);
+    std::printf("Sponza (inside the atrium, 16:9): G-buffer draws %d with culling off, %d of %d with culling on; "
+                "triangles %zu -> %zu; culling %.3f ms CPU\n",
+                insideOff.steady.drawsSubmitted, insideOn.steady.drawsSubmitted, insideOn.steady.drawsTotal,
+                insideOff.steady.triangles, insideOn.steady.triangles, insideOn.steady.cullMs);
+    RecordProperty("inside_draws_culling_off", insideOff.steady.drawsSubmitted);
+    RecordProperty("inside_draws_culling_on", insideOn.steady.drawsSubmitted);
+    EXPECT_LT(insideOn.steady.drawsSubmitted, insideOff.steady.drawsSubmitted)
+        << "the large primitives are split, so looking down the atrium culls what is behind";
+    EXPECT_LT(insideOn.steady.triangles, insideOff.steady.triangles);
+    expectIdentical(insideOn, insideOff);
 }
 
 }  // namespace

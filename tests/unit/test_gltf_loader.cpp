@@ -1049,5 +1049,177 @@ TEST(GltfLoaderRealScenes, ComputedTangentsAgreeWithAuthoredOnes) {
     if (checked == 0) GTEST_SKIP() << "none of the shared scenes with authored tangents is available";
 }
 
+// --------------------------------------------------------------------------------------------
+// Progress, parallel decoding, summary
+
+// A triangle with `count` external PNG images of different sizes and noise content, every
+// fifth one undecodable, all used as base colour by one material each.
+GltfBuilder triangleWithImages(const TempDir& dir, int count) {
+    GltfBuilder b = triangle();
+    std::mt19937 random(7);
+    b.doc["images"] = json::array();
+    b.doc["textures"] = json::array();
+    b.doc["materials"] = json::array();
+    for (int i = 0; i < count; ++i) {
+        const std::string name = "image" + std::to_string(i) + ".png";
+        if (i % 5 == 4) {
+            writeFile(dir / name, std::string("not a png"));
+        } else {
+            const int width = 8 + 3 * i, height = 5 + 2 * i;
+            std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width * height * 4));
+            for (std::uint8_t& v : rgba) v = static_cast<std::uint8_t>(random());
+            writeFile(dir / name, encodePng(width, height, rgba));
+        }
+        b.doc["images"].push_back({{"uri", name}});
+        b.doc["textures"].push_back({{"source", i}});
+        b.doc["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", i}}}}}});
+    }
+    return b;
+}
+
+std::vector<std::string> warnings(const Log& log) {
+    std::vector<std::string> out;
+    for (const LogMessage& m : log.recent())
+        if (m.level == LogLevel::Warning) out.push_back(m.text);
+    return out;
+}
+
+TEST(GltfLoaderProgress, EachStageRunsFromZeroToTotalInOrderOnTheCallingThread) {
+    TempDir dir;
+    const fs::path path = triangleWithImages(dir, 12).writeGltf(dir, "progress");
+    for (int threads : {1, 4}) {
+        SCOPED_TRACE("decodeThreads " + std::to_string(threads));
+        std::vector<LoadProgress> reports;
+        bool otherThread = false;
+        const std::thread::id caller = std::this_thread::get_id();
+        GltfLoadOptions options;
+        options.decodeThreads = threads;
+        options.progress = [&](const LoadProgress& p) {
+            otherThread |= std::this_thread::get_id() != caller;
+            reports.push_back(p);
+        };
+        QuietLog log;
+        const Scene scene = loadGltf(path, log, options);
+        EXPECT_FALSE(otherThread) << "progress must be reported on the loading thread";
+        ASSERT_EQ(scene.images.size(), 12u);
+
+        // Split into stages in the order they were reported.
+        std::vector<std::string> stages;
+        for (const LoadProgress& p : reports)
+            if (stages.empty() || stages.back() != p.stage) stages.push_back(p.stage);
+        EXPECT_EQ(stages, (std::vector<std::string>{"file", "meshes", "images", "scene"}));
+        for (const std::string& stage : stages) {
+            std::vector<LoadProgress> steps;
+            for (const LoadProgress& p : reports)
+                if (p.stage == stage) steps.push_back(p);
+            EXPECT_EQ(steps.front().done, 0) << stage;
+            EXPECT_EQ(steps.back().done, steps.back().total) << stage;
+            for (std::size_t i = 1; i < steps.size(); ++i) {
+                EXPECT_GE(steps[i].done, steps[i - 1].done) << stage;
+                EXPECT_EQ(steps[i].total, steps[0].total) << stage;
+            }
+        }
+        const auto totalOf = [&](const char* stage) {
+            for (const LoadProgress& p : reports)
+                if (p.stage == stage) return p.total;
+            return -1;
+        };
+        EXPECT_EQ(totalOf("meshes"), 1);
+        EXPECT_EQ(totalOf("images"), 12);
+    }
+}
+
+TEST(GltfLoaderProgress, AStageWithNothingToDoStillReportsZeroOfZero) {
+    TempDir dir;
+    std::vector<LoadProgress> reports;
+    GltfLoadOptions options;
+    options.progress = [&](const LoadProgress& p) { reports.push_back(p); };
+    QuietLog log;
+    loadGltf(triangle().writeGltf(dir, "plain"), log, options);
+    const auto images =
+        std::find_if(reports.begin(), reports.end(), [](const LoadProgress& p) { return p.stage == "images"; });
+    ASSERT_NE(images, reports.end());
+    EXPECT_EQ(images->done, 0);
+    EXPECT_EQ(images->total, 0);
+}
+
+TEST(GltfLoaderParallel, DecodingOnManyThreadsGivesTheSerialResult) {
+    TempDir dir;
+    const fs::path path = triangleWithImages(dir, 23).writeGltf(dir, "parallel");
+    QuietLog serialLog;
+    GltfLoadOptions serialOptions;
+    serialOptions.decodeThreads = 1;
+    const Scene serial = loadGltf(path, serialLog, serialOptions);
+    ASSERT_EQ(serial.images.size(), 23u);
+    EXPECT_EQ(warnings(serialLog).size(), 4u) << "images 4, 9, 14 and 19 do not decode";
+    for (int threads : {0, 3, 8}) {
+        SCOPED_TRACE("decodeThreads " + std::to_string(threads));
+        QuietLog log;
+        GltfLoadOptions options;
+        options.decodeThreads = threads;
+        const Scene parallel = loadGltf(path, log, options);
+        ASSERT_EQ(parallel.images.size(), serial.images.size());
+        for (std::size_t i = 0; i < serial.images.size(); ++i) {
+            EXPECT_EQ(parallel.images[i].width, serial.images[i].width) << i;
+            EXPECT_EQ(parallel.images[i].height, serial.images[i].height) << i;
+            EXPECT_TRUE(parallel.images[i].rgba == serial.images[i].rgba) << "image " << i << " differs";
+        }
+        EXPECT_EQ(warnings(log), warnings(serialLog)) << "same warnings in the same order";
+    }
+    // The noise images really were decoded (not all white placeholders).
+    EXPECT_EQ(serial.images[0].width, 8);
+    EXPECT_EQ(serial.images[3].height, 11);
+    EXPECT_EQ(serial.images[4].rgba, (std::vector<std::uint8_t>{255, 255, 255, 255}));
+}
+
+TEST(SceneSummary, CountsTheCornellBox) {
+    QuietLog log;
+    const fs::path path = fs::path(LIT_SOURCE_DIR) / "assets" / "cornell_box.gltf";
+    const Scene scene = loadGltf(path, log);
+    const SceneSummary s = summarize(scene);
+    // Expected values read from the file itself.
+    std::ifstream in(path);
+    const json doc = json::parse(in);
+    std::size_t positions = 0, indices = 0;
+    for (const json& mesh : doc["meshes"])
+        for (const json& p : mesh["primitives"]) {
+            positions += doc["accessors"][p["attributes"]["POSITION"].get<std::size_t>()]["count"].get<std::size_t>();
+            indices += doc["accessors"][p["indices"].get<std::size_t>()]["count"].get<std::size_t>();
+        }
+    EXPECT_EQ(s.name, "cornell_box.gltf");
+    EXPECT_EQ(s.nodes, doc["nodes"].size());
+    EXPECT_EQ(s.meshes, 7u);
+    EXPECT_EQ(s.primitives, 7u);
+    EXPECT_EQ(s.triangles, indices / 3);
+    EXPECT_EQ(s.triangles, 736u);
+    EXPECT_EQ(s.vertices, positions);
+    EXPECT_EQ(s.materials, 3u);
+    EXPECT_EQ(s.textures, 0u);
+    EXPECT_EQ(s.images, 0u);
+    EXPECT_EQ(s.lights, 1u);
+    EXPECT_EQ(s.cameras, 1u);
+    EXPECT_EQ(s.vertexBytes, positions * sizeof(Vertex));
+    EXPECT_EQ(s.indexBytes, indices * 4);
+    EXPECT_EQ(s.pixelBytes, 0u);
+    EXPECT_EQ(toString(s), "cornell_box.gltf: 7 meshes, 736 triangles, 0 textures, 0 MB");
+}
+
+TEST(SceneSummary, CountsPixelsAndAbbreviatesLargeCounts) {
+    TempDir dir;
+    QuietLog log;
+    const Scene scene = loadGltf(triangleWithImages(dir, 2).writeGltf(dir, "two"), log);
+    const SceneSummary s = summarize(scene);
+    EXPECT_EQ(s.pixelBytes, std::size_t(8 * 5 * 4 + 11 * 7 * 4));
+    EXPECT_EQ(toString(s), "two.gltf: 1 mesh, 1 triangle, 2 textures, 0 MB");
+
+    SceneSummary big;
+    big.name = "sponza.gltf";
+    big.meshes = 103;
+    big.triangles = 262267;
+    big.textures = 69;
+    big.pixelBytes = 412'400'000;
+    EXPECT_EQ(toString(big), "sponza.gltf: 103 meshes, 262k triangles, 69 textures, 412 MB");
+}
+
 }  // namespace
 }  // namespace lit

@@ -33,10 +33,10 @@ std::string lower(std::string text) {
     return text;
 }
 
-// "final, direct-diffuse, ..." — every View, in declaration order (RoughnessMetalness is last).
+// "final, direct-diffuse, ..." — every View, in declaration order (VoxelSlice is last).
 std::string viewNames() {
     std::string names;
-    for (int i = 0; i <= static_cast<int>(View::RoughnessMetalness); ++i)
+    for (int i = 0; i <= static_cast<int>(View::VoxelSlice); ++i)
         names += (i ? ", " : "") + std::string(toString(static_cast<View>(i)));
     return names;
 }

@@ -1,0 +1,265 @@
+#include "DocumentIO.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <chrono>
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+#include <unistd.h>
+
+#include "Log.h"
+#include "animation/CameraPathIO.h"
+#include "io/AtomicFile.h"
+#include "scene/GltfLoader.h"
+#include "scene/GltfWriter.h"
+#include "scene/SceneBuilder.h"
+
+namespace lit::editor {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMarkerVersion = 1;
+
+std::optional<std::string> readTextFile(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) return std::nullopt;
+    return text.str();
+}
+
+// The scene and its camera path, as openDocument and recovery read them.
+Document loadScene(const fs::path& sceneFile, const fs::path& documentFile, Log& log,
+                   const std::function<void(const LoadProgress&)>& progress = {}) {
+    GltfLoadOptions options;
+    options.progress = progress;
+    const auto start = std::chrono::steady_clock::now();
+    Scene scene = loadGltf(sceneFile, log, options);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    char took[32];
+    std::snprintf(took, sizeof took, " in %.0f ms", ms);
+    log.info("loaded " + toString(summarize(scene)) + took);
+    addDefaultLightAndCamera(scene, log);
+    CameraPath path;
+    try {
+        const std::vector<std::string> names = cameraAnimationNames(sceneFile);
+        if (std::find(names.begin(), names.end(), kDefaultCameraAnimation) != names.end()) {
+            path = loadCameraPathFromGltf(sceneFile, kDefaultCameraAnimation);
+            log.info("camera path: " + std::to_string(path.keys().size()) + " keys from " + sceneFile.filename().string());
+        }
+    } catch (const std::exception& error) {
+        // The scene is still worth editing; the path starts empty (saving replaces the bad one).
+        log.warning(std::string("camera path not loaded: ") + error.what());
+        path = CameraPath();
+    }
+    return Document(std::move(scene), std::move(path), documentFile);
+}
+
+std::string localTimeText(std::time_t seconds) {
+    std::tm local{};
+    localtime_r(&seconds, &local);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M", &local);
+    return text;
+}
+
+// The pid in a lock file, or 0 when it holds none.
+long lockOwner(const fs::path& lock) {
+    const std::optional<std::string> text = readTextFile(lock);
+    if (!text) return 0;
+    char* end = nullptr;
+    const long pid = std::strtol(text->c_str(), &end, 10);
+    return pid > 0 && end != text->c_str() ? pid : 0;
+}
+
+bool processAlive(long pid) {
+    if (pid <= 0) return false;
+    // EPERM: the process exists but belongs to someone else.
+    return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+}
+
+void removeQuietly(const fs::path& file) {
+    std::error_code error;
+    fs::remove(file, error);
+}
+
+}  // namespace
+
+fs::path settingsSidecarPath(const fs::path& sceneFile) {
+    fs::path sidecar = sceneFile;
+    sidecar += ".lit.json";
+    return sidecar;
+}
+
+Document openDocument(const fs::path& file, Log& log, const std::function<void(const LoadProgress&)>& progress) {
+    Document doc = loadScene(file, file, log, progress);
+    const fs::path sidecar = settingsSidecarPath(file);
+    std::error_code error;
+    if (fs::exists(sidecar, error)) {
+        const std::optional<std::string> text = readTextFile(sidecar);
+        try {
+            if (!text) throw std::runtime_error("cannot read the file");
+            doc.settings = renderSettingsFromJson(*text);
+            log.info("render settings from " + sidecar.filename().string());
+        } catch (const std::exception& e) {
+            log.warning(sidecar.string() + ": " + e.what() + "; using the default render settings");
+            doc.settings = RenderSettings{};
+        }
+    }
+    return doc;
+}
+
+void saveDocument(Document& doc, const fs::path& file) {
+    GltfSaveOptions options;
+    if (!doc.cameraPath.empty()) options.cameraPath = &doc.cameraPath;
+    saveGltf(doc.scene, file, options);
+    writeFileAtomically(settingsSidecarPath(file), toJson(doc.settings) + "\n");
+    doc.file = file;
+    doc.markSaved();
+}
+
+// ---- Autosave ----------------------------------------------------------------------------------
+
+fs::path Autosave::defaultFolder() {
+    if (const char* state = std::getenv("XDG_STATE_HOME"); state != nullptr && fs::path(state).is_absolute())
+        return fs::path(state) / "lit";
+    if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
+        return fs::path(home) / ".local" / "state" / "lit";
+    std::error_code error;
+    return fs::temp_directory_path(error) / "lit";
+}
+
+Autosave::Autosave() : Autosave(defaultFolder()) {}
+
+Autosave::Autosave(fs::path folder, double intervalSeconds) : folder_(std::move(folder)), interval_(intervalSeconds) {
+    std::error_code error;
+    fs::create_directories(folder_, error);
+    if (error) {
+        lastError_ = "autosave disabled: cannot create " + folder_.string() + ": " + error.message();
+        return;
+    }
+    const long owner = lockOwner(lockFile());
+    const long self = static_cast<long>(::getpid());
+    if (owner != 0 && owner != self && processAlive(owner)) {
+        lastError_ = "autosave disabled: another editor (pid " + std::to_string(owner) + ") uses " + folder_.string();
+        return;
+    }
+    // A lock left behind by a session that is gone: its copy, if complete, is offered.
+    if (fs::exists(lockFile(), error) && fs::exists(autosaveFile(), error)) {
+        if (const std::optional<std::string> text = readTextFile(markerFile())) {
+            const nlohmann::json marker = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
+            if (marker.is_object() && marker.value("version", 0) == kMarkerVersion) {
+                const std::string document = marker.value("document", std::string());
+                const auto savedAt = static_cast<std::time_t>(marker.value("savedAt", std::int64_t{0}));
+                recoverable_ = AutosaveInfo{autosaveFile(), fs::path(document), localTimeText(savedAt)};
+            }
+        }
+    }
+    try {
+        writeFileAtomically(lockFile(), std::to_string(self) + "\n");
+        active_ = true;
+    } catch (const std::exception& e) {
+        lastError_ = std::string("autosave disabled: ") + e.what();
+    }
+}
+
+void Autosave::maybeSave(const Document& doc, std::chrono::system_clock::time_point now) {
+    maybeSave(doc, std::chrono::duration<double>(now.time_since_epoch()).count());
+}
+
+void Autosave::maybeSave(const Document& doc, double nowSeconds) {
+    // A crash's copy waits for the user's answer; writing now would overwrite it.
+    if (!active_ || recoverable_) return;
+    if (!lastWrite_) {
+        lastWrite_ = nowSeconds;
+        return;
+    }
+    if (nowSeconds - *lastWrite_ < interval_) return;
+    lastWrite_ = nowSeconds;
+    if (!doc.dirty()) {
+        // Saved since: the copy is older than the file and must not be offered after a crash.
+        if (written_) discard();
+        return;
+    }
+    if (written_ && *written_ == doc.capture() && writtenSettings_ == doc.settings && writtenFile_ == doc.file) return;
+    try {
+        saveNow(doc);
+        lastError_.clear();
+    } catch (const std::exception& e) {
+        lastError_ = std::string("autosave failed: ") + e.what();
+    }
+}
+
+void Autosave::saveNow(const Document& doc) {
+    GltfSaveOptions options;
+    if (!doc.cameraPath.empty()) options.cameraPath = &doc.cameraPath;
+    saveGltf(doc.scene, autosaveFile(), options);
+    const nlohmann::json marker = {
+        {"version", kMarkerVersion},
+        {"document", doc.file.string()},
+        {"savedAt", static_cast<std::int64_t>(std::time(nullptr))},
+        {"settings", nlohmann::json::parse(toJson(doc.settings))},
+    };
+    writeFileAtomically(markerFile(), marker.dump(2) + "\n");
+    written_ = doc.capture();
+    writtenSettings_ = doc.settings;
+    writtenFile_ = doc.file;
+}
+
+std::optional<AutosaveInfo> Autosave::recoverable() const { return recoverable_; }
+
+Document Autosave::recover(Log& log) {
+    if (!recoverable_) throw std::runtime_error("there is no autosave to recover");
+    const std::optional<std::string> text = readTextFile(markerFile());
+    if (!text) throw std::runtime_error("cannot read " + markerFile().string());
+    const nlohmann::json marker = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
+    if (!marker.is_object()) throw std::runtime_error(markerFile().string() + " is not a JSON object");
+
+    Document doc = loadScene(autosaveFile(), recoverable_->documentFile, log);
+    if (auto settings = marker.find("settings"); settings != marker.end()) {
+        try {
+            doc.settings = renderSettingsFromJson(settings->dump());
+        } catch (const std::exception& e) {
+            log.warning(markerFile().string() + ": " + e.what() + "; using the default render settings");
+        }
+    }
+    doc.markUnsaved();
+    // This session's copies may be written from now on (the recovered one is theirs to replace).
+    recoverable_.reset();
+    written_ = doc.capture();
+    writtenSettings_ = doc.settings;
+    writtenFile_ = doc.file;
+    return doc;
+}
+
+void Autosave::discard() {
+    recoverable_.reset();
+    written_.reset();
+    if (!active_) return;  // the files, if any, are another editor's
+    removeQuietly(autosaveFile());
+    removeQuietly(markerFile());
+}
+
+void Autosave::cleanExit() {
+    if (!active_) return;  // the lock, if any, is another editor's
+    // A crash's copy the user neither recovered nor discarded stays on offer: the lock (now
+    // naming this process, which is ending) keeps marking it as left by a crash.
+    if (!recoverable_) {
+        discard();
+        removeQuietly(lockFile());
+    }
+    active_ = false;
+}
+
+}  // namespace lit::editor

@@ -1,0 +1,207 @@
+#include "PathEditing.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace lit::editor {
+
+namespace {
+
+std::vector<CameraKey> keysOf(const Document& doc) { return doc.cameraPath.keys(); }
+
+bool parseNumber(const std::string& text, double& value) {
+    const char* end = text.data() + text.size();
+    const auto [ptr, error] = std::from_chars(text.data(), end, value);
+    return error == std::errc{} && ptr == end && std::isfinite(value);
+}
+
+bool parseIndex(const std::string& text, std::size_t count, std::size_t& index, std::string& error) {
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, index);
+    if (ec != std::errc{} || ptr != end) {
+        error = "expected a key index, got '" + text + "'";
+        return false;
+    }
+    if (index >= count) {
+        error = "no key " + text + " (the path has " + std::to_string(count) + " keys)";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+CameraKey keyFromCamera(const FlyCamera& camera, float time) {
+    const CameraView view = camera.view(1.0f, 0.1f, 10.0f);
+    const glm::mat4 world = glm::inverse(view.view);
+    CameraKey key;
+    key.time = time;
+    key.position = camera.position;
+    key.rotation = glm::normalize(glm::quat_cast(glm::mat3(world)));
+    key.yfov = camera.yfov;
+    return key;
+}
+
+void applyPoseToCamera(const CameraPose& pose, FlyCamera& camera) {
+    CameraView view;
+    view.view = glm::inverse(pose.world());
+    view.position = pose.position;
+    view.yfov = pose.yfov;
+    camera.setFromView(view);
+    camera.position = pose.position;
+    camera.yfov = pose.yfov;
+}
+
+std::size_t addKey(Document& doc, CameraKey key) {
+    std::vector<CameraKey> keys = keysOf(doc);
+    // Move past every key the new one would collide with (keys are sorted by time).
+    for (const CameraKey& existing : keys)
+        if (std::abs(existing.time - key.time) < kMinKeySpacing) key.time = existing.time + kMinKeySpacing;
+    doc.beginEdit("Add Key");
+    const std::size_t index = doc.cameraPath.insertKey(key);
+    doc.touched(Change::CameraPath);
+    doc.endEdit();
+    doc.selectedKey = static_cast<int>(index);
+    return index;
+}
+
+bool deleteKey(Document& doc, std::size_t index) {
+    if (index >= doc.cameraPath.keys().size()) return false;
+    doc.beginEdit("Delete Key");
+    doc.cameraPath.removeKey(index);
+    doc.touched(Change::CameraPath);
+    doc.endEdit();
+    const int remaining = static_cast<int>(doc.cameraPath.keys().size());
+    doc.selectedKey = remaining == 0 ? -1 : std::min(static_cast<int>(index), remaining - 1);
+    return true;
+}
+
+float clampKeyTime(const CameraPath& path, std::size_t index, float time) {
+    const std::vector<CameraKey>& keys = path.keys();
+    if (index >= keys.size() || !std::isfinite(time)) return index < keys.size() ? keys[index].time : 0.0f;
+    float lo = -1e30f, hi = 1e30f;
+    if (index > 0) lo = keys[index - 1].time + kMinKeySpacing;
+    if (index + 1 < keys.size()) hi = keys[index + 1].time - kMinKeySpacing;
+    if (lo > hi) return keys[index].time;  // no room: keep it where it is
+    return std::clamp(time, lo, hi);
+}
+
+bool setKeyValues(Document& doc, std::size_t index, CameraKey key) {
+    if (index >= doc.cameraPath.keys().size()) return false;
+    key.time = clampKeyTime(doc.cameraPath, index, key.time);
+    key.yfov = std::clamp(key.yfov, 0.01f, 3.1f);
+    if (glm::length(key.rotation) < 1e-6f) key.rotation = doc.cameraPath.keys()[index].rotation;
+    key.rotation = glm::normalize(key.rotation);
+    try {
+        doc.cameraPath.setKey(index, key);
+    } catch (const CameraPathError&) {
+        return false;  // e.g. a non-finite position typed in: the key stays as it was
+    }
+    doc.touched(Change::CameraPath);
+    return true;
+}
+
+bool retimeKey(Document& doc, std::size_t index, float time) {
+    if (index >= doc.cameraPath.keys().size()) return false;
+    CameraKey key = doc.cameraPath.keys()[index];
+    key.time = time;
+    doc.beginEdit("Retime Key");
+    const bool ok = setKeyValues(doc, index, key);
+    doc.endEdit();
+    return ok;
+}
+
+bool updateKeyFromCamera(Document& doc, std::size_t index, const FlyCamera& camera) {
+    if (index >= doc.cameraPath.keys().size()) return false;
+    doc.beginEdit("Update Key");
+    const bool ok = setKeyValues(doc, index, keyFromCamera(camera, doc.cameraPath.keys()[index].time));
+    doc.endEdit();
+    return ok;
+}
+
+void setPathOptions(Document& doc, const CameraPathOptions& options) {
+    doc.beginEdit("Path Options");
+    doc.cameraPath.setOptions(options);
+    doc.touched(Change::CameraPath);
+    doc.endEdit();
+}
+
+void PathPlayback::advance(const CameraPath& path, double dtSeconds) {
+    if (!playing || path.empty()) return;
+    time += dtSeconds * static_cast<double>(speed);
+    const double start = path.startTime(), end = path.endTime();
+    if (path.options().loop && end > start) {
+        time = start + std::fmod(std::fmod(time - start, end - start) + (end - start), end - start);
+    } else if (time >= end) {
+        time = end;
+        playing = false;
+    } else if (time < start) {
+        time = start;
+        playing = false;
+    }
+}
+
+void PathPlayback::play(const CameraPath& path) {
+    if (path.empty()) return;
+    if (!path.options().loop && time >= path.endTime()) time = path.startTime();
+    playing = true;
+}
+
+std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& camera, const std::string& name,
+                           const std::vector<std::string>& args) {
+    auto pointCamera = [&] {
+        if (const auto pose = doc.cameraPath.evaluate(playback.time)) applyPoseToCamera(*pose, camera);
+    };
+    const std::size_t count = doc.cameraPath.keys().size();
+    std::string error;
+    std::size_t index = 0;
+    double value = 0.0;
+    if (name == "play") {
+        if (doc.cameraPath.empty()) return "the camera path has no keys to play";
+        playback.play(doc.cameraPath);
+        return "";
+    }
+    if (name == "pause") {
+        playback.playing = false;
+        return "";
+    }
+    if (name == "time") {
+        if (args.size() != 1 || !parseNumber(args[0], value)) return "time: expected seconds";
+        playback.time = value;
+        pointCamera();
+        return "";
+    }
+    if (name != "key" || args.empty()) return "unknown camera path command '" + name + "'";
+    const std::string& action = args[0];
+    if (action == "add") {
+        if (args.size() != 1) return "key add takes no values";
+        addKey(doc, keyFromCamera(camera, static_cast<float>(playback.time)));
+        return "";
+    }
+    if (args.size() < 2) return "key " + action + ": expected a key index";
+    if (!parseIndex(args[1], count, index, error)) return "key " + action + ": " + error;
+    if (action == "delete") {
+        deleteKey(doc, index);
+        return "";
+    }
+    if (action == "select") {
+        doc.selectedKey = static_cast<int>(index);
+        playback.time = doc.cameraPath.keys()[index].time;
+        pointCamera();
+        return "";
+    }
+    if (action == "update") {
+        updateKeyFromCamera(doc, index, camera);
+        return "";
+    }
+    if (action == "time") {
+        if (args.size() != 3 || !parseNumber(args[2], value)) return "key time: expected an index and seconds";
+        retimeKey(doc, index, static_cast<float>(value));
+        return "";
+    }
+    return "unknown key action '" + action + "' (add, delete, select, time, update)";
+}
+
+}  // namespace lit::editor

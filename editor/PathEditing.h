@@ -1,0 +1,62 @@
+#pragma once
+// Camera path editing for the timeline panel and the script's key/play/time commands:
+// each action is one undo step on the Document, and playback state lives beside it.
+// Window-free (lit_editor_core), so the tests drive it directly.
+
+#include <optional>
+#include <string>
+
+#include "Document.h"
+#include "animation/CameraPath.h"
+#include "scene/CameraView.h"
+
+namespace lit::editor {
+
+// Keys closer than this in time are one key: adding at an occupied time moves the new key on.
+inline constexpr float kMinKeySpacing = 1.0f / 120.0f;  // seconds
+
+// The key a fly camera gives: its position, orientation and field of view at `time`.
+CameraKey keyFromCamera(const FlyCamera& camera, float time);
+// Points a fly camera the way a path pose looks (yaw/pitch from the rotation; roll is dropped,
+// the fly camera has none).
+void applyPoseToCamera(const CameraPose& pose, FlyCamera& camera);
+
+// Adds `key` as one undo step ("Add Key"); when its time is taken it goes kMinKeySpacing after
+// the last key at or after it. Selects it and returns its index.
+std::size_t addKey(Document& doc, CameraKey key);
+// Deletes key `index` ("Delete Key"); the selection moves to a neighbour. Returns false (and
+// changes nothing) for an index out of range.
+bool deleteKey(Document& doc, std::size_t index);
+// The time key `index` may be given: strictly between its neighbours (by kMinKeySpacing).
+float clampKeyTime(const CameraPath& path, std::size_t index, float time);
+// Sets key `index`'s values, clamping its time as above. Not an undo step by itself: the
+// caller brackets it (a drag is one step). Returns false for an index out of range.
+bool setKeyValues(Document& doc, std::size_t index, CameraKey key);
+// One-shot forms with their own undo step.
+bool retimeKey(Document& doc, std::size_t index, float time);                  // "Retime Key"
+bool updateKeyFromCamera(Document& doc, std::size_t index, const FlyCamera& camera);  // "Update Key"
+// Path options as one undo step ("Path Options").
+void setPathOptions(Document& doc, const CameraPathOptions& options);
+
+// Where the playhead is and whether it moves. The path's own `loop` option decides whether the
+// playhead wraps at the end; without it playback stops at the end.
+struct PathPlayback {
+    double time = 0.0;    // seconds, in the path's time
+    bool playing = false;
+    float speed = 1.0f;   // playback rate
+    bool lookThrough = true;  // the viewport looks through the path camera while playing/scrubbing
+
+    // Advances by dtSeconds × speed when playing; wraps (loop) or stops at the end.
+    void advance(const CameraPath& path, double dtSeconds);
+    // Starts playing; from the start when the playhead is at (or past) the end of an open path.
+    void play(const CameraPath& path);
+};
+
+// Applies one script command of the timeline family (key add|delete|select I|time I T|update I,
+// play, pause, time T) to the document, playback and fly camera. Returns "" or an error message.
+// "key add" adds a key from `camera` at the playhead; "key select I" moves the playhead to the
+// key and, like clicking it, points the camera there.
+std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& camera, const std::string& name,
+                           const std::vector<std::string>& args);
+
+}  // namespace lit::editor

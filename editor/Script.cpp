@@ -1,0 +1,176 @@
+#include "Script.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "Properties.h"
+#include "RenderSettings.h"
+#include "SettingCommand.h"
+
+namespace lit::editor {
+
+namespace {
+
+constexpr std::array<std::string_view, 7> kPanels{"hierarchy", "inspector", "settings", "stats",
+                                                  "camera",    "log",       "timeline"};
+
+bool isSpace(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+
+std::string_view trim(std::string_view text) {
+    while (!text.empty() && isSpace(text.front())) text.remove_prefix(1);
+    while (!text.empty() && isSpace(text.back())) text.remove_suffix(1);
+    return text;
+}
+
+// The first word of `text` and the (trimmed) rest.
+std::pair<std::string_view, std::string_view> firstWord(std::string_view text) {
+    text = trim(text);
+    std::size_t end = 0;
+    while (end < text.size() && !isSpace(text[end])) ++end;
+    return {text.substr(0, end), trim(text.substr(end))};
+}
+
+std::vector<std::string> splitWords(std::string_view text) {
+    std::vector<std::string> words;
+    for (auto [word, rest] = firstWord(text); !word.empty(); std::tie(word, rest) = firstWord(rest))
+        words.emplace_back(word);
+    return words;
+}
+
+bool isNumber(const std::string& text) {
+    double value = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value);
+}
+
+bool isCount(const std::string& text, long minimum) {
+    long value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return ec == std::errc() && end == text.data() + text.size() && value >= minimum;
+}
+
+std::string plural(std::size_t n, const char* word) {
+    return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+// Checks one command; returns "" or the message.
+std::string check(const ScriptCommand& c) {
+    const std::string& name = c.name;
+    const std::vector<std::string>& a = c.args;
+    auto count = [&](std::size_t minimum, std::size_t maximum, const char* usage) -> std::string {
+        if (a.size() >= minimum && a.size() <= maximum) return "";
+        return name + ": expected " + usage + ", got " + plural(a.size(), "argument");
+    };
+    if (name == "select") return count(1, 1, "a node name (or - for none)");
+    if (name == "set") {
+        if (a.size() < 2) return "set: expected a property and a value";
+        return checkPropertyValue(a[0], a[1]);
+    }
+    if (name == "setting") {
+        if (auto e = count(2, 2, "a setting name and a value"); !e.empty()) return e;
+        RenderSettings settings;
+        return applySetting(settings, a[0], a[1]);
+    }
+    if (name == "view") {
+        if (auto e = count(1, 1, "a view name"); !e.empty()) return e;
+        // "cone-directions" is the editor's own view (cones drawn over the final image).
+        return parseView(a[0]) || a[0] == kConeDirectionsView ? "" : "unknown view '" + a[0] + "'";
+    }
+    if (name == "panel") {
+        if (auto e = count(2, 2, "a panel name and on|off"); !e.empty()) return e;
+        if (std::find(kPanels.begin(), kPanels.end(), a[0]) == kPanels.end())
+            return "unknown panel '" + a[0] + "' (hierarchy, inspector, settings, stats, camera, log, timeline)";
+        return a[1] == "on" || a[1] == "off" ? "" : "panel: expected on or off, got '" + a[1] + "'";
+    }
+    if (name == "pick") {
+        if (auto e = count(2, 2, "X and Y window pixels"); !e.empty()) return e;
+        for (const std::string& v : a)
+            if (!isNumber(v) || v.front() == '-') return "pick: expected a pixel position, got '" + v + "'";
+        return "";
+    }
+    if (name == "screenshot") {
+        if (auto e = count(1, 2, "a file and optionally ui|noui"); !e.empty()) return e;
+        return a.size() == 1 || a[1] == "ui" || a[1] == "noui" ? "" : "screenshot: expected ui or noui, got '" + a[1] + "'";
+    }
+    if (name == "save") return count(0, 1, "at most a file");
+    if (name == "open") return count(1, 1, "a file");
+    if (name == "undo" || name == "redo" || name == "play" || name == "pause" || name == "quit")
+        return count(0, 0, "no arguments");
+    if (name == "wait") {
+        if (auto e = count(1, 1, "a number of frames"); !e.empty()) return e;
+        return isCount(a[0], 1) ? "" : "wait: expected a whole number of frames (1 or more), got '" + a[0] + "'";
+    }
+    if (name == "time") {
+        if (auto e = count(1, 1, "a time in seconds"); !e.empty()) return e;
+        return isNumber(a[0]) ? "" : "time: expected seconds, got '" + a[0] + "'";
+    }
+    if (name == "key") {
+        if (a.empty()) return "key: expected add, delete I, select I, time I T or update I";
+        const std::string& action = a[0];
+        std::size_t values = 0;
+        if (action == "add") values = 0;
+        else if (action == "delete" || action == "select" || action == "update") values = 1;
+        else if (action == "time") values = 2;
+        else return "unknown key action '" + action + "' (add, delete, select, time, update)";
+        if (a.size() != values + 1)
+            return "key " + action + ": expected " + (values == 0 ? std::string("no values") : plural(values, "value")) +
+                   ", got " + std::to_string(a.size() - 1);
+        if (values >= 1 && !isCount(a[1], 0)) return "key " + action + ": expected a key index, got '" + a[1] + "'";
+        if (values == 2 && !isNumber(a[2])) return "key time: expected seconds, got '" + a[2] + "'";
+        return "";
+    }
+    return "unknown command '" + name + "'";
+}
+
+}  // namespace
+
+std::string scriptErrorAt(const ScriptCommand& command, const std::string& source, const std::string& message) {
+    return source + ":" + std::to_string(command.line) + ": " + message;
+}
+
+std::vector<ScriptCommand> parseScript(std::string_view text, const std::string& source) {
+    std::vector<ScriptCommand> commands;
+    int lineNumber = 0;
+    for (std::size_t pos = 0; pos <= text.size();) {
+        const std::size_t end = std::min(text.find('\n', pos), text.size());
+        std::string_view line = text.substr(pos, end - pos);
+        pos = end + 1;
+        ++lineNumber;
+        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        const auto [name, rest] = firstWord(line);
+        if (name.empty()) continue;
+        ScriptCommand command;
+        command.line = lineNumber;
+        command.name = std::string(name);
+        if (name == "set") {
+            // The value is the rest of the line (node.name may hold spaces).
+            const auto [property, value] = firstWord(rest);
+            if (!property.empty()) command.args.emplace_back(property);
+            if (!value.empty()) command.args.emplace_back(value);
+        } else if (name == "select") {
+            if (!rest.empty()) command.args.emplace_back(rest);  // node names may hold spaces
+        } else {
+            command.args = splitWords(rest);
+        }
+        if (const std::string error = check(command); !error.empty())
+            throw ScriptError(scriptErrorAt(command, source, error));
+        commands.push_back(std::move(command));
+    }
+    return commands;
+}
+
+std::vector<ScriptCommand> loadScript(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw ScriptError(file.string() + ": cannot open the script");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw ScriptError(file.string() + ": cannot read the script");
+    return parseScript(text.str(), file.string());
+}
+
+}  // namespace lit::editor

@@ -1,0 +1,35 @@
+#pragma once
+// What the editor draws over the viewport each frame, gathered from the document and the
+// editor's state: markers for lights and cameras, the selection outline and its translate
+// gizmo, the camera path as a curve with small frusta at its keys, and the cones of the
+// "cone directions" debug view. Window-free (lit_editor_core): the renderer draws the result.
+
+#include <glm/glm.hpp>
+#include <optional>
+
+#include "Document.h"
+#include "Overlay.h"
+#include "scene/CameraView.h"
+
+namespace lit::editor {
+
+struct OverlayOptions {
+    bool markers = true;      // light and camera markers
+    bool gizmo = true;        // the translate gizmo on the selected node
+    bool cameraPath = true;   // the path curve and key frusta
+    int hoveredGizmoAxis = -1;  // drawn brighter / thicker (0 X, 1 Y, 2 Z)
+    // Cone directions view: the surface picked for it, and the camera it was seen from.
+    std::optional<SurfaceSample> coneSurface;
+    glm::vec3 coneCameraPosition{0.0f};
+};
+
+// Samples per path segment for the curve: smooth at editor sizes, cheap to rebuild each frame.
+inline constexpr int kPathCurveSamplesPerKey = 24;
+
+ViewportOverlay buildViewportOverlay(const Document& doc, const CameraView& view, glm::vec2 viewport,
+                                     const OverlayOptions& options);
+
+// The world position of node `index` (its world matrix's translation), for the gizmo.
+glm::vec3 nodeWorldPosition(const Scene& scene, int index);
+
+}  // namespace lit::editor

@@ -1,0 +1,36 @@
+#pragma once
+// Modal questions the App asks before it loses work: "Save changes to box.gltf?" (Save /
+// Discard / Cancel) and "Recover the autosave?" (Recover / Discard). The App asks, draws the
+// dialog every frame and acts on the answer when one comes.
+
+#include <string>
+
+namespace lit::editor {
+
+struct Question {
+    std::string title;     // window title, also the popup's ID
+    std::string message;
+    std::string yes;       // "Save", "Recover"
+    std::string no;        // "Discard"
+    bool cancellable = true;  // shows Cancel (and Escape cancels)
+};
+
+enum class Answer { None, Yes, No, Cancel };
+
+class QuestionDialog {
+public:
+    // Shows `question` from the next draw() on, replacing any question still open.
+    void ask(Question question);
+    bool asking() const { return asking_; }
+    // Draws the dialog while a question is open. Returns the answer on the frame it is given
+    // (the dialog closes then), else Answer::None. A dialog closed by anything but its buttons
+    // answers Cancel, even when it shows no Cancel button.
+    Answer draw();
+
+private:
+    Question question_;
+    bool asking_ = false;
+    bool openPending_ = false;  // ImGui::OpenPopup still to be called (outside any menu scope)
+};
+
+}  // namespace lit::editor

@@ -1,0 +1,239 @@
+#include "panels/InspectorPanel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace lit::editor {
+
+namespace {
+
+constexpr float kDegPerRad = 57.2957795f;
+
+// The undo bracket around the widget just drawn. The widget edits a copy of the value, and
+// `apply` writes it into the scene only after beginEdit has taken its snapshot: a slider jumps
+// to the clicked value on the very frame it activates.
+template <class Apply>
+void track(Document& doc, const char* label, Change change, bool changed, Apply&& apply) {
+    if (ImGui::IsItemActivated()) doc.beginEdit(label);
+    if (changed) {
+        // A colour picker popup changes the value without activating this item; the App ends such
+        // an edit once no widget is active any more, so a pick in the popup is one step too.
+        if (!doc.editOpen()) doc.beginEdit(label);
+        apply();
+        doc.touched(change);
+    }
+    if (ImGui::IsItemDeactivated()) doc.endEdit();
+}
+
+// Linear colours, edited as numbers (0..1 and above for HDR) with a swatch.
+constexpr ImGuiColorEditFlags kColourFlags = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
+
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+const char* lightTypeName(LightType type) {
+    switch (type) {
+    case LightType::Directional: return "Directional";
+    case LightType::Point: return "Point";
+    case LightType::Spot: return "Spot";
+    }
+    return "?";
+}
+
+}  // namespace
+
+void InspectorPanel::draw(Document& doc, const Placement& placement, bool* open) {
+    placeNextWindow(placement);
+    if (ImGui::Begin("Inspector", open)) {
+        Scene& scene = doc.scene;
+        const int selected = doc.selectedNode;
+        if (selected < 0 || selected >= static_cast<int>(scene.nodes.size())) {
+            ImGui::TextDisabled("Nothing selected.");
+            ImGui::TextDisabled("Click a node in the Hierarchy.");
+        } else {
+            const Node& node = scene.nodes[static_cast<std::size_t>(selected)];
+            ImGui::TextUnformatted(node.name.empty() ? "(unnamed node)" : node.name.c_str());
+            ImGui::Separator();
+            // Room for the longest label on the right, but at least half the width for the values.
+            const float labelWidth = ImGui::CalcTextSize("Emissive strength").x + ImGui::GetStyle().ItemInnerSpacing.x;
+            ImGui::PushItemWidth(-std::min(labelWidth, ImGui::GetContentRegionAvail().x * 0.5f));
+            if (ImGui::CollapsingHeader("Transform", ImGuiTreeNodeFlags_DefaultOpen)) drawTransform(doc, selected);
+            if (node.mesh >= 0 && node.mesh < static_cast<int>(scene.meshes.size())) {
+                const Mesh& mesh = scene.meshes[static_cast<std::size_t>(node.mesh)];
+                if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+                    const int material = mesh.primitives.empty() ? -1 : mesh.primitives.front().material;
+                    if (material < 0 || material >= static_cast<int>(scene.materials.size()))
+                        ImGui::TextDisabled("The default material (not editable).");
+                    else
+                        drawMaterial(doc, material);
+                }
+            }
+            if (node.light >= 0 && node.light < static_cast<int>(scene.lights.size()) &&
+                ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen))
+                drawLight(doc, node.light);
+            if (node.camera >= 0 && node.camera < static_cast<int>(scene.cameras.size()) &&
+                ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
+                drawCamera(doc, node.camera);
+            ImGui::PopItemWidth();
+        }
+    }
+    ImGui::End();
+}
+
+void InspectorPanel::drawTransform(Document& doc, int nodeIndex) {
+    Node& node = doc.scene.nodes[static_cast<std::size_t>(nodeIndex)];
+    ImGui::PushID("transform");
+
+    glm::vec3 translation = node.translation;
+    bool changed = ImGui::DragFloat3("Translation", &translation.x, 0.01f, 0.0f, 0.0f, "%.3f");
+    tooltip("Metres, in the parent's space");
+    track(doc, "Move", Change::Transform, changed, [&] { node.translation = translation; });
+
+    if (euler_.node != nodeIndex || euler_.rotation != node.rotation) {
+        glm::vec3 degrees = glm::eulerAngles(node.rotation) * kDegPerRad;
+        // Rounding noise from the conversion would show as "-0.0".
+        for (int axis = 0; axis < 3; ++axis)
+            if (std::fabs(degrees[axis]) < 1e-3f) degrees[axis] = 0.0f;
+        euler_ = {nodeIndex, node.rotation, degrees};
+    }
+    glm::vec3 degrees = euler_.degrees;
+    changed = ImGui::DragFloat3("Rotation", &degrees.x, 0.5f, 0.0f, 0.0f, "%.1f");
+    tooltip("Degrees: pitch (X), yaw (Y), roll (Z)");
+    track(doc, "Rotate", Change::Transform, changed, [&] {
+        node.rotation = glm::quat(degrees / kDegPerRad);
+        euler_ = {nodeIndex, node.rotation, degrees};
+    });
+
+    glm::vec3 scale = node.scale;
+    changed = ImGui::DragFloat3("Scale", &scale.x, 0.01f, 0.0f, 0.0f, "%.3f");
+    track(doc, "Scale", Change::Transform, changed, [&] { node.scale = scale; });
+    ImGui::PopID();
+}
+
+void InspectorPanel::drawMaterial(Document& doc, int materialIndex) {
+    Material& material = doc.scene.materials[static_cast<std::size_t>(materialIndex)];
+    ImGui::PushID("material");
+    ImGui::TextDisabled("%s", material.name.empty() ? "(unnamed material)" : material.name.c_str());
+
+    glm::vec3 albedo = glm::vec3(material.baseColorFactor);
+    bool changed = ImGui::ColorEdit3("Albedo", &albedo.x, kColourFlags);
+    tooltip("Base colour factor, linear RGB (multiplies the texture)");
+    track(doc, "Albedo", Change::Material, changed, [&] {
+        material.baseColorFactor = glm::vec4(albedo, material.baseColorFactor.a);
+    });
+
+    // On/off for the base colour texture; off keeps the index in the Document so on restores it.
+    const int remembered = doc.rememberedAlbedoTexture(materialIndex);
+    bool textured = material.baseColorTexture >= 0;
+    ImGui::BeginDisabled(remembered < 0 && !textured);
+    if (ImGui::Checkbox("Albedo texture", &textured)) {
+        doc.edit(textured ? "Albedo Texture On" : "Albedo Texture Off", Change::Material,
+                 [&](Scene& scene) {
+                     scene.materials[static_cast<std::size_t>(materialIndex)].baseColorTexture =
+                         textured ? remembered : -1;
+                 });
+    }
+    ImGui::EndDisabled();
+    if (remembered < 0 && !textured) tooltip("This material has no base colour texture");
+
+    float roughness = material.roughness;
+    changed = ImGui::SliderFloat("Roughness", &roughness, 0.0f, 1.0f, "%.3f");
+    tooltip("Perceptual roughness (GGX alpha = roughness^2)");
+    track(doc, "Roughness", Change::Material, changed, [&] { material.roughness = roughness; });
+
+    float metalness = material.metallic;
+    changed = ImGui::SliderFloat("Metalness", &metalness, 0.0f, 1.0f, "%.3f");
+    track(doc, "Metalness", Change::Material, changed, [&] { material.metallic = metalness; });
+
+    glm::vec3 emissive = material.emissiveFactor;
+    changed = ImGui::ColorEdit3("Emissive", &emissive.x, kColourFlags);
+    tooltip("Emissive colour, linear RGB");
+    track(doc, "Emissive", Change::Material, changed, [&] { material.emissiveFactor = emissive; });
+
+    float strength = material.emissiveStrength;
+    changed = ImGui::DragFloat("Emissive strength", &strength, 0.05f, 0.0f, 1000.0f, "%.2f");
+    tooltip("Multiplier on the emissive colour (KHR_materials_emissive_strength)");
+    track(doc, "Emissive Strength", Change::Material, changed, [&] { material.emissiveStrength = strength; });
+    ImGui::PopID();
+}
+
+void InspectorPanel::drawLight(Document& doc, int lightIndex) {
+    Light& light = doc.scene.lights[static_cast<std::size_t>(lightIndex)];
+    ImGui::PushID("light");
+
+    // A combo's choice is made in its popup, not on the combo item: one-shot edit.
+    if (ImGui::BeginCombo("Type", lightTypeName(light.type))) {
+        for (const LightType type : {LightType::Directional, LightType::Point, LightType::Spot}) {
+            if (ImGui::Selectable(lightTypeName(type), type == light.type) && type != light.type)
+                doc.edit("Light Type", Change::Light,
+                         [&](Scene& scene) { scene.lights[static_cast<std::size_t>(lightIndex)].type = type; });
+        }
+        ImGui::EndCombo();
+    }
+
+    glm::vec3 colour = light.color;
+    bool changed = ImGui::ColorEdit3("Colour", &colour.x, kColourFlags);
+    tooltip("Linear RGB, multiplied by the intensity");
+    track(doc, "Light Colour", Change::Light, changed, [&] { light.color = colour; });
+
+    // glTF's units: luminous intensity for point and spot lights, illuminance for the sun.
+    const bool directional = light.type == LightType::Directional;
+    float intensity = light.intensity;
+    changed = ImGui::DragFloat(directional ? "Intensity (lux)" : "Intensity (cd)", &intensity, 0.05f, 0.0f, 1.0e6f,
+                               "%.3f", ImGuiSliderFlags_Logarithmic);
+    tooltip(directional ? "Illuminance in lux (lm/m^2)" : "Luminous intensity in candela (lm/sr)");
+    track(doc, "Light Intensity", Change::Light, changed, [&] { light.intensity = intensity; });
+
+    if (!directional) {
+        float range = light.range;
+        changed = ImGui::DragFloat("Range (m)", &range, 0.05f, 0.0f, 1.0e4f, range > 0.0f ? "%.2f" : "infinite");
+        tooltip("Distance where the light fades out, metres; 0 = infinite");
+        track(doc, "Light Range", Change::Light, changed, [&] { light.range = range; });
+    }
+    if (light.type == LightType::Spot) {
+        float inner = light.innerConeAngle * kDegPerRad;
+        changed = ImGui::SliderFloat("Inner angle", &inner, 0.0f, light.outerConeAngle * kDegPerRad, "%.1f deg");
+        tooltip("Full intensity inside this angle from the axis");
+        track(doc, "Spot Inner Angle", Change::Light, changed, [&] { light.innerConeAngle = inner / kDegPerRad; });
+
+        float outer = light.outerConeAngle * kDegPerRad;
+        changed = ImGui::SliderFloat("Outer angle", &outer, 0.0f, 90.0f, "%.1f deg");
+        tooltip("No light outside this angle from the axis");
+        track(doc, "Spot Outer Angle", Change::Light, changed, [&] {
+            light.outerConeAngle = outer / kDegPerRad;
+            light.innerConeAngle = std::min(light.innerConeAngle, light.outerConeAngle);
+        });
+    }
+
+    bool shadow = light.castsShadow;
+    if (ImGui::Checkbox("Casts shadow", &shadow))
+        doc.edit(shadow ? "Shadow On" : "Shadow Off", Change::Light,
+                 [&](Scene& scene) { scene.lights[static_cast<std::size_t>(lightIndex)].castsShadow = shadow; });
+    ImGui::PopID();
+}
+
+void InspectorPanel::drawCamera(Document& doc, int cameraIndex) {
+    Camera& camera = doc.scene.cameras[static_cast<std::size_t>(cameraIndex)];
+    ImGui::PushID("camera");
+
+    float fov = camera.yfov * kDegPerRad;
+    bool changed = ImGui::SliderFloat("Field of view", &fov, 5.0f, 150.0f, "%.1f deg");
+    tooltip("Vertical field of view");
+    track(doc, "Camera FOV", Change::Camera, changed, [&] { camera.yfov = fov / kDegPerRad; });
+
+    float znear = camera.znear;
+    changed = ImGui::DragFloat("Near (m)", &znear, 0.001f, 0.001f, 100.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    track(doc, "Camera Near", Change::Camera, changed, [&] { camera.znear = znear; });
+
+    float zfar = camera.zfar;
+    changed = ImGui::DragFloat("Far (m)", &zfar, 0.1f, 0.0f, 1.0e5f, zfar > 0.0f ? "%.2f" : "fitted");
+    tooltip("Far plane, metres; 0 = fitted to the scene");
+    track(doc, "Camera Far", Change::Camera, changed, [&] { camera.zfar = zfar; });
+    ImGui::PopID();
+}
+
+}  // namespace lit::editor

@@ -1,0 +1,243 @@
+#include "panels/TimelinePanel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/gtc/quaternion.hpp>
+
+namespace lit::editor {
+
+namespace {
+
+constexpr float kRulerHeight = 44.0f;  // ImGui units
+constexpr float kKeyRadius = 6.0f;     // half the diamond's width
+constexpr float kDegPerRad = 57.2957795f;
+
+// Time shown across the ruler: the path's keys with a margin, at least one second.
+struct TimeRange {
+    double start = 0.0, end = 1.0;
+    float toX(double t, float x0, float width) const {
+        return x0 + static_cast<float>((t - start) / (end - start)) * width;
+    }
+    double toTime(float x, float x0, float width) const { return start + (x - x0) / width * (end - start); }
+};
+
+TimeRange rangeOf(const CameraPath& path) {
+    TimeRange range;
+    if (!path.empty()) {
+        range.start = std::min(0.0, static_cast<double>(path.startTime()));
+        range.end = std::max(static_cast<double>(path.endTime()), range.start + 1.0);
+    }
+    const double margin = (range.end - range.start) * 0.04;
+    range.start -= margin;
+    range.end += margin;
+    return range;
+}
+
+// Tick spacing that leaves at least ~60 units between labels.
+double tickStep(const TimeRange& range, float width) {
+    const double seconds = range.end - range.start;
+    for (double step : {0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0, 30.0, 60.0, 120.0, 300.0})
+        if (step / seconds * width >= 60.0) return step;
+    return 600.0;
+}
+
+void lookAtPlayhead(const Document& doc, const PathPlayback& playback, FlyCamera& camera) {
+    if (!playback.lookThrough) return;
+    if (const auto pose = doc.cameraPath.evaluate(playback.time)) applyPoseToCamera(*pose, camera);
+}
+
+// The ruler: ticks, keys, playhead. Click a key to select it (and jump there), drag it to
+// retime (one undo step per drag), click or drag elsewhere to scrub.
+void drawRuler(Document& doc, PathPlayback& playback, FlyCamera& camera, int& draggedKey) {
+    const float width = std::max(ImGui::GetContentRegionAvail().x, 50.0f);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("##ruler", ImVec2(width, kRulerHeight));
+    const bool hovered = ImGui::IsItemHovered();
+    const bool active = ImGui::IsItemActive();
+    const TimeRange range = rangeOf(doc.cameraPath);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + kRulerHeight), IM_COL32(30, 30, 34, 255), 3.0f);
+
+    // Ticks with labels along the top.
+    const double step = tickStep(range, width);
+    for (double t = std::ceil(range.start / step) * step; t <= range.end; t += step) {
+        const float x = range.toX(t, origin.x, width);
+        draw->AddLine(ImVec2(x, origin.y), ImVec2(x, origin.y + 8.0f), IM_COL32(150, 150, 150, 255));
+        char label[32];
+        std::snprintf(label, sizeof label, "%gs", t);
+        draw->AddText(ImVec2(x + 2.0f, origin.y), IM_COL32(150, 150, 150, 255), label);
+    }
+
+    // Keys as diamonds on the middle line.
+    const float keyY = origin.y + kRulerHeight * 0.62f;
+    draw->AddLine(ImVec2(origin.x, keyY), ImVec2(origin.x + width, keyY), IM_COL32(70, 70, 80, 255));
+    const std::vector<CameraKey>& keys = doc.cameraPath.keys();
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    int keyUnderMouse = -1;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        const float x = range.toX(keys[i].time, origin.x, width);
+        const bool selected = static_cast<int>(i) == doc.selectedKey;
+        const float r = selected ? kKeyRadius + 1.5f : kKeyRadius;
+        const ImU32 color = selected ? IM_COL32(255, 170, 40, 255) : IM_COL32(200, 200, 210, 255);
+        draw->AddQuadFilled(ImVec2(x, keyY - r), ImVec2(x + r, keyY), ImVec2(x, keyY + r), ImVec2(x - r, keyY), color);
+        if (hovered && std::abs(mouse.x - x) <= kKeyRadius + 2.0f && std::abs(mouse.y - keyY) <= kKeyRadius + 4.0f)
+            keyUnderMouse = static_cast<int>(i);
+    }
+
+    // Playhead.
+    if (!doc.cameraPath.empty()) {
+        const float x = range.toX(playback.time, origin.x, width);
+        draw->AddLine(ImVec2(x, origin.y), ImVec2(x, origin.y + kRulerHeight), IM_COL32(80, 200, 255, 255), 2.0f);
+    }
+
+    if (ImGui::IsItemActivated()) {
+        if (keyUnderMouse >= 0) {
+            draggedKey = keyUnderMouse;
+            doc.selectedKey = keyUnderMouse;
+            playback.time = keys[static_cast<std::size_t>(keyUnderMouse)].time;
+            playback.playing = false;
+            doc.beginEdit("Retime Key");
+            lookAtPlayhead(doc, playback, camera);
+        } else {
+            draggedKey = -1;
+        }
+    }
+    if (active) {
+        const double t = range.toTime(mouse.x, origin.x, width);
+        if (draggedKey >= 0 && static_cast<std::size_t>(draggedKey) < keys.size()) {
+            if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
+                CameraKey key = keys[static_cast<std::size_t>(draggedKey)];
+                key.time = static_cast<float>(t);
+                setKeyValues(doc, static_cast<std::size_t>(draggedKey), key);
+                playback.time = doc.cameraPath.keys()[static_cast<std::size_t>(draggedKey)].time;
+            }
+        } else if (!doc.cameraPath.empty()) {
+            playback.playing = false;
+            playback.time = std::clamp(t, static_cast<double>(doc.cameraPath.startTime()),
+                                       static_cast<double>(doc.cameraPath.endTime()));
+            lookAtPlayhead(doc, playback, camera);
+        }
+    }
+    if (ImGui::IsItemDeactivated() && draggedKey >= 0) {
+        doc.endEdit();  // one undo step for the whole drag (none if the key did not move)
+        draggedKey = -1;
+    }
+    if (hovered && keyUnderMouse >= 0)
+        ImGui::SetTooltip("key %d at %.3f s (drag to retime)", keyUnderMouse,
+                          static_cast<double>(keys[static_cast<std::size_t>(keyUnderMouse)].time));
+}
+
+// Undo bracket for one widget: the whole interaction (a drag, a typed value) is one step.
+void bracket(Document& doc, const char* label, bool changed, auto&& apply) {
+    if (ImGui::IsItemActivated()) doc.beginEdit(label);
+    if (changed) apply();
+    if (ImGui::IsItemDeactivated()) doc.endEdit();
+}
+
+void drawSelectedKey(Document& doc, FlyCamera& camera, PathPlayback& playback) {
+    const std::vector<CameraKey>& keys = doc.cameraPath.keys();
+    if (doc.selectedKey < 0 || static_cast<std::size_t>(doc.selectedKey) >= keys.size()) {
+        ImGui::TextDisabled("No key selected: click a key on the ruler");
+        return;
+    }
+    const std::size_t index = static_cast<std::size_t>(doc.selectedKey);
+    CameraKey key = keys[index];
+    ImGui::Text("Key %zu", index);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Update from view")) updateKeyFromCamera(doc, index, camera);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Delete")) {
+        deleteKey(doc, index);
+        return;
+    }
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
+    float time = key.time;
+    bool changed = ImGui::DragFloat("Time (s)", &time, 0.01f, 0.0f, 0.0f, "%.3f");
+    bracket(doc, "Retime Key", changed, [&] {
+        key.time = time;
+        setKeyValues(doc, index, key);
+        playback.time = doc.cameraPath.keys()[index].time;
+    });
+    ImGui::SameLine();
+    float fov = key.yfov * kDegPerRad;
+    changed = ImGui::DragFloat("FOV (deg)", &fov, 0.2f, 1.0f, 170.0f, "%.1f");
+    bracket(doc, "Key FOV", changed, [&] {
+        key.yfov = fov / kDegPerRad;
+        setKeyValues(doc, index, key);
+    });
+    ImGui::PopItemWidth();
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+    glm::vec3 position = key.position;
+    changed = ImGui::DragFloat3("Position (m)", &position.x, 0.01f);
+    bracket(doc, "Move Key", changed, [&] {
+        key.position = position;
+        setKeyValues(doc, index, key);
+    });
+    glm::vec3 euler = glm::degrees(glm::eulerAngles(key.rotation));
+    changed = ImGui::DragFloat3("Rotation (deg)", &euler.x, 0.5f);
+    bracket(doc, "Rotate Key", changed, [&] {
+        key.rotation = glm::quat(glm::radians(euler));
+        setKeyValues(doc, index, key);
+    });
+    ImGui::PopItemWidth();
+}
+
+}  // namespace
+
+void TimelinePanel::draw(Document& doc, PathPlayback& playback, FlyCamera& camera, const Placement& placement, bool* open) {
+    placeNextWindow(placement);
+    if (!ImGui::Begin("Timeline", open)) {
+        ImGui::End();
+        return;
+    }
+    CameraPath& path = doc.cameraPath;
+    // Transport and the key actions that need no selection.
+    if (ImGui::Button(playback.playing ? "Pause" : "Play")) {
+        if (playback.playing) playback.playing = false; else playback.play(path);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play the path from the playhead (Space)");
+    ImGui::SameLine();
+    if (ImGui::Button("|<") && !path.empty()) {
+        playback.time = path.startTime();
+        lookAtPlayhead(doc, playback, camera);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the start");
+    ImGui::SameLine();
+    if (ImGui::Button("+ Key")) {
+        addKey(doc, keyFromCamera(camera, static_cast<float>(playback.time)));
+        playback.time = path.keys()[static_cast<std::size_t>(doc.selectedKey)].time;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Add a key at the playhead with the current view");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Speed").x - 8.0f, 60.0f));
+    ImGui::SliderFloat("Speed", &playback.speed, 0.1f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+
+    // Path options, each one undo step.
+    CameraPathOptions options = path.options();
+    bool optionsChanged = ImGui::Checkbox("Loop", &options.loop);
+    ImGui::SameLine();
+    optionsChanged |= ImGui::Checkbox("Even speed", &options.constantSpeed);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Constant speed along the curve, whatever the key spacing");
+    ImGui::SameLine();
+    optionsChanged |= ImGui::Checkbox("Ease", &options.easeInOut);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Start and stop at rest (open paths)");
+    if (optionsChanged) setPathOptions(doc, options);
+    ImGui::SameLine();
+    ImGui::Checkbox("Look through", &playback.lookThrough);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The viewport follows the path while playing or scrubbing");
+
+    if (path.empty())
+        ImGui::TextDisabled("No keys: fly to a view and press + Key");
+    else
+        ImGui::Text("%.2f s of %.2f s, %zu keys%s", playback.time, static_cast<double>(path.endTime()),
+                    path.keys().size(), playback.playing ? ", playing" : "");
+
+    drawRuler(doc, playback, camera, draggedKey_);
+    drawSelectedKey(doc, camera, playback);
+    ImGui::End();
+}
+
+}  // namespace lit::editor

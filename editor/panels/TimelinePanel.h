@@ -1,0 +1,22 @@
+#pragma once
+// The camera path's timeline: keys as markers on a time ruler, a playhead to scrub, play/pause,
+// loop and speed, and the selected key's values. Every change to the path is one undo step on
+// the Document (a key drag too); scrubbing and playing only move the playhead and, when
+// "look through" is on, the fly camera.
+
+#include "Document.h"
+#include "PathEditing.h"
+#include "panels/Layout.h"
+#include "scene/CameraView.h"
+
+namespace lit::editor {
+
+class TimelinePanel {
+public:
+    void draw(Document& doc, PathPlayback& playback, FlyCamera& camera, const Placement& placement, bool* open);
+
+private:
+    int draggedKey_ = -1;  // key being dragged on the ruler, -1 when none
+};
+
+}  // namespace lit::editor

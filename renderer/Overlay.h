@@ -1,0 +1,44 @@
+#pragma once
+// What a front end asks the renderer to draw over the viewport (selection outline, gizmo, light
+// and camera markers, debug lines) and what it reads back from a pixel (picking). Plain data: the
+// editor fills it, Renderer::setOverlay hands it to OverlayPass, Renderer::surfaceAt returns it.
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace lit {
+
+// A world-space line segment with a linear RGBA colour (alpha blends it over the image).
+struct OverlayLine {
+    glm::vec3 a{0.0f}, b{0.0f};  // end points, world space (m)
+    glm::vec4 color{1.0f};       // linear RGB, alpha = opacity
+};
+
+struct ViewportOverlay {
+    // Node whose visible pixels get an orange outline (2 px, outside the object); -1 = none.
+    int highlightNode = -1;
+    // Depth-tested against the scene: the parts behind geometry are drawn faint, not hidden, so
+    // markers inside walls stay findable.
+    std::vector<OverlayLine> lines;
+    // Never hidden (translate gizmo): drawn last, over everything.
+    std::vector<OverlayLine> linesOnTop;
+
+    bool empty() const { return highlightNode < 0 && lines.empty() && linesOnTop.empty(); }
+};
+
+// The surface seen through one pixel of the last frame, read back from the G-buffer.
+struct SurfaceSample {
+    glm::vec3 position{0.0f};  // world (m), from the depth buffer and the frame's inverse view-projection
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};  // world, unit (as stored: facing the camera)
+    float roughness = 0.0f;    // perceptual (glTF)
+    float metalness = 0.0f;
+    bool diffuse = true;       // base colour × (1 − metalness) > 0: the shader traces diffuse cones here
+    int node = -1;             // scene node drawn there
+    // Where it came from, so tracedCones() can repeat the cone-trace shader's per-pixel choices:
+    glm::ivec2 glPixel{0};     // pixel in GL (bottom-up) coordinates: the shader's ivec2(gl_FragCoord.xy)
+    float voxelSize = 0.0f;    // voxel size (m) of the frame's voxel volume; 0 when GI was off
+    float volumeSide = 0.0f;   // side of that voxel volume (m); 0 when GI was off
+};
+
+}  // namespace lit

@@ -1,0 +1,120 @@
+#include "passes/OverlayPass.h"
+
+#include "passes/GBufferPass.h"
+
+#include <shared.h>
+
+#include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <limits>
+
+namespace lit {
+
+OverlayPass::OverlayPass(const std::filesystem::path& shaderRoot)
+    : outline_(shaderRoot, "overlay outline",
+               {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "overlay_outline.frag.glsl"}}),
+      lines_(shaderRoot, "overlay lines",
+             {{GL_VERTEX_SHADER, "overlay.vert.glsl"}, {GL_FRAGMENT_SHADER, "overlay.frag.glsl"}}),
+      vertexArray_("overlay lines") {
+    const GLuint vao = vertexArray_.id();
+    glEnableVertexArrayAttrib(vao, 0);
+    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(LineVertex, position));
+    glVertexArrayAttribBinding(vao, 0, 0);
+    glEnableVertexArrayAttrib(vao, 1);
+    glVertexArrayAttribFormat(vao, 1, 4, GL_FLOAT, GL_FALSE, offsetof(LineVertex, color));
+    glVertexArrayAttribBinding(vao, 1, 0);
+}
+
+void OverlayPass::uploadLines(const ViewportOverlay& overlay) {
+    staging_.clear();
+    for (const std::vector<OverlayLine>* list : {&overlay.lines, &overlay.linesOnTop})
+        for (const OverlayLine& line : *list)
+            for (const glm::vec3& p : {line.a, line.b})
+                staging_.push_back({{p.x, p.y, p.z}, {line.color.r, line.color.g, line.color.b, line.color.a}});
+    if (staging_.empty()) return;
+    if (staging_.size() > vertexCapacity_) {
+        // Grow geometrically so a gizmo being dragged does not reallocate every frame.
+        vertexCapacity_ = std::max<std::size_t>(1024, std::bit_ceil(staging_.size()));
+        vertices_ = gl::Buffer("overlay line vertices", vertexCapacity_ * sizeof(LineVertex), nullptr,
+                               GL_DYNAMIC_STORAGE_BIT);
+        glVertexArrayVertexBuffer(vertexArray_.id(), 0, vertices_.id(), 0, sizeof(LineVertex));
+    }
+    vertices_.update(0, staging_.size() * sizeof(LineVertex), staging_.data());
+}
+
+void OverlayPass::drawLines(GLint first, GLsizei vertexCount, bool depthTested) {
+    if (vertexCount == 0) return;
+    glProgramUniform1i(lines_.id(), lines_.location("uDepthTested"), depthTested ? 1 : 0);
+    glProgramUniform1f(lines_.id(), lines_.location("uHiddenOpacity"), kHiddenLineOpacity);
+    lines_.use();
+    vertexArray_.bind();
+    glDrawArrays(GL_LINES, first, vertexCount);
+}
+
+glm::ivec4 OverlayPass::screenRect(const Aabb& box, const glm::mat4& viewProjection, int width, int height,
+                                   int margin) {
+    if (box.empty()) return {0, 0, 0, 0};
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                               (i & 4) ? box.max.z : box.min.z};
+        const glm::vec4 clip = viewProjection * glm::vec4(corner, 1.0f);
+        if (clip.w <= 1e-6f) return {0, 0, width, height};  // crosses the eye plane: no bounded projection
+        const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
+        lo = glm::min(lo, pixel);
+        hi = glm::max(hi, pixel);
+    }
+    const glm::ivec2 x0 = glm::max(glm::ivec2(glm::floor(lo)) - margin, glm::ivec2(0));
+    const glm::ivec2 x1 = glm::min(glm::ivec2(glm::ceil(hi)) + margin, glm::ivec2(width, height));
+    if (x1.x <= x0.x || x1.y <= x0.y) return {0, 0, 0, 0};
+    return {x0.x, x0.y, x1.x - x0.x, x1.y - x0.y};
+}
+
+void OverlayPass::execute(const ViewportOverlay& overlay, const gl::Texture& output, const GBufferPass& gbuffer,
+                          const Aabb& highlightBounds, const glm::mat4& viewProjection) {
+    const int width = output.desc().width, height = output.desc().height;
+    if (output.id() != attachedTexture_ || width != attachedWidth_ || height != attachedHeight_) {
+        framebuffer_ = gl::Framebuffer("overlay");
+        framebuffer_.attach(GL_COLOR_ATTACHMENT0, output);
+        framebuffer_.setDrawBuffers(1);
+        framebuffer_.checkComplete("overlay");
+        attachedTexture_ = output.id();
+        attachedWidth_ = width;
+        attachedHeight_ = height;
+    }
+    framebuffer_.bind();
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_FRAMEBUFFER_SRGB);  // shaders write linear colour; blending happens in linear too
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    gbuffer.nodeId().bind(LIT_TEX_GBUFFER_ID);
+    gbuffer.depth().bind(LIT_TEX_GBUFFER_DEPTH);
+
+    // The outline reaches kOutlineRadius (2) pixels past the silhouette; 1 more for rounding.
+    const glm::ivec4 rect = screenRect(highlightBounds, viewProjection, width, height, kOutlineRadius + 1);
+    if (overlay.highlightNode >= 0 && rect.z > 0 && rect.w > 0) {
+        outline_.use();
+        glProgramUniform1ui(outline_.id(), outline_.location("uNodeId"), static_cast<GLuint>(overlay.highlightNode + 1));
+        glProgramUniform4fv(outline_.id(), outline_.location("uColor"), 1, kOutlineColor);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(rect.x, rect.y, rect.z, rect.w);
+        triangle_.draw();
+        glDisable(GL_SCISSOR_TEST);
+    }
+    uploadLines(overlay);
+    const auto tested = static_cast<GLsizei>(2 * overlay.lines.size());
+    const auto onTop = static_cast<GLsizei>(2 * overlay.linesOnTop.size());
+    drawLines(0, tested, true);
+    drawLines(tested, onTop, false);
+
+    glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);  // GL's default, for whoever enables blending next
+    glDepthMask(GL_TRUE);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace lit

@@ -1,0 +1,521 @@
+// glTF 2.0 export: Scene → tinygltf::Model → files (io/GltfFile.h writes them atomically).
+//
+// Decisions worth knowing:
+// - All geometry and embedded images go into one buffer: "<stem>.bin" beside a .gltf, the BIN
+//   chunk of a .glb. A primitive's vertices are one interleaved buffer view (lit::Vertex as it
+//   is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes); indices are UNSIGNED_INT.
+// - Only nodes reachable from Scene::roots are written (the loader imports no others), in
+//   index order, so a scene the loader made keeps its node indices. Primitives without
+//   triangles are left out (the loader skips them), and so are meshes left with none.
+// - An image that came from a file which still exists is referenced by a URI relative to the new
+//   file's folder (not copied, not re-encoded: JPEGs stay JPEGs); any other image (embedded in
+//   the source, generated, or from a file that is gone) is encoded as PNG into the buffer.
+// - Light::castsShadow has no glTF equivalent; false is written to the light's extras as
+//   {"litCastsShadow": false}, which the loader reads back.
+// - A camera's zfar of 0 (fitted to the scene) is written as no zfar, which glTF reads as an
+//   infinite far plane.
+
+#include "scene/GltfWriter.h"
+
+#include "animation/CameraPathIO.h"
+#include "image/ImageIO.h"
+#include "io/GltfFile.h"
+#include "scene/Scene.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <optional>
+
+namespace lit {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kArrayBuffer = 34962;         // GL_ARRAY_BUFFER: vertex attributes
+constexpr int kElementArrayBuffer = 34963;  // GL_ELEMENT_ARRAY_BUFFER: indices
+constexpr const char* kLightsExtension = "KHR_lights_punctual";
+constexpr const char* kEmissiveStrengthExtension = "KHR_materials_emissive_strength";
+constexpr const char* kCastsShadowKey = "litCastsShadow";
+
+std::string lowercase(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+std::string named(const std::string& kind, std::size_t index, const std::string& name) {
+    return kind + " " + std::to_string(index) + (name.empty() ? "" : " ('" + name + "')");
+}
+
+template <int N>
+std::vector<double> doubles(const glm::vec<N, float>& v) {
+    std::vector<double> out(N);
+    for (int i = 0; i < N; ++i) out[static_cast<std::size_t>(i)] = v[i];
+    return out;
+}
+
+class ModelBuilder {
+public:
+    ModelBuilder(const Scene& scene, const fs::path& file) : scene_(scene), file_(file) {}
+
+    tinygltf::Model build();
+
+private:
+    [[noreturn]] void fail(const std::string& problem) const { throw SceneSaveError(file_.string() + ": " + problem); }
+    void checkIndex(int index, std::size_t count, const std::string& what, const char* kind) const;
+    void checkFinite(float value, const std::string& what) const;
+    template <int N>
+    void checkFinite(const glm::vec<N, float>& value, const std::string& what) const {
+        for (int i = 0; i < N; ++i) checkFinite(value[i], what);
+    }
+    void checkScene() const;
+    std::vector<int> reachableNodes() const;
+
+    int addBufferView(const void* data, std::size_t bytes, int target, std::size_t stride);
+    int addAccessor(int view, std::size_t byteOffset, int componentType, int type, std::size_t count);
+    std::optional<std::string> relativeUri(const Image& image) const;
+    void addImages();
+    void addTextures();
+    void addMaterials();
+    void addMeshes();
+    void addLights();
+    void addCameras();
+    void addNodes();
+    void useExtension(const std::string& name);
+
+    const Scene& scene_;
+    const fs::path& file_;
+    tinygltf::Model model_;
+    std::vector<int> meshIndex_;  // scene mesh → glTF mesh, -1 when left out
+};
+
+void ModelBuilder::checkIndex(int index, std::size_t count, const std::string& what, const char* kind) const {
+    if (index < -1 || index >= static_cast<int>(count))
+        fail(what + " refers to " + kind + " " + std::to_string(index) + ", which does not exist (the scene has " +
+             std::to_string(count) + ")");
+}
+
+void ModelBuilder::checkFinite(float value, const std::string& what) const {
+    if (!std::isfinite(value)) fail(what + " is not a finite number");
+}
+
+// Everything the file will refer to must exist, and every number must be writable as JSON.
+void ModelBuilder::checkScene() const {
+    for (std::size_t i = 0; i < scene_.nodes.size(); ++i) {
+        const Node& node = scene_.nodes[i];
+        const std::string what = named("node", i, node.name);
+        for (int child : node.children)
+            if (child < 0 || child >= static_cast<int>(scene_.nodes.size()))
+                fail(what + " has child " + std::to_string(child) + ", which does not exist (the scene has " +
+                     std::to_string(scene_.nodes.size()) + " nodes)");
+        checkIndex(node.mesh, scene_.meshes.size(), what, "mesh");
+        checkIndex(node.light, scene_.lights.size(), what, "light");
+        checkIndex(node.camera, scene_.cameras.size(), what, "camera");
+        checkFinite(node.translation, what + "'s translation");
+        checkFinite(glm::vec4(node.rotation.x, node.rotation.y, node.rotation.z, node.rotation.w), what + "'s rotation");
+        checkFinite(node.scale, what + "'s scale");
+        if (glm::length(node.rotation) < 1e-6f) fail(what + "'s rotation is a zero quaternion");
+    }
+    for (int root : scene_.roots)
+        if (root < 0 || root >= static_cast<int>(scene_.nodes.size()))
+            fail("root " + std::to_string(root) + " does not exist (the scene has " +
+                 std::to_string(scene_.nodes.size()) + " nodes)");
+    for (std::size_t m = 0; m < scene_.meshes.size(); ++m)
+        for (std::size_t p = 0; p < scene_.meshes[m].primitives.size(); ++p) {
+            const Primitive& primitive = scene_.meshes[m].primitives[p];
+            const std::string what = "mesh '" + scene_.meshes[m].name + "' primitive " + std::to_string(p);
+            checkIndex(primitive.material, scene_.materials.size(), what, "material");
+            if (primitive.indices.size() % 3 != 0)
+                fail(what + " has " + std::to_string(primitive.indices.size()) + " indices, not a multiple of 3");
+            for (std::uint32_t index : primitive.indices)
+                if (index >= primitive.vertices.size())
+                    fail(what + " has the index " + std::to_string(index) + ", which is out of range (" +
+                         std::to_string(primitive.vertices.size()) + " vertices)");
+            for (const Vertex& v : primitive.vertices) {
+                checkFinite(v.position, what + ": a vertex position");
+                checkFinite(v.normal, what + ": a vertex normal");
+                checkFinite(v.uv, what + ": a vertex texture coordinate");
+                checkFinite(v.tangent, what + ": a vertex tangent");
+            }
+        }
+    for (std::size_t m = 0; m < scene_.materials.size(); ++m) {
+        const Material& material = scene_.materials[m];
+        const std::string what = named("material", m, material.name);
+        for (int texture : {material.baseColorTexture, material.metallicRoughnessTexture, material.normalTexture,
+                            material.emissiveTexture, material.occlusionTexture})
+            checkIndex(texture, scene_.textures.size(), what, "texture");
+        checkFinite(material.baseColorFactor, what + "'s baseColorFactor");
+        checkFinite(material.metallic, what + "'s metallic factor");
+        checkFinite(material.roughness, what + "'s roughness factor");
+        checkFinite(material.normalScale, what + "'s normalScale");
+        checkFinite(material.emissiveFactor, what + "'s emissiveFactor");
+        checkFinite(material.emissiveStrength, what + "'s emissiveStrength");
+        checkFinite(material.occlusionStrength, what + "'s occlusionStrength");
+        checkFinite(material.alphaCutoff, what + "'s alphaCutoff");
+    }
+    for (std::size_t t = 0; t < scene_.textures.size(); ++t)
+        checkIndex(scene_.textures[t].image, scene_.images.size(), "texture " + std::to_string(t), "image");
+    for (std::size_t l = 0; l < scene_.lights.size(); ++l) {
+        const Light& light = scene_.lights[l];
+        const std::string what = named("light", l, light.name);
+        checkFinite(light.color, what + "'s colour");
+        checkFinite(light.intensity, what + "'s intensity");
+        checkFinite(light.range, what + "'s range");
+        checkFinite(light.innerConeAngle, what + "'s innerConeAngle");
+        checkFinite(light.outerConeAngle, what + "'s outerConeAngle");
+    }
+    for (std::size_t c = 0; c < scene_.cameras.size(); ++c) {
+        const Camera& camera = scene_.cameras[c];
+        const std::string what = named("camera", c, camera.name);
+        checkFinite(camera.aspectRatio, what + "'s aspectRatio");
+        checkFinite(camera.zfar, what + "'s zfar");
+        if (!(camera.yfov > 0.0f && std::isfinite(camera.yfov)))
+            fail(what + " has yfov " + std::to_string(camera.yfov) + "; glTF needs a positive field of view");
+        if (!(camera.znear > 0.0f && std::isfinite(camera.znear)))
+            fail(what + " has znear " + std::to_string(camera.znear) + "; glTF needs a positive near plane");
+    }
+}
+
+// The nodes reachable from the roots, in index order. A node reached twice (a cycle, or two
+// parents) cannot be written as a glTF tree.
+std::vector<int> ModelBuilder::reachableNodes() const {
+    std::vector<std::uint8_t> reached(scene_.nodes.size(), 0);
+    std::vector<int> stack;
+    for (int root : scene_.roots)
+        if (std::find(stack.begin(), stack.end(), root) == stack.end()) stack.push_back(root);
+    while (!stack.empty()) {
+        const int index = stack.back();
+        stack.pop_back();
+        if (reached[static_cast<std::size_t>(index)])
+            fail(named("node", static_cast<std::size_t>(index), scene_.nodes[static_cast<std::size_t>(index)].name) +
+                 " is reached twice from the roots (a cycle, or a node with two parents)");
+        reached[static_cast<std::size_t>(index)] = 1;
+        for (int child : scene_.nodes[static_cast<std::size_t>(index)].children) stack.push_back(child);
+    }
+    std::vector<int> out;
+    for (std::size_t i = 0; i < reached.size(); ++i)
+        if (reached[i]) out.push_back(static_cast<int>(i));
+    return out;
+}
+
+int ModelBuilder::addBufferView(const void* data, std::size_t bytes, int target, std::size_t stride) {
+    if (model_.buffers.empty()) model_.buffers.emplace_back();
+    std::vector<unsigned char>& bin = model_.buffers[0].data;
+    bin.resize((bin.size() + 3) & ~std::size_t(3), 0);  // every view starts 4-byte aligned
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = bin.size();
+    view.byteLength = bytes;
+    view.byteStride = stride;
+    view.target = target;
+    const auto* p = static_cast<const unsigned char*>(data);
+    bin.insert(bin.end(), p, p + bytes);
+    model_.bufferViews.push_back(std::move(view));
+    return static_cast<int>(model_.bufferViews.size()) - 1;
+}
+
+int ModelBuilder::addAccessor(int view, std::size_t byteOffset, int componentType, int type, std::size_t count) {
+    tinygltf::Accessor accessor;
+    accessor.bufferView = view;
+    accessor.byteOffset = byteOffset;
+    accessor.componentType = componentType;
+    accessor.type = type;
+    accessor.count = count;
+    model_.accessors.push_back(std::move(accessor));
+    return static_cast<int>(model_.accessors.size()) - 1;
+}
+
+// The image's file as seen from the new file's folder, when the image came from a file that
+// still exists.
+std::optional<std::string> ModelBuilder::relativeUri(const Image& image) const {
+    if (image.uri.empty() || isDataUri(image.uri) || scene_.sourcePath.empty()) return std::nullopt;
+    std::error_code ec;
+    const fs::path source = fs::absolute(scene_.sourcePath.parent_path() / percentDecode(image.uri), ec);
+    if (ec || !fs::is_regular_file(source, ec)) return std::nullopt;
+    const fs::path from = fs::weakly_canonical(fs::absolute(file_, ec).parent_path(), ec);
+    if (ec) return std::nullopt;
+    const fs::path to = fs::weakly_canonical(source, ec);
+    if (ec) return std::nullopt;
+    const fs::path relative = to.lexically_relative(from);
+    if (relative.empty()) return std::nullopt;
+    return percentEncodePath(relative.generic_string());
+}
+
+void ModelBuilder::addImages() {
+    for (std::size_t i = 0; i < scene_.images.size(); ++i) {
+        const Image& image = scene_.images[i];
+        tinygltf::Image out;
+        out.name = image.name;
+        if (const std::optional<std::string> uri = relativeUri(image)) {
+            out.uri = *uri;
+        } else {
+            std::vector<std::uint8_t> png;
+            try {
+                png = encodePng(image.width, image.height, image.rgba, /*flipVertically=*/false);  // rows are top-down
+            } catch (const std::exception& e) {
+                fail(named("image", i, image.name) + " cannot be embedded: " + e.what());
+            }
+            out.bufferView = addBufferView(png.data(), png.size(), 0, 0);
+            out.mimeType = "image/png";
+        }
+        model_.images.push_back(std::move(out));
+    }
+}
+
+void ModelBuilder::addTextures() {
+    std::map<std::array<int, 4>, int> samplers;  // one glTF sampler per distinct setting
+    for (const Texture& texture : scene_.textures) {
+        const std::array<int, 4> key = {texture.wrapS, texture.wrapT, texture.minFilter, texture.magFilter};
+        auto [it, added] = samplers.emplace(key, static_cast<int>(model_.samplers.size()));
+        if (added) {
+            tinygltf::Sampler sampler;
+            sampler.wrapS = texture.wrapS;
+            sampler.wrapT = texture.wrapT;
+            sampler.minFilter = texture.minFilter;
+            sampler.magFilter = texture.magFilter;
+            model_.samplers.push_back(sampler);
+        }
+        tinygltf::Texture out;
+        out.source = texture.image;
+        out.sampler = it->second;
+        model_.textures.push_back(std::move(out));
+    }
+}
+
+void ModelBuilder::addMaterials() {
+    for (const Material& material : scene_.materials) {
+        tinygltf::Material out;
+        out.name = material.name;
+        tinygltf::PbrMetallicRoughness& pbr = out.pbrMetallicRoughness;
+        pbr.baseColorFactor = doubles(material.baseColorFactor);
+        pbr.baseColorTexture.index = material.baseColorTexture;
+        pbr.metallicFactor = material.metallic;
+        pbr.roughnessFactor = material.roughness;
+        pbr.metallicRoughnessTexture.index = material.metallicRoughnessTexture;
+        out.normalTexture.index = material.normalTexture;
+        out.normalTexture.scale = material.normalScale;
+        out.occlusionTexture.index = material.occlusionTexture;
+        out.occlusionTexture.strength = material.occlusionStrength;
+        out.emissiveTexture.index = material.emissiveTexture;
+        out.emissiveFactor = doubles(material.emissiveFactor);
+        if (material.emissiveStrength != 1.0f) {
+            tinygltf::Value::Object extension;
+            extension["emissiveStrength"] = tinygltf::Value(static_cast<double>(material.emissiveStrength));
+            out.extensions[kEmissiveStrengthExtension] = tinygltf::Value(std::move(extension));
+            useExtension(kEmissiveStrengthExtension);
+        }
+        switch (material.alphaMode) {
+            case AlphaMode::Opaque:
+                out.alphaMode = "OPAQUE";
+                break;
+            case AlphaMode::Mask:
+                out.alphaMode = "MASK";
+                break;
+            case AlphaMode::Blend:
+                out.alphaMode = "BLEND";
+                break;
+        }
+        out.alphaCutoff = material.alphaCutoff;
+        out.doubleSided = material.doubleSided;
+        model_.materials.push_back(std::move(out));
+    }
+}
+
+void ModelBuilder::addMeshes() {
+    static_assert(offsetof(Vertex, position) == 0 && offsetof(Vertex, normal) == 12 && offsetof(Vertex, uv) == 24 &&
+                      offsetof(Vertex, tangent) == 32,
+                  "the interleaved vertex view below mirrors lit::Vertex");
+    meshIndex_.assign(scene_.meshes.size(), -1);
+    for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
+        const Mesh& mesh = scene_.meshes[m];
+        tinygltf::Mesh out;
+        out.name = mesh.name;
+        for (const Primitive& primitive : mesh.primitives) {
+            if (primitive.indices.empty()) continue;
+            const std::size_t count = primitive.vertices.size();
+            const int vertices = addBufferView(primitive.vertices.data(), count * sizeof(Vertex), kArrayBuffer, sizeof(Vertex));
+            tinygltf::Primitive p;
+            p.mode = TINYGLTF_MODE_TRIANGLES;
+            p.material = primitive.material;
+            const int position = addAccessor(vertices, offsetof(Vertex, position), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                             TINYGLTF_TYPE_VEC3, count);
+            glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+            for (const Vertex& v : primitive.vertices) {
+                lo = glm::min(lo, v.position);
+                hi = glm::max(hi, v.position);
+            }
+            model_.accessors[static_cast<std::size_t>(position)].minValues = doubles(lo);
+            model_.accessors[static_cast<std::size_t>(position)].maxValues = doubles(hi);
+            p.attributes["POSITION"] = position;
+            p.attributes["NORMAL"] = addAccessor(vertices, offsetof(Vertex, normal), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                                 TINYGLTF_TYPE_VEC3, count);
+            p.attributes["TEXCOORD_0"] =
+                addAccessor(vertices, offsetof(Vertex, uv), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
+            p.attributes["TANGENT"] = addAccessor(vertices, offsetof(Vertex, tangent), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                                  TINYGLTF_TYPE_VEC4, count);
+            const int indices = addBufferView(primitive.indices.data(), primitive.indices.size() * sizeof(std::uint32_t),
+                                              kElementArrayBuffer, 0);
+            p.indices = addAccessor(indices, 0, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                                    primitive.indices.size());
+            out.primitives.push_back(std::move(p));
+        }
+        if (out.primitives.empty()) continue;  // glTF requires at least one primitive per mesh
+        meshIndex_[m] = static_cast<int>(model_.meshes.size());
+        model_.meshes.push_back(std::move(out));
+    }
+}
+
+void ModelBuilder::addLights() {
+    for (const Light& light : scene_.lights) {
+        tinygltf::Light out;
+        out.name = light.name;
+        out.color = doubles(light.color);
+        out.intensity = light.intensity;
+        out.range = std::max(light.range, 0.0f);  // written only when > 0 (0 = infinite)
+        switch (light.type) {
+            case LightType::Directional:
+                out.type = "directional";
+                break;
+            case LightType::Point:
+                out.type = "point";
+                break;
+            case LightType::Spot:
+                out.type = "spot";
+                out.spot.innerConeAngle = light.innerConeAngle;
+                out.spot.outerConeAngle = light.outerConeAngle;
+                break;
+        }
+        if (!light.castsShadow) {
+            tinygltf::Value::Object extras;
+            extras[kCastsShadowKey] = tinygltf::Value(false);
+            out.extras = tinygltf::Value(std::move(extras));
+        }
+        model_.lights.push_back(std::move(out));
+    }
+    if (!model_.lights.empty()) useExtension(kLightsExtension);
+}
+
+void ModelBuilder::addCameras() {
+    for (const Camera& camera : scene_.cameras) {
+        tinygltf::Camera out;
+        out.name = camera.name;
+        out.type = "perspective";
+        out.perspective.yfov = camera.yfov;
+        out.perspective.znear = camera.znear;
+        out.perspective.zfar = std::max(camera.zfar, 0.0f);  // 0: left out by writeGltfModel
+        out.perspective.aspectRatio = std::max(camera.aspectRatio, 0.0f);  // 0: left out
+        model_.cameras.push_back(std::move(out));
+    }
+}
+
+void ModelBuilder::addNodes() {
+    const std::vector<int> written = reachableNodes();
+    std::vector<int> remap(scene_.nodes.size(), -1);
+    for (std::size_t i = 0; i < written.size(); ++i) remap[static_cast<std::size_t>(written[i])] = static_cast<int>(i);
+    for (int index : written) {
+        const Node& node = scene_.nodes[static_cast<std::size_t>(index)];
+        tinygltf::Node out;
+        out.name = node.name;
+        for (int child : node.children) out.children.push_back(remap[static_cast<std::size_t>(child)]);
+        // Only what differs from the glTF defaults, as other exporters do.
+        if (node.translation != glm::vec3(0.0f)) out.translation = doubles(node.translation);
+        if (node.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) {
+            const glm::quat q = glm::normalize(node.rotation);
+            out.rotation = {q.x, q.y, q.z, q.w};  // glTF order
+        }
+        if (node.scale != glm::vec3(1.0f)) out.scale = doubles(node.scale);
+        out.mesh = node.mesh >= 0 ? meshIndex_[static_cast<std::size_t>(node.mesh)] : -1;
+        out.camera = node.camera;
+        if (node.light >= 0) {
+            tinygltf::Value::Object extension;
+            extension["light"] = tinygltf::Value(node.light);
+            out.extensions[kLightsExtension] = tinygltf::Value(std::move(extension));
+        }
+        model_.nodes.push_back(std::move(out));
+    }
+    tinygltf::Scene root;
+    root.name = scene_.name;
+    for (int index : scene_.roots) {
+        const int mapped = remap[static_cast<std::size_t>(index)];
+        if (std::find(root.nodes.begin(), root.nodes.end(), mapped) == root.nodes.end()) root.nodes.push_back(mapped);
+    }
+    model_.scenes.push_back(std::move(root));
+    model_.defaultScene = 0;
+}
+
+void ModelBuilder::useExtension(const std::string& name) {
+    if (std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(), name) == model_.extensionsUsed.end())
+        model_.extensionsUsed.push_back(name);
+}
+
+tinygltf::Model ModelBuilder::build() {
+    checkScene();
+    model_.asset.version = "2.0";
+    model_.asset.generator = "Lit";
+    addImages();
+    addTextures();
+    addMaterials();
+    addMeshes();
+    addLights();
+    addCameras();
+    addNodes();
+    return std::move(model_);
+}
+
+// Moves every buffer's bytes into buffer 0 (the camera path animation brings a buffer of its
+// own), so the scene is one .bin or one BIN chunk.
+void mergeBuffers(tinygltf::Model& model) {
+    if (model.buffers.size() < 2) return;
+    std::vector<unsigned char>& first = model.buffers[0].data;
+    std::vector<std::size_t> offset(model.buffers.size(), 0);
+    for (std::size_t i = 1; i < model.buffers.size(); ++i) {
+        first.resize((first.size() + 3) & ~std::size_t(3), 0);
+        offset[i] = first.size();
+        first.insert(first.end(), model.buffers[i].data.begin(), model.buffers[i].data.end());
+    }
+    for (tinygltf::BufferView& view : model.bufferViews) {
+        if (view.buffer <= 0) continue;
+        view.byteOffset += offset[static_cast<std::size_t>(view.buffer)];
+        view.buffer = 0;
+    }
+    model.buffers.resize(1);
+    model.buffers[0].name.clear();
+}
+
+}  // namespace
+
+void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& options) {
+    const std::string extension = lowercase(file.extension().string());
+    if (extension != ".gltf" && extension != ".glb")
+        throw SceneSaveError(file.string() + ": cannot save as '" + file.extension().string() +
+                             "'; the file name must end in .gltf or .glb");
+    const bool binary = extension == ".glb";
+
+    tinygltf::Model model = ModelBuilder(scene, file).build();
+    if (options.cameraPath && !options.cameraPath->empty()) {
+        try {
+            writeCameraPathAnimation(model, *options.cameraPath, options.cameraPathName);
+        } catch (const CameraPathError& e) {
+            throw SceneSaveError(file.string() + ": cannot write the camera path: " + e.what());
+        }
+    }
+    mergeBuffers(model);
+    if (!binary && !model.buffers.empty()) model.buffers[0].uri = percentEncodePath(file.stem().string() + ".bin");
+
+    try {
+        writeGltfModel(std::move(model), file, binary);
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        throw SceneSaveError(what.starts_with(file.string() + ": ") ? what : file.string() + ": " + what);
+    }
+}
+
+}  // namespace lit

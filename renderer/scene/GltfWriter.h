@@ -1,0 +1,39 @@
+#pragma once
+// Writes a Scene back to glTF 2.0 (.gltf + .bin, or one .glb) so that Blender and other tools
+// read it: nodes with TRS, meshes, metallic-roughness materials (with
+// KHR_materials_emissive_strength when the strength is not 1), textures and samplers,
+// KHR_lights_punctual lights, perspective cameras, and optionally a camera path as a glTF
+// animation (animation/CameraPathIO.h). loadGltf() reads everything written here back.
+//
+// Saving is atomic: every file is written under a temporary name in the target folder and then
+// renamed into place (buffers first, the .gltf/.glb last), so a failed save leaves the previous
+// files as they were.
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace lit {
+
+struct Scene;
+class CameraPath;
+
+class SceneSaveError : public std::runtime_error {
+public:
+    explicit SceneSaveError(const std::string& message) : std::runtime_error(message) {}
+};
+
+struct GltfSaveOptions {
+    // Written as an animation named `cameraPathName` on the scene's first camera node (a camera
+    // node is added when the scene has none). Null or empty: no animation.
+    const CameraPath* cameraPath = nullptr;
+    std::string cameraPathName = "camera path";
+};
+
+// `file` ends in .gltf (JSON + "<stem>.bin" beside it) or .glb (one binary file). Images that
+// came from a file that still exists are referenced by a relative URI; other images (embedded
+// in the source, generated) are embedded as PNG. Throws SceneSaveError naming the file and
+// the reason; on error no existing file is changed.
+void saveGltf(const Scene& scene, const std::filesystem::path& file, const GltfSaveOptions& options = {});
+
+}  // namespace lit

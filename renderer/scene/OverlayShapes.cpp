@@ -1,0 +1,269 @@
+#include "scene/OverlayShapes.h"
+
+#include "scene/Scene.h"
+
+#include <shared.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace lit {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979323846f;
+
+// Rotation and translation of a node's world matrix; the axes are normalised so a scaled node
+// gets a marker of the requested size.
+struct NodeFrame {
+    glm::vec3 origin, x, y, z;
+};
+
+glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
+    const float length = glm::length(v);
+    return length > 1e-12f && std::isfinite(length) ? v / length : fallback;
+}
+
+NodeFrame frameOf(const glm::mat4& world) {
+    return {glm::vec3(world[3]), normalizedOr(glm::vec3(world[0]), {1, 0, 0}),
+            normalizedOr(glm::vec3(world[1]), {0, 1, 0}), normalizedOr(glm::vec3(world[2]), {0, 0, 1})};
+}
+
+// Any unit vector perpendicular to unit `v`.
+glm::vec3 perpendicular(const glm::vec3& v) {
+    const glm::vec3 other = std::abs(v.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    return glm::normalize(glm::cross(v, other));
+}
+
+void addCircle(std::vector<OverlayLine>& lines, const glm::vec3& centre, const glm::vec3& u, const glm::vec3& v,
+               float radius, const glm::vec4& color) {
+    for (int i = 0; i < kOverlayCircleSegments; ++i) {
+        const float a0 = 2.0f * kPi * float(i) / float(kOverlayCircleSegments);
+        const float a1 = 2.0f * kPi * float(i + 1) / float(kOverlayCircleSegments);
+        lines.push_back({centre + radius * (std::cos(a0) * u + std::sin(a0) * v),
+                         centre + radius * (std::cos(a1) * u + std::sin(a1) * v), color});
+    }
+}
+
+// An arrow from `from` to `to` with a head of four lines, `headLength` long and half as wide.
+void addArrow(std::vector<OverlayLine>& lines, const glm::vec3& from, const glm::vec3& to, float headLength,
+              const glm::vec4& color) {
+    lines.push_back({from, to, color});
+    const glm::vec3 axis = normalizedOr(to - from, {0, 0, -1});
+    const glm::vec3 u = perpendicular(axis), v = glm::cross(axis, u);
+    const glm::vec3 base = to - axis * headLength;
+    const float r = 0.35f * headLength;
+    for (const glm::vec3& side : {u, -u, v, -v}) lines.push_back({to, base + side * r, color});
+}
+
+// The light's colour as a marker colour: its hue at full brightness (intensity is not shown).
+glm::vec4 markerColor(const glm::vec3& color) {
+    const float peak = std::max({color.r, color.g, color.b});
+    return peak > 0.0f ? glm::vec4(color / peak, 1.0f) : glm::vec4(1.0f);
+}
+
+// ---- C++ copies of cone.glsl / gbuffer.glsl / brdf.glsl functions (same names, same float math) --
+
+glm::vec3 shadingNormal(const glm::vec3& n, const glm::vec3& v) {
+    const float nv = glm::dot(n, v);
+    return nv < 0.0f ? glm::normalize(n - v * (nv * 1.01f)) : n;
+}
+
+glm::mat3 tangentFrame(const glm::vec3& n) {
+    const float s = n.z >= 0.0f ? 1.0f : -1.0f;
+    const float a = -1.0f / (s + n.z);
+    const float b = n.x * n.y * a;
+    const glm::vec3 t(1.0f + s * n.x * n.x * a, s * b, -s * n.x);
+    const glm::vec3 bt(b, s + n.y * n.y * a, -n.y);
+    return glm::mat3(t, bt, n);
+}
+
+float fract(float x) { return x - std::floor(x); }
+
+std::uint32_t bitfieldReverse(std::uint32_t v) {
+    std::uint32_t r = 0;
+    for (int i = 0; i < 32; ++i, v >>= 1) r = (r << 1) | (v & 1u);
+    return r;
+}
+
+float radicalInverse(std::uint32_t bits) { return float(bitfieldReverse(bits)) * 2.3283064365386963e-10f; }
+
+float interleavedGradientNoise(const glm::vec2& pixel) {
+    return fract(52.9829189f * fract(glm::dot(pixel, glm::vec2(0.06711056f, 0.00583715f))));
+}
+
+std::uint32_t pcgHash(std::uint32_t v) {
+    const std::uint32_t state = v * 747796405u + 2891336453u;
+    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+glm::vec2 specularSample(int k, int count, const glm::vec2& pixel, int frameIndex) {
+    const std::uint32_t px = std::uint32_t(pixel.x), py = std::uint32_t(pixel.y);
+    const std::uint32_t hash = pcgHash(px + pcgHash(py + pcgHash(std::uint32_t(frameIndex))));
+    const glm::vec2 rotation(float(hash) * 2.3283064365386963e-10f,
+                             interleavedGradientNoise(pixel + glm::vec2(float(frameIndex % 64) * 5.588238f)));
+    const glm::vec2 u(fract(float(k) / float(count) + rotation.x), fract(radicalInverse(std::uint32_t(k)) + rotation.y));
+    return {u.x * float(LIT_SPECULAR_LOBE_SHARE), u.y};
+}
+
+glm::vec3 sampleGgxHalfVector(const glm::vec2& u, float alpha) {
+    const float a2 = alpha * alpha;
+    const float cos2 = (1.0f - u.x) / (1.0f + (a2 - 1.0f) * u.x);
+    const float cosTheta = std::sqrt(std::clamp(cos2, 0.0f, 1.0f));
+    const float sinTheta = std::sqrt(std::clamp(1.0f - cos2, 0.0f, 1.0f));
+    const float phi = 2.0f * kPi * u.y;
+    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
+}
+
+float G_SmithGGXCorrelated(float NdotL, float NdotV, float alpha) {
+    const float a2 = alpha * alpha;
+    const float lambdaV = NdotL * std::sqrt(NdotV * NdotV * (1.0f - a2) + a2);
+    const float lambdaL = NdotV * std::sqrt(NdotL * NdotL * (1.0f - a2) + a2);
+    return 2.0f * NdotL * NdotV / std::max(lambdaV + lambdaL, 1e-7f);
+}
+
+float ggxSampleWeight(const glm::vec3& n, const glm::vec3& v, const glm::vec3& h, float alpha, glm::vec3& l) {
+    const float VdotH = glm::dot(v, h);
+    l = 2.0f * VdotH * h - v;
+    const float NdotL = glm::dot(n, l);
+    if (VdotH <= 0.0f || NdotL <= 0.0f) return 0.0f;
+    const float NdotV = std::max(glm::dot(n, v), 1e-4f);
+    const float NdotH = std::max(glm::dot(n, h), 1e-4f);
+    return G_SmithGGXCorrelated(NdotL, NdotV, alpha) * VdotH / (NdotH * NdotV);
+}
+
+float alphaFromRoughness(float roughness) {
+    const float r = std::clamp(roughness, 0.03f, 1.0f);
+    return r * r;
+}
+
+float specularConeAperture(float alpha, int count) {
+    const float halfAngle = std::atan(2.0f * alpha / std::sqrt(float(count)));
+    return std::clamp(2.0f * halfAngle, float(LIT_SPECULAR_APERTURE_MIN), float(LIT_SPECULAR_APERTURE_MAX));
+}
+
+}  // namespace
+
+std::vector<OverlayLine> cameraFrustumLines(const glm::mat4& world, float yfov, float aspect, float length,
+                                            const glm::vec4& color) {
+    const NodeFrame f = frameOf(world);
+    const float halfHeight = length * std::tan(0.5f * yfov);
+    const float halfWidth = halfHeight * aspect;
+    const glm::vec3 centre = f.origin - f.z * length;
+    const glm::vec3 corners[4] = {centre - f.x * halfWidth - f.y * halfHeight, centre + f.x * halfWidth - f.y * halfHeight,
+                                  centre + f.x * halfWidth + f.y * halfHeight, centre - f.x * halfWidth + f.y * halfHeight};
+    std::vector<OverlayLine> lines;
+    for (int i = 0; i < 4; ++i) {
+        lines.push_back({f.origin, corners[i], color});
+        lines.push_back({corners[i], corners[(i + 1) % 4], color});
+    }
+    // "Up" triangle on the top edge (corners 2 and 3), a third of the image width wide.
+    const glm::vec3 top = centre + f.y * halfHeight;
+    const glm::vec3 apex = top + f.y * (0.6f * halfWidth);
+    lines.push_back({top - f.x * (0.35f * halfWidth), apex, color});
+    lines.push_back({apex, top + f.x * (0.35f * halfWidth), color});
+    lines.push_back({top + f.x * (0.35f * halfWidth), top - f.x * (0.35f * halfWidth), color});
+    return lines;
+}
+
+std::vector<OverlayLine> lightMarkerLines(const Light& light, const glm::mat4& world, float size) {
+    const NodeFrame f = frameOf(world);
+    const glm::vec4 color = markerColor(light.color);
+    std::vector<OverlayLine> lines;
+    switch (light.type) {
+        case LightType::Directional: {
+            // The arrow, and a small circle at its tail so it reads as a "sun" from the front.
+            addArrow(lines, f.origin, f.origin - f.z * size, 0.25f * size, color);
+            addCircle(lines, f.origin, f.x, f.y, 0.15f * size, color);
+            break;
+        }
+        case LightType::Point: {
+            const float r = 0.5f * size;
+            addCircle(lines, f.origin, f.x, f.y, r, color);
+            addCircle(lines, f.origin, f.y, f.z, r, color);
+            addCircle(lines, f.origin, f.z, f.x, r, color);
+            break;
+        }
+        case LightType::Spot: {
+            const float angle = std::clamp(light.outerConeAngle, 0.0f, 0.5f * kPi - 1e-3f);
+            const float radius = size * std::tan(angle);
+            const glm::vec3 end = f.origin - f.z * size;
+            addCircle(lines, end, f.x, f.y, radius, color);
+            for (const glm::vec3& side : {f.x, -f.x, f.y, -f.y}) lines.push_back({f.origin, end + side * radius, color});
+            break;
+        }
+    }
+    return lines;
+}
+
+std::vector<OverlayLine> translateGizmoLines(const glm::vec3& origin, float length) {
+    std::vector<OverlayLine> lines;
+    const std::pair<glm::vec3, glm::vec4> axes[3] = {
+        {{1, 0, 0}, kGizmoColorX}, {{0, 1, 0}, kGizmoColorY}, {{0, 0, 1}, kGizmoColorZ}};
+    for (const auto& [axis, color] : axes) addArrow(lines, origin, origin + axis * length, 0.2f * length, color);
+    return lines;
+}
+
+std::vector<OverlayLine> coneLines(const glm::vec3& apex, const glm::vec3& direction, float apertureRadians,
+                                   float length, const glm::vec4& color) {
+    const glm::vec3 axis = normalizedOr(direction, {0, 0, -1});
+    const glm::vec3 u = perpendicular(axis), v = glm::cross(axis, u);
+    const float halfAngle = std::clamp(0.5f * apertureRadians, 0.0f, 0.5f * kPi - 1e-3f);
+    const float radius = length * std::tan(halfAngle);
+    const glm::vec3 end = apex + axis * length;
+    std::vector<OverlayLine> lines;
+    lines.push_back({apex, end, color});
+    for (int i = 0; i < 8; ++i) {
+        const float a = 2.0f * kPi * float(i) / 8.0f;
+        lines.push_back({apex, end + radius * (std::cos(a) * u + std::sin(a) * v), color});
+    }
+    addCircle(lines, end, u, v, radius, color);
+    addCircle(lines, apex + axis * (0.5f * length), u, v, 0.5f * radius, color);
+    return lines;
+}
+
+std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec3& cameraPosition,
+                                    const RenderSettings& settings) {
+    // cone_trace.frag.glsl, main(): view vector, shading normal, cone origin, trace length.
+    const glm::vec3 v = normalizedOr(cameraPosition - surface.position, surface.normal);
+    const glm::vec3 n = shadingNormal(normalizedOr(surface.normal, {0, 1, 0}), v);
+    const glm::vec3 origin = surface.position + n * (float(LIT_CONE_NORMAL_OFFSET_VOXELS) * surface.voxelSize);
+    const float maxDistance = settings.maxTraceDistance * surface.volumeSide;
+
+    std::vector<TracedCone> cones;
+    const glm::mat3 basis = tangentFrame(n);
+    // traceCone clamps the aperture to [0, 3] rad.
+    const float diffuseAperture = std::clamp(settings.diffuseConeAperture, 0.0f, 3.0f);
+    if (surface.diffuse)
+        for (int i = 0; i < LIT_DIFFUSE_CONE_COUNT; ++i)
+            cones.push_back({origin, glm::normalize(basis * gpu::kDiffuseConeDirections[i]), diffuseAperture,
+                             maxDistance, gpu::kDiffuseConeWeights[i], false, true});
+
+    // traceSpecular with the pixel's gl_FragCoord.xy (the pixel centre) and frame index 0.
+    const int count = std::clamp(settings.specularSamples, 1, LIT_SPECULAR_MAX_SAMPLES);
+    const float alpha = alphaFromRoughness(surface.roughness);
+    const float aperture = specularConeAperture(alpha, count);
+    // specularCanReuseDiffuseCones, with the unclamped aperture the shader gets (traceParams.w).
+    const bool marched = !(surface.diffuse && aperture >= settings.diffuseConeAperture - 1e-3f);
+    const glm::vec2 fragCoord = glm::vec2(surface.glPixel) + 0.5f;
+    const std::size_t firstSpecular = cones.size();
+    float weightSum = 0.0f;
+    for (int k = 0; k < count; ++k) {
+        const glm::vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, fragCoord, 0), alpha);
+        glm::vec3 l;
+        const float w = ggxSampleWeight(n, v, h, alpha, l);
+        if (w <= 0.0f) continue;
+        cones.push_back({origin, normalizedOr(l, n), aperture, maxDistance, w, true, marched});
+        weightSum += w;
+    }
+    if (weightSum <= 0.0f) {
+        cones.push_back({origin, glm::reflect(-v, n), aperture, maxDistance, 1.0f, true, marched});
+        weightSum = 1.0f;
+    }
+    for (std::size_t i = firstSpecular; i < cones.size(); ++i) cones[i].weight /= weightSum;
+    return cones;
+}
+
+}  // namespace lit

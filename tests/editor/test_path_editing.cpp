@@ -1,0 +1,123 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "PathEditing.h"
+
+namespace {
+
+using namespace lit;
+using namespace lit::editor;
+
+FlyCamera cameraAt(glm::vec3 position, float yaw) {
+    FlyCamera camera;
+    camera.position = position;
+    camera.yaw = yaw;
+    camera.pitch = 0.1f;
+    camera.yfov = 0.9f;
+    return camera;
+}
+
+Document threeKeyDocument() {
+    Document doc;
+    addKey(doc, keyFromCamera(cameraAt({0, 1, 3}, 0.0f), 0.0f));
+    addKey(doc, keyFromCamera(cameraAt({1, 1, 2}, 0.5f), 1.0f));
+    addKey(doc, keyFromCamera(cameraAt({2, 1, 0}, 1.0f), 2.0f));
+    return doc;
+}
+
+TEST(PathEditing, KeyFromCameraRoundTripsThroughAPose) {
+    const FlyCamera camera = cameraAt({1, 2, 3}, 0.7f);
+    const CameraKey key = keyFromCamera(camera, 0.0f);
+    FlyCamera back;
+    applyPoseToCamera(CameraPose{key.position, key.rotation, key.yfov}, back);
+    EXPECT_NEAR(glm::length(back.position - camera.position), 0.0f, 1e-5f);
+    EXPECT_NEAR(back.yaw, camera.yaw, 1e-4f);
+    EXPECT_NEAR(back.pitch, camera.pitch, 1e-4f);
+    EXPECT_NEAR(back.yfov, camera.yfov, 1e-6f);
+    EXPECT_NEAR(glm::length(back.forward() - camera.forward()), 0.0f, 1e-4f);
+}
+
+TEST(PathEditing, EachActionIsOneUndoStep) {
+    Document doc = threeKeyDocument();
+    ASSERT_EQ(doc.cameraPath.keys().size(), 3u);
+    EXPECT_EQ(doc.undoLabel(), "Add Key");
+    ASSERT_TRUE(retimeKey(doc, 1, 1.5f));
+    EXPECT_FLOAT_EQ(doc.cameraPath.keys()[1].time, 1.5f);
+    ASSERT_TRUE(deleteKey(doc, 0));
+    EXPECT_EQ(doc.cameraPath.keys().size(), 2u);
+    ASSERT_TRUE(doc.undo());  // the delete
+    EXPECT_EQ(doc.cameraPath.keys().size(), 3u);
+    ASSERT_TRUE(doc.undo());  // the retime
+    EXPECT_FLOAT_EQ(doc.cameraPath.keys()[1].time, 1.0f);
+    ASSERT_TRUE(doc.redo());
+    EXPECT_FLOAT_EQ(doc.cameraPath.keys()[1].time, 1.5f);
+}
+
+TEST(PathEditing, RetimingStaysBetweenTheNeighbours) {
+    Document doc = threeKeyDocument();
+    ASSERT_TRUE(retimeKey(doc, 1, 5.0f));  // past key 2 at 2 s
+    EXPECT_LT(doc.cameraPath.keys()[1].time, 2.0f);
+    EXPECT_GE(doc.cameraPath.keys()[1].time, 2.0f - 2.0f * kMinKeySpacing);
+    ASSERT_TRUE(retimeKey(doc, 1, -3.0f));
+    EXPECT_GT(doc.cameraPath.keys()[1].time, 0.0f);
+    ASSERT_TRUE(retimeKey(doc, 0, -3.0f));  // the first key may move earlier freely
+    EXPECT_FLOAT_EQ(doc.cameraPath.keys()[0].time, -3.0f);
+    EXPECT_FALSE(retimeKey(doc, 7, 1.0f));
+}
+
+TEST(PathEditing, AddingAtAnOccupiedTimeMovesTheNewKeyOn) {
+    Document doc = threeKeyDocument();
+    const std::size_t index = addKey(doc, keyFromCamera(cameraAt({5, 1, 5}, 0.0f), 1.0f));
+    EXPECT_EQ(index, 2u);
+    EXPECT_NEAR(doc.cameraPath.keys()[index].time, 1.0f + kMinKeySpacing, 1e-6f);
+    EXPECT_EQ(doc.selectedKey, 2);
+}
+
+TEST(PathEditing, PlaybackStopsAtTheEndOrWrapsWhenLooping) {
+    Document doc = threeKeyDocument();
+    PathPlayback playback;
+    playback.play(doc.cameraPath);
+    playback.advance(doc.cameraPath, 1.25);
+    EXPECT_NEAR(playback.time, 1.25, 1e-9);
+    playback.advance(doc.cameraPath, 5.0);
+    EXPECT_DOUBLE_EQ(playback.time, doc.cameraPath.endTime());
+    EXPECT_FALSE(playback.playing);
+    playback.play(doc.cameraPath);  // at the end: starts over
+    EXPECT_DOUBLE_EQ(playback.time, doc.cameraPath.startTime());
+
+    setPathOptions(doc, CameraPathOptions{.loop = true});
+    playback.advance(doc.cameraPath, doc.cameraPath.duration() + 0.25);
+    EXPECT_TRUE(playback.playing);
+    EXPECT_NEAR(playback.time, doc.cameraPath.startTime() + 0.25, 1e-6);
+}
+
+TEST(PathEditing, ScriptCommandsDriveKeysAndPlayback) {
+    Document doc;
+    PathPlayback playback;
+    FlyCamera camera = cameraAt({0, 1, 3}, 0.0f);
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "play", {}), "the camera path has no keys to play");
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "key", {"add"}), "");
+    camera.position = {1, 1, 1};
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "time", {"2"}), "");
+    // "time" points the camera at the path (one key: that key).
+    EXPECT_NEAR(glm::length(camera.position - glm::vec3(0, 1, 3)), 0.0f, 1e-5f);
+    camera.position = {1, 1, 1};
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "key", {"add"}), "");
+    ASSERT_EQ(doc.cameraPath.keys().size(), 2u);
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "key", {"time", "1", "3.5"}), "");
+    EXPECT_FLOAT_EQ(doc.cameraPath.keys()[1].time, 3.5f);
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "key", {"select", "0"}), "");
+    EXPECT_EQ(doc.selectedKey, 0);
+    EXPECT_NE(runPathCommand(doc, playback, camera, "key", {"select", "9"}).find("no key 9"), std::string::npos);
+    EXPECT_NE(runPathCommand(doc, playback, camera, "key", {"time", "1", "abc"}), "");
+    EXPECT_NE(runPathCommand(doc, playback, camera, "key", {"spin", "1"}).find("unknown key action"), std::string::npos);
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "play", {}), "");
+    EXPECT_TRUE(playback.playing);
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "pause", {}), "");
+    EXPECT_FALSE(playback.playing);
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "key", {"delete", "1"}), "");
+    EXPECT_EQ(doc.cameraPath.keys().size(), 1u);
+}
+
+}  // namespace

@@ -1,0 +1,134 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "Script.h"
+
+namespace {
+
+using namespace lit::editor;
+
+std::string errorOf(const std::string& text) {
+    try {
+        parseScript(text, "s.txt");
+    } catch (const ScriptError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+TEST(Script, ParsesEveryCommand) {
+    const std::string text =
+        "# a comment\n"
+        "\n"
+        "select Big Box   \n"
+        "select -\n"
+        "set node.name  A name with spaces  # trailing comment\n"
+        "set light.color 1 0.5 0\n"
+        "setting gi false\n"
+        "setting exposure 1.5\n"
+        "setting view albedo\n"
+        "view direct-diffuse\n"
+        "panel timeline off\n"
+        "pick 10 20.5\n"
+        "screenshot out/a.png\n"
+        "screenshot out/b.png noui\r\n"
+        "save\n"
+        "save other.glb\n"
+        "open scene.gltf\n"
+        "undo\n"
+        "redo\n"
+        "wait 3\n"
+        "key add\n"
+        "key delete 0\n"
+        "key select 1\n"
+        "key time 1 2.5\n"
+        "key update 1\n"
+        "play\n"
+        "pause\n"
+        "time 1.25\n"
+        "quit";
+    const std::vector<ScriptCommand> commands = parseScript(text, "s.txt");
+    ASSERT_EQ(commands.size(), 27u);
+    EXPECT_EQ(commands[0].line, 3);
+    EXPECT_EQ(commands[0].name, "select");
+    EXPECT_EQ(commands[0].args, std::vector<std::string>{"Big Box"});
+    EXPECT_EQ(commands[1].args, std::vector<std::string>{"-"});
+    EXPECT_EQ(commands[2].args, (std::vector<std::string>{"node.name", "A name with spaces"}));
+    EXPECT_EQ(commands[3].args, (std::vector<std::string>{"light.color", "1 0.5 0"}));
+    EXPECT_EQ(commands[4].args, (std::vector<std::string>{"gi", "false"}));
+    EXPECT_EQ(commands[11].args, (std::vector<std::string>{"out/b.png", "noui"}));  // \r dropped
+    EXPECT_TRUE(commands[12].args.empty());
+    EXPECT_EQ(commands[21].name, "key");
+    EXPECT_EQ(commands[21].args, (std::vector<std::string>{"time", "1", "2.5"}));
+    EXPECT_EQ(commands[26].name, "quit");
+    EXPECT_EQ(commands[26].line, 29);
+}
+
+TEST(Script, EmptyAndCommentOnlyScriptsHaveNoCommands) {
+    EXPECT_TRUE(parseScript("", "s.txt").empty());
+    EXPECT_TRUE(parseScript("# nothing\n\n   \n", "s.txt").empty());
+}
+
+TEST(Script, ErrorsNameTheFileAndLine) {
+    EXPECT_EQ(errorOf("wait 1\n\nselec Box\n"), "s.txt:3: unknown command 'selec'");
+    EXPECT_EQ(errorOf("select\n"), "s.txt:1: select: expected a node name (or - for none), got 0 arguments");
+    EXPECT_EQ(errorOf("undo now\n"), "s.txt:1: undo: expected no arguments, got 1 argument");
+    EXPECT_EQ(errorOf("\nwait\n"), "s.txt:2: wait: expected a number of frames, got 0 arguments");
+    EXPECT_EQ(errorOf("wait 1.5x\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), got '1.5x'");
+    EXPECT_EQ(errorOf("wait 0\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), got '0'");
+    EXPECT_EQ(errorOf("set light.intensity\n"), "s.txt:1: set: expected a property and a value");
+    EXPECT_EQ(errorOf("set light.intensity 1.5x\n"), "s.txt:1: light.intensity: expected 1 number, got '1.5x'");
+    EXPECT_EQ(errorOf("set light.colour 1 1 1\n"), "s.txt:1: unknown property 'light.colour'");
+    EXPECT_EQ(errorOf("set light.shadow maybe\n"), "s.txt:1: light.shadow: expected on or off, got 'maybe'");
+    EXPECT_EQ(errorOf("setting voxelRes 64\n"), "s.txt:1: unknown render setting 'voxelRes'");
+    EXPECT_EQ(errorOf("setting gi\n"), "s.txt:1: setting: expected a setting name and a value, got 1 argument");
+    EXPECT_NE(errorOf("setting gi 3\n").find("s.txt:1: "), std::string::npos);
+    EXPECT_NE(errorOf("setting gi 3\n").find("'gi'"), std::string::npos);
+    EXPECT_EQ(errorOf("view shiny\n"), "s.txt:1: unknown view 'shiny'");
+    EXPECT_EQ(errorOf("panel sidebar on\n"),
+              "s.txt:1: unknown panel 'sidebar' (hierarchy, inspector, settings, stats, camera, log, timeline)");
+    EXPECT_EQ(errorOf("panel log maybe\n"), "s.txt:1: panel: expected on or off, got 'maybe'");
+    EXPECT_EQ(errorOf("pick 10\n"), "s.txt:1: pick: expected X and Y window pixels, got 1 argument");
+    EXPECT_EQ(errorOf("pick 10 -2\n"), "s.txt:1: pick: expected a pixel position, got '-2'");
+    EXPECT_EQ(errorOf("screenshot a.png both\n"), "s.txt:1: screenshot: expected ui or noui, got 'both'");
+    EXPECT_EQ(errorOf("save a b\n"), "s.txt:1: save: expected at most a file, got 2 arguments");
+    EXPECT_EQ(errorOf("open\n"), "s.txt:1: open: expected a file, got 0 arguments");
+    EXPECT_EQ(errorOf("key\n"), "s.txt:1: key: expected add, delete I, select I, time I T or update I");
+    EXPECT_EQ(errorOf("key remove 1\n"), "s.txt:1: unknown key action 'remove' (add, delete, select, time, update)");
+    EXPECT_EQ(errorOf("key add 1\n"), "s.txt:1: key add: expected no values, got 1");
+    EXPECT_EQ(errorOf("key select x\n"), "s.txt:1: key select: expected a key index, got 'x'");
+    EXPECT_EQ(errorOf("key time 1\n"), "s.txt:1: key time: expected 2 values, got 1");
+    EXPECT_EQ(errorOf("key time 1 soon\n"), "s.txt:1: key time: expected seconds, got 'soon'");
+    EXPECT_EQ(errorOf("time\n"), "s.txt:1: time: expected a time in seconds, got 0 arguments");
+    EXPECT_EQ(errorOf("time 1s\n"), "s.txt:1: time: expected seconds, got '1s'");
+}
+
+TEST(Script, ErrorAtNamesTheCommandsLine) {
+    ScriptCommand command;
+    command.line = 7;
+    EXPECT_EQ(scriptErrorAt(command, "script.txt", "no node called 'X'"), "script.txt:7: no node called 'X'");
+}
+
+TEST(Script, LoadScriptReadsAFileAndNamesItInErrors) {
+    const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / "lit_script_test";
+    std::filesystem::create_directories(folder);
+    const std::filesystem::path good = folder / "good.txt";
+    std::ofstream(good) << "wait 2\nquit\n";
+    const std::vector<ScriptCommand> commands = loadScript(good);
+    ASSERT_EQ(commands.size(), 2u);
+    EXPECT_EQ(commands[1].name, "quit");
+
+    const std::filesystem::path bad = folder / "bad.txt";
+    std::ofstream(bad) << "wait 2\njump\n";
+    try {
+        loadScript(bad);
+        FAIL() << "no error";
+    } catch (const ScriptError& error) {
+        EXPECT_EQ(std::string(error.what()), bad.string() + ":2: unknown command 'jump'");
+    }
+    EXPECT_THROW(loadScript(folder / "missing.txt"), ScriptError);
+}
+
+}  // namespace

@@ -1,0 +1,97 @@
+#include <gtest/gtest.h>
+
+#include "PathEditing.h"
+#include "ViewportOverlay.h"
+#include "Log.h"
+#include "Properties.h"
+#include "scene/OverlayShapes.h"
+#include "scene/SceneBuilder.h"
+
+namespace {
+
+using namespace lit;
+using namespace lit::editor;
+
+Document sceneWithLightAndCamera() {
+    Scene scene;
+    const int material = addMaterial(scene, glm::vec3(0.5f));
+    const int box = addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), material), glm::vec3(0.0f));
+    scene.nodes[static_cast<std::size_t>(box)].name = "Box";
+    Log log;
+    addDefaultLightAndCamera(scene, log);
+    scene.updateWorldTransforms();
+    return Document(std::move(scene), CameraPath{}, {});
+}
+
+CameraView viewOf(const Document& doc) { return frameBounds(doc.scene.worldBounds(), 16.0f / 9.0f); }
+
+TEST(ViewportOverlay, MarksLightsAndCamerasAndNothingElseWithoutSelection) {
+    const Document doc = sceneWithLightAndCamera();
+    ASSERT_FALSE(doc.scene.lights.empty());
+    ASSERT_FALSE(doc.scene.cameras.empty());
+    const ViewportOverlay overlay = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
+    EXPECT_EQ(overlay.highlightNode, -1);
+    EXPECT_FALSE(overlay.lines.empty());
+    EXPECT_TRUE(overlay.linesOnTop.empty());  // no gizmo without a selection
+
+    OverlayOptions none;
+    none.markers = false;
+    EXPECT_TRUE(buildViewportOverlay(doc, viewOf(doc), {1280, 720}, none).empty());
+}
+
+TEST(ViewportOverlay, SelectionGetsAnOutlineAndAGizmoAtTheNode) {
+    Document doc = sceneWithLightAndCamera();
+    doc.selectedNode = findNode(doc.scene, "Box");
+    ASSERT_GE(doc.selectedNode, 0);
+    doc.scene.nodes[static_cast<std::size_t>(doc.selectedNode)].translation = {0.5f, 0.25f, -1.0f};
+    doc.touched(Change::Transform);
+    const ViewportOverlay overlay = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
+    EXPECT_EQ(overlay.highlightNode, doc.selectedNode);
+    ASSERT_FALSE(overlay.linesOnTop.empty());
+    // Every gizmo axis starts at the node.
+    int fromNode = 0;
+    for (const OverlayLine& line : overlay.linesOnTop)
+        if (glm::length(line.a - glm::vec3(0.5f, 0.25f, -1.0f)) < 1e-5f) ++fromNode;
+    EXPECT_EQ(fromNode, 3);
+}
+
+TEST(ViewportOverlay, TheCameraPathIsACurveThroughItsKeys) {
+    Document doc = sceneWithLightAndCamera();
+    const std::size_t before = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{}).lines.size();
+    FlyCamera camera;
+    camera.position = {0, 1, 4};
+    addKey(doc, keyFromCamera(camera, 0.0f));
+    camera.position = {2, 1, 3};
+    addKey(doc, keyFromCamera(camera, 2.0f));
+    const ViewportOverlay overlay = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
+    ASSERT_GT(overlay.lines.size(), before + 2 * kPathCurveSamplesPerKey);
+    // The curve starts at key 0 and ends at key 1.
+    bool startsAtKey = false, endsAtKey = false;
+    for (const OverlayLine& line : overlay.lines) {
+        startsAtKey |= glm::length(line.a - glm::vec3(0, 1, 4)) < 1e-4f;
+        endsAtKey |= glm::length(line.b - glm::vec3(2, 1, 3)) < 1e-4f;
+    }
+    EXPECT_TRUE(startsAtKey);
+    EXPECT_TRUE(endsAtKey);
+}
+
+TEST(ViewportOverlay, ConeDirectionsViewDrawsSixDiffuseConesAndTheSpecularOnes) {
+    Document doc = sceneWithLightAndCamera();
+    doc.settings.specularSamples = 2;
+    OverlayOptions options;
+    options.markers = false;
+    SurfaceSample surface;
+    surface.position = {0.0f, 0.5f, 0.0f};
+    surface.normal = {0.0f, 1.0f, 0.0f};
+    surface.roughness = 0.5f;
+    surface.voxelSize = 0.05f;
+    surface.volumeSide = 3.2f;
+    options.coneSurface = surface;
+    options.coneCameraPosition = {0.0f, 2.0f, 3.0f};
+    const ViewportOverlay overlay = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, options);
+    const std::size_t cones = tracedCones(surface, options.coneCameraPosition, doc.settings).size();
+    EXPECT_GE(cones, 7u);
+    EXPECT_EQ(overlay.linesOnTop.size(), cones * coneLines({}, {0, 1, 0}, 1.0f, 1.0f, {}).size());
+}
+
+}  // namespace

@@ -1,0 +1,199 @@
+// Atomic file replacement (renderer/io/AtomicFile.cpp) and the image writers built on it
+// (renderer/image/ImageIO.cpp).
+
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <set>
+
+#include "image/ImageIO.h"
+#include "io/AtomicFile.h"
+#include "io/GltfFile.h"
+
+namespace lit {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempDir {
+public:
+    TempDir() {
+        static std::atomic<int> counter{0};
+        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+        path_ = fs::temp_directory_path() / ("lit_atomic_" + std::to_string(::getpid()) + "_" +
+                                             std::to_string(counter++) + "_" + (info ? info->name() : "test"));
+        fs::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    fs::path operator/(const std::string& name) const { return path_ / name; }
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+};
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::set<std::string> filesIn(const fs::path& dir) {
+    std::set<std::string> names;
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename().string());
+    return names;
+}
+
+std::string errorOf(const std::function<void()>& action) {
+    try {
+        action();
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(AtomicFile, WritesReplacesAndKeepsPermissions) {
+    TempDir dir;
+    const fs::path file = dir / "sub" / "folder" / "a.txt";
+    writeFileAtomically(file, std::string_view("first"));
+    EXPECT_EQ(readText(file), "first");
+    ASSERT_EQ(::chmod(file.c_str(), 0640), 0);
+    writeFileAtomically(file, std::string_view("second, longer"));
+    EXPECT_EQ(readText(file), "second, longer");
+    struct stat st{};
+    ASSERT_EQ(::stat(file.c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0777, 0640u);
+    EXPECT_EQ(filesIn(dir / "sub" / "folder"), std::set<std::string>{"a.txt"});  // no temporaries left
+    writeFileAtomically(file, std::string_view(""));
+    EXPECT_EQ(fs::file_size(file), 0u);
+}
+
+TEST(AtomicFile, ErrorsNameTheFileAndTheReason) {
+    TempDir dir;
+    fs::create_directories(dir / "folder");
+    EXPECT_EQ(errorOf([&] { writeFileAtomically(dir / "folder", std::string_view("x")); }),
+              (dir / "folder").string() + ": is a folder, not a file");
+    std::ofstream(dir / "file") << "content";
+    EXPECT_EQ(errorOf([&] { writeFileAtomically(dir / "file" / "child.txt", std::string_view("x")); }),
+              (dir / "file" / "child.txt").string() + ": cannot create the file: " + (dir / "file").string() +
+                  " is a file, not a folder");
+    EXPECT_EQ(readText(dir / "file"), "content");
+    EXPECT_EQ(filesIn(dir.path()), (std::set<std::string>{"folder", "file"}));
+}
+
+TEST(AtomicFile, ASymbolicLinkStaysALink) {
+    TempDir dir;
+    writeFileAtomically(dir / "real.txt", std::string_view("old"));
+    fs::create_symlink("real.txt", dir / "link.txt");
+    writeFileAtomically(dir / "link.txt", std::string_view("new"));
+    EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
+    EXPECT_EQ(readText(dir / "real.txt"), "new");
+}
+
+TEST(AtomicFileSet, UncommittedTemporariesAreRemoved) {
+    TempDir dir;
+    writeFileAtomically(dir / "a.bin", std::string_view("old a"));
+    {
+        AtomicFileSet files;
+        files.stage(dir / "a.bin", std::string_view("new a"));
+        files.stage(dir / "b.gltf", std::string_view("new b"));
+        EXPECT_EQ(filesIn(dir.path()).size(), 3u);  // a.bin and two temporaries
+    }
+    EXPECT_EQ(filesIn(dir.path()), std::set<std::string>{"a.bin"});
+    EXPECT_EQ(readText(dir / "a.bin"), "old a");
+
+    AtomicFileSet twice;
+    twice.stage(dir / "a.bin", std::string_view("1"));
+    EXPECT_EQ(errorOf([&] { twice.stage(dir / "a.bin", std::string_view("2")); }),
+              (dir / "a.bin").string() + ": is written twice in one save");
+}
+
+TEST(AtomicFileSet, AFailedRenameRestoresTheFilesAlreadyReplaced) {
+    TempDir dir;
+    writeFileAtomically(dir / "scene.bin", std::string_view("old bin"));
+    writeFileAtomically(dir / "scene.gltf", std::string_view("old gltf"));
+    AtomicFileSet files;
+    files.stage(dir / "scene.bin", std::string_view("new bin"));
+    files.stage(dir / "extra.bin", std::string_view("new extra"));  // did not exist before
+    files.stage(dir / "scene.gltf", std::string_view("new gltf"));
+    // Between staging and committing, the last target becomes a folder that is not empty, so
+    // its rename fails after the first two succeeded.
+    fs::remove(dir / "scene.gltf");
+    fs::create_directories(dir / "scene.gltf" / "in the way");
+    const std::string error = errorOf([&] { files.commit(); });
+    EXPECT_EQ(error.rfind((dir / "scene.gltf").string() + ": cannot replace the file (", 0), 0u) << error;
+    EXPECT_EQ(error.find("not restored"), std::string::npos) << error;
+    EXPECT_EQ(readText(dir / "scene.bin"), "old bin");
+    EXPECT_FALSE(fs::exists(dir / "extra.bin"));
+    EXPECT_EQ(filesIn(dir.path()), (std::set<std::string>{"scene.bin", "scene.gltf"}));  // no temporaries or backups
+}
+
+TEST(AtomicFileSet, CommitReplacesEveryFile) {
+    TempDir dir;
+    writeFileAtomically(dir / "scene.bin", std::string_view("old bin"));
+    AtomicFileSet files;
+    files.stage(dir / "scene.bin", std::string_view("new bin"));
+    files.stage(dir / "scene.gltf", std::string_view("new gltf"));
+    files.commit();
+    EXPECT_EQ(readText(dir / "scene.bin"), "new bin");
+    EXPECT_EQ(readText(dir / "scene.gltf"), "new gltf");
+    EXPECT_EQ(filesIn(dir.path()), (std::set<std::string>{"scene.bin", "scene.gltf"}));
+}
+
+TEST(GltfFileUris, PercentEncodingRoundTrips) {
+    EXPECT_EQ(percentEncodePath("my textures/a+b 100%.png"), "my%20textures/a%2Bb%20100%25.png");
+    EXPECT_EQ(percentDecode("my%20textures/a%2Bb%20100%25.png"), "my textures/a+b 100%.png");
+    EXPECT_EQ(percentDecode("bad%zzend%2"), "bad%zzend%2");
+    EXPECT_TRUE(staysInFolder("textures/a%20b.png"));
+    EXPECT_FALSE(staysInFolder("../a.png"));
+    EXPECT_FALSE(staysInFolder("a/%2E%2E/../b.png"));
+    EXPECT_FALSE(staysInFolder("/etc/passwd"));
+    EXPECT_TRUE(isDataUri("data:image/png;base64,AAAA"));
+    const std::uint8_t bytes[] = {'M', 'a', 'n', 'y'};
+    EXPECT_EQ(base64Encode(std::span(bytes, 4)), "TWFueQ==");
+    EXPECT_EQ(base64Encode(std::span(bytes, 3)), "TWFu");
+}
+
+TEST(ImageIO, PngEncodesAndWritesRowsInFileOrder) {
+    TempDir dir;
+    // 2×2, given bottom-up: the first row written to the file is the second row given.
+    const std::vector<std::uint8_t> rgba = {1, 2, 3, 255, 4, 5, 6, 255, 7, 8, 9, 255, 10, 11, 12, 128};
+    const std::vector<std::uint8_t> png = encodePng(2, 2, rgba);
+    int w = 0, h = 0, n = 0;
+    std::unique_ptr<stbi_uc, void (*)(void*)> decoded(
+        stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &w, &h, &n, 4), stbi_image_free);
+    ASSERT_TRUE(decoded);
+    ASSERT_EQ(w, 2);
+    ASSERT_EQ(h, 2);
+    const std::vector<std::uint8_t> top(decoded.get(), decoded.get() + 8);
+    EXPECT_EQ(top, std::vector<std::uint8_t>(rgba.begin() + 8, rgba.end()));
+
+    const fs::path file = dir / "out" / "image.png";
+    writePng(file, 2, 2, rgba);
+    std::ifstream in(file, std::ios::binary);
+    const std::vector<std::uint8_t> written{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_EQ(written, png);
+    EXPECT_EQ(filesIn(dir / "out"), std::set<std::string>{"image.png"});
+
+    EXPECT_EQ(errorOf([&] { writePng(dir / "small.png", 2, 2, std::span(rgba.data(), 15)); }),
+              "cannot write " + (dir / "small.png").string() + ": 15 values given for a 2x2 image that needs 16");
+    EXPECT_EQ(errorOf([&] { encodePng(0, 2, rgba); }), "cannot encode a PNG: image size 0x2 is empty");
+    fs::create_directories(dir / "taken.hdr");
+    const std::vector<float> rgb(12, 0.5f);
+    EXPECT_EQ(errorOf([&] { writeHdr(dir / "taken.hdr", 2, 2, rgb); }),
+              (dir / "taken.hdr").string() + ": is a folder, not a file");
+}
+
+}  // namespace
+}  // namespace lit

@@ -1,0 +1,223 @@
+#!/usr/bin/env bash
+# The performance table: `lit-render --bench` on Crytek Sponza at 1280×720 with GI off and with GI
+# at 128³, 256³ and 512³ voxels (RGBA8 radiance, as the reference), printed as it runs and written
+# to docs/PERFORMANCE.md next to the reference numbers, labelled with this machine's GL renderer,
+# CPU and the date. Optionally also benchmarks the cone-trace shaders of an older revision with
+# the same binary in the same run (PERF_COMPARE_REV), for before/after numbers of a shader change.
+#
+# Usage: tools/perf-table.sh            (from anywhere; needs a built lit-render and python3)
+# Environment (all optional):
+#   LIT_BUILD_DIR     build directory holding tools/lit-render       (default: <repo>/build)
+#   PERF_SCENE        the Sponza glTF     (default: <repo>/../shared/scenes/sponza/Sponza.gltf)
+#   PERF_SIZE         image size WxH                                  (default: 1280x720)
+#   PERF_FRAMES       frames per GI-off run                           (default: 5)
+#   PERF_GI_FRAMES    frames per GI-on run; the first also voxelizes  (default: 3)
+#   PERF_VOXELS       voxel resolutions for GI on                     (default: "128 256 512")
+#   PERF_OUT          the markdown file written                       (default: <repo>/docs/PERFORMANCE.md)
+#   PERF_COMPARE_REV  a git revision whose version of PERF_COMPARE_FILES is benchmarked as
+#                     "before" against the working tree (GI on at the first of PERF_VOXELS): the
+#                     same binary, shaders/ copied with just those files from the revision
+#   PERF_COMPARE_FILES   default: "shaders/include/cone.glsl shaders/cone_trace.frag.glsl"
+#   PERF_COMPARE_SCENES  scenes of the before/after runs (default: the Sponza scene above and the
+#                     Cornell box, whose camera sees only interior surfaces)
+#   PERF_COMPARE_ROUNDS  before/after pairs, interleaved                (default: 3)
+#   PERF_COMPARE_SIZE, PERF_COMPARE_FRAMES   image size and frames of those runs (default: 640x360, 6)
+# Besides the pass timings (wall clock, so they grow with other load on a shared machine) each
+# before/after run records the process's CPU time (user + sys, with /usr/bin/time): both variants
+# do identical work apart from the compared shaders, so the difference in CPU seconds is the
+# difference in their cost, and is much less disturbed by other processes than wall time.
+# Software rasterizers (llvmpipe) take about a second per 1280×720 GI frame: the defaults keep the
+# whole script to a few minutes there (more when the machine is shared).
+# Notes written below the line "<!-- notes below are kept by tools/perf-table.sh -->" in the
+# output file are kept when it is rewritten. A resolution whose volumes would not fit in the free
+# memory is skipped with a message.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${LIT_BUILD_DIR:-$root/build}"
+render="$build/tools/lit-render"
+scene="${PERF_SCENE:-$root/../shared/scenes/sponza/Sponza.gltf}"
+size="${PERF_SIZE:-1280x720}"
+frames="${PERF_FRAMES:-5}"
+giFrames="${PERF_GI_FRAMES:-3}"
+voxelList="${PERF_VOXELS:-128 256 512}"
+out="${PERF_OUT:-$root/docs/PERFORMANCE.md}"
+compareRev="${PERF_COMPARE_REV:-}"
+compareRounds="${PERF_COMPARE_ROUNDS:-3}"
+compareSize="${PERF_COMPARE_SIZE:-640x360}"
+compareFrames="${PERF_COMPARE_FRAMES:-6}"
+compareFiles="${PERF_COMPARE_FILES:-shaders/include/cone.glsl shaders/cone_trace.frag.glsl}"
+compareScenes="${PERF_COMPARE_SCENES:-$scene $root/assets/cornell_box.gltf}"
+
+if [[ ! -f "$scene" ]]; then
+    echo "perf-table: Sponza not found at $scene (set PERF_SCENE); skipped, $out left as it is"
+    exit 0
+fi
+if [[ ! -x "$render" ]]; then
+    echo "perf-table: $render not found; build the lit-render target (or set LIT_BUILD_DIR)" >&2
+    exit 1
+fi
+command -v python3 >/dev/null || { echo "perf-table: needs python3 to read the --json results" >&2; exit 1; }
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+echo '{"voxelRadianceRgba8": true}' >"$work/rgba8.json"
+results="$work/results"
+mkdir -p "$results"
+
+# run NAME [lit-render flags...]: one benchmark of $benchScene, its summary printed, its JSON kept
+# as NAME.json.
+benchScene="$scene"
+benchSize="$size"
+run() {
+    local name="$1"
+    shift
+    echo "== $name: lit-render $(basename "$benchScene") --size $benchSize $*"
+    local timer=()
+    [[ -x /usr/bin/time ]] && timer=(/usr/bin/time -f "%U %S" -o "$results/$name.cpu")
+    "${timer[@]}" "$render" "$benchScene" --size "$benchSize" --json "$results/$name.json" "$@" | grep -v '^wrote '
+}
+
+run "gi-off" --bench "$frames" --gi off --culling on
+run "gi-off-culling-off" --bench "$frames" --gi off --culling off
+
+availableKiB=$(awk '/MemAvailable/ {print $2}' /proc/meminfo)
+for voxels in $voxelList; do
+    # Albedo, normal and emission volumes (r32ui) plus RGBA8 radiance with mips: ≈ 4.6 bytes×4 per voxel.
+    needKiB=$((voxels * voxels * voxels * 19 / 1024))
+    if ((needKiB * 3 / 2 > availableKiB)); then
+        echo "== gi-$voxels: skipped: needs about $((needKiB / 1024)) MiB of volumes, $((availableKiB / 1024)) MiB free"
+        continue
+    fi
+    run "gi-$voxels" --bench "$giFrames" --gi on --voxels "$voxels" --settings "$work/rgba8.json"
+done
+
+if [[ -n "$compareRev" ]]; then
+    # The same binary with the working tree's shaders but the revision's version of the compared
+    # files (LIT_SHADER_DIR): only those files differ between "before" and "after".
+    mkdir -p "$work/old"
+    cp -r "$root/shaders" "$work/old/shaders"
+    for file in $compareFiles; do
+        git -C "$root" show "$compareRev:$file" >"$work/old/$file"
+    done
+    abVoxels="${voxelList%% *}"
+    benchSize="$compareSize"
+    for benchScene in $compareScenes; do
+        tag="$(basename "$benchScene" .gltf)"
+        for ((round = 1; round <= compareRounds; ++round)); do
+            LIT_SHADER_DIR="$work/old/shaders" run "before-$tag-$round" --bench "$compareFrames" --gi on \
+                --voxels "$abVoxels" --settings "$work/rgba8.json"
+            run "after-$tag-$round" --bench "$compareFrames" --gi on --voxels "$abVoxels" --settings "$work/rgba8.json"
+        done
+    done
+fi
+
+cpu="$(awk -F': ' '/model name/ {print $2; exit}' /proc/cpuinfo) ($(nproc) cores)"
+python3 - "$results" "$out" "$size" "$cpu" "$(date -u '+%Y-%m-%d %H:%M UTC')" "$compareRev" "$(uptime | sed 's/.*load average: //')" "$compareFiles" <<'PY'
+import json, os, sys
+results, out, size, cpu, date, compare_rev, load, compare_files = sys.argv[1:9]
+
+def load_run(name):
+    path = os.path.join(results, name + ".json")
+    return json.load(open(path)) if os.path.exists(path) else None
+
+voxel_runs = sorted(int(f[3:-5]) for f in os.listdir(results) if f.startswith("gi-") and f[3:-5].isdigit())
+runs = [(n, load_run(n)) for n in ["gi-off", "gi-off-culling-off"] + [f"gi-{v}" for v in voxel_runs]]
+runs = [(n, r) for n, r in runs if r]
+device = runs[0][1]["device"] if runs else "unknown"
+order = ["shadow", "g-buffer", "voxelize", "inject", "mipmap", "lighting", "cone trace", "post"]
+seen = {p["name"] for _, r in runs for p in r["passes"]}
+passes = [p for p in order if p in seen] + sorted(seen - set(order))
+
+def pass_ms(run, name):
+    for p in run["passes"]:
+        if p["name"] == name:
+            note = "" if p["framesRan"] == run["frames"] else f" ({p['framesRan']}×)"
+            return f"{p['gpuMs']['mean']:.1f}{note}"
+    return "–"
+
+def label(name, run):
+    if name.startswith("gi-off"):
+        return "GI off" + (", culling off" if not run["frustumCulling"] else "")
+    return f"GI on, {run['voxelResolution']}³"
+
+lines = []
+w = lines.append
+w("# Performance")
+w("")
+w("Generated by `tools/perf-table.sh` (`lit-render --bench --json` per row); rerun it to refresh.")
+w("")
+w("## Reference")
+w("")
+w("Crytek Sponza, NVIDIA RTX 2080, 1280×720, 512³ voxels, RGBA8 radiance: **GI off 2.03 ms, GI on 5.48 ms** per frame.")
+w("")
+w(f"## This machine: Crytek Sponza, {size.replace('x', '×')}, default camera, RGBA8 radiance")
+w("")
+w(f"- GPU (GL renderer): {device}")
+w(f"- CPU: {cpu}")
+w(f"- Date: {date}; load average at the end of the run: {load}")
+w("")
+w("| Run | frames | lowest FPS | highest FPS | mean frame (ms) | median frame (ms) | draws | triangles | cull (ms CPU) | "
+  + " | ".join(f"{p} (GPU ms)" for p in passes) + " |")
+w("|---" * (9 + len(passes)) + "|")
+for name, r in runs:
+    fm = r["frameMs"]
+    w(f"| {label(name, r)} | {r['frames']} | {r['lowestFps']:.2f} | {r['highestFps']:.2f} | {fm['mean']:.1f} | "
+      f"{fm['median']:.1f} | {r['drawsSubmitted']} of {r['drawsTotal']} | {r['triangles']} | {r['cullMs']['mean']:.3f} | "
+      + " | ".join(pass_ms(r, p) for p in passes) + " |")
+w("")
+w("How to read it:")
+w("- Frame times are wall-clock per frame with the CPU waiting for the GPU each frame (`--bench`). The first frame")
+w("  also renders the shadow maps and, with GI, voxelizes, injects and mipmaps the volume: it sets the lowest FPS")
+w("  and pulls the mean up; the median is the steady frame. Pass times are means over the frames the pass ran in;")
+w("  \"(1×)\" marks a pass that ran in fewer frames than the run (the GI update, the cached shadow maps).")
+w("- draws / triangles: the last frame's G-buffer draws (of all items) and triangles; large primitives are")
+w("  split into chunks of at most 8192 triangles on upload (`TriangleChunks.h`), so culling can drop parts of them.")
+w("- On a software rasterizer (Mesa llvmpipe) every pass runs on the CPU; the machine was shared with other jobs")
+w("  during the run, so these numbers are noisy (several per cent run to run, more under load) and are no")
+w("  prediction for a GPU. Compare rows within one run, not across runs.")
+
+tags = sorted({f[len("before-"):-len("-1.json")] for f in os.listdir(results) if f.startswith("before-") and f.endswith("-1.json")})
+groups = []
+for tag in tags:
+    pairs = [(load_run(f"before-{tag}-{i}"), load_run(f"after-{tag}-{i}")) for i in range(1, 100)]
+    groups.append((tag, [(b, a) for b, a in pairs if b and a]))
+groups = [(t, ab) for t, ab in groups if ab]
+if compare_rev and groups:
+    def cone(run):
+        for p in run["passes"]:
+            if p["name"] == "cone trace":
+                return p["gpuMs"]["min"]
+        return float("nan")
+    w("")
+    w(f"## Cone trace before/after (same binary and run; `{compare_files}` of `{compare_rev}` vs the working tree)")
+    w("")
+    def cpu_seconds(name):
+        path = os.path.join(results, name + ".cpu")
+        try:
+            return sum(float(x) for x in open(path).read().split()[-2:])
+        except (OSError, ValueError):
+            return float("nan")
+    ab0 = groups[0][1][0][0]
+    w(f"GI on, {ab0['voxelResolution']}³ RGBA8, {ab0['width']}×{ab0['height']}, {ab0['frames']} frames per run, runs "
+      "interleaved. Cone trace ms: the lowest of the run's frames (wall clock of the pass, least disturbed by other "
+      "load). CPU s: the whole process (load, upload, voxelize, all frames), user + sys; only the cone trace differs.")
+    w("")
+    w("| Scene | Round | cone trace before (ms) | cone trace after (ms) | speed-up | CPU before (s) | CPU after (s) | CPU saved (s) |")
+    w("|---|---|---|---|---|---|---|---|")
+    for tag, ab in groups:
+        for i, (b, a) in enumerate(ab, 1):
+            cb, ca = cpu_seconds(f"before-{tag}-{i}"), cpu_seconds(f"after-{tag}-{i}")
+            w(f"| {tag} | {i} | {cone(b):.1f} | {cone(a):.1f} | {cone(b) / cone(a):.2f}× | {cb:.2f} | {ca:.2f} | {cb - ca:.2f} |")
+# Hand-written notes below the marker in the existing file survive a refresh.
+marker = "<!-- notes below are kept by tools/perf-table.sh -->"
+if os.path.exists(out):
+    old = open(out).read()
+    if marker in old:
+        w("")
+        lines.append(old[old.index(marker):].rstrip("\n"))
+os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
+open(out + ".tmp", "w").write("\n".join(lines) + "\n")
+os.replace(out + ".tmp", out)
+print(f"wrote {out}")
+PY
