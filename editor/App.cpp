@@ -256,8 +256,7 @@ void App::drawLoadingWindow() {
 }
 
 std::string App::adoptDocument(Document loaded, const std::filesystem::path& path) {
-    // The view and tuning stay as the user set them when the new file brings no settings of
-    // its own; openDocument gives defaults then.
+    // The settings come with the file (its sidecar), else they are the defaults.
     doc_ = std::move(loaded);
     try {
         renderer_->setScene(doc_.scene);
@@ -430,7 +429,15 @@ int App::run() {
         }
         window_.swapBuffers();
         updateTitle();
-        if (autosave_) autosave_->maybeSave(doc_, now);  // glfwGetTime: a steady clock
+        if (autosave_) {
+            autosave_->maybeSave(doc_, now);  // glfwGetTime: a steady clock
+            // Say once per new problem why there is no autosave copy (another editor holds the
+            // folder, a full disk...).
+            if (autosave_->lastError() != lastAutosaveError_) {
+                lastAutosaveError_ = autosave_->lastError();
+                if (!lastAutosaveError_.empty()) log_.warning(lastAutosaveError_);
+            }
+        }
 
         if (now >= nextShaderCheck) {
             renderer_->reloadChangedShaders();
@@ -731,6 +738,22 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
         return saveTo(file);
     }
     if (name == "open") return openScene(arg(0));
+    if (name == "camera") {
+        float v[6] = {};
+        for (std::size_t i = 0; i < 6; ++i) {
+            const auto [end, ec] = std::from_chars(arg(i).data(), arg(i).data() + arg(i).size(), v[i]);
+            if (ec != std::errc() || end != arg(i).data() + arg(i).size()) return "camera: expected 6 numbers";
+        }
+        const glm::vec3 position(v[0], v[1], v[2]);
+        const glm::vec3 target(v[3], v[4], v[5]);
+        if (glm::length(target - position) < 1e-6f) return "camera: the target is the camera's own position";
+        const glm::vec3 d = glm::normalize(target - position);
+        // Inverse of FlyCamera::forward(): (−sin yaw · cos pitch, sin pitch, −cos yaw · cos pitch).
+        camera_.position = position;
+        camera_.pitch = std::asin(std::clamp(d.y, -1.0f, 1.0f));
+        camera_.yaw = std::atan2(-d.x, -d.z);
+        return "";
+    }
     if (name == "undo") return doc_.undo() ? "" : "nothing to undo";
     if (name == "redo") return doc_.redo() ? "" : "nothing to redo";
     if (name == "wait") {
@@ -795,6 +818,11 @@ void App::handleViewportMouse(const CameraView& view) {
     const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
     const bool selection = doc_.selectedNode >= 0 && doc_.selectedNode < static_cast<int>(doc_.scene.nodes.size());
     const bool gizmoShown = selection && viewport_.markers && !viewport_.coneDirections;
+    // The shadow map and the voxel slice are 2D images: clicks there point at nothing.
+    if (doc_.settings.view == View::ShadowMap || doc_.settings.view == View::VoxelSlice) {
+        hoveredGizmoAxis_ = -1;
+        if (!gizmo_.active()) return;
+    }
 
     if (gizmo_.active()) {
         if (io.MouseDown[ImGuiMouseButton_Left] && selection) {
@@ -827,6 +855,12 @@ void App::handleViewportMouse(const CameraView& view) {
 }
 
 void App::updateOverlay(const CameraView& view) {
+    // The shadow map and the voxel slice are 2D images, not the camera's view: world-space
+    // markers and outlines would land on them at random.
+    if (doc_.settings.view == View::ShadowMap || doc_.settings.view == View::VoxelSlice) {
+        renderer_->setOverlay({});
+        return;
+    }
     OverlayOptions options;
     options.markers = viewport_.markers;
     options.gizmo = viewport_.markers && !viewport_.coneDirections;

@@ -172,6 +172,7 @@ private:
     // Periodic copies of the document, offered after a crash. Not in script mode: a script must
     // neither be interrupted by an old crash's offer nor leave copies behind.
     std::optional<Autosave> autosave_;
+    std::string lastAutosaveError_;  // logged once when it changes
     std::vector<ScreenshotRequest> screenshots_;
 
     // Script state.

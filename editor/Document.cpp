@@ -155,10 +155,21 @@ bool Document::redo() {
     return true;
 }
 
-bool Document::dirty() const { return unsaved_ || !matches(saved_); }
+namespace {
+bool sameSettingsIgnoringSize(RenderSettings a, RenderSettings b) {
+    a.width = b.width;
+    a.height = b.height;
+    return a == b;
+}
+}  // namespace
+
+bool Document::dirty() const {
+    return unsaved_ || !matches(saved_) || !sameSettingsIgnoringSize(settings, savedSettings_);
+}
 
 void Document::markSaved() {
     saved_ = capture();
+    savedSettings_ = settings;
     unsaved_ = false;
 }
 

@@ -99,6 +99,8 @@ public:
     // ---- saving ----------------------------------------------------------------------------
     // True when the editable state differs from the one last saved (or loaded). Undoing back to
     // the saved state makes the document clean again.
+    // Render settings count too (they are saved beside the scene), except the output size, which
+    // follows the window; they are not undo steps.
     bool dirty() const;
     void markSaved();
     // Dirty until the next markSaved() whatever the state: for a document that is not what its
@@ -126,6 +128,7 @@ private:
     // What was last saved or loaded. Comparing the state itself (rather than counting steps)
     // makes an edit that is undone by hand, or undone back to the saved point, clean again.
     EditableState saved_;
+    RenderSettings savedSettings_;  // the settings saved in the sidecar, to tell when they change
     bool unsaved_ = false;  // markUnsaved()
     // Per material, the last albedo texture it had in this session (-1 = none), so that
     // "material.albedoTexture off" can be turned on again.

@@ -117,6 +117,7 @@ Document openDocument(const fs::path& file, Log& log, const std::function<void(c
             doc.settings = RenderSettings{};
         }
     }
+    doc.markSaved();  // the settings just read are the saved ones
     return doc;
 }
 

@@ -98,6 +98,12 @@ std::string check(const ScriptCommand& c) {
         return a.size() == 1 || a[1] == "ui" || a[1] == "noui" ? "" : "screenshot: expected ui or noui, got '" + a[1] + "'";
     }
     if (name == "save") return count(0, 1, "at most a file");
+    if (name == "camera") {
+        if (auto e = count(6, 6, "a position X Y Z and a point to look at X Y Z"); !e.empty()) return e;
+        for (const std::string& v : a)
+            if (!isNumber(v)) return "camera: expected a number, got '" + v + "'";
+        return "";
+    }
     if (name == "open") return count(1, 1, "a file");
     if (name == "undo" || name == "redo" || name == "play" || name == "pause" || name == "quit")
         return count(0, 0, "no arguments");

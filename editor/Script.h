@@ -13,6 +13,7 @@
 //   screenshot PATH [ui|noui]    save the window (ui, default) or the viewport alone (noui)
 //   save [PATH]                  save the scene (to PATH: Save As)
 //   open PATH                    open another scene (discarding unsaved changes)
+//   camera X Y Z TX TY TZ        put the fly camera at (X, Y, Z) looking at (TX, TY, TZ), metres
 //   undo | redo
 //   wait N                       let N frames render
 //   key add|delete|select I|time I T|update I   camera path keys (the timeline's actions)

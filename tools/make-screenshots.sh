@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates the images under screenshots/ that the README shows, from the current build:
-# the Cornell box with GI off and on, each lighting term alone, the voxel view, and the editor.
+# the Cornell box with GI off and on, each lighting term alone, the voxel view, and the editor
+# (its panels with a selection and a camera path, the voxel slice view, the cone directions view
+# and the performance overlay), the editor ones driven by a --script run.
 # Usage: tools/make-screenshots.sh [SIZE] (default 512x512; the editor is captured at 1280x720)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -15,6 +17,53 @@ mkdir -p "$out"
 for view in final direct-diffuse indirect-diffuse direct-specular indirect-specular voxels; do
     "$render" "$scene" --out "$out/cornell_gi_${view}.png" --size "$size" --gi on --voxels 128 --view "$view"
 done
-xvfb-run -a -s "-screen 0 1280x720x24" "$build/editor/lit-editor" "$scene" \
-    --screenshot "$out/editor.png" --frames 10 --size 1280x720
+
+# The editor. Keys of a camera path in front of the box, seen from further back and to the side
+# so the curve and its key frusta show; the tall box selected (outline, gizmo) in the inspector.
+script="$(mktemp)"
+trap 'rm -f "$script"' EXIT
+cat >"$script" <<SCRIPT
+camera 0.9 1.0 4.1 0 1 0
+time 0
+key add
+camera 0 1.3 4.4 0 1 0
+time 3
+key add
+camera -1.0 1.1 3.9 0 1 0
+time 6
+key add
+key select 1
+camera 2.6 2.4 6.8 0 1 1.5
+select tall_box
+wait 3
+screenshot $out/editor.png ui
+select -
+camera 0 1 3.4 0 1 0
+panel hierarchy off
+panel inspector off
+panel timeline off
+panel log off
+panel stats off
+view voxel-slice
+setting voxelChannel albedo
+setting voxelMip 1
+setting voxelSliceAxis 1
+setting voxelSlice 0.2
+wait 2
+screenshot $out/editor_voxel_slice.png ui
+panel stats on
+setting voxelMip 0
+view cone-directions
+wait 1
+pick 520 560
+wait 1
+screenshot $out/editor_cone_directions.png ui
+view final
+panel settings off
+panel camera off
+wait 4
+screenshot $out/editor_performance.png ui
+quit
+SCRIPT
+xvfb-run -a -s "-screen 0 1280x720x24" "$build/editor/lit-editor" "$scene" --script "$script" --size 1280x720
 echo "screenshots written to $out"

@@ -276,3 +276,25 @@ TEST(Document, RestoreDropsASelectionThatNoLongerExists) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace lit;
+using namespace lit::editor;
+
+TEST(Document, RenderSettingsChangesAreUnsavedButNotTheOutputSize) {
+    Document doc = lit::editor::testing::fixtureDocument();
+    ASSERT_FALSE(doc.dirty());
+    doc.settings.width = 333;  // follows the window: not a change of the document
+    doc.settings.height = 222;
+    EXPECT_FALSE(doc.dirty());
+    doc.settings.gi = !doc.settings.gi;
+    EXPECT_TRUE(doc.dirty());
+    EXPECT_FALSE(doc.canUndo());  // settings are not undo steps
+    doc.markSaved();
+    EXPECT_FALSE(doc.dirty());
+    doc.settings.exposure *= 2.0f;
+    EXPECT_TRUE(doc.dirty());
+}
+
+}  // namespace

@@ -132,3 +132,20 @@ TEST(Script, LoadScriptReadsAFileAndNamesItInErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace lit::editor;
+
+TEST(Script, CameraAndConeDirectionsCommands) {
+    const std::vector<ScriptCommand> commands =
+        parseScript("camera 3 2.5 7 0 1 2.5\nview cone-directions\npick 10 20\n", "s.txt");
+    ASSERT_EQ(commands.size(), 3u);
+    EXPECT_EQ(commands[0].name, "camera");
+    EXPECT_EQ(commands[0].args.size(), 6u);
+    EXPECT_EQ(commands[1].args[0], kConeDirectionsView);
+    EXPECT_THROW(parseScript("camera 1 2 3\n", "s.txt"), ScriptError);
+    EXPECT_THROW(parseScript("camera 1 2 3 4 5 six\n", "s.txt"), ScriptError);
+}
+
+}  // namespace
