@@ -90,6 +90,16 @@ void ImGuiLayer::latchShortKeyPresses() {
         }
         pressedSinceFrame_[k] = false;
     }
+    // ImGui 1.86's GLFW backend sets the modifier flags in its key callback, from the keys down
+    // then: a Ctrl pressed and released within one slow frame (Ctrl+S at one frame per second on
+    // llvmpipe) would be latched above but not be a modifier. Derive them from the latched keys.
+    auto down = [&io](int left, int right) {
+        return io.KeysDown[static_cast<std::size_t>(left)] || io.KeysDown[static_cast<std::size_t>(right)];
+    };
+    io.KeyCtrl = down(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL);
+    io.KeyShift = down(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
+    io.KeyAlt = down(GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT);
+    io.KeySuper = down(GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER);
 }
 
 ImGuiLayer::~ImGuiLayer() {
