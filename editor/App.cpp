@@ -416,7 +416,14 @@ int App::run() {
         doc_.settings.height = renderSize.y;
         const CameraView view = currentView();
         updateOverlay(view);
-        renderer_->render(doc_.scene, view, doc_.settings);
+        // The shadow map view follows the selected light; the saved setting stays as it was.
+        RenderSettings frameSettings = doc_.settings;
+        if (frameSettings.view == View::ShadowMap && doc_.selectedNode >= 0 &&
+            doc_.selectedNode < static_cast<int>(doc_.scene.nodes.size())) {
+            const int light = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].light;
+            if (light >= 0) frameSettings.shadowDebugLight = light;
+        }
+        renderer_->render(doc_.scene, view, frameSettings);
         takeScreenshots(/*withUi=*/false, framebuffer);
         presentViewport(framebuffer);
         imgui_->render();

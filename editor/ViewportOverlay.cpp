@@ -88,8 +88,11 @@ void addCones(const Document& doc, const OverlayOptions& options, ViewportOverla
         // whole volume), which would fill the view with lines; without GI there is no volume to
         // size them by, so they are a metre long.
         const float length = surface.volumeSide > 0.0f ? std::min(cone.length, 0.25f * surface.volumeSide) : 1.0f;
-        append(overlay.linesOnTop, coneLines(cone.apex, cone.direction, cone.aperture, length,
-                                             cone.specular ? kSpecularConeColor : kDiffuseConeColor));
+        // Specular samples on rough surfaces take their light from the diffuse cones instead of
+        // marching (docs/GI.md): drawn faint, so the view shows what is really traced.
+        glm::vec4 color = cone.specular ? kSpecularConeColor : kDiffuseConeColor;
+        if (!cone.marched) color.a *= 0.3f;
+        append(overlay.linesOnTop, coneLines(cone.apex, cone.direction, cone.aperture, length, color));
     }
 }
 

@@ -9,10 +9,7 @@ editor=$1
 scene=$2
 out=$3
 
-fail() {
-    echo "FAIL: $*"
-    exit 1
-}
+. "$(dirname "$0")/common.sh"
 
 mkdir -p "$out"
 

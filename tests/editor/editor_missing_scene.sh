@@ -9,10 +9,7 @@ editor=$1
 out=$2
 missing=/nonexistent/lit-editor-test/missing-scene.gltf
 
-fail() {
-    echo "FAIL: $*"
-    exit 1
-}
+. "$(dirname "$0")/common.sh"
 
 mkdir -p "$(dirname "$out")"
 rm -f "$out"

@@ -9,15 +9,8 @@ image_stats=$2
 scene=$3
 out=$4
 
-fail() {
-    echo "FAIL: $*"
-    exit 1
-}
-
-if ! command -v xvfb-run >/dev/null 2>&1; then
-    echo "SKIP: xvfb-run not found; the editor test needs an X server (Debian: apt-get install xvfb)"
-    exit 77
-fi
+. "$(dirname "$0")/common.sh"
+require_xvfb
 [ -f "$scene" ] || fail "scene $scene not found"
 
 mkdir -p "$(dirname "$out")"

@@ -2,6 +2,8 @@
 // (renderer/image/ImageIO.cpp).
 
 #include <gtest/gtest.h>
+
+#include "TempDir.h"
 #include <stb/stb_image.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -21,26 +23,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TempDir {
-public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() / ("lit_atomic_" + std::to_string(::getpid()) + "_" +
-                                             std::to_string(counter++) + "_" + (info ? info->name() : "test"));
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    fs::path operator/(const std::string& name) const { return path_ / name; }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
+// A folder of its own per test, removed afterwards.
+struct TempDir : lit::testing::TempDir {
+    TempDir() : lit::testing::TempDir("lit_atomic") {}
 };
 
 std::string readText(const fs::path& path) {

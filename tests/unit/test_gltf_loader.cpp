@@ -3,6 +3,8 @@
 // real scenes under /work/shared/scenes when they are present.
 
 #include <gtest/gtest.h>
+
+#include "TempDir.h"
 #include <stb/stb_image_write.h>
 #include <unistd.h>
 
@@ -31,27 +33,9 @@ using json = nlohmann::json;
 
 constexpr int kFloat = 5126, kUnsignedByte = 5121, kUnsignedShort = 5123, kUnsignedInt = 5125;
 
-// A directory of its own per test, removed afterwards.
-class TempDir {
-public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() / ("lit_gltf_" + std::to_string(::getpid()) + "_" +
-                                             std::to_string(counter++) + "_" + (info ? info->name() : "test"));
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-    fs::path operator/(const std::string& name) const { return path_ / name; }
-
-private:
-    fs::path path_;
+// A folder of its own per test, removed afterwards.
+struct TempDir : lit::testing::TempDir {
+    TempDir() : lit::testing::TempDir("lit_gltf") {}
 };
 
 void writeFile(const fs::path& path, const void* data, std::size_t size) {

@@ -2,6 +2,8 @@
 // loadGltf must come back with every field, and a failed save must leave old files as they were.
 
 #include <gtest/gtest.h>
+
+#include "TempDir.h"
 #include <unistd.h>
 
 #include <algorithm>
@@ -27,27 +29,9 @@ using json = nlohmann::json;
 
 constexpr float kTolerance = 1e-6f;
 
-// A directory of its own per test, removed afterwards.
-class TempDir {
-public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() / ("lit_gltf_writer_" + std::to_string(::getpid()) + "_" +
-                                             std::to_string(counter++) + "_" + (info ? info->name() : "test"));
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-    fs::path operator/(const std::string& name) const { return path_ / name; }
-
-private:
-    fs::path path_;
+// A folder of its own per test, removed afterwards.
+struct TempDir : lit::testing::TempDir {
+    TempDir() : lit::testing::TempDir("lit_gltf_writer") {}
 };
 
 std::vector<std::uint8_t> readFile(const fs::path& path) {

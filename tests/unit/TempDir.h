@@ -1,0 +1,40 @@
+#pragma once
+// A folder of its own for one test, under the system's temporary folder, removed afterwards.
+// The name carries the process, a counter and the test's name, so parallel CTest runs and
+// repeated tests never share one.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <filesystem>
+#include <string>
+#include <system_error>
+
+namespace lit::testing {
+
+class TempDir {
+public:
+    explicit TempDir(const std::string& prefix = "lit") {
+        static std::atomic<int> counter{0};
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = std::filesystem::temp_directory_path() /
+                (prefix + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + "_" +
+                 (info ? info->name() : "test"));
+        std::filesystem::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path_, ignored);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+    std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+    std::filesystem::path path_;
+};
+
+}  // namespace lit::testing
