@@ -84,11 +84,14 @@ std::string editorUsage() {
            "  --screenshot FILE  render N frames, save the window (UI included) as a PNG, exit\n"
            "  --frames N         frames to render before the screenshot (default 8)\n"
            "  --script FILE      run the editor actions in FILE, one per frame, then exit\n"
-           "                     (select, set, setting, view, panel, screenshot, save, undo, redo,\n"
-           "                     wait N, quit; see editor/Script.h)\n"
+           "                     (select, set, setting, view, panel, pick, camera, screenshot, save,\n"
+           "                     open, undo, redo, key, play, pause, time, wait N, quit;\n"
+           "                     see docs/EDITOR.md)\n"
            "  --size WxH         window size in screen coordinates (default 1280x720)\n"
            "Controls: right mouse drag to look, WASD to move, Q/E down/up, Shift to go faster,\n"
-           "mouse wheel to change the speed.\n";
+           "mouse wheel to change the speed; left click selects, drag a gizmo axis to move.\n"
+           "Keys: Ctrl+Z/Ctrl+Y undo/redo, Ctrl+S save, F12 screenshot, F2 performance overlay,\n"
+           "Space play the camera path, Esc clear the selection.\n";
 }
 
 }  // namespace lit::editor
