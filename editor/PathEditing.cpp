@@ -25,7 +25,7 @@ bool parseIndex(const std::string& text, std::size_t count, std::size_t& index, 
         return false;
     }
     if (index >= count) {
-        error = "no key " + text + " (the path has " + std::to_string(count) + " keys)";
+        error = "no key " + text + " (the path has " + std::to_string(count) + (count == 1 ? " key)" : " keys)");
         return false;
     }
     return true;
@@ -177,7 +177,10 @@ std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& cam
     const std::string& action = args[0];
     if (action == "add") {
         if (args.size() != 1) return "key add takes no values";
-        addKey(doc, keyFromCamera(camera, static_cast<float>(playback.time)));
+        // Like the timeline's "+ Key": the playhead follows the new key (moved on if its time
+        // was taken).
+        const std::size_t index = addKey(doc, keyFromCamera(camera, static_cast<float>(playback.time)));
+        playback.time = doc.cameraPath.keys()[index].time;
         return "";
     }
     if (args.size() < 2) return "key " + action + ": expected a key index";
