@@ -415,7 +415,12 @@ int App::run() {
         doc_.settings.width = renderSize.x;
         doc_.settings.height = renderSize.y;
         const CameraView view = currentView();
-        updateOverlay(view);
+        // A screenshot of the viewport alone (F12, "screenshot PATH noui") is a clean render:
+        // no selection outline, gizmo, markers or path, only what a debug view itself draws.
+        const bool cleanViewport = std::any_of(screenshots_.begin(), screenshots_.end(), [](const ScreenshotRequest& r) {
+            return !r.withUi && r.delayFrames == 0;
+        });
+        updateOverlay(view, cleanViewport);
         // The shadow map view follows the selected light; the saved setting stays as it was.
         RenderSettings frameSettings = doc_.settings;
         if (frameSettings.view == View::ShadowMap && doc_.selectedNode >= 0 &&
@@ -861,7 +866,7 @@ void App::handleViewportMouse(const CameraView& view) {
     pickAt(mouse);
 }
 
-void App::updateOverlay(const CameraView& view) {
+void App::updateOverlay(const CameraView& view, bool cleanViewport) {
     // The shadow map and the voxel slice are 2D images, not the camera's view: world-space
     // markers and outlines would land on them at random.
     if (doc_.settings.view == View::ShadowMap || doc_.settings.view == View::VoxelSlice) {
@@ -869,9 +874,10 @@ void App::updateOverlay(const CameraView& view) {
         return;
     }
     OverlayOptions options;
-    options.markers = viewport_.markers;
-    options.gizmo = viewport_.markers && !viewport_.coneDirections;
-    options.cameraPath = viewport_.markers;
+    options.markers = viewport_.markers && !cleanViewport;
+    options.gizmo = viewport_.markers && !viewport_.coneDirections && !cleanViewport;
+    options.cameraPath = viewport_.markers && !cleanViewport;
+    options.selectionOutline = !cleanViewport;
     options.hoveredGizmoAxis = gizmo_.active() ? gizmo_.axis() : hoveredGizmoAxis_;
     if (viewport_.coneDirections && coneSurface_) {
         options.coneSurface = coneSurface_;

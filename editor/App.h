@@ -107,8 +107,9 @@ private:
     std::string pickAt(glm::vec2 windowPixel);
     // Plays the camera path and, when looking through it, moves the fly camera along.
     void updatePlayback(double dtSeconds);
-    // Markers, gizmo, path, selection and cones for this frame, handed to the renderer.
-    void updateOverlay(const CameraView& view);
+    // Markers, gizmo, path, selection and cones for this frame, handed to the renderer; with
+    // `cleanViewport` only the cones of the cone directions view (for viewport screenshots).
+    void updateOverlay(const CameraView& view, bool cleanViewport);
     CameraView currentView() const;
     void handleShortcuts();
     void drawUi(glm::ivec2 renderSize);

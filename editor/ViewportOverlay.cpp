@@ -107,7 +107,7 @@ ViewportOverlay buildViewportOverlay(const Document& doc, const CameraView& view
                                      const OverlayOptions& options) {
     ViewportOverlay overlay;
     const bool selected = doc.selectedNode >= 0 && doc.selectedNode < static_cast<int>(doc.scene.nodes.size());
-    if (selected) overlay.highlightNode = doc.selectedNode;
+    if (selected && options.selectionOutline) overlay.highlightNode = doc.selectedNode;
     if (options.markers) addMarkers(doc, view, viewport, overlay);
     if (options.cameraPath) addCameraPath(doc, view, viewport, overlay);
     if (options.gizmo && selected) addGizmo(doc, view, viewport, options.hoveredGizmoAxis, overlay);

@@ -17,6 +17,7 @@ struct OverlayOptions {
     bool markers = true;      // light and camera markers
     bool gizmo = true;        // the translate gizmo on the selected node
     bool cameraPath = true;   // the path curve and key frusta
+    bool selectionOutline = true;  // outline the selected node
     int hoveredGizmoAxis = -1;  // drawn brighter / thicker (0 X, 1 Y, 2 Z)
     // Cone directions view: the surface picked for it, and the camera it was seen from.
     std::optional<SurfaceSample> coneSurface;

@@ -53,6 +53,11 @@ TEST(ViewportOverlay, SelectionGetsAnOutlineAndAGizmoAtTheNode) {
     for (const OverlayLine& line : overlay.linesOnTop)
         if (glm::length(line.a - glm::vec3(0.5f, 0.25f, -1.0f)) < 1e-5f) ++fromNode;
     EXPECT_EQ(fromNode, 3);
+
+    // A clean viewport (screenshots without UI) has neither.
+    OverlayOptions clean;
+    clean.markers = clean.gizmo = clean.cameraPath = clean.selectionOutline = false;
+    EXPECT_TRUE(buildViewportOverlay(doc, viewOf(doc), {1280, 720}, clean).empty());
 }
 
 TEST(ViewportOverlay, TheCameraPathIsACurveThroughItsKeys) {
