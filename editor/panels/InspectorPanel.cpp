@@ -28,8 +28,13 @@ void track(Document& doc, const char* label, Change change, bool changed, Apply&
     if (ImGui::IsItemDeactivated()) doc.endEdit();
 }
 
-// Linear colours, edited as numbers (0..1 and above for HDR) with a swatch.
-constexpr ImGuiColorEditFlags kColourFlags = ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR;
+// Linear colours, edited as numbers in 0..1 with a swatch: glTF's base colour, emissive factor
+// and light colour are all in that range (brightness is emissive strength / light intensity),
+// and the --script "set" command accepts the same range.
+constexpr ImGuiColorEditFlags kColourFlags = ImGuiColorEditFlags_Float;
+// Smallest spot cone and the gap kept between inner and outer angles, in degrees: the falloff
+// divides by their difference.
+constexpr float kMinSpotDegrees = 0.5f;
 
 void tooltip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
@@ -110,7 +115,13 @@ void InspectorPanel::drawTransform(Document& doc, int nodeIndex) {
 
     glm::vec3 scale = node.scale;
     changed = ImGui::DragFloat3("Scale", &scale.x, 0.01f, 0.0f, 0.0f, "%.3f");
-    track(doc, "Scale", Change::Transform, changed, [&] { node.scale = scale; });
+    track(doc, "Scale", Change::Transform, changed, [&] {
+        // A zero scale collapses the node (and its normals): keep each axis a hair from zero,
+        // on the side it had, so mirroring with a negative scale still works.
+        for (int axis = 0; axis < 3; ++axis)
+            if (std::abs(scale[axis]) < 1e-4f) scale[axis] = std::copysign(1e-4f, node.scale[axis]);
+        node.scale = scale;
+    });
     ImGui::PopID();
 }
 
@@ -196,16 +207,20 @@ void InspectorPanel::drawLight(Document& doc, int lightIndex) {
     }
     if (light.type == LightType::Spot) {
         float inner = light.innerConeAngle * kDegPerRad;
-        changed = ImGui::SliderFloat("Inner angle", &inner, 0.0f, light.outerConeAngle * kDegPerRad, "%.1f deg");
+        changed = ImGui::SliderFloat("Inner angle", &inner, 0.0f,
+                                     std::max(light.outerConeAngle * kDegPerRad - kMinSpotDegrees, 0.0f), "%.1f deg");
         tooltip("Full intensity inside this angle from the axis");
         track(doc, "Spot Inner Angle", Change::Light, changed, [&] { light.innerConeAngle = inner / kDegPerRad; });
 
         float outer = light.outerConeAngle * kDegPerRad;
-        changed = ImGui::SliderFloat("Outer angle", &outer, 0.0f, 90.0f, "%.1f deg");
+        changed = ImGui::SliderFloat("Outer angle", &outer, kMinSpotDegrees, 90.0f, "%.1f deg",
+                                     ImGuiSliderFlags_AlwaysClamp);
         tooltip("No light outside this angle from the axis");
         track(doc, "Spot Outer Angle", Change::Light, changed, [&] {
             light.outerConeAngle = outer / kDegPerRad;
-            light.innerConeAngle = std::min(light.innerConeAngle, light.outerConeAngle);
+            light.innerConeAngle =
+                std::min(light.innerConeAngle, (outer - kMinSpotDegrees) / kDegPerRad);
+            light.innerConeAngle = std::max(light.innerConeAngle, 0.0f);
         });
     }
 
