@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,8 +18,8 @@
 #include "Properties.h"
 #include "ScreenshotNames.h"
 #include "SettingCommand.h"
+#include "TextParse.h"
 #include "ViewportOverlay.h"
-#include "passes/VoxelVolume.h"
 #include "gl/Capabilities.h"
 #include "image/ImageIO.h"
 #include "panels/CameraPanel.h"
@@ -86,11 +85,11 @@ App::App(const EditorOptions& options, std::vector<ScriptCommand> script)
     blitSource_ = gl::Framebuffer("editor viewport blit source");
     renderer_->setScene(doc_.scene);
     std::optional<std::filesystem::path> initialLoad;
-    if (!options_.screenshot && !options_.script) initialLoad = options_.scene.value_or(defaultScenePath());
+    if (interactive()) initialLoad = options_.scene.value_or(defaultScenePath());
     if (sceneError_.empty() && !initialLoad) recent_.add(options_.scene.value_or(defaultScenePath()));
     resetCamera();
     updateTitle();
-    if (!scriptMode() && !options_.screenshot) {
+    if (interactive()) {
         autosave_.emplace();
         // A recovered copy must not be replaced by the scene still loading: ask once it is in.
         if (initialLoad) recoveryAfterLoad_ = true; else offerRecovery();
@@ -108,7 +107,7 @@ Document App::loadInitialDocument() {
     const std::filesystem::path path = options_.scene.value_or(defaultScenePath());
     // Interactively the window opens at once and the scene loads behind a progress bar (the
     // constructor starts it: members after doc_ do not exist yet here).
-    if (!options_.screenshot && !options_.script) return Document{};
+    if (interactive()) return Document{};
     try {
         Document doc = openDocument(path, log_);
         log_.info("opened scene " + path.string());
@@ -116,7 +115,7 @@ Document App::loadInitialDocument() {
     } catch (const std::exception& error) {
         // Screenshot and script runs exist to check a scene: fail loudly. Interactively, start
         // empty and let the user open another file.
-        if (options_.screenshot || options_.script) throw;
+        if (!interactive()) throw;
         sceneError_ = error.what();
         log_.error(sceneError_);
         return Document{};
@@ -179,7 +178,7 @@ void App::carryOut(PendingAction action) {
 }
 
 std::string App::openScene(const std::filesystem::path& path) {
-    if (!scriptMode() && !options_.screenshot) {
+    if (interactive()) {
         startLoading(path);
         return "";
     }
@@ -271,9 +270,9 @@ std::string App::adoptDocument(Document loaded, const std::filesystem::path& pat
         updateTitle();
         return sceneError_;
     }
-    recent_.add(path);
+    if (!path.empty()) recent_.add(path);  // a recovered untitled document has no file
     sceneError_.clear();
-    log_.info("opened scene " + path.string());
+    log_.info("opened scene " + (path.empty() ? std::string("(untitled)") : path.string()));
     resetCamera();
     updateTitle();
     return "";
@@ -319,11 +318,9 @@ void App::answerRecovery(Answer answer) {
     case Answer::Yes: {
         try {
             Document recovered = autosave_->recover(log_);
-            doc_ = std::move(recovered);
-            renderer_->setScene(doc_.scene);
-            resetCamera();
-            updateTitle();
-            log_.info("recovered the autosave of " + displayName(doc_.file));
+            const std::filesystem::path file = recovered.file;
+            if (adoptDocument(std::move(recovered), file).empty())
+                log_.info("recovered the autosave of " + displayName(doc_.file));
         } catch (const std::exception& error) {
             sceneError_ = std::string("cannot recover the autosave: ") + error.what();
             log_.error(sceneError_);
@@ -536,11 +533,9 @@ void App::drawUi(glm::ivec2 renderSize) {
 
     if (visible_.hierarchy) hierarchyPanel_.draw(doc_, layout.hierarchy, &visible_.hierarchy);
     if (visible_.inspector) inspectorPanel_.draw(doc_, layout.inspector, &visible_.inspector);
-    if (visible_.stats) {
-        const VoxelVolume* voxels = renderer_->voxels();
+    if (visible_.stats)
         drawStatsOverlay(frameTimer_, renderer_->profiler(), renderer_->stats(), renderSize, imgui_->monoFont(),
-                         layout.stats, &visible_.stats, voxels ? voxels->memoryReport() : std::string());
-    }
+                         layout.stats, &visible_.stats, renderer_->voxels());
     if (visible_.renderSettings) {
         const RenderSettingsRequests requests =
             drawRenderSettingsPanel(doc_.settings, viewport_, static_cast<int>(doc_.scene.lights.size()),
@@ -732,13 +727,9 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
         return "";
     }
     if (name == "pick") {
-        float x = 0.0f, y = 0.0f;
-        const auto parse = [](const std::string& text, float& value) {
-            const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-            return ec == std::errc() && end == text.data() + text.size();
-        };
-        if (!parse(arg(0), x) || !parse(arg(1), y)) return "pick: expected window pixels X Y";
-        return pickAt({x, y});
+        const std::optional<float> x = parseNumber<float>(arg(0)), y = parseNumber<float>(arg(1));
+        if (!x || !y) return "pick: expected window pixels X Y";
+        return pickAt({*x, *y});
     }
     if (name == "screenshot") {
         screenshots_.push_back({arg(0), arg(1) == "ui" || arg(1).empty(), 0, command});
@@ -753,8 +744,9 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
     if (name == "camera") {
         float v[6] = {};
         for (std::size_t i = 0; i < 6; ++i) {
-            const auto [end, ec] = std::from_chars(arg(i).data(), arg(i).data() + arg(i).size(), v[i]);
-            if (ec != std::errc() || end != arg(i).data() + arg(i).size()) return "camera: expected 6 numbers";
+            const std::optional<float> number = parseNumber<float>(arg(i));
+            if (!number) return "camera: expected 6 numbers";
+            v[i] = *number;
         }
         const glm::vec3 position(v[0], v[1], v[2]);
         const glm::vec3 target(v[3], v[4], v[5]);
@@ -769,23 +761,19 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
     if (name == "undo") return doc_.undo() ? "" : "nothing to undo";
     if (name == "redo") return doc_.redo() ? "" : "nothing to redo";
     if (name == "wait") {
-        int frames = 0;
-        const auto [end, ec] = std::from_chars(arg(0).data(), arg(0).data() + arg(0).size(), frames);
-        if (ec != std::errc() || end != arg(0).data() + arg(0).size() || frames < 1)
-            return "wait: expected a whole number of frames, got '" + arg(0) + "'";
-        scriptWaitFrames_ = frames - 1;  // this frame is the first
+        const std::optional<int> frames = parseNumber<int>(arg(0));
+        if (!frames || *frames < 1) return "wait: expected a whole number of frames, got '" + arg(0) + "'";
+        scriptWaitFrames_ = *frames - 1;  // this frame is the first
         return "";
     }
-    if (name == "key" || name == "play" || name == "pause" || name == "time") return runTimelineCommand(command);
+    // The timeline's actions (PathEditing.h).
+    if (name == "key" || name == "play" || name == "pause" || name == "time")
+        return runPathCommand(doc_, playback_, camera_, name, args);
     if (name == "quit") {
         exitCode_ = 0;
         return "";
     }
     return "unknown command '" + name + "'";
-}
-
-std::string App::runTimelineCommand(const ScriptCommand& command) {
-    return runPathCommand(doc_, playback_, camera_, command.name, command.args);
 }
 
 // ---- viewport interaction ----------------------------------------------------------------------
@@ -802,7 +790,7 @@ void App::updatePlayback(double dtSeconds) {
     if (!playback_.playing) return;
     playback_.advance(doc_.cameraPath, dtSeconds);
     if (!playback_.lookThrough) return;
-    if (const auto pose = doc_.cameraPath.evaluate(playback_.time)) applyPoseToCamera(*pose, camera_);
+    lookThroughPath(doc_.cameraPath, playback_.time, camera_);
 }
 
 std::string App::pickAt(glm::vec2 windowPixel) {

@@ -68,6 +68,9 @@ private:
     };
 
     bool scriptMode() const { return options_.script.has_value(); }
+    // A person at the window (neither --script nor --screenshot): scenes load in the background,
+    // autosave runs, questions are asked.
+    bool interactive() const { return !options_.script && !options_.screenshot; }
     Document loadInitialDocument();
 
     // ---- files -----------------------------------------------------------------------------
@@ -126,9 +129,6 @@ private:
     void runScriptStep();
     // Returns "" or the error message for the command's line.
     std::string runScriptCommand(const ScriptCommand& command);
-    // The camera path family (key add|delete|select|time|update, play, pause, time T): the
-    // timeline's actions. Returns "" or an error message.
-    std::string runTimelineCommand(const ScriptCommand& command);
     void failScript(const ScriptCommand& command, const std::string& message);
 
     EditorOptions options_;

@@ -3,7 +3,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cstdio>
 #include <chrono>
 #include <cerrno>
 #include <csignal>
@@ -44,12 +43,7 @@ Document loadScene(const fs::path& sceneFile, const fs::path& documentFile, Log&
                    const std::function<void(const LoadProgress&)>& progress = {}) {
     GltfLoadOptions options;
     options.progress = progress;
-    const auto start = std::chrono::steady_clock::now();
-    Scene scene = loadGltf(sceneFile, log, options);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    char took[32];
-    std::snprintf(took, sizeof took, " in %.0f ms", ms);
-    log.info("loaded " + toString(summarize(scene)) + took);
+    Scene scene = loadGltf(sceneFile, log, options);  // logs the summary line
     addDefaultLightAndCamera(scene, log);
     CameraPath path;
     try {
@@ -89,6 +83,14 @@ bool processAlive(long pid) {
     return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
 }
 
+// The scene and camera path as saveDocument and the autosave write them (saveGltf leaves an
+// empty path out).
+void saveScene(const Document& doc, const fs::path& file) {
+    GltfSaveOptions options;
+    options.cameraPath = &doc.cameraPath;
+    saveGltf(doc.scene, file, options);
+}
+
 void removeQuietly(const fs::path& file) {
     std::error_code error;
     fs::remove(file, error);
@@ -122,9 +124,7 @@ Document openDocument(const fs::path& file, Log& log, const std::function<void(c
 }
 
 void saveDocument(Document& doc, const fs::path& file) {
-    GltfSaveOptions options;
-    if (!doc.cameraPath.empty()) options.cameraPath = &doc.cameraPath;
-    saveGltf(doc.scene, file, options);
+    saveScene(doc, file);
     writeFileAtomically(settingsSidecarPath(file), toJson(doc.settings) + "\n");
     doc.file = file;
     doc.markSaved();
@@ -193,7 +193,7 @@ void Autosave::maybeSave(const Document& doc, double nowSeconds) {
         if (written_) discard();
         return;
     }
-    if (written_ && *written_ == doc.capture() && writtenSettings_ == doc.settings && writtenFile_ == doc.file) return;
+    if (written_ && *written_ == copyOf(doc)) return;
     try {
         saveNow(doc);
         lastError_.clear();
@@ -203,9 +203,7 @@ void Autosave::maybeSave(const Document& doc, double nowSeconds) {
 }
 
 void Autosave::saveNow(const Document& doc) {
-    GltfSaveOptions options;
-    if (!doc.cameraPath.empty()) options.cameraPath = &doc.cameraPath;
-    saveGltf(doc.scene, autosaveFile(), options);
+    saveScene(doc, autosaveFile());
     const nlohmann::json marker = {
         {"version", kMarkerVersion},
         {"document", doc.file.string()},
@@ -213,9 +211,7 @@ void Autosave::saveNow(const Document& doc) {
         {"settings", nlohmann::json::parse(toJson(doc.settings))},
     };
     writeFileAtomically(markerFile(), marker.dump(2) + "\n");
-    written_ = doc.capture();
-    writtenSettings_ = doc.settings;
-    writtenFile_ = doc.file;
+    written_ = copyOf(doc);
 }
 
 std::optional<AutosaveInfo> Autosave::recoverable() const { return recoverable_; }
@@ -238,9 +234,7 @@ Document Autosave::recover(Log& log) {
     doc.markUnsaved();
     // This session's copies may be written from now on (the recovered one is theirs to replace).
     recoverable_.reset();
-    written_ = doc.capture();
-    writtenSettings_ = doc.settings;
-    writtenFile_ = doc.file;
+    written_ = copyOf(doc);
     return doc;
 }
 

@@ -106,9 +106,15 @@ private:
     bool active_ = false;
     std::optional<AutosaveInfo> recoverable_;
     std::optional<double> lastWrite_;           // nowSeconds of the last write (or the first call)
-    std::optional<EditableState> written_;      // what the copy on disk holds
-    RenderSettings writtenSettings_;
-    std::filesystem::path writtenFile_;
+    // What the copy on disk holds.
+    struct Copy {
+        EditableState state;
+        RenderSettings settings;
+        std::filesystem::path file;
+        bool operator==(const Copy&) const = default;
+    };
+    static Copy copyOf(const Document& doc) { return {doc.capture(), doc.settings, doc.file}; }
+    std::optional<Copy> written_;
     std::string lastError_;
 };
 

@@ -1,8 +1,9 @@
 #include "EditorOptions.h"
 
-#include <charconv>
 #include <tuple>
 #include <utility>
+
+#include "TextParse.h"
 
 namespace lit::editor {
 
@@ -14,11 +15,9 @@ constexpr int kMaxWindowSide = 16384;
 constexpr int kMaxFrames = 100000;
 
 int parseInt(std::string_view text, std::string_view what) {
-    int value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size())
-        throw OptionsError(std::string(what) + ": '" + std::string(text) + "' is not a whole number");
-    return value;
+    const auto value = parseNumber<int>(text);
+    if (!value) throw OptionsError(std::string(what) + ": '" + std::string(text) + "' is not a whole number");
+    return *value;
 }
 
 // "1280x720" → {1280, 720}.

@@ -1,29 +1,22 @@
 #include "PathEditing.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "TextParse.h"
 
 namespace lit::editor {
 
 namespace {
 
-std::vector<CameraKey> keysOf(const Document& doc) { return doc.cameraPath.keys(); }
-
-bool parseNumber(const std::string& text, double& value) {
-    const char* end = text.data() + text.size();
-    const auto [ptr, error] = std::from_chars(text.data(), end, value);
-    return error == std::errc{} && ptr == end && std::isfinite(value);
-}
-
 bool parseIndex(const std::string& text, std::size_t count, std::size_t& index, std::string& error) {
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, index);
-    if (ec != std::errc{} || ptr != end) {
+    const std::optional<std::size_t> parsed = parseNumber<std::size_t>(text);
+    if (!parsed) {
         error = "expected a key index, got '" + text + "'";
         return false;
     }
+    index = *parsed;
     if (index >= count) {
         error = "no key " + text + " (the path has " + std::to_string(count) + (count == 1 ? " key)" : " keys)");
         return false;
@@ -54,25 +47,24 @@ void applyPoseToCamera(const CameraPose& pose, FlyCamera& camera) {
     camera.yfov = pose.yfov;
 }
 
+void lookThroughPath(const CameraPath& path, double time, FlyCamera& camera) {
+    if (const auto pose = path.evaluate(time)) applyPoseToCamera(*pose, camera);
+}
+
 std::size_t addKey(Document& doc, CameraKey key) {
-    std::vector<CameraKey> keys = keysOf(doc);
     // Move past every key the new one would collide with (keys are sorted by time).
-    for (const CameraKey& existing : keys)
+    for (const CameraKey& existing : doc.cameraPath.keys())
         if (std::abs(existing.time - key.time) < kMinKeySpacing) key.time = existing.time + kMinKeySpacing;
-    doc.beginEdit("Add Key");
-    const std::size_t index = doc.cameraPath.insertKey(key);
-    doc.touched(Change::CameraPath);
-    doc.endEdit();
+    std::size_t index = 0;
+    // Document::edit cancels the edit if insertKey throws (a key with a bad value).
+    doc.edit("Add Key", Change::CameraPath, [&](Scene&) { index = doc.cameraPath.insertKey(key); });
     doc.selectedKey = static_cast<int>(index);
     return index;
 }
 
 bool deleteKey(Document& doc, std::size_t index) {
     if (index >= doc.cameraPath.keys().size()) return false;
-    doc.beginEdit("Delete Key");
-    doc.cameraPath.removeKey(index);
-    doc.touched(Change::CameraPath);
-    doc.endEdit();
+    doc.edit("Delete Key", Change::CameraPath, [&](Scene&) { doc.cameraPath.removeKey(index); });
     const int remaining = static_cast<int>(doc.cameraPath.keys().size());
     doc.selectedKey = remaining == 0 ? -1 : std::min(static_cast<int>(index), remaining - 1);
     return true;
@@ -122,10 +114,7 @@ bool updateKeyFromCamera(Document& doc, std::size_t index, const FlyCamera& came
 }
 
 void setPathOptions(Document& doc, const CameraPathOptions& options) {
-    doc.beginEdit("Path Options");
-    doc.cameraPath.setOptions(options);
-    doc.touched(Change::CameraPath);
-    doc.endEdit();
+    doc.edit("Path Options", Change::CameraPath, [&](Scene&) { doc.cameraPath.setOptions(options); });
 }
 
 void PathPlayback::advance(const CameraPath& path, double dtSeconds) {
@@ -151,13 +140,9 @@ void PathPlayback::play(const CameraPath& path) {
 
 std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& camera, const std::string& name,
                            const std::vector<std::string>& args) {
-    auto pointCamera = [&] {
-        if (const auto pose = doc.cameraPath.evaluate(playback.time)) applyPoseToCamera(*pose, camera);
-    };
     const std::size_t count = doc.cameraPath.keys().size();
     std::string error;
     std::size_t index = 0;
-    double value = 0.0;
     if (name == "play") {
         if (doc.cameraPath.empty()) return "the camera path has no keys to play";
         playback.play(doc.cameraPath);
@@ -168,9 +153,10 @@ std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& cam
         return "";
     }
     if (name == "time") {
-        if (args.size() != 1 || !parseNumber(args[0], value)) return "time: expected seconds";
-        playback.time = value;
-        pointCamera();
+        const std::optional<double> seconds = args.size() == 1 ? parseNumber<double>(args[0]) : std::nullopt;
+        if (!seconds) return "time: expected seconds";
+        playback.time = *seconds;
+        lookThroughPath(doc.cameraPath, playback.time, camera);
         return "";
     }
     if (name != "key" || args.empty()) return "unknown camera path command '" + name + "'";
@@ -192,7 +178,7 @@ std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& cam
     if (action == "select") {
         doc.selectedKey = static_cast<int>(index);
         playback.time = doc.cameraPath.keys()[index].time;
-        pointCamera();
+        lookThroughPath(doc.cameraPath, playback.time, camera);
         return "";
     }
     if (action == "update") {
@@ -200,8 +186,9 @@ std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& cam
         return "";
     }
     if (action == "time") {
-        if (args.size() != 3 || !parseNumber(args[2], value)) return "key time: expected an index and seconds";
-        retimeKey(doc, index, static_cast<float>(value));
+        const std::optional<float> seconds = args.size() == 3 ? parseNumber<float>(args[2]) : std::nullopt;
+        if (!seconds) return "key time: expected an index and seconds";
+        retimeKey(doc, index, *seconds);
         return "";
     }
     return "unknown key action '" + action + "' (add, delete, select, time, update)";

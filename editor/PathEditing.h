@@ -20,6 +20,8 @@ CameraKey keyFromCamera(const FlyCamera& camera, float time);
 // Points a fly camera the way a path pose looks (yaw/pitch from the rotation; roll is dropped,
 // the fly camera has none).
 void applyPoseToCamera(const CameraPose& pose, FlyCamera& camera);
+// Puts the fly camera where the path is at `time`; nothing for an empty path.
+void lookThroughPath(const CameraPath& path, double time, FlyCamera& camera);
 
 // Adds `key` as one undo step ("Add Key"); when its time is taken it goes kMinKeySpacing after
 // the last key at or after it. Selects it and returns its index.

@@ -3,45 +3,17 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
-#include <cctype>
-#include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <optional>
+
+#include "TextParse.h"
 
 namespace lit::editor {
 
 namespace {
 
 constexpr float kDegPerRad = 57.29577951308232f;
-
-std::vector<std::string_view> splitWords(std::string_view text) {
-    std::vector<std::string_view> words;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-        std::size_t end = i;
-        while (end < text.size() && !std::isspace(static_cast<unsigned char>(text[end]))) ++end;
-        if (end > i) words.push_back(text.substr(i, end - i));
-        i = end;
-    }
-    return words;
-}
-
-std::string_view trim(std::string_view text) {
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
-    return text;
-}
-
-// The whole word must be a finite number: "1.5x", "", "nan" and "inf" are not.
-std::optional<float> parseFloat(std::string_view word) {
-    float value = 0.0f;
-    const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (ec != std::errc() || end != word.data() + word.size() || !std::isfinite(value)) return std::nullopt;
-    return value;
-}
 
 // An edit of one property: parses `value` into a copy of the target object so that a bad value
 // changes nothing. Returns "" or the message (without the property-name prefix).
@@ -56,7 +28,7 @@ public:
         bool ok = words.size() == count || (orCount != 0 && words.size() == orCount);
         for (std::string_view w : words) {
             if (!ok) break;
-            const auto v = parseFloat(w);
+            const auto v = parseNumber<float>(w);
             if (!v) ok = false;
             else values.push_back(*v);
         }
@@ -194,6 +166,11 @@ void setCamera(Parser& p, std::string_view name, Camera& c) {
 
 bool startsWith(std::string_view text, std::string_view prefix) { return text.substr(0, prefix.size()) == prefix; }
 
+bool isPropertyName(std::string_view name) {
+    const auto& names = propertyNames();
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 }  // namespace
 
 const std::vector<std::string>& propertyNames() {
@@ -215,9 +192,7 @@ int findNode(const Scene& scene, std::string_view name) {
 }
 
 std::string checkPropertyValue(std::string_view name, std::string_view value) {
-    const auto& names = propertyNames();
-    if (std::find(names.begin(), names.end(), name) == names.end())
-        return "unknown property '" + std::string(name) + "'";
+    if (!isPropertyName(name)) return "unknown property '" + std::string(name) + "'";
     // The setters on stand-ins whose current values allow every value a real object might: a
     // spot cone of 0..90° (light.inner/outer), no far plane (camera.near), a near plane at 0
     // (camera.far), and an albedo texture to turn on.
@@ -238,9 +213,7 @@ std::string checkPropertyValue(std::string_view name, std::string_view value) {
 }
 
 std::string setProperty(Document& doc, std::string_view name, std::string_view value) {
-    const auto& names = propertyNames();
-    if (std::find(names.begin(), names.end(), name) == names.end())
-        return "unknown property '" + std::string(name) + "'";
+    if (!isPropertyName(name)) return "unknown property '" + std::string(name) + "'";
     Scene& scene = doc.scene;
     if (doc.selectedNode < 0) return "no node is selected";
     if (doc.selectedNode >= static_cast<int>(scene.nodes.size()))

@@ -1,31 +1,18 @@
 #include "Script.h"
 
 #include <algorithm>
-#include <array>
-#include <cctype>
-#include <charconv>
-#include <cmath>
 #include <fstream>
 #include <sstream>
 
+#include "EditorState.h"
 #include "Properties.h"
 #include "RenderSettings.h"
 #include "SettingCommand.h"
+#include "TextParse.h"
 
 namespace lit::editor {
 
 namespace {
-
-constexpr std::array<std::string_view, 7> kPanels{"hierarchy", "inspector", "settings", "stats",
-                                                  "camera",    "log",       "timeline"};
-
-bool isSpace(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
-
-std::string_view trim(std::string_view text) {
-    while (!text.empty() && isSpace(text.front())) text.remove_prefix(1);
-    while (!text.empty() && isSpace(text.back())) text.remove_suffix(1);
-    return text;
-}
 
 // The first word of `text` and the (trimmed) rest.
 std::pair<std::string_view, std::string_view> firstWord(std::string_view text) {
@@ -35,23 +22,11 @@ std::pair<std::string_view, std::string_view> firstWord(std::string_view text) {
     return {text.substr(0, end), trim(text.substr(end))};
 }
 
-std::vector<std::string> splitWords(std::string_view text) {
-    std::vector<std::string> words;
-    for (auto [word, rest] = firstWord(text); !word.empty(); std::tie(word, rest) = firstWord(rest))
-        words.emplace_back(word);
-    return words;
-}
-
-bool isNumber(const std::string& text) {
-    double value = 0.0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value);
-}
+bool isNumber(const std::string& text) { return parseNumber<double>(text).has_value(); }
 
 bool isCount(const std::string& text, long minimum) {
-    long value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && end == text.data() + text.size() && value >= minimum;
+    const auto value = parseNumber<long>(text);
+    return value && *value >= minimum;
 }
 
 std::string plural(std::size_t n, const char* word) {
@@ -83,7 +58,8 @@ std::string check(const ScriptCommand& c) {
     }
     if (name == "panel") {
         if (auto e = count(2, 2, "a panel name and on|off"); !e.empty()) return e;
-        if (std::find(kPanels.begin(), kPanels.end(), a[0]) == kPanels.end())
+        // The names the App resolves with panelFlag when the command runs.
+        if (PanelVisibility probe; panelFlag(probe, a[0]) == nullptr)
             return "unknown panel '" + a[0] + "' (hierarchy, inspector, settings, stats, camera, log, timeline)";
         return a[1] == "on" || a[1] == "off" ? "" : "panel: expected on or off, got '" + a[1] + "'";
     }
@@ -161,7 +137,7 @@ std::vector<ScriptCommand> parseScript(std::string_view text, const std::string&
         } else if (name == "select") {
             if (!rest.empty()) command.args.emplace_back(rest);  // node names may hold spaces
         } else {
-            command.args = splitWords(rest);
+            for (const std::string_view word : splitWords(rest)) command.args.emplace_back(word);
         }
         if (const std::string error = check(command); !error.empty())
             throw ScriptError(scriptErrorAt(command, source, error));

@@ -49,11 +49,13 @@ std::optional<float> closestOnAxis(glm::vec3 origin, glm::vec3 axis, const Scree
     return (b * e - c * d) / denominator;
 }
 
+float worldPerPixel(const CameraView& view, glm::vec2 viewport, glm::vec3 point) {
+    const float distance = std::max(glm::dot(point - view.position, view.forward()), view.znear);
+    return 2.0f * distance * std::tan(view.yfov * 0.5f) / std::max(viewport.y, 1.0f);
+}
+
 float TranslateGizmo::axisLength(const CameraView& view, glm::vec2 viewport, glm::vec3 origin) {
-    // Perspective: world size of one pixel at the origin's depth.
-    const float distance = std::max(glm::dot(origin - view.position, view.forward()), view.znear);
-    const float worldPerPixel = 2.0f * distance * std::tan(view.yfov * 0.5f) / std::max(viewport.y, 1.0f);
-    return kAxisPixels * worldPerPixel;
+    return kAxisPixels * worldPerPixel(view, viewport, origin);
 }
 
 int TranslateGizmo::hitTest(const CameraView& view, glm::vec2 viewport, glm::vec3 origin, glm::vec2 mouse) {

@@ -47,6 +47,10 @@ private:
     float startParameter_ = 0.0f;  // position along the axis where the drag began
 };
 
+// World size of one window pixel at the depth of `point` (perspective), for things drawn at a
+// constant size on screen.
+float worldPerPixel(const CameraView& view, glm::vec2 viewport, glm::vec3 point);
+
 // The parameter s of the point origin + s·axis closest to the ray; nullopt when they are
 // (nearly) parallel.
 std::optional<float> closestOnAxis(glm::vec3 origin, glm::vec3 axis, const ScreenRay& ray);

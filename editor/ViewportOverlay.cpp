@@ -23,7 +23,7 @@ void append(std::vector<OverlayLine>& to, const std::vector<OverlayLine>& lines)
 // Marker size for things at `position`: a fixed fraction of the screen, so markers neither
 // vanish far away nor fill the view close up.
 float screenSize(const CameraView& view, glm::vec2 viewport, glm::vec3 position, float fraction) {
-    return TranslateGizmo::axisLength(view, viewport, position) / TranslateGizmo::kAxisPixels * viewport.y * fraction;
+    return worldPerPixel(view, viewport, position) * viewport.y * fraction;
 }
 
 void addMarkers(const Document& doc, const CameraView& view, glm::vec2 viewport, ViewportOverlay& overlay) {
@@ -63,10 +63,10 @@ void addCameraPath(const Document& doc, const CameraView& view, glm::vec2 viewpo
         const int samples = kPathCurveSamplesPerKey * static_cast<int>(keys.size());
         std::optional<CameraPose> previous;
         for (int i = 0; i <= samples; ++i) {
-            // A loop's last sample is its start again: the closing segment is drawn too.
+            // The last sample is at endTime: a loop wraps it back to the start, so the closing
+            // segment is drawn too.
             const double t = path.startTime() + path.duration() * static_cast<double>(i) / samples;
-            std::optional<CameraPose> pose = path.evaluate(i == samples && !path.options().loop ? path.endTime() : t);
-            if (i == samples && path.options().loop) pose = path.evaluate(path.startTime());
+            const std::optional<CameraPose> pose = path.evaluate(t);
             if (pose && previous) overlay.lines.push_back({previous->position, pose->position, kPathColor});
             previous = pose;
         }

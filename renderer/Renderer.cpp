@@ -304,16 +304,20 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     const bool giWanted = settings.gi;
     if (giWanted) r.updateVoxels(scene, settings, shadowsDirty, counters);
     r.gbuffer.bindTargets();
-    r.shadow.bindMaps();
-    {
-        Profiler::Scope scope(r.profiler, "lighting");
-        r.direct.execute(r.terms, settings);
-    }
-    if (giWanted) {
-        Profiler::Scope scope(r.profiler, "cone trace");
-        r.coneTrace.execute(r.terms, r.voxels, settings);
-    } else {
-        r.terms.clearIndirect();
+    // The data and voxel views show no lighting term (the composite does not use them there), so
+    // they skip lighting and cone tracing; the terms are redone by the next frame that shows them.
+    if (!isDataView(settings.view)) {
+        r.shadow.bindMaps();
+        {
+            Profiler::Scope scope(r.profiler, "lighting");
+            r.direct.execute(r.terms, settings);
+        }
+        if (giWanted) {
+            Profiler::Scope scope(r.profiler, "cone trace");
+            r.coneTrace.execute(r.terms, r.voxels, settings);
+        } else {
+            r.terms.clearIndirect();
+        }
     }
     r.stats.voxelBytes = giWanted ? r.voxels.totalBytes() : 0;
     {
@@ -333,11 +337,13 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     if (!r.overlay.empty()) {
         Profiler::Scope scope(r.profiler, "overlay");
         r.frameUniforms.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FRAME);
-        Aabb highlightBounds;  // of the highlighted node's draw items, world space
-        for (const DrawItem& item : r.gpuScene->items())
-            if (item.node == r.overlay.highlightNode)
-                highlightBounds.extend(item.localBounds.transformed(scene.nodes[static_cast<std::size_t>(item.node)].world));
-        r.overlayPass.execute(r.overlay, r.post.output(), r.gbuffer, highlightBounds, frame.viewProjection);
+        // The highlighted node's draw items' world boxes, as the BVH holds them for this frame.
+        Aabb highlightBounds;
+        const std::vector<DrawItem>& items = r.gpuScene->items();
+        for (std::size_t i = 0; i < items.size(); ++i)
+            if (items[i].node == r.overlay.highlightNode) highlightBounds.extend(r.bvh.itemBounds()[i]);
+        r.post.bindOutputTarget();
+        r.overlayPass.execute(r.overlay, r.gbuffer, highlightBounds, frame.viewProjection);
     }
     r.lastFrame = frame;
     r.lastVoxelSize = giWanted ? r.voxels.voxelSize() : 0.0f;

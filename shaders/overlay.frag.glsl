@@ -1,13 +1,13 @@
 #version 450 core
 // Overlay lines (OverlayPass). The output target has no depth buffer: depth-tested lines compare
 // their own depth with the G-buffer's here, and where the scene is in front they are drawn with
-// uHiddenOpacity × their alpha instead of being dropped, so a light inside a wall stays visible.
+// LIT_HIDDEN_LINE_OPACITY × their alpha instead of being dropped, so a light inside a wall stays
+// visible.
 #include "frame.glsl"
 
 layout(binding = LIT_TEX_GBUFFER_DEPTH) uniform sampler2D gbufferDepth;
 
-uniform int uDepthTested;      // 1: faint where the scene hides the line; 0: always at full opacity
-uniform float uHiddenOpacity;  // alpha multiplier of hidden parts
+uniform int uDepthTested;  // 1: faint where the scene hides the line; 0: always at full opacity
 
 in vec4 vColor;
 layout(location = 0) out vec4 outColor;
@@ -28,7 +28,7 @@ void main() {
         if (sceneDepth < 1.0) {
             float scene = viewDistance(sceneDepth);
             float line = viewDistance(gl_FragCoord.z);
-            if (line > scene * 1.002 + 0.001) alpha *= uHiddenOpacity;
+            if (line > scene * 1.002 + 0.001) alpha *= LIT_HIDDEN_LINE_OPACITY;
         }
     }
     outColor = vec4(vColor.rgb, alpha);

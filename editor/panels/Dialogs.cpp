@@ -7,8 +7,15 @@
 
 namespace lit::editor {
 
-namespace {
-constexpr float kButtonWidth = 100.0f;
+void placeNextPopup(float width) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(width, display.x * 0.9f), 0.0f), ImGuiCond_Appearing);
+}
+
+bool cancelPressed() {
+    return ImGui::Button("Cancel", ImVec2(kDialogButtonWidth, 0.0f)) ||
+           ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
 }
 
 void QuestionDialog::ask(Question question) {
@@ -24,9 +31,7 @@ Answer QuestionDialog::draw() {
         ImGui::OpenPopup(id.c_str());
         openPending_ = false;
     }
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(460.0f, display.x * 0.9f), 0.0f), ImGuiCond_Appearing);
+    placeNextPopup(460.0f);
     Answer answer = Answer::None;
     if (ImGui::BeginPopupModal(id.c_str(), nullptr, ImGuiWindowFlags_NoSavedSettings)) {
         ImGui::PushTextWrapPos(0.0f);
@@ -34,14 +39,12 @@ Answer QuestionDialog::draw() {
         ImGui::PopTextWrapPos();
         ImGui::Spacing();
         if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-        if (ImGui::Button(question_.yes.c_str(), ImVec2(kButtonWidth, 0.0f))) answer = Answer::Yes;
+        if (ImGui::Button(question_.yes.c_str(), ImVec2(kDialogButtonWidth, 0.0f))) answer = Answer::Yes;
         ImGui::SameLine();
-        if (ImGui::Button(question_.no.c_str(), ImVec2(kButtonWidth, 0.0f))) answer = Answer::No;
+        if (ImGui::Button(question_.no.c_str(), ImVec2(kDialogButtonWidth, 0.0f))) answer = Answer::No;
         if (question_.cancellable) {
             ImGui::SameLine();
-            if (ImGui::Button("Cancel", ImVec2(kButtonWidth, 0.0f)) ||
-                ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
-                answer = Answer::Cancel;
+            if (cancelPressed()) answer = Answer::Cancel;
         }
         if (answer != Answer::None) {
             ImGui::CloseCurrentPopup();

@@ -17,6 +17,13 @@ struct Question {
 
 enum class Answer { None, Yes, No, Cancel };
 
+// Shared by the editor's modal popups (these questions, the menu's Open and Save As).
+inline constexpr float kDialogButtonWidth = 100.0f;
+// Centres the next popup on the display, `width` wide (at most 90% of the display).
+void placeNextPopup(float width);
+// Draws a modal's Cancel button; true when it or Escape was pressed.
+bool cancelPressed();
+
 class QuestionDialog {
 public:
     // Shows `question` from the next draw() on, replacing any question still open.

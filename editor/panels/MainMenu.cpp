@@ -3,7 +3,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include <algorithm>
+#include "panels/Dialogs.h"
 
 namespace lit::editor {
 
@@ -11,16 +11,8 @@ namespace {
 constexpr const char* kOpenPopup = "Open scene";
 constexpr const char* kSaveAsPopup = "Save scene as";
 
-// Centres the next popup and gives it a width that fits a long path.
-void placePathPopup() {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(560.0f, display.x * 0.9f), 0.0f), ImGuiCond_Appearing);
-}
-
-bool cancelPressed() {
-    return ImGui::Button("Cancel", ImVec2(100.0f, 0.0f)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
-}
+// Wide enough for a long path.
+void placePathPopup() { placeNextPopup(560.0f); }
 }  // namespace
 
 MenuRequests MainMenu::draw(PanelVisibility& visible, const MenuContext& context, float& height) {
@@ -113,7 +105,7 @@ void MainMenu::drawOpenPopup(const RecentFiles& recent, MenuRequests& requests) 
     ImGui::Spacing();
     const bool canOpen = !pathInput_.empty();
     ImGui::BeginDisabled(!canOpen);
-    if ((ImGui::Button("Open", ImVec2(100.0f, 0.0f)) || entered) && canOpen) {
+    if ((ImGui::Button("Open", ImVec2(kDialogButtonWidth, 0.0f)) || entered) && canOpen) {
         requests.open = std::filesystem::path(pathInput_);
         ImGui::CloseCurrentPopup();
     }
@@ -138,7 +130,7 @@ void MainMenu::drawSaveAsPopup(MenuRequests& requests) {
     if (!saveAsInput_.empty() && !validName) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "The name must end in .gltf or .glb");
     ImGui::Spacing();
     ImGui::BeginDisabled(!validName);
-    if ((ImGui::Button("Save", ImVec2(100.0f, 0.0f)) || entered) && validName) {
+    if ((ImGui::Button("Save", ImVec2(kDialogButtonWidth, 0.0f)) || entered) && validName) {
         requests.saveAs = path;
         ImGui::CloseCurrentPopup();
     }

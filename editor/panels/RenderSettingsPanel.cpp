@@ -21,22 +21,34 @@ constexpr std::array kViews = {
 constexpr std::array kVoxelChannels = {VoxelChannel::Radiance, VoxelChannel::Albedo, VoxelChannel::Normal,
                                        VoxelChannel::Opacity, VoxelChannel::Emission};
 
-// A combo over a fixed list of integer choices (texture sizes); returns true on change.
-template <std::size_t N>
-bool comboInt(const char* label, int& value, const std::array<int, N>& choices) {
+// A combo over a fixed list of choices, each shown as name(choice); returns true on change.
+template <class T, std::size_t N, class Name>
+bool combo(const char* label, T& value, const std::array<T, N>& choices, Name&& name) {
     bool changed = false;
-    const std::string preview = std::to_string(value);
+    const std::string preview(name(value));
     if (ImGui::BeginCombo(label, preview.c_str())) {
-        for (const int choice : choices) {
-            const std::string text = std::to_string(choice);
+        for (const T& choice : choices) {
+            const std::string text(name(choice));
             if (ImGui::Selectable(text.c_str(), choice == value)) {
-                changed = value != choice;
+                changed |= value != choice;
                 value = choice;
             }
         }
         ImGui::EndCombo();
     }
     return changed;
+}
+
+// Texture sizes and voxel resolutions.
+template <std::size_t N>
+bool comboInt(const char* label, int& value, const std::array<int, N>& choices) {
+    return combo(label, value, choices, [](int v) { return std::to_string(v); });
+}
+
+// Enums with a toString() (views, voxel channels).
+template <class T, std::size_t N>
+bool comboEnum(const char* label, T& value, const std::array<T, N>& choices) {
+    return combo(label, value, choices, [](T v) { return toString(v); });
 }
 
 // Angles are stored in radians and shown in degrees.
@@ -53,18 +65,7 @@ void tooltip(const char* text) {
 }
 
 bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
-    bool changed = false;
-    const std::string current(toString(s.view));
-    if (ImGui::BeginCombo("View", current.c_str())) {
-        for (const View view : kViews) {
-            const std::string name(toString(view));
-            if (ImGui::Selectable(name.c_str(), view == s.view)) {
-                changed |= view != s.view;
-                s.view = view;
-            }
-        }
-        ImGui::EndCombo();
-    }
+    bool changed = comboEnum("View", s.view, kViews);
     changed |= ImGui::SliderFloat("Exposure", &s.exposure, 0.01f, 16.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     tooltip("Linear multiplier applied before tone mapping");
     ImGui::SliderFloat("Render scale", &viewport.renderScale, 0.25f, 1.0f, "%.2f");
@@ -133,17 +134,7 @@ bool drawGlobalIllumination(RenderSettings& s) {
     if (s.view == View::Voxels || s.view == View::VoxelSlice) {
         ImGui::Separator();
         ImGui::TextDisabled(s.view == View::Voxels ? "Voxel view (ray-marched)" : "Voxel slice");
-        const std::string channel(toString(s.voxelChannel));
-        if (ImGui::BeginCombo("Channel", channel.c_str())) {
-            for (const VoxelChannel choice : kVoxelChannels) {
-                const std::string name(toString(choice));
-                if (ImGui::Selectable(name.c_str(), choice == s.voxelChannel)) {
-                    changed |= choice != s.voxelChannel;
-                    s.voxelChannel = choice;
-                }
-            }
-            ImGui::EndCombo();
-        }
+        changed |= comboEnum("Channel", s.voxelChannel, kVoxelChannels);
         const int lastMip = std::max(static_cast<int>(std::log2(std::max(s.voxelResolution, 1))), 0);
         changed |= ImGui::SliderInt("Mip", &s.voxelMip, 0, lastMip);
         if (s.view == View::VoxelSlice) {

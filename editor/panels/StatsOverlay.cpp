@@ -102,7 +102,7 @@ ImU32 passColor(const std::string& passName) {
 }
 
 void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
-                      ImFont* monoFont, const Placement& placement, bool* open, const std::string& voxelMemory) {
+                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels) {
     placeNextWindow(placement);
     ImGui::SetNextWindowBgAlpha(0.72f);  // an overlay: the image stays visible behind it
     constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
@@ -123,7 +123,8 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
     constexpr double kMiB = 1024.0 * 1024.0;
     ImGui::Text("Voxels %.1f MiB%s%s", static_cast<double>(stats.voxelBytes) / kMiB, stats.voxelized ? " [voxelized]" : "",
                 stats.injected ? " [injected]" : "");
-    if (!voxelMemory.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", voxelMemory.c_str());
+    // The report is formatted only while someone reads it, not every frame.
+    if (voxels && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", voxels->memoryReport().c_str());
 
     const auto& timings = profiler.timings();
     if (timings.empty()) {

@@ -10,13 +10,14 @@
 #include "Profiler.h"
 #include "Renderer.h"
 #include "panels/Layout.h"
+#include "passes/VoxelVolume.h"
 
 namespace lit::editor {
 
-// `voxelMemory`: the voxel volume's per-texture report ("" when GI has not run), shown as a
-// tooltip on the voxel memory line.
+// `voxels`: the renderer's voxel volume (null before GI has run), whose per-texture memory
+// report is the tooltip of the voxel memory line.
 void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
-                      ImFont* monoFont, const Placement& placement, bool* open, const std::string& voxelMemory = {});
+                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels = nullptr);
 
 // The colour a pass has in the stacked bar and the table: fixed per pass name, so a pass keeps
 // its colour when others appear or vanish.

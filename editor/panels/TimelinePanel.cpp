@@ -46,7 +46,7 @@ double tickStep(const TimeRange& range, float width) {
 
 void lookAtPlayhead(const Document& doc, const PathPlayback& playback, FlyCamera& camera) {
     if (!playback.lookThrough) return;
-    if (const auto pose = doc.cameraPath.evaluate(playback.time)) applyPoseToCamera(*pose, camera);
+    lookThroughPath(doc.cameraPath, playback.time, camera);
 }
 
 // The ruler: ticks, keys, playhead. Click a key to select it (and jump there), drag it to

@@ -5,7 +5,6 @@
 #include <tiny_gltf.h>
 
 #include <cctype>
-#include <cstring>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>

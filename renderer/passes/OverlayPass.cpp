@@ -45,8 +45,7 @@ void OverlayPass::uploadLines(const ViewportOverlay& overlay) {
 
 void OverlayPass::drawLines(GLint first, GLsizei vertexCount, bool depthTested) {
     if (vertexCount == 0) return;
-    glProgramUniform1i(lines_.id(), lines_.location("uDepthTested"), depthTested ? 1 : 0);
-    glProgramUniform1f(lines_.id(), lines_.location("uHiddenOpacity"), kHiddenLineOpacity);
+    lines_.set("uDepthTested", depthTested ? 1 : 0);
     lines_.use();
     vertexArray_.bind();
     glDrawArrays(GL_LINES, first, vertexCount);
@@ -71,22 +70,10 @@ glm::ivec4 OverlayPass::screenRect(const Aabb& box, const glm::mat4& viewProject
     return {x0.x, x0.y, x1.x - x0.x, x1.y - x0.y};
 }
 
-void OverlayPass::execute(const ViewportOverlay& overlay, const gl::Texture& output, const GBufferPass& gbuffer,
-                          const Aabb& highlightBounds, const glm::mat4& viewProjection) {
-    const int width = output.desc().width, height = output.desc().height;
-    if (output.id() != attachedTexture_ || width != attachedWidth_ || height != attachedHeight_) {
-        framebuffer_ = gl::Framebuffer("overlay");
-        framebuffer_.attach(GL_COLOR_ATTACHMENT0, output);
-        framebuffer_.setDrawBuffers(1);
-        framebuffer_.checkComplete("overlay");
-        attachedTexture_ = output.id();
-        attachedWidth_ = width;
-        attachedHeight_ = height;
-    }
-    framebuffer_.bind();
-    glViewport(0, 0, width, height);
+void OverlayPass::execute(const ViewportOverlay& overlay, const GBufferPass& gbuffer, const Aabb& highlightBounds,
+                          const glm::mat4& viewProjection) {
+    const int width = gbuffer.depth().desc().width, height = gbuffer.depth().desc().height;
     glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
     glEnable(GL_FRAMEBUFFER_SRGB);  // shaders write linear colour; blending happens in linear too
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
@@ -112,7 +99,6 @@ void OverlayPass::execute(const ViewportOverlay& overlay, const gl::Texture& out
 
     glDisable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ZERO);  // GL's default, for whoever enables blending next
-    glDepthMask(GL_TRUE);
     glDisable(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -25,12 +25,13 @@ class OverlayPass : public Pass {
 public:
     explicit OverlayPass(const std::filesystem::path& shaderRoot);
 
-    // Draws `overlay` into `output` (the tone-mapped sRGB image, the G-buffer's size). Expects
-    // the frame UBO of the frame that filled `gbuffer` bound. `highlightBounds` is the world box of
-    // overlay.highlightNode (empty: nothing to outline) and `viewProjection` the frame's: the
-    // outline pass runs only over the box's projection (it costs ~20 texel reads per pixel).
-    void execute(const ViewportOverlay& overlay, const gl::Texture& output, const GBufferPass& gbuffer,
-                 const Aabb& highlightBounds, const glm::mat4& viewProjection);
+    // Draws `overlay` into the bound framebuffer (the tone-mapped sRGB image, the G-buffer's size,
+    // viewport set: PostPass::bindOutputTarget). Expects the frame UBO of the frame that filled
+    // `gbuffer` bound. `highlightBounds` is the world box of overlay.highlightNode (empty: nothing
+    // to outline) and `viewProjection` the frame's: the outline pass runs only over the box's
+    // projection (it costs ~20 texel reads per pixel).
+    void execute(const ViewportOverlay& overlay, const GBufferPass& gbuffer, const Aabb& highlightBounds,
+                 const glm::mat4& viewProjection);
 
     // Pixels (x, y, width, height; GL bottom-up) that the projection of `box` covers, grown by
     // `margin` pixels and clipped to the image; the whole image when the box reaches behind the
@@ -42,7 +43,7 @@ public:
     // Selection outline colour: sRGB (255, 140, 0) as linear RGB (the target encodes it back).
     static constexpr float kOutlineColor[4] = {1.0f, 0.2623f, 0.0f, 1.0f};
     // Opacity multiplier of depth-tested lines where the scene hides them.
-    static constexpr float kHiddenLineOpacity = 0.25f;
+    static constexpr float kHiddenLineOpacity = static_cast<float>(LIT_HIDDEN_LINE_OPACITY);
     static constexpr int kOutlineRadius = LIT_OUTLINE_RADIUS;  // outline width (pixels)
 
 private:
@@ -56,9 +57,6 @@ private:
 
     gl::Program outline_, lines_;
     FullscreenTriangle triangle_;
-    gl::Framebuffer framebuffer_;
-    GLuint attachedTexture_ = 0;  // output texture the framebuffer was built for, and its size:
-    int attachedWidth_ = 0, attachedHeight_ = 0;  // a re-created texture may reuse the same name
     gl::Buffer vertices_;
     std::size_t vertexCapacity_ = 0;
     gl::VertexArray vertexArray_;

@@ -43,6 +43,11 @@ void PostPass::bindHdrTarget() const {
     glViewport(0, 0, width_, height_);
 }
 
+void PostPass::bindOutputTarget() const {
+    outputFramebuffer_.bind();
+    glViewport(0, 0, width_, height_);
+}
+
 void PostPass::composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer) {
     bindHdrTarget();
     glDisable(GL_DEPTH_TEST);
@@ -58,8 +63,7 @@ void PostPass::composite(const RenderSettings& settings, const gl::Texture& shad
 }
 
 void PostPass::tonemap(const RenderSettings& settings) {
-    outputFramebuffer_.bind();
-    glViewport(0, 0, width_, height_);
+    bindOutputTarget();
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_FRAMEBUFFER_SRGB);
     tonemap_.use();

@@ -19,6 +19,9 @@ public:
     // Binds the HDR image as the render target with its viewport, for passes that write a view
     // in place of the composite (VoxelDebugPass).
     void bindHdrTarget() const;
+    // Binds the sRGB output as the render target with its viewport, for passes that draw over the
+    // tone-mapped image (OverlayPass).
+    void bindOutputTarget() const;
     // Tone maps the HDR image into the sRGB output.
     void tonemap(const RenderSettings& settings);
 

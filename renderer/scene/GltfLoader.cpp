@@ -1035,12 +1035,9 @@ Scene loadGltf(const std::filesystem::path& path, Log& log, const GltfLoadOption
     if (options.progress) options.progress({"file", 1, 1});
     Scene scene = Loader(path, model, log, options).run();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::ostringstream summary;
-    summary << "loaded " << file << ": " << scene.nodes.size() << " nodes, " << scene.meshes.size() << " meshes, "
-            << scene.triangleCount() << " triangles, " << scene.materials.size() << " materials, "
-            << scene.textures.size() << " textures, " << scene.lights.size() << " lights, " << scene.cameras.size()
-            << " cameras in " << static_cast<long long>(ms + 0.5) << " ms";
-    log.info(summary.str());
+    // The one summary line of a load, for every front end: "loaded Sponza.gltf: 1 mesh, 262k
+    // triangles, 69 textures, 297 MB in 3912 ms".
+    log.info("loaded " + toString(summarize(scene)) + " in " + std::to_string(static_cast<long long>(ms + 0.5)) + " ms");
     return scene;
 }
 

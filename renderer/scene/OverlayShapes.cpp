@@ -234,8 +234,8 @@ std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec
 
     std::vector<TracedCone> cones;
     const glm::mat3 basis = tangentFrame(n);
-    // traceCone clamps the aperture to [0, 3] rad.
-    const float diffuseAperture = std::clamp(settings.diffuseConeAperture, 0.0f, 3.0f);
+    // traceCone clamps the aperture.
+    const float diffuseAperture = std::clamp(settings.diffuseConeAperture, 0.0f, float(LIT_CONE_APERTURE_MAX));
     if (surface.diffuse)
         for (int i = 0; i < LIT_DIFFUSE_CONE_COUNT; ++i)
             cones.push_back({origin, glm::normalize(basis * gpu::kDiffuseConeDirections[i]), diffuseAperture,
@@ -246,7 +246,8 @@ std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec
     const float alpha = alphaFromRoughness(surface.roughness);
     const float aperture = specularConeAperture(alpha, count);
     // specularCanReuseDiffuseCones, with the unclamped aperture the shader gets (traceParams.w).
-    const bool marched = !(surface.diffuse && aperture >= settings.diffuseConeAperture - 1e-3f);
+    const bool marched =
+        !(surface.diffuse && aperture >= settings.diffuseConeAperture - float(LIT_CONE_REUSE_TOLERANCE));
     const glm::vec2 fragCoord = glm::vec2(surface.glPixel) + 0.5f;
     const std::size_t firstSpecular = cones.size();
     float weightSum = 0.0f;

@@ -79,7 +79,7 @@ vec4 traceCone(vec3 origin, vec3 direction, float aperture, float maxDistance) {
     float maxLevel = voxel.voxelInfo.w - 1.0;
     float maxLevelVoxelSize = voxelSize * exp2(maxLevel);
     float stepScale = voxel.traceParams.z;
-    float widthPerDistance = 2.0 * tan(0.5 * clamp(aperture, 0.0, 3.0));
+    float widthPerDistance = 2.0 * tan(0.5 * clamp(aperture, 0.0, LIT_CONE_APERTURE_MAX));
     // Samples at tMid in [span.x, span.y] lie inside the volume; the first one outside ends the
     // march (space outside the volume is empty and black).
     vec3 uvwOrigin = worldToVolume(origin);
@@ -302,7 +302,7 @@ float specularConeAperture(float alpha, int count) {
 // dielectric surfaces of real scenes are that rough. A quarter of the cone marching per pixel
 // (2 of 8 cones) is saved there, the largest cost of the frame on a software rasterizer.
 bool specularCanReuseDiffuseCones(float alpha, int count, float diffuseAperture) {
-    return specularConeAperture(alpha, count) >= diffuseAperture - 1e-3;
+    return specularConeAperture(alpha, count) >= diffuseAperture - LIT_CONE_REUSE_TOLERANCE;
 }
 
 // Indirect specular radiance L_IS for a surface with normal n (unit, facing v), view vector v

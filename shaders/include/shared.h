@@ -66,6 +66,7 @@ using mat4 = glm::mat4;
 // Viewport overlay (OverlayPass): the G-buffer's R32UI node IDs (node index + 1, 0 = background).
 #define LIT_TEX_GBUFFER_ID 23
 #define LIT_OUTLINE_RADIUS 2           // selection outline width (pixels outside the silhouette)
+#define LIT_HIDDEN_LINE_OPACITY 0.25   // opacity multiplier of depth-tested lines where the scene hides them
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
@@ -96,6 +97,8 @@ using mat4 = glm::mat4;
 #define LIT_SPECULAR_APERTURE_MIN 0.02           // rad, narrowest specular cone
 #define LIT_SPECULAR_APERTURE_MAX 1.0471976      // rad (π/3), widest specular cone
 #define LIT_SPECULAR_MAX_SAMPLES 8               // specular cones per pixel at most
+#define LIT_CONE_APERTURE_MAX 3.0                // rad, widest cone traceCone marches (apertures are clamped)
+#define LIT_CONE_REUSE_TOLERANCE 1e-3            // rad: specular cones this much narrower still reuse diffuse ones
 
 // ---- Limits -------------------------------------------------------------------------------
 #define LIT_MAX_LIGHTS 64            // lights beyond this are ignored with a warning

@@ -1,6 +1,6 @@
-# Shared by the editor test scripts (sourced): failing with a message, and skipping (exit 77,
+# Shared by the editor test scripts (sourced): failing with a message, skipping (exit 77,
 # CTest's SKIP_RETURN_CODE for these tests) when there is no xvfb-run to give the editor an X
-# server.
+# server, and running the editor ($editor, set by the sourcing script) under Xvfb.
 
 fail() {
     echo "FAIL: $*"
@@ -12,4 +12,17 @@ require_xvfb() {
         echo "SKIP: xvfb-run not found; the editor test needs an X server (Debian: apt-get install xvfb)"
         exit 77
     fi
+}
+
+# xvfb_editor ARGS...: runs $editor with ARGS on an Xvfb screen of the size every editor test
+# uses, returning its exit status.
+xvfb_editor() {
+    xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$@"
+}
+
+# run_editor ARGS...: the same, failing the test unless lit-editor exits 0.
+run_editor() {
+    xvfb_editor "$@"
+    status=$?
+    [ "$status" -eq 0 ] || fail "lit-editor $* exited with status $status"
 }

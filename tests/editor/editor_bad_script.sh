@@ -47,8 +47,7 @@ if ! command -v xvfb-run >/dev/null 2>&1; then
     exit 0
 fi
 printf 'setting voxelResolution 64\nsetting gi false\nselect floor\nset light.color 1 0 0\nquit\n' >"$out/runtime_error.txt"
-messages=$(xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$scene" --script "$out/runtime_error.txt" \
-    --size 160x90 2>&1)
+messages=$(xvfb_editor "$scene" --script "$out/runtime_error.txt" --size 160x90 2>&1)
 status=$?
 echo "$messages" | tail -n 5
 [ "$status" -eq 1 ] || fail "runtime_error.txt: expected exit status 1, got $status"

@@ -27,9 +27,7 @@ wait 2
 screenshot $after noui
 SCRIPT
 
-xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$scene" --script "$out/light_colour.txt" --size 640x360
-status=$?
-[ "$status" -eq 0 ] || fail "lit-editor exited with status $status"
+run_editor "$scene" --script "$out/light_colour.txt" --size 640x360
 [ -f "$before" ] && [ -f "$after" ] || fail "the script ran but did not write both screenshots"
 
 # Columns: width height mean stddev meanR meanG meanB.

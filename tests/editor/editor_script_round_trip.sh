@@ -37,9 +37,7 @@ save $saved
 quit
 SCRIPT
 
-xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$scene" --script "$out/round_trip.txt" --size 640x360
-status=$?
-[ "$status" -eq 0 ] || fail "lit-editor exited with status $status"
+run_editor "$scene" --script "$out/round_trip.txt" --size 640x360
 [ -f "$saved" ] || fail "the script ran but $saved was not written"
 
 # roughness: 0.75 was undone; intensity: 10 was undone and redone; the white material is shared
@@ -54,9 +52,7 @@ select short_box
 set node.scale 1 2 1
 save $resaved
 SCRIPT
-xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$saved" --script "$out/round_trip_again.txt" --size 640x360
-status=$?
-[ "$status" -eq 0 ] || fail "lit-editor exited with status $status reopening $saved"
+run_editor "$saved" --script "$out/round_trip_again.txt" --size 640x360
 "$check" "$resaved" short_box.scale=1,2,1 tall_box.roughness=0.25 tall_box.translation=-0.3,0.1,-0.3 \
     ceiling_spot.light.color=1,0.5,0.25 ceiling_spot.light.intensity=10 ||
     fail "the scene saved after reopening lost an edit (see above)"

@@ -15,9 +15,7 @@ require_xvfb
 
 mkdir -p "$(dirname "$out")"
 rm -f "$out"
-xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$scene" --screenshot "$out" --frames 5 --size 640x360
-status=$?
-[ "$status" -eq 0 ] || fail "lit-editor exited with status $status"
+run_editor "$scene" --screenshot "$out" --frames 5 --size 640x360
 [ -f "$out" ] || fail "lit-editor exited 0 but wrote no $out"
 
 # Whole image: panels and the rendered scene give plenty of contrast; a blank or single-colour

@@ -68,9 +68,7 @@ script=$out/walkthrough.txt
     echo "save $out/with_path.gltf"
 } >"$script"
 
-xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$scene" --script "$script" --size 640x360
-status=$?
-[ "$status" -eq 0 ] || fail "lit-editor exited with status $status"
+run_editor "$scene" --script "$script" --size 640x360
 
 # Every screenshot exists and is not blank (a single colour has a standard deviation near 0).
 for file in "$out"/*.png; do

@@ -50,23 +50,23 @@ int main(int argc, char** argv) {
                      width, height);
         return 2;
     }
-    double sum = 0.0, sumSquares = 0.0;
     double channelSum[3] = {0.0, 0.0, 0.0};
+    double sumSquares = 0.0;
     for (int row = y; row < y + h; ++row) {
         for (int column = x; column < x + w; ++column) {
             const unsigned char* p = pixels.get() + (static_cast<std::size_t>(row) * width + column) * 3;
             for (int c = 0; c < 3; ++c) {
                 const double v = p[c];
-                sum += v;
                 channelSum[c] += v;
                 sumSquares += v * v;
             }
         }
     }
-    const double count = 3.0 * w * h;
-    const double mean = sum / count;
-    const double variance = std::max(sumSquares / count - mean * mean, 0.0);
     const double pixelCount = static_cast<double>(w) * h;
+    const double count = 3.0 * pixelCount;
+    // Sums of whole numbers below 2^53: exact, so the order of adding does not matter.
+    const double mean = (channelSum[0] + channelSum[1] + channelSum[2]) / count;
+    const double variance = std::max(sumSquares / count - mean * mean, 0.0);
     std::printf("%d %d %.3f %.3f %.3f %.3f %.3f\n", width, height, mean, std::sqrt(variance), channelSum[0] / pixelCount,
                 channelSum[1] / pixelCount, channelSum[2] / pixelCount);
     return 0;

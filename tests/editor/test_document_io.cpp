@@ -237,6 +237,14 @@ void moveBox(Document& doc, float x) {
     doc.edit("Move", Change::Transform, [x](Scene& s) { s.nodes[0].translation.x = x; });
 }
 
+// What a crashed session leaves in `folder`: a copy of `doc` with its box moved to x = 1, and
+// the lock (the Autosave is destroyed without cleanExit()).
+void leaveCrashedCopy(const fs::path& folder, Document& doc) {
+    Autosave crashed(folder, 1.0);
+    moveBox(doc, 1.0f);
+    crashed.saveNow(doc);
+}
+
 TEST(Autosave, DefaultFolderFollowsXdgStateHome) {
     const char* old = std::getenv("XDG_STATE_HOME");
     const std::optional<std::string> saved = old ? std::optional<std::string>(old) : std::nullopt;
@@ -343,11 +351,7 @@ TEST(Autosave, NothingToRecoverAfterACleanExit) {
 TEST(Autosave, AnUnansweredCopyIsOfferedAgain) {
     const fs::path folder = freshFolder("autosave_unanswered");
     Document doc = fixtureDocument();
-    {
-        Autosave crashed(folder, 1.0);
-        moveBox(doc, 1.0f);
-        crashed.saveNow(doc);
-    }
+    leaveCrashedCopy(folder, doc);
     {
         Autosave next(folder, 1.0);
         ASSERT_TRUE(next.recoverable());
@@ -365,11 +369,7 @@ TEST(Autosave, AnUnansweredCopyIsOfferedAgain) {
 TEST(Autosave, DiscardDropsTheCopy) {
     const fs::path folder = freshFolder("autosave_discard");
     Document doc = fixtureDocument();
-    {
-        Autosave crashed(folder, 1.0);
-        moveBox(doc, 1.0f);
-        crashed.saveNow(doc);
-    }
+    leaveCrashedCopy(folder, doc);
     Autosave next(folder, 1.0);
     ASSERT_TRUE(next.recoverable());
     next.discard();
@@ -385,11 +385,7 @@ TEST(Autosave, DiscardDropsTheCopy) {
 TEST(Autosave, ALockOfALiveEditorIsLeftAlone) {
     const fs::path folder = freshFolder("autosave_live");
     Document doc = fixtureDocument();
-    {
-        Autosave crashed(folder, 1.0);
-        moveBox(doc, 1.0f);
-        crashed.saveNow(doc);
-    }
+    leaveCrashedCopy(folder, doc);
     // The parent process (the test runner's shell or ctest) is alive and not us.
     std::ofstream(folder / "session.lock") << ::getppid() << "\n";
     Autosave second(folder, 1.0);

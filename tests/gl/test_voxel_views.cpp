@@ -211,5 +211,23 @@ TEST_F(VoxelViewTest, VolumeViewShowsTheRedWallOnTheLeft) {
     EXPECT_EQ(meanOf(draw(s)), 0.0);
 }
 
+// The voxel views show no lighting term: they skip direct lighting and cone tracing, which the
+// final view of the same renderer then runs.
+TEST_F(VoxelViewTest, VoxelViewsSkipLightingAndConeTracing) {
+    RenderSettings s = sliceSettings(64);
+    for (const View view : {View::VoxelSlice, View::Voxels}) {
+        s.view = view;
+        draw(s);
+    }
+    renderer_->profiler().flush();
+    EXPECT_EQ(renderer_->profiler().lastRun("lighting"), nullptr);
+    EXPECT_EQ(renderer_->profiler().lastRun("cone trace"), nullptr);
+    s.view = View::Final;
+    draw(s);
+    renderer_->profiler().flush();
+    EXPECT_NE(renderer_->profiler().lastRun("lighting"), nullptr);
+    EXPECT_NE(renderer_->profiler().lastRun("cone trace"), nullptr);
+}
+
 }  // namespace
 }  // namespace lit::test

@@ -1,15 +1,20 @@
 #pragma once
 // A folder of its own for one test, under the system's temporary folder, removed afterwards.
 // The name carries the process, a counter and the test's name, so parallel CTest runs and
-// repeated tests never share one.
+// repeated tests never share one. Also the small file helpers the file-writing tests share.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace lit::testing {
 
@@ -36,5 +41,24 @@ public:
 private:
     std::filesystem::path path_;
 };
+
+// A file's bytes, or nothing when it cannot be opened.
+inline std::vector<std::uint8_t> readFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+inline std::string readText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The names of the entries directly in `dir`.
+inline std::set<std::string> filesIn(const std::filesystem::path& dir) {
+    std::set<std::string> names;
+    for (const std::filesystem::directory_entry& entry : std::filesystem::directory_iterator(dir))
+        names.insert(entry.path().filename().string());
+    return names;
+}
 
 }  // namespace lit::testing

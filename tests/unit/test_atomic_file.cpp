@@ -28,16 +28,8 @@ struct TempDir : lit::testing::TempDir {
     TempDir() : lit::testing::TempDir("lit_atomic") {}
 };
 
-std::string readText(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::set<std::string> filesIn(const fs::path& dir) {
-    std::set<std::string> names;
-    for (const fs::directory_entry& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename().string());
-    return names;
-}
+using testing::filesIn;
+using testing::readText;
 
 std::string errorOf(const std::function<void()>& action) {
     try {
@@ -166,9 +158,7 @@ TEST(ImageIO, PngEncodesAndWritesRowsInFileOrder) {
 
     const fs::path file = dir / "out" / "image.png";
     writePng(file, 2, 2, rgba);
-    std::ifstream in(file, std::ios::binary);
-    const std::vector<std::uint8_t> written{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    EXPECT_EQ(written, png);
+    EXPECT_EQ(testing::readFile(file), png);
     EXPECT_EQ(filesIn(dir / "out"), std::set<std::string>{"image.png"});
 
     EXPECT_EQ(errorOf([&] { writePng(dir / "small.png", 2, 2, std::span(rgba.data(), 15)); }),

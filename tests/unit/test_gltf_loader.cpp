@@ -48,10 +48,7 @@ void writeFile(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
     writeFile(path, bytes.data(), bytes.size());
 }
 
-std::vector<std::uint8_t> readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using testing::readFile;
 
 // A PNG of `width`×`height` RGBA pixels.
 std::vector<std::uint8_t> encodePng(int width, int height, const std::vector<std::uint8_t>& rgba) {

@@ -34,16 +34,8 @@ struct TempDir : lit::testing::TempDir {
     TempDir() : lit::testing::TempDir("lit_gltf_writer") {}
 };
 
-std::vector<std::uint8_t> readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::set<std::string> filesIn(const fs::path& dir) {
-    std::set<std::string> names;
-    for (const fs::directory_entry& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename().string());
-    return names;
-}
+using testing::filesIn;
+using testing::readFile;
 
 json readJson(const fs::path& path) {
     std::ifstream in(path);

@@ -331,12 +331,7 @@ int run(const Options& options) {
 
     lit::Scene scene;
     try {
-        const auto loadStart = std::chrono::steady_clock::now();
-        scene = lit::loadGltf(options.scene, log);
-        const double loadMs =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart).count();
-        std::printf("%s in %.0f ms\n", lit::toString(lit::summarize(scene)).c_str(), loadMs);
-        std::fflush(stdout);  // before the renderer's log lines on stderr
+        scene = lit::loadGltf(options.scene, log);  // logs the summary line (meshes, triangles, MB, ms)
     } catch (const std::exception& e) {
         // The loader's messages usually start with the path already; say it once.
         std::string reason = e.what();
