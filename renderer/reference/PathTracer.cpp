@@ -416,6 +416,7 @@ std::vector<FirstHit> traceFirstHits(const ReferenceScene& scene, const CameraVi
                 out.node = hit.node;
                 out.position = hit.position;
                 out.normal = shadingNormal(hit.normal, -ray.direction);
+                out.emissive = maxComponent(hit.emission) > 0.0f;
                 const glm::vec3 origin = offsetOrigin(hit.position, hit.geometricNormal);
                 const auto& lights = scene.punctualLights();
                 for (std::size_t i = 0; i < lights.size() && i < 32; ++i) {

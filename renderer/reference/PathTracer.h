@@ -72,6 +72,7 @@ struct FirstHit {
     glm::vec3 position{0.0f};
     glm::vec3 normal{0.0f};  // shading normal facing the camera
     std::uint32_t litBy = 0;  // bit i set: punctual light i (< 32) reaches the point unoccluded with n·l > 0 and E > 0
+    bool emissive = false;    // the surface emits light
 };
 std::vector<FirstHit> traceFirstHits(const ReferenceScene& scene, const CameraView& camera, int width, int height);
 
