@@ -343,7 +343,7 @@ int main(int argc, char** argv) {
         std::string voxelColumns, voxelRule;
         for (const int v : args.voxels) {
             voxelColumns += " | VCT " + std::to_string(v) + "³";
-            voxelRule += " | ---:";
+            voxelRule += "|---:";
         }
         std::string summary, regions, bleeding, leaks, skipped;
         for (const SuiteScene& entry : suite(args)) {
@@ -366,14 +366,14 @@ int main(int argc, char** argv) {
               "frame s | VCT frame s | reference s |\n|---|---:|---:|---:|---:|---:|---:|---:|\n" + summary;
         if (!regions.empty())
             md += "\nIndirect radiance (L_ID + L_IS) in named regions: the reference's value (W/(sr·m²)) and VCT/reference:\n\n"
-                  "| scene | region | pixels | reference" + voxelColumns + " |\n|---|---|---:|---:" + voxelRule + " |\n" + regions;
+                  "| scene | region | pixels | reference" + voxelColumns + " |\n|---|---|---:|---:" + voxelRule + "|\n" + regions;
         if (!bleeding.empty())
             md += "\nColour bleeding onto the shadowed floor (indirect diffuse):\n\n| scene | region | ratio | reference" +
-                  voxelColumns + " |\n|---|---|---|---:" + voxelRule + " |\n" + bleeding;
+                  voxelColumns + " |\n|---|---|---|---:" + voxelRule + "|\n" + bleeding;
         if (!leaks.empty())
             md += "\nLight inside the sealed room: mean radiance of the inside view as a fraction of the sunlit ground's "
                   "radiance (W/(sr·m²)); any light inside is a leak:\n\n| scene | outside | reference" + voxelColumns +
-                  " |\n|---|---:|---:" + voxelRule + " |\n" + leaks;
+                  " |\n|---|---:|---:" + voxelRule + "|\n" + leaks;
         if (!skipped.empty()) md += "\n" + skipped;
         if (args.out.empty()) {
             std::fputs(md.c_str(), stdout);
