@@ -426,6 +426,7 @@ int App::run() {
             if (light >= 0) frameSettings.shadowDebugLight = light;
         }
         renderer_->render(doc_.scene, view, frameSettings);
+        referenceViewer_.update(doc_.scene, view, frameSettings, *renderer_);
         takeScreenshots(/*withUi=*/false, framebuffer);
         presentViewport(framebuffer);
         imgui_->render();
@@ -547,6 +548,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.timeline) timelinePanel_.draw(doc_, playback_, camera_, layout.timeline, &visible_.timeline);
     if (visible_.camera && drawCameraPanel(camera_, layout.camera, &visible_.camera).resetToSceneCamera) resetCamera();
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
+    referenceViewer_.drawWindow();
     drawErrorPanel(sceneError_, display, menuHeight);
     drawLoadingWindow();
     // An edit opened by a widget that never reported its deactivation (a colour picker popup)
@@ -587,7 +589,7 @@ void App::presentViewport(glm::ivec2 framebufferSize) {
     glDisable(GL_FRAMEBUFFER_SRGB);
     glClearNamedFramebufferfv(0, GL_COLOR, 0, kBackground);
 
-    const gl::Texture& output = renderer_->outputTexture();
+    const gl::Texture& output = referenceViewer_.output() ? *referenceViewer_.output() : renderer_->outputTexture();
     if (!output) return;
     // Attached every frame: the renderer recreates the texture on resize, and a deleted texture
     // can come back under the same name.

@@ -15,6 +15,8 @@
 #   GI_SIZE         image side in pixels      (default: 128)
 #   GI_SCENES       comma-separated subset: cornell_box,sealed_room,thin_walls,glossy_floor,sponza
 #   GI_OUT          the markdown file updated (default: <repo>/docs/GI.md)
+#   GI_SHARED       the shared scenes folder  (default: <repo>/../shared/scenes; a git worktree
+#                   elsewhere passes the main checkout's, e.g. GI_SHARED=/work/shared/scenes)
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -26,6 +28,7 @@ out="${GI_OUT:-$root/docs/GI.md}"
 
 args=(--voxels "${GI_VOXELS:-64,128,256}" --spp "${GI_SPP:-256}" --size "${GI_SIZE:-128}")
 [ -n "${GI_SCENES:-}" ] && args+=(--scenes "$GI_SCENES")
+[ -n "${GI_SHARED:-}" ] && args+=(--shared "$GI_SHARED")
 table="$(mktemp)"
 trap 'rm -f "$table" "$table.md"' EXIT
 "$tool" "${args[@]}" --out "$table"

@@ -3,6 +3,7 @@
 #include "Log.h"
 #include "reference/MicrofacetBrdf.h"
 #include "reference/PathTracer.h"
+#include "reference/ProgressiveReference.h"
 #include "reference/PunctualLights.h"
 #include "reference/ReferenceScene.h"
 #include "scene/CameraView.h"
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <thread>
 
 namespace lit::reference {
 namespace {
@@ -401,6 +403,39 @@ TEST(ReferenceTerms, FinalIsTheSumOfTheTermsAndBouncesAddLight) {
     const std::vector<float> diffuseOnly = image.viewRgb(View::Final, noSpecular);
     EXPECT_NEAR(diffuseOnly[3 * 100], image.mean(Term::DirectDiffuse, 100).r + image.mean(Term::IndirectDiffuse, 100).r, 1e-5f);
     EXPECT_THROW(image.viewRgb(View::Albedo, RenderSettings{}), std::invalid_argument);
+}
+
+TEST(ReferenceProgressive, AccumulatesWhileStillAndRestartsOnChange) {
+    Scene scene = cornellBox();
+    const CameraView camera = sceneCameraView(scene, 0, 1.0f);
+    ProgressiveReference progressive(1000);
+    ReferenceSettings settings;
+    progressive.update(scene, camera, 16, 16, settings);
+    const auto waitFor = [&](int samples) {
+        for (int i = 0; i < 2000 && progressive.status().samplesPerPixel < samples; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        return progressive.status();
+    };
+    const ProgressiveStatus first = waitFor(8);
+    EXPECT_GE(first.samplesPerPixel, 8);
+    EXPECT_GT(first.samplesPerSecond, 0.0);
+    EXPECT_EQ(first.restarts, 1u);
+    // The same state again: nothing restarts, samples keep accumulating.
+    progressive.update(scene, camera, 16, 16, settings);
+    EXPECT_EQ(progressive.status().restarts, 1u);
+    std::vector<float> rgb;
+    int width = 0, height = 0;
+    ASSERT_TRUE(progressive.latest(View::Final, RenderSettings{}, rgb, width, height));
+    EXPECT_EQ(width, 16);
+    EXPECT_GT(std::accumulate(rgb.begin(), rgb.end(), 0.0), 0.0);
+    // An edit (a light moved: its revision bumps) starts over.
+    scene.nodes[static_cast<std::size_t>(scene.nodeOfLight(0))].translation.y = 1.5f;
+    ++scene.lightRevision;
+    progressive.update(scene, camera, 16, 16, settings);
+    for (int i = 0; i < 2000 && progressive.status().restarts < 2; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    EXPECT_EQ(progressive.status().restarts, 2u);
+    EXPECT_GE(waitFor(2).samplesPerPixel, 2);
+    progressive.stop();
 }
 
 }  // namespace

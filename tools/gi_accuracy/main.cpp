@@ -12,7 +12,8 @@
 //                           the mean relative error of the indirect terms there)
 //   final RMSE              RMSE of the final image over all surface pixels after scaling the VCT so
 //                           that its mean over directly lit pixels matches the reference's, relative
-//                           to the reference's mean
+//                           to the reference's mean; in brackets the reference's own noise on the
+//                           same scale (from a second reference image with another seed)
 //   indirect energy         Σ VCT indirect / Σ reference indirect over all pixels
 // Exit status: 0 success, 1 failure, 2 bad command line.
 
@@ -223,6 +224,13 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     std::fprintf(stderr, "%s: reference %d spp in %.1f s (%.2f Mrays/s)\n", entry.name.c_str(), args.spp, referenceSeconds,
                  raysPerSecond * 1e-6);
 
+    // The reference's own noise: a second image with another seed; the RMSE between two
+    // independent images is √2 × the RMSE of one against the converged truth.
+    referenceSettings.seed = 1;
+    PathTracer second(referenceScene, camera, size, size, referenceSettings);
+    second.addSamples(args.spp);
+    const std::vector<float> secondFinal = second.image().viewRgb(View::Final, viewSettings);
+
     const std::vector<FirstHit> hits = traceFirstHits(referenceScene, camera, size, size);
     const PixelMask surfaces = surfaceMask(hits);
     const PixelMask indirectOnly = erodeEdges(indirectOnlyMask(hits), hits, size, size, 1);
@@ -264,6 +272,19 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     const double truthSurfaceMean = maskedLuminance(truth.final, surfaces);
     const double truthEnergy = sumLuminance(truthIndirect);
     const std::size_t indirectPixels = static_cast<std::size_t>(std::count(indirectOnly.begin(), indirectOnly.end(), true));
+    const auto finalRmse = [&](const std::vector<float>& image, double scale) {
+        double squares = 0.0;
+        std::size_t count = 0;
+        for (std::size_t p = 0; p < surfaces.size(); ++p) {
+            if (!surfaces[p]) continue;
+            const double v = luminance(glm::dvec3(image[3 * p], image[3 * p + 1], image[3 * p + 2]));
+            const double t = luminance(glm::dvec3(truth.final[3 * p], truth.final[3 * p + 1], truth.final[3 * p + 2]));
+            squares += (scale * v - t) * (scale * v - t);
+            ++count;
+        }
+        return count ? std::sqrt(squares / static_cast<double>(count)) : 0.0;
+    };
+    const double referenceNoise = finalRmse(secondFinal, 1.0) / std::sqrt(2.0);
 
     for (const VctRun& run : runs) {
         const std::vector<float> indirect = run.images.indirect();
@@ -271,20 +292,14 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
         // Exposure match on directly lit pixels, then RMSE over every surface pixel.
         const double vctDirect = maskedLuminance(run.images.final, directlyLit);
         const double k = vctDirect > 0.0 ? truthDirectFinal / vctDirect : 1.0;
-        double squares = 0.0;
-        std::size_t count = 0;
-        for (std::size_t p = 0; p < surfaces.size(); ++p) {
-            if (!surfaces[p]) continue;
-            const double v = luminance(glm::dvec3(run.images.final[3 * p], run.images.final[3 * p + 1], run.images.final[3 * p + 2]));
-            const double t = luminance(glm::dvec3(truth.final[3 * p], truth.final[3 * p + 1], truth.final[3 * p + 2]));
-            squares += (k * v - t) * (k * v - t);
-            ++count;
-        }
-        const double rmse = count ? std::sqrt(squares / static_cast<double>(count)) : 0.0;
+        const double rmse = finalRmse(run.images.final, k);
         report.summaryRows += "| " + entry.name + " | " + std::to_string(run.voxels) + "³ | " +
                               (indirectPixels ? ratioCell(vctIndirectOnly, truthIndirectOnly) + " (" + std::to_string(indirectPixels) + " px)"
                                               : std::string("– (none)")) +
-                              " | " + (truthSurfaceMean > 0.0 ? format("%.1f %%", 100.0 * rmse / truthSurfaceMean) : "–") + " | " +
+                              " | " + (truthSurfaceMean > 0.0 ? format("%.1f %%", 100.0 * rmse / truthSurfaceMean) + " (" +
+                                                                    format("%.1f %%", 100.0 * referenceNoise / truthSurfaceMean) + ")"
+                                                              : "–") +
+                              " | " +
                               ratioCell(sumLuminance(indirect), truthEnergy) + " | " + format("%.2f", run.firstFrameSeconds) + " | " +
                               format("%.2f", run.steadyFrameSeconds) + " | " + format("%.1f", referenceSeconds) + " (" +
                               std::to_string(args.spp) + " spp, " + format("%.2f", raysPerSecond * 1e-6) + " Mrays/s) |\n";
@@ -362,7 +377,7 @@ int main(int argc, char** argv) {
         std::string md;
         md += "Measured by `tools/gi-accuracy.sh` (" + std::to_string(args.size) + "×" + std::to_string(args.size) +
               " pixels, reference " + std::to_string(args.spp) + " spp with one bounce, " + context.description() + "):\n\n";
-        md += "| scene | voxels | indirect-only VCT/ref | final RMSE (exposure-matched) | indirect energy VCT/ref | VCT first "
+        md += "| scene | voxels | indirect-only VCT/ref | final RMSE, exposure-matched (reference noise) | indirect energy VCT/ref | VCT first "
               "frame s | VCT frame s | reference s |\n|---|---:|---:|---:|---:|---:|---:|---:|\n" + summary;
         if (!regions.empty())
             md += "\nIndirect radiance (L_ID + L_IS) in named regions: the reference's value (W/(sr·m²)) and VCT/reference:\n\n"
