@@ -380,7 +380,8 @@ bool PathTracer::addSamples(int count, const std::atomic<bool>* cancel) {
                                                             static_cast<std::size_t>(x);
                                   for (int s = first; s < first + count; ++s) {
                                       Random random(settings_.seed, pixel, static_cast<std::uint64_t>(s));
-                                      const glm::vec2 jitter = random.uniform2();
+                                      const glm::vec2 u = random.uniform2();
+                                      const glm::vec2 jitter = settings_.pixelCentres ? glm::vec2(0.5f) : u;
                                       const Ray ray = cameraRay(inverseViewProjection_, static_cast<float>(x) + jitter.x,
                                                                 static_cast<float>(y) + jitter.y, image_.width, image_.height);
                                       Contribution c;
@@ -417,6 +418,8 @@ std::vector<FirstHit> traceFirstHits(const ReferenceScene& scene, const CameraVi
                 out.position = hit.position;
                 out.normal = shadingNormal(hit.normal, -ray.direction);
                 out.emissive = maxComponent(hit.emission) > 0.0f;
+                out.metalness = hit.metalness;
+                out.roughness = hit.roughness;
                 const glm::vec3 origin = offsetOrigin(hit.position, hit.geometricNormal);
                 const auto& lights = scene.punctualLights();
                 for (std::size_t i = 0; i < lights.size() && i < 32; ++i) {

@@ -40,6 +40,10 @@ struct ReferenceSettings {
     std::uint64_t seed = 0;      // the same seed renders the same image
     int russianRouletteStart = 3;  // bounces after which paths may end at random (all bounces only)
     Environment environment;     // radiance of rays that leave the scene; empty = black
+    // Camera rays through the pixel centres only, as the rasterizer samples (no anti-aliasing), instead
+    // of spread over the pixel: for comparisons that must not depend on how an edge or a highlight
+    // falls inside a pixel.
+    bool pixelCentres = false;
 };
 
 enum class Term { DirectDiffuse, DirectSpecular, IndirectDiffuse, IndirectSpecular };
@@ -73,6 +77,7 @@ struct FirstHit {
     glm::vec3 normal{0.0f};  // shading normal facing the camera
     std::uint32_t litBy = 0;  // bit i set: punctual light i (< 32) reaches the point unoccluded with n·l > 0 and E > 0
     bool emissive = false;    // the surface emits light
+    float metalness = 0.0f, roughness = 1.0f;  // the material there (for masks at material edges)
 };
 std::vector<FirstHit> traceFirstHits(const ReferenceScene& scene, const CameraView& camera, int width, int height);
 

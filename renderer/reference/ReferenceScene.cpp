@@ -17,6 +17,7 @@ namespace {
 
 constexpr int kWrapRepeat = 10497;
 constexpr int kWrapMirroredRepeat = 33648;
+constexpr int kFilterNearest = 9728;
 
 float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
@@ -221,6 +222,22 @@ glm::vec4 ReferenceScene::sampleTexture(int texture, glm::vec2 uv) const {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgba.size() < static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4)
         return glm::vec4(1.0f);
+    // GL_NEAREST magnification (glTF magFilter 9728): the texel under the point, as GpuScene sets
+    // it up (its minification is then GL_NEAREST or mipmapped; mip levels are not modelled here).
+    if (tex.magFilter == kFilterNearest) {
+        const float nx = uv.x * static_cast<float>(image.width), ny = uv.y * static_cast<float>(image.height);
+        if (!std::isfinite(nx) || !std::isfinite(ny)) return glm::vec4(1.0f);
+        const auto wrapped = [](float f, int size, int mode) {
+            const double period = 2.0 * size;
+            const int i = static_cast<int>(std::floor(f - std::floor(f / period) * period));
+            return wrapTexel(i, size, mode);
+        };
+        const std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(wrapped(ny, image.height, tex.wrapT)) *
+                                                 static_cast<std::size_t>(image.width) +
+                                             static_cast<std::size_t>(wrapped(nx, image.width, tex.wrapS))) * 4];
+        if (image.srgb) return glm::vec4(s.srgbToLinear[p[0]], s.srgbToLinear[p[1]], s.srgbToLinear[p[2]], p[3] / 255.0f);
+        return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
+    }
     // Bilinear between texel centres: texel i covers [i, i+1)/size.
     const float x = uv.x * static_cast<float>(image.width) - 0.5f;
     const float y = uv.y * static_cast<float>(image.height) - 0.5f;

@@ -22,9 +22,15 @@ using reference::PathTracer;
 using reference::ReferenceScene;
 using reference::ReferenceSettings;
 
-// Pixels whose (2r+1)² neighbourhood sees one node lit by the same set of lights: away from
-// shadow edges (where shadow-map filtering and bias move the edge) and object silhouettes (where
-// the reference's pixel-area samples mix two surfaces and the rasterizer's centre sample does not).
+// Pixels whose (2r+1)² neighbourhood sees one node lit by the same set of lights and one material:
+// away from shadow edges (where shadow-map filtering and bias move the edge), object silhouettes
+// (where the reference's pixel-area samples mix two surfaces and the rasterizer's centre sample does
+// not) and edges in the metal-rough texture. The last matter for specular: the rasterizer's
+// filtered texture lookups (trilinear, 8× anisotropic) blend metalness and roughness across such an
+// edge, and the GGX lobe of blended parameters is not the blend of the two lobes. Measured on the
+// scene below before this mask: direct specular 2-3 % darker in the rasterizer at 128² and
+// 0.4-1.2 % at 256² (the blend follows the texel footprint); with textures of one colour and one
+// metalness the two agree within 0.3 %, so the gap is the filtering, not the BRDF.
 std::vector<bool> interiorMask(const std::vector<FirstHit>& hits, int width, int height, int r) {
     std::vector<bool> mask(hits.size(), false);
     for (int y = r; y < height - r; ++y)
@@ -36,7 +42,8 @@ std::vector<bool> interiorMask(const std::vector<FirstHit>& hits, int width, int
                 for (int dx = -r; dx <= r && same; ++dx) {
                     const FirstHit& h = hits[static_cast<std::size_t>((y + dy) * width + x + dx)];
                     same = h.node == centre.node && h.litBy == centre.litBy &&
-                           glm::dot(h.normal, centre.normal) > 0.99f;  // no creases
+                           glm::dot(h.normal, centre.normal) > 0.99f &&  // no creases
+                           std::abs(h.metalness - centre.metalness) < 0.01f && std::abs(h.roughness - centre.roughness) < 0.01f;
                 }
             mask[static_cast<std::size_t>(y * width + x)] = same;
         }
@@ -76,7 +83,7 @@ protected:
                 c.traced += glm::dvec3(traced[3 * p], traced[3 * p + 1], traced[3 * p + 2]);
                 ++c.pixels;
             }
-            ASSERT_GT(c.pixels, size * size / 4) << name << ": too few pixels away from edges";
+            ASSERT_GT(c.pixels, size * size / 8) << name << ": too few pixels away from edges";
             const glm::dvec3 ratio = c.raster / glm::max(c.traced, glm::dvec3(1e-12));
             std::printf("%s %s: %d pixels, rasterizer/reference = %.4f %.4f %.4f\n", name, std::string(toString(view)).c_str(),
                         c.pixels, ratio.r, ratio.g, ratio.b);

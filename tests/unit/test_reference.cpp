@@ -2,6 +2,7 @@
 // paths at most; the whole file runs in a few seconds on 2 cores.
 #include "Log.h"
 #include "reference/MicrofacetBrdf.h"
+#include "reference/DifferenceImage.h"
 #include "reference/PathTracer.h"
 #include "reference/ProgressiveReference.h"
 #include "reference/PunctualLights.h"
@@ -403,6 +404,20 @@ TEST(ReferenceTerms, FinalIsTheSumOfTheTermsAndBouncesAddLight) {
     const std::vector<float> diffuseOnly = image.viewRgb(View::Final, noSpecular);
     EXPECT_NEAR(diffuseOnly[3 * 100], image.mean(Term::DirectDiffuse, 100).r + image.mean(Term::IndirectDiffuse, 100).r, 1e-5f);
     EXPECT_THROW(image.viewRgb(View::Albedo, RenderSettings{}), std::invalid_argument);
+}
+
+TEST(ReferenceDifference, FalseColourShowsSignedRelativeError) {
+    // Pixels: equal, rasterizer twice as bright, half as bright, both black (background).
+    const std::vector<float> truth = {1, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0};
+    const std::vector<float> test = {1, 1, 1, 2, 2, 2, 0.5f, 0.5f, 0.5f, 0, 0, 0};
+    const std::vector<float> c = relativeErrorColours(test, truth, 1.0f);
+    ASSERT_EQ(c.size(), 12u);
+    EXPECT_EQ(glm::vec3(c[0], c[1], c[2]), glm::vec3(1.0f)) << "no error: white";
+    EXPECT_EQ(glm::vec3(c[3], c[4], c[5]), differenceRampColour(1.0f)) << "+100 %: the red end";
+    EXPECT_EQ(glm::vec3(c[6], c[7], c[8]), differenceRampColour(-0.5f)) << "−50 %: half way to blue";
+    EXPECT_EQ(glm::vec3(c[9], c[10], c[11]), glm::vec3(0.0f)) << "background stays black";
+    EXPECT_GT(differenceRampColour(1.0f).r, differenceRampColour(1.0f).b);
+    EXPECT_GT(differenceRampColour(-1.0f).b, differenceRampColour(-1.0f).r);
 }
 
 TEST(ReferenceProgressive, AccumulatesWhileStillAndRestartsOnChange) {
