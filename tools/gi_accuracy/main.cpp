@@ -190,14 +190,15 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     const int size = args.size;
     CameraView camera = sceneCameraView(scene, entry.framedInside ? -1 : 0, 1.0f);
     if (entry.framedInside) {
-        // Inside the nave, near one end, looking along the longest horizontal axis.
+        // From the middle of the open courtyard, a fifth of the height up, looking along the longest
+        // horizontal axis at the far end: walls, arcades and the sunlit floor in view.
         const Aabb b = scene.worldBounds();
         const glm::vec3 e = b.max - b.min, c = b.center();
         const bool alongX = e.x >= e.z;
         const glm::vec3 axis = alongX ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
         const float length = alongX ? e.x : e.z;
-        const glm::vec3 eye = glm::vec3(c.x, b.min.y + 0.15f * e.y, c.z) - axis * (0.38f * length);
-        const glm::vec3 target = glm::vec3(c.x, b.min.y + 0.3f * e.y, c.z) + axis * (0.3f * length);
+        const glm::vec3 eye = glm::vec3(c.x, b.min.y + 0.2f * e.y, c.z);
+        const glm::vec3 target = eye + axis * (0.4f * length) + glm::vec3(0.0f, 0.05f * e.y, 0.0f);
         Camera cam;
         cam.name = "accuracy";
         cam.yfov = 1.0f;
