@@ -647,7 +647,8 @@ void App::drawViewportBar(float menuHeight) {
     if (visible_.log || visible_.timeline) bottom = layout.log.position.y - kMargin;
     viewportRect_ = {left, top, std::max(right - left, 1.0f), std::max(bottom - top, 1.0f)};
 
-    ImGui::SetNextWindowPos(ImVec2(right - kMargin, top + kMargin), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    // Bottom right of the free area: the stats overlay has the top left.
+    ImGui::SetNextWindowPos(ImVec2(right - kMargin, bottom - kMargin), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
     ImGui::SetNextWindowBgAlpha(0.6f);
     constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
                                         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |

@@ -121,8 +121,8 @@ private:
     // Rebuilds the renderer's GPU copy when nodes, meshes or materials were added or removed (a
     // structural edit, or its undo): the GpuScene's draw items are per node and primitive.
     void syncRendererStructure();
-    // The mode / space / snap bar and the current view's name, in the viewport's top-right
-    // corner; computes viewportRect_.
+    // The mode / space / snap bar and the current view's name, in the bottom-right corner of
+    // the free viewport area; computes viewportRect_.
     void drawViewportBar(float menuHeight);
     // The 2D views (shadow map, voxel slice) are drawn into the free viewport area between the
     // panels rather than the whole window.

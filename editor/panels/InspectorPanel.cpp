@@ -96,9 +96,8 @@ void InspectorPanel::draw(Document& doc, const Placement& placement, bool* open)
                         ImGui::TextDisabled("The default material (not editable).");
                     } else {
                         // Blender's user count: an edit here changes every node listed.
+                        // (drawMaterial shows the name below.)
                         const int users = materialUserCount(scene, material);
-                        ImGui::Text("%s", scene.materials[static_cast<std::size_t>(material)].name.c_str());
-                        ImGui::SameLine();
                         if (users > 1) {
                             ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "(%d users)", users);
                             tooltip("Other nodes use this material too: an edit changes them all");

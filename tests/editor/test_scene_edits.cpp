@@ -104,12 +104,14 @@ TEST(SceneEdits, AddEveryKindUndoRedoSaveReopen) {
         EXPECT_EQ(b.light >= 0, isLight);
         EXPECT_EQ(b.camera >= 0, kind == NodeKind::Camera);
         EXPECT_EQ(b.mesh >= 0, isMesh);
-        if (isLight)
+        if (isLight) {
             EXPECT_EQ(back.scene.lights[static_cast<std::size_t>(b.light)].type,
                       doc.scene.lights[static_cast<std::size_t>(node.light)].type);
-        if (isMesh)
+        }
+        if (isMesh) {
             EXPECT_EQ(back.scene.meshes[static_cast<std::size_t>(b.mesh)].primitives.front().indices.size(),
                       doc.scene.meshes[static_cast<std::size_t>(node.mesh)].primitives.front().indices.size());
+        }
     }
 }
 
@@ -143,7 +145,8 @@ TEST(SceneEdits, DeleteRemovesSubtreeAndItsLightUndoRedoSave) {
     ASSERT_TRUE(doc.redo());
     EXPECT_TRUE(doc.capture() == after);
     const Document back = reopen(doc, "delete");
-    EXPECT_EQ(back.scene.nodes.size(), nodes - 2);
+    // The only light is gone, so opening adds the default sun (DocumentIO: addDefaultLightAndCamera).
+    EXPECT_EQ(back.scene.nodes.size(), nodes - 2 + 1);
     EXPECT_LT(findNode(back.scene, "Lamp"), 0);
     EXPECT_GE(findNode(back.scene, "Cam"), 0);
     EXPECT_EQ(deleteSelection(doc), "nothing is selected");
