@@ -45,9 +45,12 @@ bool sameButNumbers(std::string_view a, std::string_view b) {
     return i == a.size() && j == b.size();
 }
 
-void Log::write(LogLevel level, std::string_view text) {
+void Log::write(LogLevel level, std::string_view text, Fold fold) {
     std::lock_guard lock(mutex_);
-    if (!recent_.empty() && recent_.back().level == level && sameButNumbers(recent_.back().text, text)) {
+    const bool folds = !recent_.empty() && recent_.back().level == level && fold == lastFold_ &&
+                       (fold == Fold::IgnoringNumbers ? sameButNumbers(recent_.back().text, text) : recent_.back().text == text);
+    lastFold_ = fold;
+    if (folds) {
         LogMessage& last = recent_.back();
         last.text = std::string(text);
         ++last.repeats;

@@ -123,12 +123,23 @@ bool HierarchyPanel::drawNode(Document& doc, int index, int depth) {
     if (index == doc.selectedNode && doc.selectedNode != revealedSelection_) ImGui::SetScrollHereY();
     bool changed = false;
     // Shift+click adds to (or takes from) the selection, as in Blender and Godot.
+    // A plain click on a row of a multi-selection keeps the selection until the button comes up
+    // without a drag, so the whole selection can be dragged onto a new parent.
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool multiple = doc.selection().size() > 1;
     if (ImGui::IsItemClicked(ImGuiMouseButton_Left) && !ImGui::IsItemToggledOpen()) {
-        const bool additive = ImGui::GetIO().KeyShift;
-        if (additive || doc.selectedNode != index || !doc.alsoSelected.empty()) {
-            doc.select(index, additive);
+        if (io.KeyShift) {
+            doc.select(index, /*additive=*/true);
+            changed = true;
+        } else if (!doc.isSelected(index) || (!multiple && doc.selectedNode != index)) {
+            doc.select(index);
             changed = true;
         }
+    }
+    if (multiple && !io.KeyShift && doc.isSelected(index) && ImGui::IsItemHovered() &&
+        ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 16.0f) {
+        doc.select(index);
+        changed = true;
     }
     // Drag a row onto another to parent it there (world transform kept).
     if (ImGui::BeginDragDropSource()) {
