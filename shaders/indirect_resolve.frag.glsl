@@ -33,8 +33,8 @@ layout(location = 2) out vec4 outHistoryDiffuse;    // D, a = frames accumulated
 layout(location = 3) out vec4 outHistorySpecular;   // S, a = frames accumulated
 layout(location = 4) out vec4 outHistoryGuide;      // normal, clip w (0 = background)
 
-layout(binding = LIT_TEX_INDIRECT_LOW_DIFFUSE) uniform sampler2D lowDiffuse;
-layout(binding = LIT_TEX_INDIRECT_LOW_SPECULAR) uniform sampler2D lowSpecular;
+layout(binding = LIT_TEX_INDIRECT_LOW_PACKED) uniform usampler2D lowPacked;
+layout(binding = LIT_TEX_INDIRECT_LOW_GUIDE) uniform usampler2D lowGuide;
 layout(binding = LIT_TEX_HISTORY_DIFFUSE) uniform sampler2D historyDiffuse;
 layout(binding = LIT_TEX_HISTORY_SPECULAR) uniform sampler2D historySpecular;
 layout(binding = LIT_TEX_HISTORY_GUIDE) uniform sampler2D historyGuide;
@@ -63,13 +63,24 @@ vec3 clampToBox(vec3 value, vec3 lo, vec3 hi) {
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    Surface s = readSurface(pixel, vUv);
+    // readSurface without the emissive target, which this pass does not use.
+    Surface s;
+    float pixelDepth = texelFetch(gbufferDepth, pixel, 0).r;
+    s.valid = pixelDepth < 1.0;
     outIndirectDiffuse = vec4(0.0);
     outIndirectSpecular = vec4(0.0);
     outHistoryDiffuse = vec4(0.0);
     outHistorySpecular = vec4(0.0);
     outHistoryGuide = vec4(0.0);
     if (!s.valid) return;
+    s.position = worldPositionFromDepth(vUv, pixelDepth);
+    s.normal = normalize(texelFetch(gbufferNormal, pixel, 0).xyz);
+    vec4 albedoAo = texelFetch(gbufferAlbedo, pixel, 0);
+    s.baseColor = albedoAo.rgb;
+    s.occlusion = albedoAo.a;
+    vec2 material = texelFetch(gbufferMaterial, pixel, 0).rg;
+    s.roughness = material.r;
+    s.metalness = material.g;
     float scale = voxel.traceParams.x * s.occlusion;
     float clipW = (frame.viewProjection * vec4(s.position, 1.0)).w;
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
@@ -79,7 +90,7 @@ void main() {
     bool smoothSurface = s.roughness < uSmoothRoughness;
 
     // ---- Upsampling: the four low-resolution texels around this pixel.
-    ivec2 lowSize = textureSize(lowDiffuse, 0);
+    ivec2 lowSize = textureSize(lowPacked, 0);
     vec2 c = (vec2(pixel) - vec2(uJitter)) / float(uScale);
     ivec2 base = ivec2(floor(c));
     vec2 f = c - vec2(base);
@@ -91,13 +102,12 @@ void main() {
         ivec2 low = clamp(base + offset, ivec2(0), lowSize - 1);
         vec2 bilinear = mix(1.0 - f, f, vec2(offset));
         float spatial = bilinear.x * bilinear.y + kSpatialFloor;
-        vec4 d = texelFetch(lowDiffuse, low, 0);
-        vec4 sp = texelFetch(lowSpecular, low, 0);
+        vec4 d, sp;
+        unpackIndirect(texelFetch(lowPacked, low, 0), d, sp);
         if (d.a <= 0.0 && sp.a <= 0.0) continue;  // nothing traced there (background, ...)
-        ivec2 traced = tracedPixel(low);
-        float depth = texelFetch(gbufferDepth, traced, 0).r;
-        vec3 p = worldPositionFromDepth((vec2(traced) + 0.5) * frame.viewport.zw, depth);
-        vec3 normal = normalize(texelFetch(gbufferNormal, traced, 0).xyz);
+        uvec4 guide = texelFetch(lowGuide, low, 0);
+        vec3 p = uintBitsToFloat(guide.xyz);
+        vec3 normal = octDecode(unpackSnorm2x16(guide.w));
         float plane = abs(dot(s.normal, p - s.position)) / max(clipW, 1e-6);
         float w = spatial * max(1.0 - plane / kPlaneTolerance, 0.0) * pow(max(dot(s.normal, normal), 0.0), kNormalPower);
         if (w <= 0.0) continue;

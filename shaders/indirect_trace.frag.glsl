@@ -2,16 +2,17 @@
 // Low-resolution cone trace (ConeTracePass at RenderSettings::indirectScale > 1, or with temporal
 // accumulation): one pixel of every s × s block (tracedPixel, jittered per frame) traces the
 // demodulated indirect terms (indirect.glsl) for IndirectResolvePass to upsample.
-//   out 0: rgb irradiance/π (traceDiffuse), a 1 where it was traced (0: background, metal, L_ID off)
-//   out 1: rgb lobe-averaged radiance ⟨L⟩, a 1 + roughness where L_IS was traced here; 0 where the
-//          surface is smoother than uSmoothRoughness (the resolve traces those at full resolution)
+//   diffuse:  rgb irradiance/π (traceDiffuse), a 1 where it was traced (0: background, metal, L_ID off)
+//   specular: rgb lobe-averaged radiance ⟨L⟩, a 1 + roughness where L_IS was traced here; 0 where the
+//             surface is smoother than uSmoothRoughness (the resolve traces those at full resolution)
+// both packed into out 0, and the traced pixel's position and normal into out 1 (indirect.glsl).
 #include "frame.glsl"
 #include "gbuffer.glsl"
 #include "cone.glsl"
 #include "indirect.glsl"
 
-layout(location = 0) out vec4 outDiffuse;
-layout(location = 1) out vec4 outSpecular;
+layout(location = 0) out uvec4 outPacked;
+layout(location = 1) out uvec4 outGuide;
 
 uniform ivec2 uTraceTerms;       // x: L_ID wanted, y: L_IS wanted (1/0)
 uniform float uSmoothRoughness;  // L_IS of smoother surfaces is left to the resolve
@@ -20,9 +21,11 @@ void main() {
     ivec2 pixel = tracedPixel(ivec2(gl_FragCoord.xy));
     vec2 uv = (vec2(pixel) + 0.5) * frame.viewport.zw;
     Surface s = readSurface(pixel, uv);
-    outDiffuse = vec4(0.0);
-    outSpecular = vec4(0.0);
+    vec4 outDiffuse = vec4(0.0), outSpecular = vec4(0.0);
+    outPacked = uvec4(0u);
+    outGuide = uvec4(0u);
     if (!s.valid) return;
+    outGuide = packGuide(s.position, s.normal);
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
     vec3 n = shadingNormal(s.normal, v);
     vec3 origin = coneOrigin(s.position, n);
@@ -44,4 +47,5 @@ void main() {
                                       maxDistance, reuse, cones);
         outSpecular = vec4(lobe, 1.0 + s.roughness);
     }
+    outPacked = packIndirect(outDiffuse, outSpecular);
 }

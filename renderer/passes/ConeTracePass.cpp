@@ -97,21 +97,21 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     if (w != lowWidth_ || h != lowHeight_) {
         lowWidth_ = w;
         lowHeight_ = h;
-        lowDiffuse_ = gl::Texture("indirect diffuse (reduced)", {GL_TEXTURE_2D, GL_RGBA16F, w, h, 1, 1});
-        lowSpecular_ = gl::Texture("indirect specular (reduced)", {GL_TEXTURE_2D, GL_RGBA16F, w, h, 1, 1});
-        lowDiffuse_.setFilter(GL_NEAREST, GL_NEAREST);
-        lowSpecular_.setFilter(GL_NEAREST, GL_NEAREST);
+        lowPacked_ = gl::Texture("indirect terms (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
+        lowGuide_ = gl::Texture("indirect guide (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
+        lowPacked_.setFilter(GL_NEAREST, GL_NEAREST);
+        lowGuide_.setFilter(GL_NEAREST, GL_NEAREST);
         lowTarget_ = gl::Framebuffer("indirect (reduced)");
-        lowTarget_.attach(GL_COLOR_ATTACHMENT0, lowDiffuse_);
-        lowTarget_.attach(GL_COLOR_ATTACHMENT1, lowSpecular_);
+        lowTarget_.attach(GL_COLOR_ATTACHMENT0, lowPacked_);
+        lowTarget_.attach(GL_COLOR_ATTACHMENT1, lowGuide_);
         lowTarget_.setDrawBuffers(2);
         lowTarget_.checkComplete("indirect (reduced)");
     }
     const Work work = workFor(settings);
-    const float zero[4] = {0, 0, 0, 0};
+    const GLuint zero[4] = {0, 0, 0, 0};
     if ((!work.diffuse && !work.specular) || !volume.radiance()) {
-        glClearNamedFramebufferfv(lowTarget_.id(), GL_COLOR, 0, zero);
-        glClearNamedFramebufferfv(lowTarget_.id(), GL_COLOR, 1, zero);
+        glClearNamedFramebufferuiv(lowTarget_.id(), GL_COLOR, 0, zero);
+        glClearNamedFramebufferuiv(lowTarget_.id(), GL_COLOR, 1, zero);
         return;
     }
     bindAlbedoTable();

@@ -52,10 +52,11 @@ public:
     static int indirectScale(const RenderSettings& settings);
 
     // The low-resolution trace (same bindings as execute): ⌈width/s⌉ × ⌈height/s⌉ texels of
-    // demodulated L_ID and rough L_IS (indirect_trace.frag.glsl), read by IndirectResolvePass.
+    // demodulated L_ID and rough L_IS and of the traced pixels' positions and normals, packed
+    // (indirect.glsl), read by IndirectResolvePass.
     void executeReduced(const VoxelVolume& volume, const RenderSettings& settings, const Sampling& sampling);
-    const gl::Texture& lowDiffuse() const { return lowDiffuse_; }
-    const gl::Texture& lowSpecular() const { return lowSpecular_; }
+    const gl::Texture& lowPacked() const { return lowPacked_; }  // RGBA32UI
+    const gl::Texture& lowGuide() const { return lowGuide_; }    // RGBA32UI
 
     // Which of the two terms a frame with `settings` needs traced.
     struct Work {
@@ -79,7 +80,7 @@ private:
     gl::Program program_;
     gl::Program albedoProgram_;
     gl::Program reducedProgram_;
-    gl::Texture lowDiffuse_, lowSpecular_;  // RGBA16F, ⌈width/s⌉ × ⌈height/s⌉
+    gl::Texture lowPacked_, lowGuide_;  // RGBA32UI, ⌈width/s⌉ × ⌈height/s⌉
     gl::Framebuffer lowTarget_;
     int lowWidth_ = 0, lowHeight_ = 0;
     GLuint albedoTableBuiltWith_ = 0;  // albedoProgram_ id the table was built with (hot reload)

@@ -68,8 +68,8 @@ void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& con
     glDisable(GL_BLEND);
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
     cone.bindAlbedoTable();
-    cone.lowDiffuse().bind(LIT_TEX_INDIRECT_LOW_DIFFUSE);
-    cone.lowSpecular().bind(LIT_TEX_INDIRECT_LOW_SPECULAR);
+    cone.lowPacked().bind(LIT_TEX_INDIRECT_LOW_PACKED);
+    cone.lowGuide().bind(LIT_TEX_INDIRECT_LOW_GUIDE);
     program_.use();
     const GLuint id = program_.id();
     glProgramUniform2i(id, program_.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);

@@ -27,7 +27,7 @@ class IndirectResolvePass : public Pass {
 public:
     explicit IndirectResolvePass(const std::filesystem::path& shaderRoot);
 
-    // Writes terms.indirectFramebuffer()'s two attachments from cone.lowDiffuse()/lowSpecular()
+    // Writes terms.indirectFramebuffer()'s two attachments from cone.lowPacked()/lowGuide()
     // (ConeTracePass::executeReduced of this frame with the same settings and `sampling`).
     // Expects bound as for ConeTracePass: the G-buffer, the frame UBO (this frame's camera), the
     // voxel UBO; binds the radiance volume and albedo table itself. With

@@ -21,6 +21,36 @@ ivec2 tracedPixel(ivec2 low) {
     return min(low * uScale + uJitter, ivec2(frame.viewport.xy) - 1);
 }
 
+// The low-resolution targets, one texel per traced pixel, packed so the resolve reads a
+// neighbour with two fetches (on llvmpipe the resolve's cost is its texel fetches):
+//   packed (RGBA32UI): half2(D.rg), half2(D.b, 1 = D traced), half2(S.rg), half2(S.b, 1 + roughness = S traced)
+//   guide  (RGBA32UI): the traced pixel's world position (float bits, m), octahedral normal (snorm16 ×2)
+// D = irradiance/π, S = lobe-averaged radiance ⟨L⟩ (0 where not traced).
+uvec4 packIndirect(vec4 diffuse, vec4 specular) {
+    return uvec4(packHalf2x16(diffuse.rg), packHalf2x16(diffuse.ba), packHalf2x16(specular.rg), packHalf2x16(specular.ba));
+}
+void unpackIndirect(uvec4 bits, out vec4 diffuse, out vec4 specular) {
+    diffuse = vec4(unpackHalf2x16(bits.x), unpackHalf2x16(bits.y));
+    specular = vec4(unpackHalf2x16(bits.z), unpackHalf2x16(bits.w));
+}
+
+// Octahedral unit-vector encoding (Cigolle et al. 2014, "A Survey of Efficient Representations
+// for Independent Unit Vectors", JCGT 3(2)); 16 bits per coordinate keep it within 0.01°.
+vec2 octEncode(vec3 n) {
+    n /= abs(n.x) + abs(n.y) + abs(n.z);
+    vec2 signs = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(n.xy, vec2(0.0)));
+    return n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * signs;
+}
+vec3 octDecode(vec2 e) {
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    float t = max(-n.z, 0.0);
+    n.xy += mix(vec2(t), vec2(-t), greaterThanEqual(n.xy, vec2(0.0)));
+    return normalize(n);
+}
+uvec4 packGuide(vec3 position, vec3 normal) {
+    return uvec4(floatBitsToUint(position), packSnorm2x16(octEncode(normal)));
+}
+
 mat3 rotatedTangentFrame(vec3 n, float rotation) {
     float c = cos(rotation), s = sin(rotation);
     return tangentFrame(n) * mat3(c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0);

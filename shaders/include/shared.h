@@ -68,8 +68,8 @@ using mat4 = glm::mat4;
 #define LIT_OUTLINE_RADIUS 2           // selection outline width (pixels outside the silhouette)
 #define LIT_HIDDEN_LINE_OPACITY 0.25   // opacity multiplier of depth-tested lines where the scene hides them
 // Reduced-resolution indirect lighting (ConeTracePass → IndirectResolvePass, docs/GI.md).
-#define LIT_TEX_INDIRECT_LOW_DIFFUSE 24   // rgb irradiance/π of the block's traced pixel, a 1 = traced
-#define LIT_TEX_INDIRECT_LOW_SPECULAR 25  // rgb lobe-averaged radiance ⟨L⟩, a 1 + roughness (0 = not traced)
+#define LIT_TEX_INDIRECT_LOW_PACKED 24    // RGBA32UI: irradiance/π and ⟨L⟩ of each block's traced pixel (indirect.glsl)
+#define LIT_TEX_INDIRECT_LOW_GUIDE 25     // RGBA32UI: that pixel's world position and normal
 #define LIT_TEX_HISTORY_DIFFUSE 26        // accumulated irradiance/π, a = frames accumulated
 #define LIT_TEX_HISTORY_SPECULAR 27       // accumulated ⟨L⟩, a = frames accumulated
 #define LIT_TEX_HISTORY_GUIDE 28          // last frame's world normal (xyz) and clip w (m; 0 = background)
