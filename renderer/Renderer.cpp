@@ -253,7 +253,8 @@ void Renderer::Impl::reportGiUpdate() {
                   occupiedListComplete ? "" : ", list overflowed: whole grid");
     text += occupancy;
     if (mipTiming) text += ", mipmap " + formatMs(mipTiming->gpuMs);
-    log.info(text);
+    // Every frame of a gizmo drag re-voxelizes: one folded line with a count, not one per frame.
+    log.info(text, Fold::IgnoringNumbers);
     pendingGiFrame = 0;
 }
 
