@@ -456,9 +456,10 @@ int App::run() {
             target = glm::ivec4(glm::round(topLeft.x), glm::round(static_cast<float>(framebuffer.y) - topLeft.y - size.y),
                                 glm::max(glm::ivec2(glm::round(size)), glm::ivec2(1)));
         }
+        // Lowered while the camera moves or a value is dragged (RenderSettings::interactiveFpsTarget).
+        const float renderScale = renderScaleFor(frameSeconds, currentView().view);
         const glm::ivec2 renderSize =
-            glm::max(glm::ivec2(glm::round(glm::vec2(target.z, target.w) * std::clamp(viewport_.renderScale, 0.1f, 1.0f))),
-                     glm::ivec2(1));
+            glm::max(glm::ivec2(glm::round(glm::vec2(target.z, target.w) * renderScale)), glm::ivec2(1));
         syncRendererStructure();
 
         doc_.settings.width = renderSize.x;
@@ -509,6 +510,25 @@ int App::run() {
     // A normal quit: the autosave copy is not needed at the next start.
     if (autosave_ && *exitCode_ == 0) autosave_->cleanExit();
     return *exitCode_;
+}
+
+float App::renderScaleFor(double frameSeconds, const glm::mat4& view) {
+    const float full = std::clamp(viewport_.renderScale, 0.1f, 1.0f);
+    const bool moving = view != lastView_;
+    lastView_ = view;
+    const float target = doc_.settings.interactiveFpsTarget;
+    // Scripts and screenshots render what they ask for, at the chosen scale.
+    if (scriptMode() || options_.screenshot || target <= 0.0f || !(moving || ImGui::IsAnyItemActive())) {
+        interactiveScale_ = full;
+        return full;
+    }
+    // A frame's cost grows with its pixel count, the square of the scale: scale the side by
+    // √(target time / last frame time), at most ×1.25 or ÷2 per frame so it settles instead of
+    // oscillating, in steps of 1/20 so the targets are not reallocated every frame.
+    const double ratio = std::sqrt((1.0 / target) / std::max(frameSeconds, 1e-3));
+    const float wanted = interactiveScale_ * static_cast<float>(std::clamp(ratio, 0.5, 1.25));
+    interactiveScale_ = std::clamp(std::round(wanted * 20.0f) / 20.0f, 0.1f, full);
+    return interactiveScale_;
 }
 
 void App::updateCamera(float dtSeconds) {
@@ -724,7 +744,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.inspector) inspectorPanel_.draw(doc_, layout.inspector, &visible_.inspector);
     if (visible_.stats)
         drawStatsOverlay(frameTimer_, renderer_->profiler(), renderer_->stats(), renderSize, imgui_->monoFont(),
-                         layout.stats, &visible_.stats, renderer_->voxels());
+                         layout.stats, &visible_.stats, renderer_->voxels(), interactiveScale_);
     if (visible_.renderSettings) {
         const RenderSettingsRequests requests =
             drawRenderSettingsPanel(doc_.settings, viewport_, static_cast<int>(doc_.scene.lights.size()),

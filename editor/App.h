@@ -246,6 +246,13 @@ private:
 
     // Input and layout bookkeeping.
     bool looking_ = false;             // right mouse drag in progress
+    // Interactive render scale (RenderSettings::interactiveFpsTarget): the scale the viewport uses
+    // while the camera moves or a value is dragged, and the last frame's view to detect motion.
+    float interactiveScale_ = 1.0f;
+    glm::mat4 lastView_{0.0f};
+    // The viewport's render scale this frame: viewport_.renderScale when still, lower while
+    // interacting so the frame time meets the target.
+    float renderScaleFor(double frameSeconds, const glm::mat4& view);
     glm::dvec2 lastCursor_{0.0};       // screen coordinates
     glm::vec2 lastDisplaySize_{0.0f};  // re-apply the panel layout when it changes
 };

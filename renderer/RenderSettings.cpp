@@ -66,6 +66,11 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("voxelMip", s.voxelMip);
     visit("voxelChannel", s.voxelChannel);
     visit("frustumCulling", s.frustumCulling);
+    visit("indirectScale", s.indirectScale);
+    visit("specularFullResRoughness", s.specularFullResRoughness);
+    visit("temporalAccumulation", s.temporalAccumulation);
+    visit("temporalMaxFrames", s.temporalMaxFrames);
+    visit("interactiveFpsTarget", s.interactiveFpsTarget);
 }
 }  // namespace
 

@@ -79,6 +79,22 @@ struct RenderSettings {
 
     // Performance
     bool frustumCulling = true;  // G-buffer and shadow views draw only items their frustum may see
+    // Indirect lighting resolution (docs/GI.md, "Reduced resolution and temporal accumulation"):
+    // the cones of L_ID (and L_IS of rough surfaces) are traced for one pixel in every
+    // indirectScale × indirectScale block and upsampled with depth- and normal-aware weights.
+    // 1 traces every pixel (the reference path), 2 (default) or 4.
+    int indirectScale = 2;
+    // Perceptual roughness below which L_IS is traced per pixel at full resolution (a sharp
+    // reflection would blur at reduced resolution); at and above it, with L_ID at indirectScale.
+    float specularFullResRoughness = 0.3f;
+    // Accumulate both indirect terms over frames (reprojected with the camera, history rejected on
+    // disocclusion and scene edits), rotating the cone sets every frame. Off by default so a single
+    // still (lit-render, tests) is deterministic and equals one frame's trace; the editor turns it on.
+    bool temporalAccumulation = false;
+    int temporalMaxFrames = 16;  // frames of history at most (the blend weight never drops below 1/N)
+    // Editor: while the camera moves or a value is dragged, the viewport lowers its render scale
+    // to hold this frame rate (frames per second; 0 = never), and renders at full scale when still.
+    float interactiveFpsTarget = 10.0f;
 
     bool operator==(const RenderSettings&) const = default;
 };

@@ -5,6 +5,7 @@
 #include "passes/ConeTracePass.h"
 #include "passes/DirectLightingPass.h"
 #include "passes/FrameUniforms.h"
+#include "passes/IndirectResolvePass.h"
 #include "passes/InjectPass.h"
 #include "passes/MipmapPass.h"
 #include "passes/OverlayPass.h"
@@ -63,6 +64,15 @@ struct ShadowKey {
     bool operator==(const ShadowKey&) const = default;
 };
 
+// What the accumulated indirect history means; it is dropped when any of it changes.
+struct IndirectKey {
+    const Scene* scene = nullptr;
+    int indirectScale = 0, specularSamples = 0, voxelResolution = 0;
+    float smoothRoughness = 0, aperture = 0, maxTraceDistance = 0, stepScale = 0;
+    bool rgba8 = false, diffuse = false, specular = false;
+    bool operator==(const IndirectKey&) const = default;
+};
+
 // What the voxel material volumes depend on; re-voxelized only when it changes.
 struct VoxelKey {
     std::uint64_t geometry = ~0ull, materials = ~0ull;
@@ -90,13 +100,14 @@ struct Renderer::Impl {
           inject(shaderRoot),
           mipmap(shaderRoot),
           coneTrace(shaderRoot),
+          resolve(shaderRoot),
           overlayPass(shaderRoot),
           voxelDebug(shaderRoot),
           frameUniforms("frame uniforms", sizeof(gpu::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT),
           lightBuffer("lights", sizeof(gpu::GpuLight) * LIT_MAX_LIGHTS, nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
     std::vector<Pass*> passes() {
-        return {&shadow, &gbuffer, &direct, &post, &voxelize, &inject, &mipmap, &coneTrace, &overlayPass, &voxelDebug};
+        return {&shadow, &gbuffer, &direct, &post, &voxelize, &inject, &mipmap, &coneTrace, &resolve, &overlayPass, &voxelDebug};
     }
 
     // Voxelize / inject / mipmaps when what they depend on changed. Returns whether it ran.
@@ -115,6 +126,7 @@ struct Renderer::Impl {
     InjectPass inject;
     MipmapPass mipmap;
     ConeTracePass coneTrace;
+    IndirectResolvePass resolve;
     OverlayPass overlayPass;
     VoxelDebugPass voxelDebug;
     ViewportOverlay overlay;
@@ -144,10 +156,17 @@ struct Renderer::Impl {
     float injectedRadianceRange = 0.0f;
     bool voxelsValid = false;
     std::uint64_t voxelGeneration = 0;  // counts voxelizations (the voxel debug views cache by it)
+    // Temporal accumulation of the indirect terms: frames accumulated so far (drives the jitter
+    // and cone rotation), the camera of the last resolved frame, and what its history means.
+    std::uint64_t temporalFrame = 0;
+    glm::mat4 previousViewProjection{1.0f};
+    IndirectKey indirectKey;
     // The GI update waiting for its GPU timings to be logged: what ran, why, in which frame.
     std::string pendingGiReason;
     std::uint64_t pendingGiFrame = 0;
     bool pendingVoxelize = false;
+    std::uint32_t occupiedCount = 0;    // voxels the last voxelization occupied
+    bool occupiedListComplete = false;  // the list holds all of them (else inject runs over N³)
 };
 
 void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty,
@@ -155,9 +174,10 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     std::string reason;
     const bool reallocated = voxels.ensure(settings.voxelResolution, settings.voxelRadianceRgba8, log);
     const bool moved = voxels.fitTo(bounds);
-    // Sample pattern index 0 every frame: without temporal accumulation a pattern that moves
-    // only adds flicker, and a fixed one keeps each term image consistent with the final image.
-    voxels.updateUniforms(settings, 0);
+    // Sample pattern index 0 every frame without temporal accumulation: a pattern that moves
+    // only adds flicker there, and a fixed one keeps each term image consistent with the final
+    // image. With it, the pattern turns every frame and the history averages the patterns.
+    voxels.updateUniforms(settings, settings.temporalAccumulation ? static_cast<int>(temporalFrame % 4096) : 0);
     const VoxelKey key{scene.geometryRevision, scene.materialRevision, &scene};
     bool voxelDirty = !voxelsValid || reallocated || moved || !(key == voxelKey);
     if (!voxelsValid) reason = "first GI frame";
@@ -167,17 +187,29 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     const bool injectDirty = voxelDirty || shadowsDirty || settings.voxelRadianceRange != injectedRadianceRange;
     if (!voxelDirty && injectDirty) reason = "lights or shadows changed";
     if (voxelDirty) {
-        Profiler::Scope scope(profiler, "voxelize");
-        voxelize.execute(scene, *gpuScene, voxels, counters);
+        {
+            Profiler::Scope scope(profiler, "voxelize");
+            voxelize.execute(scene, *gpuScene, voxels, counters);
+        }
         voxelKey = key;
         voxelsValid = true;
         ++voxelGeneration;
+        // One uint read back per voxelization (which is rare and slow anyway): the count is
+        // reported, and a list that overflowed is grown for the next voxelization while this
+        // one injects the whole grid.
+        occupiedCount = voxels.readOccupiedCount();
+        occupiedListComplete = occupiedCount <= voxels.occupiedCapacity();
+        if (!occupiedListComplete) {
+            log.warning("occupied-voxel list overflowed (" + std::to_string(occupiedCount) + " voxels, room for " +
+                        std::to_string(voxels.occupiedCapacity()) + "); injecting the whole grid until the next voxelization");
+            voxels.growOccupiedList(occupiedCount + occupiedCount / 4);
+        }
     }
     if (injectDirty) {
         shadow.bindMaps();
         {
             Profiler::Scope scope(profiler, "inject");
-            inject.execute(voxels);
+            inject.execute(voxels, occupiedListComplete);
         }
         Profiler::Scope scope(profiler, "mipmap");
         mipmap.execute(voxels);
@@ -185,9 +217,11 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         pendingGiReason = reason;
         pendingGiFrame = profiler.currentFrame();
         pendingVoxelize = voxelDirty;
+        resolve.resetHistory();  // the scene's light changed: accumulated indirect light is stale
     }
     stats.voxelized = voxelDirty;
     stats.injected = injectDirty;
+    stats.occupiedVoxels = occupiedCount;
 }
 
 void Renderer::Impl::cullView(const glm::mat4& viewProjection, bool culling, std::vector<std::uint32_t>& visible) {
@@ -212,7 +246,12 @@ void Renderer::Impl::reportGiUpdate() {
     std::string text = pendingVoxelize ? "re-voxelized " : "re-injected ";
     text += std::to_string(voxels.resolution()) + "³ (" + pendingGiReason + "): ";
     if (pendingVoxelize && voxelizeTiming) text += "voxelize " + formatMs(voxelizeTiming->gpuMs) + ", ";
-    text += "inject " + formatMs(injectTiming->gpuMs);
+    const double n = voxels.resolution();
+    char occupancy[96];
+    std::snprintf(occupancy, sizeof occupancy, "inject %s over %u occupied voxels (%.2f %% of the grid%s)",
+                  formatMs(injectTiming->gpuMs).c_str(), occupiedCount, 100.0 * occupiedCount / (n * n * n),
+                  occupiedListComplete ? "" : ", list overflowed: whole grid");
+    text += occupancy;
     if (mipTiming) text += ", mipmap " + formatMs(mipTiming->gpuMs);
     // Every frame of a gizmo drag re-voxelizes: one folded line with a count, not one per frame.
     log.info(text, Fold::IgnoringNumbers);
@@ -235,6 +274,7 @@ void Renderer::setScene(const Scene& scene) {
     impl_->boundsRevision = ~0ull;
     impl_->shadowKey = {};
     impl_->voxelsValid = false;
+    impl_->resolve.resetHistory();
     impl_->lastFrame.reset();  // the G-buffer's node IDs belong to the previous scene
 }
 
@@ -313,12 +353,45 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
             Profiler::Scope scope(r.profiler, "lighting");
             r.direct.execute(r.terms, settings);
         }
-        if (giWanted) {
+        if (giWanted && ConeTracePass::reducedPath(settings)) {
+            const ConeTracePass::Work work = ConeTracePass::workFor(settings);
+            const IndirectKey key{&scene,
+                                  ConeTracePass::indirectScale(settings),
+                                  settings.specularSamples,
+                                  settings.voxelResolution,
+                                  settings.specularFullResRoughness,
+                                  settings.diffuseConeAperture,
+                                  settings.maxTraceDistance,
+                                  settings.coneStepScale,
+                                  settings.voxelRadianceRgba8,
+                                  work.diffuse,
+                                  work.specular};
+            if (!(key == r.indirectKey)) r.resolve.resetHistory();
+            r.indirectKey = key;
+            const ConeTracePass::Sampling sampling =
+                settings.temporalAccumulation ? ConeTracePass::samplingFor(r.temporalFrame, key.indirectScale)
+                                              : ConeTracePass::Sampling{};
+            {
+                Profiler::Scope scope(r.profiler, "cone trace");
+                r.coneTrace.executeReduced(r.voxels, settings, sampling);
+            }
+            {
+                Profiler::Scope scope(r.profiler, "indirect resolve");
+                r.gbuffer.bindTargets();
+                r.resolve.execute(r.terms, r.coneTrace, r.voxels, settings, sampling, r.previousViewProjection);
+            }
+            r.previousViewProjection = frame.viewProjection;
+            if (settings.temporalAccumulation) ++r.temporalFrame;
+        } else if (giWanted) {
             Profiler::Scope scope(r.profiler, "cone trace");
             r.coneTrace.execute(r.terms, r.voxels, settings);
+            r.resolve.resetHistory();
         } else {
             r.terms.clearIndirect();
+            r.resolve.resetHistory();
         }
+    } else {
+        r.resolve.resetHistory();  // no terms this frame: the next one starts afresh
     }
     r.stats.voxelBytes = giWanted ? r.voxels.totalBytes() : 0;
     {
@@ -372,6 +445,16 @@ std::vector<float> Renderer::readHdrRgb() const {
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(t.id(), 0, GL_RGB, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(float)), pixels.data());
     return pixels;
+}
+
+std::vector<float> Renderer::readDepth() const {
+    const gl::Texture& t = impl_->gbuffer.depth();
+    std::vector<float> depth(static_cast<std::size_t>(t.desc().width) * t.desc().height);
+    if (depth.empty() || !t) return depth;
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(t.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(depth.size() * sizeof(float)),
+                      depth.data());
+    return depth;
 }
 
 void Renderer::setOverlay(ViewportOverlay overlay) { impl_->overlay = std::move(overlay); }

@@ -34,6 +34,7 @@ struct FrameStats {
     bool voxelized = false;     // the voxel volume was rebuilt this frame
     bool injected = false;      // radiance was re-injected this frame
     std::size_t voxelBytes = 0; // GPU memory of the voxel volumes
+    std::uint32_t occupiedVoxels = 0;  // voxels the last voxelization occupied (inject runs over these)
     // Frustum culling, over the views rendered this frame: the camera's G-buffer pass and the
     // shadow views when shadow maps were re-rendered (voxelization draws everything, uncounted).
     int drawsSubmitted = 0;     // scene draws those views issued
@@ -63,6 +64,9 @@ public:
     const gl::Texture& hdrTexture() const;
     std::vector<std::uint8_t> readOutputRgba8() const;  // bottom-up rows, RGBA8
     std::vector<float> readHdrRgb() const;              // bottom-up rows, linear RGB float
+    // The last frame's G-buffer depth (window space, 1 = background), bottom-up rows: with the
+    // camera's matrices it gives each pixel's world point (flicker measure, temporal tests).
+    std::vector<float> readDepth() const;
 
     // Viewport overlay drawn by every later render() into the output texture (not the HDR one):
     // selection outline, depth-tested lines, lines on top. An empty overlay costs nothing.

@@ -46,8 +46,21 @@ uvec3 mortonLocal(uint i) {
                  ((i >> 2u) & 1u) | ((i >> 4u) & 2u) | ((i >> 6u) & 4u));
 }
 
+// Occupied-voxel list (InjectPass with uFromList = 1): the work groups run along the list
+// (glDispatchComputeIndirect, LIT_INJECT_LIST_GROUP_SIZE = 8³ entries each) instead of over N³.
+LIT_OCCUPIED_VOXELS_BLOCK(readonly);
+uniform int uFromList;           // 1: voxels from the list; 0: the whole grid
+uniform uint uOccupiedCapacity;  // entries the list holds at most
+
 void main() {
-    ivec3 v = ivec3(gl_WorkGroupID * uint(LIT_INJECT_GROUP_SIZE) + mortonLocal(gl_LocalInvocationIndex));
+    ivec3 v;
+    if (uFromList != 0) {
+        uint index = gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex;
+        if (index >= min(occupiedCount, uOccupiedCapacity)) return;
+        v = unpackVoxelCoord(occupiedVoxels[index]);
+    } else {
+        v = ivec3(gl_WorkGroupID * uint(LIT_INJECT_GROUP_SIZE) + mortonLocal(gl_LocalInvocationIndex));
+    }
     int n = int(voxel.voxelInfo.x);
     if (any(greaterThanEqual(v, ivec3(n)))) return;
 

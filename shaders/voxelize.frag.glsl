@@ -15,6 +15,8 @@ in VoxelFragment {
 layout(binding = LIT_IMG_VOXEL_ALBEDO, r32ui) uniform coherent volatile uimage3D voxelAlbedo;
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform coherent volatile uimage3D voxelNormal;
 layout(binding = LIT_IMG_VOXEL_EMISSION, r32ui) uniform coherent volatile uimage3D voxelEmission;
+LIT_OCCUPIED_VOXELS_BLOCK();
+uniform uint uOccupiedCapacity;  // entries the list can hold (VoxelVolume::occupiedCapacity)
 
 void main() {
     // The enlarged triangle overshoots at acute corners: keep pixels that touch its true bounds.
@@ -34,7 +36,18 @@ void main() {
     float len = length(fs.worldNormal);
     vec3 normal = len > 1e-12 ? fs.worldNormal / len : vec3(0.0);
 
-    atomicAverageRgb(voxelAlbedo, v, clamp(baseColor.rgb, 0.0, 1.0));
+    // The first fragment of a voxel (the albedo's compare-and-swap from 0 succeeds, as the first
+    // try of atomicAverageRgb would) appends it to the occupied-voxel list; later ones average.
+    vec3 albedo = clamp(baseColor.rgb, 0.0, 1.0);
+    if (imageAtomicCompSwap(voxelAlbedo, v, 0u, averageRgbAdd(0u, albedo)) == 0u) {
+        uint index = atomicAdd(occupiedCount, 1u);
+        if (index < uOccupiedCapacity) {
+            occupiedVoxels[index] = packVoxelCoord(v);
+            atomicMax(dispatchX, index / uint(LIT_INJECT_LIST_GROUP_SIZE) + 1u);
+        }
+    } else {
+        atomicAverageRgb(voxelAlbedo, v, albedo);
+    }
     atomicAverageRgb(voxelNormal, v, normal * 0.5 + 0.5);
     atomicAverageRgb(voxelEmission, v, clamp(emissive / LIT_VOXEL_EMISSION_RANGE, 0.0, 1.0));
 }

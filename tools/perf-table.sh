@@ -22,6 +22,14 @@
 #                     Cornell box, whose camera sees only interior surfaces)
 #   PERF_COMPARE_ROUNDS  before/after pairs, interleaved                (default: 3)
 #   PERF_COMPARE_SIZE, PERF_COMPARE_FRAMES   image size and frames of those runs (default: 640x360, 6)
+#   PERF_FAST         1 (default): also the fast-GI rows (issue #12): the full-frame Cornell box
+#                     (assets/cornell_inside.still.path.json: inside the box, 70° fov) at PERF_SIZE
+#                     and 128³ with GI off and GI on at indirect scale 1, 2 and 4, interleaved
+#                     PERF_FAST_ROUNDS times; the flicker figure on assets/cornell_inside.path.json
+#                     (PERF_FLICKER_SIZE, temporal accumulation on and off); and a light edit
+#                     against a re-voxelization on Sponza at 256³ (--bench-gi-updates). 0: skip them.
+#   PERF_FAST_ROUNDS  rounds of the interleaved Cornell runs          (default: 2)
+#   PERF_FLICKER_SIZE image size of the flicker runs                  (default: 640x360)
 # Besides the pass timings (wall clock, so they grow with other load on a shared machine) each
 # before/after run records the process's CPU time (user + sys, with /usr/bin/time): both variants
 # do identical work apart from the compared shaders, so the difference in CPU seconds is the
@@ -91,6 +99,31 @@ for voxels in $voxelList; do
     fi
     run "gi-$voxels" --bench "$giFrames" --gi on --voxels "$voxels" --settings "$work/rgba8.json"
 done
+
+fast="${PERF_FAST:-1}"
+fastRounds="${PERF_FAST_ROUNDS:-2}"
+flickerSize="${PERF_FLICKER_SIZE:-640x360}"
+if [[ "$fast" == 1 ]]; then
+    # Full-frame Cornell box: every run flies the still path (one untimed warm-up frame that also
+    # voxelizes, then 3 timed frames of the same view), variants interleaved round by round.
+    benchScene="$root/assets/cornell_box.gltf"
+    still="$root/assets/cornell_inside.still.path.json"
+    for ((round = 1; round <= fastRounds; ++round)); do
+        run "cornell-gi-off-$round" --path "$still" --fps 10 --bench-path --gi off
+        for scale in 1 2 4; do
+            run "cornell-gi-s$scale-$round" --path "$still" --fps 10 --bench-path --gi on --voxels 128 --indirect-scale "$scale"
+        done
+    done
+    benchSize="$flickerSize"
+    for temporal in on off; do
+        run "flicker-temporal-$temporal" --path "$root/assets/cornell_inside.path.json" --fps 10 --bench-path --gi on \
+            --voxels 128 --temporal "$temporal" | tee "$results/flicker-temporal-$temporal.txt"
+    done
+    benchScene="$scene"
+    benchSize="$size"
+    run "gi-updates-256" --bench 1 --gi on --voxels 256 --settings "$work/rgba8.json" --bench-gi-updates 3 \
+        | tee "$results/gi-updates-256.txt"
+fi
 
 if [[ -n "$compareRev" ]]; then
     # The same binary with the working tree's shaders but the revision's version of the compared
@@ -209,6 +242,58 @@ if compare_rev and groups:
         for i, (b, a) in enumerate(ab, 1):
             cb, ca = cpu_seconds(f"before-{tag}-{i}"), cpu_seconds(f"after-{tag}-{i}")
             w(f"| {tag} | {i} | {cone(b):.1f} | {cone(a):.1f} | {cone(b) / cone(a):.2f}× | {cb:.2f} | {ca:.2f} | {cb - ca:.2f} |")
+fast_rounds = sorted({int(f.split("-")[-1][:-5]) for f in os.listdir(results) if f.startswith("cornell-gi-off-")})
+if fast_rounds:
+    def pass_mean(run, name):
+        for p in run["passes"]:
+            if p["name"] == name:
+                return p["gpuMs"]["mean"]
+        return 0.0
+    w("")
+    w("## Fast GI (issue #12): full-frame Cornell box, 128³, same binary, runs interleaved")
+    w("")
+    first = load_run(f"cornell-gi-off-{fast_rounds[0]}")
+    w(f"`assets/cornell_inside.still.path.json` (camera inside the box, 70° vertical fov: every pixel a wall or box), "
+      f"{first['width']}×{first['height']}, RGBA16F radiance, `--bench-path` (one untimed warm-up frame, then "
+      f"{first['frames']} timed frames of the same view). Frame: mean wall-clock ms. Indirect: the GPU time of "
+      "\"cone trace\" plus \"indirect resolve\" (the upsampling pass; scale 1 has none). Ratios are within one round.")
+    w("")
+    w("| Round | GI off frame (ms) | GI on frame, scale 1 / 2 / 4 (ms) | GI on ÷ GI off, scale 1 / 2 / 4 | indirect, scale 1 / 2 / 4 (ms) | indirect speed-up vs scale 1, scale 2 / 4 |")
+    w("|---|---|---|---|---|---|")
+    for rnd in fast_rounds:
+        off = load_run(f"cornell-gi-off-{rnd}")
+        on = [load_run(f"cornell-gi-s{s}-{rnd}") for s in (1, 2, 4)]
+        if not off or not all(on):
+            continue
+        offMs = off["frameMs"]["mean"]
+        frames = [r["frameMs"]["mean"] for r in on]
+        ind = [pass_mean(r, "cone trace") + pass_mean(r, "indirect resolve") for r in on]
+        w(f"| {rnd} | {offMs:.0f} | {' / '.join(f'{f:.0f}' for f in frames)} | {' / '.join(f'{f / offMs:.2f}×' for f in frames)} | "
+          f"{' / '.join(f'{i:.0f}' for i in ind)} | {ind[0] / ind[1]:.2f}× / {ind[0] / ind[2]:.2f}× |")
+    flick = [(t, load_run(f"flicker-temporal-{t}")) for t in ("on", "off")]
+    flick = [(t, r) for t, r in flick if r and "flickerPercent" in r]
+    if flick:
+        w("")
+        r0 = flick[0][1]
+        w(f"Flicker on `assets/cornell_inside.path.json` ({r0['width']}×{r0['height']}, 10 fps, {r0['frames']} frames, "
+          "indirect scale 2): mean |frame-to-frame change| of pixels whose surface did not move (reprojected, same "
+          "point within 1 %), relative to the mean luminance (`lit-render --bench-path`).")
+        w("")
+        w("| Temporal accumulation | flicker mean | flicker worst frame pair | mean frame (ms) |")
+        w("|---|---|---|---|")
+        for t, r in flick:
+            w(f"| {t} | {r['flickerPercent']:.3f} % | {r['flickerWorstPercent']:.3f} % | {r['frameMs']['mean']:.0f} |")
+    upd = os.path.join(results, "gi-updates-256.txt")
+    if os.path.exists(upd):
+        rows = [l.strip() for l in open(upd) if l.startswith("gi-update") or l.startswith("GI updates")]
+        if rows:
+            w("")
+            w("Light edit (re-inject + mipmaps, voxels kept) against a re-voxelization, Sponza 256³ RGBA8, interleaved "
+              "(`lit-render --bench 1 --bench-gi-updates 3`), GPU ms from the profiler:")
+            w("")
+            w("```")
+            lines.extend(rows)
+            w("```")
 # Hand-written notes below the marker in the existing file survive a refresh.
 marker = "<!-- notes below are kept by tools/perf-table.sh -->"
 if os.path.exists(out):

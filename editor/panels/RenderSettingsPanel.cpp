@@ -70,6 +70,9 @@ bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
     tooltip("Linear multiplier applied before tone mapping");
     ImGui::SliderFloat("Render scale", &viewport.renderScale, 0.25f, 1.0f, "%.2f");
     tooltip("Render resolution as a fraction of the window (stretched to fit)");
+    changed |= ImGui::SliderFloat("Interactive FPS", &s.interactiveFpsTarget, 0.0f, 60.0f, "%.0f FPS");
+    tooltip("While the camera moves or a value is dragged, lower the render scale to hold this frame rate\n"
+            "(0 = never); full scale again when still");
     ImGui::Checkbox("Markers and gizmo", &viewport.markers);
     tooltip("Light and camera markers, the camera path and the translate gizmo");
     ImGui::Checkbox("Cone directions", &viewport.coneDirections);
@@ -130,6 +133,14 @@ bool drawGlobalIllumination(RenderSettings& s) {
     tooltip("Longest cone, as a fraction of the voxel volume's side");
     changed |= ImGui::SliderFloat("Step scale", &s.coneStepScale, 0.1f, 2.0f, "%.2f");
     tooltip("Step along a cone = scale x cone diameter (smaller is slower and smoother)");
+    changed |= comboInt("Indirect scale", s.indirectScale, std::array{1, 2, 4});
+    tooltip("Trace indirect light for one pixel in N x N and upsample edge-aware (1 = every pixel)");
+    changed |= ImGui::SliderFloat("Full-res specular below", &s.specularFullResRoughness, 0.0f, 1.0f, "roughness %.2f");
+    tooltip("Surfaces smoother than this trace indirect specular for every pixel (sharp reflections)");
+    changed |= ImGui::Checkbox("Temporal accumulation", &s.temporalAccumulation);
+    tooltip("Average indirect light over frames (reprojected; history dropped on disocclusion and edits)");
+    changed |= ImGui::SliderInt("History frames", &s.temporalMaxFrames, 1, 64);
+    tooltip("Frames averaged at most: more is smoother, slower to follow changes");
     ImGui::EndDisabled();
     if (s.view == View::Voxels || s.view == View::VoxelSlice) {
         ImGui::Separator();

@@ -102,7 +102,8 @@ ImU32 passColor(const std::string& passName) {
 }
 
 void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
-                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels) {
+                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels,
+                      float renderScale) {
     placeNextWindow(placement);
     ImGui::SetNextWindowBgAlpha(0.72f);  // an overlay: the image stays visible behind it
     constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
@@ -117,7 +118,7 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
     ImGui::Text("%6.1f FPS  frame %7.1f ms", timer.fps(), timer.averageMs());
     ImGui::Text("CPU %7.1f ms  GPU %7.1f ms", profiler.lastCpuFrameMs(), profiler.totalGpuMs());
     drawFrameGraph(timer, width);
-    ImGui::Text("Render %d x %d px", renderSize.x, renderSize.y);
+    ImGui::Text("Render %d x %d px  scale %.2f", renderSize.x, renderSize.y, renderScale);
     ImGui::Text("Draws %d  Triangles %zu", stats.drawCalls, stats.triangles);
     ImGui::Text("Culling: %d of %d draws, %.2f ms", stats.drawsSubmitted, stats.drawsTotal, stats.cullMs);
     constexpr double kMiB = 1024.0 * 1024.0;

@@ -15,9 +15,11 @@
 namespace lit::editor {
 
 // `voxels`: the renderer's voxel volume (null before GI has run), whose per-texture memory
-// report is the tooltip of the voxel memory line.
+// report is the tooltip of the voxel memory line. `renderScale`: the viewport's render scale this
+// frame (lowered while the camera moves, RenderSettings::interactiveFpsTarget).
 void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
-                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels = nullptr);
+                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels = nullptr,
+                      float renderScale = 1.0f);
 
 // The colour a pass has in the stacked bar and the table: fixed per pass name, so a pass keeps
 // its colour when others appear or vanish.

@@ -6,13 +6,17 @@
 
 #include <shared.h>
 
+#include <algorithm>
+
 namespace lit {
 
 ConeTracePass::ConeTracePass(const std::filesystem::path& shaderRoot)
     : program_(shaderRoot, "cone trace",
                {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "cone_trace.frag.glsl"}}),
       albedoProgram_(shaderRoot, "specular albedo table",
-                     {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "specular_albedo.frag.glsl"}}) {
+                     {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "specular_albedo.frag.glsl"}}),
+      reducedProgram_(shaderRoot, "indirect trace (reduced)",
+                      {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}}) {
     constexpr int size = LIT_SPECULAR_ALBEDO_SIZE;
     albedoTable_ = gl::Texture("specular albedo table", {GL_TEXTURE_2D, GL_RG16F, size, size, 1, 1});
     albedoTable_.setFilter(GL_LINEAR, GL_LINEAR);
@@ -49,15 +53,80 @@ void ConeTracePass::execute(const LightingTerms& terms, const VoxelVolume& volum
         terms.clearIndirect();
         return;
     }
-    if (albedoTableBuiltWith_ != albedoProgram_.id()) buildAlbedoTable();
+    bindAlbedoTable();
     terms.indirectFramebuffer().bind();
     glViewport(0, 0, terms.width(), terms.height());
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-    albedoTable_.bind(LIT_TEX_SPECULAR_ALBEDO);
     program_.use();
     glProgramUniform2i(program_.id(), program_.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
+    triangle_.draw();
+}
+
+void ConeTracePass::bindAlbedoTable() {
+    if (albedoTableBuiltWith_ != albedoProgram_.id()) buildAlbedoTable();
+    albedoTable_.bind(LIT_TEX_SPECULAR_ALBEDO);
+}
+
+int ConeTracePass::indirectScale(const RenderSettings& settings) {
+    return settings.indirectScale <= 1 ? 1 : (settings.indirectScale <= 2 ? 2 : 4);
+}
+
+bool ConeTracePass::reducedPath(const RenderSettings& settings) {
+    return indirectScale(settings) > 1 || settings.temporalAccumulation;
+}
+
+ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scale) {
+    Sampling sampling;
+    const auto s = static_cast<std::uint64_t>(std::max(scale, 1));
+    const std::uint64_t index = frame % (s * s);
+    // Row index/s, column shifted by the row: (0,0), (1,1), (0,1), (1,0) at s = 2.
+    const std::uint64_t row = index % s, column = (index / s + index % s) % s;
+    sampling.jitter = glm::ivec2(static_cast<int>(row), static_cast<int>(column));
+    const float sideConePeriod = 2.0f * 3.14159265358979f / 5.0f;  // the five side cones repeat every 72°
+    sampling.rotation = sideConePeriod * static_cast<float>(frame % LIT_DIFFUSE_ROTATION_STEPS) /
+                        static_cast<float>(LIT_DIFFUSE_ROTATION_STEPS);
+    return sampling;
+}
+
+void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettings& settings,
+                                   const Sampling& sampling) {
+    const int scale = indirectScale(settings);
+    const int w = (settings.width + scale - 1) / scale, h = (settings.height + scale - 1) / scale;
+    if (w != lowWidth_ || h != lowHeight_) {
+        lowWidth_ = w;
+        lowHeight_ = h;
+        lowPacked_ = gl::Texture("indirect terms (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
+        lowGuide_ = gl::Texture("indirect guide (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
+        lowPacked_.setFilter(GL_NEAREST, GL_NEAREST);
+        lowGuide_.setFilter(GL_NEAREST, GL_NEAREST);
+        lowTarget_ = gl::Framebuffer("indirect (reduced)");
+        lowTarget_.attach(GL_COLOR_ATTACHMENT0, lowPacked_);
+        lowTarget_.attach(GL_COLOR_ATTACHMENT1, lowGuide_);
+        lowTarget_.setDrawBuffers(2);
+        lowTarget_.checkComplete("indirect (reduced)");
+    }
+    const Work work = workFor(settings);
+    const GLuint zero[4] = {0, 0, 0, 0};
+    if ((!work.diffuse && !work.specular) || !volume.radiance()) {
+        glClearNamedFramebufferuiv(lowTarget_.id(), GL_COLOR, 0, zero);
+        glClearNamedFramebufferuiv(lowTarget_.id(), GL_COLOR, 1, zero);
+        return;
+    }
+    bindAlbedoTable();
+    lowTarget_.bind();
+    glViewport(0, 0, w, h);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
+    reducedProgram_.use();
+    const GLuint id = reducedProgram_.id();
+    glProgramUniform2i(id, reducedProgram_.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
+    glProgramUniform1f(id, reducedProgram_.location("uSmoothRoughness"), settings.specularFullResRoughness);
+    glProgramUniform1i(id, reducedProgram_.location("uScale"), scale);
+    glProgramUniform2i(id, reducedProgram_.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
+    glProgramUniform1f(id, reducedProgram_.location("uRotation"), sampling.rotation);
     triangle_.draw();
 }
 

@@ -3,11 +3,19 @@
 // pixel, by marching cones through the mipmapped radiance volume (cone_trace.frag.glsl,
 // shaders/include/cone.glsl; docs/GI.md explains the method and its parameters).
 //
-// Writes terms.indirectFramebuffer(): attachment 0 = L_ID, attachment 1 = L_IS (RGBA16F, linear
-// radiance W/(sr·m²)), both already scaled by the indirect intensity and the material's ambient
-// occlusion; background pixels get 0.
+// Two ways (docs/GI.md, "Reduced resolution and temporal accumulation"):
+//  - execute: every pixel at full resolution (RenderSettings::indirectScale 1 without temporal
+//    accumulation: the reference path). Writes terms.indirectFramebuffer(): attachment 0 = L_ID,
+//    attachment 1 = L_IS (RGBA16F, linear radiance W/(sr·m²)), both already scaled by the
+//    indirect intensity and the material's ambient occlusion; background pixels get 0.
+//  - executeReduced: one pixel per indirectScale² block (indirect_trace.frag.glsl), demodulated,
+//    into this pass's own low-resolution targets; IndirectResolvePass turns them into the terms.
 
 #include "passes/Pass.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
 
 namespace lit {
 
@@ -28,6 +36,28 @@ public:
     // are neither shown (settings.view) nor switched on are written as 0 without tracing them.
     void execute(const LightingTerms& terms, const VoxelVolume& volume, const RenderSettings& settings);
 
+    // Which pixel of each block is traced and how the cone sets are turned this frame (temporal
+    // accumulation varies both; a still without it uses the defaults).
+    struct Sampling {
+        glm::ivec2 jitter{0};   // pixel inside the indirectScale² block (0..scale−1 each)
+        float rotation = 0.0f;  // rad, turn of the cone sets about the normal
+    };
+    // The sampling of temporal frame `frame` at indirect scale `scale`: the jitter runs through
+    // the block's pixels (a Latin square, so successive frames move diagonally) and the rotation
+    // through LIT_DIFFUSE_ROTATION_STEPS steps of the side cones' 72° period.
+    static Sampling samplingFor(std::uint64_t frame, int scale);
+    // Whether a frame with `settings` takes the reduced path (executeReduced + IndirectResolvePass).
+    static bool reducedPath(const RenderSettings& settings);
+    // RenderSettings::indirectScale made valid: 1, 2 or 4.
+    static int indirectScale(const RenderSettings& settings);
+
+    // The low-resolution trace (same bindings as execute): ⌈width/s⌉ × ⌈height/s⌉ texels of
+    // demodulated L_ID and rough L_IS and of the traced pixels' positions and normals, packed
+    // (indirect.glsl), read by IndirectResolvePass.
+    void executeReduced(const VoxelVolume& volume, const RenderSettings& settings, const Sampling& sampling);
+    const gl::Texture& lowPacked() const { return lowPacked_; }  // RGBA32UI
+    const gl::Texture& lowGuide() const { return lowGuide_; }    // RGBA32UI
+
     // Which of the two terms a frame with `settings` needs traced.
     struct Work {
         bool diffuse = false;   // L_ID
@@ -39,7 +69,9 @@ public:
     // E = F0·r + g. Exposed for tests.
     const gl::Texture& specularAlbedoTable() const { return albedoTable_; }
 
-    std::vector<gl::Program*> programs() override { return {&program_, &albedoProgram_}; }
+    std::vector<gl::Program*> programs() override { return {&program_, &albedoProgram_, &reducedProgram_}; }
+    // Binds the albedo table to LIT_TEX_SPECULAR_ALBEDO (rebuilt first after a shader reload).
+    void bindAlbedoTable();
 
 private:
     // (Re)integrates the table with albedoProgram_; called at construction and after a reload.
@@ -47,6 +79,10 @@ private:
 
     gl::Program program_;
     gl::Program albedoProgram_;
+    gl::Program reducedProgram_;
+    gl::Texture lowPacked_, lowGuide_;  // RGBA32UI, ⌈width/s⌉ × ⌈height/s⌉
+    gl::Framebuffer lowTarget_;
+    int lowWidth_ = 0, lowHeight_ = 0;
     GLuint albedoTableBuiltWith_ = 0;  // albedoProgram_ id the table was built with (hot reload)
     gl::Texture albedoTable_;
     gl::Framebuffer albedoTarget_;

@@ -11,7 +11,7 @@ namespace lit {
 InjectPass::InjectPass(const std::filesystem::path& shaderRoot)
     : program_(shaderRoot, "inject", {{GL_COMPUTE_SHADER, "inject.comp.glsl"}}) {}
 
-void InjectPass::execute(const VoxelVolume& volume) {
+void InjectPass::execute(const VoxelVolume& volume, bool fromList) {
     const int n = volume.resolution();
     if (n <= 0) return;
     program_.use();
@@ -21,8 +21,20 @@ void InjectPass::execute(const VoxelVolume& volume) {
     glBindImageTexture(LIT_IMG_VOXEL_EMISSION, volume.emission().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                        volume.radianceFormat());
-    const auto groups = static_cast<GLuint>((n + LIT_INJECT_GROUP_SIZE - 1) / LIT_INJECT_GROUP_SIZE);
-    glDispatchCompute(groups, groups, groups);
+    fromList = fromList && volume.occupiedList();
+    glProgramUniform1i(program_.id(), program_.location("uFromList"), fromList ? 1 : 0);
+    glProgramUniform1ui(program_.id(), program_.location("uOccupiedCapacity"), volume.occupiedCapacity());
+    if (fromList) {
+        // The voxelization wrote the list and its dispatch size; read both from the buffer.
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, volume.occupiedList().id());
+        glDispatchComputeIndirect(4);  // the DispatchIndirectCommand after the count
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    } else {
+        const auto groups = static_cast<GLuint>((n + LIT_INJECT_GROUP_SIZE - 1) / LIT_INJECT_GROUP_SIZE);
+        glDispatchCompute(groups, groups, groups);
+    }
     // The mipmap pass reads level 0 as an image; cone tracing and debug views sample it.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }

@@ -25,7 +25,10 @@ public:
     // Binds itself: the voxel UBO (volume.uniforms(), which must be up to date) and the image
     // units LIT_IMG_VOXEL_ALBEDO/NORMAL/EMISSION (read) and LIT_IMG_VOXEL_RADIANCE (write).
     // Ends with an image-access + texture-fetch barrier; the mip levels are left to the mipmap pass.
-    void execute(const VoxelVolume& volume);
+    // `fromList`: only the voxels of volume.occupiedList() (complete, not overflowed), with an
+    // indirect dispatch; empty voxels are then not written (VoxelizePass zeroed them). Otherwise
+    // every voxel of the grid, empty ones written as 0.
+    void execute(const VoxelVolume& volume, bool fromList = true);
 
     std::vector<gl::Program*> programs() override { return {&program_}; }
 

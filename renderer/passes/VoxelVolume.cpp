@@ -94,6 +94,10 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     for (int level = 0; level < mipCount_; ++level)
         glClearTexImage(radiance_.id(), level, GL_RGBA, GL_FLOAT, transparent);
     clearMaterials();
+    // A surface crosses about N² voxels per N² of area; 16·N² holds the Cornell box (≈ 6·N²) and
+    // Sponza at 256³ with room. An overflow is detected (readOccupiedCount) and grows the list.
+    growOccupiedList(static_cast<std::uint32_t>(std::min<std::size_t>(static_cast<std::size_t>(n) * n * n,
+                                                                      static_cast<std::size_t>(16) * n * n)));
     log.info("voxel volume " + std::to_string(n) + "³ (" + (rgba8_ ? "RGBA8" : "RGBA16F") + " radiance): " +
              memoryReport());
     return true;
@@ -131,6 +135,47 @@ void VoxelVolume::clearMaterials() const {
     const GLuint zero = 0;
     for (const gl::Texture* t : {&albedo_, &normal_, &emission_})
         if (*t) glClearTexImage(t->id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+void VoxelVolume::growOccupiedList(std::uint32_t count) {
+    // Indirect dispatch: at most 65535 groups along x.
+    const std::uint32_t limit = 65535u * LIT_INJECT_LIST_GROUP_SIZE;
+    const std::uint32_t capacity = std::min(count, limit);
+    if (capacity <= occupiedCapacity_ && occupied_) return;
+    occupiedCapacity_ = capacity;
+    occupied_ = gl::Buffer("occupied voxels", kOccupiedHeaderBytes + static_cast<std::size_t>(capacity) * 4, nullptr,
+                           GL_DYNAMIC_STORAGE_BIT);
+    resetOccupiedList();
+}
+
+void VoxelVolume::resetOccupiedList() const {
+    if (!occupied_) return;
+    const std::uint32_t header[4] = {0u, 0u, 1u, 1u};
+    glNamedBufferSubData(occupied_.id(), 0, sizeof header, header);
+}
+
+std::uint32_t VoxelVolume::readOccupiedCount() const {
+    if (!occupied_) return 0;
+    std::uint32_t count = 0;
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(occupied_.id(), 0, sizeof count, &count);
+    return count;
+}
+
+std::vector<glm::ivec3> VoxelVolume::readOccupiedList() const {
+    const std::uint32_t count = std::min(readOccupiedCount(), occupiedCapacity_);
+    std::vector<std::uint32_t> packed(count);
+    if (count) glGetNamedBufferSubData(occupied_.id(), kOccupiedHeaderBytes, count * 4, packed.data());
+    std::vector<glm::ivec3> voxels;
+    voxels.reserve(count);
+    for (std::uint32_t p : packed)
+        voxels.emplace_back(static_cast<int>(p & 1023u), static_cast<int>((p >> 10) & 1023u), static_cast<int>(p >> 20));
+    return voxels;
+}
+
+void VoxelVolume::clearRadianceLevel0() const {
+    const float transparent[4] = {0, 0, 0, 0};
+    if (radiance_) glClearTexImage(radiance_.id(), 0, GL_RGBA, GL_FLOAT, transparent);
 }
 
 std::size_t VoxelVolume::materialBytes() const {

@@ -16,7 +16,9 @@
 
 #include <shared.h>
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace lit {
 
@@ -38,6 +40,25 @@ public:
 
     // Zeroes the material volumes (before voxelization).
     void clearMaterials() const;
+
+    // The occupied-voxel list (SSBO at LIT_SSBO_OCCUPIED_VOXELS, std430): uint count, a
+    // DispatchIndirectCommand (groups of LIT_INJECT_LIST_GROUP_SIZE over the list), then up to
+    // occupiedCapacity() packed coordinates x | y << 10 | z << 20. VoxelizePass appends every voxel
+    // it occupies; InjectPass runs over the list with glDispatchComputeIndirect.
+    const gl::Buffer& occupiedList() const { return occupied_; }
+    std::uint32_t occupiedCapacity() const { return occupiedCapacity_; }
+    static constexpr std::size_t kOccupiedHeaderBytes = 16;  // count + dispatch x, y, z
+    // Empties the list (before voxelization): count 0, dispatch 0 × 1 × 1.
+    void resetOccupiedList() const;
+    // Voxels appended since the reset; more than occupiedCapacity() when the list overflowed (the
+    // excess was not stored). Reads one uint back: waits for the voxelization.
+    std::uint32_t readOccupiedCount() const;
+    // The stored coordinates (tests): min(count, capacity) entries in append order.
+    std::vector<glm::ivec3> readOccupiedList() const;
+    // Grows the list to hold at least `count` voxels (after an overflow; the next voxelization fills it).
+    void growOccupiedList(std::uint32_t count);
+    // Zeroes level 0 of the radiance volume: injection over the list writes occupied voxels only.
+    void clearRadianceLevel0() const;
 
     int resolution() const { return resolution_; }
     int mipCount() const { return mipCount_; }
@@ -70,6 +91,8 @@ private:
     float side_ = 1.0f;
     gl::Texture albedo_, normal_, emission_, radiance_;
     gl::Buffer uniforms_;
+    gl::Buffer occupied_;
+    std::uint32_t occupiedCapacity_ = 0;
 };
 
 // Largest N the volumes may use given `availableBytes` of GPU memory (0 = unknown → 512).

@@ -20,6 +20,8 @@ VoxelizePass::VoxelizePass(const std::filesystem::path& shaderRoot)
 void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume,
                            DrawCounters& counters) {
     volume.clearMaterials();
+    volume.resetOccupiedList();
+    volume.clearRadianceLevel0();  // injection over the list writes occupied voxels only
     const int n = volume.resolution();
     if (n <= 0 || gpuScene.empty()) {
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -41,6 +43,8 @@ void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVo
     program_.use();
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
+    volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
+    glProgramUniform1ui(program_.id(), program_.location("uOccupiedCapacity"), volume.occupiedCapacity());
     // Image atomics need an integer format; the volumes are 3D, so bind all slices (layered).
     glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
@@ -50,8 +54,10 @@ void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVo
 
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    // Injection reads the volumes as images; debug views and tests read them as textures.
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    // Injection reads the volumes as images and the list as a buffer and dispatch command; debug
+    // views and tests read the volumes as textures.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                    GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 std::vector<std::uint32_t> readMaterialVoxels(const gl::Texture& materialVolume) {

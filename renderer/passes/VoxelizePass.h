@@ -26,7 +26,9 @@ class VoxelizePass : public Pass {
 public:
     explicit VoxelizePass(const std::filesystem::path& shaderRoot);
 
-    // Clears the material volumes, then voxelizes every item of `gpuScene` into them. Needs
+    // Clears the material volumes, level 0 of the radiance volume and the occupied-voxel list,
+    // then voxelizes every item of `gpuScene` into them, appending each voxel it occupies to
+    // volume.occupiedList() (the first fragment to reach a voxel appends it). Needs
     // `volume` allocated (ensure), placed (fitTo) and its uniforms uploaded (updateUniforms);
     // binds what it uses itself: the voxel UBO, the material SSBO, the three material images.
     // Changes GL state: viewport (N×N), draw framebuffer (0 afterwards), depth test and face

@@ -67,6 +67,13 @@ using mat4 = glm::mat4;
 #define LIT_TEX_GBUFFER_ID 23
 #define LIT_OUTLINE_RADIUS 2           // selection outline width (pixels outside the silhouette)
 #define LIT_HIDDEN_LINE_OPACITY 0.25   // opacity multiplier of depth-tested lines where the scene hides them
+// Reduced-resolution indirect lighting (ConeTracePass → IndirectResolvePass, docs/GI.md).
+#define LIT_TEX_INDIRECT_LOW_PACKED 24    // RGBA32UI: irradiance/π and ⟨L⟩ of each block's traced pixel (indirect.glsl)
+#define LIT_TEX_INDIRECT_LOW_GUIDE 25     // RGBA32UI: that pixel's world position and normal
+#define LIT_TEX_HISTORY_DIFFUSE 26        // accumulated irradiance/π, a = frames accumulated
+#define LIT_TEX_HISTORY_SPECULAR 27       // accumulated ⟨L⟩, a = frames accumulated
+#define LIT_TEX_HISTORY_GUIDE 28          // last frame's world normal (xyz) and clip w (m; 0 = background)
+#define LIT_DIFFUSE_ROTATION_STEPS 8      // temporal: the side cones turn by 72°/8 per frame (8-frame cycle)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
@@ -83,6 +90,9 @@ using mat4 = glm::mat4;
 // ---- Voxelization and radiance injection (VoxelizePass, InjectPass) ------------------------
 #define LIT_VOXEL_EMISSION_RANGE 16.0  // radiance (W/(sr·m²)) stored as 1.0 in the emission volume; = VoxelVolume::kEmissionRange
 #define LIT_INJECT_GROUP_SIZE 8        // inject.comp.glsl work group: 8×8×8 voxels
+// Occupied-voxel list (VoxelizePass appends, InjectPass runs over it with an indirect dispatch).
+#define LIT_SSBO_OCCUPIED_VOXELS 2     // OccupiedVoxels: count, dispatch size, packed coordinates
+#define LIT_INJECT_LIST_GROUP_SIZE 512 // inject.comp.glsl work group over the list: its 8³ group as 512 entries (65535 groups = 33.5 M voxels)
 
 // ---- Cone choice (cone.glsl), mirrored by tracedCones() in renderer/scene/OverlayShapes.cpp ------
 // Written once here so the cone-direction debug view draws the cones the shader traces.

@@ -48,3 +48,14 @@ uint averageRgbAdd(uint current, vec3 value) {
             avgDesired_ = averageRgbAdd(avgCurrent_, avgValue_);                                \
         }                                                                                       \
     }
+
+// The occupied-voxel list (VoxelVolume::occupiedList): VoxelizePass appends, InjectPass reads.
+// `dispatchX` is the indirect dispatch's group count over the list (DispatchIndirectCommand).
+#define LIT_OCCUPIED_VOXELS_BLOCK(qualifiers)                                      \
+    layout(std430, binding = LIT_SSBO_OCCUPIED_VOXELS) qualifiers buffer OccupiedVoxels { \
+        uint occupiedCount;                                                        \
+        uint dispatchX, dispatchY, dispatchZ;                                      \
+        uint occupiedVoxels[];                                                     \
+    }
+uint packVoxelCoord(ivec3 v) { return uint(v.x) | (uint(v.y) << 10) | (uint(v.z) << 20); }
+ivec3 unpackVoxelCoord(uint p) { return ivec3(int(p & 1023u), int((p >> 10) & 1023u), int(p >> 20)); }

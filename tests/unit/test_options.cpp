@@ -287,4 +287,18 @@ TEST(Options, SceneWithoutCamerasUsesTheFramingCamera) {
     }
 }
 
+TEST(Options, FastGiFlags) {
+    const Options o = parseOptions({"x.gltf", "--bench", "3", "--indirect-scale", "4", "--temporal", "on",
+                                    "--bench-gi-updates", "2"});
+    EXPECT_EQ(o.giUpdateRounds, 2);
+    const lit::RenderSettings s = lit::cli::applyOptions(o, lit::RenderSettings{});
+    EXPECT_EQ(s.indirectScale, 4);
+    EXPECT_TRUE(s.temporalAccumulation);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--indirect-scale", "3"}),
+              "--indirect-scale expects 1, 2 or 4, got '3'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--temporal", "yes"}), "--temporal expects on or off, got 'yes'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--bench-gi-updates", "2"}),
+              "--bench-gi-updates needs --bench (the steady frames come first)");
+}
+
 }  // namespace

@@ -136,6 +136,19 @@ Options parseOptions(const std::vector<std::string>& args) {
                 options.culling = false;
             else
                 throw UsageError("--culling expects on or off, got '" + text + "'");
+        } else if (flag == "--indirect-scale") {
+            const std::string text = value("1, 2 or 4");
+            const auto n = parseInt(text, 1, 4);
+            if (!n || *n == 3) throw UsageError("--indirect-scale expects 1, 2 or 4, got '" + text + "'");
+            options.indirectScale = *n;
+        } else if (flag == "--temporal") {
+            const std::string text = value("on or off");
+            if (text == "on")
+                options.temporal = true;
+            else if (text == "off")
+                options.temporal = false;
+            else
+                throw UsageError("--temporal expects on or off, got '" + text + "'");
         } else if (flag == "--voxels") {
             const std::string text = value("64, 128, 256 or 512");
             const auto n = parseInt(text, 64, 512);
@@ -172,6 +185,11 @@ Options parseOptions(const std::vector<std::string>& args) {
         } else if (flag == "--frames-out") {
             options.framesOut = value("DIR");
             if (options.framesOut.empty()) throw UsageError("--frames-out expects a folder, got ''");
+        } else if (flag == "--bench-gi-updates") {
+            const std::string text = value("a round count");
+            const auto n = parseInt(text, 1, 1000);
+            if (!n) throw UsageError("--bench-gi-updates expects a round count from 1 to 1000, got '" + text + "'");
+            options.giUpdateRounds = *n;
         } else if (flag == "--bench-path") {
             noValue();
             options.benchPath = true;
@@ -234,6 +252,8 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw UsageError("--json needs --bench or --bench-path");
     if (options.frames && options.benchFrames > 0)
         throw UsageError("--frames and --bench both set the number of frames; give one of them");
+    if (options.giUpdateRounds > 0 && options.benchFrames == 0)
+        throw UsageError("--bench-gi-updates needs --bench (the steady frames come first)");
     return options;
 }
 
@@ -248,6 +268,8 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.gi) base.gi = *options.gi;
     if (options.voxels) base.voxelResolution = *options.voxels;
     if (options.culling) base.frustumCulling = *options.culling;
+    if (options.indirectScale) base.indirectScale = *options.indirectScale;
+    if (options.temporal) base.temporalAccumulation = *options.temporal;
     return base;
 }
 
@@ -274,7 +296,8 @@ int resolveCamera(const Options& options, const Scene& scene) {
 std::string shortUsage() {
     return "usage: lit-render SCENE.gltf --out image.png [--hdr image.hdr] [--size WxH] [--camera NAME|INDEX]\n"
            "                  [--exposure X] [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
-           "                  [--culling on|off] [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
+           "                  [--culling on|off] [--indirect-scale 1|2|4] [--temporal on|off]\n"
+           "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
            "       lit-render SCENE.gltf --path FILE.json|ANIMATION [--fps N] [--frames-out DIR] [--bench-path]\n"
            "       lit-render SCENE.gltf --reference --out image.png [--spp N] [--bounces N|all] [--seed S] [...]\n";
 }
@@ -301,7 +324,16 @@ std::string usageText() {
            "  --frames N           frames rendered before the image is read (default 1)\n"
            "  --culling on|off     frustum culling of the camera and shadow views against a BVH (default " +
            std::string(defaults.frustumCulling ? "on" : "off") + ")\n"
+           "  --indirect-scale S   trace indirect light for one pixel in S×S (1, 2 or 4; default " +
+           std::to_string(defaults.indirectScale) + ") and upsample\n"
+           "                       edge-aware; 1 traces every pixel\n"
+           "  --temporal on|off    accumulate indirect light over frames (default " +
+           std::string(defaults.temporalAccumulation ? "on" : "off") + "); a still then renders\n"
+           "                       temporalMaxFrames (" + std::to_string(defaults.temporalMaxFrames) +
+           ") frames unless --frames says otherwise, so it converges\n"
            "  --bench FRAMES       render FRAMES frames and print per-pass GPU times and the frame rate\n"
+           "  --bench-gi-updates N after the frames, time N interleaved rounds of a light edit (re-inject +\n"
+           "                       mipmaps) against a re-voxelization (voxelize + inject + mipmaps)\n"
            "  --json FILE          with --bench or --bench-path: also write the results as JSON\n"
            "  --settings FILE      RenderSettings JSON (as saved by the editor); flags override it\n"
            "  --path FILE|NAME     fly a camera path: a .json path file, or the name of a camera animation\n"
@@ -310,7 +342,8 @@ std::string usageText() {
            std::to_string(static_cast<int>(kDefaultPathFps)) + ")\n"
            "  --frames-out DIR     write every frame of the path to DIR/frame_00000.png, ... (creates DIR)\n"
            "  --bench-path         time every frame of the path (after one untimed warm-up frame) and\n"
-           "                       print the lowest and highest FPS and the mean frame time\n"
+           "                       print the lowest and highest FPS and the mean frame time, and a flicker\n"
+           "                       figure: mean |frame-to-frame change| of pixels whose surface did not move\n"
            "  --reference          path-trace the scene on the CPU (Embree): Lit's ground truth, same scene,\n"
            "                       camera, BRDF and light units; writes the same --out/--hdr/--view images.\n"
            "                       Ctrl+C writes the image so far (see docs/REFERENCE.md)\n"

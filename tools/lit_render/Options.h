@@ -46,6 +46,8 @@ struct Options {
     std::optional<bool> gi;
     std::optional<int> voxels;         // voxels per side
     std::optional<bool> culling;       // --culling on|off: frustum culling of the G-buffer and shadow views
+    std::optional<int> indirectScale;  // --indirect-scale 1|2|4
+    std::optional<bool> temporal;      // --temporal on|off
     std::optional<int> frames;         // frames rendered before the image is read (GI settles)
     int benchFrames = 0;               // 0 = no benchmark
     std::filesystem::path benchJson;   // --json: benchmark results as JSON
@@ -54,7 +56,8 @@ struct Options {
     std::optional<std::string> path;
     std::optional<double> fps;         // --fps: frames per second along the path
     std::filesystem::path framesOut;   // --frames-out DIR: every frame as DIR/frame_00000.png, ...
-    bool benchPath = false;            // --bench-path: per-frame times along the path
+    bool benchPath = false;            // --bench-path: per-frame times along the path (and a flicker figure)
+    int giUpdateRounds = 0;            // --bench-gi-updates N: light edit vs re-voxelize, N interleaved rounds
     // --reference: path-trace the scene on the CPU (renderer/reference/) instead of rasterizing.
     bool reference = false;
     std::optional<int> spp;            // --spp: samples per pixel (reference only)

@@ -28,6 +28,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
+#include <optional>
+#include <glm/glm.hpp>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -248,6 +251,77 @@ lit::CameraPath loadPath(const Options& options) {
     }
 }
 
+// Temporal stability along a camera path (--bench-path): the mean absolute luminance change from
+// one frame to the next of pixels whose surface did not move, relative to the frame's mean
+// luminance. Each pixel's world point (from its depth) is projected into the previous frame; it
+// counts when the previous frame saw the same point there (within 1 % of its distance, at all
+// four bilinear taps, so silhouettes are left out), and is compared with the previous frame's
+// luminance interpolated at that spot.
+class FlickerMeter {
+public:
+    void add(const lit::CameraView& camera, int width, int height, std::vector<float> rgb, std::vector<float> depth) {
+        Frame current{camera.projection * camera.view, camera.position, std::move(depth), {}};
+        current.luminance.resize(current.depth.size());
+        for (std::size_t i = 0; i < current.luminance.size(); ++i)
+            current.luminance[i] = 0.2126f * rgb[3 * i] + 0.7152f * rgb[3 * i + 1] + 0.0722f * rgb[3 * i + 2];
+        if (previous_) measure(*previous_, current, width, height);
+        previous_ = std::move(current);
+    }
+    // Mean over the frame pairs measured, and the largest pair; 0 before two frames.
+    double mean() const { return pairs_.empty() ? 0.0 : std::accumulate(pairs_.begin(), pairs_.end(), 0.0) / pairs_.size(); }
+    double max() const { return pairs_.empty() ? 0.0 : *std::max_element(pairs_.begin(), pairs_.end()); }
+    std::size_t pairs() const { return pairs_.size(); }
+
+private:
+    struct Frame {
+        glm::mat4 viewProjection;
+        glm::vec3 position;
+        std::vector<float> depth, luminance;
+    };
+    static glm::vec3 world(const Frame& f, const glm::mat4& inverse, int width, int height, int x, int y) {
+        const float d = f.depth[static_cast<std::size_t>(y) * width + x];
+        const glm::vec4 w = inverse * glm::vec4((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f,
+                                                d * 2.0f - 1.0f, 1.0f);
+        return glm::vec3(w) / w.w;
+    }
+    void measure(const Frame& prev, const Frame& cur, int width, int height) {
+        const glm::mat4 curInverse = glm::inverse(cur.viewProjection), prevInverse = glm::inverse(prev.viewProjection);
+        double change = 0.0, total = 0.0;
+        std::size_t counted = 0;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y) * width + x;
+                if (cur.depth[i] >= 1.0f) continue;
+                const glm::vec3 p = world(cur, curInverse, width, height, x, y);
+                const glm::vec4 clip = prev.viewProjection * glm::vec4(p, 1.0f);
+                if (clip.w <= 0.0f) continue;
+                const float px = (clip.x / clip.w * 0.5f + 0.5f) * width - 0.5f;
+                const float py = (clip.y / clip.w * 0.5f + 0.5f) * height - 0.5f;
+                const int x0 = static_cast<int>(std::floor(px)), y0 = static_cast<int>(std::floor(py));
+                if (x0 < 0 || y0 < 0 || x0 + 1 >= width || y0 + 1 >= height) continue;
+                const float tolerance = 0.01f * glm::length(p - prev.position);
+                bool same = true;
+                float value = 0.0f;
+                for (int t = 0; t < 4 && same; ++t) {
+                    const int tx = x0 + (t & 1), ty = y0 + (t >> 1);
+                    if (prev.depth[static_cast<std::size_t>(ty) * width + tx] >= 1.0f) { same = false; break; }
+                    same = glm::length(world(prev, prevInverse, width, height, tx, ty) - p) <=
+                           tolerance + 2.0f * glm::length(p - prev.position) / height;  // + a pixel's footprint
+                    const float wx = (t & 1) ? px - x0 : 1.0f - (px - x0), wy = (t >> 1) ? py - y0 : 1.0f - (py - y0);
+                    value += wx * wy * prev.luminance[static_cast<std::size_t>(ty) * width + tx];
+                }
+                if (!same) continue;
+                change += std::abs(static_cast<double>(cur.luminance[i]) - value);
+                ++counted;
+            }
+        for (float l : cur.luminance) total += l;
+        const double mean = total / static_cast<double>(cur.luminance.size());
+        if (counted > 0 && mean > 0.0) pairs_.push_back(change / static_cast<double>(counted) / mean);
+    }
+    std::optional<Frame> previous_;
+    std::vector<double> pairs_;
+};
+
 // --path: renders every frame of the path (to PNGs with --frames-out) and times them (--bench-path).
 int runPath(const Options& options, const lit::CameraPath& path, const lit::Scene& scene, lit::Renderer& renderer,
             const lit::RenderSettings& settings, const lit::HeadlessContext& context) {
@@ -281,13 +355,17 @@ int runPath(const Options& options, const lit::CameraPath& path, const lit::Scen
     }
     BenchResult bench;
     std::map<std::string, std::size_t> passIndex;
+    FlickerMeter flicker;
     Progress progress(times.size());
     std::vector<std::uint8_t> rgba;
     for (std::size_t i = 0; i < times.size(); ++i) {
         const lit::CameraView view = viewAt(times[i]);
         const Clock::time_point frameStart = Clock::now();
         renderer.render(scene, view, settings);
-        if (options.benchPath) recordBenchFrame(bench, passIndex, renderer, frameStart);
+        if (options.benchPath) {
+            recordBenchFrame(bench, passIndex, renderer, frameStart);  // timed before the read-backs below
+            flicker.add(view, settings.width, settings.height, renderer.readHdrRgb(), renderer.readDepth());
+        }
         if (!options.framesOut.empty()) {
             char name[32];
             std::snprintf(name, sizeof name, "frame_%05zu.png", i);
@@ -304,8 +382,13 @@ int runPath(const Options& options, const lit::CameraPath& path, const lit::Scen
         std::printf("camera path %s: %zu frames at %g fps over %.3f s\n", options.path->c_str(), times.size(),
                     options.pathFps(), static_cast<double>(path.duration()));
         printBench(bench, settings, renderer.stats());
+        std::printf("flicker: %.3f %% mean (%.3f %% worst of %zu frame pairs): mean |change| of pixels whose surface did "
+                    "not move, relative to the mean luminance\n",
+                    100.0 * flicker.mean(), 100.0 * flicker.max(), flicker.pairs());
         if (!options.benchJson.empty()) {
             nlohmann::ordered_json json = benchJson(bench, options, settings, context.description(), renderer.stats());
+            json["flickerPercent"] = 100.0 * flicker.mean();
+            json["flickerWorstPercent"] = 100.0 * flicker.max();
             json["path"] = *options.path;
             json["pathFps"] = options.pathFps();
             json["pathSeconds"] = path.duration();
@@ -409,6 +492,42 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
     return 0;
 }
 
+// --bench-gi-updates: a light edit (re-inject + mipmaps; the voxels stay) against a full
+// re-voxelization (voxelize + inject + mipmaps), interleaved, GPU times from the profiler. Both
+// also re-render the shadow maps (the light or geometry changed); that is printed separately.
+void benchGiUpdates(int rounds, lit::Scene& scene, const lit::CameraView& camera, lit::Renderer& renderer,
+                    const lit::RenderSettings& settings) {
+    const auto passMs = [&](const char* name) {
+        for (const lit::PassTiming& t : renderer.profiler().timings())
+            if (t.name == name && t.ran) return t.gpuMs;
+        return 0.0;
+    };
+    std::printf("GI updates at %d³, %u occupied voxels (%.2f %% of the grid), %d rounds:\n", settings.voxelResolution,
+                renderer.stats().occupiedVoxels,
+                100.0 * renderer.stats().occupiedVoxels / std::pow(static_cast<double>(settings.voxelResolution), 3.0),
+                rounds);
+    std::vector<double> ratios;
+    for (int round = 1; round <= rounds; ++round) {
+        // A: light edit. The first light's intensity changes by a part in 10⁴ and back next round.
+        if (!scene.lights.empty()) scene.lights[0].intensity *= (round % 2) ? 1.0001f : 1.0f / 1.0001f;
+        ++scene.lightRevision;
+        renderer.render(scene, camera, settings);
+        renderer.profiler().flush();
+        const double edit = passMs("inject") + passMs("mipmap"), editShadow = passMs("shadow");
+        // B: geometry edit without moving anything: the volume is voxelized again.
+        ++scene.geometryRevision;
+        renderer.render(scene, camera, settings);
+        renderer.profiler().flush();
+        const double revoxelize = passMs("voxelize") + passMs("inject") + passMs("mipmap"), fullShadow = passMs("shadow");
+        ratios.push_back(edit / revoxelize);
+        std::printf("gi-update round %d: light edit %.1f ms (inject + mipmap) | re-voxelize %.1f ms (voxelize + inject + "
+                    "mipmap) | ratio %.3f | shadow maps %.1f / %.1f ms\n",
+                    round, edit, revoxelize, edit / revoxelize, editShadow, fullShadow);
+    }
+    std::sort(ratios.begin(), ratios.end());
+    std::printf("gi-update median ratio (light edit / re-voxelize): %.3f\n", ratios[ratios.size() / 2]);
+}
+
 int run(const Options& options) {
     lit::Log log;
 
@@ -453,13 +572,19 @@ int run(const Options& options) {
     const Clock::time_point renderStart = Clock::now();
     BenchResult bench;
     std::map<std::string, std::size_t> passIndex;
-    for (int frame = 0; frame < options.frameCount(); ++frame) {
+    // With temporal accumulation a still renders until the history is full, so it shows the
+    // converged image (docs/GI.md); --frames or --bench choose the count themselves.
+    const int frames = settings.temporalAccumulation && !options.frames && options.benchFrames == 0
+                           ? std::max(settings.temporalMaxFrames, 1)
+                           : options.frameCount();
+    for (int frame = 0; frame < frames; ++frame) {
         const Clock::time_point frameStart = Clock::now();
         renderer.render(scene, camera, settings);
         if (options.benchFrames > 0) recordBenchFrame(bench, passIndex, renderer, frameStart);
     }
     glFinish();
     if (options.benchFrames > 0 && settings.gi) bench.mipmaps = renderer.benchmarkMipmaps(7);
+    if (options.giUpdateRounds > 0 && settings.gi) benchGiUpdates(options.giUpdateRounds, scene, camera, renderer, settings);
 
     if (options.benchFrames > 0) {
         printBench(bench, settings, renderer.stats());

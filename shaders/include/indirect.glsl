@@ -1,0 +1,95 @@
+// Reduced-resolution and temporally accumulated indirect lighting (docs/GI.md, "Reduced
+// resolution and temporal accumulation"): what the low-resolution trace (indirect_trace.frag.glsl)
+// and the resolve (indirect_resolve.frag.glsl) share. Needs frame.glsl, gbuffer.glsl, cone.glsl.
+//
+// Both terms are traced *demodulated*: L_ID / (albedo_d · intensity · AO) = irradiance/π and
+// L_IS / (E · intensity · AO) = ⟨L⟩, the lobe-averaged radiance. These vary slowly across a
+// surface, so a few traced pixels can stand for their neighbours, and the resolve multiplies the
+// per-pixel material back in: textures and albedo edges stay at full resolution.
+//
+// The cone sets can be turned about the normal by `rotation` (radians) each frame; the five side
+// cones of the diffuse set repeat every 72°, so LIT_DIFFUSE_ROTATION_STEPS steps of 72°/steps
+// make the accumulated result see that many times more directions. With rotation 0 these give
+// exactly cone.glsl's traceDiffuse / traceSpecular (÷ E).
+
+uniform int uScale;       // indirect scale s: one traced pixel per s × s block
+uniform ivec2 uJitter;    // which pixel of its block (0..s−1 each) a low-resolution texel traces
+uniform float uRotation;  // rad: this frame's turn of the cone sets about the normal
+
+// The full-resolution pixel that low-resolution texel `low` traces.
+ivec2 tracedPixel(ivec2 low) {
+    return min(low * uScale + uJitter, ivec2(frame.viewport.xy) - 1);
+}
+
+// The low-resolution targets, one texel per traced pixel, packed so the resolve reads a
+// neighbour with two fetches (on llvmpipe the resolve's cost is its texel fetches):
+//   packed (RGBA32UI): half2(D.rg), half2(D.b, 1 = D traced), half2(S.rg), half2(S.b, 1 + roughness = S traced)
+//   guide  (RGBA32UI): the traced pixel's world position (float bits, m), octahedral normal (snorm16 ×2)
+// D = irradiance/π, S = lobe-averaged radiance ⟨L⟩ (0 where not traced).
+uvec4 packIndirect(vec4 diffuse, vec4 specular) {
+    return uvec4(packHalf2x16(diffuse.rg), packHalf2x16(diffuse.ba), packHalf2x16(specular.rg), packHalf2x16(specular.ba));
+}
+void unpackIndirect(uvec4 bits, out vec4 diffuse, out vec4 specular) {
+    diffuse = vec4(unpackHalf2x16(bits.x), unpackHalf2x16(bits.y));
+    specular = vec4(unpackHalf2x16(bits.z), unpackHalf2x16(bits.w));
+}
+
+// Octahedral unit-vector encoding (Cigolle et al. 2014, "A Survey of Efficient Representations
+// for Independent Unit Vectors", JCGT 3(2)); 16 bits per coordinate keep it within 0.01°.
+vec2 octEncode(vec3 n) {
+    n /= abs(n.x) + abs(n.y) + abs(n.z);
+    vec2 signs = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(n.xy, vec2(0.0)));
+    return n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * signs;
+}
+vec3 octDecode(vec2 e) {
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    float t = max(-n.z, 0.0);
+    n.xy += mix(vec2(t), vec2(-t), greaterThanEqual(n.xy, vec2(0.0)));
+    return normalize(n);
+}
+uvec4 packGuide(vec3 position, vec3 normal) {
+    return uvec4(floatBitsToUint(position), packSnorm2x16(octEncode(normal)));
+}
+
+mat3 rotatedTangentFrame(vec3 n, float rotation) {
+    float c = cos(rotation), s = sin(rotation);
+    return tangentFrame(n) * mat3(c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0);
+}
+
+// traceDiffuse of cone.glsl in the frame `basis` (irradiance/π; cones[] gets each cone's C_i).
+vec3 traceDiffuseInFrame(vec3 origin, mat3 basis, float aperture, float maxDistance,
+                         out vec3 cones[kDiffuseConeCount]) {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < kDiffuseConeCount; ++i) {
+        cones[i] = traceCone(origin, basis * kDiffuseConeDirections[i], aperture, maxDistance).rgb;
+        sum += kDiffuseConeWeights[i] * cones[i];
+    }
+    return sum;
+}
+
+// traceSpecular of cone.glsl without the directional albedo E (the lobe-averaged radiance ⟨L⟩),
+// with the diffuse cones `cones` traced in `basis` when `reuseDiffuse`.
+vec3 traceSpecularLobe(vec3 origin, vec3 n, mat3 basis, vec3 v, float roughness, int count, vec2 pixel, int frameIndex,
+                       float maxDistance, bool reuseDiffuse, vec3 cones[kDiffuseConeCount]) {
+    float alpha = alphaFromRoughness(roughness);
+    float aperture = specularConeAperture(alpha, count);
+    vec3 weightedRadiance = vec3(0.0);
+    float weightSum = 0.0;
+    for (int k = 0; k < count; ++k) {
+        vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, pixel, frameIndex), alpha);
+        vec3 l;
+        float w = ggxSampleWeight(n, v, h, alpha, l);
+        if (w <= 0.0) continue;
+        vec3 radiance = reuseDiffuse ? radianceFromDiffuseCones(normalize(l * basis), cones)
+                                     : traceCone(origin, l, aperture, maxDistance).rgb;
+        weightedRadiance += w * radiance;
+        weightSum += w;
+    }
+    if (weightSum <= 0.0) {
+        vec3 mirror = reflect(-v, n);
+        weightedRadiance = reuseDiffuse ? radianceFromDiffuseCones(normalize(mirror * basis), cones)
+                                        : traceCone(origin, mirror, aperture, maxDistance).rgb;
+        weightSum = 1.0;
+    }
+    return weightedRadiance / weightSum;
+}
