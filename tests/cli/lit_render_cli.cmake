@@ -134,8 +134,9 @@ expect_failure("missing settings" 2 "cannot read settings .*no_settings\\.json"
   "${cornell}" --out "${OUT_DIR}/n.png" --settings "${OUT_DIR}/no_settings.json")
 expect_failure("output under a file" 2 "cannot create the folder /dev/null"
   "${cornell}" --out "/dev/null/o.png" --size 16x16)
+file(MAKE_DIRECTORY "${OUT_DIR}/folder.png")
 expect_failure("output is a folder" 2 "is a folder, not a file"
-  "${cornell}" --out "${OUT_DIR}" --size 16x16)
+  "${cornell}" --out "${OUT_DIR}/folder.png" --size 16x16)
 expect_failure("output folder not writable" 2 "cannot create the folder /proc/lit"
   "${cornell}" --out "/proc/lit/p.png" --size 16x16)
 # The memory a render needs is estimated before any of it is allocated (LIT_MAX_RENDER_MB caps
