@@ -92,9 +92,8 @@ App::App(const EditorOptions& options, std::vector<ScriptCommand> script)
       scriptSource_(options.script ? options.script->string() : std::string()) {
     // The window's context is current from here on.
     gl::requireCapabilities();
-#ifndef NDEBUG
+    // In every build type: GL errors reach the log panel (and stderr) in release builds too.
     gl::installDebugOutput(log_);
-#endif
     log_.info("OpenGL " + gl::contextDescription());
     renderer_ = std::make_unique<Renderer>(defaultShaderRoot(), log_);
     imgui_.emplace(window_.handle());

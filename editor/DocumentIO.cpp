@@ -27,7 +27,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kMarkerVersion = 1;
+// 1: the copy was always "autosave.glb"; 2: the marker names it ("scene").
+constexpr int kMarkerVersion = 2;
+constexpr const char* kCopyNames[] = {"autosave-1.glb", "autosave-2.glb"};
 
 std::optional<std::string> readTextFile(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -96,10 +98,12 @@ bool processAlive(long pid) {
 
 // The scene and camera path as saveDocument and the autosave write them (saveGltf leaves an
 // empty path out).
-void saveScene(const Document& doc, const fs::path& file) {
+void saveScene(const Document& doc, const fs::path& file,
+               std::vector<std::pair<fs::path, std::string>> alsoWrite = {}) {
     GltfSaveOptions options;
     options.cameraPath = &doc.cameraPath;
     options.cameraPathName = doc.cameraPathName.empty() ? std::string(kDefaultCameraAnimation) : doc.cameraPathName;
+    options.alsoWrite = std::move(alsoWrite);
     saveGltf(doc.scene, file, options);
 }
 
@@ -117,6 +121,10 @@ fs::path settingsSidecarPath(const fs::path& sceneFile) {
 }
 
 Document openDocument(const fs::path& file, Log& log, const std::function<void(const LoadProgress&)>& progress) {
+    // A save of this document that a crash interrupted is finished (past its commit point) or
+    // undone before the file is read, and its temporaries removed.
+    for (const std::string& line : recoverInterruptedSaves(file.has_parent_path() ? file.parent_path() : fs::path(".")))
+        log.info(line);
     Document doc = loadScene(file, file, log, progress);
     const fs::path sidecar = settingsSidecarPath(file);
     std::error_code error;
@@ -162,8 +170,8 @@ std::string chooseCameraAnimation(Document& doc, const std::string& name) {
 }
 
 void saveDocument(Document& doc, const fs::path& file) {
-    saveScene(doc, file);
-    writeFileAtomically(settingsSidecarPath(file), toJson(doc.settings) + "\n");
+    // The scene, its buffer and the settings sidecar have one commit point (io/AtomicFile.h).
+    saveScene(doc, file, {{settingsSidecarPath(file), toJson(doc.settings) + "\n"}});
     doc.file = file;
     doc.markSaved();
 }
@@ -194,17 +202,27 @@ Autosave::Autosave(fs::path folder, double intervalSeconds) : folder_(std::move(
         lastError_ = "autosave disabled: another editor (pid " + std::to_string(owner) + ") uses " + folder_.string();
         return;
     }
-    // A lock left behind by a session that is gone: its copy, if complete, is offered.
-    if (fs::exists(lockFile(), error) && fs::exists(autosaveFile(), error)) {
-        if (const std::optional<std::string> text = readTextFile(markerFile())) {
-            const nlohmann::json marker = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
-            if (marker.is_object() && marker.value("version", 0) == kMarkerVersion) {
-                const std::string document = marker.value("document", std::string());
-                const auto savedAt = static_cast<std::time_t>(marker.value("savedAt", std::int64_t{0}));
-                recoverable_ = AutosaveInfo{autosaveFile(), fs::path(document), localTimeText(savedAt)};
-            }
+    // An autosave interrupted by a crash: finish or undo its file replacements first.
+    (void)recoverInterruptedSaves(folder_);
+    // The copy the marker names; version 1 markers named no copy: it was autosave.glb.
+    if (const std::optional<std::string> text = readTextFile(markerFile())) {
+        const nlohmann::json marker = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
+        const int version = marker.is_object() ? marker.value("version", 0) : 0;
+        if (version == 1) copyName_ = "autosave.glb";
+        if (version == kMarkerVersion) {
+            const std::string name = marker.value("scene", std::string());
+            if (std::find(std::begin(kCopyNames), std::end(kCopyNames), name) != std::end(kCopyNames)) copyName_ = name;
+        }
+        // A lock left behind by a session that is gone: its copy, if complete, is offered.
+        if (!copyName_.empty() && fs::exists(lockFile(), error) && fs::exists(autosaveFile(), error)) {
+            const std::string document = marker.value("document", std::string());
+            const auto savedAt = static_cast<std::time_t>(marker.value("savedAt", std::int64_t{0}));
+            recoverable_ = AutosaveInfo{autosaveFile(), fs::path(document), localTimeText(savedAt)};
         }
     }
+    // Copies the marker does not name are the leftovers of an autosave that did not finish.
+    for (const char* name : {kCopyNames[0], kCopyNames[1], "autosave.glb"})
+        if (name != copyName_) removeQuietly(folder_ / name);
     try {
         writeFileAtomically(lockFile(), std::to_string(self) + "\n");
         active_ = true;
@@ -241,14 +259,20 @@ void Autosave::maybeSave(const Document& doc, double nowSeconds) {
 }
 
 void Autosave::saveNow(const Document& doc) {
-    saveScene(doc, autosaveFile());
+    // Never overwrite the copy the marker names: write the other one, then switch the marker.
+    const std::string next = copyName_ == kCopyNames[0] ? kCopyNames[1] : kCopyNames[0];
+    saveScene(doc, folder_ / next);
     const nlohmann::json marker = {
         {"version", kMarkerVersion},
+        {"scene", next},
         {"document", doc.file.string()},
         {"savedAt", static_cast<std::int64_t>(std::time(nullptr))},
         {"settings", nlohmann::json::parse(toJson(doc.settings))},
     };
-    writeFileAtomically(markerFile(), marker.dump(2) + "\n");
+    writeFileAtomically(markerFile(), marker.dump(2) + "\n");  // the commit point
+    const std::string previous = copyName_;
+    copyName_ = next;
+    if (!previous.empty() && previous != next) removeQuietly(folder_ / previous);
     written_ = copyOf(doc);
 }
 
@@ -280,8 +304,9 @@ void Autosave::discard() {
     recoverable_.reset();
     written_.reset();
     if (!active_) return;  // the files, if any, are another editor's
-    removeQuietly(autosaveFile());
-    removeQuietly(markerFile());
+    removeQuietly(markerFile());  // first: without it, no copy is offered
+    for (const char* name : {kCopyNames[0], kCopyNames[1], "autosave.glb"}) removeQuietly(folder_ / name);
+    copyName_.clear();
 }
 
 void Autosave::cleanExit() {

@@ -41,14 +41,15 @@ Document openDocument(const std::filesystem::path& file, Log& log,
 // last saved; its unsaved key edits are dropped (undo brings them back). Returns "" or why not.
 std::string chooseCameraAnimation(Document& doc, const std::string& name);
 
-// Writes the scene and camera path to `file` (saveGltf: .gltf or .glb, atomic) and then the
-// settings sidecar; sets doc.file and marks the document saved. Throws (SceneSaveError or
+// Writes the scene and camera path to `file` (saveGltf: .gltf or .glb) and the settings sidecar
+// as one commit (io/AtomicFile.h: after a crash, all old or all new once recovered); sets
+// doc.file and marks the document saved. Throws (SceneSaveError or
 // std::runtime_error naming the file) and leaves the document as it was when anything fails.
 void saveDocument(Document& doc, const std::filesystem::path& file);
 
 // An autosave that a session which did not exit cleanly left behind.
 struct AutosaveInfo {
-    std::filesystem::path autosaveFile;  // <folder>/autosave.glb
+    std::filesystem::path autosaveFile;  // <folder>/autosave-1.glb or autosave-2.glb
     std::filesystem::path documentFile;  // the document's own file ("" = never saved)
     std::string timeText;                // when it was written, local time: "2026-12-01 16:05"
 };
@@ -62,10 +63,14 @@ struct AutosaveInfo {
 // writes no autosave of its own (it would overwrite the copy). A lock held by another running
 // editor leaves this session without autosave (both would write the same files).
 //
-// Files: "<folder>/autosave.glb" (scene + camera path, saveGltf) and then
-// "<folder>/autosave.json" ({"version", "document", "savedAt", "settings"}), both written
-// atomically; a copy counts only when both are there. Failures never throw out of maybeSave():
-// they are kept in lastError() and tried again after the next interval.
+// Files: the copy "<folder>/autosave-1.glb" or "autosave-2.glb" (scene + camera path, saveGltf),
+// and "<folder>/autosave.json" ({"version", "scene", "document", "savedAt", "settings"}), which
+// names the copy. A save writes the copy the marker does NOT name, then replaces the marker
+// atomically (the single commit point: the copy and its settings change together), then removes
+// the other copy. A crash at any moment leaves the marker naming a complete copy: the last
+// autosave that finished. Leftovers of an interrupted autosave (a copy the marker does not name,
+// temporaries) are removed when the next session starts. Failures never throw out of
+// maybeSave(): they are kept in lastError() and tried again after the next interval.
 class Autosave {
 public:
     static constexpr double kDefaultIntervalSeconds = 60.0;
@@ -100,7 +105,8 @@ public:
     void cleanExit();
 
     const std::filesystem::path& folder() const { return folder_; }
-    std::filesystem::path autosaveFile() const { return folder_ / "autosave.glb"; }
+    // The copy the marker names (autosave-1.glb when there is none yet).
+    std::filesystem::path autosaveFile() const { return folder_ / (copyName_.empty() ? "autosave-1.glb" : copyName_); }
     std::filesystem::path markerFile() const { return folder_ / "autosave.json"; }
     std::filesystem::path lockFile() const { return folder_ / "session.lock"; }
     bool active() const { return active_; }       // false: another editor holds the lock, or no folder
@@ -122,6 +128,7 @@ private:
     static Copy copyOf(const Document& doc) { return {doc.capture(), doc.settings, doc.file}; }
     std::optional<Copy> written_;
     std::string lastError_;
+    std::string copyName_;  // file name of the copy the marker names; "" = none
 };
 
 }  // namespace lit::editor

@@ -529,14 +529,32 @@ const FrameStats& Renderer::stats() const { return impl_->stats; }
 Log& Renderer::log() { return impl_->log; }
 
 namespace {
-fs::path fromEnvOr(const char* variable, const char* fallback) {
+// The folder of the running executable (Linux: /proc/self/exe); empty when it cannot be read.
+fs::path executableFolder() {
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    return ec ? fs::path() : exe.parent_path();
+}
+
+// $variable when set; else `installed` (relative to the executable: an installed program) when
+// that folder exists; else the source tree the binary was built from (a build-tree run).
+fs::path locateData(const char* variable, const char* installed, const char* sourceTree) {
     if (const char* value = std::getenv(variable); value && *value) return fs::path(value);
-    return fs::path(fallback);
+    if (const fs::path folder = executableFolder(); !folder.empty()) {
+        std::error_code ec;
+        const fs::path candidate = (folder / installed).lexically_normal();
+        if (fs::is_directory(candidate, ec)) return candidate;
+    }
+    return fs::path(sourceTree);
 }
 }  // namespace
 
-fs::path defaultShaderRoot() { return fromEnvOr("LIT_SHADER_DIR", LIT_DEFAULT_SHADER_DIR); }
-fs::path defaultAssetRoot() { return fromEnvOr("LIT_ASSET_DIR", LIT_DEFAULT_ASSET_DIR); }
+fs::path defaultShaderRoot() {
+    return locateData("LIT_SHADER_DIR", LIT_INSTALL_DATA_FROM_BIN "/shaders", LIT_DEFAULT_SHADER_DIR);
+}
+fs::path defaultAssetRoot() {
+    return locateData("LIT_ASSET_DIR", LIT_INSTALL_DATA_FROM_BIN "/assets", LIT_DEFAULT_ASSET_DIR);
+}
 fs::path defaultScenePath() { return defaultAssetRoot() / "cornell_box.gltf"; }
 
 }  // namespace lit

@@ -97,8 +97,10 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-// Where shaders/ and assets/ are: $LIT_SHADER_DIR / $LIT_ASSET_DIR when set, else the source
-// tree this binary was built from.
+// Where shaders/ and assets/ are, first found of: $LIT_SHADER_DIR / $LIT_ASSET_DIR when set (a
+// development override); ../share/lit/shaders and ../share/lit/assets beside the running
+// executable (an installed program, `cmake --install`); the source tree this binary was built
+// from (a run from the build tree).
 std::filesystem::path defaultShaderRoot();
 std::filesystem::path defaultAssetRoot();
 std::filesystem::path defaultScenePath();  // the built-in Cornell box

@@ -5,6 +5,8 @@
 #   tools/lit.sh test             install what is missing, build, run the whole test suite
 #   tools/lit.sh test-sanitize    the same with AddressSanitizer + UndefinedBehaviorSanitizer
 #   tools/lit.sh build            install what is missing and build
+#   tools/lit.sh build-release    build the programs as Release (in build-release/), no tests
+#   tools/lit.sh install PREFIX   build Release and install lit-render, lit-editor, shaders, assets
 #   tools/lit.sh deps             only install what is missing
 #
 # Environment: LIT_BUILD_DIR (default build/), LIT_JOBS (default: number of cores).
@@ -13,9 +15,10 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 jobs="${LIT_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
+# The project's own builds treat warnings as errors (LIT_WERROR); later -D arguments win.
 build() {
     local dir="$1"; shift
-    cmake -S "$root" -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+    cmake -S "$root" -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLIT_WERROR=ON "$@" >/dev/null
     cmake --build "$dir" -j "$jobs"
 }
 
@@ -28,6 +31,17 @@ case "$command" in
     build)
         "$root/tools/install-deps.sh"
         build "${LIT_BUILD_DIR:-$root/build}"
+        ;;
+    build-release)
+        "$root/tools/install-deps.sh"
+        build "${LIT_RELEASE_BUILD_DIR:-$root/build-release}" -DCMAKE_BUILD_TYPE=Release -DLIT_BUILD_TESTS=OFF
+        ;;
+    install)
+        [ $# -eq 1 ] || { echo "usage: tools/lit.sh install PREFIX" >&2; exit 2; }
+        "$root/tools/install-deps.sh"
+        dir="${LIT_RELEASE_BUILD_DIR:-$root/build-release}"
+        build "$dir" -DCMAKE_BUILD_TYPE=Release -DLIT_BUILD_TESTS=OFF
+        cmake --install "$dir" --prefix "$1"
         ;;
     editor)
         "$root/tools/install-deps.sh"
@@ -58,7 +72,7 @@ case "$command" in
             ctest --output-on-failure -j "$jobs" --timeout 1800
         ;;
     *)
-        sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+        sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
         exit 2
         ;;
 esac

@@ -8,6 +8,8 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace tinygltf {
 class Model;
@@ -24,7 +26,9 @@ namespace lit {
 // Every file is written under a temporary name and renamed into place, buffers first and `file`
 // last (io/AtomicFile.h), so a failure leaves all previous files as they were. Throws
 // std::runtime_error whose message starts with the path of the file concerned.
-void writeGltfModel(tinygltf::Model model, const std::filesystem::path& file, bool binary);
+// `alsoWrite`: other files committed together with the scene (staged before it).
+void writeGltfModel(tinygltf::Model model, const std::filesystem::path& file, bool binary,
+                    const std::vector<std::pair<std::filesystem::path, std::string>>& alsoWrite = {});
 
 bool isDataUri(std::string_view uri);
 // "%20" → ' ' (RFC 3986; '+' stays '+').

@@ -113,7 +113,7 @@ Container detectContainer(const fs::path& path) {
             // Parse again only to get the error's position and reason.
             const nlohmann::json parsed = nlohmann::json::parse(text);
             (void)parsed;
-        } catch (const nlohmann::json::parse_error& e) {
+        } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e999
             reason = e.what();
             // "[json.exception.parse_error.101] parse error at line 3, ..." → "parse error at line 3, ..."
             if (const auto bracket = reason.find("] ");
@@ -147,6 +147,7 @@ Container detectContainer(const fs::path& path) {
 struct ImageCallbackContext {
     const tinygltf::Model* model = nullptr;  // being filled by tinygltf (buffers are parsed first)
     std::vector<std::string> problems;       // images whose bytes could not be taken safely
+    ImageDeduplicator images;                // the encoded bytes, each distinct image once
 };
 
 bool keepEncodedImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
@@ -172,7 +173,9 @@ bool keepEncodedImage(tinygltf::Image* image, const int imageIndex, std::string*
             return true;
         }
     }
-    if (bytes && size > 0) image->image.assign(bytes, bytes + size);
+    // Kept once per distinct content (io/GltfGuard.h); put into the model after parsing.
+    context.images.add(imageIndex, bytes, bytes && size > 0 ? static_cast<std::size_t>(size) : 0);
+    image->image.clear();
     image->as_is = true;  // encoded bytes, not pixels
     return true;
 }
@@ -182,8 +185,9 @@ bool keepEncodedImage(tinygltf::Image* image, const int imageIndex, std::string*
 
 class Loader {
 public:
-    Loader(const fs::path& path, const tinygltf::Model& model, Log& log, const GltfLoadOptions& options)
-        : path_(path), model_(model), log_(log), options_(options) {}
+    Loader(const fs::path& path, const tinygltf::Model& model, Log& log, const GltfLoadOptions& options,
+           const ImageDeduplicator& images)
+        : path_(path), model_(model), log_(log), options_(options), images_(images) {}
 
     Scene run();
 
@@ -226,6 +230,7 @@ private:
     const tinygltf::Model& model_;
     Log& log_;
     const GltfLoadOptions& options_;
+    const ImageDeduplicator& images_;  // which images are byte-identical to an earlier one
 };
 
 std::string describeNode(const tinygltf::Model& model, std::size_t index) {
@@ -766,18 +771,27 @@ void Loader::loadTextures(Scene& scene) const {
             if (static_cast<std::size_t>(in.source) >= model_.images.size())
                 fail("texture " + std::to_string(t) + " refers to image " + std::to_string(in.source) +
                      ", which is out of range (the file has " + std::to_string(model_.images.size()) + " images)");
-            out.image = in.source;
+            out.image = images_.canonical(in.source);  // identical images are decoded once and shared
         }
         if (in.sampler >= 0) {
             if (static_cast<std::size_t>(in.sampler) >= model_.samplers.size())
                 fail("texture " + std::to_string(t) + " refers to sampler " + std::to_string(in.sampler) +
                      ", which is out of range (the file has " + std::to_string(model_.samplers.size()) + " samplers)");
             const tinygltf::Sampler& s = model_.samplers[static_cast<std::size_t>(in.sampler)];
-            out.wrapS = s.wrapS;
-            out.wrapT = s.wrapT;
-            // tinygltf reports unset filters as -1: keep the defaults then.
-            if (s.minFilter >= 0) out.minFilter = s.minFilter;
-            if (s.magFilter >= 0) out.magFilter = s.magFilter;
+            // Values glTF allows (§5.26); anything else would be a GL error at upload.
+            const auto allowed = [&](int value, std::initializer_list<int> values, const char* field, int& target) {
+                if (value < 0) return;  // tinygltf reports an unset filter as -1: keep the default
+                if (std::find(values.begin(), values.end(), value) != values.end()) {
+                    target = value;
+                } else {
+                    warn("sampler " + std::to_string(in.sampler) + " has an invalid " + field + " " +
+                         std::to_string(value) + "; using " + std::to_string(target));
+                }
+            };
+            allowed(s.wrapS, {10497, 33071, 33648}, "wrapS", out.wrapS);
+            allowed(s.wrapT, {10497, 33071, 33648}, "wrapT", out.wrapT);
+            allowed(s.minFilter, {9728, 9729, 9984, 9985, 9986, 9987}, "minFilter", out.minFilter);
+            allowed(s.magFilter, {9728, 9729}, "magFilter", out.magFilter);
         }
         scene.textures.push_back(out);
     }
@@ -889,6 +903,14 @@ void Loader::loadImages(Scene& scene) const {
         Image& out = scene.images[i];
         out.name = in.name;
         out.uri = in.uri;
+        if (images_.canonical(static_cast<int>(i)) != static_cast<int>(i)) {
+            // A copy of an earlier image: textures use that one; this entry keeps its name and
+            // uri but no pixels of its own.
+            out.width = 1;
+            out.height = 1;
+            out.rgba = {255, 255, 255, 255};
+            continue;
+        }
         out.srgb = usedAsColour[i] != 0;
         if (usedAsColour[i] && usedAsData[i])
             warn("image " + std::to_string(i) + " is used both as colour and as data; it is treated as sRGB colour");
@@ -1005,35 +1027,48 @@ std::vector<std::string> lines(const std::string& text) {
 Scene loadGltf(const std::filesystem::path& path, Log& log, const GltfLoadOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     if (options.progress) options.progress({"file", 0, 1});
+    checkSceneFile(path, options.limits);
     const Container container = detectContainer(path);
+    // Size, depth, version and URIs checked before tinygltf sees the file (io/GltfGuard.h).
+    const GuardedScene guarded = guardGltfFile(path, container == Container::Binary, options.limits);
+    GuardedFileSystem files(path, options.limits, guarded.externalImages);
 
     tinygltf::Model model;
     tinygltf::TinyGLTF parser;
+    parser.SetFsCallbacks(files.callbacks());
     ImageCallbackContext imageContext;
     imageContext.model = &model;
     parser.SetImageLoader(&keepEncodedImage, &imageContext);
     std::string err, warn;
     bool ok = false;
     try {
-        ok = container == Container::Binary ? parser.LoadBinaryFromFile(&model, &err, &warn, path.string())
-                                            : parser.LoadASCIIFromFile(&model, &err, &warn, path.string());
+        const std::string baseDir = path.parent_path().string();
+        ok = container == Container::Binary
+                 ? parser.LoadBinaryFromMemory(&model, &err, &warn, guarded.bytes.data(),
+                                               static_cast<unsigned int>(guarded.bytes.size()), baseDir)
+                 : parser.LoadASCIIFromString(&model, &err, &warn, guarded.json.data(),
+                                              static_cast<unsigned int>(guarded.json.size()), baseDir);
     } catch (const std::exception& e) {
         throw SceneLoadError(path.string() + ": tinygltf failed: " + e.what());
     }
     const std::string file = path.filename().string();
     for (const std::string& line : lines(warn)) log.warning(file + ": " + line);
     for (const std::string& problem : imageContext.problems) log.warning(file + ": " + problem);
+    for (const std::string& refusal : files.refusals()) log.warning(file + ": not read: " + refusal);
     if (!ok) {
         std::string message =
             path.string() + ": " +
             (container == Container::Binary ? "cannot load the GLB file" : "cannot load the glTF file");
-        const std::vector<std::string> errors = lines(err);
+        std::vector<std::string> errors = lines(err);
+        for (const std::string& refusal : files.refusals()) errors.push_back("not read: " + refusal);
         for (std::size_t i = 0; i < errors.size(); ++i) message += (i == 0 ? ": " : "; ") + errors[i];
         throw SceneLoadError(message);
     }
+    for (std::size_t i = 0; i < model.images.size(); ++i) model.images[i].image = imageContext.images.take(static_cast<int>(i));
+    checkMemoryBudget(path, model, imageContext.images, options.limits);
 
     if (options.progress) options.progress({"file", 1, 1});
-    Scene scene = Loader(path, model, log, options).run();
+    Scene scene = Loader(path, model, log, options, imageContext.images).run();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     // The one summary line of a load, for every front end: "loaded Sponza.gltf: 1 mesh, 262k
     // triangles, 69 textures, 297 MB in 3912 ms".

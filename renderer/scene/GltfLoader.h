@@ -1,6 +1,7 @@
 #pragma once
 // glTF 2.0 import (.gltf and .glb) through tinygltf, into lit::Scene.
 
+#include "io/GltfGuard.h"
 #include "scene/Scene.h"
 
 #include <cstddef>
@@ -39,6 +40,8 @@ struct GltfLoadOptions {
     // Threads that decode images (stb_image): 0 (or less) = std::thread::hardware_concurrency(),
     // 1 = on the calling thread only. The decoded pixels and the warnings do not depend on it.
     int decodeThreads = 0;
+    // File size, JSON depth, memory budget, external URIs (io/GltfGuard.h, docs/RELIABILITY.md).
+    GltfLimits limits;
 };
 
 // Loads a scene. Throws SceneLoadError for files that cannot be used; recoverable problems

@@ -510,7 +510,7 @@ void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& o
     if (!binary && !model.buffers.empty()) model.buffers[0].uri = percentEncodePath(file.stem().string() + ".bin");
 
     try {
-        writeGltfModel(std::move(model), file, binary);
+        writeGltfModel(std::move(model), file, binary, options.alsoWrite);
     } catch (const std::runtime_error& e) {
         const std::string what = e.what();
         throw SceneSaveError(what.starts_with(file.string() + ": ") ? what : file.string() + ": " + what);

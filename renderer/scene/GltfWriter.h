@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lit {
 
@@ -28,6 +30,9 @@ struct GltfSaveOptions {
     // node is added when the scene has none). Null or empty: no animation.
     const CameraPath* cameraPath = nullptr;
     std::string cameraPathName = "camera path";
+    // Files saved in the same commit as the scene (the editor's settings sidecar): all of them
+    // and the scene are replaced together or not at all (io/AtomicFile.h).
+    std::vector<std::pair<std::filesystem::path, std::string>> alsoWrite;
 };
 
 // `file` ends in .gltf (JSON + "<stem>.bin" beside it) or .glb (one binary file). Images that

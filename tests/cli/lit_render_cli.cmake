@@ -69,7 +69,8 @@ if(NOT out MATCHES "reference: 32x32, 2 spp .* Mrays/s")
 endif()
 
 # ---- Bad inputs -------------------------------------------------------------------------------
-# expect_failure(NAME EXPECTED_RC STDERR_REGEX ARGS...): EXPECTED_RC is 1 (runtime) or 2 (usage).
+# expect_failure(NAME EXPECTED_RC STDERR_REGEX ARGS...): EXPECTED_RC is 1 (runtime) or 2 (bad
+# input: the command line, the scene, settings or path file, the output folder, the size).
 function(expect_failure name expected_rc stderr_regex)
   run_lit_render(${ARGN})
   if(rc EQUAL 0)
@@ -81,6 +82,11 @@ function(expect_failure name expected_rc stderr_regex)
   if(err STREQUAL "")
     message(FATAL_ERROR "${name}: lit-render failed without a message on stderr")
   endif()
+  # The error itself is one line (the usage summary may follow it).
+  string(REGEX MATCH "lit-render: [^\n]*\n" first_error "${err}")
+  if(first_error STREQUAL "")
+    message(FATAL_ERROR "${name}: no 'lit-render: ...' error line on stderr:\n${err}")
+  endif()
   if(NOT err MATCHES "${stderr_regex}")
     message(FATAL_ERROR "${name}: stderr does not match '${stderr_regex}':\n${err}")
   endif()
@@ -90,9 +96,9 @@ endfunction()
 set(not_gltf "${OUT_DIR}/not_a_scene.gltf")
 file(WRITE "${not_gltf}" "This is a text file, not glTF.\n")
 
-expect_failure("missing scene file" 1 "cannot load .*does_not_exist\\.gltf"
+expect_failure("missing scene file" 2 "cannot load .*does_not_exist\\.gltf"
   "${OUT_DIR}/does_not_exist.gltf" --out "${OUT_DIR}/a.png" --size 16x16)
-expect_failure("non-glTF file" 1 "cannot load .*not_a_scene\\.gltf"
+expect_failure("non-glTF file" 2 "cannot load .*not_a_scene\\.gltf"
   "${not_gltf}" --out "${OUT_DIR}/b.png" --size 16x16)
 expect_failure("bad --size" 2 "--size expects WxH with 1\\.\\.16384, got '12x'"
   "${cornell}" --out "${OUT_DIR}/c.png" --size 12x)
@@ -103,7 +109,81 @@ expect_failure("unknown view" 2 "unknown view 'xray'"
 expect_failure("unknown camera" 2 "unknown camera 'nowhere'.*'camera'"
   "${cornell}" --out "${OUT_DIR}/f.png" --size 16x16 --camera nowhere)
 
-foreach(file a b c d e f)
+# ---- Hostile and out-of-range inputs (issue #14): each a one-line error, exit 2, nothing written
+file(MAKE_DIRECTORY "${OUT_DIR}/a_folder.gltf")
+expect_failure("a folder as the scene" 2 "a_folder\\.gltf: is a directory"
+  "${OUT_DIR}/a_folder.gltf" --out "${OUT_DIR}/g.png" --size 16x16)
+file(WRITE "${OUT_DIR}/empty.gltf" "")
+expect_failure("an empty scene" 2 "empty\\.gltf: the file is empty"
+  "${OUT_DIR}/empty.gltf" --out "${OUT_DIR}/h.png" --size 16x16)
+expect_failure("a device as the scene" 2 "not a regular file"
+  "/dev/zero" --out "${OUT_DIR}/i.png" --size 16x16)
+file(READ "${cornell}" cornell_json)
+string(REPLACE "\"version\": \"2.0\"" "\"version\": \"3.0\"" v3_json "${cornell_json}")
+file(WRITE "${OUT_DIR}/v3.gltf" "${v3_json}")
+file(COPY "${SOURCE_DIR}/assets/cornell_box.bin" DESTINATION "${OUT_DIR}")
+expect_failure("glTF 3.0" 2 "asset.version is '3.0'; Lit reads glTF 2.x only"
+  "${OUT_DIR}/v3.gltf" --out "${OUT_DIR}/j.png" --size 16x16)
+string(REPLACE "\"uri\": \"cornell_box.bin\"" "\"uri\": \"../../../../etc/passwd\"" escape_json "${cornell_json}")
+file(WRITE "${OUT_DIR}/escape.gltf" "${escape_json}")
+expect_failure("a buffer outside the scene's folder" 2 "points outside the scene's folder"
+  "${OUT_DIR}/escape.gltf" --out "${OUT_DIR}/k.png" --size 16x16)
+foreach(size 0x16 -5x16 16x99999 99999999999x2)
+  expect_failure("--size ${size}" 2 "--size expects WxH" "${cornell}" --out "${OUT_DIR}/l.png" --size ${size})
+endforeach()
+foreach(voxels 0 -64 100 1024 99999999999)
+  expect_failure("--voxels ${voxels}" 2 "--voxels expects a power of two" "${cornell}" --out "${OUT_DIR}/m.png" --voxels ${voxels})
+endforeach()
+file(WRITE "${OUT_DIR}/zero_width.json" "{\"width\": 0}")
+expect_failure("settings width 0" 2 "width is 0, expected 1\\.\\.16384"
+  "${cornell}" --out "${OUT_DIR}/n.png" --settings "${OUT_DIR}/zero_width.json")
+file(WRITE "${OUT_DIR}/huge_height.json" "{\"height\": 1000000}")
+expect_failure("settings height 1000000" 2 "height is 1000000"
+  "${cornell}" --out "${OUT_DIR}/n.png" --settings "${OUT_DIR}/huge_height.json")
+file(WRITE "${OUT_DIR}/bad_voxels.json" "{\"voxelResolution\": 100}")
+expect_failure("settings voxelResolution 100" 2 "voxelResolution is 100"
+  "${cornell}" --out "${OUT_DIR}/n.png" --settings "${OUT_DIR}/bad_voxels.json")
+file(WRITE "${OUT_DIR}/not_json.json" "{\"width\": ")
+expect_failure("settings that are not JSON" 2 "cannot use settings .*not_json\\.json"
+  "${cornell}" --out "${OUT_DIR}/n.png" --settings "${OUT_DIR}/not_json.json")
+expect_failure("missing settings" 2 "cannot read settings .*no_settings\\.json"
+  "${cornell}" --out "${OUT_DIR}/n.png" --settings "${OUT_DIR}/no_settings.json")
+expect_failure("output under a file" 2 "cannot create the folder /dev/null"
+  "${cornell}" --out "/dev/null/o.png" --size 16x16)
+file(MAKE_DIRECTORY "${OUT_DIR}/folder.png")
+expect_failure("output is a folder" 2 "is a folder, not a file"
+  "${cornell}" --out "${OUT_DIR}/folder.png" --size 16x16)
+expect_failure("output folder not writable" 2 "cannot create the folder /proc/lit"
+  "${cornell}" --out "/proc/lit/p.png" --size 16x16)
+# The memory a render needs is estimated before any of it is allocated (LIT_MAX_RENDER_MB caps
+# what the machine has, so the test does not depend on this machine's memory).
+execute_process(COMMAND "${CMAKE_COMMAND}" -E env LIT_MAX_RENDER_MB=100
+    "${LIT_RENDER}" "${cornell}" --out "${OUT_DIR}/q.png" --size 4096x4096 --gi off
+  RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 120)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "needs about [0-9]+ MB, more than the 100 MB available")
+  message(FATAL_ERROR "a render over the memory cap: exit ${rc}\n${err}")
+endif()
+
+# Unknown keys and clamped values in a settings file are warnings, and the render goes on.
+file(WRITE "${OUT_DIR}/odd.json" "{\"sparkles\": 3, \"specularSamples\": 50, \"gi\": false, \"width\": 16, \"height\": 16}")
+run_lit_render("${cornell}" --out "${OUT_DIR}/odd.png" --settings "${OUT_DIR}/odd.json")
+if(NOT rc EQUAL 0 OR NOT err MATCHES "unknown setting 'sparkles' ignored" OR NOT err MATCHES "specularSamples 50 is outside 1\\.\\.8; using 8")
+  message(FATAL_ERROR "settings with an unknown key and a clamped value: exit ${rc}\n${err}")
+endif()
+
+# A sampler enum glTF does not allow used to end in GL errors and exit 0: now a warning and the
+# default, and no GL error (any would make lit-render exit 1).
+file(MAKE_DIRECTORY "${OUT_DIR}/sampler")
+file(COPY "${SOURCE_DIR}/tests/fuzz/companions/tex.png" DESTINATION "${OUT_DIR}/sampler")
+file(READ "${SOURCE_DIR}/tests/fuzz/seeds/textured_quad.gltf" quad_json)
+string(REPLACE "\"wrapS\":33071" "\"wrapS\":12345" quad_json "${quad_json}")
+file(WRITE "${OUT_DIR}/sampler/bad_sampler.gltf" "${quad_json}")
+run_lit_render("${OUT_DIR}/sampler/bad_sampler.gltf" --out "${OUT_DIR}/sampler/quad.png" --size 16x16 --gi off)
+if(NOT rc EQUAL 0 OR NOT err MATCHES "invalid wrapS 12345; using 10497" OR err MATCHES "error: GL")
+  message(FATAL_ERROR "a bad sampler enum: exit ${rc}\n${err}")
+endif()
+
+foreach(file a b c d e f g h i j k l m n o p q)
   if(EXISTS "${OUT_DIR}/${file}.png")
     message(FATAL_ERROR "a failed run still wrote ${OUT_DIR}/${file}.png")
   endif()
@@ -144,11 +224,11 @@ if(NOT rc EQUAL 0 OR NOT out MATCHES "lowest FPS [0-9.]+, highest FPS [0-9.]+, m
   message(FATAL_ERROR "--bench-path printed no statistics line (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
 endif()
 
-expect_failure("missing path file" 1 "cannot use the camera path: .*no_such_path\\.json"
+expect_failure("missing path file" 2 "cannot use the camera path: .*no_such_path\\.json"
   "${cornell}" --path "${OUT_DIR}/no_such_path.json" --frames-out "${OUT_DIR}/never")
 set(bad_path "${OUT_DIR}/bad_path.json")
 file(WRITE "${bad_path}" "{\"version\": 1, \"keys\": [{\"time\": 1, \"position\": [0,0,0], \"rotation\": [0,0,0,1], \"yfov\": 0.8}, {\"time\": 0.5, \"position\": [1,0,0], \"rotation\": [0,0,0,1], \"yfov\": 0.8}]}\n")
-expect_failure("path with times out of order" 1 "key 1"
+expect_failure("path with times out of order" 2 "key 1"
   "${cornell}" --path "${bad_path}" --frames-out "${OUT_DIR}/never")
 if(EXISTS "${OUT_DIR}/never")
   file(GLOB never_frames "${OUT_DIR}/never/*.png")

@@ -6,6 +6,8 @@
 #include "TempDir.h"
 #include <stb/stb_image.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <csignal>
 #include <unistd.h>
 
 #include <atomic>
@@ -126,6 +128,53 @@ TEST(AtomicFileSet, CommitReplacesEveryFile) {
     EXPECT_EQ(readText(dir / "scene.bin"), "new bin");
     EXPECT_EQ(readText(dir / "scene.gltf"), "new gltf");
     EXPECT_EQ(filesIn(dir.path()), (std::set<std::string>{"scene.bin", "scene.gltf"}));
+}
+
+// The single commit point, proven at every step: a child process stages three files (buffer,
+// sidecar, scene) and is SIGKILLed exactly at one step of commit(); after what the next start
+// does (recoverInterruptedSaves) the three files are all old (killed before the journal) or all
+// new (killed at or after it), and no temporary, backup or journal is left.
+TEST(AtomicFileSet, AKillAtAnyStepIsAllOldOrAllNewAfterRecovery) {
+    const std::vector<std::string> steps = {"staged", "backups", "journal", "renamed 1", "renamed 2", "renamed 3", "done"};
+    const std::vector<std::string> names = {"scene.bin", "scene.gltf.lit.json", "scene.gltf"};
+    for (std::size_t s = 0; s < steps.size(); ++s) {
+        TempDir dir;
+        for (const std::string& name : names) writeFileAtomically(dir / name, std::string_view("old " + name));
+        const pid_t child = ::fork();
+        ASSERT_GE(child, 0);
+        if (child == 0) {
+            AtomicFileSet files;
+            for (const std::string& name : names) files.stage(dir / name, std::string_view("new " + name));
+            if (steps[s] == "staged") ::raise(SIGKILL);
+            files.observeStepsForTesting([&](const std::string& step) {
+                if (step == steps[s]) ::raise(SIGKILL);
+            });
+            files.commit();
+            ::_exit(0);
+        }
+        int status = 0;
+        ASSERT_EQ(::waitpid(child, &status, 0), child);
+        ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << steps[s];
+        EXPECT_GT(filesIn(dir.path()).size(), 0u);
+        recoverInterruptedSaves(dir.path());
+        const bool expectNew = s >= 2;  // the journal is the commit point
+        for (const std::string& name : names)
+            EXPECT_EQ(readText(dir / name), (expectNew ? "new " : "old ") + name) << "killed at " << steps[s];
+        EXPECT_EQ(filesIn(dir.path()), std::set<std::string>(names.begin(), names.end())) << "killed at " << steps[s];
+    }
+}
+
+TEST(AtomicFileSet, RecoveryLeavesOtherFilesAndLiveWritersAlone) {
+    TempDir dir;
+    std::ofstream(dir / "photo.tmp-1.png") << "a user's file";
+    std::ofstream(dir / "notes.old-draft.txt") << "a user's file";
+    const std::string live = "scene.bin.tmp-" + std::to_string(::getpid()) + "-abcdef12";
+    std::ofstream(dir / live) << "being written by this process";
+    std::ofstream(dir / "scene.bin.tmp-999999999-abcdef12") << "a dead writer's";  // no such pid
+    std::ofstream(dir / "scene.bin.tmp-0a1b2c3d4e5f") << "an older version's";
+    const std::vector<std::string> report = recoverInterruptedSaves(dir.path());
+    EXPECT_EQ(report.size(), 2u);
+    EXPECT_EQ(filesIn(dir.path()), (std::set<std::string>{"photo.tmp-1.png", "notes.old-draft.txt", live}));
 }
 
 TEST(GltfFileUris, PercentEncodingRoundTrips) {

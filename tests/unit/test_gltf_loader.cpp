@@ -1044,7 +1044,7 @@ GltfBuilder triangleWithImages(const TempDir& dir, int count) {
     for (int i = 0; i < count; ++i) {
         const std::string name = "image" + std::to_string(i) + ".png";
         if (i % 5 == 4) {
-            writeFile(dir / name, std::string("not a png"));
+            writeFile(dir / name, "not a png " + std::to_string(i));  // distinct: identical images are decoded once
         } else {
             const int width = 8 + 3 * i, height = 5 + 2 * i;
             std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width * height * 4));

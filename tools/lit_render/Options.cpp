@@ -115,6 +115,9 @@ Options parseOptions(const std::vector<std::string>& args) {
         } else if (flag == "--no-shadows") {
             noValue();
             options.noShadows = true;
+        } else if (flag == "--allow-external-uris") {
+            noValue();
+            options.allowExternalUris = true;
         } else if (flag == "--view") {
             const std::string text = value("a view name");
             const auto view = parseView(text);
@@ -316,6 +319,8 @@ std::string usageText() {
            "                       camera framing the whole scene)\n"
            "  --exposure X         linear exposure multiplier before tone mapping (default 1)\n"
            "  --no-shadows         render without shadow maps\n"
+           "  --allow-external-uris  let the scene read buffers and images outside its folder\n"
+           "                       (absolute paths, '..', file:); off: such a scene is refused\n"
            "  --view VIEW          what to write (default final), one of:\n"
            "                       " + viewNames() + "\n"
            "  --gi on|off          voxel cone traced indirect light (default on)\n"

@@ -42,6 +42,7 @@ struct Options {
     std::optional<std::string> camera; // camera name or index as typed; unset = the scene's first
     std::optional<float> exposure;     // linear multiplier
     bool noShadows = false;
+    bool allowExternalUris = false;    // --allow-external-uris: buffers/images outside the scene's folder
     std::optional<View> view;
     std::optional<bool> gi;
     std::optional<int> voxels;         // voxels per side

@@ -1,6 +1,8 @@
 // lit-render — renders a glTF scene headless (EGL, no window or X server) to PNG/HDR, or
 // benchmarks it, or flies a camera path (frames to PNGs, or per-frame timings).
-// Exit status: 0 success, 1 runtime failure, 2 bad command line, 130 a --reference render
+// Exit status: 0 success, 1 runtime failure (GL errors, a failed write), 2 bad input: the command
+// line, a scene, settings or path file that cannot be used, an output folder that cannot be
+// written, or a size this GL or this machine's memory cannot render; 130 a --reference render
 // interrupted by Ctrl+C (after writing the image so far).
 
 #include "Options.h"
@@ -31,11 +33,13 @@
 #include <cmath>
 #include <optional>
 #include <glm/glm.hpp>
+#include <cstdlib>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <unistd.h>
 #include <exception>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <numeric>
@@ -58,12 +62,138 @@ public:
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// Settings files are small; anything larger than this is not one (a wrong path, a video).
+constexpr std::uintmax_t kMaxSettingsBytes = 1 << 20;
+
 std::string readTextFile(const fs::path& path) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (!fs::exists(status)) throw UsageError("cannot read settings " + path.string() + ": no such file");
+    if (!fs::is_regular_file(status)) throw UsageError("cannot read settings " + path.string() + ": not a regular file");
+    if (fs::file_size(path, ec) > kMaxSettingsBytes)
+        throw UsageError("cannot read settings " + path.string() + ": larger than 1 MiB, not a settings file");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw RunError("cannot read settings " + path.string());
+    if (!in) throw UsageError("cannot read settings " + path.string());
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
+}
+
+// A settings file's values against what lit-render can render: keys it does not know and
+// values it clamps are warnings; sizes it cannot render are errors (UsageError, exit 2).
+void checkSettingsFile(const fs::path& path, const std::string& text, lit::RenderSettings& settings, lit::Log& log) {
+    const nlohmann::json given = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+    const nlohmann::json known = nlohmann::json::parse(lit::toJson(lit::RenderSettings{}));
+    const std::string name = path.filename().string();
+    if (given.is_object())
+        for (const auto& [key, value] : given.items())
+            if (!known.contains(key)) log.warning(name + ": unknown setting '" + key + "' ignored");
+    const auto requireRange = [&](const char* key, int value, int lo, int hi) {
+        if (value < lo || value > hi)
+            throw UsageError("settings " + path.string() + ": " + key + " is " + std::to_string(value) + ", expected " +
+                             std::to_string(lo) + ".." + std::to_string(hi));
+    };
+    requireRange("width", settings.width, 1, lit::cli::kMaxImageSide);
+    requireRange("height", settings.height, 1, lit::cli::kMaxImageSide);
+    requireRange("voxelResolution", settings.voxelResolution, 64, 512);
+    if ((settings.voxelResolution & (settings.voxelResolution - 1)) != 0)
+        throw UsageError("settings " + path.string() + ": voxelResolution is " + std::to_string(settings.voxelResolution) +
+                         ", expected a power of two (64, 128, 256 or 512)");
+    requireRange("shadowMapSize", settings.shadowMapSize, 16, lit::cli::kMaxImageSide);
+    const auto clampWarn = [&](const char* key, auto& value, auto lo, auto hi) {
+        using T = std::decay_t<decltype(value)>;
+        const T clamped = std::clamp(value, static_cast<T>(lo), static_cast<T>(hi));
+        if (!(clamped == value)) {  // also catches NaN, which compares unequal
+            std::ostringstream line;
+            line << name << ": " << key << " " << value << " is outside " << lo << ".." << hi << "; using " << clamped;
+            log.warning(line.str());
+            value = clamped;
+        }
+    };
+    clampWarn("specularSamples", settings.specularSamples, 1, 8);
+    clampWarn("voxelSliceAxis", settings.voxelSliceAxis, 0, 2);
+    clampWarn("voxelSlice", settings.voxelSlice, 0.0f, 1.0f);
+    clampWarn("exposure", settings.exposure, 0.0f, 1e6f);
+    clampWarn("coneStepScale", settings.coneStepScale, 0.05f, 4.0f);
+    clampWarn("maxTraceDistance", settings.maxTraceDistance, 0.0f, 2.0f);
+}
+
+// The memory a render at this size needs, estimated before any of it is allocated: 64 bytes per
+// pixel (G-buffer, lighting and output targets plus the read-back copies; a 16384² render
+// measured 17.5 GB, issue #14) and 21 bytes per voxel (RGBA16F radiance with its mip chain plus
+// the RGBA8 albedo, normal and emission volumes).
+std::uint64_t estimatedRenderBytes(const lit::RenderSettings& settings) {
+    const auto pixels = static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
+    const auto side = static_cast<std::uint64_t>(settings.voxelResolution);
+    return pixels * 64 + (settings.gi ? side * side * side * 21 : 0);
+}
+
+// Bytes the GL can still give: system memory for a software rasterizer (llvmpipe renders into
+// RAM), free video memory where the driver says (NVX_gpu_memory_info); 0 = unknown.
+std::uint64_t availableRenderBytes() {
+    const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos) {
+        std::ifstream meminfo("/proc/meminfo");
+        std::string key;
+        std::uint64_t kib = 0;
+        std::string unit;
+        while (meminfo >> key >> kib >> unit)
+            if (key == "MemAvailable:") return kib * 1024;
+        return 0;
+    }
+    if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
+        GLint kib = 0;
+        glGetIntegerv(0x9049, &kib);  // GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX
+        return static_cast<std::uint64_t>(std::max(kib, 0)) * 1024;
+    }
+    return 0;
+}
+
+// Sizes checked against this GL's limits and memory before anything is rendered (exit 2).
+void checkRenderLimits(const lit::RenderSettings& settings) {
+    GLint maxTexture = 0, maxRenderbuffer = 0, maxWidth = 0, maxHeight = 0, max3d = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &maxWidth);
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &maxHeight);
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
+    const int maxSide = std::min({maxTexture, maxRenderbuffer, maxWidth, maxHeight});
+    if (settings.width > maxSide || settings.height > maxSide)
+        throw UsageError("the size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                         " is larger than this GL can render (" + std::to_string(maxSide) + " per side)");
+    if (settings.gi && settings.voxelResolution > max3d)
+        throw UsageError(std::to_string(settings.voxelResolution) + "^3 voxels are more than this GL's 3D textures hold (" +
+                         std::to_string(max3d) + " per side)");
+    const std::uint64_t needed = estimatedRenderBytes(settings);
+    std::uint64_t available = availableRenderBytes();
+    // $LIT_MAX_RENDER_MB caps it further (a shared machine, a CI runner).
+    if (const char* cap = std::getenv("LIT_MAX_RENDER_MB"); cap && *cap) {
+        const std::uint64_t capBytes = std::strtoull(cap, nullptr, 10) * 1'000'000ull;
+        if (capBytes > 0 && (available == 0 || capBytes < available)) available = capBytes;
+    }
+    if (available > 0 && needed > available)
+        throw UsageError("a " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " render with " +
+                         std::to_string(settings.voxelResolution) + "^3 voxels needs about " +
+                         std::to_string(needed / 1'000'000) + " MB, more than the " + std::to_string(available / 1'000'000) +
+                         " MB available; use a smaller --size or --voxels");
+}
+
+// An output folder is checked (created, and a file created and removed in it) before the render,
+// so a run that cannot write its result fails at once, not after the work (exit 2).
+void checkWritableFolder(const fs::path& file, const char* what) {
+    const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
+    std::error_code ec;
+    if (fs::is_directory(file, ec)) throw UsageError(std::string(what) + " " + file.string() + " is a folder, not a file");
+    fs::create_directories(folder, ec);
+    if (ec || !fs::is_directory(folder, ec))
+        throw UsageError(std::string("cannot create the folder ") + folder.string() + " for " + what + " " + file.string() +
+                         (ec ? " (" + ec.message() + ")" : std::string(" (a file is in the way)")));
+    const fs::path probe = folder / (".lit-render-probe-" + std::to_string(::getpid()));
+    {
+        std::ofstream out(probe, std::ios::binary);
+        if (!out) throw UsageError(std::string("cannot write ") + what + " " + file.string() + ": the folder " + folder.string() + " is not writable");
+    }
+    fs::remove(probe, ec);
 }
 
 void writeTextFileAtomic(const fs::path& path, const std::string& text) {
@@ -232,6 +362,13 @@ lit::CameraPath loadPath(const Options& options) {
     try {
         lit::CameraPath path;
         if (options.pathIsFile()) {
+            // A path file is a few kB; refuse what is not one before reading it whole.
+            std::error_code ec;
+            const fs::file_status status = fs::status(what, ec);
+            if (fs::exists(status) && !fs::is_regular_file(status))
+                throw UsageError("cannot use the camera path: " + what + " is not a regular file");
+            if (fs::exists(status) && fs::file_size(what, ec) > (16u << 20))
+                throw UsageError("cannot use the camera path: " + what + " is larger than 16 MiB, not a path file");
             path = lit::loadCameraPathJson(what);
         } else {
             const std::vector<std::string> names = lit::cameraAnimationNames(options.scene);
@@ -244,10 +381,10 @@ lit::CameraPath loadPath(const Options& options) {
             }
             path = lit::loadCameraPathFromGltf(options.scene, what);
         }
-        if (path.empty()) throw RunError("the camera path " + what + " has no keys");
+        if (path.empty()) throw UsageError("the camera path " + what + " has no keys");
         return path;
     } catch (const lit::CameraPathError& e) {
-        throw RunError(std::string("cannot use the camera path: ") + e.what());
+        throw UsageError(std::string("cannot use the camera path: ") + e.what());
     }
 }
 
@@ -324,7 +461,8 @@ private:
 
 // --path: renders every frame of the path (to PNGs with --frames-out) and times them (--bench-path).
 int runPath(const Options& options, const lit::CameraPath& path, const lit::Scene& scene, lit::Renderer& renderer,
-            const lit::RenderSettings& settings, const lit::HeadlessContext& context) {
+            const lit::RenderSettings& settings, const lit::HeadlessContext& context,
+            const std::function<void()>& requireNoGlErrors) {
     std::vector<double> times;
     try {
         times = path.frameTimes(options.pathFps());
@@ -367,6 +505,7 @@ int runPath(const Options& options, const lit::CameraPath& path, const lit::Scen
             flicker.add(view, settings.width, settings.height, renderer.readHdrRgb(), renderer.readDepth());
         }
         if (!options.framesOut.empty()) {
+            requireNoGlErrors();  // before each frame is written: no wrong frame on disk
             char name[32];
             std::snprintf(name, sizeof name, "frame_%05zu.png", i);
             rgba = renderer.readOutputRgba8();
@@ -376,6 +515,7 @@ int runPath(const Options& options, const lit::CameraPath& path, const lit::Scen
     }
     glFinish();
     progress.finish();
+    requireNoGlErrors();
 
     const double seconds = secondsSince(renderStart);
     if (options.benchPath) {
@@ -534,25 +674,30 @@ int run(const Options& options) {
     // Everything that needs no GL comes first, so a bad file or camera is reported at once.
     lit::RenderSettings settings;
     if (!options.settings.empty()) {
+        const std::string text = readTextFile(options.settings);
         try {
-            settings = lit::renderSettingsFromJson(readTextFile(options.settings));
-        } catch (const RunError&) {
-            throw;
+            settings = lit::renderSettingsFromJson(text);
         } catch (const std::exception& e) {
-            throw RunError("cannot use settings " + options.settings.string() + ": " + e.what());
+            throw UsageError("cannot use settings " + options.settings.string() + ": " + e.what());
         }
+        checkSettingsFile(options.settings, text, settings, log);
     }
     settings = lit::cli::applyOptions(options, settings);
+    for (const fs::path* file : {&options.out, &options.hdr, &options.benchJson})
+        if (!file->empty()) checkWritableFolder(*file, "the output");
+    if (!options.framesOut.empty()) checkWritableFolder(options.framesOut / "frame_00000.png", "the frames");
 
     lit::Scene scene;
     try {
-        scene = lit::loadGltf(options.scene, log);  // logs the summary line (meshes, triangles, MB, ms)
+        lit::GltfLoadOptions loadOptions;
+        loadOptions.limits.allowExternalUris = options.allowExternalUris;
+        scene = lit::loadGltf(options.scene, log, loadOptions);  // logs the summary line (meshes, triangles, MB, ms)
     } catch (const std::exception& e) {
         // The loader's messages usually start with the path already; say it once.
         std::string reason = e.what();
         const std::string prefix = options.scene.string() + ": ";
         if (reason.starts_with(prefix)) reason.erase(0, prefix.size());
-        throw RunError("cannot load " + options.scene.string() + ": " + reason);
+        throw UsageError("cannot load " + options.scene.string() + ": " + reason);
     }
     lit::addDefaultLightAndCamera(scene, log);
     const int cameraIndex = lit::cli::resolveCamera(options, scene);
@@ -561,10 +706,29 @@ int run(const Options& options) {
 
     lit::HeadlessContext context;
     lit::gl::requireCapabilities();
+    checkRenderLimits(settings);
+    // GL errors (debug output of high severity) are counted: a render that had any exits 1 and
+    // writes nothing, instead of a wrong image with exit 0.
+    std::size_t glErrors = 0;
+    log.setSink([&glErrors](const lit::LogMessage& m) {
+        if (m.level == lit::LogLevel::Error && m.text.starts_with("GL ")) ++glErrors;
+        if (m.level == lit::LogLevel::Info)
+            std::fprintf(stderr, "lit: %s\n", m.text.c_str());
+        else
+            std::fprintf(stderr, "lit: %s: %s\n", lit::toString(m.level), m.text.c_str());
+    });
     lit::gl::installDebugOutput(log);
-    lit::Renderer renderer(lit::defaultShaderRoot(), log);
+    const auto requireNoGlErrors = [&glErrors] {
+        glFinish();
+        if (glErrors > 0)
+            throw RunError(std::to_string(glErrors) + " GL error" + (glErrors == 1 ? "" : "s") +
+                           " during the render (see above); nothing was written");
+    };
+    const fs::path shaderRoot = lit::defaultShaderRoot();
+    log.info("shaders from " + shaderRoot.string());  // installed, $LIT_SHADER_DIR or source tree
+    lit::Renderer renderer(shaderRoot, log);
     renderer.setScene(scene);
-    if (path) return runPath(options, *path, scene, renderer, settings, context);
+    if (path) return runPath(options, *path, scene, renderer, settings, context, requireNoGlErrors);
 
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
@@ -595,6 +759,7 @@ int run(const Options& options) {
         }
     }
 
+    requireNoGlErrors();
     std::string written;
     if (!options.out.empty()) {
         const std::vector<std::uint8_t> rgba = renderer.readOutputRgba8();
