@@ -44,7 +44,7 @@ Document loadScene(const fs::path& sceneFile, const fs::path& documentFile, Log&
     GltfLoadOptions options;
     options.progress = progress;
     Scene scene = loadGltf(sceneFile, log, options);  // logs the summary line
-    addDefaultLightAndCamera(scene, log);
+    addDefaultCamera(scene, log);
     CameraPath path;
     try {
         const std::vector<std::string> names = cameraAnimationNames(sceneFile);

@@ -176,7 +176,7 @@ TEST(DocumentIO, SaveAndOpenKeepEveryEdit) {
     const CameraPath path(fixturePath().keys(), options);
     doc.edit("Path", Change::CameraPath, [&](Scene&) { doc.cameraPath = path; });
     doc.settings.gi = false;
-    doc.settings.exposure = 2.5f;
+    doc.settings.exposureEv = 1.5f;
     doc.settings.view = View::Albedo;
     doc.settings.voxelResolution = 64;
     ASSERT_TRUE(doc.dirty());
@@ -292,7 +292,7 @@ TEST(Autosave, WritesAfterTheIntervalOnlyWhenDirty) {
 TEST(Autosave, ACrashLeavesARecoverableCopy) {
     const fs::path folder = freshFolder("autosave_crash");
     Document doc = fixtureDocument();
-    doc.settings.exposure = 3.0f;
+    doc.settings.exposureEv = 3.0f;
     {
         Autosave crashed(folder, 60.0);
         moveBox(doc, 4.0f);
@@ -318,7 +318,7 @@ TEST(Autosave, ACrashLeavesARecoverableCopy) {
     const Document recovered = next.recover(log);
     EXPECT_EQ(recovered.scene.nodes[0].translation.x, 4.0f);
     EXPECT_EQ(recovered.file, fs::path("fixture.gltf"));
-    EXPECT_EQ(recovered.settings.exposure, 3.0f);
+    EXPECT_EQ(recovered.settings.exposureEv, 3.0f);
     EXPECT_EQ(recovered.cameraPath.keys().size(), 2u);
     EXPECT_TRUE(recovered.dirty());
     EXPECT_FALSE(next.recoverable());

@@ -216,6 +216,30 @@ private:
     double lastPrint_ = 0.0;  // seconds since start_
 };
 
+// Load progress on stderr, for long loads only: silent for the first second, then one line per
+// stage ("loading: images 12/69, 4.2 s") when the stage changes or a second has passed, and the
+// GPU upload as its own stage. Uses the loader's progress callback (GltfLoadOptions::progress),
+// which the editor's progress window reads as well.
+class LoadProgressPrinter {
+public:
+    void operator()(const lit::LoadProgress& p) {
+        const double elapsed = secondsSince(start_);
+        const bool newStage = p.stage != stage_;
+        stage_ = p.stage;
+        if (elapsed < 1.0 || (!newStage && elapsed - lastPrint_ < 1.0 && p.done < p.total)) return;
+        lastPrint_ = elapsed;
+        std::fprintf(stderr, "loading: %s %d/%d, %.1f s\n", p.stage.c_str(), p.done, p.total, elapsed);
+        std::fflush(stderr);
+    }
+    void stage(const char* name) { (*this)(lit::LoadProgress{name, 0, 1}); }
+    void done(const char* name) { (*this)(lit::LoadProgress{name, 1, 1}); }
+
+private:
+    Clock::time_point start_ = Clock::now();
+    std::string stage_;
+    double lastPrint_ = -1.0;
+};
+
 // The camera path --path names: a .json file, or a camera animation in the scene file. Runs
 // before any GL work so a bad path is reported at once.
 lit::CameraPath loadPath(const Options& options) {
@@ -330,8 +354,11 @@ int run(const Options& options) {
     settings = lit::cli::applyOptions(options, settings);
 
     lit::Scene scene;
+    LoadProgressPrinter loadProgress;
     try {
-        scene = lit::loadGltf(options.scene, log);  // logs the summary line (meshes, triangles, MB, ms)
+        lit::GltfLoadOptions loadOptions;
+        loadOptions.progress = [&](const lit::LoadProgress& p) { loadProgress(p); };
+        scene = lit::loadGltf(options.scene, log, loadOptions);  // logs the summary line (meshes, triangles, MB, ms)
     } catch (const std::exception& e) {
         // The loader's messages usually start with the path already; say it once.
         std::string reason = e.what();
@@ -339,7 +366,7 @@ int run(const Options& options) {
         if (reason.starts_with(prefix)) reason.erase(0, prefix.size());
         throw RunError("cannot load " + options.scene.string() + ": " + reason);
     }
-    lit::addDefaultLightAndCamera(scene, log);
+    lit::addDefaultCamera(scene, log);
     const int cameraIndex = lit::cli::resolveCamera(options, scene);
     const std::optional<lit::CameraPath> path = options.path ? std::optional(loadPath(options)) : std::nullopt;
 
@@ -347,7 +374,9 @@ int run(const Options& options) {
     lit::gl::requireCapabilities();
     lit::gl::installDebugOutput(log);
     lit::Renderer renderer(lit::defaultShaderRoot(), log);
+    loadProgress.stage("upload");
     renderer.setScene(scene);
+    loadProgress.done("upload");
     if (path) return runPath(options, *path, scene, renderer, settings, context);
 
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
@@ -362,6 +391,7 @@ int run(const Options& options) {
         if (options.benchFrames > 0) recordBenchFrame(bench, passIndex, renderer, frameStart);
     }
     glFinish();
+    if (settings.autoExposure) std::printf("auto exposure: %+.2f EV\n", static_cast<double>(renderer.exposureEv(settings)));
     if (options.benchFrames > 0 && settings.gi) bench.mipmaps = renderer.benchmarkMipmaps(7);
 
     if (options.benchFrames > 0) {
