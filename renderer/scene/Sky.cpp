@@ -90,6 +90,21 @@ glm::vec3 skyRadiance(const Sky& sky, glm::vec3 direction) {
     return radiance * sky.intensity;
 }
 
+std::function<glm::vec3(const glm::vec3&)> makeSkyFunction(const Scene& scene, const RenderSettings& settings,
+                                                          std::string* error) {
+    std::shared_ptr<SkyImage> image;
+    if (settings.skyMode == SkyMode::Hdr) {
+        try {
+            image = std::make_shared<SkyImage>(loadSkyImage(settings.skyHdrPath));
+        } catch (const SkyLoadError& e) {
+            if (error) *error = e.what();
+        }
+    }
+    const Sky sky = resolveSky(scene, settings, image.get());
+    if (sky.mode == SkyMode::None) return {};
+    return [sky, image](const glm::vec3& direction) { return skyRadiance(sky, direction); };
+}
+
 bool hasDefaultSun(const Scene& scene, const RenderSettings& settings) {
     return settings.defaultSunIrradiance > 0.0f && !sceneHasLights(scene);
 }

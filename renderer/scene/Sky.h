@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -49,6 +50,13 @@ Sky resolveSky(const Scene& scene, const RenderSettings& settings, const SkyImag
 // Radiance arriving from `direction` (world space, any length > 0). Bilinear lookup of the image
 // at full resolution (texel centres at (i + ½)/size; u wraps, v clamps), as sky.glsl at lod 0.
 glm::vec3 skyRadiance(const Sky& sky, glm::vec3 direction);
+
+// The sky as a self-contained function of a world direction, for renderers that evaluate it on
+// the CPU (the reference path tracer's rays that leave the scene: reference::Environment). Loads
+// settings.skyHdrPath when the mode is Hdr (the closure owns the image; an unreadable file gives
+// the gradient, with the error in `*error` when given). Empty function when the sky is None.
+std::function<glm::vec3(const glm::vec3&)> makeSkyFunction(const Scene& scene, const RenderSettings& settings,
+                                                          std::string* error = nullptr);
 
 // The default sun of a scene without lights: whether there is one, and the unit world direction
 // its light travels (from the sun at defaultSunElevation above the horizon, azimuth

@@ -228,8 +228,17 @@ TEST(Sky, GradientAndAutoMode) {
     lit.nodes.push_back(holder);
     EXPECT_EQ(resolveSky(lit, settings, nullptr).mode, SkyMode::None) << "a lit scene keeps a black world";
     EXPECT_FALSE(hasDefaultSun(lit, settings));
+    // The CPU function the reference path tracer uses on ray misses: the same sky.
+    EXPECT_FALSE(makeSkyFunction(lit, settings)) << "no sky for a lit scene in auto mode";
+    const auto function = makeSkyFunction(bare, settings);
+    ASSERT_TRUE(function);
+    EXPECT_EQ(function({0.3f, 0.5f, -0.2f}), skyRadiance(sky, {0.3f, 0.5f, -0.2f}));
     settings.skyMode = SkyMode::Hdr;
     EXPECT_EQ(resolveSky(lit, settings, nullptr).mode, SkyMode::Gradient) << "no image: the gradient";
+    std::string error;
+    settings.skyHdrPath = "no_such_sky.hdr";
+    EXPECT_TRUE(makeSkyFunction(lit, settings, &error));
+    EXPECT_NE(error.find("no_such_sky.hdr"), std::string::npos);
 }
 
 // An equirectangular .hdr read through stb_image: each texel centre's direction returns that

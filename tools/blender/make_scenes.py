@@ -7,7 +7,8 @@
 # Writes OUT_DIR/<scene>.gltf + .bin, OUT_DIR/<scene>_cycles.png (Standard view transform, for
 # eyes) and OUT_DIR/cycles_reference.json with the linear mean of each Cycles render (read back
 # from an OpenEXR of the render, so no view transform or sRGB curve is involved) and how it was
-# made. tests/gl/test_blender_scenes.cpp compares Lit's linear HDR mean with those numbers.
+# made, also of a render with no bounces (direct light only). tests/gl/test_scene_defaults.cpp
+# compares Lit's linear HDR means with those numbers.
 #
 # The scenes: an open room (floor, back wall, red left wall, a box and a sphere), black world,
 # hard shadows (light radius 0), lit by one light each:
@@ -139,18 +140,37 @@ def setup_render():
     world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
 
 
-def render_mean(path_png, path_exr):
-    scene = bpy.context.scene
-    scene.render.image_settings.file_format = "OPEN_EXR"
-    scene.render.image_settings.color_depth = "32"
-    scene.render.filepath = path_exr
-    bpy.ops.render.render(write_still=True)
+def exr_mean(path_exr):
     image = bpy.data.images.load(path_exr)
     pixels = list(image.pixels)
     n = len(pixels) // 4
     mean = [sum(pixels[c::4]) / n for c in range(3)]
     bpy.data.images.remove(image)
     os.remove(path_exr)
+    return mean
+
+
+def render_direct_mean(path_exr):
+    # Light that reaches the camera after one surface only (Cycles with no bounces): Lit's
+    # direct terms, to tell the light units apart from the GI.
+    scene = bpy.context.scene
+    bounces = scene.cycles.max_bounces
+    scene.cycles.max_bounces = 0
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.filepath = path_exr
+    bpy.ops.render.render(write_still=True)
+    scene.cycles.max_bounces = bounces
+    return exr_mean(path_exr)
+
+
+def render_mean(path_png, path_exr):
+    scene = bpy.context.scene
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.filepath = path_exr
+    bpy.ops.render.render(write_still=True)
+    mean = exr_mean(path_exr)
     scene.render.image_settings.file_format = "PNG"
     scene.render.image_settings.color_depth = "8"
     scene.render.filepath = path_png
@@ -168,8 +188,11 @@ def make(kind, folder):
     bpy.ops.export_scene.gltf(filepath=gltf, export_format="GLTF_SEPARATE", export_lights=True,
                               export_cameras=True, export_extras=True, export_apply=True)
     mean = render_mean(os.path.join(folder, kind + "_cycles.png"), os.path.join(folder, kind + "_cycles.exr"))
-    luminance = 0.2126 * mean[0] + 0.7152 * mean[1] + 0.0722 * mean[2]
-    return {"meanRgb": mean, "meanLuminance": luminance}
+    direct = render_direct_mean(os.path.join(folder, kind + "_cycles_direct.exr"))
+    def luminance(rgb):
+        return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]
+    return {"meanRgb": mean, "meanLuminance": luminance(mean),
+            "directMeanRgb": direct, "directMeanLuminance": luminance(direct)}
 
 
 def main():
@@ -182,7 +205,7 @@ def main():
         "made": "blender -b --factory-startup --python tools/blender/make_scenes.py -- " + os.path.relpath(folder),
         "blender": bpy.app.version_string,
         "cycles": {"samples": SAMPLES, "size": [SIZE, SIZE], "denoising": False, "device": "CPU",
-                   "bounces": "Blender defaults (max 12, diffuse 4, glossy 4)"},
+                   "bounces": "Blender defaults (max 12, diffuse 4, glossy 4); direct*: max bounces 0"},
         "viewTransform": "Standard, look None, exposure 0, gamma 1 (the PNGs); the means are of the linear "
                          "OpenEXR render (scene-linear radiance, no view transform), all pixels, world black",
         "gltfExport": "Blender glTF exporter, default lighting mode (Standard: W -> cd as W/(4 pi) x 683, "
