@@ -79,8 +79,8 @@ struct RenderSettings {
     // When the scene has no lights, a sun at this elevation/azimuth (radians) with this irradiance
     // (W/m² perpendicular to it, 2.7 klx at 683 lm/W); 0 = none.
     float defaultSunIrradiance = 4.0f;
-    float defaultSunElevation = 0.9f;   // 52° above the horizon
-    float defaultSunAzimuth = 0.6f;     // from +Z towards +X
+    float defaultSunElevation = 1.05f;  // 60° above the horizon: reaches the floor of courtyards
+    float defaultSunAzimuth = 1.2f;     // from +Z towards +X (69°)
 
     float exposureScale() const { return std::exp2(exposureEv); }
 
