@@ -60,6 +60,22 @@ std::string displayName(const std::filesystem::path& file) {
     return file.empty() ? std::string("untitled") : file.filename().string();
 }
 
+// What the renderer's GpuScene depends on besides transforms and material values: the nodes'
+// meshes, the meshes' primitives' materials and the material count (App::syncRendererStructure).
+std::vector<int> structureOf(const Scene& scene) {
+    std::vector<int> structure;
+    structure.reserve(scene.nodes.size() + scene.meshes.size() * 2 + 4);
+    structure.push_back(static_cast<int>(scene.nodes.size()));
+    for (const Node& node : scene.nodes) structure.push_back(node.mesh);
+    structure.push_back(static_cast<int>(scene.meshes.size()));
+    for (const Mesh& mesh : scene.meshes) {
+        structure.push_back(static_cast<int>(mesh.primitives.size()));
+        for (const Primitive& p : mesh.primitives) structure.push_back(p.material);
+    }
+    structure.push_back(static_cast<int>(scene.materials.size()));
+    return structure;
+}
+
 void createParentFolder(const std::filesystem::path& file) {
     const std::filesystem::path parent = file.parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
@@ -84,6 +100,7 @@ App::App(const EditorOptions& options, std::vector<ScriptCommand> script)
     imgui_.emplace(window_.handle());
     blitSource_ = gl::Framebuffer("editor viewport blit source");
     renderer_->setScene(doc_.scene);
+    uploadedStructure_ = structureOf(doc_.scene);
     std::optional<std::filesystem::path> initialLoad;
     if (interactive()) initialLoad = options_.scene.value_or(defaultScenePath());
     if (sceneError_.empty() && !initialLoad) recent_.add(options_.scene.value_or(defaultScenePath()));
@@ -217,6 +234,13 @@ void App::startLoading(const std::filesystem::path& path) {
 
 void App::finishLoading() {
     if (!loading_ || loading_->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    if (!loading_->uploading) {
+        // The upload (Renderer::setScene) blocks this thread: show its stage for one frame first.
+        loading_->uploading = true;
+        const std::lock_guard lock(loading_->status->mutex);
+        loading_->status->progress = {"upload", 0, 1};
+        return;
+    }
     Loading loading = std::move(*loading_);
     loading_.reset();
     try {
@@ -242,13 +266,26 @@ void App::drawLoadingWindow() {
                                         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize;
     if (ImGui::Begin("Loading", nullptr, kFlags)) {
         ImGui::Text("Loading %s", loading_->file.filename().string().c_str());
-        // The stages in order, each counted from 0 to its total: show the stage's own fraction.
-        const float fraction =
-            progress.total > 0 ? static_cast<float>(progress.done) / static_cast<float>(progress.total) : 0.0f;
-        char overlay[96];
-        std::snprintf(overlay, sizeof overlay, "%s %d / %d", progress.stage.empty() ? "starting" : progress.stage.c_str(),
-                      progress.done, progress.total);
-        ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), overlay);
+        // Each stage with its own bar (done, running, waiting), then the whole load weighted by
+        // stage (LoadStages.h), which stays short of 100 % until the document is in.
+        const auto fractions = loadStageFractions(progress);
+        const int current = loadStageIndex(progress.stage);
+        for (std::size_t i = 0; i < kLoadStages.size(); ++i) {
+            const int index = static_cast<int>(i);
+            char overlay[64];
+            if (index < current) std::snprintf(overlay, sizeof overlay, "done");
+            else if (index > current) std::snprintf(overlay, sizeof overlay, "waiting");
+            else if (progress.total > 1) std::snprintf(overlay, sizeof overlay, "%d / %d", progress.done, progress.total);
+            else std::snprintf(overlay, sizeof overlay, "running");
+            ImGui::TextUnformatted(kLoadStages[i].label);
+            ImGui::SameLine(140.0f);
+            ImGui::ProgressBar(fractions[i], ImVec2(-1.0f, 0.0f), overlay);
+        }
+        ImGui::Separator();
+        char total[32];
+        const float overall = overallLoadFraction(progress);
+        std::snprintf(total, sizeof total, "%.0f %%", 100.0 * overall);
+        ImGui::ProgressBar(overall, ImVec2(-1.0f, 0.0f), total);
         ImGui::TextDisabled("%.1f s", glfwGetTime() - loading_->startSeconds);
     }
     ImGui::End();
@@ -259,6 +296,7 @@ std::string App::adoptDocument(Document loaded, const std::filesystem::path& pat
     doc_ = std::move(loaded);
     try {
         renderer_->setScene(doc_.scene);
+        uploadedStructure_ = structureOf(doc_.scene);
     } catch (const std::exception& error) {
         // The file parsed but the GPU copy failed (e.g. a texture over the driver's limits):
         // fall back to an empty scene rather than render a half-uploaded one.
@@ -266,6 +304,7 @@ std::string App::adoptDocument(Document loaded, const std::filesystem::path& pat
         log_.error(sceneError_);
         doc_ = Document{};
         renderer_->setScene(doc_.scene);
+        uploadedStructure_ = structureOf(doc_.scene);
         resetCamera();
         updateTitle();
         return sceneError_;
@@ -402,10 +441,23 @@ int App::run() {
         updateCamera(std::min(static_cast<float>(frameSeconds), kMaxCameraStep));
         updatePlayback(frameSeconds);
         handleViewportMouse(currentView());
+        const glm::ivec2 previousRenderSize{doc_.settings.width, doc_.settings.height};
+        drawUi(previousRenderSize);
+        // The 2D views fill the free area between the panels; the camera views the whole window
+        // (the panels float over it).
+        const glm::vec2 display(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);
+        const glm::vec2 toPixels = display.x > 0.0f && display.y > 0.0f ? glm::vec2(framebuffer) / display : glm::vec2(1.0f);
+        glm::ivec4 target{0, 0, framebuffer.x, framebuffer.y};  // x, y (bottom-up), width, height in pixels
+        if (flatView() && viewportRect_.z > 1.0f && viewportRect_.w > 1.0f) {
+            const glm::vec2 size = glm::vec2(viewportRect_.z, viewportRect_.w) * toPixels;
+            const glm::vec2 topLeft = glm::vec2(viewportRect_.x, viewportRect_.y) * toPixels;
+            target = glm::ivec4(glm::round(topLeft.x), glm::round(static_cast<float>(framebuffer.y) - topLeft.y - size.y),
+                                glm::max(glm::ivec2(glm::round(size)), glm::ivec2(1)));
+        }
         const glm::ivec2 renderSize =
-            glm::max(glm::ivec2(glm::round(glm::vec2(framebuffer) * std::clamp(viewport_.renderScale, 0.1f, 1.0f))),
+            glm::max(glm::ivec2(glm::round(glm::vec2(target.z, target.w) * std::clamp(viewport_.renderScale, 0.1f, 1.0f))),
                      glm::ivec2(1));
-        drawUi(renderSize);
+        syncRendererStructure();
 
         doc_.settings.width = renderSize.x;
         doc_.settings.height = renderSize.y;
@@ -425,7 +477,7 @@ int App::run() {
         }
         renderer_->render(doc_.scene, view, frameSettings);
         takeScreenshots(/*withUi=*/false, framebuffer);
-        presentViewport(framebuffer);
+        presentViewport(framebuffer, target);
         imgui_->render();
         takeScreenshots(/*withUi=*/true, framebuffer);
         ++framesRendered;
@@ -485,9 +537,10 @@ void App::updateCamera(float dtSeconds) {
         lastCursor_ = cursor;
     }
 
-    // Keys move the camera unless a text field or a dragged widget has the keyboard, or Ctrl
-    // makes them shortcuts (Ctrl+S saves rather than backing away).
-    if (!io.WantCaptureKeyboard && !io.KeyCtrl) {
+    // Keys fly the camera only while the right mouse button looks around (as in Unity, Godot
+    // and Unreal), so W / E / R are free to pick the gizmo otherwise; not while a text field or
+    // a dragged widget has the keyboard, nor with Ctrl (Ctrl+S saves rather than backing away).
+    if (looking_ && !io.WantCaptureKeyboard && !io.KeyCtrl) {
         auto held = [window](int key) { return glfwGetKey(window, key) == GLFW_PRESS ? 1.0f : 0.0f; };
         input.move.x = held(GLFW_KEY_D) - held(GLFW_KEY_A);
         input.move.y = held(GLFW_KEY_E) - held(GLFW_KEY_Q);
@@ -512,13 +565,148 @@ void App::handleShortcuts() {
     if (pressed(GLFW_KEY_SPACE) && !doc_.cameraPath.empty()) {
         if (playback_.playing) playback_.playing = false; else playback_.play(doc_.cameraPath);
     }
-    if (pressed(GLFW_KEY_ESCAPE)) doc_.selectedNode = -1;
+    if (pressed(GLFW_KEY_ESCAPE)) doc_.select(-1);
+    if (io.KeyCtrl && pressed(GLFW_KEY_D)) logRefusal(duplicateSelection(doc_));
+    // Editing keys; while the right mouse button is held the letters fly the camera instead.
+    if (looking_ || io.KeyCtrl || io.KeyAlt) return;
+    if (pressed(GLFW_KEY_DELETE) || pressed(GLFW_KEY_X)) logRefusal(deleteSelection(doc_));
+    if (pressed(GLFW_KEY_W)) gizmoMode_ = GizmoMode::Translate;
+    if (pressed(GLFW_KEY_E)) gizmoMode_ = GizmoMode::Rotate;
+    if (pressed(GLFW_KEY_R)) gizmoMode_ = GizmoMode::Scale;
+    if (pressed(GLFW_KEY_T)) gizmoSpace_ = gizmoSpace_ == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
+    if (pressed(GLFW_KEY_F)) frameSelection();
+    for (int digit = 0; digit <= 9; ++digit)
+        if (pressed(GLFW_KEY_0 + digit))
+            if (const EditorView* view = editorViewForKey(digit, io.KeyShift)) setView(std::string(view->name));
+}
+
+void App::logRefusal(const std::string& message) {
+    if (!message.empty()) log_.warning(message);
+}
+
+std::string App::setView(const std::string& name) {
+    viewport_.coneDirections = name == kConeDirectionsView;
+    if (viewport_.coneDirections) {
+        doc_.settings.view = View::Final;
+        return "";
+    }
+    coneSurface_.reset();
+    const std::optional<View> view = parseView(name);
+    if (!view) return "unknown view '" + name + "'";
+    doc_.settings.view = *view;
+    return "";
+}
+
+bool App::flatView() const { return doc_.settings.view == View::ShadowMap || doc_.settings.view == View::VoxelSlice; }
+
+void App::addNodeInFront(NodeKind kind) {
+    // Two metres (or a tenth of the scene) in front of the camera; lights and cameras look the
+    // way the camera does, so a new spot light lights what is in view.
+    const Aabb bounds = doc_.scene.worldBounds();
+    const float distance = bounds.empty() ? 2.0f : std::clamp(0.1f * glm::length(bounds.size()), 1.0f, 10.0f);
+    const glm::vec3 forward = camera_.forward();
+    const glm::vec3 direction = kind == NodeKind::DirectionalLight ? glm::normalize(forward + glm::vec3(0.0f, -1.0f, 0.0f)) : forward;
+    addNode(doc_, kind, camera_.position + forward * distance, direction);
+}
+
+void App::frameSelection() {
+    const std::vector<int> selected = doc_.selection();
+    if (selected.empty()) return;
+    Aabb bounds;
+    for (const int node : selected) {
+        const Aabb b = nodeWorldBounds(doc_.scene, node);
+        bounds.extend(b.min);
+        bounds.extend(b.max);
+    }
+    const float distance = frameBounds(camera_, bounds);
+    // A small object far from the scene's near plane: bring the near plane close enough to see it.
+    znear_ = std::min(znear_, std::max(0.01f * distance, 1e-3f));
+}
+
+void App::syncRendererStructure() {
+    std::vector<int> structure = structureOf(doc_.scene);
+    if (structure == uploadedStructure_) return;
+    try {
+        renderer_->setScene(doc_.scene);
+    } catch (const std::exception& error) {
+        log_.error(std::string("cannot upload the edited scene: ") + error.what());
+    }
+    uploadedStructure_ = std::move(structure);
+}
+
+void App::drawViewportBar(float menuHeight) {
+    // The free area between the panels shown (from the layout; a moved panel is not followed).
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(), ImGuiCond_Always);
+    constexpr float kMargin = 8.0f;
+    float left = 0.0f, right = display.x, top = menuHeight, bottom = display.y;
+    if (visible_.hierarchy || visible_.inspector) left = layout.hierarchy.position.x + layout.hierarchy.size.x + kMargin;
+    if (visible_.renderSettings || visible_.camera) right = layout.renderSettings.position.x - kMargin;
+    if (visible_.log || visible_.timeline) bottom = layout.log.position.y - kMargin;
+    viewportRect_ = {left, top, std::max(right - left, 1.0f), std::max(bottom - top, 1.0f)};
+
+    // Bottom right of the free area: the stats overlay has the top left.
+    ImGui::SetNextWindowPos(ImVec2(right - kMargin, bottom - kMargin), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
+                                        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
+                                        ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    if (ImGui::Begin("Viewport bar", nullptr, kFlags)) {
+        auto modeButton = [this](const char* label, GizmoMode mode, const char* tip) {
+            const bool current = gizmoMode_ == mode;
+            if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+            if (ImGui::Button(label)) gizmoMode_ = mode;
+            if (current) ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+            ImGui::SameLine();
+        };
+        modeButton("Move", GizmoMode::Translate, "Translate gizmo (W)");
+        modeButton("Rotate", GizmoMode::Rotate, "Rotate gizmo (E)");
+        modeButton("Scale", GizmoMode::Scale, "Scale gizmo (R), always along the node's own axes");
+        if (ImGui::Button(gizmoSpace_ == GizmoSpace::World ? "World" : "Local"))
+            gizmoSpace_ = gizmoSpace_ == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo axes: the world's or the node's own (T)");
+        ImGui::SameLine();
+        ImGui::Checkbox("Snap", &snap_.enabled);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Snap gizmo drags to the steps below (or hold Ctrl while dragging)");
+        ImGui::SameLine();
+        if (ImGui::Button("Steps...")) ImGui::OpenPopup("snap steps");
+        if (ImGui::BeginPopup("snap steps")) {
+            ImGui::SetNextItemWidth(120.0f);
+            ImGui::DragFloat("Move (m)", &snap_.translateStep, 0.01f, 0.001f, 100.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+            ImGui::SetNextItemWidth(120.0f);
+            ImGui::DragFloat("Rotate (deg)", &snap_.rotateStepDegrees, 0.5f, 0.1f, 180.0f, "%.1f");
+            ImGui::SetNextItemWidth(120.0f);
+            ImGui::DragFloat("Scale (factor)", &snap_.scaleStep, 0.01f, 0.001f, 10.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+            snap_.translateStep = std::max(snap_.translateStep, 0.001f);
+            snap_.rotateStepDegrees = std::max(snap_.rotateStepDegrees, 0.1f);
+            snap_.scaleStep = std::max(snap_.scaleStep, 0.001f);
+            ImGui::EndPopup();
+        }
+        // The current view, so a data view is never mistaken for the final image.
+        const std::string name = viewport_.coneDirections ? std::string(kConeDirectionsView)
+                                                          : std::string(toString(doc_.settings.view));
+        const EditorView* view = findEditorView(name);
+        ImGui::Text("View: %s (%s)", view ? std::string(view->label).c_str() : name.c_str(),
+                    view ? std::string(view->shortcut).c_str() : "-");
+        const std::size_t selected = doc_.selection().size();
+        if (selected > 1) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("| %zu selected", selected);
+        }
+    }
+    ImGui::End();
 }
 
 void App::drawUi(glm::ivec2 renderSize) {
     float menuHeight = 0.0f;
-    const MenuContext menuContext{recent_, doc_.file.empty() ? std::filesystem::path("untitled.gltf") : doc_.file,
-                                  doc_.undoLabel(), doc_.redoLabel()};
+    const MenuContext menuContext{recent_,
+                                  doc_.file.empty() ? std::filesystem::path("untitled.gltf") : doc_.file,
+                                  doc_.undoLabel(),
+                                  doc_.redoLabel(),
+                                  viewport_.coneDirections ? std::string(kConeDirectionsView)
+                                                           : std::string(toString(doc_.settings.view)),
+                                  !doc_.selection().empty()};
     const MenuRequests menu = mainMenu_.draw(visible_, menuContext, menuHeight);
 
     const ImVec2 display = ImGui::GetIO().DisplaySize;
@@ -545,11 +733,13 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.timeline) timelinePanel_.draw(doc_, playback_, camera_, layout.timeline, &visible_.timeline);
     if (visible_.camera && drawCameraPanel(camera_, layout.camera, &visible_.camera).resetToSceneCamera) resetCamera();
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
+    drawViewportBar(menuHeight);
     drawErrorPanel(sceneError_, display, menuHeight);
     drawLoadingWindow();
     // An edit opened by a widget that never reported its deactivation (a colour picker popup)
     // ends once nothing is being dragged or typed into.
     if (doc_.editOpen() && !ImGui::IsAnyItemActive() && !gizmo_.active()) doc_.endEdit();
+    if (!gizmo_.active()) dragged_.clear();
 
     handleShortcuts();
     answerUnsavedChanges(unsavedQuestion_.draw());
@@ -571,9 +761,15 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (menu.screenshotWithUi) requestTimestampedScreenshot(/*withUi=*/true, 1);
     if (menu.quit) requestQuit();
     if (menu.open) requestOpen(*menu.open);
+    if (menu.add) addNodeInFront(*menu.add);
+    if (menu.deleteSelection) logRefusal(deleteSelection(doc_));
+    if (menu.duplicateSelection) logRefusal(duplicateSelection(doc_));
+    if (menu.frameSelection) frameSelection();
+    if (menu.view) setView(*menu.view);
+    logRefusal(std::exchange(doc_.lastRefusal, {}));
 }
 
-void App::presentViewport(glm::ivec2 framebufferSize) {
+void App::presentViewport(glm::ivec2 framebufferSize, glm::ivec4 target) {
     // Draw into the window's back buffer, over all of it, whatever state the passes left.
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, framebufferSize.x, framebufferSize.y);
@@ -592,9 +788,9 @@ void App::presentViewport(glm::ivec2 framebufferSize) {
     blitSource_.attach(GL_COLOR_ATTACHMENT0, output);
     glNamedFramebufferReadBuffer(blitSource_.id(), GL_COLOR_ATTACHMENT0);
     const glm::ivec2 source{output.desc().width, output.desc().height};
-    const GLenum filter = source == framebufferSize ? GL_NEAREST : GL_LINEAR;
-    glBlitNamedFramebuffer(blitSource_.id(), 0, 0, 0, source.x, source.y, 0, 0, framebufferSize.x, framebufferSize.y,
-                           GL_COLOR_BUFFER_BIT, filter);
+    const GLenum filter = source == glm::ivec2(target.z, target.w) ? GL_NEAREST : GL_LINEAR;
+    glBlitNamedFramebuffer(blitSource_.id(), 0, 0, 0, source.x, source.y, target.x, target.y, target.x + target.z,
+                           target.y + target.w, GL_COLOR_BUFFER_BIT, filter);
 }
 
 void App::saveScreenshot(glm::ivec2 framebufferSize, const std::filesystem::path& path) {
@@ -694,30 +890,106 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
         static const std::string kNone;
         return i < args.size() ? args[i] : kNone;
     };
-    if (name == "select") {
-        if (arg(0) == "-") {
-            doc_.selectedNode = -1;
+    if (name == "select" || name == "select+") {
+        if (name == "select" && arg(0) == "-") {
+            doc_.select(-1);
             return "";
         }
         const int node = findNode(doc_.scene, arg(0));
         if (node < 0) return "no node called '" + arg(0) + "'";
-        doc_.selectedNode = node;
+        doc_.select(node, name == "select+");
         return "";
     }
-    if (name == "set") return setProperty(doc_, arg(0), arg(1));
-    if (name == "setting") return applySetting(doc_.settings, arg(0), arg(1));
-    if (name == "view") {
-        viewport_.coneDirections = arg(0) == kConeDirectionsView;
-        if (viewport_.coneDirections) {
-            doc_.settings.view = View::Final;
+    if (name == "add") {
+        const std::optional<NodeKind> kind = parseNodeKind(arg(0));
+        if (!kind) return "unknown kind '" + arg(0) + "'";
+        if (args.size() == 4) {
+            const auto x = parseNumber<float>(arg(1)), y = parseNumber<float>(arg(2)), z = parseNumber<float>(arg(3));
+            if (!x || !y || !z) return "add: expected X Y Z";
+            addNode(doc_, *kind, {*x, *y, *z}, kind == NodeKind::DirectionalLight ? glm::vec3(0.3f, -1.0f, -0.2f) : camera_.forward());
+        } else {
+            addNodeInFront(*kind);
+        }
+        return "";
+    }
+    if (name == "delete") return deleteSelection(doc_);
+    if (name == "duplicate") return duplicateSelection(doc_);
+    if (name == "parent") {
+        int parent = -1;
+        if (arg(0) != "-") {
+            parent = findNode(doc_.scene, arg(0));
+            if (parent < 0) return "no node called '" + arg(0) + "'";
+        }
+        return reparentSelection(doc_, parent);
+    }
+    if (name == "material") {
+        if (doc_.selectedNode < 0) return "no node is selected";
+        return makeMaterialUnique(doc_, doc_.selectedNode, doc_.selectedPrimitive);
+    }
+    if (name == "primitive") {
+        if (doc_.selectedNode < 0) return "no node is selected";
+        const int mesh = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].mesh;
+        const int count = mesh >= 0 ? static_cast<int>(doc_.scene.meshes[static_cast<std::size_t>(mesh)].primitives.size()) : 0;
+        const int index = parseNumber<int>(arg(0)).value_or(-1);
+        if (index < 0 || index >= count)
+            return "primitive: the selected node has " + std::to_string(count) + " primitives, not " + arg(0);
+        doc_.selectedPrimitive = index;
+        return "";
+    }
+    if (name == "gizmo") {
+        gizmoMode_ = parseGizmoMode(arg(0)).value_or(GizmoMode::Translate);
+        return "";
+    }
+    if (name == "space") {
+        gizmoSpace_ = arg(0) == "local" ? GizmoSpace::Local : GizmoSpace::World;
+        return "";
+    }
+    if (name == "snap") {
+        if (args.size() == 1) {
+            snap_.enabled = arg(0) == "on";
             return "";
         }
-        coneSurface_.reset();
-        const std::optional<View> view = parseView(arg(0));
-        if (!view) return "unknown view '" + arg(0) + "'";
-        doc_.settings.view = *view;
+        snap_.translateStep = parseNumber<float>(arg(0)).value_or(snap_.translateStep);
+        snap_.rotateStepDegrees = parseNumber<float>(arg(1)).value_or(snap_.rotateStepDegrees);
+        snap_.scaleStep = parseNumber<float>(arg(2)).value_or(snap_.scaleStep);
+        snap_.enabled = true;
         return "";
     }
+    if (name == "drag") {
+        float v[4] = {};
+        for (std::size_t i = 0; i < 4; ++i) v[i] = parseNumber<float>(arg(i)).value_or(0.0f);
+        if (doc_.selectedNode < 0) return "drag: no node is selected";
+        const CameraView view = currentView();
+        if (!beginGizmoDrag(view, {v[0], v[1]}))
+            return "drag: no " + std::string(gizmoModeName(gizmoMode_)) + " gizmo handle at (" + arg(0) + ", " + arg(1) + ")";
+        // In steps, as a mouse would move, so a rotation can be unwrapped past 180°.
+        constexpr int kSteps = 16;
+        for (int i = 1; i <= kSteps; ++i) {
+            const float t = static_cast<float>(i) / kSteps;
+            continueGizmoDrag(view, {v[0] + t * (v[2] - v[0]), v[1] + t * (v[3] - v[1])}, false);
+        }
+        endGizmoDrag();
+        return "";
+    }
+    if (name == "frame") {
+        if (doc_.selection().empty()) return "frame: no node is selected";
+        frameSelection();
+        return "";
+    }
+    if (name == "orbit") {
+        const std::optional<float> dx = parseNumber<float>(arg(0)), dy = parseNumber<float>(arg(1));
+        if (!dx || !dy) return "orbit: expected DX DY pixels";
+        const Aabb bounds = doc_.scene.worldBounds();
+        const glm::vec3 pivot = doc_.selectedNode >= 0 ? nodeWorldPosition(doc_.scene, doc_.selectedNode)
+                                : bounds.empty()       ? camera_.position + camera_.forward() * 2.0f
+                                                       : bounds.center();
+        orbitAround(camera_, pivot, {*dx, *dy});
+        return "";
+    }
+    if (name == "animation") return chooseCameraAnimation(doc_, arg(0));
+    if (name == "set") return setProperty(doc_, arg(0), arg(1));
+    if (name == "setting") return applySetting(doc_.settings, arg(0), arg(1));
+    if (name == "view") return setView(arg(0));
     if (name == "panel") {
         bool* flag = panelFlag(visible_, arg(0));
         if (flag == nullptr) return "unknown panel '" + arg(0) + "'";
@@ -809,50 +1081,111 @@ std::string App::pickAt(glm::vec2 windowPixel) {
         if (!coneSurface_) log_.info("cone directions: no surface under the cursor");
         return "";
     }
-    doc_.selectedNode = renderer_->pickNode(pixel);
+    const int node = renderer_->pickNode(pixel);
+    // Shift+click adds to (or takes from) the selection; a click on nothing with Shift keeps it.
+    doc_.select(node, ImGui::GetIO().KeyShift);
     return "";
 }
 
 void App::handleViewportMouse(const CameraView& view) {
     const ImGuiIO& io = ImGui::GetIO();
-    const glm::vec2 display(io.DisplaySize.x, io.DisplaySize.y);
     const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
     const bool selection = doc_.selectedNode >= 0 && doc_.selectedNode < static_cast<int>(doc_.scene.nodes.size());
     const bool gizmoShown = selection && viewport_.markers && !viewport_.coneDirections;
-    // The shadow map and the voxel slice are 2D images: clicks there point at nothing.
-    if (doc_.settings.view == View::ShadowMap || doc_.settings.view == View::VoxelSlice) {
-        hoveredGizmoAxis_ = -1;
-        if (!gizmo_.active()) return;
-    }
 
-    if (gizmo_.active()) {
-        if (io.MouseDown[ImGuiMouseButton_Left] && selection) {
-            // The gizmo moves the node's world position; the node stores a translation relative
-            // to its parent.
-            Node& node = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)];
-            const glm::mat4 parentWorld =
-                node.parent >= 0 ? doc_.scene.nodes[static_cast<std::size_t>(node.parent)].world : glm::mat4(1.0f);
-            const glm::vec3 world = gizmo_.drag(view, display, mouse);
-            node.translation = glm::vec3(glm::inverse(parentWorld) * glm::vec4(world, 1.0f));
-            doc_.touched(Change::Transform);
+    // Alt + left drag orbits around the selection (Blender's and Godot's orbit), whatever view.
+    if (orbiting_) {
+        if (!io.MouseDown[ImGuiMouseButton_Left]) {
+            orbiting_ = false;
         } else {
-            gizmo_.end();
-            doc_.endEdit();
+            orbitAround(camera_, orbitPivot_, glm::vec2(glm::dvec2(io.MousePos.x, io.MousePos.y) - orbitCursor_));
+            orbitCursor_ = glm::dvec2(io.MousePos.x, io.MousePos.y);
         }
+        return;
+    }
+    if (gizmo_.active()) {
+        if (io.MouseDown[ImGuiMouseButton_Left] && selection) continueGizmoDrag(view, mouse, io.KeyCtrl);
+        else endGizmoDrag();
         return;
     }
     hoveredGizmoAxis_ = -1;
     if (io.WantCaptureMouse || looking_) return;
-    if (gizmoShown)
-        hoveredGizmoAxis_ = TranslateGizmo::hitTest(view, display, nodeWorldPosition(doc_.scene, doc_.selectedNode), mouse);
-    if (!ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
-    if (hoveredGizmoAxis_ >= 0 &&
-        gizmo_.begin(hoveredGizmoAxis_, view, display, nodeWorldPosition(doc_.scene, doc_.selectedNode), mouse)) {
-        const Node& node = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)];
-        doc_.beginEdit("Move " + (node.name.empty() ? std::string("node") : node.name));
+    if (io.KeyAlt && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+        orbiting_ = true;
+        orbitCursor_ = glm::dvec2(io.MousePos.x, io.MousePos.y);
+        // Around the selection; without one, around the point as far ahead as the scene's centre.
+        const Aabb bounds = doc_.scene.worldBounds();
+        const float ahead = bounds.empty() ? 2.0f : std::max(glm::length(bounds.center() - camera_.position), 0.5f);
+        orbitPivot_ = selection ? nodeWorldPosition(doc_.scene, doc_.selectedNode) : camera_.position + camera_.forward() * ahead;
         return;
     }
+    // The shadow map and the voxel slice are 2D images: clicks there point at nothing.
+    if (flatView()) return;
+    if (gizmoShown) {
+        const glm::vec2 display(io.DisplaySize.x, io.DisplaySize.y);
+        const glm::mat3 axes =
+            gizmoAxes(gizmoMode_, gizmoSpace_, doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].world);
+        hoveredGizmoAxis_ = TransformGizmo::hitTest(gizmoMode_, view, display, nodeWorldPosition(doc_.scene, doc_.selectedNode),
+                                                    axes, mouse);
+    }
+    if (!ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
+    if (hoveredGizmoAxis_ >= 0 && beginGizmoDrag(view, mouse)) return;
     pickAt(mouse);
+}
+
+bool App::beginGizmoDrag(const CameraView& view, glm::vec2 mouse) {
+    if (doc_.selectedNode < 0 || doc_.selectedNode >= static_cast<int>(doc_.scene.nodes.size())) return false;
+    const ImGuiIO& io = ImGui::GetIO();
+    const glm::vec2 display(io.DisplaySize.x, io.DisplaySize.y);
+    const Node& active = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)];
+    const glm::vec3 origin = nodeWorldPosition(doc_.scene, doc_.selectedNode);
+    const glm::mat3 axes = gizmoAxes(gizmoMode_, gizmoSpace_, active.world);
+    const int handle = TransformGizmo::hitTest(gizmoMode_, view, display, origin, axes, mouse);
+    if (handle < 0 || !gizmo_.begin(gizmoMode_, handle, view, display, origin, axes, mouse)) return false;
+    dragged_.clear();
+    for (const int node : topLevelSelection(doc_)) {
+        const Node& n = doc_.scene.nodes[static_cast<std::size_t>(node)];
+        dragged_.push_back({node, n.world, n.translation, n.scale});
+    }
+    const std::vector<int> top = topLevelSelection(doc_);
+    const std::string what = top.size() == 1 ? (active.name.empty() ? std::string("node") : active.name)
+                                             : std::to_string(top.size()) + " nodes";
+    const char* verb = gizmoMode_ == GizmoMode::Translate ? "Move " : gizmoMode_ == GizmoMode::Rotate ? "Rotate " : "Scale ";
+    doc_.beginEdit(verb + what);
+    hoveredGizmoAxis_ = handle;
+    return true;
+}
+
+void App::continueGizmoDrag(const CameraView& view, glm::vec2 mouse, bool snap) {
+    const ImGuiIO& io = ImGui::GetIO();
+    GizmoSnap steps = snap_;
+    steps.enabled = snap_.enabled || snap;
+    const GizmoDelta delta = gizmo_.drag(view, {io.DisplaySize.x, io.DisplaySize.y}, mouse, steps);
+    Scene& scene = doc_.scene;
+    for (const DraggedNode& d : dragged_) {
+        if (d.node >= static_cast<int>(scene.nodes.size())) continue;
+        Node& node = scene.nodes[static_cast<std::size_t>(d.node)];
+        const glm::mat4 parentWorld =
+            node.parent >= 0 ? scene.nodes[static_cast<std::size_t>(node.parent)].world : glm::mat4(1.0f);
+        switch (gizmo_.mode()) {
+        case GizmoMode::Translate:
+            // Only the translation changes: no rotation or scale noise from a matrix round trip.
+            node.translation = d.translation + glm::vec3(glm::inverse(parentWorld) * glm::vec4(delta.translation, 0.0f));
+            break;
+        case GizmoMode::Scale: node.scale = d.scale * delta.scale; break;
+        case GizmoMode::Rotate:
+            setWorldMatrix(scene, d.node, applyGizmoDelta(GizmoMode::Rotate, delta, gizmo_.origin(), d.world));
+            node.scale = d.scale;  // a rotation changes no scale; keep it exact
+            break;
+        }
+    }
+    doc_.touched(Change::Transform);
+}
+
+void App::endGizmoDrag() {
+    gizmo_.end();
+    dragged_.clear();
+    doc_.endEdit();
 }
 
 void App::updateOverlay(const CameraView& view, bool cleanViewport) {
@@ -867,7 +1200,9 @@ void App::updateOverlay(const CameraView& view, bool cleanViewport) {
     options.gizmo = viewport_.markers && !viewport_.coneDirections && !cleanViewport;
     options.cameraPath = viewport_.markers && !cleanViewport;
     options.selectionOutline = !cleanViewport;
-    options.hoveredGizmoAxis = gizmo_.active() ? gizmo_.axis() : hoveredGizmoAxis_;
+    options.hoveredGizmoAxis = gizmo_.active() ? gizmo_.handle() : hoveredGizmoAxis_;
+    options.gizmoMode = gizmo_.active() ? gizmo_.mode() : gizmoMode_;
+    options.gizmoSpace = gizmoSpace_;
     if (viewport_.coneDirections && coneSurface_) {
         options.coneSurface = coneSurface_;
         options.coneCameraPosition = coneCameraPosition_;

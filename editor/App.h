@@ -25,7 +25,10 @@
 #include "Renderer.h"
 #include "PathEditing.h"
 #include "Script.h"
-#include "TranslateGizmo.h"
+#include "EditorViews.h"
+#include "LoadStages.h"
+#include "SceneEdits.h"
+#include "TransformGizmo.h"
 #include "Window.h"
 #include "gl/Objects.h"
 #include "panels/Dialogs.h"
@@ -105,6 +108,25 @@ private:
     // Left mouse in the viewport: grab and drag the gizmo, else select what is under the cursor
     // (or, with the cone directions view, pick the pixel whose cones to draw).
     void handleViewportMouse(const CameraView& view);
+    // Gizmo drags (mouse and script "drag"): grab the handle under `mouse`, follow it, let go.
+    // beginGizmoDrag returns false when no handle is there.
+    bool beginGizmoDrag(const CameraView& view, glm::vec2 mouse);
+    void continueGizmoDrag(const CameraView& view, glm::vec2 mouse, bool snap);
+    void endGizmoDrag();
+    // The edits of the menus, keys and scripts that need the camera or the renderer.
+    void addNodeInFront(NodeKind kind);
+    void frameSelection();
+    std::string setView(const std::string& name);  // an EditorViews.h name
+    void logRefusal(const std::string& message);
+    // Rebuilds the renderer's GPU copy when nodes, meshes or materials were added or removed (a
+    // structural edit, or its undo): the GpuScene's draw items are per node and primitive.
+    void syncRendererStructure();
+    // The mode / space / snap bar and the current view's name, in the bottom-right corner of
+    // the free viewport area; computes viewportRect_.
+    void drawViewportBar(float menuHeight);
+    // The 2D views (shadow map, voxel slice) are drawn into the free viewport area between the
+    // panels rather than the whole window.
+    bool flatView() const;
     // Window pixel (top-left origin) → the renderer's last frame: select its node, or sample its
     // surface for the cone directions view. Returns "" or why nothing could be picked.
     std::string pickAt(glm::vec2 windowPixel);
@@ -116,7 +138,8 @@ private:
     CameraView currentView() const;
     void handleShortcuts();
     void drawUi(glm::ivec2 renderSize);
-    void presentViewport(glm::ivec2 framebufferSize);
+    // Blits the renderer's output into `target` (x, y bottom-up, width, height; pixels).
+    void presentViewport(glm::ivec2 framebufferSize, glm::ivec4 target);
     void saveScreenshot(glm::ivec2 framebufferSize, const std::filesystem::path& path);
     void saveViewportScreenshot(const std::filesystem::path& path);
     // Writes the requests due this frame (`withUi` ones after the UI is drawn); returns false
@@ -157,8 +180,27 @@ private:
     InspectorPanel inspectorPanel_;
     TimelinePanel timelinePanel_;
     PathPlayback playback_;
-    TranslateGizmo gizmo_;
+    TransformGizmo gizmo_;
     int hoveredGizmoAxis_ = -1;
+    GizmoMode gizmoMode_ = GizmoMode::Translate;
+    GizmoSpace gizmoSpace_ = GizmoSpace::World;
+    GizmoSnap snap_;  // snap_.enabled: always on; Ctrl snaps during a drag either way
+    // The nodes a gizmo drag moves (the top-level selected ones) as they were when it began.
+    struct DraggedNode {
+        int node;
+        glm::mat4 world;
+        glm::vec3 translation, scale;
+    };
+    std::vector<DraggedNode> dragged_;
+    // Alt + left drag orbits the fly camera around the selection (or the point in front).
+    bool orbiting_ = false;
+    glm::vec3 orbitPivot_{0.0f};
+    glm::dvec2 orbitCursor_{0.0};
+    // What the renderer's GpuScene was built from: per node its mesh, per mesh its primitives'
+    // materials, and the material count (syncRendererStructure).
+    std::vector<int> uploadedStructure_;
+    // The free viewport area between the panels this frame, ImGui units: x, y, width, height.
+    glm::vec4 viewportRect_{0.0f};
     // Cone directions view: the surface last clicked and where the camera was then.
     std::optional<SurfaceSample> coneSurface_;
     glm::vec3 coneCameraPosition_{0.0f};
@@ -190,6 +232,7 @@ private:
         std::shared_ptr<LoadStatus> status;
         std::future<Document> result;
         double startSeconds = 0.0;
+        bool uploading = false;  // the worker is done; the GPU upload runs after one more frame
     };
     std::optional<Loading> loading_;
     bool recoveryAfterLoad_ = false;  // offer the autosave once the initial scene is in

@@ -26,9 +26,18 @@ bool sameHierarchy(const std::vector<Node>& a, const std::vector<Node>& b) {
 
 }  // namespace
 
+std::vector<std::vector<int>> primitiveMaterialsOf(const Scene& scene) {
+    std::vector<std::vector<int>> materials(scene.meshes.size());
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m)
+        for (const Primitive& p : scene.meshes[m].primitives) materials[m].push_back(p.material);
+    return materials;
+}
+
 bool operator==(const EditableState& a, const EditableState& b) {
     return sameNodes(a.nodes, b.nodes) && a.materials == b.materials && a.lights == b.lights &&
-           a.cameras == b.cameras && a.pathKeys == b.pathKeys && a.pathOptions == b.pathOptions;
+           a.cameras == b.cameras && a.pathKeys == b.pathKeys && a.pathOptions == b.pathOptions &&
+           a.meshCount == b.meshCount && a.primitiveMaterials == b.primitiveMaterials &&
+           a.cameraPathName == b.cameraPathName;
 }
 
 Document::Document(Scene scene_, CameraPath path, std::filesystem::path file_)
@@ -39,14 +48,17 @@ Document::Document(Scene scene_, CameraPath path, std::filesystem::path file_)
 }
 
 EditableState Document::capture() const {
-    return EditableState{scene.nodes,         scene.materials,        scene.lights,
-                         scene.cameras,       cameraPath.keys(),      cameraPath.options()};
+    return EditableState{scene.nodes,       scene.materials,      scene.lights,        scene.cameras,
+                         cameraPath.keys(), cameraPath.options(), scene.meshes.size(), primitiveMaterialsOf(scene),
+                         cameraPathName};
 }
 
 bool Document::matches(const EditableState& state) const {
     return sameNodes(scene.nodes, state.nodes) && scene.materials == state.materials &&
            scene.lights == state.lights && scene.cameras == state.cameras &&
-           cameraPath.keys() == state.pathKeys && cameraPath.options() == state.pathOptions;
+           cameraPath.keys() == state.pathKeys && cameraPath.options() == state.pathOptions &&
+           scene.meshes.size() == state.meshCount && primitiveMaterialsOf(scene) == state.primitiveMaterials &&
+           cameraPathName == state.cameraPathName;
 }
 
 void Document::restore(const EditableState& state) {
@@ -60,8 +72,27 @@ void Document::restore(const EditableState& state) {
     const bool hierarchyDiffers = !sameHierarchy(scene.nodes, state.nodes);
     const bool materialsDiffer = scene.materials != state.materials;
     const bool lightsDiffer = scene.lights != state.lights;
+    const bool meshesDiffer =
+        scene.meshes.size() != state.meshCount || primitiveMaterialsOf(scene) != state.primitiveMaterials;
 
     if (path) cameraPath = std::move(*path);
+    cameraPathName = state.cameraPathName;
+    if (meshesDiffer) {
+        // Meshes past the count are the editor's own (addMesh); those the state has and the
+        // scene lacks come back from addedMeshes_.
+        if (scene.meshes.size() > state.meshCount) scene.meshes.resize(state.meshCount);
+        for (std::size_t m = scene.meshes.size(); m < state.meshCount; ++m) {
+            if (m < addedMeshes_.size() && addedMeshes_[m]) scene.meshes.push_back(*addedMeshes_[m]);
+            else scene.meshes.push_back(Mesh{});  // cannot happen: only addMesh grows the list
+        }
+        for (std::size_t m = 0; m < scene.meshes.size() && m < state.primitiveMaterials.size(); ++m) {
+            std::vector<Primitive>& primitives = scene.meshes[m].primitives;
+            for (std::size_t p = 0; p < primitives.size() && p < state.primitiveMaterials[m].size(); ++p)
+                primitives[p].material = state.primitiveMaterials[m][p];
+        }
+        ++scene.geometryRevision;
+        ++scene.materialRevision;
+    }
     if (nodesDiffer) {
         scene.nodes = state.nodes;
         if (hierarchyDiffers) {
@@ -83,7 +114,66 @@ void Document::restore(const EditableState& state) {
     scene.cameras = state.cameras;
 
     if (selectedNode >= static_cast<int>(scene.nodes.size())) selectedNode = -1;
+    std::erase_if(alsoSelected, [this](int n) { return n >= static_cast<int>(scene.nodes.size()) || n == selectedNode; });
+    if (selectedNode < 0) alsoSelected.clear();
     if (selectedKey >= static_cast<int>(cameraPath.keys().size())) selectedKey = -1;
+}
+
+void Document::select(int node, bool additive) {
+    selectedPrimitive = 0;
+    if (node < 0 || node >= static_cast<int>(scene.nodes.size())) {
+        if (!additive) {
+            selectedNode = -1;
+            alsoSelected.clear();
+        }
+        return;
+    }
+    if (!additive || selectedNode < 0) {
+        selectedNode = node;
+        alsoSelected.clear();
+        return;
+    }
+    if (node == selectedNode) {
+        // Shift+click on the active node takes it out; the next one becomes active.
+        if (alsoSelected.empty()) {
+            selectedNode = -1;
+        } else {
+            selectedNode = alsoSelected.back();
+            alsoSelected.pop_back();
+        }
+        return;
+    }
+    if (const auto it = std::find(alsoSelected.begin(), alsoSelected.end(), node); it != alsoSelected.end()) {
+        alsoSelected.erase(it);
+        return;
+    }
+    alsoSelected.push_back(selectedNode);
+    selectedNode = node;
+}
+
+std::vector<int> Document::selection() const {
+    std::vector<int> nodes;
+    const int count = static_cast<int>(scene.nodes.size());
+    if (selectedNode < 0 || selectedNode >= count) return nodes;
+    nodes.push_back(selectedNode);
+    for (const int n : alsoSelected)
+        if (n >= 0 && n < count && std::find(nodes.begin(), nodes.end(), n) == nodes.end()) nodes.push_back(n);
+    return nodes;
+}
+
+bool Document::isSelected(int node) const {
+    if (node < 0) return false;
+    const std::vector<int> nodes = selection();
+    return std::find(nodes.begin(), nodes.end(), node) != nodes.end();
+}
+
+int Document::addMesh(Mesh mesh) {
+    const std::size_t index = scene.meshes.size();
+    if (addedMeshes_.size() <= index) addedMeshes_.resize(index + 1);
+    addedMeshes_[index] = mesh;
+    scene.meshes.push_back(std::move(mesh));
+    ++scene.geometryRevision;
+    return static_cast<int>(index);
 }
 
 void Document::beginEdit(const std::string& label) {

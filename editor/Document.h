@@ -31,6 +31,12 @@ struct EditableState {
     std::vector<Camera> cameras;
     std::vector<CameraKey> pathKeys;
     CameraPathOptions pathOptions;
+    // Meshes are large and only the editor's own generated ones are ever added: the state keeps
+    // their count (the Document keeps the meshes it added, to bring them back on redo) and each
+    // primitive's material index (per mesh, per primitive), which "make unique" changes.
+    std::size_t meshCount = 0;
+    std::vector<std::vector<int>> primitiveMaterials;
+    std::string cameraPathName;  // the glTF animation the camera path is saved as
 };
 
 // Which revision counters an edit must bump so the renderer redoes the right work.
@@ -54,8 +60,36 @@ public:
     std::filesystem::path file;  // where Save writes; empty for an unsaved new document
 
     // ---- selection (not part of undo) ----------------------------------------------------
-    int selectedNode = -1;  // index into scene.nodes, -1 = none
+    int selectedNode = -1;  // the active node (inspector, gizmo): index into scene.nodes, -1 = none
+    // More nodes selected with Shift besides the active one; transform, delete and duplicate
+    // apply to all of them. Kept free of selectedNode and of invalid indices by select().
+    std::vector<int> alsoSelected;
     int selectedKey = -1;   // index into cameraPath keys, -1 = none
+    // Which primitive of the active node's mesh the inspector's material section (and the
+    // "material.*" properties) edit.
+    int selectedPrimitive = 0;
+
+    // Selects `node` (-1: nothing). additive (Shift): toggles `node` in the selection and makes
+    // it the active node when it is added. Always resets selectedPrimitive.
+    void select(int node, bool additive = false);
+    // The active node first, then the others; empty when nothing is selected.
+    std::vector<int> selection() const;
+    bool isSelected(int node) const;
+
+    // Why the last edit a panel asked for was refused ("cannot make Box a child of its own
+    // child"); the App logs it as a warning and clears it. Not part of undo.
+    std::string lastRefusal;
+
+    // ---- camera animations -----------------------------------------------------------------
+    // The glTF animation the camera path is read from and saved as ("camera path" unless the
+    // file had other camera animations only), and every camera animation the file holds.
+    std::string cameraPathName = "camera path";
+    std::vector<std::string> cameraAnimations;
+
+    // ---- meshes ----------------------------------------------------------------------------
+    // Appends a mesh the editor made (a primitive, a copy for "make unique") and returns its
+    // index; undo drops it and redo brings it back. Call inside an edit.
+    int addMesh(Mesh mesh);
 
     // ---- editing ---------------------------------------------------------------------------
     // Starts an edit named `label` ("Roughness", "Move Light") unless one is open.
@@ -133,6 +167,9 @@ private:
     // Per material, the last albedo texture it had in this session (-1 = none), so that
     // "material.albedoTexture off" can be turned on again.
     std::vector<int> albedoTextures_;
+    // Every mesh addMesh() appended, by mesh index, so a redo can put it back after an undo
+    // removed it. A new mesh at an index replaces the old one (the redo list is gone by then).
+    std::vector<std::optional<Mesh>> addedMeshes_;
 };
 
 // Equality of editable states, ignoring the derived Node::world.

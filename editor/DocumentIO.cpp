@@ -46,18 +46,29 @@ Document loadScene(const fs::path& sceneFile, const fs::path& documentFile, Log&
     Scene scene = loadGltf(sceneFile, log, options);  // logs the summary line
     addDefaultCamera(scene, log);
     CameraPath path;
+    std::vector<std::string> names;
+    std::string pathName = kDefaultCameraAnimation;
     try {
-        const std::vector<std::string> names = cameraAnimationNames(sceneFile);
-        if (std::find(names.begin(), names.end(), kDefaultCameraAnimation) != names.end()) {
-            path = loadCameraPathFromGltf(sceneFile, kDefaultCameraAnimation);
-            log.info("camera path: " + std::to_string(path.keys().size()) + " keys from " + sceneFile.filename().string());
+        names = cameraAnimationNames(sceneFile);
+        // The editor's own path when the file has one, else the file's first camera animation
+        // (a Blender "fly"), edited and saved under its own name.
+        if (std::find(names.begin(), names.end(), kDefaultCameraAnimation) == names.end() && !names.empty())
+            pathName = names.front();
+        if (std::find(names.begin(), names.end(), pathName) != names.end()) {
+            path = loadCameraPathFromGltf(sceneFile, pathName);
+            log.info("camera path: " + std::to_string(path.keys().size()) + " keys of '" + pathName + "' from " +
+                     sceneFile.filename().string());
         }
     } catch (const std::exception& error) {
         // The scene is still worth editing; the path starts empty (saving replaces the bad one).
         log.warning(std::string("camera path not loaded: ") + error.what());
         path = CameraPath();
     }
-    return Document(std::move(scene), std::move(path), documentFile);
+    Document doc(std::move(scene), std::move(path), documentFile);
+    doc.cameraPathName = pathName;
+    doc.cameraAnimations = names;
+    doc.markSaved();
+    return doc;
 }
 
 std::string localTimeText(std::time_t seconds) {
@@ -88,6 +99,7 @@ bool processAlive(long pid) {
 void saveScene(const Document& doc, const fs::path& file) {
     GltfSaveOptions options;
     options.cameraPath = &doc.cameraPath;
+    options.cameraPathName = doc.cameraPathName.empty() ? std::string(kDefaultCameraAnimation) : doc.cameraPathName;
     saveGltf(doc.scene, file, options);
 }
 
@@ -121,6 +133,32 @@ Document openDocument(const fs::path& file, Log& log, const std::function<void(c
     }
     doc.markSaved();  // the settings just read are the saved ones
     return doc;
+}
+
+std::string chooseCameraAnimation(Document& doc, const std::string& name) {
+    if (name == doc.cameraPathName) return "";
+    const bool inFile = std::find(doc.cameraAnimations.begin(), doc.cameraAnimations.end(), name) !=
+                        doc.cameraAnimations.end();
+    CameraPath path;
+    if (inFile) {
+        if (doc.file.empty()) return "the document has no file to read '" + name + "' from";
+        try {
+            path = loadCameraPathFromGltf(doc.file, name);
+        } catch (const std::exception& error) {
+            return "cannot read camera animation '" + name + "': " + error.what();
+        }
+    }
+    try {
+        doc.edit("Edit Animation " + name, Change::CameraPath, [&](Scene&) {
+            doc.cameraPath = std::move(path);
+            doc.cameraPathName = name;
+        });
+    } catch (const std::exception& error) {
+        return error.what();
+    }
+    if (!inFile) doc.cameraAnimations.push_back(name);
+    doc.selectedKey = -1;
+    return "";
 }
 
 void saveDocument(Document& doc, const fs::path& file) {

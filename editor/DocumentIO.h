@@ -35,6 +35,12 @@ std::filesystem::path settingsSidecarPath(const std::filesystem::path& sceneFile
 Document openDocument(const std::filesystem::path& file, Log& log,
                       const std::function<void(const LoadProgress&)>& progress = {});
 
+// Makes camera animation `name` the one the camera path edits (the timeline's animation combo,
+// script "animation NAME"): read from the document's file when the file has it, else a new
+// empty path under that name. One undo step. The path edited before stays in the file as it was
+// last saved; its unsaved key edits are dropped (undo brings them back). Returns "" or why not.
+std::string chooseCameraAnimation(Document& doc, const std::string& name);
+
 // Writes the scene and camera path to `file` (saveGltf: .gltf or .glb, atomic) and then the
 // settings sidecar; sets doc.file and marks the document saved. Throws (SceneSaveError or
 // std::runtime_error naming the file) and leaves the document as it was when anything fails.

@@ -83,14 +83,19 @@ std::string editorUsage() {
            "  --screenshot FILE  render N frames, save the window (UI included) as a PNG, exit\n"
            "  --frames N         frames to render before the screenshot (default 8)\n"
            "  --script FILE      run the editor actions in FILE, one per frame, then exit\n"
-           "                     (select, set, setting, view, panel, pick, camera, screenshot, save,\n"
-           "                     open, undo, redo, key, play, pause, time, wait N, quit;\n"
-           "                     see docs/EDITOR.md)\n"
+           "                     (select, select+, set, setting, view, panel, pick, camera,\n"
+           "                     screenshot, save, open, undo, redo, add, delete, duplicate, parent,\n"
+           "                     material unique, primitive, gizmo, space, snap, drag, frame, orbit,\n"
+           "                     animation, key, play, pause, time, wait N, quit; see docs/EDITOR.md)\n"
            "  --size WxH         window size in screen coordinates (default 1280x720)\n"
-           "Controls: right mouse drag to look, WASD to move, Q/E down/up, Shift to go faster,\n"
-           "mouse wheel to change the speed; left click selects, drag a gizmo axis to move.\n"
-           "Keys: Ctrl+Z/Ctrl+Y undo/redo, Ctrl+S save, F12 screenshot, F2 performance overlay,\n"
-           "Space play the camera path, Esc clear the selection.\n";
+           "Viewport: left click selects (Shift+click adds), drag a gizmo handle to move/rotate/scale,\n"
+           "Alt+left drag orbits around the selection, right drag looks around and, while held,\n"
+           "WASD moves, Q/E down/up, Shift faster, mouse wheel changes the speed.\n"
+           "Keys: W/E/R translate/rotate/scale gizmo, T world/local axes, Ctrl while dragging snaps,\n"
+           "F frame selected, Del or X delete, Ctrl+D duplicate, 1-9 0 Shift+1 Shift+2 debug views,\n"
+           "Ctrl+Z/Ctrl+Y undo/redo, Ctrl+S save, F12 screenshot, F2 performance overlay,\n"
+           "Space play the camera path, Esc clear the selection. Add menu: empty, lights, camera,\n"
+           "box, plane, sphere; drag nodes in the hierarchy to parent them.\n";
 }
 
 }  // namespace lit::editor

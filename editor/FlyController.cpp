@@ -30,6 +30,36 @@ void applyFlyInput(FlyCamera& camera, const FlyInput& input, float dtSeconds, co
     camera.position += direction * speed * dtSeconds;
 }
 
+void lookAt(FlyCamera& camera, glm::vec3 target, const FlyControlSettings& settings) {
+    const glm::vec3 offset = target - camera.position;
+    if (glm::length(offset) < 1e-6f) return;
+    const glm::vec3 d = glm::normalize(offset);
+    // Inverse of FlyCamera::forward(): (−sin yaw · cos pitch, sin pitch, −cos yaw · cos pitch).
+    camera.pitch = std::clamp(std::asin(std::clamp(d.y, -1.0f, 1.0f)), -settings.maxPitch, settings.maxPitch);
+    camera.yaw = std::atan2(-d.x, -d.z);
+}
+
+void orbitAround(FlyCamera& camera, glm::vec3 pivot, glm::vec2 pixels, const FlyControlSettings& settings) {
+    const float distance = glm::length(camera.position - pivot);
+    if (distance < 1e-6f) return;
+    lookAt(camera, pivot, settings);
+    // The scene turns with the mouse as if grabbed (Blender, Godot): dragging right takes the
+    // camera round to the left, dragging down lifts it to look down on the pivot.
+    camera.yaw -= pixels.x * settings.radiansPerPixel;
+    camera.pitch = std::clamp(camera.pitch - pixels.y * settings.radiansPerPixel, -settings.maxPitch, settings.maxPitch);
+    camera.position = pivot - camera.forward() * distance;
+}
+
+float frameBounds(FlyCamera& camera, const Aabb& bounds) {
+    if (bounds.empty()) return 0.0f;
+    const glm::vec3 centre = bounds.center();
+    // A point or a flat object still gets some room around it (10 cm).
+    const float radius = std::max(0.5f * glm::length(bounds.size()), 0.05f);
+    const float distance = radius / std::sin(0.4f * camera.yfov);  // the sphere spans 80 % of the FOV
+    camera.position = centre - camera.forward() * distance;
+    return distance;
+}
+
 float flySpeedForBounds(const Aabb& bounds) {
     if (bounds.empty()) return 2.0f;
     const float side = glm::length(bounds.size());

@@ -32,6 +32,19 @@ struct FlyControlSettings {
 // turns (mouse right = turn right, mouse down = look down) and scales the speed by the wheel.
 void applyFlyInput(FlyCamera& camera, const FlyInput& input, float dtSeconds, const FlyControlSettings& settings = {});
 
+// Points the camera at `target` (yaw and pitch; pitch clamped to ±maxPitch). No-op when the
+// target is the camera's own position.
+void lookAt(FlyCamera& camera, glm::vec3 target, const FlyControlSettings& settings = {});
+
+// Orbit (Alt + left drag): turns the camera around `pivot` by the mouse motion (pixels, x right,
+// y down; the same sensitivity as looking), keeping its distance and looking at the pivot.
+void orbitAround(FlyCamera& camera, glm::vec3 pivot, glm::vec2 pixels, const FlyControlSettings& settings = {});
+
+// Frame selected (F): moves the camera back along its view direction until the sphere around
+// `bounds` fills about 80 % of the vertical field of view, centred. Orientation is kept.
+// Returns the distance from the camera to the bounds' centre (m); empty bounds: no change, 0.
+float frameBounds(FlyCamera& camera, const Aabb& bounds);
+
 // A comfortable default speed for a scene of this size: crossing it takes about 4 seconds.
 float flySpeedForBounds(const Aabb& bounds);
 

@@ -234,7 +234,12 @@ std::string setProperty(Document& doc, std::string_view name, std::string_view v
     } else if (startsWith(name, "material.")) {
         if (node.mesh < 0 || node.mesh >= static_cast<int>(scene.meshes.size())) return nodeLabel + " holds no mesh";
         const Mesh& mesh = scene.meshes[node.mesh];
-        const int material = mesh.primitives.empty() ? -1 : mesh.primitives.front().material;
+        // The primitive chosen in the inspector (Document::selectedPrimitive), else the first.
+        const std::size_t primitive =
+            doc.selectedPrimitive > 0 && doc.selectedPrimitive < static_cast<int>(mesh.primitives.size())
+                ? static_cast<std::size_t>(doc.selectedPrimitive)
+                : 0;
+        const int material = mesh.primitives.empty() ? -1 : mesh.primitives[primitive].material;
         if (material < 0 || material >= static_cast<int>(scene.materials.size()))
             return nodeLabel + " has no material of its own (its mesh uses the default material)";
         Material changed = scene.materials[material];

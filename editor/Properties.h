@@ -10,8 +10,8 @@
 //   light.type directional|point|spot | light.color R G B | light.intensity V | light.range V
 //   light.inner DEG | light.outer DEG | light.shadow on|off
 //   camera.fov DEG | camera.near V | camera.far V
-// "material.*" applies to the material of the selected node's mesh (its first primitive's
-// material); "light.*" / "camera.*" to the light / camera the selected node holds.
+// "material.*" applies to the material of the selected node's mesh primitive
+// Document::selectedPrimitive (the first one by default); "light.*" / "camera.*" to the light / camera the selected node holds.
 // "material.albedoTexture on" gives back the texture the material had before it was turned off
 // in this session (Document::rememberedAlbedoTexture). Numbers must be finite and whole words
 // ("1.5x" is an error); ranges follow glTF (roughness in [0, 1], 0 <= inner < outer <= 90°).

@@ -7,7 +7,9 @@
 #include "EditorState.h"
 #include "Properties.h"
 #include "RenderSettings.h"
+#include "SceneEdits.h"
 #include "SettingCommand.h"
+#include "TransformGizmo.h"
 #include "TextParse.h"
 
 namespace lit::editor {
@@ -42,6 +44,49 @@ std::string check(const ScriptCommand& c) {
         return name + ": expected " + usage + ", got " + plural(a.size(), "argument");
     };
     if (name == "select") return count(1, 1, "a node name (or - for none)");
+    if (name == "select+") return count(1, 1, "a node name");
+    if (name == "parent") return count(1, 1, "a parent node name (or - for the scene root)");
+    if (name == "animation") return count(1, 1, "a camera animation name");
+    if (name == "add") {
+        if (a.empty() || (a.size() != 1 && a.size() != 4))
+            return "add: expected a kind (empty, directional, point, spot, camera, box, plane, sphere) and optionally X Y Z";
+        if (!parseNodeKind(a[0]))
+            return "unknown kind '" + a[0] + "' (empty, directional, point, spot, camera, box, plane, sphere)";
+        for (std::size_t i = 1; i < a.size(); ++i)
+            if (!isNumber(a[i])) return "add: expected a number, got '" + a[i] + "'";
+        return "";
+    }
+    if (name == "delete" || name == "duplicate" || name == "frame") return count(0, 0, "no arguments");
+    if (name == "gizmo") {
+        if (auto e = count(1, 1, "translate, rotate or scale"); !e.empty()) return e;
+        return parseGizmoMode(a[0]) ? "" : "gizmo: expected translate, rotate or scale, got '" + a[0] + "'";
+    }
+    if (name == "space") {
+        if (auto e = count(1, 1, "world or local"); !e.empty()) return e;
+        return a[0] == "world" || a[0] == "local" ? "" : "space: expected world or local, got '" + a[0] + "'";
+    }
+    if (name == "snap") {
+        if (a.size() == 1) return a[0] == "on" || a[0] == "off" ? "" : "snap: expected on, off or M DEG FACTOR, got '" + a[0] + "'";
+        if (a.size() != 3) return "snap: expected on, off or three steps (metres, degrees, scale factor)";
+        for (const std::string& v : a)
+            if (!isNumber(v) || *parseNumber<double>(v) <= 0.0) return "snap: expected a positive step, got '" + v + "'";
+        return "";
+    }
+    if (name == "drag" || name == "orbit") {
+        const std::size_t n = name == "drag" ? 4 : 2;
+        if (auto e = count(n, n, name == "drag" ? "X0 Y0 X1 Y1 window pixels" : "DX DY pixels"); !e.empty()) return e;
+        for (const std::string& v : a)
+            if (!isNumber(v)) return name + ": expected a number, got '" + v + "'";
+        return "";
+    }
+    if (name == "material") {
+        if (auto e = count(1, 1, "unique"); !e.empty()) return e;
+        return a[0] == "unique" ? "" : "material: expected unique, got '" + a[0] + "'";
+    }
+    if (name == "primitive") {
+        if (auto e = count(1, 1, "a primitive index"); !e.empty()) return e;
+        return isCount(a[0], 0) ? "" : "primitive: expected a primitive index, got '" + a[0] + "'";
+    }
     if (name == "set") {
         if (a.size() < 2) return "set: expected a property and a value";
         return checkPropertyValue(a[0], a[1]);
@@ -134,7 +179,7 @@ std::vector<ScriptCommand> parseScript(std::string_view text, const std::string&
             const auto [property, value] = firstWord(rest);
             if (!property.empty()) command.args.emplace_back(property);
             if (!value.empty()) command.args.emplace_back(value);
-        } else if (name == "select") {
+        } else if (name == "select" || name == "select+" || name == "parent" || name == "animation") {
             if (!rest.empty()) command.args.emplace_back(rest);  // node names may hold spaces
         } else {
             for (const std::string_view word : splitWords(rest)) command.args.emplace_back(word);

@@ -4,6 +4,21 @@
 // Parsing is window-free (lit_editor_core); the App executes the commands.
 //
 //   select NODE_NAME             select a node by name ("select -" clears the selection)
+//   select+ NODE_NAME            add a node to the selection (Shift+click), or take it out
+//   add KIND [X Y Z]             add a node: empty, directional, point, spot, camera, box, plane,
+//                                sphere, at X Y Z (default: in front of the camera); selects it
+//   delete | duplicate           the selected nodes (with their subtrees)
+//   parent NODE_NAME             make NODE_NAME the parent of the selection ("-": the root)
+//   material unique              give the selected primitive its own copy of its material
+//   primitive I                  choose the primitive whose material the inspector edits
+//   gizmo translate|rotate|scale the gizmo's mode (W / E / R)
+//   space world|local            the gizmo's axes
+//   snap on|off | snap M DEG F   snapping, or its steps (metres, degrees, scale factor) and on
+//   drag X0 Y0 X1 Y1             press the left mouse at (X0, Y0), move to (X1, Y1), release:
+//                                a gizmo drag when a handle is there (one undo step)
+//   frame                        frame the selection (F)
+//   orbit DX DY                  orbit around the selection by a mouse motion (Alt + left drag)
+//   animation NAME               edit this camera animation of the file (the timeline's combo)
 //   set PROPERTY VALUE...        Properties.h, as one undo step
 //   setting KEY VALUE            a RenderSettings field by its JSON name (e.g. setting gi false)
 //   view NAME                    the debug view, by the names parseView() takes, or

@@ -42,17 +42,30 @@ void addMarkers(const Document& doc, const CameraView& view, glm::vec2 viewport,
     }
 }
 
-void addGizmo(const Document& doc, const CameraView& view, glm::vec2 viewport, int hoveredAxis,
+void addGizmo(const Document& doc, const CameraView& view, glm::vec2 viewport, const OverlayOptions& options,
               ViewportOverlay& overlay) {
     const glm::vec3 origin = nodeWorldPosition(doc.scene, doc.selectedNode);
-    std::vector<OverlayLine> lines = translateGizmoLines(origin, TranslateGizmo::axisLength(view, viewport, origin));
-    // The axis under the mouse turns yellow, so the user sees what a drag will move.
-    if (hoveredAxis >= 0 && hoveredAxis < 3) {
-        const glm::vec4 axisColor = hoveredAxis == 0 ? kGizmoColorX : hoveredAxis == 1 ? kGizmoColorY : kGizmoColorZ;
-        for (OverlayLine& line : lines)
-            if (line.color == axisColor) line.color = glm::vec4(1.0f, 0.95f, 0.2f, 1.0f);
+    const glm::mat3 axes = gizmoAxes(options.gizmoMode, options.gizmoSpace,
+                                     doc.scene.nodes[static_cast<std::size_t>(doc.selectedNode)].world);
+    // The handle under the mouse turns yellow, so the user sees what a drag will change.
+    append(overlay.linesOnTop, gizmoLines(options.gizmoMode, view, viewport, origin, axes, options.hoveredGizmoAxis));
+}
+
+// The other selected nodes (the outline marks the active one): their bounds as boxes.
+void addSelectionBoxes(const Document& doc, ViewportOverlay& overlay) {
+    constexpr glm::vec4 kSelectedBoxColor{1.0f, 0.55f, 0.1f, 0.9f};
+    for (const int node : doc.selection()) {
+        if (node == doc.selectedNode) continue;
+        const Aabb box = nodeWorldBounds(doc.scene, node);
+        for (int i = 0; i < 8; ++i)
+            for (int bit : {1, 2, 4}) {
+                if (i & bit) continue;
+                auto corner = [&box](int c) {
+                    return glm::vec3(c & 1 ? box.max.x : box.min.x, c & 2 ? box.max.y : box.min.y, c & 4 ? box.max.z : box.min.z);
+                };
+                overlay.linesOnTop.push_back({corner(i), corner(i | bit), kSelectedBoxColor});
+            }
     }
-    append(overlay.linesOnTop, lines);
 }
 
 void addCameraPath(const Document& doc, const CameraView& view, glm::vec2 viewport, ViewportOverlay& overlay) {
@@ -98,6 +111,26 @@ void addCones(const Document& doc, const OverlayOptions& options, ViewportOverla
 
 }  // namespace
 
+Aabb nodeWorldBounds(const Scene& scene, int index) {
+    Aabb bounds;
+    if (index < 0 || index >= static_cast<int>(scene.nodes.size())) return bounds;
+    std::vector<int> stack{index};
+    for (std::size_t visited = 0; !stack.empty() && visited <= scene.nodes.size(); ++visited) {
+        const Node& node = scene.nodes[static_cast<std::size_t>(stack.back())];
+        stack.pop_back();
+        if (node.mesh >= 0 && node.mesh < static_cast<int>(scene.meshes.size()))
+            for (const Primitive& p : scene.meshes[static_cast<std::size_t>(node.mesh)].primitives)
+                bounds.extend(p.bounds.transformed(node.world));
+        for (const int child : node.children) stack.push_back(child);
+    }
+    if (bounds.empty()) {
+        const glm::vec3 origin = nodeWorldPosition(scene, index);
+        bounds.extend(origin - glm::vec3(0.1f));
+        bounds.extend(origin + glm::vec3(0.1f));
+    }
+    return bounds;
+}
+
 glm::vec3 nodeWorldPosition(const Scene& scene, int index) {
     if (index < 0 || index >= static_cast<int>(scene.nodes.size())) return glm::vec3(0.0f);
     return glm::vec3(scene.nodes[static_cast<std::size_t>(index)].world[3]);
@@ -110,7 +143,8 @@ ViewportOverlay buildViewportOverlay(const Document& doc, const CameraView& view
     if (selected && options.selectionOutline) overlay.highlightNode = doc.selectedNode;
     if (options.markers) addMarkers(doc, view, viewport, overlay);
     if (options.cameraPath) addCameraPath(doc, view, viewport, overlay);
-    if (options.gizmo && selected) addGizmo(doc, view, viewport, options.hoveredGizmoAxis, overlay);
+    if (options.gizmo && selected) addGizmo(doc, view, viewport, options, overlay);
+    if (options.selectionOutline) addSelectionBoxes(doc, overlay);
     if (options.coneSurface) addCones(doc, options, overlay);
     return overlay;
 }

@@ -9,6 +9,7 @@
 
 #include "Document.h"
 #include "Overlay.h"
+#include "TransformGizmo.h"
 #include "scene/CameraView.h"
 
 namespace lit::editor {
@@ -18,7 +19,9 @@ struct OverlayOptions {
     bool gizmo = true;        // the translate gizmo on the selected node
     bool cameraPath = true;   // the path curve and key frusta
     bool selectionOutline = true;  // outline the selected node
-    int hoveredGizmoAxis = -1;  // drawn brighter / thicker (0 X, 1 Y, 2 Z)
+    int hoveredGizmoAxis = -1;  // drawn yellow (0 X, 1 Y, 2 Z, TransformGizmo::kUniformHandle)
+    GizmoMode gizmoMode = GizmoMode::Translate;
+    GizmoSpace gizmoSpace = GizmoSpace::World;
     // Cone directions view: the surface picked for it, and the camera it was seen from.
     std::optional<SurfaceSample> coneSurface;
     glm::vec3 coneCameraPosition{0.0f};
@@ -29,6 +32,10 @@ inline constexpr int kPathCurveSamplesPerKey = 24;
 
 ViewportOverlay buildViewportOverlay(const Document& doc, const CameraView& view, glm::vec2 viewport,
                                      const OverlayOptions& options);
+
+// World bounds of node `index` and its subtree's meshes; a node without any: a 20 cm box at its
+// origin (lights, cameras, empties still have a place to frame).
+Aabb nodeWorldBounds(const Scene& scene, int index);
 
 // The world position of node `index` (its world matrix's translation), for the gizmo.
 glm::vec3 nodeWorldPosition(const Scene& scene, int index);

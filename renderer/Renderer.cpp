@@ -250,7 +250,8 @@ void Renderer::Impl::reportGiUpdate() {
     if (pendingVoxelize && voxelizeTiming) text += "voxelize " + formatMs(voxelizeTiming->gpuMs) + ", ";
     text += "inject " + formatMs(injectTiming->gpuMs);
     if (mipTiming) text += ", mipmap " + formatMs(mipTiming->gpuMs);
-    log.info(text);
+    // Every frame of a gizmo drag re-voxelizes: one folded line with a count, not one per frame.
+    log.info(text, Fold::IgnoringNumbers);
     pendingGiFrame = 0;
 }
 

@@ -66,4 +66,19 @@ screenshot $out/editor_performance.png ui
 quit
 SCRIPT
 xvfb-run -a -s "-screen 0 1280x720x24" "$build/editor/lit-editor" "$scene" --script "$script" --size 1280x720
+
+# The rotate gizmo in local space on the tall box, turned by a snapped drag on its Y ring, seen
+# from the front right; the View menu's current view named in the viewport bar.
+cat >"$script" <<SCRIPT
+select tall_box
+gizmo rotate
+space local
+snap on
+panel stats off
+camera 1.2 1.5 2.6 -0.2 0.4 -0.3
+wait 3
+screenshot $out/editor_rotate_gizmo.png ui
+quit
+SCRIPT
+xvfb-run -a -s "-screen 0 1280x720x24" "$build/editor/lit-editor" "$scene" --script "$script" --size 1280x720
 echo "screenshots written to $out"

@@ -1,6 +1,9 @@
 #include "panels/HierarchyPanel.h"
 
+#include <algorithm>
 #include <string>
+
+#include "SceneEdits.h"
 
 namespace lit::editor {
 
@@ -35,6 +38,38 @@ bool isAncestorOrSelf(const Scene& scene, int ancestor, int node) {
     return false;
 }
 
+constexpr const char* kDragPayload = "LIT_NODE";
+
+// Dropping a dragged node makes `newParent` its parent (the whole selection's when the dragged
+// node is selected), keeping world transforms; -1 = the scene root.
+bool acceptNodeDrop(Document& doc, int newParent) {
+    bool changed = false;
+    if (ImGui::BeginDragDropTarget()) {
+        if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kDragPayload)) {
+            const int dragged = *static_cast<const int*>(payload->Data);
+            if (!doc.isSelected(dragged)) doc.select(dragged);
+            doc.lastRefusal = reparentSelection(doc, newParent);
+            changed = true;
+        }
+        ImGui::EndDragDropTarget();
+    }
+    return changed;
+}
+
+// Right-click menu of a row: the edits of the Edit menu on this node.
+bool nodeContextMenu(Document& doc, int index) {
+    bool changed = false;
+    if (ImGui::BeginPopupContextItem()) {
+        if (!doc.isSelected(index)) doc.select(index);
+        if (ImGui::MenuItem("Duplicate", "Ctrl+D")) changed = duplicateSelection(doc).empty();
+        if (ImGui::MenuItem("Delete", "Del")) changed = deleteSelection(doc).empty();
+        if (ImGui::MenuItem("Move to the root", nullptr, false, doc.scene.nodes[static_cast<std::size_t>(index)].parent >= 0))
+            changed = reparentSelection(doc, -1).empty();
+        ImGui::EndPopup();
+    }
+    return changed;
+}
+
 }  // namespace
 
 bool HierarchyPanel::draw(Document& doc, const Placement& placement, bool* open) {
@@ -56,10 +91,13 @@ bool HierarchyPanel::draw(Document& doc, const Placement& placement, bool* open)
             for (const int root : scene.roots) changed |= drawNode(doc, root, 0);
         }
         revealedSelection_ = doc.selectedNode;
+        // The space below the rows: a drop there moves the dragged nodes to the scene root.
+        ImGui::Dummy(ImVec2(-1.0f, std::max(ImGui::GetContentRegionAvail().y, 24.0f)));
+        changed |= acceptNodeDrop(doc, -1);
         // A click on empty space below the rows clears the selection.
         if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !ImGui::IsAnyItemHovered() &&
-            doc.selectedNode >= 0) {
-            doc.selectedNode = -1;
+            doc.selectedNode >= 0 && !ImGui::GetIO().KeyShift) {
+            doc.select(-1);
             changed = true;
         }
         ImGui::EndChild();
@@ -75,7 +113,7 @@ bool HierarchyPanel::drawNode(Document& doc, int index, int depth) {
     ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_OpenOnDoubleClick |
                                ImGuiTreeNodeFlags_SpanAvailWidth | ImGuiTreeNodeFlags_DefaultOpen;
     if (node.children.empty()) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
-    if (index == doc.selectedNode) flags |= ImGuiTreeNodeFlags_Selected;
+    if (doc.isSelected(index)) flags |= ImGuiTreeNodeFlags_Selected;
     // A selection made elsewhere (script, viewport) opens the tree down to it, once.
     if (doc.selectedNode != revealedSelection_ && doc.selectedNode >= 0 && index != doc.selectedNode &&
         isAncestorOrSelf(scene, index, doc.selectedNode))
@@ -84,10 +122,33 @@ bool HierarchyPanel::drawNode(Document& doc, int index, int depth) {
     const bool opened = ImGui::TreeNodeEx(label.c_str(), flags);
     if (index == doc.selectedNode && doc.selectedNode != revealedSelection_) ImGui::SetScrollHereY();
     bool changed = false;
-    if (ImGui::IsItemClicked(ImGuiMouseButton_Left) && !ImGui::IsItemToggledOpen() && doc.selectedNode != index) {
-        doc.selectedNode = index;
+    // Shift+click adds to (or takes from) the selection, as in Blender and Godot.
+    // A plain click on a row of a multi-selection keeps the selection until the button comes up
+    // without a drag, so the whole selection can be dragged onto a new parent.
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool multiple = doc.selection().size() > 1;
+    if (ImGui::IsItemClicked(ImGuiMouseButton_Left) && !ImGui::IsItemToggledOpen()) {
+        if (io.KeyShift) {
+            doc.select(index, /*additive=*/true);
+            changed = true;
+        } else if (!doc.isSelected(index) || (!multiple && doc.selectedNode != index)) {
+            doc.select(index);
+            changed = true;
+        }
+    }
+    if (multiple && !io.KeyShift && doc.isSelected(index) && ImGui::IsItemHovered() &&
+        ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 16.0f) {
+        doc.select(index);
         changed = true;
     }
+    // Drag a row onto another to parent it there (world transform kept).
+    if (ImGui::BeginDragDropSource()) {
+        ImGui::SetDragDropPayload(kDragPayload, &index, sizeof index);
+        ImGui::Text("Parent %s to ...", node.name.empty() ? "node" : node.name.c_str());
+        ImGui::EndDragDropSource();
+    }
+    changed |= acceptNodeDrop(doc, index);
+    changed |= nodeContextMenu(doc, index);
     if (opened && !node.children.empty()) {
         for (const int child : node.children) changed |= drawNode(doc, child, depth + 1);
         ImGui::TreePop();
@@ -102,8 +163,8 @@ bool HierarchyPanel::drawFlatList(Document& doc) {
         const Node& node = scene.nodes[static_cast<std::size_t>(index)];
         if (!filter_.PassFilter(node.name.c_str())) continue;
         const std::string label = labelOf(node, index);
-        if (ImGui::Selectable(label.c_str(), index == doc.selectedNode) && doc.selectedNode != index) {
-            doc.selectedNode = index;
+        if (ImGui::Selectable(label.c_str(), doc.isSelected(index))) {
+            doc.select(index, ImGui::GetIO().KeyShift);
             changed = true;
         }
     }

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <string>
 
+#include "SceneEdits.h"
+
 namespace lit::editor {
 
 namespace {
@@ -72,11 +74,44 @@ void InspectorPanel::draw(Document& doc, const Placement& placement, bool* open)
             if (node.mesh >= 0 && node.mesh < static_cast<int>(scene.meshes.size())) {
                 const Mesh& mesh = scene.meshes[static_cast<std::size_t>(node.mesh)];
                 if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
-                    const int material = mesh.primitives.empty() ? -1 : mesh.primitives.front().material;
-                    if (material < 0 || material >= static_cast<int>(scene.materials.size()))
+                    // A multi-material mesh: choose the primitive whose material is edited.
+                    const int primitives = static_cast<int>(mesh.primitives.size());
+                    if (doc.selectedPrimitive >= primitives) doc.selectedPrimitive = 0;
+                    if (primitives > 1) {
+                        auto primitiveLabel = [&](int p) {
+                            const int m = mesh.primitives[static_cast<std::size_t>(p)].material;
+                            const std::string name = m >= 0 && m < static_cast<int>(scene.materials.size())
+                                                         ? scene.materials[static_cast<std::size_t>(m)].name
+                                                         : std::string("default material");
+                            return "Primitive " + std::to_string(p) + ": " + name;
+                        };
+                        if (ImGui::BeginCombo("Primitive", primitiveLabel(doc.selectedPrimitive).c_str())) {
+                            for (int p = 0; p < primitives; ++p)
+                                if (ImGui::Selectable(primitiveLabel(p).c_str(), p == doc.selectedPrimitive))
+                                    doc.selectedPrimitive = p;
+                            ImGui::EndCombo();
+                        }
+                        tooltip("This mesh has several parts with their own materials: the one edited below");
+                    }
+                    const int material = nodePrimitiveMaterial(scene, selected, doc.selectedPrimitive);
+                    if (material < 0) {
                         ImGui::TextDisabled("The default material (not editable).");
-                    else
-                        drawMaterial(doc, material);
+                    } else {
+                        // Blender's user count: an edit here changes every node listed.
+                        // (drawMaterial shows the name below.)
+                        const int users = materialUserCount(scene, material);
+                        if (users > 1) {
+                            ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "(%d users)", users);
+                            tooltip("Other nodes use this material too: an edit changes them all");
+                            ImGui::SameLine();
+                            if (ImGui::SmallButton("Make unique")) makeMaterialUnique(doc, selected, doc.selectedPrimitive);
+                            tooltip("Give this node its own copy of the material (one undo step)");
+                        } else {
+                            ImGui::TextDisabled("(1 user)");
+                        }
+                        const int edited = nodePrimitiveMaterial(scene, selected, doc.selectedPrimitive);
+                        if (edited >= 0) drawMaterial(doc, edited);
+                    }
                 }
             }
             if (node.light >= 0 && node.light < static_cast<int>(scene.lights.size()) &&

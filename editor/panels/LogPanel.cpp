@@ -1,5 +1,6 @@
 #include "panels/LogPanel.h"
 
+#include <string>
 #include <vector>
 
 namespace lit::editor {
@@ -48,10 +49,12 @@ void LogPanel::draw(const Log& log, ImFont* monoFont, const Placement& placement
                                (message.level == LogLevel::Error && showErrors_);
             if (!shown || !filter_.PassFilter(message.text.c_str())) continue;
             ImGui::PushStyleColor(ImGuiCol_Text, colourOf(message.level));
+            // A folded run of repeats shows its newest text once, with the count.
+            const std::string count = message.repeats > 1 ? "  (x" + std::to_string(message.repeats) + ")" : std::string();
             if (message.level == LogLevel::Info)
-                ImGui::TextUnformatted(message.text.c_str());
+                ImGui::Text("%s%s", message.text.c_str(), count.c_str());
             else
-                ImGui::Text("%s: %s", toString(message.level), message.text.c_str());
+                ImGui::Text("%s: %s%s", toString(message.level), message.text.c_str(), count.c_str());
             ImGui::PopStyleColor();
         }
         // Stay at the bottom while the user is there, so new messages come into view; once they

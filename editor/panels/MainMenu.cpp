@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "EditorViews.h"
 #include "panels/Dialogs.h"
 
 namespace lit::editor {
@@ -44,9 +45,30 @@ MenuRequests MainMenu::draw(PanelVisibility& visible, const MenuContext& context
             const std::string redo = context.redoLabel.empty() ? "Redo" : "Redo " + context.redoLabel;
             if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, !context.undoLabel.empty())) requests.undo = true;
             if (ImGui::MenuItem(redo.c_str(), "Ctrl+Y", false, !context.redoLabel.empty())) requests.redo = true;
+            ImGui::Separator();
+            if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, context.hasSelection)) requests.duplicateSelection = true;
+            if (ImGui::MenuItem("Delete", "Del", false, context.hasSelection)) requests.deleteSelection = true;
+            ImGui::EndMenu();
+        }
+        if (ImGui::BeginMenu("Add")) {
+            const char* labels[] = {"Empty", "Directional light (sun)", "Point light", "Spot light", "Camera",
+                                    "Box", "Plane", "Sphere"};
+            int i = 0;
+            for (const NodeKind kind : allNodeKinds()) {
+                if (kind == NodeKind::DirectionalLight || kind == NodeKind::Camera || kind == NodeKind::Box) ImGui::Separator();
+                if (ImGui::MenuItem(labels[i++])) requests.add = kind;
+            }
             ImGui::EndMenu();
         }
         if (ImGui::BeginMenu("View")) {
+            for (const EditorView& view : editorViews()) {
+                const std::string label(view.label), shortcut(view.shortcut);
+                if (ImGui::MenuItem(label.c_str(), shortcut.c_str(), view.name == context.currentView))
+                    requests.view = std::string(view.name);
+            }
+            ImGui::Separator();
+            if (ImGui::MenuItem("Frame selected", "F", false, context.hasSelection)) requests.frameSelection = true;
+            ImGui::Separator();
             ImGui::MenuItem("Hierarchy", nullptr, &visible.hierarchy);
             ImGui::MenuItem("Inspector", nullptr, &visible.inspector);
             ImGui::MenuItem("Render settings", nullptr, &visible.renderSettings);

@@ -1,6 +1,8 @@
 #pragma once
 // The main menu bar: File (Open… with a path field and recent files, Save, Save As…, the two
-// screenshots, Quit), Edit (Undo / Redo with the step's name) and View (panel toggles). It
+// screenshots, Quit), Edit (Undo / Redo with the step's name, Duplicate, Delete), Add (empty,
+// lights, camera, primitives) and View (every debug view with its number key, frame selected,
+// panel toggles). It
 // returns what the user asked for; the App carries it out, asking about unsaved changes first.
 
 #include <filesystem>
@@ -9,6 +11,7 @@
 
 #include "EditorState.h"
 #include "RecentFiles.h"
+#include "SceneEdits.h"
 
 namespace lit::editor {
 
@@ -18,6 +21,8 @@ struct MenuContext {
     std::filesystem::path currentScene;  // pre-fills the Open and Save As path fields
     std::string undoLabel;               // "" = nothing to undo
     std::string redoLabel;
+    std::string currentView;  // EditorViews.h name, ticked in the View menu
+    bool hasSelection = false;
 };
 
 struct MenuRequests {
@@ -30,6 +35,11 @@ struct MenuRequests {
     bool undo = false;
     bool redo = false;
     bool quit = false;
+    std::optional<NodeKind> add;      // Add menu: a new node of this kind
+    bool deleteSelection = false;     // Edit > Delete
+    bool duplicateSelection = false;  // Edit > Duplicate
+    bool frameSelection = false;      // View > Frame selected
+    std::optional<std::string> view;  // View > a debug view (EditorViews.h name)
 };
 
 class MainMenu {

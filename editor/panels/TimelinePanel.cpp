@@ -6,6 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/quaternion.hpp>
+#include <string>
+#include <vector>
+
+#include "DocumentIO.h"
+#include "animation/CameraPathIO.h"
 
 namespace lit::editor {
 
@@ -192,6 +197,31 @@ void TimelinePanel::draw(Document& doc, PathPlayback& playback, FlyCamera& camer
     if (!ImGui::Begin("Timeline", open)) {
         ImGui::End();
         return;
+    }
+    // Which camera animation of the file the path edits (a Blender file's "fly", the editor's own
+    // "camera path"); switching is one undo step.
+    {
+        std::vector<std::string> names = doc.cameraAnimations;
+        if (std::find(names.begin(), names.end(), doc.cameraPathName) == names.end()) names.insert(names.begin(), doc.cameraPathName);
+        if (std::find(names.begin(), names.end(), std::string(kDefaultCameraAnimation)) == names.end())
+            names.push_back(kDefaultCameraAnimation);
+        ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Animation").x - 8.0f, 60.0f));
+        if (ImGui::BeginCombo("Animation", doc.cameraPathName.c_str())) {
+            for (const std::string& name : names) {
+                const bool inFile = std::find(doc.cameraAnimations.begin(), doc.cameraAnimations.end(), name) !=
+                                    doc.cameraAnimations.end();
+                const std::string label = inFile ? name : name + " (new)";
+                if (ImGui::Selectable(label.c_str(), name == doc.cameraPathName)) {
+                    chooseError_ = chooseCameraAnimation(doc, name);
+                    playback.playing = false;
+                    if (!doc.cameraPath.empty()) playback.time = doc.cameraPath.startTime();
+                }
+            }
+            ImGui::EndCombo();
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The camera animation of the file that the keys below edit; saved under this name");
+        if (!chooseError_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", chooseError_.c_str());
     }
     CameraPath& path = doc.cameraPath;
     // Transport and the key actions that need no selection.

@@ -4,6 +4,8 @@
 // the Document (a key drag too); scrubbing and playing only move the playhead and, when
 // "look through" is on, the fly camera.
 
+#include <string>
+
 #include "Document.h"
 #include "PathEditing.h"
 #include "panels/Layout.h"
@@ -17,6 +19,7 @@ public:
 
 private:
     int draggedKey_ = -1;  // key being dragged on the ruler, -1 when none
+    std::string chooseError_;  // why the last animation switch failed, shown under the combo
 };
 
 }  // namespace lit::editor

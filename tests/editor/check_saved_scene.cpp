@@ -5,6 +5,14 @@
 //   roughness, metalness, albedo  the material of the node's mesh (first primitive); albedo RGB
 //   emissive, emissiveStrength
 //   light.color, light.intensity, light.range   the light the node holds
+//   rotation                     the node's quaternion x, y, z, w
+//   worldPosition                the node's world-space origin (metres)
+//   holds                        1/0 each: holds a mesh, a light, a camera
+//   parent                       the parent node's name, "-" for a root (compared as text)
+//   distinctMaterial             NODE.distinctMaterial=1:OTHER (or 0:OTHER): whether the two
+//                                nodes' first primitives use different materials
+// "*.nodes=N" checks the node count. NODE is the longest node name the check starts with
+// followed by a dot, so names may hold dots ("Box.001.translation=...").
 // Prints one line per check; exits 0 when all hold, 1 when one does not, 2 on bad usage.
 
 #include <algorithm>
@@ -50,6 +58,10 @@ std::vector<float> actualValue(const lit::Scene& scene, const lit::Node& node, c
     const lit::Light* light = node.light >= 0 ? &scene.lights[node.light] : nullptr;
     auto vec3 = [](const glm::vec3& v) { return std::vector<float>{v.x, v.y, v.z}; };
     if (property == "translation") return vec3(node.translation);
+    if (property == "rotation") return {node.rotation.x, node.rotation.y, node.rotation.z, node.rotation.w};
+    if (property == "worldPosition") return vec3(glm::vec3(node.world[3]));
+    if (property == "holds")
+        return {node.mesh >= 0 ? 1.0f : 0.0f, node.light >= 0 ? 1.0f : 0.0f, node.camera >= 0 ? 1.0f : 0.0f};
     if (property == "scale") return vec3(node.scale);
     if (property.starts_with("light.")) {
         if (light == nullptr) {
@@ -99,24 +111,50 @@ int main(int argc, char** argv) {
     bool allHold = true;
     for (int i = 2; i < argc; ++i) {
         const std::string check = argv[i];
-        const std::size_t dot = check.find('.');
         const std::size_t equals = check.rfind('=');
+        // The node: the longest name followed by a dot that the check starts with.
+        const lit::Node* node = nullptr;
+        for (const lit::Node& candidate : scene.nodes)
+            if (check.size() > candidate.name.size() && check.compare(0, candidate.name.size(), candidate.name) == 0 &&
+                check[candidate.name.size()] == '.' && (node == nullptr || candidate.name.size() > node->name.size()))
+                node = &candidate;
+        const std::size_t dot = node != nullptr ? node->name.size() : check.find('.');
         if (dot == std::string::npos || equals == std::string::npos || equals < dot) {
             std::fprintf(stderr, "lit_check_saved_scene: '%s' is not NODE.PROPERTY=VALUES\n", check.c_str());
             return 2;
         }
         const std::string nodeName = check.substr(0, dot);
         const std::string property = check.substr(dot + 1, equals - dot - 1);
+        const std::string value = check.substr(equals + 1);
+        // Text-valued checks.
+        if (property == "parent" || property == "distinctMaterial" || (nodeName == "*" && property == "nodes")) {
+            std::string found;
+            if (nodeName == "*") {
+                found = std::to_string(scene.nodes.size());
+            } else if (node == nullptr) {
+                found = "(no node called '" + nodeName + "')";
+            } else if (property == "parent") {
+                found = node->parent < 0 ? "-" : scene.nodes[static_cast<std::size_t>(node->parent)].name;
+            } else {
+                const lit::Node* other = nullptr;
+                for (const lit::Node& candidate : scene.nodes)
+                    if (candidate.name == value.substr(value.find(':') == std::string::npos ? 0 : value.find(':') + 1))
+                        other = &candidate;
+                found = other == nullptr ? "(no such node)" : materialOf(scene, *node) != materialOf(scene, *other) ? "1" : "0";
+            }
+            const std::string wanted = property == "distinctMaterial" ? value.substr(0, value.find(':')) : value;
+            const bool holds = found == wanted;
+            std::printf("%s %s%s%s\n", holds ? "ok  " : "FAIL", check.c_str(), holds ? "" : ": found ", holds ? "" : found.c_str());
+            allHold &= holds;
+            continue;
+        }
         std::vector<float> expected;
         try {
-            expected = parseValues(check.substr(equals + 1));
+            expected = parseValues(value);
         } catch (const std::exception&) {
             std::fprintf(stderr, "lit_check_saved_scene: '%s': the values are not numbers\n", check.c_str());
             return 2;
         }
-        const lit::Node* node = nullptr;
-        for (const lit::Node& candidate : scene.nodes)
-            if (candidate.name == nodeName) node = &candidate;
         std::string why;
         std::vector<float> actual;
         if (node == nullptr)

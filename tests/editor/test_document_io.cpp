@@ -13,6 +13,7 @@
 #include "Properties.h"
 #include "Renderer.h"
 #include "ScreenshotNames.h"
+#include "animation/CameraPathIO.h"
 #include "scene/GltfLoader.h"
 #include "scene/GltfWriter.h"
 
@@ -402,6 +403,60 @@ TEST(Autosave, ALockOfALiveEditorIsLeftAlone) {
     EXPECT_TRUE(third.active());
     EXPECT_TRUE(third.recoverable());
     third.cleanExit();
+}
+
+}  // namespace
+
+namespace {
+
+using namespace lit;
+using namespace lit::editor;
+
+TEST(DocumentIO, EveryCameraAnimationIsListedAndCanBeChosenUndoneAndSaved) {
+    const fs::path folder = fs::path(::testing::TempDir()) / ("lit_docio_anim_" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const fs::path file = folder / "anim.gltf";
+    // A file whose only camera animation is Blender-style "fly" (3 keys).
+    Document made = lit::editor::testing::fixtureDocument();
+    made.cameraPath = CameraPath();
+    saveDocument(made, file);
+    std::vector<CameraKey> keys(3);
+    for (int i = 0; i < 3; ++i) {
+        keys[static_cast<std::size_t>(i)].time = static_cast<float>(i);
+        keys[static_cast<std::size_t>(i)].position = {static_cast<float>(i), 1.0f, 4.0f};
+    }
+    saveCameraPathToGltf(file, CameraPath(keys), "fly");
+
+    Log log;
+    log.setSink([](const LogMessage&) {});
+    Document doc = openDocument(file, log);
+    EXPECT_EQ(doc.cameraAnimations, std::vector<std::string>{"fly"});
+    EXPECT_EQ(doc.cameraPathName, "fly");  // no "camera path": the file's own animation is edited
+    ASSERT_EQ(doc.cameraPath.keys().size(), 3u);
+
+    // A new path under the editor's name, then back: one undo step each.
+    ASSERT_EQ(chooseCameraAnimation(doc, "camera path"), "");
+    EXPECT_TRUE(doc.cameraPath.empty());
+    EXPECT_EQ(doc.undoLabel(), "Edit Animation camera path");
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.cameraPathName, "fly");
+    EXPECT_EQ(doc.cameraPath.keys().size(), 3u);
+    ASSERT_TRUE(doc.redo());
+    EXPECT_EQ(doc.cameraPathName, "camera path");
+    ASSERT_EQ(chooseCameraAnimation(doc, "fly"), "");
+    EXPECT_EQ(doc.cameraPath.keys().size(), 3u);
+
+    // Edit "fly", save, reopen: the edit is in "fly".
+    CameraPath edited = doc.cameraPath;
+    std::vector<CameraKey> changed = edited.keys();
+    changed[1].position.y = 2.5f;
+    doc.edit("key", Change::CameraPath, [&](Scene&) { doc.cameraPath = CameraPath(changed, edited.options()); });
+    saveDocument(doc, file);
+    const Document back = openDocument(file, log);
+    EXPECT_EQ(back.cameraPathName, "fly");
+    ASSERT_EQ(back.cameraPath.keys().size(), 3u);
+    EXPECT_FLOAT_EQ(back.cameraPath.keys()[1].position.y, 2.5f);
 }
 
 }  // namespace

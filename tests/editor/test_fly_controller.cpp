@@ -113,3 +113,39 @@ TEST(EditorFlyController, SpeedForBoundsScalesWithTheScene) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace lit;
+using namespace lit::editor;
+
+TEST(FlyOrbit, OrbitKeepsTheDistanceAndLooksAtThePivot) {
+    FlyCamera camera;
+    camera.position = {0.0f, 0.0f, 5.0f};
+    const glm::vec3 pivot{0.0f, 0.0f, 1.0f};
+    orbitAround(camera, pivot, {200.0f, -50.0f});
+    EXPECT_NEAR(glm::length(camera.position - pivot), 4.0f, 1e-4f);
+    EXPECT_NEAR(glm::length(glm::normalize(pivot - camera.position) - camera.forward()), 0.0f, 1e-4f);
+    // Dragging right takes the camera round to the left (−X seen from +Z).
+    EXPECT_LT(camera.position.x, 0.0f);
+    // Dragging up (negative y) lowers it below the pivot.
+    EXPECT_LT(camera.position.y, 0.0f);
+}
+
+TEST(FlyOrbit, FrameBoundsCentresTheBoxAndFitsItInTheView) {
+    FlyCamera camera;
+    camera.position = {10.0f, 3.0f, 10.0f};
+    lookAt(camera, glm::vec3(0.0f));
+    Aabb box;
+    box.extend(glm::vec3(4.0f, 1.0f, 4.0f));
+    box.extend(glm::vec3(6.0f, 3.0f, 6.0f));
+    const glm::vec3 forward = camera.forward();
+    const float distance = frameBounds(camera, box);
+    EXPECT_EQ(camera.forward(), forward);  // orientation kept
+    EXPECT_NEAR(glm::length(camera.position + forward * distance - box.center()), 0.0f, 1e-4f);
+    // The bounding sphere takes 80 % of the vertical FOV.
+    EXPECT_NEAR(std::asin(box.radius() / distance), 0.4f * camera.yfov, 1e-4f);
+    EXPECT_EQ(frameBounds(camera, Aabb{}), 0.0f);
+}
+
+}  // namespace

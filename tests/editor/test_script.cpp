@@ -149,3 +149,58 @@ TEST(Script, CameraAndConeDirectionsCommands) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace lit::editor;
+
+TEST(Script, ParsesTheAuthoringCommands) {
+    const std::string text =
+        "add box\n"
+        "add spot 1 2 3.5\n"
+        "select+ Big Box\n"
+        "delete\n"
+        "duplicate\n"
+        "parent The Parent\n"
+        "parent -\n"
+        "material unique\n"
+        "primitive 1\n"
+        "gizmo rotate\n"
+        "space local\n"
+        "snap on\n"
+        "snap 0.5 15 0.25\n"
+        "drag 10 20 30.5 40\n"
+        "frame\n"
+        "orbit -20 5\n"
+        "animation my fly\n";
+    const std::vector<ScriptCommand> commands = parseScript(text, "s.txt");
+    ASSERT_EQ(commands.size(), 17u);
+    EXPECT_EQ(commands[1].args, (std::vector<std::string>{"spot", "1", "2", "3.5"}));
+    EXPECT_EQ(commands[2].args, std::vector<std::string>{"Big Box"});
+    EXPECT_EQ(commands[5].args, std::vector<std::string>{"The Parent"});
+    EXPECT_EQ(commands[16].args, std::vector<std::string>{"my fly"});
+}
+
+TEST(Script, RejectsBadAuthoringCommands) {
+    auto errorOf = [](const std::string& text) -> std::string {
+        try {
+            parseScript(text, "s.txt");
+        } catch (const ScriptError& error) {
+            return error.what();
+        }
+        return "";
+    };
+    EXPECT_EQ(errorOf("add cone\n"), "s.txt:1: unknown kind 'cone' (empty, directional, point, spot, camera, box, plane, sphere)");
+    EXPECT_NE(errorOf("add box 1 2\n"), "");
+    EXPECT_NE(errorOf("gizmo spin\n"), "");
+    EXPECT_NE(errorOf("space global\n"), "");
+    EXPECT_NE(errorOf("snap 0 15 0.1\n"), "");  // a zero step
+    EXPECT_NE(errorOf("snap maybe\n"), "");
+    EXPECT_NE(errorOf("drag 1 2 3\n"), "");
+    EXPECT_NE(errorOf("delete now\n"), "");
+    EXPECT_NE(errorOf("material shared\n"), "");
+    EXPECT_NE(errorOf("primitive -1\n"), "");
+    EXPECT_NE(errorOf("select+\n"), "");
+}
+
+}  // namespace

@@ -103,3 +103,29 @@ TEST(ViewportOverlay, ConeDirectionsViewDrawsSixDiffuseConesAndTheSpecularOnes) 
 }
 
 }  // namespace
+
+namespace {
+
+using namespace lit;
+using namespace lit::editor;
+
+TEST(ViewportOverlay, OtherSelectedNodesGetBoxesAndTheGizmoFollowsItsMode) {
+    Document doc = sceneWithLightAndCamera();
+    const int box = findNode(doc.scene, "Box");
+    doc.select(box);
+    const ViewportOverlay single = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
+    const int light = doc.scene.nodeOfLight(0);
+    doc.select(light, /*additive=*/true);  // the light is active, the box is the other
+    const ViewportOverlay both = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
+    EXPECT_EQ(both.highlightNode, light);
+    // The gizmo (same mode, now at the light) plus the box's 12 edges.
+    EXPECT_EQ(both.linesOnTop.size(), single.linesOnTop.size() + 12);
+
+    OverlayOptions rotate;
+    rotate.gizmoMode = GizmoMode::Rotate;
+    doc.select(box);
+    EXPECT_EQ(buildViewportOverlay(doc, viewOf(doc), {1280, 720}, rotate).linesOnTop.size(),
+              3u * TransformGizmo::kRingSegments);
+}
+
+}  // namespace

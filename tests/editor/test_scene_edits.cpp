@@ -1,0 +1,301 @@
+// Structural edits (SceneEdits.h): each one applied, undone, redone, saved, reopened and compared.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "DocumentIO.h"
+#include "EditorFixtures.h"
+#include "Log.h"
+#include "Properties.h"
+#include "SceneEdits.h"
+
+namespace {
+
+using namespace lit;
+using namespace lit::editor;
+using lit::editor::testing::fixtureDocument;
+namespace fs = std::filesystem;
+
+fs::path freshFolder(const std::string& name) {
+    const fs::path folder = fs::path(::testing::TempDir()) / ("lit_edits_" + std::to_string(::getpid())) / name;
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+Document reopen(Document& doc, const std::string& name) {
+    const fs::path file = freshFolder(name) / "scene.gltf";
+    saveDocument(doc, file);
+    Log log;
+    log.setSink([](const LogMessage&) {});
+    return openDocument(file, log);
+}
+
+int nodeCalled(const Scene& scene, const std::string& name) { return findNode(scene, name); }
+
+void expectNear(const glm::mat4& a, const glm::mat4& b, float tolerance = 1e-4f) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) EXPECT_NEAR(a[c][r], b[c][r], tolerance) << "column " << c << " row " << r;
+}
+
+// Parent/children/roots agree, and every world matrix is what the locals say.
+void expectConsistent(const Scene& scene) {
+    std::size_t roots = 0;
+    for (int i = 0; i < static_cast<int>(scene.nodes.size()); ++i) {
+        const Node& n = scene.nodes[static_cast<std::size_t>(i)];
+        if (n.parent < 0) {
+            ++roots;
+            EXPECT_NE(std::find(scene.roots.begin(), scene.roots.end(), i), scene.roots.end());
+        } else {
+            const auto& siblings = scene.nodes[static_cast<std::size_t>(n.parent)].children;
+            EXPECT_NE(std::find(siblings.begin(), siblings.end(), i), siblings.end()) << "node " << i;
+        }
+        for (const int c : n.children) EXPECT_EQ(scene.nodes[static_cast<std::size_t>(c)].parent, i);
+        EXPECT_LT(n.light, static_cast<int>(scene.lights.size()));
+        EXPECT_LT(n.camera, static_cast<int>(scene.cameras.size()));
+        EXPECT_LT(n.mesh, static_cast<int>(scene.meshes.size()));
+    }
+    EXPECT_EQ(roots, scene.roots.size());
+}
+
+TEST(SceneEdits, AddEveryKindUndoRedoSaveReopen) {
+    for (const NodeKind kind : allNodeKinds()) {
+        SCOPED_TRACE(nodeKindName(kind));
+        Document doc = fixtureDocument();
+        const std::size_t nodes = doc.scene.nodes.size(), lights = doc.scene.lights.size();
+        const std::size_t cameras = doc.scene.cameras.size(), meshes = doc.scene.meshes.size();
+        const int added = addNode(doc, kind, {1.0f, 2.0f, 3.0f}, {0.0f, 0.0f, -1.0f});
+        ASSERT_EQ(added, static_cast<int>(nodes));
+        EXPECT_EQ(doc.selectedNode, added);
+        const Node node = doc.scene.nodes[static_cast<std::size_t>(added)];
+        EXPECT_EQ(glm::vec3(node.world[3]), glm::vec3(1.0f, 2.0f, 3.0f));
+        const bool isLight = kind == NodeKind::DirectionalLight || kind == NodeKind::PointLight || kind == NodeKind::SpotLight;
+        const bool isMesh = kind == NodeKind::Box || kind == NodeKind::Plane || kind == NodeKind::Sphere;
+        EXPECT_EQ(node.light >= 0, isLight);
+        EXPECT_EQ(node.camera >= 0, kind == NodeKind::Camera);
+        EXPECT_EQ(node.mesh >= 0, isMesh);
+        if (isMesh) {
+            const Primitive& p = doc.scene.meshes[static_cast<std::size_t>(node.mesh)].primitives.front();
+            ASSERT_GE(p.material, 0);
+            EXPECT_EQ(materialUserCount(doc.scene, p.material), 1);
+            EXPECT_FALSE(p.indices.empty());
+            EXPECT_EQ(p.indices.size() % 3, 0u);
+        }
+        expectConsistent(doc.scene);
+        const EditableState after = doc.capture();
+
+        ASSERT_TRUE(doc.undo());
+        EXPECT_EQ(doc.scene.nodes.size(), nodes);
+        EXPECT_EQ(doc.scene.lights.size(), lights);
+        EXPECT_EQ(doc.scene.cameras.size(), cameras);
+        EXPECT_EQ(doc.scene.meshes.size(), meshes);
+        expectConsistent(doc.scene);
+        ASSERT_TRUE(doc.redo());
+        EXPECT_TRUE(doc.capture() == after);
+        EXPECT_EQ(doc.undoLabel().rfind("Add ", 0), 0u);
+
+        const Document back = reopen(doc, std::string("add_") + nodeKindName(kind));
+        const int again = nodeCalled(back.scene, node.name);
+        ASSERT_GE(again, 0);
+        const Node& b = back.scene.nodes[static_cast<std::size_t>(again)];
+        expectNear(b.world, node.world);
+        EXPECT_EQ(b.light >= 0, isLight);
+        EXPECT_EQ(b.camera >= 0, kind == NodeKind::Camera);
+        EXPECT_EQ(b.mesh >= 0, isMesh);
+        if (isLight) {
+            EXPECT_EQ(back.scene.lights[static_cast<std::size_t>(b.light)].type,
+                      doc.scene.lights[static_cast<std::size_t>(node.light)].type);
+        }
+        if (isMesh) {
+            EXPECT_EQ(back.scene.meshes[static_cast<std::size_t>(b.mesh)].primitives.front().indices.size(),
+                      doc.scene.meshes[static_cast<std::size_t>(node.mesh)].primitives.front().indices.size());
+        }
+    }
+}
+
+TEST(SceneEdits, NamesAreMadeUnique) {
+    Document doc = fixtureDocument();
+    addNode(doc, NodeKind::Box, glm::vec3(0.0f));
+    addNode(doc, NodeKind::Box, glm::vec3(0.0f));  // the fixture already has a "Box"
+    EXPECT_GE(findNode(doc.scene, "Box.001"), 0);
+    EXPECT_GE(findNode(doc.scene, "Box.002"), 0);
+}
+
+TEST(SceneEdits, DeleteRemovesSubtreeAndItsLightUndoRedoSave) {
+    Document doc = fixtureDocument();
+    const int lamp = findNode(doc.scene, "Lamp");
+    const int box = findNode(doc.scene, "Box");
+    ASSERT_EQ(reparent(doc, box, lamp), "");  // Box under Lamp
+    const std::size_t nodes = doc.scene.nodes.size(), lights = doc.scene.lights.size();
+    doc.select(lamp);
+    ASSERT_EQ(deleteSelection(doc), "");
+    EXPECT_EQ(doc.scene.nodes.size(), nodes - 2);
+    EXPECT_EQ(doc.scene.lights.size(), lights - 1);
+    EXPECT_LT(findNode(doc.scene, "Lamp"), 0);
+    EXPECT_LT(findNode(doc.scene, "Box"), 0);
+    EXPECT_EQ(doc.selectedNode, -1);
+    expectConsistent(doc.scene);
+    const EditableState after = doc.capture();
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.scene.nodes.size(), nodes);
+    EXPECT_GE(findNode(doc.scene, "Lamp"), 0);
+    expectConsistent(doc.scene);
+    ASSERT_TRUE(doc.redo());
+    EXPECT_TRUE(doc.capture() == after);
+    const Document back = reopen(doc, "delete");
+    // The only light is gone, so opening adds the default sun (DocumentIO: addDefaultLightAndCamera).
+    EXPECT_EQ(back.scene.nodes.size(), nodes - 2 + 1);
+    EXPECT_LT(findNode(back.scene, "Lamp"), 0);
+    EXPECT_GE(findNode(back.scene, "Cam"), 0);
+    EXPECT_EQ(deleteSelection(doc), "nothing is selected");
+}
+
+TEST(SceneEdits, DuplicateCopiesSubtreeSharesMeshCopiesLight) {
+    Document doc = fixtureDocument();
+    const int lamp = findNode(doc.scene, "Lamp");
+    const int empty = findNode(doc.scene, "Empty");
+    ASSERT_EQ(reparent(doc, lamp, empty), "");
+    doc.select(empty);
+    doc.select(findNode(doc.scene, "Box"), /*additive=*/true);
+    const std::size_t nodes = doc.scene.nodes.size(), lights = doc.scene.lights.size();
+    ASSERT_EQ(duplicateSelection(doc), "");
+    EXPECT_EQ(doc.scene.nodes.size(), nodes + 3);  // Empty + Lamp + Box
+    EXPECT_EQ(doc.scene.lights.size(), lights + 1);
+    EXPECT_EQ(doc.selection().size(), 2u);
+    const int boxCopy = findNode(doc.scene, "Box.001");
+    const int lampCopy = findNode(doc.scene, "Lamp.001");
+    ASSERT_GE(boxCopy, 0);
+    ASSERT_GE(lampCopy, 0);
+    EXPECT_EQ(doc.scene.nodes[static_cast<std::size_t>(boxCopy)].mesh,
+              doc.scene.nodes[static_cast<std::size_t>(findNode(doc.scene, "Box"))].mesh);
+    EXPECT_NE(doc.scene.nodes[static_cast<std::size_t>(lampCopy)].light,
+              doc.scene.nodes[static_cast<std::size_t>(lamp)].light);
+    EXPECT_EQ(doc.scene.nodes[static_cast<std::size_t>(lampCopy)].parent, findNode(doc.scene, "Empty.001"));
+    expectNear(doc.scene.nodes[static_cast<std::size_t>(lampCopy)].world, doc.scene.nodes[static_cast<std::size_t>(lamp)].world);
+    expectConsistent(doc.scene);
+    const EditableState after = doc.capture();
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.scene.nodes.size(), nodes);
+    ASSERT_TRUE(doc.redo());
+    EXPECT_TRUE(doc.capture() == after);
+    const Document back = reopen(doc, "duplicate");
+    EXPECT_EQ(back.scene.nodes.size(), nodes + 3);
+    EXPECT_GE(findNode(back.scene, "Lamp.001"), 0);
+}
+
+TEST(SceneEdits, ReparentKeepsWorldTransformAndRefusesCycles) {
+    Document doc = fixtureDocument();
+    const int box = findNode(doc.scene, "Box");
+    const int lamp = findNode(doc.scene, "Lamp");
+    // A parent that is rotated, moved and uniformly scaled.
+    doc.edit("setup", Change::Transform, [&](Scene& s) {
+        s.nodes[static_cast<std::size_t>(lamp)].scale = glm::vec3(2.0f);
+    });
+    const glm::mat4 before = doc.scene.nodes[static_cast<std::size_t>(box)].world;
+    ASSERT_EQ(reparent(doc, box, lamp), "");
+    EXPECT_EQ(doc.scene.nodes[static_cast<std::size_t>(box)].parent, lamp);
+    expectNear(doc.scene.nodes[static_cast<std::size_t>(box)].world, before);
+    EXPECT_NE(reparent(doc, lamp, box), "");  // the box is below the lamp now
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.scene.nodes[static_cast<std::size_t>(box)].parent, -1);
+    expectNear(doc.scene.nodes[static_cast<std::size_t>(box)].world, before);
+    ASSERT_TRUE(doc.redo());
+    const Document back = reopen(doc, "reparent");
+    const int b = findNode(back.scene, "Box");
+    EXPECT_EQ(back.scene.nodes[static_cast<std::size_t>(b)].parent, findNode(back.scene, "Lamp"));
+    expectNear(back.scene.nodes[static_cast<std::size_t>(b)].world, before);
+    // Back to the root.
+    doc.select(box);
+    ASSERT_EQ(reparentSelection(doc, -1), "");
+    EXPECT_EQ(doc.scene.nodes[static_cast<std::size_t>(box)].parent, -1);
+    expectNear(doc.scene.nodes[static_cast<std::size_t>(box)].world, before);
+    expectConsistent(doc.scene);
+}
+
+TEST(SceneEdits, MakeUniqueSplitsASharedMaterial) {
+    Document doc = fixtureDocument();
+    const int box = findNode(doc.scene, "Box");
+    const int red = nodePrimitiveMaterial(doc.scene, box, 0);
+    ASSERT_GE(red, 0);
+    EXPECT_EQ(materialUserCount(doc.scene, red), 1);
+    EXPECT_NE(makeMaterialUnique(doc, box, 0), "");  // used only here: refused
+    EXPECT_EQ(duplicateSelection(doc), "nothing is selected");
+    doc.select(box);
+    ASSERT_EQ(duplicateSelection(doc), "");
+    const int copy = findNode(doc.scene, "Box.001");
+    EXPECT_EQ(materialUserCount(doc.scene, red), 2);
+    ASSERT_EQ(makeMaterialUnique(doc, copy, 0), "");
+    const int own = nodePrimitiveMaterial(doc.scene, copy, 0);
+    EXPECT_NE(own, red);
+    EXPECT_EQ(materialUserCount(doc.scene, red), 1);
+    EXPECT_EQ(materialUserCount(doc.scene, own), 1);
+    EXPECT_EQ(nodePrimitiveMaterial(doc.scene, box, 0), red);  // the original keeps its material
+    // Editing the copy's material leaves the original's alone.
+    doc.select(copy);
+    ASSERT_EQ(setProperty(doc, "material.roughness", "0.1"), "");
+    EXPECT_FLOAT_EQ(doc.scene.materials[static_cast<std::size_t>(red)].roughness, 0.5f);
+    const EditableState after = doc.capture();
+    ASSERT_TRUE(doc.undo());  // roughness
+    ASSERT_TRUE(doc.undo());  // make unique
+    EXPECT_EQ(nodePrimitiveMaterial(doc.scene, copy, 0), red);
+    ASSERT_TRUE(doc.redo());
+    ASSERT_TRUE(doc.redo());
+    EXPECT_TRUE(doc.capture() == after);
+    const Document back = reopen(doc, "unique");
+    const int b = nodePrimitiveMaterial(back.scene, findNode(back.scene, "Box"), 0);
+    const int c = nodePrimitiveMaterial(back.scene, findNode(back.scene, "Box.001"), 0);
+    EXPECT_NE(b, c);
+    EXPECT_FLOAT_EQ(back.scene.materials[static_cast<std::size_t>(c)].roughness, 0.1f);
+    EXPECT_FLOAT_EQ(back.scene.materials[static_cast<std::size_t>(b)].roughness, 0.5f);
+}
+
+TEST(SceneEdits, PerPrimitiveMaterialSelection) {
+    Document doc = fixtureDocument();
+    const int box = findNode(doc.scene, "Box");
+    // A second primitive with a material of its own.
+    const int blue = addMaterial(doc.scene, {0.1f, 0.1f, 0.8f}, 0.3f, 0.0f, "Blue");
+    Mesh& mesh = doc.scene.meshes[static_cast<std::size_t>(doc.scene.nodes[static_cast<std::size_t>(box)].mesh)];
+    mesh.primitives.push_back(mesh.primitives.front());
+    mesh.primitives.back().material = blue;
+    doc.markSaved();
+    doc.select(box);
+    doc.selectedPrimitive = 1;
+    ASSERT_EQ(setProperty(doc, "material.roughness", "0.9"), "");
+    EXPECT_FLOAT_EQ(doc.scene.materials[static_cast<std::size_t>(blue)].roughness, 0.9f);
+    EXPECT_FLOAT_EQ(doc.scene.materials[0].roughness, 0.5f);
+    // Make the second primitive's material unique although the node is its only user: the
+    // first primitive does not share it, so this is refused; sharing it makes it allowed.
+    EXPECT_NE(makeMaterialUnique(doc, box, 1), "");
+}
+
+TEST(SceneEdits, MultiSelectionToggles) {
+    Document doc = fixtureDocument();
+    doc.select(0);
+    doc.select(1, true);
+    doc.select(2, true);
+    EXPECT_EQ(doc.selectedNode, 2);
+    EXPECT_EQ(doc.selection(), (std::vector<int>{2, 0, 1}));
+    doc.select(0, true);  // toggles 0 off
+    EXPECT_EQ(doc.selection(), (std::vector<int>{2, 1}));
+    doc.select(2, true);  // the active one off: the last other becomes active
+    EXPECT_EQ(doc.selection(), (std::vector<int>{1}));
+    doc.select(3);
+    EXPECT_EQ(doc.selection(), (std::vector<int>{3}));
+    doc.select(-1);
+    EXPECT_TRUE(doc.selection().empty());
+}
+
+TEST(SceneEdits, DecomposeRoundTrips) {
+    const glm::quat rotation = glm::normalize(glm::quat(0.9f, 0.1f, -0.3f, 0.2f));
+    const glm::mat4 m = glm::translate(glm::mat4(1.0f), {1.0f, -2.0f, 3.0f}) * glm::mat4_cast(rotation) *
+                        glm::scale(glm::mat4(1.0f), {2.0f, 0.5f, 3.0f});
+    glm::vec3 t, s;
+    glm::quat r;
+    decomposeTransform(m, t, r, s);
+    const glm::mat4 back = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+    expectNear(back, m);
+}
+
+}  // namespace
