@@ -618,9 +618,9 @@ void App::frameSelection() {
         bounds.extend(b.min);
         bounds.extend(b.max);
     }
-    const float distance = frameBounds(camera_, bounds);
-    // A small object far from the scene's near plane: bring the near plane close enough to see it.
-    znear_ = std::min(znear_, std::max(0.01f * distance, 1e-3f));
+    // The near plane follows the camera each frame (currentView, depthRangeFor), so the framed
+    // object is never clipped.
+    frameBounds(camera_, bounds);
 }
 
 void App::syncRendererStructure() {

@@ -86,13 +86,13 @@ TEST_F(SceneDefaults, BareSceneGetsASunAtAnAngleAndASky) {
     RenderSettings settings = smallSettings();
     settings.gi = true;
     const HdrImage image = render(scene, settings);
-    // Sun: 4 W/m² at 52° elevation on albedo 0.5: L = 0.5/π · 4 · sin 52° ≈ 0.50, plus the sky's
+    // Sun: 4 W/m² at 60° elevation on albedo 0.5: L = 0.5/π · 4 · sin 60° ≈ 0.55, plus the sky's
     // ≈ 0.5/π · 0.8 ≈ 0.13.
     const float floor = luminance(radianceAt(scene, settings, image, {1.0f, 0.0f, 1.5f}));
     EXPECT_GT(floor, 0.4f);
     EXPECT_LT(floor, 1.0f);
     // The sun is not straight down: the box's shadow lies beside it, on the side the light
-    // travels to (0.8 m from its centre; the shadow of a 1 m box at 52° reaches 0.78 m past its edge).
+    // travels to (0.8 m from its centre; the shadow of a 1 m box at 60° reaches 0.58 m past its edge).
     const glm::vec3 sunDirection = defaultSunDirection(settings);
     ASSERT_LT(std::abs(sunDirection.y), 0.95f);
     const glm::vec3 behind =
