@@ -419,6 +419,7 @@ TEST_F(VoxelInject, EmissiveMaterialGivesItsEmission) {
         RenderSettings settings;
         settings.voxelRadianceRgba8 = rgba8;
         settings.voxelRadianceRange = 8.0f;
+        settings.defaultSunIrradiance = 0.0f;  // really no light: not the default sun of a bare scene
         voxelize(scene, 64, settings);
         inject(scene, settings);
         const std::vector<glm::vec4> radiance = readRadianceVoxels(*volume_, 0, settings.voxelRadianceRange);
