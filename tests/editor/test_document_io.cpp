@@ -113,6 +113,8 @@ TEST(DocumentIO, OpenMissingFileThrows) {
     EXPECT_THROW(openDocument(freshFolder("missing") / "nope.gltf", log), SceneLoadError);
 }
 
+// A scene without lights gets no light node (the renderer lights it with its default sun and
+// sky, which a save does not write); a scene without cameras gets a camera.
 TEST(DocumentIO, OpenGivesASceneWithoutLightsAndCamerasDefaults) {
     const fs::path folder = freshFolder("defaults");
     Scene scene;
@@ -122,13 +124,12 @@ TEST(DocumentIO, OpenGivesASceneWithoutLightsAndCamerasDefaults) {
     Log log;
     quiet(log);
     const Document doc = openDocument(folder / "bare.gltf", log);
-    EXPECT_EQ(doc.scene.lights.size(), 1u);
+    EXPECT_EQ(doc.scene.lights.size(), 0u);
     EXPECT_EQ(doc.scene.cameras.size(), 1u);
     EXPECT_TRUE(doc.cameraPath.empty());
     EXPECT_EQ(doc.settings, RenderSettings{});
     EXPECT_EQ(doc.file, folder / "bare.gltf");
     EXPECT_FALSE(doc.dirty());
-    EXPECT_TRUE(logged(log, LogLevel::Info, "no lights"));
     EXPECT_TRUE(logged(log, LogLevel::Info, "no cameras"));
 }
 
