@@ -476,6 +476,7 @@ int App::run() {
             if (light >= 0) frameSettings.shadowDebugLight = light;
         }
         renderer_->render(doc_.scene, view, frameSettings);
+        referenceViewer_.update(doc_.scene, view, frameSettings, *renderer_);
         takeScreenshots(/*withUi=*/false, framebuffer);
         presentViewport(framebuffer, target);
         imgui_->render();
@@ -734,6 +735,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.camera && drawCameraPanel(camera_, layout.camera, &visible_.camera).resetToSceneCamera) resetCamera();
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
     drawViewportBar(menuHeight);
+    referenceViewer_.drawWindow();
     drawErrorPanel(sceneError_, display, menuHeight);
     drawLoadingWindow();
     // An edit opened by a widget that never reported its deactivation (a colour picker popup)
@@ -781,7 +783,7 @@ void App::presentViewport(glm::ivec2 framebufferSize, glm::ivec4 target) {
     glDisable(GL_FRAMEBUFFER_SRGB);
     glClearNamedFramebufferfv(0, GL_COLOR, 0, kBackground);
 
-    const gl::Texture& output = renderer_->outputTexture();
+    const gl::Texture& output = referenceViewer_.output() ? *referenceViewer_.output() : renderer_->outputTexture();
     if (!output) return;
     // Attached every frame: the renderer recreates the texture on resize, and a deleted texture
     // can come back under the same name.

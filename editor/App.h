@@ -17,6 +17,7 @@
 #include "Document.h"
 #include "DocumentIO.h"
 #include "EditorOptions.h"
+#include "ReferenceViewer.h"
 #include "EditorState.h"
 #include "FrameTimer.h"
 #include "ImGuiLayer.h"
@@ -169,6 +170,7 @@ private:
     std::optional<ImGuiLayer> imgui_;
     std::unique_ptr<Renderer> renderer_;
     gl::Framebuffer blitSource_;  // reads the renderer's output texture for the blit
+    ReferenceViewer referenceViewer_;  // Reference / Difference views (path tracer in the background)
 
     // Editor state edited by the panels.
     PanelVisibility visible_;

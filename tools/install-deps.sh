@@ -9,6 +9,7 @@ packages=(
     libstb-dev libtinygltf-dev nlohmann-json3-dev  # images, glTF, JSON
     libepoxy-dev libegl-dev libgl-dev         # GL/EGL loading
     libegl-mesa0 libgl1-mesa-dri libglx-mesa0 # Mesa (llvmpipe) for machines without a GPU driver
+    libembree-dev libtbb-dev                  # reference path tracer: ray queries, threads
     libgtest-dev                              # tests
     xvfb xauth                                # editor tests without a display
     fonts-dejavu-core                         # editor UI font (falls back to ImGui's own)

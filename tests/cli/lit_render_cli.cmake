@@ -52,6 +52,22 @@ foreach(tmp "${png}.tmp" "${hdr}.tmp")
   endif()
 endforeach()
 
+# ---- A reference render (CPU path tracer) ------------------------------------------------------
+set(ref_png "${OUT_DIR}/reference.png")
+set(ref_hdr "${OUT_DIR}/reference.hdr")
+run_lit_render("${cornell}" --reference --spp 2 --size 32x32 --out "${ref_png}" --hdr "${ref_hdr}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the reference render failed (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
+endif()
+foreach(file "${ref_png}" "${ref_hdr}")
+  if(NOT EXISTS "${file}")
+    message(FATAL_ERROR "lit-render --reference exited 0 but did not write ${file}")
+  endif()
+endforeach()
+if(NOT out MATCHES "reference: 32x32, 2 spp .* Mrays/s")
+  message(FATAL_ERROR "lit-render --reference printed no rays/s summary; stdout:\n${out}")
+endif()
+
 # ---- Bad inputs -------------------------------------------------------------------------------
 # expect_failure(NAME EXPECTED_RC STDERR_REGEX ARGS...): EXPECTED_RC is 1 (runtime) or 2 (usage).
 function(expect_failure name expected_rc stderr_regex)
@@ -140,6 +156,12 @@ if(EXISTS "${OUT_DIR}/never")
     message(FATAL_ERROR "a rejected camera path still wrote frames: ${never_frames}")
   endif()
 endif()
+
+# Reference-only flags without --reference, and views the reference does not render.
+expect_failure("spp without reference" 2 "--spp needs --reference"
+  "${cornell}" --out "${OUT_DIR}/never.png" --spp 4)
+expect_failure("reference albedo view" 2 "--reference renders the views final"
+  "${cornell}" --reference --view albedo --out "${OUT_DIR}/never.png")
 
 # ---- Scenes from Blender (tests/data/blender, tools/blender/make_scenes.py) ---------------------
 # --path NAME plays a camera animation made in Blender: "fly" is 3 s long (frames 1..73 at

@@ -187,6 +187,33 @@ TEST(Options, StructuralMessages) {
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--camera", ""}), "--camera expects a camera name or index, got ''");
 }
 
+TEST(Options, ReferenceFlags) {
+    const Options o = parseOptions({"x.gltf", "--reference", "--spp", "32", "--bounces", "all", "--seed", "7", "--out", "r.png",
+                                    "--view", "indirect-diffuse"});
+    EXPECT_TRUE(o.reference);
+    EXPECT_EQ(o.referenceSpp(), 32);
+    EXPECT_EQ(o.bounces, lit::cli::kAllReferenceBounces);
+    EXPECT_EQ(o.seed, 7u);
+    EXPECT_EQ(parseOptions({"x.gltf", "--reference", "--out", "r.png"}).referenceSpp(), lit::cli::kDefaultReferenceSpp);
+    EXPECT_EQ(parseOptions({"x.gltf", "--reference", "--bounces=2", "--out", "r.png"}).bounces, 2);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--spp", "8"}), "--spp needs --reference");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--bounces", "1"}), "--bounces needs --reference");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--seed", "1"}), "--seed needs --reference");
+    EXPECT_EQ(usageError({"x.gltf", "--reference", "--out", "x.png", "--spp", "0"}),
+              "--spp expects samples per pixel from 1 to 1048576, got '0'");
+    EXPECT_EQ(usageError({"x.gltf", "--reference", "--out", "x.png", "--bounces", "-1"}),
+              "--bounces expects 0 to 64 or all, got '-1'");
+    EXPECT_EQ(usageError({"x.gltf", "--reference", "--out", "x.png", "--seed", "x"}),
+              "--seed expects a non-negative integer, got 'x'");
+    EXPECT_EQ(usageError({"x.gltf", "--reference", "--out", "x.png", "--view", "albedo"}),
+              "--reference renders the views final, direct-diffuse, indirect-diffuse, direct-specular and "
+              "indirect-specular, not 'albedo'");
+    EXPECT_EQ(usageError({"x.gltf", "--reference", "--bench", "3"}),
+              "--reference and --bench do not go together (the reference prints its own rays/s)");
+    EXPECT_EQ(usageError({"x.gltf", "--reference", "--path", "p.json", "--frames-out", "f"}),
+              "--reference renders a still image; it does not fly --path");
+}
+
 TEST(Options, PathFlags) {
     const Options o = parseOptions({"x.gltf", "--path", "orbit.path.json", "--fps", "12.5", "--frames-out", "frames"});
     EXPECT_EQ(o.path, "orbit.path.json");

@@ -2,6 +2,8 @@
 
 #include "scene/Scene.h"
 
+#include "reference/ViewSupport.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -194,6 +196,26 @@ Options parseOptions(const std::vector<std::string>& args) {
         } else if (flag == "--bench-path") {
             noValue();
             options.benchPath = true;
+        } else if (flag == "--reference") {
+            noValue();
+            options.reference = true;
+        } else if (flag == "--spp") {
+            const std::string text = value("samples per pixel");
+            const auto n = parseInt(text, 1, kMaxReferenceSpp);
+            if (!n) throw UsageError("--spp expects samples per pixel from 1 to " + std::to_string(kMaxReferenceSpp) + ", got '" + text + "'");
+            options.spp = *n;
+        } else if (flag == "--bounces") {
+            const std::string text = value("a bounce count or all");
+            const auto n = text == "all" ? std::optional<int>(kAllReferenceBounces) : parseInt(text, 0, kMaxReferenceBounces);
+            if (!n) throw UsageError("--bounces expects 0 to " + std::to_string(kMaxReferenceBounces) + " or all, got '" + text + "'");
+            options.bounces = *n;
+        } else if (flag == "--seed") {
+            const std::string text = value("an integer");
+            std::uint64_t seed = 0;
+            const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), seed);
+            if (text.empty() || ec != std::errc() || end != text.data() + text.size())
+                throw UsageError("--seed expects a non-negative integer, got '" + text + "'");
+            options.seed = seed;
         } else {
             throw UsageError("unknown option '" + flag + "'");
         }
@@ -215,6 +237,18 @@ Options parseOptions(const std::vector<std::string>& args) {
         if (!options.framesOut.empty()) throw UsageError("--frames-out needs --path");
         if (options.benchPath) throw UsageError("--bench-path needs --path");
         if (options.fps) throw UsageError("--fps needs --path");
+    }
+    if (options.reference) {
+        if (options.path) throw UsageError("--reference renders a still image; it does not fly --path");
+        if (options.benchFrames > 0) throw UsageError("--reference and --bench do not go together (the reference prints its own rays/s)");
+        if (options.frames) throw UsageError("--frames does not apply to --reference (use --spp)");
+        if (options.view && !reference::referenceRendersView(*options.view))
+            throw UsageError("--reference renders the views final, direct-diffuse, indirect-diffuse, direct-specular and "
+                             "indirect-specular, not '" + std::string(toString(*options.view)) + "'");
+    } else {
+        if (options.spp) throw UsageError("--spp needs --reference");
+        if (options.bounces) throw UsageError("--bounces needs --reference");
+        if (options.seed) throw UsageError("--seed needs --reference");
     }
     if (options.benchFrames == 0 && !options.path && options.out.empty())
         throw UsageError("--out is required (unless --bench or --path)");
@@ -273,7 +307,8 @@ std::string shortUsage() {
            "                  [--ev STOPS|--exposure X] [--auto-exposure on|off] [--sky MODE] [--sky-hdr FILE.hdr]\n"
            "                  [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
            "                  [--culling on|off] [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
-           "       lit-render SCENE.gltf --path FILE.json|ANIMATION [--fps N] [--frames-out DIR] [--bench-path]\n";
+           "       lit-render SCENE.gltf --path FILE.json|ANIMATION [--fps N] [--frames-out DIR] [--bench-path]\n"
+           "       lit-render SCENE.gltf --reference --out image.png [--spp N] [--bounces N|all] [--seed S] [...]\n";
 }
 
 std::string usageText() {
@@ -314,9 +349,17 @@ std::string usageText() {
            "  --frames-out DIR     write every frame of the path to DIR/frame_00000.png, ... (creates DIR)\n"
            "  --bench-path         time every frame of the path (after one untimed warm-up frame) and\n"
            "                       print the lowest and highest FPS and the mean frame time\n"
+           "  --reference          path-trace the scene on the CPU (Embree): Lit's ground truth, same scene,\n"
+           "                       camera, BRDF and light units; writes the same --out/--hdr/--view images.\n"
+           "                       Ctrl+C writes the image so far (see docs/REFERENCE.md)\n"
+           "  --spp N              with --reference: samples per pixel (default " + std::to_string(kDefaultReferenceSpp) + ")\n"
+           "  --bounces N|all      with --reference: indirect bounces, 0 = direct light only, 1 = the same\n"
+           "                       light paths as Lit's one-bounce VCT (default), all = until Russian roulette\n"
+           "  --seed S             with --reference: random seed; the same seed gives the same image (default 0)\n"
            "  --help               this text\n"
            "\n"
-           "Exit status: 0 success, 1 runtime failure (scene, GL, file), 2 bad command line.\n";
+           "Exit status: 0 success, 1 runtime failure (scene, GL, file), 2 bad command line,\n"
+           "130 a --reference render stopped by Ctrl+C (the image so far was written).\n";
 }
 
 }  // namespace lit::cli

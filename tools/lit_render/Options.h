@@ -4,6 +4,7 @@
 
 #include "RenderSettings.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -27,6 +28,10 @@ inline constexpr int kMaxImageSide = 16384;  // pixels; GL_MAX_TEXTURE_SIZE on l
 inline constexpr int kMaxFrames = 100000;    // a guard against typos, not a GPU limit
 inline constexpr double kDefaultPathFps = 30.0;  // frames per second of --path renders
 inline constexpr double kMaxPathFps = 1000.0;    // a guard against typos
+inline constexpr int kDefaultReferenceSpp = 64;   // samples per pixel of --reference renders
+inline constexpr int kMaxReferenceSpp = 1 << 20;  // a guard against typos
+inline constexpr int kMaxReferenceBounces = 64;   // --bounces N; "all" is unbounded (Russian roulette)
+inline constexpr int kAllReferenceBounces = -1;   // --bounces all
 
 struct Options {
     bool help = false;                 // --help: print usage, ignore the rest
@@ -54,6 +59,13 @@ struct Options {
     std::optional<double> fps;         // --fps: frames per second along the path
     std::filesystem::path framesOut;   // --frames-out DIR: every frame as DIR/frame_00000.png, ...
     bool benchPath = false;            // --bench-path: per-frame times along the path
+    // --reference: path-trace the scene on the CPU (renderer/reference/) instead of rasterizing.
+    bool reference = false;
+    std::optional<int> spp;            // --spp: samples per pixel (reference only)
+    std::optional<int> bounces;        // --bounces N|all: indirect bounces (reference only; all = -1)
+    std::optional<std::uint64_t> seed; // --seed: random seed (reference only)
+
+    int referenceSpp() const { return spp.value_or(kDefaultReferenceSpp); }
 
     double pathFps() const { return fps.value_or(kDefaultPathFps); }
     // --path names a JSON file when it ends in .json (any case), else an animation in the scene.

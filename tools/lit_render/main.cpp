@@ -1,6 +1,7 @@
 // lit-render — renders a glTF scene headless (EGL, no window or X server) to PNG/HDR, or
 // benchmarks it, or flies a camera path (frames to PNGs, or per-frame timings).
-// Exit status: 0 success, 1 runtime failure, 2 bad command line.
+// Exit status: 0 success, 1 runtime failure, 2 bad command line, 130 a --reference render
+// interrupted by Ctrl+C (after writing the image so far).
 
 #include "Options.h"
 
@@ -18,12 +19,18 @@
 #include "scene/GltfLoader.h"
 #include "scene/SceneBuilder.h"
 #include "scene/Scene.h"
+#include "scene/Sky.h"
+#include "reference/PathTracer.h"
+#include "reference/ReferenceScene.h"
 
 #include <epoxy/gl.h>
+#include <tbb/info.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <unistd.h>
 #include <exception>
@@ -337,6 +344,100 @@ int runPath(const Options& options, const lit::CameraPath& path, const lit::Scen
     return 0;
 }
 
+// Set by SIGINT while a reference render runs: the render stops after the tiles in flight and
+// writes the image so far. A lock-free atomic is async-signal-safe; a signal handler has no other
+// way to reach the render than through static storage.
+std::atomic<bool>& interruptRequested() {
+    static std::atomic<bool> requested{false};
+    return requested;
+}
+extern "C" void onInterrupt(int) { interruptRequested().store(true); }
+
+// --reference: path-trace the still on the CPU and write the same images as the rasterizer.
+int runReference(const Options& options, const lit::Scene& scene, int cameraIndex, const lit::RenderSettings& settings,
+                 lit::Log& log) {
+    const Clock::time_point buildStart = Clock::now();
+    const lit::reference::ReferenceScene referenceScene(scene, log);
+    const double buildSeconds = secondsSince(buildStart);
+    const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+    const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
+
+    lit::reference::ReferenceSettings reference;
+    // Without --bounces the reference follows --gi: one bounce like the VCT, or direct light only.
+    reference.bounces = options.bounces.value_or(settings.gi ? 1 : 0);
+    reference.seed = options.seed.value_or(0);
+    // Rays that leave the scene see the same sky as the rasterizer's background and cones.
+    std::string skyError;
+    reference.environment = lit::makeSkyFunction(scene, settings, &skyError);
+    if (!skyError.empty()) log.error(skyError + "; using the gradient sky");
+    lit::reference::PathTracer tracer(referenceScene, camera, settings.width, settings.height, reference);
+
+    interruptRequested().store(false);
+    struct sigaction action {};
+    action.sa_handler = onInterrupt;
+    sigemptyset(&action.sa_mask);
+    struct sigaction previous {};
+    sigaction(SIGINT, &action, &previous);
+
+    const int spp = options.referenceSpp();
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    const Clock::time_point renderStart = Clock::now();
+    double lastPrint = -1.0;
+    bool interrupted = false;
+    bool printed = false;
+    while (tracer.samplesDone() < spp) {
+        if (!tracer.addSamples(1, &interruptRequested())) {
+            interrupted = true;
+            break;
+        }
+        const double elapsed = secondsSince(renderStart);
+        const int done = tracer.samplesDone();
+        if (elapsed - lastPrint >= (terminal ? 0.2 : 1.0) || done == spp) {
+            lastPrint = elapsed;
+            printed = true;
+            const double raysPerSecond = elapsed > 0.0 ? static_cast<double>(tracer.raysTraced()) / elapsed : 0.0;
+            const double remaining = elapsed / done * (spp - done);
+            char line[160];
+            std::snprintf(line, sizeof line, "reference: %d/%d spp, %.2f Mrays/s, %.1f s elapsed, ETA %.1f s", done, spp,
+                          raysPerSecond * 1e-6, elapsed, remaining);
+            if (terminal)
+                std::fprintf(stderr, "\r%-72s", line);
+            else
+                std::fprintf(stderr, "%s\n", line);
+            std::fflush(stderr);
+        }
+    }
+    sigaction(SIGINT, &previous, nullptr);
+    if (printed && terminal) std::fputc('\n', stderr);
+    const double seconds = secondsSince(renderStart);
+
+    const std::string bounces = reference.bounces == lit::reference::kAllBounces ? "all" : std::to_string(reference.bounces);
+    std::printf("reference: %dx%d, %u spp (min per pixel), bounces %s, seed %llu: %.1f M rays in %.2f s = %.2f Mrays/s "
+                "on %d threads (scene build %.2f s, %zu triangles)\n",
+                settings.width, settings.height, tracer.image().minSamples(), bounces.c_str(),
+                static_cast<unsigned long long>(reference.seed), static_cast<double>(tracer.raysTraced()) * 1e-6, seconds,
+                seconds > 0.0 ? static_cast<double>(tracer.raysTraced()) / seconds * 1e-6 : 0.0,
+                tbb::info::default_concurrency(), buildSeconds, referenceScene.triangleCount());
+
+    const std::vector<float> rgb = tracer.image().viewRgb(settings.view, settings);
+    std::string written;
+    if (!options.out.empty()) {
+        lit::writePng(options.out, settings.width, settings.height, lit::reference::toneMapToRgba8(rgb, settings.exposureScale()));
+        written = options.out.string();
+    }
+    if (!options.hdr.empty()) {
+        lit::writeHdr(options.hdr, settings.width, settings.height, rgb);
+        written += (written.empty() ? "" : " and ") + options.hdr.string();
+    }
+    if (!written.empty()) std::printf("wrote %s\n", written.c_str());
+    if (interrupted) {
+        std::fprintf(stderr, "lit-render: interrupted after %d of %d samples per pixel; the image so far was written\n",
+                     tracer.samplesDone(), spp);
+        return 130;  // the shell's status for a SIGINT
+    }
+    return 0;
+}
+
 int run(const Options& options) {
     lit::Log log;
 
@@ -368,6 +469,7 @@ int run(const Options& options) {
     }
     lit::addDefaultCamera(scene, log);
     const int cameraIndex = lit::cli::resolveCamera(options, scene);
+    if (options.reference) return runReference(options, scene, cameraIndex, settings, log);
     const std::optional<lit::CameraPath> path = options.path ? std::optional(loadPath(options)) : std::nullopt;
 
     lit::HeadlessContext context;

@@ -1,0 +1,130 @@
+#include "ReferenceViewer.h"
+
+#include "Renderer.h"
+#include "RenderSettings.h"
+#include "reference/DifferenceImage.h"
+#include "scene/CameraView.h"
+#include "scene/Scene.h"
+
+#include <imgui.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace lit {
+
+namespace {
+
+double nowSeconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Refreshing the image costs a pass over it on the CPU (and, for Difference, an HDR read-back):
+// a few times a second is enough to watch it converge.
+constexpr double kUploadInterval = 0.25;  // seconds
+
+}  // namespace
+
+void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+                             Renderer& renderer) {
+    unsupportedView_ = !reference::referenceRendersView(settings.view);
+    if (mode_ == ReferenceMode::Off || unsupportedView_) {
+        tracer_.stop();
+        haveImage_ = false;
+        return;
+    }
+    reference::ReferenceSettings referenceSettings;
+    referenceSettings.bounces = settings.gi ? 1 : 0;  // the VCT's light paths
+    tracer_.update(scene, camera, settings.width, settings.height, referenceSettings);
+
+    const double now = nowSeconds();
+    const reference::ProgressiveStatus status = tracer_.status();
+    if (now - lastUpload_ < kUploadInterval && status.samplesPerPixel == uploadedSamples_) return;
+    if (now - lastUpload_ < kUploadInterval && haveImage_) return;
+    std::vector<float> rgb;
+    int width = 0, height = 0;
+    if (!tracer_.latest(settings.view, settings, rgb, width, height) || width != settings.width || height != settings.height) {
+        haveImage_ = false;
+        return;
+    }
+    std::vector<std::uint8_t> bytes;
+    if (mode_ == ReferenceMode::Reference) {
+        bytes = reference::toneMapToRgba8(rgb, settings.exposureScale());
+    } else {
+        const std::vector<float> colours = reference::relativeErrorColours(renderer.readHdrRgb(), rgb, maxError_);
+        bytes.assign(colours.size() / 3 * 4, 255);
+        for (std::size_t p = 0; p < colours.size() / 3; ++p)
+            for (int c = 0; c < 3; ++c) {
+                // The ramp is meant as display colour: encode it for the sRGB blit.
+                const float v = colours[3 * p + static_cast<std::size_t>(c)];
+                const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+                bytes[4 * p + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255.0f));
+            }
+    }
+    if (!texture_ || texture_.desc().width != width || texture_.desc().height != height)
+        texture_ = gl::Texture("reference view", {GL_TEXTURE_2D, GL_SRGB8_ALPHA8, width, height, 1, 1});
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(texture_.id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    haveImage_ = true;
+    lastUpload_ = now;
+    uploadedSamples_ = status.samplesPerPixel;
+}
+
+const gl::Texture* ReferenceViewer::output() const {
+    return mode_ != ReferenceMode::Off && haveImage_ && texture_ ? &texture_ : nullptr;
+}
+
+void ReferenceViewer::drawWindow() {
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Reference")) {
+        ImGui::End();
+        return;
+    }
+    int mode = static_cast<int>(mode_);
+    ImGui::RadioButton("Rasterizer", &mode, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("Reference", &mode, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("Difference", &mode, 2);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Relative error of the rasterizer's image against the path-traced reference, per pixel");
+    mode_ = static_cast<ReferenceMode>(mode);
+    if (mode_ != ReferenceMode::Off) {
+        if (unsupportedView_) {
+            ImGui::TextWrapped("The reference renders the final image and the four lighting terms; pick one of those views.");
+        } else {
+            const reference::ProgressiveStatus s = tracer_.status();
+            ImGui::Text("%d spp, %.0f samples/s, %.2f Mrays/s%s", s.samplesPerPixel, s.samplesPerSecond,
+                        s.raysPerSecond * 1e-6, s.running ? "" : " (done)");
+            ImGui::TextDisabled("One bounce with GI on, direct light only with GI off; restarts on any edit");
+        }
+    }
+    if (mode_ == ReferenceMode::Difference) {
+        ImGui::SliderFloat("Range", &maxError_, 0.05f, 2.0f, "±%.2f");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Relative error shown at either end of the colour bar (1 = 100 %%)");
+        // The colour bar: blue (rasterizer too dark) → white (equal) → red (too bright).
+        ImDrawList* draw = ImGui::GetWindowDrawList();
+        const ImVec2 origin = ImGui::GetCursorScreenPos();
+        const float width = ImGui::GetContentRegionAvail().x, height = 14.0f;
+        constexpr int kSteps = 64;
+        for (int i = 0; i < kSteps; ++i) {
+            const glm::vec3 c = reference::differenceRampColour(2.0f * (i + 0.5f) / kSteps - 1.0f);
+            draw->AddRectFilled(ImVec2(origin.x + width * i / kSteps, origin.y),
+                                ImVec2(origin.x + width * (i + 1) / kSteps + 1.0f, origin.y + height),
+                                ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f)));
+        }
+        ImGui::Dummy(ImVec2(width, height));
+        ImGui::Text("-%.0f %%", 100.0f * maxError_);
+        ImGui::SameLine(width * 0.5f - 4.0f);
+        ImGui::Text("0");
+        char right[32];
+        std::snprintf(right, sizeof right, "+%.0f %%", 100.0f * maxError_);
+        ImGui::SameLine(width - ImGui::CalcTextSize(right).x);
+        ImGui::TextUnformatted(right);
+    }
+    ImGui::End();
+}
+
+}  // namespace lit

@@ -1,0 +1,43 @@
+#pragma once
+// The editor's Reference and Difference views: the reference path tracer
+// (reference::ProgressiveReference) runs on a background thread while the view is on, accumulating
+// samples while the camera and the scene stay still and starting over on any edit. Reference shows
+// the path-traced image of the current term view (final or one of the four terms), tone-mapped
+// like the rasterizer's; Difference shows the rasterizer's image against it as a false-colour
+// relative error with a colour bar. Both replace the viewport image; the rasterizer keeps running
+// underneath (Difference needs its image).
+
+#include "gl/Objects.h"
+#include "reference/ProgressiveReference.h"
+
+namespace lit {
+
+class Renderer;
+struct Scene;
+struct CameraView;
+struct RenderSettings;
+
+enum class ReferenceMode { Off, Reference, Difference };
+
+class ReferenceViewer {
+public:
+    // After the rasterizer's frame: feeds the current state to the tracer and refreshes the
+    // displayed image (a few times a second). Turns the tracer off when the mode is Off.
+    void update(const Scene& scene, const CameraView& camera, const RenderSettings& settings, Renderer& renderer);
+    // The image to show instead of the renderer's output, or nullptr (mode Off, no image yet).
+    const gl::Texture* output() const;
+    // A small window: mode, samples per pixel, samples/s, the colour bar and its range.
+    void drawWindow();
+
+private:
+    ReferenceMode mode_ = ReferenceMode::Off;
+    reference::ProgressiveReference tracer_{4096};
+    gl::Texture texture_;      // SRGB8_ALPHA8 holding display bytes, blitted like the renderer's output
+    bool haveImage_ = false;
+    double lastUpload_ = -1.0;  // seconds (steady clock)
+    int uploadedSamples_ = -1;
+    float maxError_ = 0.5f;     // relative error at the ends of the Difference ramp
+    bool unsupportedView_ = false;
+};
+
+}  // namespace lit

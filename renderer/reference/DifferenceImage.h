@@ -1,0 +1,46 @@
+#pragma once
+// The Difference view's false colour: the signed relative error of an image (the VCT) against the
+// reference, per pixel, on luminance, e = (L_test − L_ref) / max(L_ref, floor), shown on a
+// diverging ramp: blue = too dark (e ≤ −max), white = right (e = 0), red = too bright (e ≥ +max).
+// `floor` keeps black reference pixels from dividing by zero: a fraction of the image's mean.
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <vector>
+
+namespace lit::reference {
+
+// The ramp at t ∈ [−1, 1] (t = e / max): blue (0.10, 0.25, 0.95) → white → red (0.95, 0.15, 0.10).
+inline glm::vec3 differenceRampColour(float t) {
+    t = std::clamp(t, -1.0f, 1.0f);
+    const glm::vec3 white(1.0f), blue(0.10f, 0.25f, 0.95f), red(0.95f, 0.15f, 0.10f);
+    return t < 0.0f ? glm::mix(white, blue, -t) : glm::mix(white, red, t);
+}
+
+// Display colours (sRGB-ready values in [0,1], 3 per pixel) of the signed relative error of
+// `test` against `truth` (linear RGB, 3 floats per pixel, same size). Pixels where both are black
+// (background) stay black. `maxError` is the error shown at either end of the ramp (1 = 100 %).
+inline std::vector<float> relativeErrorColours(const std::vector<float>& test, const std::vector<float>& truth,
+                                               float maxError) {
+    const auto luminance = [](const std::vector<float>& rgb, std::size_t p) {
+        return 0.2126f * rgb[3 * p] + 0.7152f * rgb[3 * p + 1] + 0.0722f * rgb[3 * p + 2];
+    };
+    const std::size_t pixels = std::min(test.size(), truth.size()) / 3;
+    double mean = 0.0;
+    for (std::size_t p = 0; p < pixels; ++p) mean += luminance(truth, p);
+    mean = pixels ? mean / static_cast<double>(pixels) : 0.0;
+    const float floor = std::max(1e-6f, 0.01f * static_cast<float>(mean));  // 1 % of the mean
+    std::vector<float> out(pixels * 3, 0.0f);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const float t = luminance(test, p), r = luminance(truth, p);
+        if (t <= 0.0f && r <= 0.0f) continue;
+        const glm::vec3 c = differenceRampColour((t - r) / std::max(r, floor) / std::max(maxError, 1e-6f));
+        out[3 * p] = c.r;
+        out[3 * p + 1] = c.g;
+        out[3 * p + 2] = c.b;
+    }
+    return out;
+}
+
+}  // namespace lit::reference

@@ -1,0 +1,451 @@
+#include "reference/PathTracer.h"
+
+#include "reference/MicrofacetBrdf.h"
+#include "reference/PunctualLights.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lit::reference {
+
+namespace {
+
+// ---- Random numbers ------------------------------------------------------------------------
+
+// SplitMix64 (Steele, Lea, Flood 2014): turns (seed, pixel, sample) into a well-mixed state.
+std::uint64_t splitMix64(std::uint64_t x) {
+    x += 0x9E3779B97F4A7C15ull;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+}
+
+// PCG32 (O'Neill 2014, "PCG: A Family of Simple Fast Space-Efficient Statistically Good
+// Algorithms for Random Number Generation", pcg32 XSH RR).
+class Random {
+public:
+    Random(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample) {
+        state_ = splitMix64(seed ^ splitMix64(pixel ^ splitMix64(sample)));
+        increment_ = (splitMix64(state_ + pixel) << 1u) | 1u;
+        next();
+    }
+    std::uint32_t next() {
+        const std::uint64_t old = state_;
+        state_ = old * 6364136223846793005ull + increment_;
+        const auto xorShifted = static_cast<std::uint32_t>(((old >> 18u) ^ old) >> 27u);
+        const auto rot = static_cast<std::uint32_t>(old >> 59u);
+        return (xorShifted >> rot) | (xorShifted << ((32u - rot) & 31u));
+    }
+    float uniform() { return static_cast<float>(next() >> 8) * (1.0f / 16777216.0f); }  // [0, 1)
+    glm::vec2 uniform2() {
+        const float a = uniform();
+        return {a, uniform()};
+    }
+
+private:
+    std::uint64_t state_ = 0, increment_ = 1;
+};
+
+// ---- Shading helpers -----------------------------------------------------------------------
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+float maxComponent(const glm::vec3& c) { return std::max(c.r, std::max(c.g, c.b)); }
+
+// gbuffer.glsl shadingNormal: a normal facing away from v is bent just past perpendicular.
+glm::vec3 shadingNormal(const glm::vec3& n, const glm::vec3& v) {
+    const float nv = glm::dot(n, v);
+    return nv < 0.0f ? glm::normalize(n - v * (nv * 1.01f)) : n;
+}
+
+// Ray origin just off the surface on the side `side` points to (metres; relative to the
+// position's magnitude so far-away scenes keep float precision).
+glm::vec3 offsetOrigin(const glm::vec3& p, const glm::vec3& side) {
+    const float scale = std::max(1.0f, std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z))));
+    return p + side * (1e-4f * scale);
+}
+
+float powerHeuristic(float a, float b) {
+    const float a2 = a * a, b2 = b * b;
+    return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
+}
+
+// The BRDF of one surface point as Lit's passes evaluate it: Lambert + GGX (brdf.glsl).
+struct Bsdf {
+    glm::vec3 n{0.0f}, v{0.0f}, ng{0.0f};
+    glm::vec3 albedo{0.0f}, f0{0.0f};
+    float alpha = 1.0f;
+    float specularProbability = 0.0f;  // chance of sampling the GGX lobe rather than the cosine lobe
+
+    Bsdf(const SurfaceHit& hit, const glm::vec3& view) {
+        v = view;
+        n = shadingNormal(hit.normal, v);
+        ng = hit.geometricNormal;
+        albedo = diffuseAlbedo(hit.baseColor, hit.metalness);
+        f0 = specularF0(hit.baseColor, hit.metalness);
+        alpha = alphaFromRoughness(hit.roughness);
+        // Lobe choice by each lobe's rough share of the reflected energy.
+        const float specular = luminance(F_Schlick(f0, std::max(glm::dot(n, v), 0.0f)));
+        const float diffuse = luminance(albedo);
+        specularProbability = specular + diffuse > 0.0f ? specular / (specular + diffuse) : 0.0f;
+    }
+    glm::vec3 diffuse(const glm::vec3& l) const { return glm::dot(n, l) > 0.0f ? albedo / kPi : glm::vec3(0.0f); }
+    glm::vec3 specular(const glm::vec3& l) const {
+        return glm::dot(n, l) > 0.0f ? specularBrdf(n, v, l, f0, alpha) : glm::vec3(0.0f);
+    }
+    float pdf(const glm::vec3& l) const {
+        const float NdotL = glm::dot(n, l);
+        if (NdotL <= 0.0f) return 0.0f;
+        return (1.0f - specularProbability) * NdotL / kPi + specularProbability * ggxVisibleNormalReflectionPdf(n, v, l, alpha);
+    }
+    bool reflects() const { return maxComponent(albedo) > 0.0f || maxComponent(f0) > 0.0f; }
+    // A direction drawn from pdf(); false when it falls below the surface (the path ends).
+    bool sample(Random& random, glm::vec3& l) const {
+        const Frame frame(n);
+        const float choice = random.uniform();
+        const glm::vec2 u = random.uniform2();
+        if (choice < specularProbability) {
+            glm::vec3 localV = frame.toLocal(v);
+            localV.z = std::max(localV.z, 1e-4f);
+            localV = glm::normalize(localV);
+            const glm::vec3 h = frame.toWorld(sampleGgxVisibleNormal(localV, alpha, u));
+            l = 2.0f * glm::dot(v, h) * h - v;
+        } else {
+            l = frame.toWorld(sampleCosineHemisphere(u));
+        }
+        return glm::dot(n, l) > 0.0f && glm::dot(ng, l) > 0.0f;
+    }
+};
+
+// Light reflected towards v at a surface, split by lobe (diffuse, specular).
+struct Split {
+    glm::vec3 diffuse{0.0f}, specular{0.0f};
+};
+
+struct Contribution {
+    glm::vec3 terms[kTermCount]{};
+    void add(Term t, const glm::vec3& c) { terms[static_cast<int>(t)] += c; }
+};
+
+class PathIntegrator {
+public:
+    PathIntegrator(const ReferenceScene& scene, const ReferenceSettings& settings) : scene_(scene), settings_(settings) {}
+
+    std::uint64_t rays = 0;
+
+    // Direct light at a surface from every punctual light and (by NEE) from the emitters.
+    Split direct(const SurfaceHit& hit, const Bsdf& bsdf, Random& random) {
+        Split out;
+        const glm::vec3 origin = offsetOrigin(hit.position, hit.geometricNormal);
+        for (const gpu::GpuLight& light : scene_.punctualLights()) {
+            const PunctualSample ls = samplePunctualLight(light, hit.position);
+            const float NdotL = glm::dot(bsdf.n, ls.l);
+            if (NdotL <= 0.0f || maxComponent(ls.irradiance) <= 0.0f) continue;
+            Ray shadow{origin, ls.l, 0.0f, std::isinf(ls.distance) ? INFINITY : ls.distance * (1.0f - 1e-4f)};
+            ++rays;
+            if (scene_.occluded(shadow)) continue;
+            const glm::vec3 E = ls.irradiance * NdotL;
+            out.diffuse += E * bsdf.albedo / kPi;
+            out.specular += E * specularBrdf(bsdf.n, bsdf.v, ls.l, bsdf.f0, bsdf.alpha);
+        }
+        if (!scene_.emitters().empty()) {
+            const float u = random.uniform();
+            const EmitterSample es = scene_.sampleEmitter(u, random.uniform2());
+            const glm::vec3 toLight = es.position - hit.position;
+            const float distance2 = glm::dot(toLight, toLight);
+            const float distance = std::sqrt(distance2);
+            if (distance > 0.0f && es.pdfArea > 0.0f) {
+                const glm::vec3 l = toLight / distance;
+                const float cosLight = std::abs(glm::dot(es.normal, l));
+                const float NdotL = glm::dot(bsdf.n, l);
+                if (cosLight > 0.0f && NdotL > 0.0f && maxComponent(es.emission) > 0.0f) {
+                    Ray shadow{origin, l, 0.0f, distance * (1.0f - 1e-3f)};
+                    ++rays;
+                    if (!scene_.occluded(shadow)) {
+                        const float pdfLight = es.pdfArea * distance2 / cosLight;
+                        const float weight = powerHeuristic(pdfLight, bsdf.pdf(l));
+                        const glm::vec3 scale = es.emission * (weight * NdotL / pdfLight);
+                        out.diffuse += scale * bsdf.diffuse(l);
+                        out.specular += scale * bsdf.specular(l);
+                    }
+                }
+            }
+        }
+        return out;
+    }
+
+    // MIS weight of emission found by BRDF sampling from a surface with density pdfBsdf.
+    float emissionWeight(const SurfaceHit& hit, const glm::vec3& direction, float pdfBsdf) const {
+        if (hit.emitter < 0) return 1.0f;  // textured emission on non-emitter geometry cannot happen
+        const float cosLight = std::abs(glm::dot(hit.geometricNormal, direction));
+        if (cosLight <= 0.0f) return 0.0f;
+        const float pdfLight = scene_.emitterPdfArea(hit.emitter) * hit.t * hit.t / cosLight;
+        return powerHeuristic(pdfBsdf, pdfLight);
+    }
+
+    glm::vec3 environment(const glm::vec3& direction) const {
+        return settings_.environment ? settings_.environment(direction) : glm::vec3(0.0f);
+    }
+
+    // One camera path through `ray`; adds its four term contributions to `out`.
+    void trace(const Ray& cameraRay, Random& random, Contribution& out) {
+        SurfaceHit hit;
+        ++rays;
+        if (!scene_.intersect(cameraRay, hit)) {
+            out.add(Term::DirectDiffuse, environment(cameraRay.direction));
+            return;
+        }
+        const bool hasEmitters = !scene_.emitters().empty();
+        const bool hasEnvironment = static_cast<bool>(settings_.environment);
+        const int maxBounces = settings_.bounces == kAllBounces ? kMaxPathVertices : settings_.bounces;
+
+        // First surface: emission seen directly, then direct light split by lobe.
+        out.add(Term::DirectDiffuse, hit.emission);
+        Bsdf bsdf(hit, -cameraRay.direction);
+        if (!bsdf.reflects()) return;
+        const Split d = direct(hit, bsdf, random);
+        out.add(Term::DirectDiffuse, d.diffuse);
+        out.add(Term::DirectSpecular, d.specular);
+
+        // The first bounce. Its diffuse and specular shares, f_d·cos/pdf and f_s·cos/pdf, weight
+        // everything found along the rest of the path: each share is an unbiased estimate of its
+        // own lobe's integral, whichever lobe the direction was drawn from.
+        if (maxBounces == 0 && !hasEmitters && !hasEnvironment) return;
+        glm::vec3 l;
+        if (!bsdf.sample(random, l)) return;
+        float pdf = bsdf.pdf(l);
+        if (pdf <= 0.0f) return;
+        const float NdotL = glm::dot(bsdf.n, l);
+        glm::vec3 throughputD = bsdf.diffuse(l) * (NdotL / pdf);
+        glm::vec3 throughputS = bsdf.specular(l) * (NdotL / pdf);
+
+        Ray ray{offsetOrigin(hit.position, hit.geometricNormal), l, 0.0f, INFINITY};
+        SurfaceHit next;
+        ++rays;
+        if (!scene_.intersect(ray, next)) {
+            const glm::vec3 sky = environment(l);
+            out.add(Term::DirectDiffuse, throughputD * sky);
+            out.add(Term::DirectSpecular, throughputS * sky);
+            return;
+        }
+        if (maxComponent(next.emission) > 0.0f) {
+            const glm::vec3 e = next.emission * emissionWeight(next, l, pdf);
+            out.add(Term::DirectDiffuse, throughputD * e);
+            out.add(Term::DirectSpecular, throughputS * e);
+        }
+        if (maxBounces == 0) return;
+
+        // Indirect light: Lit scales both indirect terms by the material's ambient occlusion.
+        throughputD *= hit.occlusion;
+        throughputS *= hit.occlusion;
+        for (int bounce = 1;; ++bounce) {
+            hit = next;
+            const Bsdf b(hit, -ray.direction);
+            if (!b.reflects()) return;
+            const Split dl = direct(hit, b, random);
+            const glm::vec3 reflected = dl.diffuse + dl.specular;
+            out.add(Term::IndirectDiffuse, throughputD * reflected);
+            out.add(Term::IndirectSpecular, throughputS * reflected);
+
+            // Light that reaches this surface by one more segment: from an emitter or the sky
+            // (still `bounce` bounces), or a further bounce when allowed.
+            const bool moreBounces = bounce < maxBounces && bounce + 1 < kMaxPathVertices;
+            if (!moreBounces && !hasEmitters && !hasEnvironment) return;
+            if (!b.sample(random, l)) return;
+            pdf = b.pdf(l);
+            if (pdf <= 0.0f) return;
+            const glm::vec3 weight = (b.diffuse(l) + b.specular(l)) * (glm::dot(b.n, l) / pdf);
+            throughputD *= weight;
+            throughputS *= weight;
+            if (moreBounces && bounce >= settings_.russianRouletteStart) {
+                const float survive = std::min(0.95f, maxComponent(throughputD + throughputS));
+                if (random.uniform() >= survive) return;
+                throughputD /= survive;
+                throughputS /= survive;
+            }
+            ray = Ray{offsetOrigin(hit.position, hit.geometricNormal), l, 0.0f, INFINITY};
+            ++rays;
+            if (!scene_.intersect(ray, next)) {
+                const glm::vec3 sky = environment(l);
+                out.add(Term::IndirectDiffuse, throughputD * sky);
+                out.add(Term::IndirectSpecular, throughputS * sky);
+                return;
+            }
+            if (maxComponent(next.emission) > 0.0f) {
+                const glm::vec3 e = next.emission * emissionWeight(next, l, pdf);
+                out.add(Term::IndirectDiffuse, throughputD * e);
+                out.add(Term::IndirectSpecular, throughputS * e);
+            }
+            if (!moreBounces) return;
+        }
+    }
+
+private:
+    const ReferenceScene& scene_;
+    const ReferenceSettings& settings_;
+};
+
+// The camera ray through window position (x, y) in pixels (origin bottom left), from the near
+// plane to the far plane, exactly what the rasterizer's depth range keeps.
+Ray cameraRay(const glm::mat4& inverseViewProjection, float x, float y, int width, int height) {
+    const float ndcX = x / static_cast<float>(width) * 2.0f - 1.0f;
+    const float ndcY = y / static_cast<float>(height) * 2.0f - 1.0f;
+    glm::vec4 nearPoint = inverseViewProjection * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
+    glm::vec4 farPoint = inverseViewProjection * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+    const glm::vec3 a = glm::vec3(nearPoint) / nearPoint.w;
+    const glm::vec3 b = glm::vec3(farPoint) / farPoint.w;
+    const float length = glm::length(b - a);
+    return Ray{a, (b - a) / length, 0.0f, length};
+}
+
+}  // namespace
+
+// ---- ReferenceImage ----------------------------------------------------------------------
+
+void ReferenceImage::resize(int w, int h) {
+    width = w;
+    height = h;
+    clear();
+}
+
+void ReferenceImage::clear() {
+    for (auto& sum : sums) sum.assign(pixelCount(), glm::dvec3(0.0));
+    samples.assign(pixelCount(), 0u);
+}
+
+glm::vec3 ReferenceImage::mean(Term term, std::size_t pixel) const {
+    const std::uint32_t n = samples[pixel];
+    return n > 0 ? glm::vec3(sums[static_cast<int>(term)][pixel] / static_cast<double>(n)) : glm::vec3(0.0f);
+}
+
+std::uint32_t ReferenceImage::minSamples() const {
+    return samples.empty() ? 0u : *std::min_element(samples.begin(), samples.end());
+}
+
+std::vector<float> ReferenceImage::viewRgb(View view, const RenderSettings& settings) const {
+    if (!referenceRendersView(view))
+        throw std::invalid_argument("the reference renders only the final image and the four lighting terms, not '" +
+                                    std::string(toString(view)) + "'");
+    bool on[kTermCount] = {settings.directDiffuse, settings.directSpecular, settings.indirectDiffuse,
+                           settings.indirectSpecular};
+    if (view != View::Final) {
+        const Term only = view == View::DirectDiffuse    ? Term::DirectDiffuse
+                          : view == View::DirectSpecular ? Term::DirectSpecular
+                          : view == View::IndirectDiffuse ? Term::IndirectDiffuse
+                                                          : Term::IndirectSpecular;
+        for (int t = 0; t < kTermCount; ++t) on[t] = t == static_cast<int>(only);
+    }
+    std::vector<float> rgb(pixelCount() * 3, 0.0f);
+    for (std::size_t p = 0; p < pixelCount(); ++p) {
+        glm::vec3 c(0.0f);
+        for (int t = 0; t < kTermCount; ++t)
+            if (on[t]) c += mean(static_cast<Term>(t), p);
+        rgb[3 * p + 0] = c.r;
+        rgb[3 * p + 1] = c.g;
+        rgb[3 * p + 2] = c.b;
+    }
+    return rgb;
+}
+
+// ---- PathTracer ------------------------------------------------------------------------------
+
+PathTracer::PathTracer(const ReferenceScene& scene, const CameraView& camera, int width, int height,
+                       ReferenceSettings settings)
+    : scene_(scene), inverseViewProjection_(glm::inverse(camera.viewProjection())), settings_(std::move(settings)) {
+    if (width <= 0 || height <= 0) throw std::invalid_argument("the reference image needs a positive size");
+    if (settings_.bounces < 0 && settings_.bounces != kAllBounces)
+        throw std::invalid_argument("bounces must be 0 or more (or all)");
+    image_.resize(width, height);
+}
+
+bool PathTracer::addSamples(int count, const std::atomic<bool>* cancel) {
+    constexpr int kTile = 16;  // pixels per tile side: small enough to balance, large enough to amortise
+    const int first = passSamples_;
+    std::atomic<bool> cancelled{false};
+    tbb::parallel_for(tbb::blocked_range2d<int>(0, image_.height, kTile, 0, image_.width, kTile),
+                      [&](const tbb::blocked_range2d<int>& tile) {
+                          if (cancelled.load(std::memory_order_relaxed)) return;
+                          if (cancel && cancel->load(std::memory_order_relaxed)) {
+                              cancelled = true;
+                              return;
+                          }
+                          PathIntegrator integrator(scene_, settings_);
+                          for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
+                              for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                                  const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(image_.width) +
+                                                            static_cast<std::size_t>(x);
+                                  for (int s = first; s < first + count; ++s) {
+                                      Random random(settings_.seed, pixel, static_cast<std::uint64_t>(s));
+                                      const glm::vec2 u = random.uniform2();
+                                      const glm::vec2 jitter = settings_.pixelCentres ? glm::vec2(0.5f) : u;
+                                      const Ray ray = cameraRay(inverseViewProjection_, static_cast<float>(x) + jitter.x,
+                                                                static_cast<float>(y) + jitter.y, image_.width, image_.height);
+                                      Contribution c;
+                                      integrator.trace(ray, random, c);
+                                      for (int t = 0; t < kTermCount; ++t) {
+                                          // A NaN or infinity from a degenerate triangle would poison
+                                          // the pixel for good; such a sample counts as black.
+                                          const glm::vec3 v = c.terms[t];
+                                          if (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))
+                                              image_.sums[t][pixel] += glm::dvec3(v);
+                                      }
+                                      ++image_.samples[pixel];
+                                  }
+                              }
+                          }
+                          rays_.fetch_add(integrator.rays, std::memory_order_relaxed);
+                      });
+    if (cancelled) return false;
+    passSamples_ += count;
+    return true;
+}
+
+std::vector<FirstHit> traceFirstHits(const ReferenceScene& scene, const CameraView& camera, int width, int height) {
+    std::vector<FirstHit> hits(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    const glm::mat4 inverse = glm::inverse(camera.viewProjection());
+    tbb::parallel_for(tbb::blocked_range2d<int>(0, height, 16, 0, width, 16), [&](const tbb::blocked_range2d<int>& tile) {
+        for (int y = tile.rows().begin(); y < tile.rows().end(); ++y)
+            for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                const Ray ray = cameraRay(inverse, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, width, height);
+                SurfaceHit hit;
+                FirstHit& out = hits[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
+                if (!scene.intersect(ray, hit)) continue;
+                out.node = hit.node;
+                out.position = hit.position;
+                out.normal = shadingNormal(hit.normal, -ray.direction);
+                out.emissive = maxComponent(hit.emission) > 0.0f;
+                out.metalness = hit.metalness;
+                out.roughness = hit.roughness;
+                const glm::vec3 origin = offsetOrigin(hit.position, hit.geometricNormal);
+                const auto& lights = scene.punctualLights();
+                for (std::size_t i = 0; i < lights.size() && i < 32; ++i) {
+                    const PunctualSample ls = samplePunctualLight(lights[i], hit.position);
+                    if (glm::dot(out.normal, ls.l) <= 0.0f || maxComponent(ls.irradiance) <= 0.0f) continue;
+                    const Ray shadow{origin, ls.l, 0.0f, std::isinf(ls.distance) ? INFINITY : ls.distance * (1.0f - 1e-4f)};
+                    if (!scene.occluded(shadow)) out.litBy |= 1u << i;
+                }
+            }
+    });
+    return hits;
+}
+
+std::vector<std::uint8_t> toneMapToRgba8(const std::vector<float>& rgb, float exposure) {
+    std::vector<std::uint8_t> rgba(rgb.size() / 3 * 4, 255);
+    const auto aces = [](float x) {  // Narkowicz 2015, as tonemap.glsl acesFilmic
+        const float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;
+        return std::clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0f, 1.0f);
+    };
+    const auto encode = [](float c) {  // the sRGB transfer function (IEC 61966-2-1)
+        const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+        return static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255.0f));
+    };
+    for (std::size_t p = 0; p < rgb.size() / 3; ++p)
+        for (int c = 0; c < 3; ++c) rgba[4 * p + static_cast<std::size_t>(c)] = encode(aces(std::max(rgb[3 * p + static_cast<std::size_t>(c)], 0.0f) * exposure));
+    return rgba;
+}
+
+}  // namespace lit::reference

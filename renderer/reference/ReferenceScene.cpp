@@ -1,0 +1,392 @@
+#include "reference/ReferenceScene.h"
+
+#include "Log.h"
+#include "RenderSettings.h"
+#include "passes/LightSetup.h"
+
+#include <embree3/rtcore.h>
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lit::reference {
+
+namespace {
+
+constexpr int kWrapRepeat = 10497;
+constexpr int kWrapMirroredRepeat = 33648;
+constexpr int kFilterNearest = 9728;
+
+float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// Texel index along one axis under a glTF wrap mode (GL enums).
+int wrapTexel(int i, int size, int mode) {
+    if (mode == kWrapRepeat) return ((i % size) + size) % size;
+    if (mode == kWrapMirroredRepeat) {
+        const int period = 2 * size;
+        int m = ((i % period) + period) % period;
+        return m < size ? m : period - 1 - m;
+    }
+    return std::clamp(i, 0, size - 1);  // CLAMP_TO_EDGE and anything unknown
+}
+
+// What Embree hands the alpha-mask filter of one geometry.
+struct AlphaFilterData {
+    const ReferenceScene* scene = nullptr;
+    unsigned geometry = 0;  // Embree geometry ID = index into Impl::geometries
+};
+
+}  // namespace
+
+// One mesh primitive of one node, flattened to world space (Embree geometry ID = index).
+struct ReferenceScene::Geometry {
+    int node = -1;
+    int material = -1;  // -1 or out of range: the default material
+    bool alphaMasked = false;
+    std::vector<glm::vec3> positions;  // world
+    std::vector<glm::vec3> normals;    // world (normal matrix applied, not normalised)
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::vec4> tangents;   // world xyz, w bitangent sign
+    std::vector<std::uint32_t> indices;  // 3 per triangle, validated
+    int emitterBase = -1;              // emitter index of triangle 0 when the material emits
+};
+
+struct ReferenceScene::Impl {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    std::vector<Geometry> geometries;
+    std::vector<AlphaFilterData> alphaFilters;  // one per geometry; sized once, Embree keeps pointers
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<Image> images;
+    std::array<float, 256> srgbToLinear{};
+    Material fallback;  // the default material: white, metallic 0, roughness 1 (as GpuScene)
+
+    ~Impl() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+namespace {
+
+// Embree filter callback for alpha-masked geometry: rejects hits on cut-out texels, for closest
+// hits and shadow rays alike (the G-buffer and shadow passes discard the same texels).
+void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* user = static_cast<const AlphaFilterData*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        const unsigned primitive = RTCHitN_primID(args->hit, args->N, i);
+        const float u = RTCHitN_u(args->hit, args->N, i);
+        const float v = RTCHitN_v(args->hit, args->N, i);
+        if (user->scene->alphaCutOut(user->geometry, primitive, u, v)) args->valid[i] = 0;
+    }
+}
+
+}  // namespace
+
+ReferenceScene::ReferenceScene(const Scene& scene, Log& log) : impl_(std::make_unique<Impl>()) {
+    Impl& s = *impl_;
+    for (int i = 0; i < 256; ++i) s.srgbToLinear[static_cast<std::size_t>(i)] = srgbToLinear(static_cast<float>(i) / 255.0f);
+    s.materials = scene.materials;
+    s.textures = scene.textures;
+    s.images = scene.images;
+    s.fallback.metallic = 0.0f;
+
+    // The same light table the GL passes upload (positions, directions, spot factors, the
+    // LIT_MAX_LIGHTS cap); shadow maps are not needed here.
+    RenderSettings lightSettings;
+    lightSettings.shadows = false;
+    lights_ = buildLightSetup(scene, scene.worldBounds(), lightSettings, log).lights;
+
+    s.device = rtcNewDevice(nullptr);
+    if (!s.device) throw std::runtime_error("cannot start Embree (rtcNewDevice failed, error " +
+                                            std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")");
+    s.scene = rtcNewScene(s.device);
+    rtcSetSceneBuildQuality(s.scene, RTC_BUILD_QUALITY_HIGH);
+
+    // Geometries first (their vectors must not move once Embree holds pointers to user data).
+    for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+        const Node& node = scene.nodes[n];
+        if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= scene.meshes.size()) continue;
+        const glm::mat3 model(node.world);
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(model));
+        for (const Primitive& primitive : scene.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
+            Geometry g;
+            g.node = static_cast<int>(n);
+            g.material = primitive.material;
+            const std::size_t count = primitive.vertices.size();
+            for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
+                const std::uint32_t a = primitive.indices[t], b = primitive.indices[t + 1], c = primitive.indices[t + 2];
+                if (a >= count || b >= count || c >= count) continue;
+                g.indices.insert(g.indices.end(), {a, b, c});
+            }
+            if (g.indices.empty()) continue;
+            g.positions.reserve(count);
+            for (const Vertex& v : primitive.vertices) {
+                g.positions.push_back(glm::vec3(node.world * glm::vec4(v.position, 1.0f)));
+                g.normals.push_back(normalMatrix * v.normal);
+                g.uvs.push_back(v.uv);
+                g.tangents.push_back(glm::vec4(model * glm::vec3(v.tangent), v.tangent.w));
+            }
+            s.geometries.push_back(std::move(g));
+        }
+    }
+
+    s.alphaFilters.resize(s.geometries.size());
+    for (std::size_t i = 0; i < s.geometries.size(); ++i) {
+        Geometry& g = s.geometries[i];
+        const Material& m = (g.material >= 0 && static_cast<std::size_t>(g.material) < s.materials.size())
+                                ? s.materials[static_cast<std::size_t>(g.material)]
+                                : s.fallback;
+        g.alphaMasked = m.alphaMode == AlphaMode::Mask;
+
+        RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                     3 * sizeof(float), g.positions.size()));
+        for (std::size_t v = 0; v < g.positions.size(); ++v) {
+            vertices[3 * v + 0] = g.positions[v].x;
+            vertices[3 * v + 1] = g.positions[v].y;
+            vertices[3 * v + 2] = g.positions[v].z;
+        }
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                       3 * sizeof(unsigned), g.indices.size() / 3));
+        std::copy(g.indices.begin(), g.indices.end(), indices);
+        if (g.alphaMasked) {
+            s.alphaFilters[i] = {this, static_cast<unsigned>(i)};
+            rtcSetGeometryUserData(geometry, &s.alphaFilters[i]);
+            rtcSetGeometryIntersectFilterFunction(geometry, alphaMaskFilter);
+            rtcSetGeometryOccludedFilterFunction(geometry, alphaMaskFilter);
+        }
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometryByID(s.scene, geometry, static_cast<unsigned>(i));
+        rtcReleaseGeometry(geometry);
+        triangleCount_ += g.indices.size() / 3;
+
+        // Emissive triangles become area lights, weighted by area × emissive luminance.
+        const glm::vec3 emissive = m.emissiveFactor * m.emissiveStrength;
+        if (luminance(emissive) > 0.0f) {
+            g.emitterBase = static_cast<int>(emitters_.size());
+            for (std::size_t t = 0; t < g.indices.size(); t += 3) {
+                Emitter e;
+                const std::uint32_t a = g.indices[t], b = g.indices[t + 1], c = g.indices[t + 2];
+                e.p0 = g.positions[a];
+                e.e1 = g.positions[b] - e.p0;
+                e.e2 = g.positions[c] - e.p0;
+                e.uv0 = g.uvs[a];
+                e.uv1 = g.uvs[b];
+                e.uv2 = g.uvs[c];
+                e.material = g.material;
+                e.area = 0.5f * glm::length(glm::cross(e.e1, e.e2));
+                e.power = e.area * luminance(emissive);
+                emitters_.push_back(e);
+            }
+        }
+    }
+    rtcCommitScene(s.scene);
+    if (const RTCError error = rtcGetDeviceError(s.device); error != RTC_ERROR_NONE)
+        throw std::runtime_error("Embree could not build the scene (error " + std::to_string(static_cast<int>(error)) + ")");
+
+    double total = 0.0;
+    emitterCdf_.reserve(emitters_.size());
+    for (const Emitter& e : emitters_) {
+        total += e.power;
+        emitterCdf_.push_back(static_cast<float>(total));
+    }
+    emitterPower_ = static_cast<float>(total);
+    for (float& c : emitterCdf_) c = total > 0.0 ? static_cast<float>(c / total) : 0.0f;
+}
+
+ReferenceScene::~ReferenceScene() = default;
+
+bool ReferenceScene::alphaCutOut(unsigned geometry, unsigned primitive, float u, float v) const {
+    const Geometry& g = impl_->geometries[geometry];
+    const std::size_t t = 3 * static_cast<std::size_t>(primitive);
+    const glm::vec2 uv = (1.0f - u - v) * g.uvs[g.indices[t]] + u * g.uvs[g.indices[t + 1]] + v * g.uvs[g.indices[t + 2]];
+    const Material& m = impl_->materials[static_cast<std::size_t>(g.material)];
+    float alpha = m.baseColorFactor.a;
+    if (m.baseColorTexture >= 0) alpha *= sampleTexture(m.baseColorTexture, uv).a;
+    return alpha < m.alphaCutoff;
+}
+
+glm::vec4 ReferenceScene::sampleTexture(int texture, glm::vec2 uv) const {
+    const Impl& s = *impl_;
+    if (texture < 0 || static_cast<std::size_t>(texture) >= s.textures.size()) return glm::vec4(1.0f);
+    const Texture& tex = s.textures[static_cast<std::size_t>(texture)];
+    if (tex.image < 0 || static_cast<std::size_t>(tex.image) >= s.images.size()) return glm::vec4(1.0f);
+    const Image& image = s.images[static_cast<std::size_t>(tex.image)];
+    if (image.width <= 0 || image.height <= 0 ||
+        image.rgba.size() < static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4)
+        return glm::vec4(1.0f);
+    // GL_NEAREST magnification (glTF magFilter 9728): the texel under the point, as GpuScene sets
+    // it up (its minification is then GL_NEAREST or mipmapped; mip levels are not modelled here).
+    if (tex.magFilter == kFilterNearest) {
+        const float nx = uv.x * static_cast<float>(image.width), ny = uv.y * static_cast<float>(image.height);
+        if (!std::isfinite(nx) || !std::isfinite(ny)) return glm::vec4(1.0f);
+        const auto wrapped = [](float f, int size, int mode) {
+            const double period = 2.0 * size;
+            const int i = static_cast<int>(std::floor(f - std::floor(f / period) * period));
+            return wrapTexel(i, size, mode);
+        };
+        const std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(wrapped(ny, image.height, tex.wrapT)) *
+                                                 static_cast<std::size_t>(image.width) +
+                                             static_cast<std::size_t>(wrapped(nx, image.width, tex.wrapS))) * 4];
+        if (image.srgb) return glm::vec4(s.srgbToLinear[p[0]], s.srgbToLinear[p[1]], s.srgbToLinear[p[2]], p[3] / 255.0f);
+        return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
+    }
+    // Bilinear between texel centres: texel i covers [i, i+1)/size.
+    const float x = uv.x * static_cast<float>(image.width) - 0.5f;
+    const float y = uv.y * static_cast<float>(image.height) - 0.5f;
+    if (!std::isfinite(x) || !std::isfinite(y)) return glm::vec4(1.0f);
+    const float fx = std::floor(x), fy = std::floor(y);
+    const float ax = x - fx, ay = y - fy;
+    // Keep the integer part in range before converting (huge UVs on a repeating texture).
+    const auto reduce = [](float f, int size) {
+        const double period = 2.0 * size;
+        return static_cast<int>(f - static_cast<float>(std::floor(f / period) * period));
+    };
+    const int x0 = reduce(fx, image.width), y0 = reduce(fy, image.height);
+    const auto texel = [&](int tx, int ty) {
+        const int cx = wrapTexel(tx, image.width, tex.wrapS);
+        const int cy = wrapTexel(ty, image.height, tex.wrapT);
+        const std::uint8_t* p =
+            &image.rgba[(static_cast<std::size_t>(cy) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(cx)) * 4];
+        if (image.srgb) return glm::vec4(s.srgbToLinear[p[0]], s.srgbToLinear[p[1]], s.srgbToLinear[p[2]], p[3] / 255.0f);
+        return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
+    };
+    return glm::mix(glm::mix(texel(x0, y0), texel(x0 + 1, y0), ax), glm::mix(texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), ax),
+                    ay);
+}
+
+float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::vec3 normal, const glm::vec4& tangent,
+                                      bool frontFacing, SurfaceHit& hit) const {
+    const Impl& s = *impl_;
+    const Material& m =
+        (material >= 0 && static_cast<std::size_t>(material) < s.materials.size()) ? s.materials[static_cast<std::size_t>(material)]
+                                                                                      : s.fallback;
+    // shaders/gbuffer.frag.glsl, line by line.
+    glm::vec4 baseColor = m.baseColorFactor;
+    if (m.baseColorTexture >= 0) baseColor *= sampleTexture(m.baseColorTexture, uv);
+
+    glm::vec3 n = glm::length(normal) > 0.0f ? glm::normalize(normal) : hit.geometricNormal;
+    if (!frontFacing) n = -n;
+    if (m.normalTexture >= 0) {
+        glm::vec3 t = glm::vec3(tangent) - n * glm::dot(n, glm::vec3(tangent));
+        if (glm::dot(t, t) > 1e-10f) {
+            t = glm::normalize(t);
+            const glm::vec3 b = glm::cross(n, t) * (tangent.w < 0.0f ? -1.0f : 1.0f);
+            glm::vec3 tn = glm::vec3(sampleTexture(m.normalTexture, uv)) * 2.0f - 1.0f;
+            tn.x *= m.normalScale;
+            tn.y *= m.normalScale;
+            const glm::vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
+            if (glm::dot(mapped, mapped) > 0.0f) n = glm::normalize(mapped);
+        }
+    }
+    float metalness = m.metallic;
+    float roughness = m.roughness;
+    if (m.metallicRoughnessTexture >= 0) {
+        const glm::vec4 mr = sampleTexture(m.metallicRoughnessTexture, uv);
+        roughness *= mr.g;
+        metalness *= mr.b;
+    }
+    float occlusion = 1.0f;
+    if (m.occlusionTexture >= 0) occlusion = 1.0f + m.occlusionStrength * (sampleTexture(m.occlusionTexture, uv).r - 1.0f);
+    glm::vec3 emissive = m.emissiveFactor * m.emissiveStrength;
+    if (m.emissiveTexture >= 0) emissive *= glm::vec3(sampleTexture(m.emissiveTexture, uv));
+
+    hit.baseColor = glm::vec3(baseColor);
+    hit.normal = n;
+    hit.roughness = std::clamp(roughness, 0.0f, 1.0f);
+    hit.metalness = std::clamp(metalness, 0.0f, 1.0f);
+    hit.occlusion = occlusion;
+    hit.emission = emissive;
+    return baseColor.a;
+}
+
+bool ReferenceScene::intersect(const Ray& ray, SurfaceHit& hit) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh{};
+    rh.ray.org_x = ray.origin.x;
+    rh.ray.org_y = ray.origin.y;
+    rh.ray.org_z = ray.origin.z;
+    rh.ray.dir_x = ray.direction.x;
+    rh.ray.dir_y = ray.direction.y;
+    rh.ray.dir_z = ray.direction.z;
+    rh.ray.tnear = ray.tnear;
+    rh.ray.tfar = ray.tfar;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->scene, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+
+    const Geometry& g = impl_->geometries[rh.hit.geomID];
+    const std::size_t t = 3 * static_cast<std::size_t>(rh.hit.primID);
+    const std::uint32_t i0 = g.indices[t], i1 = g.indices[t + 1], i2 = g.indices[t + 2];
+    const float u = rh.hit.u, v = rh.hit.v, w = 1.0f - u - v;
+    hit.t = rh.ray.tfar;
+    hit.position = ray.origin + ray.direction * hit.t;
+    glm::vec3 ng = glm::cross(g.positions[i1] - g.positions[i0], g.positions[i2] - g.positions[i0]);
+    const float length = glm::length(ng);
+    ng = length > 0.0f ? ng / length : -ray.direction;
+    // gl_FrontFacing: the counter-clockwise side (the cross product's side) faces the viewer.
+    const bool frontFacing = glm::dot(ng, ray.direction) < 0.0f;
+    hit.geometricNormal = frontFacing ? ng : -ng;
+    const glm::vec2 uv = w * g.uvs[i0] + u * g.uvs[i1] + v * g.uvs[i2];
+    const glm::vec3 normal = w * g.normals[i0] + u * g.normals[i1] + v * g.normals[i2];
+    const glm::vec4 tangent = w * g.tangents[i0] + u * g.tangents[i1] + v * g.tangents[i2];
+    resolveMaterial(g.material, uv, normal, tangent, frontFacing, hit);
+    hit.node = g.node;
+    hit.emitter = g.emitterBase >= 0 ? g.emitterBase + static_cast<int>(rh.hit.primID) : -1;
+    return true;
+}
+
+bool ReferenceScene::occluded(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r{};
+    r.org_x = ray.origin.x;
+    r.org_y = ray.origin.y;
+    r.org_z = ray.origin.z;
+    r.dir_x = ray.direction.x;
+    r.dir_y = ray.direction.y;
+    r.dir_z = ray.direction.z;
+    r.tnear = ray.tnear;
+    r.tfar = ray.tfar;
+    r.mask = 0xFFFFFFFFu;
+    rtcOccluded1(impl_->scene, &context, &r);
+    return r.tfar < 0.0f;  // Embree sets tfar to −inf when something blocks the ray
+}
+
+EmitterSample ReferenceScene::sampleEmitter(float u, const glm::vec2& uv) const {
+    EmitterSample sample;
+    if (emitters_.empty()) return sample;
+    const auto it = std::lower_bound(emitterCdf_.begin(), emitterCdf_.end(), u);
+    const std::size_t index = std::min(static_cast<std::size_t>(it - emitterCdf_.begin()), emitters_.size() - 1);
+    const Emitter& e = emitters_[index];
+    // Uniform on the triangle (Pharr, Jakob, Humphreys, PBRT 3rd ed., 13.6.5).
+    const float su = std::sqrt(uv.x);
+    const float b1 = 1.0f - su, b2 = uv.y * su;
+    sample.position = e.p0 + b1 * e.e1 + b2 * e.e2;
+    sample.normal = glm::normalize(glm::cross(e.e1, e.e2));
+    const glm::vec2 texcoord = (1.0f - b1 - b2) * e.uv0 + b1 * e.uv1 + b2 * e.uv2;
+    SurfaceHit hit;
+    hit.geometricNormal = sample.normal;
+    resolveMaterial(e.material, texcoord, sample.normal, glm::vec4(1, 0, 0, 1), true, hit);
+    sample.emission = hit.emission;
+    sample.pdfArea = emitterPdfArea(static_cast<int>(index));
+    return sample;
+}
+
+float ReferenceScene::emitterPdfArea(int index) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= emitters_.size() || emitterPower_ <= 0.0f) return 0.0f;
+    const Emitter& e = emitters_[static_cast<std::size_t>(index)];
+    if (e.area <= 0.0f) return 0.0f;
+    return e.power / emitterPower_ / e.area;
+}
+
+}  // namespace lit::reference

@@ -1,0 +1,111 @@
+#pragma once
+// A lit::Scene made ready for path tracing: its triangles in world space in an Embree scene,
+// materials resolved at a hit the way the G-buffer pass resolves them (shaders/gbuffer.frag.glsl:
+// base colour, metal-rough, normal, emissive and occlusion textures, alpha mask), the punctual
+// lights of passes/LightSetup, and the emissive triangles as area lights with a power CDF.
+// Built once per scene (or per edit); read-only while rendering, so many threads share it.
+
+#include "scene/Scene.h"
+
+#include <shared.h>
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace lit {
+class Log;
+}
+
+namespace lit::reference {
+
+// A ray segment: origin, unit direction, and the parametric range [tnear, tfar] in metres.
+struct Ray {
+    glm::vec3 origin{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};
+    float tnear = 0.0f;
+    float tfar = INFINITY;
+};
+
+// Where a ray hit and what is there, resolved as the G-buffer would store it.
+struct SurfaceHit {
+    float t = 0.0f;                 // metres along the ray
+    glm::vec3 position{0.0f};       // world
+    glm::vec3 geometricNormal{0.0f};  // unit, facing the ray's origin side
+    glm::vec3 normal{0.0f};         // shading normal: interpolated, flipped like the geometric one, normal-mapped
+    glm::vec3 baseColor{1.0f};      // linear
+    float metalness = 0.0f;
+    float roughness = 1.0f;         // perceptual
+    float occlusion = 1.0f;         // material ambient occlusion (applies to indirect light only, as in Lit)
+    glm::vec3 emission{0.0f};       // W/(sr·m²)
+    int node = -1;                  // scene node index
+    int emitter = -1;               // index into emitters() when the triangle emits, else -1
+};
+
+struct Emitter {
+    glm::vec3 p0{0.0f}, e1{0.0f}, e2{0.0f};  // world vertex 0 and edges to vertices 1 and 2
+    glm::vec2 uv0{0.0f}, uv1{0.0f}, uv2{0.0f};
+    int material = -1;
+    float area = 0.0f;  // m²
+    float power = 0.0f;  // sampling weight: area × luminance of the emissive factor
+};
+
+// A point drawn on the emissive triangles, density `pdfArea` per m² of the whole emitter set.
+struct EmitterSample {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f};     // unit geometric normal (emitters are two-sided, as in Lit)
+    glm::vec3 emission{0.0f};   // W/(sr·m²) at the point
+    float pdfArea = 0.0f;       // 1/m²
+};
+
+class ReferenceScene {
+public:
+    // Needs up-to-date world transforms (Scene::updateWorldTransforms). Throws std::runtime_error
+    // when Embree cannot be initialised. `log` gets the lights LightSetup warns about.
+    ReferenceScene(const Scene& scene, Log& log);
+    ~ReferenceScene();
+    ReferenceScene(const ReferenceScene&) = delete;
+    ReferenceScene& operator=(const ReferenceScene&) = delete;
+
+    // Closest hit along the ray (alpha-masked texels are skipped), resolved; false on a miss.
+    bool intersect(const Ray& ray, SurfaceHit& hit) const;
+    // True when anything blocks the ray between tnear and tfar.
+    bool occluded(const Ray& ray) const;
+
+    const std::vector<gpu::GpuLight>& punctualLights() const { return lights_; }
+    const std::vector<Emitter>& emitters() const { return emitters_; }
+    float emitterPower() const { return emitterPower_; }
+    // Draws a point on the emitters by power, then uniformly over the triangle's area.
+    EmitterSample sampleEmitter(float u, const glm::vec2& uv) const;
+    // Density (per m²) with which sampleEmitter produces a point on emitter `index`.
+    float emitterPdfArea(int index) const;
+
+    // Texture lookup as the GPU's sampler would do it at mip level 0: bilinear, with the glTF
+    // sampler's wrap modes, sRGB images decoded to linear before filtering. RGBA in [0,1].
+    glm::vec4 sampleTexture(int texture, glm::vec2 uv) const;
+    // The material at a surface point from its interpolated attributes (world normal and tangent
+    // already transformed; `frontFacing` as gl_FrontFacing). Fills baseColor ... emission and
+    // `normal`; returns the base colour alpha (for the mask test).
+    float resolveMaterial(int material, const glm::vec2& uv, glm::vec3 normal, const glm::vec4& tangent,
+                          bool frontFacing, SurfaceHit& hit) const;
+
+    // The alpha-mask test for a hit on geometry `geometry`, triangle `primitive` at barycentrics
+    // (u, v): true when the texel is cut out. Used by Embree's filter callbacks.
+    bool alphaCutOut(unsigned geometry, unsigned primitive, float u, float v) const;
+
+    std::size_t triangleCount() const { return triangleCount_; }
+
+private:
+    struct Geometry;
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    std::vector<gpu::GpuLight> lights_;
+    std::vector<Emitter> emitters_;
+    std::vector<float> emitterCdf_;  // cumulative power, normalised to end at 1
+    float emitterPower_ = 0.0f;
+    std::size_t triangleCount_ = 0;
+};
+
+}  // namespace lit::reference

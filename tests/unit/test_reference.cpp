@@ -1,0 +1,457 @@
+// The reference path tracer against closed forms (label cpu). Each test renders a few thousand
+// paths at most; the whole file runs in a few seconds on 2 cores.
+#include "Log.h"
+#include "reference/MicrofacetBrdf.h"
+#include "reference/DifferenceImage.h"
+#include "reference/PathTracer.h"
+#include "reference/ProgressiveReference.h"
+#include "reference/PunctualLights.h"
+#include "reference/ReferenceScene.h"
+#include "scene/CameraView.h"
+#include "scene/GltfLoader.h"
+#include "scene/SceneBuilder.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <thread>
+
+namespace lit::reference {
+namespace {
+
+class QuietLog : public Log {
+public:
+    QuietLog() { setSink([](const LogMessage&) {}); }
+};
+
+// ---- Twins of the shaders' math, written independently of the reference's own code --------
+
+// Van der Corput radical inverse in base 2 (cone.glsl radicalInverse).
+float radicalInverse(std::uint32_t bits) {
+    bits = (bits << 16u) | (bits >> 16u);
+    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+    return static_cast<float>(bits) * 2.3283064365386963e-10f;
+}
+
+// The cone tracer's specular albedo table E = F0·A + B, computed as specular_albedo.frag.glsl does
+// (GGX half vectors drawn from D(h)(n·h), weights G·(v·h)/((n·h)(n·v))), with 65536 samples.
+float specularAlbedoTable(float f0, float NdotV, float roughness) {
+    const float r = std::clamp(roughness, 0.03f, 1.0f);
+    const float alpha = r * r, a2 = alpha * alpha;
+    NdotV = std::clamp(NdotV, 1e-3f, 1.0f);
+    const glm::vec3 v(std::sqrt(1.0f - NdotV * NdotV), 0.0f, NdotV);
+    const int samples = 1 << 16;
+    glm::dvec2 sum(0.0);
+    for (int k = 0; k < samples; ++k) {
+        const float ux = (static_cast<float>(k) + 0.5f) / samples;
+        const float uy = radicalInverse(static_cast<std::uint32_t>(k));
+        const float cos2 = (1.0f - ux) / (1.0f + (a2 - 1.0f) * ux);
+        const float sinTheta = std::sqrt(std::max(1.0f - cos2, 0.0f)), phi = 2.0f * kPi * uy;
+        const glm::vec3 h(sinTheta * std::cos(phi), sinTheta * std::sin(phi), std::sqrt(cos2));
+        const float VdotH = glm::dot(v, h);
+        const glm::vec3 l = 2.0f * VdotH * h - v;
+        if (VdotH <= 0.0f || l.z <= 0.0f) continue;
+        const float lambdaV = l.z * std::sqrt(NdotV * NdotV * (1.0f - a2) + a2);
+        const float lambdaL = NdotV * std::sqrt(l.z * l.z * (1.0f - a2) + a2);
+        const float g = 2.0f * l.z * NdotV / (lambdaV + lambdaL);
+        const float w = g * VdotH / (h.z * NdotV);
+        const float fc = std::pow(1.0f - VdotH, 5.0f);
+        sum += glm::dvec2(w * (1.0f - fc), w * fc);
+    }
+    const glm::vec2 ab(sum / double(samples));
+    return f0 * ab.x + ab.y;
+}
+
+// ---- Scenes --------------------------------------------------------------------------------
+
+// A camera node looking from `position` at `target` (yfov 0.8 rad, square images).
+void addCamera(Scene& scene, const glm::vec3& position, const glm::vec3& target) {
+    Camera camera;
+    camera.yfov = 0.8f;
+    camera.znear = 0.05f;
+    camera.zfar = 50.0f;
+    addCameraNode(scene, camera, position, target);
+}
+
+struct Render {
+    std::unique_ptr<ReferenceScene> scene;
+    CameraView camera;
+    std::unique_ptr<PathTracer> tracer;
+};
+
+Render render(const Scene& scene, int size, int spp, ReferenceSettings settings) {
+    Render r;
+    QuietLog log;
+    r.scene = std::make_unique<ReferenceScene>(scene, log);
+    r.camera = sceneCameraView(scene, 0, 1.0f);
+    r.tracer = std::make_unique<PathTracer>(*r.scene, r.camera, size, size, std::move(settings));
+    r.tracer->addSamples(spp);
+    return r;
+}
+
+// A white Lambert-ish floor (glTF dielectric: Lambert ρ plus a 4 % GGX lobe) at y = 0 under
+// one light, seen from above at an angle.
+Scene floorUnder(const Light& light, const glm::vec3& lightPosition, const glm::vec3& lightDirection, float albedo) {
+    Scene scene;
+    const int white = addMaterial(scene, glm::vec3(albedo), 1.0f, 0.0f, "white");
+    // 60 m: the closed forms are for an infinite plane; the camera must not see past its edge.
+    addMeshNode(scene, makePlaneMesh("floor", 60.0f, white), glm::vec3(0.0f));
+    addLightNode(scene, light, lightPosition, lightDirection);
+    addCamera(scene, glm::vec3(0.0f, 3.0f, 2.5f), glm::vec3(0.0f, 0.0f, 0.0f));
+    scene.updateWorldTransforms();
+    return scene;
+}
+
+// The direct diffuse radiance of the floor (y = 0) over pixel (x, y)'s footprint, from the closed
+// form ρ/π · E with E from UNITS.md, on an 8 × 8 grid inside the pixel: the reference's samples
+// are spread over the pixel, not at its centre. `mean` is what the pixel converges to, `spread`
+// the standard deviation of one sample (pixel jitter is the only noise of direct light from a
+// punctual light), so spread/√spp is the standard error of the reference's pixel.
+struct PixelTruth {
+    float mean = 0.0f, spread = 0.0f;
+};
+
+PixelTruth closedFormPixel(const CameraView& camera, int size, int px, int py, float albedo,
+                           const std::function<float(const glm::vec3&)>& irradiance) {
+    const glm::mat4 inverse = glm::inverse(camera.viewProjection());
+    double sum = 0.0, squares = 0.0;
+    for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i) {
+            const float ndcX = (static_cast<float>(px) + (static_cast<float>(i) + 0.5f) / 8.0f) / static_cast<float>(size) * 2.0f - 1.0f;
+            const float ndcY = (static_cast<float>(py) + (static_cast<float>(j) + 0.5f) / 8.0f) / static_cast<float>(size) * 2.0f - 1.0f;
+            const glm::vec4 a = inverse * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
+            const glm::vec4 b = inverse * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+            const glm::vec3 o = glm::vec3(a) / a.w, d = glm::vec3(b) / b.w - o;
+            const glm::vec3 p = o - d * (o.y / d.y);
+            const double value = albedo / kPi * irradiance(p);
+            sum += value;
+            squares += value * value;
+        }
+    const double mean = sum / 64.0;
+    return {static_cast<float>(mean), static_cast<float>(std::sqrt(std::max(0.0, squares / 64.0 - mean * mean)))};
+}
+
+// Pixels spread over the image where the floor is seen (the camera looks down at it: every pixel).
+const glm::ivec2 kProbePixels[] = {{16, 16}, {4, 5}, {28, 6}, {6, 27}, {27, 26}, {16, 3}, {16, 29}};
+
+TEST(ReferenceClosedForm, LambertFloorUnderPointLight) {
+    constexpr float kAlbedo = 0.8f, kIntensity = 10.0f;  // candela
+    const glm::vec3 lightPosition(0.3f, 1.5f, -0.2f);
+    Light point;
+    point.type = LightType::Point;
+    point.intensity = kIntensity;
+    const Scene scene = floorUnder(point, lightPosition, glm::vec3(0, -1, 0), kAlbedo);
+    ReferenceSettings settings;
+    settings.bounces = 0;
+    const Render r = render(scene, 32, 256, settings);
+    for (const glm::ivec2 p : kProbePixels) {
+        const float expected = closedFormPixel(r.camera, 32, p.x, p.y, kAlbedo, [&](const glm::vec3& x) {
+            const glm::vec3 d = lightPosition - x;
+            const float distance = glm::length(d);
+            return kIntensity / (distance * distance) * (d.y / distance);  // E = I/d² · cos θ
+        }).mean;
+        const glm::vec3 got = r.tracer->image().mean(Term::DirectDiffuse, static_cast<std::size_t>(p.y * 32 + p.x));
+        // 1 %: the bound; the pixel-jitter noise at 256 spp is below 0.2 % here.
+        EXPECT_NEAR(got.r, expected, 0.01f * expected) << "pixel " << p.x << ", " << p.y;
+        EXPECT_FLOAT_EQ(got.r, got.b) << "white light on a white floor stays grey";
+    }
+}
+
+TEST(ReferenceClosedForm, SpotConeAndRangeWindow) {
+    constexpr float kAlbedo = 0.6f, kIntensity = 25.0f, kRange = 3.0f;
+    constexpr float kInner = 0.3f, kOuter = 0.7f;  // radians
+    const glm::vec3 lightPosition(0.0f, 1.2f, 0.0f);
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.intensity = kIntensity;
+    spot.range = kRange;
+    spot.innerConeAngle = kInner;
+    spot.outerConeAngle = kOuter;
+    const Scene scene = floorUnder(spot, lightPosition, glm::vec3(0, -1, 0), kAlbedo);
+    ReferenceSettings settings;
+    settings.bounces = 0;
+    const Render r = render(scene, 32, 256, settings);
+    int inCone = 0, outside = 0;
+    for (int y = 2; y < 32; y += 3)
+        for (int x = 2; x < 32; x += 3) {
+            const auto irradiance = [&](const glm::vec3& p) {
+                const glm::vec3 d = lightPosition - p;
+                const float distance = glm::length(d);
+                // UNITS.md, written out again: window, cone falloff between inner and outer.
+                const float ratio = distance / kRange;
+                const float window = std::clamp(1.0f - std::pow(ratio, 4.0f), 0.0f, 1.0f);
+                const float cosAngle = d.y / distance;  // cosine of the angle to the spot axis (straight down)
+                const float t = std::clamp((cosAngle - std::cos(kOuter)) / (std::cos(kInner) - std::cos(kOuter)), 0.0f, 1.0f);
+                return kIntensity * window / (distance * distance) * t * t * (d.y / distance);
+            };
+            const PixelTruth truth = closedFormPixel(r.camera, 32, x, y, kAlbedo, irradiance);
+            const float expected = truth.mean;
+            const float got = r.tracer->image().mean(Term::DirectDiffuse, static_cast<std::size_t>(y * 32 + x)).g;
+            // 1 % (the bound), or 4 standard errors of the pixel's jitter noise where the
+            // cone's edge crosses the pixel and the radiance inside it ranges from 0 to full.
+            const float noise = 4.0f * truth.spread / std::sqrt(256.0f);
+            EXPECT_NEAR(got, expected, std::max({0.01f * expected, noise, 1e-4f})) << "pixel " << x << ", " << y;
+            (expected > 0.05f ? inCone : outside) += 1;
+        }
+    EXPECT_GT(inCone, 10);
+    EXPECT_GT(outside, 10) << "the probes must also see the dark outside of the cone";
+}
+
+// ---- GGX directional albedo ------------------------------------------------------------------
+
+TEST(ReferenceBrdf, GgxDirectionalAlbedoMatchesTheConeTracersTable) {
+    // The reference integrates the specular lobe by its own visible-normal sampling and pdf; the
+    // cone tracer reads E from a table built with another estimator. Both must give ∫ f_s cos.
+    for (const float roughness : {0.1f, 0.3f, 0.5f, 0.8f, 1.0f})
+        for (const float NdotV : {0.1f, 0.4f, 0.7f, 1.0f}) {
+            const glm::vec3 n(0, 0, 1), v(std::sqrt(1.0f - NdotV * NdotV), 0.0f, NdotV);
+            const float alpha = alphaFromRoughness(roughness);
+            const glm::vec3 f0(0.04f, 0.5f, 1.0f);
+            glm::dvec3 sum(0.0);
+            constexpr int kSide = 256;  // stratified 256² samples
+            for (int j = 0; j < kSide; ++j)
+                for (int i = 0; i < kSide; ++i) {
+                    const glm::vec2 u((i + 0.5f) / kSide, (j + 0.5f) / kSide);
+                    const glm::vec3 h = sampleGgxVisibleNormal(v, alpha, u);
+                    const glm::vec3 l = 2.0f * glm::dot(v, h) * h - v;
+                    if (l.z <= 0.0f) continue;
+                    const float pdf = ggxVisibleNormalReflectionPdf(n, v, l, alpha);
+                    if (pdf > 0.0f) sum += glm::dvec3(specularBrdf(n, v, l, f0, alpha) * l.z / pdf);
+                }
+            const glm::vec3 albedo(sum / double(kSide * kSide));
+            for (int c = 0; c < 3; ++c) {
+                const float expected = specularAlbedoTable(f0[c], NdotV, roughness);
+                // 1 % + 0.002: both estimators are deterministic; the table's own error is < 0.5 %
+                // (specular_albedo.frag.glsl) and this one's at 65536 stratified samples less.
+                EXPECT_NEAR(albedo[c], expected, 0.01f * expected + 0.002f)
+                    << "roughness " << roughness << ", n·v " << NdotV << ", F0 " << f0[c];
+            }
+        }
+}
+
+// ---- Furnaces ----------------------------------------------------------------------------------
+
+// A convex box with emission Le under a uniform white sky of radiance Ls, all bounces: a convex
+// object never sees itself, so every visible point sends L = Le + (ρ + E_s(n·v))·Ls exactly,
+// where E_s is the GGX lobe's directional albedo (the table above).
+TEST(ReferenceFurnace, ConvexBoxUnderUniformSky) {
+    constexpr float kAlbedo = 0.5f, kRoughness = 0.6f, kEmission = 0.3f, kSky = 1.0f;
+    Scene scene;
+    const int material = addMaterial(scene, glm::vec3(kAlbedo), kRoughness, 0.0f, "grey");
+    scene.materials[static_cast<std::size_t>(material)].emissiveFactor = glm::vec3(kEmission);
+    addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), material), glm::vec3(0.0f));
+    addCamera(scene, glm::vec3(1.6f, 1.3f, 1.9f), glm::vec3(0.0f));
+    scene.updateWorldTransforms();
+    ReferenceSettings settings;
+    settings.bounces = kAllBounces;
+    settings.environment = [](const glm::vec3&) { return glm::vec3(kSky); };
+    constexpr int kSize = 32;
+    const Render r = render(scene, kSize, 256, settings);
+    const std::vector<FirstHit> hits = traceFirstHits(*r.scene, r.camera, kSize, kSize);
+    const std::vector<float> rgb = r.tracer->image().viewRgb(View::Final, RenderSettings{});
+    // Compare the means over the box's pixels (excluding its silhouette, whose pixels mix in sky).
+    double got = 0.0, expected = 0.0;
+    int count = 0;
+    const glm::vec3 eye = r.camera.position;
+    for (int y = 1; y + 1 < kSize; ++y)
+        for (int x = 1; x + 1 < kSize; ++x) {
+            bool inside = true;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) inside &= hits[static_cast<std::size_t>((y + dy) * kSize + x + dx)].node >= 0;
+            if (!inside) continue;
+            const FirstHit& h = hits[static_cast<std::size_t>(y * kSize + x)];
+            const float NdotV = glm::dot(h.normal, glm::normalize(eye - h.position));
+            expected += kEmission + (kAlbedo + specularAlbedoTable(0.04f, NdotV, kRoughness)) * kSky;
+            got += rgb[static_cast<std::size_t>(3 * (y * kSize + x))];
+            ++count;
+        }
+    ASSERT_GT(count, 100);
+    // 1 %: the noise of the mean over ~400 pixels × 256 samples is about 0.1 %.
+    EXPECT_NEAR(got / count, expected / count, 0.01 * expected / count);
+}
+
+// A closed white room whose walls all emit Le, all bounces. With a Lambertian ρ the answer
+// would be Le / (1 − ρ); the glTF dielectric adds a GGX lobe of directional albedo E_s(n·v), so
+// the radiance lies between Le / (1 − ρ − min E_s) and Le / (1 − ρ − max E_s).
+TEST(ReferenceFurnace, ClosedEmissiveRoomSumsAllBounces) {
+    constexpr float kAlbedo = 0.5f, kRoughness = 1.0f, kEmission = 1.0f;
+    Scene scene;
+    const int material = addMaterial(scene, glm::vec3(kAlbedo), kRoughness, 0.0f, "room");
+    scene.materials[static_cast<std::size_t>(material)].emissiveFactor = glm::vec3(kEmission);
+    addMeshNode(scene, makeBoxMesh("room", glm::vec3(4.0f, 3.0f, 5.0f), material), glm::vec3(0.0f));
+    addCamera(scene, glm::vec3(0.5f, 0.2f, 1.5f), glm::vec3(-1.0f, -0.3f, -2.0f));
+    scene.updateWorldTransforms();
+    float minSpecular = 1.0f, maxSpecular = 0.0f;
+    for (float NdotV = 0.02f; NdotV <= 1.0f; NdotV += 0.07f) {
+        const float e = specularAlbedoTable(0.04f, NdotV, kRoughness);
+        minSpecular = std::min(minSpecular, e);
+        maxSpecular = std::max(maxSpecular, e);
+    }
+    const float low = kEmission / (1.0f - kAlbedo - minSpecular), high = kEmission / (1.0f - kAlbedo - maxSpecular);
+    ReferenceSettings settings;
+    settings.bounces = kAllBounces;
+    const Render r = render(scene, 16, 64, settings);
+    const std::vector<float> rgb = r.tracer->image().viewRgb(View::Final, RenderSettings{});
+    const double mean = std::accumulate(rgb.begin(), rgb.end(), 0.0) / static_cast<double>(rgb.size());
+    // 1 % beyond the bracket for the noise of 16² × 64 paths of ~10 bounces each.
+    EXPECT_GT(mean, 0.99 * low);
+    EXPECT_LT(mean, 1.01 * high);
+    // One bounce falls well short: the series is cut after (ρ + E_s)¹.
+    settings.bounces = 1;
+    const Render one = render(scene, 16, 64, settings);
+    const std::vector<float> rgbOne = one.tracer->image().viewRgb(View::Final, RenderSettings{});
+    const double meanOne = std::accumulate(rgbOne.begin(), rgbOne.end(), 0.0) / static_cast<double>(rgbOne.size());
+    const float q = kAlbedo + 0.5f * (minSpecular + maxSpecular);
+    EXPECT_NEAR(meanOne, kEmission * (1.0f + q + q * q), 0.03 * kEmission * (1.0f + q + q * q));
+}
+
+// ---- Convergence and determinism ---------------------------------------------------------------
+
+Scene cornellBox() {
+    QuietLog log;
+    Scene scene = loadGltf(std::filesystem::path(LIT_SOURCE_DIR) / "assets" / "cornell_box.gltf", log);
+    scene.updateWorldTransforms();
+    return scene;
+}
+
+double rmse(const std::vector<float>& a, const std::vector<float>& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
+    return std::sqrt(sum / static_cast<double>(a.size()));
+}
+
+TEST(ReferenceConvergence, ErrorFallsAsOneOverSquareRootOfSamples) {
+    const Scene scene = cornellBox();
+    QuietLog log;
+    const ReferenceScene rs(scene, log);
+    constexpr int kSize = 32;
+    const CameraView camera = sceneCameraView(scene, 0, 1.0f);
+    ReferenceSettings truthSettings;
+    truthSettings.seed = 1000;  // independent of the images under test
+    PathTracer truth(rs, camera, kSize, kSize, truthSettings);
+    truth.addSamples(16 * 32);  // 16 × the largest count below
+    const std::vector<float> expected = truth.image().viewRgb(View::Final, RenderSettings{});
+
+    PathTracer tracer(rs, camera, kSize, kSize, ReferenceSettings{});
+    std::vector<double> errors;
+    for (const int spp : {4, 8, 16, 32}) {
+        tracer.addSamples(spp - tracer.samplesDone());
+        errors.push_back(rmse(tracer.image().viewRgb(View::Final, RenderSettings{}), expected));
+    }
+    // Each doubling divides the error by √2 (1.414); the truth's own noise (1/16 of the variance at
+    // 32 spp) lowers the last ratio to ≈ 1.39. 1.2-1.7 leaves room for the noise of the errors.
+    for (std::size_t i = 0; i + 1 < errors.size(); ++i) {
+        const double ratio = errors[i] / errors[i + 1];
+        EXPECT_GT(ratio, 1.2) << "from " << (4 << i) << " to " << (8 << i) << " spp";
+        EXPECT_LT(ratio, 1.7) << "from " << (4 << i) << " to " << (8 << i) << " spp";
+    }
+    const double slope = std::log(errors.back() / errors.front()) / std::log(8.0);
+    EXPECT_NEAR(slope, -0.5, 0.08) << "log-log slope of the error over 4..32 spp";
+}
+
+TEST(ReferenceDeterminism, SameSeedSameImageWhateverTheBatching) {
+    const Scene scene = cornellBox();
+    QuietLog log;
+    const ReferenceScene rs(scene, log);
+    const CameraView camera = sceneCameraView(scene, 0, 1.0f);
+    ReferenceSettings settings;
+    settings.seed = 7;
+    settings.bounces = 2;
+    PathTracer once(rs, camera, 24, 24, settings);
+    once.addSamples(6);
+    PathTracer batched(rs, camera, 24, 24, settings);
+    batched.addSamples(2);
+    batched.addSamples(4);
+    settings.seed = 8;
+    PathTracer otherSeed(rs, camera, 24, 24, settings);
+    otherSeed.addSamples(6);
+    int differences = 0;
+    for (int t = 0; t < kTermCount; ++t)
+        for (std::size_t p = 0; p < once.image().pixelCount(); ++p) {
+            ASSERT_EQ(once.image().sums[t][p], batched.image().sums[t][p]) << "term " << t << ", pixel " << p;
+            differences += once.image().sums[t][p] != otherSeed.image().sums[t][p];
+        }
+    EXPECT_GT(differences, 500) << "another seed must draw other paths";
+}
+
+TEST(ReferenceTerms, FinalIsTheSumOfTheTermsAndBouncesAddLight) {
+    const Scene scene = cornellBox();
+    ReferenceSettings settings;
+    settings.bounces = 0;
+    const Render direct = render(scene, 16, 8, settings);
+    settings.bounces = 1;
+    const Render one = render(scene, 16, 8, settings);
+    const ReferenceImage& image = one.tracer->image();
+    const std::vector<float> final = image.viewRgb(View::Final, RenderSettings{});
+    double indirect = 0.0, indirectWithoutGi = 0.0;
+    for (std::size_t p = 0; p < image.pixelCount(); ++p) {
+        glm::vec3 sum(0.0f);
+        for (int t = 0; t < kTermCount; ++t) sum += image.mean(static_cast<Term>(t), p);
+        EXPECT_NEAR(final[3 * p], sum.r, 1e-5f * (1.0f + sum.r));
+        indirect += image.mean(Term::IndirectDiffuse, p).r + image.mean(Term::IndirectSpecular, p).r;
+        indirectWithoutGi += direct.tracer->image().mean(Term::IndirectDiffuse, p).r;
+        // Same seed, same first hit and direct light: bounces change only the indirect terms.
+        EXPECT_EQ(image.mean(Term::DirectDiffuse, p), direct.tracer->image().mean(Term::DirectDiffuse, p));
+    }
+    EXPECT_EQ(indirectWithoutGi, 0.0);
+    EXPECT_GT(indirect, 0.0);
+    RenderSettings noSpecular;
+    noSpecular.directSpecular = noSpecular.indirectSpecular = false;
+    const std::vector<float> diffuseOnly = image.viewRgb(View::Final, noSpecular);
+    EXPECT_NEAR(diffuseOnly[3 * 100], image.mean(Term::DirectDiffuse, 100).r + image.mean(Term::IndirectDiffuse, 100).r, 1e-5f);
+    EXPECT_THROW(image.viewRgb(View::Albedo, RenderSettings{}), std::invalid_argument);
+}
+
+TEST(ReferenceDifference, FalseColourShowsSignedRelativeError) {
+    // Pixels: equal, rasterizer twice as bright, half as bright, both black (background).
+    const std::vector<float> truth = {1, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0};
+    const std::vector<float> test = {1, 1, 1, 2, 2, 2, 0.5f, 0.5f, 0.5f, 0, 0, 0};
+    const std::vector<float> c = relativeErrorColours(test, truth, 1.0f);
+    ASSERT_EQ(c.size(), 12u);
+    EXPECT_EQ(glm::vec3(c[0], c[1], c[2]), glm::vec3(1.0f)) << "no error: white";
+    EXPECT_EQ(glm::vec3(c[3], c[4], c[5]), differenceRampColour(1.0f)) << "+100 %: the red end";
+    EXPECT_EQ(glm::vec3(c[6], c[7], c[8]), differenceRampColour(-0.5f)) << "−50 %: half way to blue";
+    EXPECT_EQ(glm::vec3(c[9], c[10], c[11]), glm::vec3(0.0f)) << "background stays black";
+    EXPECT_GT(differenceRampColour(1.0f).r, differenceRampColour(1.0f).b);
+    EXPECT_GT(differenceRampColour(-1.0f).b, differenceRampColour(-1.0f).r);
+}
+
+TEST(ReferenceProgressive, AccumulatesWhileStillAndRestartsOnChange) {
+    Scene scene = cornellBox();
+    const CameraView camera = sceneCameraView(scene, 0, 1.0f);
+    ProgressiveReference progressive(1000);
+    ReferenceSettings settings;
+    progressive.update(scene, camera, 16, 16, settings);
+    const auto waitFor = [&](int samples) {
+        for (int i = 0; i < 2000 && progressive.status().samplesPerPixel < samples; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        return progressive.status();
+    };
+    const ProgressiveStatus first = waitFor(8);
+    EXPECT_GE(first.samplesPerPixel, 8);
+    EXPECT_GT(first.samplesPerSecond, 0.0);
+    EXPECT_EQ(first.restarts, 1u);
+    // The same state again: nothing restarts, samples keep accumulating.
+    progressive.update(scene, camera, 16, 16, settings);
+    EXPECT_EQ(progressive.status().restarts, 1u);
+    std::vector<float> rgb;
+    int width = 0, height = 0;
+    ASSERT_TRUE(progressive.latest(View::Final, RenderSettings{}, rgb, width, height));
+    EXPECT_EQ(width, 16);
+    EXPECT_GT(std::accumulate(rgb.begin(), rgb.end(), 0.0), 0.0);
+    // An edit (a light moved: its revision bumps) starts over.
+    scene.nodes[static_cast<std::size_t>(scene.nodeOfLight(0))].translation.y = 1.5f;
+    ++scene.lightRevision;
+    progressive.update(scene, camera, 16, 16, settings);
+    for (int i = 0; i < 2000 && progressive.status().restarts < 2; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    EXPECT_EQ(progressive.status().restarts, 2u);
+    EXPECT_GE(waitFor(2).samplesPerPixel, 2);
+    progressive.stop();
+}
+
+}  // namespace
+}  // namespace lit::reference

@@ -1,0 +1,405 @@
+// lit-gi-accuracy — the GI accuracy benchmark. Renders a suite of scenes with Lit's voxel cone
+// tracing at several voxel resolutions and with the reference path tracer (one bounce: the same
+// light paths as the VCT), and writes markdown tables of how far the cone-traced light is from the
+// truth (docs/GI.md, "Accuracy against the reference"; tools/gi-accuracy.sh runs it).
+//
+//   lit-gi-accuracy [--voxels 64,128,256] [--spp 256] [--size 128] [--scenes a,b,...]
+//                   [--shared DIR] [--out FILE.md]
+//
+// Metrics (luminance, per scene and resolution; regions from reference/AccuracyRegions.h):
+//   indirect-only VCT/ref   mean indirect radiance (L_ID + L_IS) of the VCT over the pixels lit only
+//                           indirectly, divided by the reference's (1 = right; its distance from 1 is
+//                           the mean relative error of the indirect terms there)
+//   final RMSE              RMSE of the final image over all surface pixels after scaling the VCT so
+//                           that its mean over directly lit pixels matches the reference's, relative
+//                           to the reference's mean; in brackets the reference's own noise on the
+//                           same scale (from a second reference image with another seed)
+//   indirect energy         Σ VCT indirect / Σ reference indirect over all pixels
+// Exit status: 0 success, 1 failure, 2 bad command line.
+
+#include "Log.h"
+#include "Renderer.h"
+#include "RenderSettings.h"
+#include "context/HeadlessContext.h"
+#include "gl/Capabilities.h"
+#include "reference/AccuracyRegions.h"
+#include "reference/PathTracer.h"
+#include "reference/ReferenceScene.h"
+#include "scene/CameraView.h"
+#include "scene/GltfLoader.h"
+#include "scene/SceneBuilder.h"
+#include "scene/Scene.h"
+#include "io/AtomicFile.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+using namespace lit;
+using namespace lit::reference;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double luminance(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+struct SuiteScene {
+    std::string name;
+    fs::path file;
+    std::string what;          // one line for the table
+    bool sealed = false;       // report inside radiance as a fraction of the sunlit ground's
+    bool framedInside = false;  // no camera in the file: look along the long axis from inside
+};
+
+struct Args {
+    std::vector<int> voxels{64, 128, 256};
+    int spp = 256;
+    int size = 128;
+    std::vector<std::string> only;
+    fs::path shared;
+    fs::path out;
+};
+
+std::vector<std::string> split(const std::string& text) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ',');)
+        if (!part.empty()) parts.push_back(part);
+    return parts;
+}
+
+Args parseArgs(int argc, char** argv) {
+    Args args;
+    args.shared = fs::path(LIT_SOURCE_DIR) / ".." / "shared" / "scenes";
+    for (int i = 1; i < argc; ++i) {
+        const std::string flag = argv[i];
+        if (i + 1 >= argc) throw std::invalid_argument("missing value for " + flag);
+        const std::string value = argv[++i];
+        if (flag == "--voxels") {
+            args.voxels.clear();
+            for (const std::string& v : split(value)) {
+                const int n = std::stoi(v);
+                if (n < 64 || n > 512 || (n & (n - 1)) != 0) throw std::invalid_argument("--voxels: 64, 128, 256 or 512, got " + v);
+                args.voxels.push_back(n);
+            }
+        } else if (flag == "--spp") {
+            args.spp = std::stoi(value);
+        } else if (flag == "--size") {
+            args.size = std::stoi(value);
+        } else if (flag == "--scenes") {
+            args.only = split(value);
+        } else if (flag == "--shared") {
+            args.shared = value;
+        } else if (flag == "--out") {
+            args.out = value;
+        } else {
+            throw std::invalid_argument("unknown option " + flag);
+        }
+    }
+    if (args.spp < 1 || args.size < 16 || args.voxels.empty()) throw std::invalid_argument("bad --spp, --size or --voxels");
+    return args;
+}
+
+std::vector<SuiteScene> suite(const Args& args) {
+    const fs::path assets = fs::path(LIT_SOURCE_DIR) / "assets";
+    std::vector<SuiteScene> scenes = {
+        {"cornell_box", assets / "cornell_box.gltf", "Cornell box, 20 cd spot pointing down (ceiling lit only indirectly)"},
+        {"sealed_room", assets / "gi" / "sealed_room.gltf", "closed room (0.2 m walls) on a ground under a 50 lx sun", true},
+        {"thin_walls", assets / "gi" / "thin_walls.gltf", "Cornell room with walls 1 voxel thick at 128³, 20 lx sun on the roof"},
+        {"glossy_floor", assets / "gi" / "glossy_floor.gltf", "Cornell room with a glossy metal floor (roughness 0.2)"},
+        {"sponza", args.shared / "sponza" / "Sponza.gltf", "Sponza (textured, ../shared/scenes), default 3 lx sun", false, true},
+    };
+    if (args.only.empty()) return scenes;
+    std::vector<SuiteScene> chosen;
+    for (const SuiteScene& s : scenes)
+        if (std::find(args.only.begin(), args.only.end(), s.name) != args.only.end()) chosen.push_back(s);
+    return chosen;
+}
+
+// Radiance of a Lambertian ground (material "ground") under the first directional light:
+// ρ/π · E · cos θ — the outside brightness a sealed room's inside is compared with.
+double outsideRadiance(const Scene& scene) {
+    double albedo = 0.0;
+    for (const Material& m : scene.materials)
+        if (m.name == "ground") albedo = luminance(glm::dvec3(glm::vec3(m.baseColorFactor)));
+    for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+        const int l = scene.nodes[n].light;
+        if (l < 0 || scene.lights[static_cast<std::size_t>(l)].type != LightType::Directional) continue;
+        const Light& light = scene.lights[static_cast<std::size_t>(l)];
+        const glm::vec3 direction = glm::normalize(glm::vec3(scene.nodes[n].world * glm::vec4(0, 0, -1, 0)));
+        return albedo / 3.14159265358979323846 * light.intensity * luminance(glm::dvec3(light.color)) * std::max(0.0f, -direction.y);
+    }
+    return 0.0;
+}
+
+std::vector<float> addImages(const std::vector<float>& a, const std::vector<float>& b) {
+    std::vector<float> sum(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) sum[i] = a[i] + b[i];
+    return sum;
+}
+
+double maskedLuminance(const std::vector<float>& rgb, const PixelMask& mask) { return luminance(maskedMean(rgb, mask)); }
+
+double sumLuminance(const std::vector<float>& rgb) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < rgb.size(); i += 3) sum += luminance(glm::dvec3(rgb[i], rgb[i + 1], rgb[i + 2]));
+    return sum;
+}
+
+struct Images {
+    std::vector<float> indirectDiffuse, indirectSpecular, final;
+    std::vector<float> indirect() const { return addImages(indirectDiffuse, indirectSpecular); }
+};
+
+struct VctRun {
+    int voxels = 0;
+    Images images;
+    double firstFrameSeconds = 0.0;   // with voxelization, injection and mipmaps
+    double steadyFrameSeconds = 0.0;  // a frame with a clean volume
+};
+
+std::string format(const char* fmt, double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, fmt, value);
+    return buffer;
+}
+
+std::string ratioCell(double vct, double truth) { return truth > 0.0 ? format("%.2f", vct / truth) : "–"; }
+
+struct SceneReport {
+    std::string summaryRows, regionRows, bleedingRows, leakRows;
+};
+
+SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& renderer, Log& log) {
+    SceneReport report;
+    Scene scene = loadGltf(entry.file, log);
+    addDefaultCamera(scene, log);  // a scene without lights gets the renderer's default sun (both renderers)
+    scene.updateWorldTransforms();
+    const int size = args.size;
+    CameraView camera = sceneCameraView(scene, entry.framedInside ? -1 : 0, 1.0f);
+    if (entry.framedInside) {
+        // From the middle of the open courtyard, a fifth of the height up, looking along the longest
+        // horizontal axis at the far end: walls, arcades and the sunlit floor in view.
+        const Aabb b = scene.worldBounds();
+        const glm::vec3 e = b.max - b.min, c = b.center();
+        const bool alongX = e.x >= e.z;
+        const glm::vec3 axis = alongX ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
+        const float length = alongX ? e.x : e.z;
+        const glm::vec3 eye = glm::vec3(c.x, b.min.y + 0.2f * e.y, c.z);
+        const glm::vec3 target = eye + axis * (0.4f * length) + glm::vec3(0.0f, 0.05f * e.y, 0.0f);
+        Camera cam;
+        cam.name = "accuracy";
+        cam.yfov = 1.0f;
+        cam.znear = 0.05f;
+        addCameraNode(scene, cam, eye, target);
+        scene.updateWorldTransforms();
+        camera = sceneCameraView(scene, static_cast<int>(scene.cameras.size()) - 1, 1.0f);
+    }
+
+    // The reference: one bounce, the VCT's light paths.
+    const Clock::time_point referenceStart = Clock::now();
+    const ReferenceScene referenceScene(scene, log);
+    ReferenceSettings referenceSettings;
+    referenceSettings.bounces = 1;
+    PathTracer tracer(referenceScene, camera, size, size, referenceSettings);
+    tracer.addSamples(args.spp);
+    const double referenceSeconds = secondsSince(referenceStart);
+    const double raysPerSecond = static_cast<double>(tracer.raysTraced()) / referenceSeconds;
+    RenderSettings viewSettings;
+    Images truth;
+    truth.indirectDiffuse = tracer.image().viewRgb(View::IndirectDiffuse, viewSettings);
+    truth.indirectSpecular = tracer.image().viewRgb(View::IndirectSpecular, viewSettings);
+    truth.final = tracer.image().viewRgb(View::Final, viewSettings);
+    std::fprintf(stderr, "%s: reference %d spp in %.1f s (%.2f Mrays/s)\n", entry.name.c_str(), args.spp, referenceSeconds,
+                 raysPerSecond * 1e-6);
+
+    // The reference's own noise: a second image with another seed; the RMSE between two
+    // independent images is √2 × the RMSE of one against the converged truth.
+    referenceSettings.seed = 1;
+    PathTracer second(referenceScene, camera, size, size, referenceSettings);
+    second.addSamples(args.spp);
+    const std::vector<float> secondFinal = second.image().viewRgb(View::Final, viewSettings);
+
+    const std::vector<FirstHit> hits = traceFirstHits(referenceScene, camera, size, size);
+    const PixelMask surfaces = surfaceMask(hits);
+    const PixelMask indirectOnly = erodeEdges(indirectOnlyMask(hits), hits, size, size, 1);
+    const PixelMask directlyLit = directlyLitMask(hits);
+
+    // The VCT at each resolution: three views of the same frame state.
+    renderer.setScene(scene);
+    std::vector<VctRun> runs;
+    for (const int voxels : args.voxels) {
+        RenderSettings settings;
+        settings.width = size;
+        settings.height = size;
+        settings.gi = true;
+        settings.voxelResolution = voxels;
+        VctRun run;
+        run.voxels = voxels;
+        const auto frame = [&](View view) {
+            settings.view = view;
+            const Clock::time_point start = Clock::now();
+            renderer.render(scene, camera, settings);
+            glFinish();
+            const double seconds = secondsSince(start);
+            return std::pair{renderer.readHdrRgb(), seconds};
+        };
+        auto [id, first] = frame(View::IndirectDiffuse);
+        run.firstFrameSeconds = first;
+        run.images.indirectDiffuse = std::move(id);
+        auto [is, steady] = frame(View::IndirectSpecular);
+        run.steadyFrameSeconds = steady;
+        run.images.indirectSpecular = std::move(is);
+        run.images.final = frame(View::Final).first;
+        std::fprintf(stderr, "%s: VCT %d³ first frame %.2f s, frame %.2f s\n", entry.name.c_str(), voxels, first, steady);
+        runs.push_back(std::move(run));
+    }
+
+    const std::vector<float> truthIndirect = truth.indirect();
+    const double truthIndirectOnly = maskedLuminance(truthIndirect, indirectOnly);
+    const double truthDirectFinal = maskedLuminance(truth.final, directlyLit);
+    const double truthSurfaceMean = maskedLuminance(truth.final, surfaces);
+    const double truthEnergy = sumLuminance(truthIndirect);
+    const std::size_t indirectPixels = static_cast<std::size_t>(std::count(indirectOnly.begin(), indirectOnly.end(), true));
+    const auto finalRmse = [&](const std::vector<float>& image, double scale) {
+        double squares = 0.0;
+        std::size_t count = 0;
+        for (std::size_t p = 0; p < surfaces.size(); ++p) {
+            if (!surfaces[p]) continue;
+            const double v = luminance(glm::dvec3(image[3 * p], image[3 * p + 1], image[3 * p + 2]));
+            const double t = luminance(glm::dvec3(truth.final[3 * p], truth.final[3 * p + 1], truth.final[3 * p + 2]));
+            squares += (scale * v - t) * (scale * v - t);
+            ++count;
+        }
+        return count ? std::sqrt(squares / static_cast<double>(count)) : 0.0;
+    };
+    const double referenceNoise = finalRmse(secondFinal, 1.0) / std::sqrt(2.0);
+
+    for (const VctRun& run : runs) {
+        const std::vector<float> indirect = run.images.indirect();
+        const double vctIndirectOnly = maskedLuminance(indirect, indirectOnly);
+        // Exposure match on directly lit pixels, then RMSE over every surface pixel.
+        const double vctDirect = maskedLuminance(run.images.final, directlyLit);
+        const double k = vctDirect > 0.0 ? truthDirectFinal / vctDirect : 1.0;
+        const double rmse = finalRmse(run.images.final, k);
+        report.summaryRows += "| " + entry.name + " | " + std::to_string(run.voxels) + "³ | " +
+                              (indirectPixels ? ratioCell(vctIndirectOnly, truthIndirectOnly) + " (" + std::to_string(indirectPixels) + " px)"
+                                              : std::string("– (none)")) +
+                              " | " + (truthSurfaceMean > 0.0 ? format("%.1f %%", 100.0 * rmse / truthSurfaceMean) + " (" +
+                                                                    format("%.1f %%", 100.0 * referenceNoise / truthSurfaceMean) + ")"
+                                                              : "–") +
+                              " | " +
+                              ratioCell(sumLuminance(indirect), truthEnergy) + " | " + format("%.2f", run.firstFrameSeconds) + " | " +
+                              format("%.2f", run.steadyFrameSeconds) + " | " + format("%.1f", referenceSeconds) + " (" +
+                              std::to_string(args.spp) + " spp, " + format("%.2f", raysPerSecond * 1e-6) + " Mrays/s) |\n";
+    }
+
+    // Named regions (scenes with the Cornell room's node names).
+    for (const NamedRegion& region : cornellBoxRegions(scene, hits, size, size)) {
+        const std::size_t pixels = region.pixels();
+        if (pixels == 0) continue;
+        const double t = maskedLuminance(truthIndirect, region.mask);
+        std::string row = "| " + entry.name + " | " + region.name + " | " + std::to_string(pixels) + " | " + format("%.4f", t);
+        for (const VctRun& run : runs) row += " | " + ratioCell(maskedLuminance(run.images.indirect(), region.mask), t);
+        report.regionRows += row + " |\n";
+        // Colour bleeding onto the shadowed floor: R/G by the red wall, G/R by the green wall.
+        const bool red = region.name == "shadowed floor by red wall", green = region.name == "shadowed floor by green wall";
+        if (!red && !green) continue;
+        const auto bleed = [&](const std::vector<float>& rgb) {
+            const glm::dvec3 m = maskedMean(rgb, region.mask);
+            const double num = red ? m.r : m.g, den = red ? m.g : m.r;
+            return den > 0.0 ? format("%.2f", num / den) : std::string("–");
+        };
+        std::string bleedRow = "| " + entry.name + " | " + region.name + " | " + (red ? "R/G" : "G/R") + " | " + bleed(truth.indirectDiffuse);
+        for (const VctRun& run : runs) bleedRow += " | " + bleed(run.images.indirectDiffuse);
+        report.bleedingRows += bleedRow + " |\n";
+    }
+
+    if (entry.sealed) {
+        const double outside = outsideRadiance(scene);
+        std::string row = "| " + entry.name + " | " + format("%.3f", outside) + " | " +
+                          format("%.2e", maskedLuminance(truth.final, surfaces) / outside);
+        for (const VctRun& run : runs) row += " | " + format("%.2e", maskedLuminance(run.images.final, surfaces) / outside);
+        report.leakRows += row + " |\n";
+    }
+    return report;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Args args;
+    try {
+        args = parseArgs(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "lit-gi-accuracy: %s\n", e.what());
+        return 2;
+    }
+    try {
+        Log log;
+        log.setSink([](const LogMessage& m) {
+            if (m.level != LogLevel::Info) std::fprintf(stderr, "%s\n", m.text.c_str());
+        });
+        HeadlessContext context;
+        gl::requireCapabilities();
+        Renderer renderer(defaultShaderRoot(), log);
+
+        std::string voxelColumns, voxelRule;
+        for (const int v : args.voxels) {
+            voxelColumns += " | VCT " + std::to_string(v) + "³";
+            voxelRule += "|---:";
+        }
+        std::string summary, regions, bleeding, leaks, skipped;
+        for (const SuiteScene& entry : suite(args)) {
+            if (!fs::exists(entry.file)) {
+                skipped += "- " + entry.name + ": skipped, " + entry.file.lexically_normal().string() + " is not there\n";
+                std::fprintf(stderr, "%s: skipped (%s not found)\n", entry.name.c_str(), entry.file.string().c_str());
+                continue;
+            }
+            const SceneReport r = measure(entry, args, renderer, log);
+            summary += r.summaryRows;
+            regions += r.regionRows;
+            bleeding += r.bleedingRows;
+            leaks += r.leakRows;
+        }
+
+        std::string md;
+        md += "Measured by `tools/gi-accuracy.sh` (" + std::to_string(args.size) + "×" + std::to_string(args.size) +
+              " pixels, reference " + std::to_string(args.spp) + " spp with one bounce, " + context.description() + "):\n\n";
+        md += "| scene | voxels | indirect-only VCT/ref | final RMSE, exposure-matched (reference noise) | indirect energy VCT/ref | VCT first "
+              "frame s | VCT frame s | reference s |\n|---|---:|---:|---:|---:|---:|---:|---:|\n" + summary;
+        if (!regions.empty())
+            md += "\nIndirect radiance (L_ID + L_IS) in named regions: the reference's value (W/(sr·m²)) and VCT/reference:\n\n"
+                  "| scene | region | pixels | reference" + voxelColumns + " |\n|---|---|---:|---:" + voxelRule + "|\n" + regions;
+        if (!bleeding.empty())
+            md += "\nColour bleeding onto the shadowed floor (indirect diffuse):\n\n| scene | region | ratio | reference" +
+                  voxelColumns + " |\n|---|---|---|---:" + voxelRule + "|\n" + bleeding;
+        if (!leaks.empty())
+            md += "\nLight inside the sealed room: mean radiance of the inside view as a fraction of the sunlit ground's "
+                  "radiance (W/(sr·m²)); any light inside is a leak:\n\n| scene | outside | reference" + voxelColumns +
+                  " |\n|---|---:|---:" + voxelRule + "|\n" + leaks;
+        if (!skipped.empty()) md += "\n" + skipped;
+        if (args.out.empty()) {
+            std::fputs(md.c_str(), stdout);
+        } else {
+            writeFileAtomically(args.out, md);
+            std::printf("wrote %s\n", args.out.string().c_str());
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "lit-gi-accuracy: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

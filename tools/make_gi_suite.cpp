@@ -1,0 +1,170 @@
+// make-gi-suite OUTDIR — writes the GI accuracy suite's generated scenes to OUTDIR (assets/gi/):
+//   glossy_floor.gltf  a Cornell room whose floor is a glossy metal that reflects the coloured walls
+//   thin_walls.gltf    a Cornell room whose walls are one voxel thick at 128³, with a strong sun
+//                      shining on its roof from outside (any sunlight inside is a leak)
+//   sealed_room.gltf   a closed room on a sunlit ground; nothing inside is lit but by leaks
+// Each is built with SceneBuilder and written with saveGltf (atomic). The Cornell box itself is
+// assets/cornell_box.gltf (tools/make_cornell_box.cpp). tools/gi-accuracy.sh renders the suite;
+// docs/GI.md has the table. Conventions as assets/README.md: metres, +Y up, the camera looks −Z.
+
+#include "scene/GltfWriter.h"
+#include "scene/SceneBuilder.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace lit;
+
+constexpr float kPi = 3.14159265358979323846f;
+
+struct RoomMaterials {
+    int white, red, green, floor;
+};
+
+// The Cornell box's materials (assets/README.md); the floor is `floor` (white unless given).
+RoomMaterials addRoomMaterials(Scene& scene) {
+    RoomMaterials m{};
+    m.white = addMaterial(scene, glm::vec3(0.73f), 0.9f, 0.0f, "white");
+    m.red = addMaterial(scene, glm::vec3(0.63f, 0.065f, 0.05f), 0.9f, 0.0f, "red");
+    m.green = addMaterial(scene, glm::vec3(0.14f, 0.45f, 0.091f), 0.9f, 0.0f, "green");
+    m.floor = m.white;
+    return m;
+}
+
+void name(Scene& scene, int node, const char* text) { scene.nodes[static_cast<std::size_t>(node)].name = text; }
+
+// The Cornell room: interior x ∈ [−1, 1], y ∈ [0, 2], z ∈ [−1, 1], open at z = +1, with the node
+// names of assets/cornell_box.gltf (the accuracy regions find walls by name). thickness 0: single-
+// sided walls (planes facing in); otherwise closed slabs of that thickness (metres) outside the
+// interior. Two blocks and the down-pointing 20 cd spot of the Cornell box.
+void addCornellRoom(Scene& scene, const RoomMaterials& m, float thickness) {
+    const float t = thickness;
+    if (t <= 0.0f) {
+        const auto plane = [&](const char* n, int material, glm::vec3 at, glm::quat rotation) {
+            name(scene, addMeshNode(scene, makePlaneMesh(n, 2.0f, material, 8), at, rotation), n);
+        };
+        plane("floor", m.floor, {0, 0, 0}, glm::quat(1, 0, 0, 0));
+        plane("ceiling", m.white, {0, 2, 0}, glm::angleAxis(kPi, glm::vec3(1, 0, 0)));
+        plane("back_wall", m.white, {0, 1, -1}, glm::angleAxis(kPi / 2, glm::vec3(1, 0, 0)));
+        plane("left_wall_red", m.red, {-1, 1, 0}, glm::angleAxis(-kPi / 2, glm::vec3(0, 0, 1)));
+        plane("right_wall_green", m.green, {1, 1, 0}, glm::angleAxis(kPi / 2, glm::vec3(0, 0, 1)));
+    } else {
+        const float outer = 2.0f + 2.0f * t, depth = 2.0f + t;  // walls reach from the back slab to z = +1
+        const auto slab = [&](const char* n, int material, glm::vec3 size, glm::vec3 at) {
+            name(scene, addMeshNode(scene, makeBoxMesh(n, size, material), at), n);
+        };
+        slab("floor", m.floor, {outer, t, depth}, {0, -0.5f * t, -0.5f * t});
+        slab("ceiling", m.white, {outer, t, depth}, {0, 2.0f + 0.5f * t, -0.5f * t});
+        slab("back_wall", m.white, {outer, outer, t}, {0, 1, -1.0f - 0.5f * t});
+        slab("left_wall_red", m.red, {t, outer, depth}, {-1.0f - 0.5f * t, 1, -0.5f * t});
+        slab("right_wall_green", m.green, {t, outer, depth}, {1.0f + 0.5f * t, 1, -0.5f * t});
+    }
+    const float turn = 17.0f * kPi / 180.0f;
+    name(scene, addMeshNode(scene, makeBoxMesh("tall_box", {0.6f, 1.2f, 0.6f}, m.white), {-0.33f, 0.6f, -0.3f},
+                            glm::angleAxis(turn, glm::vec3(0, 1, 0))),
+         "tall_box");
+    name(scene, addMeshNode(scene, makeBoxMesh("short_box", {0.6f, 0.6f, 0.6f}, m.white), {0.35f, 0.3f, 0.35f},
+                            glm::angleAxis(-turn, glm::vec3(0, 1, 0))),
+         "short_box");
+    Light spot;
+    spot.name = "ceiling_spot";
+    spot.type = LightType::Spot;
+    spot.intensity = 20.0f;
+    spot.innerConeAngle = 0.6f;
+    spot.outerConeAngle = 1.05f;
+    name(scene, addLightNode(scene, spot, {0, 1.9f, 0}, {0, -1, 0}), "ceiling_spot");
+    Camera camera;
+    camera.name = "camera";
+    camera.yfov = 0.69f;
+    camera.aspectRatio = 1.0f;
+    camera.znear = 0.05f;
+    camera.zfar = 20.0f;
+    name(scene, addCameraNode(scene, camera, {0, 1, 3.4f}, {0, 1, 0}), "camera");
+}
+
+Scene glossyFloor() {
+    Scene scene;
+    scene.name = "glossy_floor";
+    RoomMaterials m = addRoomMaterials(scene);
+    // A polished white metal: its indirect specular term shows the red and green walls.
+    m.floor = addMaterial(scene, glm::vec3(0.9f), 0.2f, 1.0f, "glossy metal");
+    addCornellRoom(scene, m, 0.0f);
+    return scene;
+}
+
+Scene thinWalls() {
+    Scene scene;
+    scene.name = "thin_walls";
+    const RoomMaterials m = addRoomMaterials(scene);
+    // VoxelVolume spans the largest extent (2 + 2t) over N − 4 voxels: t = 2 / (128 − 6) makes
+    // t exactly one voxel at 128³ (half a voxel at 64³, two voxels at 256³).
+    addCornellRoom(scene, m, 2.0f / 122.0f);
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Directional;
+    sun.intensity = 20.0f;  // lux: ~3.6× the spot's illuminance on the floor; all of it must stay outside
+    // Down and slightly towards +z: it falls on the roof and never through the open front.
+    name(scene, addLightNode(scene, sun, {0, 4, 0}, glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f))), "sun");
+    return scene;
+}
+
+Scene sealedRoom() {
+    Scene scene;
+    scene.name = "sealed_room";
+    const int ground = addMaterial(scene, glm::vec3(0.5f), 0.9f, 0.0f, "ground");
+    const int wall = addMaterial(scene, glm::vec3(0.73f), 0.9f, 0.0f, "white");
+    name(scene, addMeshNode(scene, makePlaneMesh("ground", 16.0f, ground, 8), {0, 0, 0}), "ground");
+    // A closed room, interior 4 × 3 × 4 m, walls 0.2 m thick, standing on the ground.
+    constexpr float t = 0.2f, w = 4.0f, h = 3.0f;
+    const auto slab = [&](const char* n, glm::vec3 size, glm::vec3 at) {
+        name(scene, addMeshNode(scene, makeBoxMesh(n, size, wall), at), n);
+    };
+    slab("room_floor", {w + 2 * t, t, w + 2 * t}, {0, 0.5f * t, 0});
+    slab("room_roof", {w + 2 * t, t, w + 2 * t}, {0, t + h + 0.5f * t, 0});
+    slab("room_wall_back", {w + 2 * t, h, t}, {0, t + 0.5f * h, -0.5f * w - 0.5f * t});
+    slab("room_wall_front", {w + 2 * t, h, t}, {0, t + 0.5f * h, 0.5f * w + 0.5f * t});
+    slab("room_wall_left", {t, h, w}, {-0.5f * w - 0.5f * t, t + 0.5f * h, 0});
+    slab("room_wall_right", {t, h, w}, {0.5f * w + 0.5f * t, t + 0.5f * h, 0});
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Directional;
+    sun.intensity = 50.0f;  // lux, from high up and to the side: it lights the roof, two walls and the ground
+    name(scene, addLightNode(scene, sun, {0, 8, 0}, glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f))), "sun");
+    Camera camera;
+    camera.name = "inside";
+    camera.yfov = 1.2f;
+    camera.aspectRatio = 1.0f;
+    camera.znear = 0.05f;
+    camera.zfar = 30.0f;
+    name(scene, addCameraNode(scene, camera, {1.2f, 1.6f, 1.6f}, {-1.0f, 1.4f, -1.5f}), "inside");
+    return scene;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: make-gi-suite OUTDIR\n");
+        return 2;
+    }
+    try {
+        const fs::path out = argv[1];
+        fs::create_directories(out);
+        for (Scene scene : {glossyFloor(), thinWalls(), sealedRoom()}) {
+            scene.updateWorldTransforms();
+            const fs::path file = out / (scene.name + ".gltf");
+            saveGltf(scene, file);
+            std::printf("wrote %s (%zu triangles)\n", file.string().c_str(), scene.triangleCount());
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "make-gi-suite: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
