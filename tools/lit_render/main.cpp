@@ -357,7 +357,18 @@ extern "C" void onInterrupt(int) { interruptRequested().store(true); }
 int runReference(const Options& options, const lit::Scene& scene, int cameraIndex, const lit::RenderSettings& settings,
                  lit::Log& log) {
     const Clock::time_point buildStart = Clock::now();
-    const lit::reference::ReferenceScene referenceScene(scene, log);
+    // A scene without lights is lit by the rasterizer's default sun (scene/Sky.h); give the
+    // reference the same sun as a light of its own copy of the scene.
+    lit::Scene withSun = scene;
+    if (lit::hasDefaultSun(scene, settings)) {
+        lit::Light sun;
+        sun.name = "default sun";
+        sun.type = lit::LightType::Directional;
+        sun.intensity = settings.defaultSunIrradiance;
+        lit::addLightNode(withSun, sun, glm::vec3(0.0f), lit::defaultSunDirection(settings));
+        withSun.updateWorldTransforms();
+    }
+    const lit::reference::ReferenceScene referenceScene(withSun, log);
     const double buildSeconds = secondsSince(buildStart);
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
