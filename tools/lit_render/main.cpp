@@ -114,7 +114,7 @@ void checkSettingsFile(const fs::path& path, const std::string& text, lit::Rende
     clampWarn("specularSamples", settings.specularSamples, 1, 8);
     clampWarn("voxelSliceAxis", settings.voxelSliceAxis, 0, 2);
     clampWarn("voxelSlice", settings.voxelSlice, 0.0f, 1.0f);
-    clampWarn("exposure", settings.exposure, 0.0f, 1e6f);
+    clampWarn("exposureEv", settings.exposureEv, -10.0f, 20.0f);
     clampWarn("coneStepScale", settings.coneStepScale, 0.05f, 4.0f);
     clampWarn("maxTraceDistance", settings.maxTraceDistance, 0.0f, 2.0f);
 }
