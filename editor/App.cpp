@@ -392,8 +392,6 @@ void App::resetCamera() {
     const CameraView view = sceneCameraView(doc_.scene, cameraIndex, aspect);
     camera_.setFromView(view);
     camera_.speed = flySpeedForBounds(doc_.scene.worldBounds());
-    znear_ = view.znear;
-    zfar_ = view.zfar;
 }
 
 void App::updateTitle() {
@@ -640,9 +638,9 @@ void App::frameSelection() {
         bounds.extend(b.min);
         bounds.extend(b.max);
     }
-    const float distance = frameBounds(camera_, bounds);
-    // A small object far from the scene's near plane: bring the near plane close enough to see it.
-    znear_ = std::min(znear_, std::max(0.01f * distance, 1e-3f));
+    // The near plane follows the camera each frame (currentView, depthRangeFor), so the framed
+    // object is never clipped.
+    frameBounds(camera_, bounds);
 }
 
 void App::syncRendererStructure() {
@@ -1076,7 +1074,10 @@ CameraView App::currentView() const {
     const float aspect = framebuffer.x > 0 && framebuffer.y > 0
                              ? static_cast<float>(framebuffer.x) / static_cast<float>(framebuffer.y)
                              : 1.0f;
-    return camera_.view(aspect, znear_, zfar_);
+    // Near/far follow the camera: fitted to where it is in the scene, not to where it started
+    // (a framing camera's near plane of metres would clip everything once inside a building).
+    const glm::vec2 range = depthRangeFor(camera_.position, doc_.scene.worldBounds());
+    return camera_.view(aspect, range.x, range.y);
 }
 
 void App::updatePlayback(double dtSeconds) {

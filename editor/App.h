@@ -176,8 +176,6 @@ private:
     PanelVisibility visible_;
     ViewportSettings viewport_;
     FlyCamera camera_;
-    float znear_ = 0.05f;  // metres, fitted to the scene when it is loaded
-    float zfar_ = 100.0f;  // metres
     RecentFiles recent_;
     MainMenu mainMenu_;
     HierarchyPanel hierarchyPanel_;

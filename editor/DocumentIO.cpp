@@ -46,7 +46,7 @@ Document loadScene(const fs::path& sceneFile, const fs::path& documentFile, Log&
     GltfLoadOptions options;
     options.progress = progress;
     Scene scene = loadGltf(sceneFile, log, options);  // logs the summary line
-    addDefaultLightAndCamera(scene, log);
+    addDefaultCamera(scene, log);
     CameraPath path;
     std::vector<std::string> names;
     std::string pathName = kDefaultCameraAnimation;

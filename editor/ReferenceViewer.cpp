@@ -50,7 +50,7 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
     }
     std::vector<std::uint8_t> bytes;
     if (mode_ == ReferenceMode::Reference) {
-        bytes = reference::toneMapToRgba8(rgb, settings.exposure);
+        bytes = reference::toneMapToRgba8(rgb, settings.exposureScale());
     } else {
         const std::vector<float> colours = reference::relativeErrorColours(renderer.readHdrRgb(), rgb, maxError_);
         bytes.assign(colours.size() / 3 * 4, 255);

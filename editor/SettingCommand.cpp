@@ -14,10 +14,11 @@ std::string applySetting(RenderSettings& settings, std::string_view key, std::st
     // renderSettingsFromJson ignores unknown keys (files from newer versions still load); a
     // script naming one has a typo, so check against the keys toJson writes.
     const nlohmann::json known = nlohmann::json::parse(toJson(settings));
-    if (!known.contains(name)) return "unknown render setting '" + name + "'";
+    // `exposure` (linear) is the pre-stops key that renderSettingsFromJson still reads.
+    if (!known.contains(name) && name != "exposure") return "unknown render setting '" + name + "'";
 
     nlohmann::json parsed = nlohmann::json::parse(value, nullptr, /*allow_exceptions=*/false);
-    if (parsed.is_discarded() || parsed.is_structured()) parsed = std::string(value);
+    if (parsed.is_discarded() || parsed.is_object()) parsed = std::string(value);
     const nlohmann::json object = {{name, parsed}};
     RenderSettings updated;
     try {

@@ -2,7 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -32,15 +34,43 @@ constexpr std::array<std::pair<VoxelChannel, std::string_view>, 5> kVoxelChannel
     {VoxelChannel::Emission, "emission"},
 }};
 
+constexpr std::array<std::pair<SkyMode, std::string_view>, 5> kSkyModeNames{{
+    {SkyMode::Auto, "auto"},
+    {SkyMode::None, "none"},
+    {SkyMode::Uniform, "uniform"},
+    {SkyMode::Gradient, "gradient"},
+    {SkyMode::Hdr, "hdr"},
+}};
+
 // Text of an enum field in JSON, and back (overloads picked by the field's type).
 std::optional<VoxelChannel> parseEnum(std::string_view text, VoxelChannel*) { return parseVoxelChannel(text); }
+std::optional<SkyMode> parseEnum(std::string_view text, SkyMode*) { return parseSkyMode(text); }
+
+template <typename T>
+constexpr bool kIsFloatArray = false;
+template <std::size_t N>
+constexpr bool kIsFloatArray<std::array<float, N>> = true;
 
 // One table drives both directions so a new field cannot be saved but not loaded.
 template <typename Visitor>
 void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("width", s.width);
     visit("height", s.height);
-    visit("exposure", s.exposure);
+    visit("exposureEv", s.exposureEv);
+    visit("autoExposure", s.autoExposure);
+    visit("autoExposureKey", s.autoExposureKey);
+    visit("autoExposureSpeed", s.autoExposureSpeed);
+    visit("autoExposureMinEv", s.autoExposureMinEv);
+    visit("autoExposureMaxEv", s.autoExposureMaxEv);
+    visit("skyMode", s.skyMode);
+    visit("skyZenith", s.skyZenith);
+    visit("skyHorizon", s.skyHorizon);
+    visit("skyGround", s.skyGround);
+    visit("skyIntensity", s.skyIntensity);
+    visit("skyHdrPath", s.skyHdrPath);
+    visit("defaultSunIrradiance", s.defaultSunIrradiance);
+    visit("defaultSunElevation", s.defaultSunElevation);
+    visit("defaultSunAzimuth", s.defaultSunAzimuth);
     visit("directDiffuse", s.directDiffuse);
     visit("directSpecular", s.directSpecular);
     visit("indirectDiffuse", s.indirectDiffuse);
@@ -98,6 +128,18 @@ std::optional<VoxelChannel> parseVoxelChannel(std::string_view text) {
     return std::nullopt;
 }
 
+std::string_view toString(SkyMode mode) {
+    for (const auto& [m, name] : kSkyModeNames)
+        if (m == mode) return name;
+    return "auto";
+}
+
+std::optional<SkyMode> parseSkyMode(std::string_view text) {
+    for (const auto& [m, name] : kSkyModeNames)
+        if (name == text) return m;
+    return std::nullopt;
+}
+
 std::string toJson(const RenderSettings& settings) {
     nlohmann::json j;
     RenderSettings copy = settings;
@@ -128,6 +170,15 @@ RenderSettings renderSettingsFromJson(std::string_view text, const RenderSetting
             const auto parsed = it->is_string() ? parseEnum(it->template get<std::string>(), &value) : std::nullopt;
             if (!parsed) throw std::runtime_error(std::string("render settings: '") + key + "' is not a known name");
             value = *parsed;
+        } else if constexpr (kIsFloatArray<T>) {
+            if (!it->is_array() || it->size() != value.size() ||
+                !std::all_of(it->begin(), it->end(), [](const nlohmann::json& e) { return e.is_number(); }))
+                throw std::runtime_error(std::string("render settings: '") + key + "' expects " +
+                                         std::to_string(value.size()) + " numbers");
+            value = it->template get<T>();
+        } else if constexpr (std::is_same_v<T, std::string>) {
+            if (!it->is_string()) throw std::runtime_error(std::string("render settings: '") + key + "' expects a string");
+            value = it->template get<std::string>();
         } else {
             const bool ok = std::is_same_v<T, bool> ? it->is_boolean()
                             : std::is_integral_v<T> ? it->is_number_integer()
@@ -136,6 +187,12 @@ RenderSettings renderSettingsFromJson(std::string_view text, const RenderSetting
             value = it->template get<T>();
         }
     });
+    // Files from before exposure stops hold a linear multiplier; a file with both keys means the stops.
+    if (auto it = j.find("exposure"); it != j.end() && !j.contains("exposureEv")) {
+        if (!it->is_number() || it->get<double>() <= 0.0)
+            throw std::runtime_error("render settings: 'exposure' (linear, from older files) must be a positive number");
+        s.exposureEv = static_cast<float>(std::log2(it->get<double>()));
+    }
     if (auto it = j.find("view"); it != j.end()) {
         const auto view = it->is_string() ? parseView(it->get<std::string>()) : std::nullopt;
         if (!view) throw std::runtime_error("render settings: 'view' is not a known view name");

@@ -3,6 +3,8 @@
 // ==, saved as JSON. The editor's settings panel, lit-render's flags and the tests all set these
 // same fields; the Renderer reads them and nothing else.
 
+#include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -40,12 +42,47 @@ enum class VoxelChannel {
 std::string_view toString(VoxelChannel channel);
 std::optional<VoxelChannel> parseVoxelChannel(std::string_view text);  // "radiance", "albedo", ...
 
+// What the background and the cones that leave the scene see (scene/Sky.h evaluates it).
+enum class SkyMode {
+    Auto,      // Gradient when the scene has no lights (with a default sun), else None
+    None,      // black: a scene lit only by its own lights, as Blender's black world
+    Uniform,   // skyZenith colour in every direction
+    Gradient,  // skyGround below the horizon, skyHorizon → skyZenith above it
+    Hdr,       // equirectangular radiance image skyHdrPath (Radiance .hdr through stb_image)
+};
+
+std::string_view toString(SkyMode mode);
+std::optional<SkyMode> parseSkyMode(std::string_view text);  // "auto", "none", "uniform", "gradient", "hdr"
+
 struct RenderSettings {
     // Output
     int width = 1280;  // pixels
     int height = 720;  // pixels
     View view = View::Final;
-    float exposure = 1.0f;  // linear multiplier applied before tone mapping
+    // Exposure in stops as Blender's Film > Exposure: radiance is multiplied by 2^exposureEv before
+    // tone mapping (0 = radiance 1 W/(sr·m²) maps to 1). With autoExposure it is a compensation
+    // added to the metered value. Old files' linear `exposure` key is read as log2(exposure).
+    float exposureEv = 0.0f;  // stops, −10..+20
+    bool autoExposure = false;
+    float autoExposureKey = 0.18f;     // scene-average luminance (geometric mean) mapped to this value
+    float autoExposureSpeed = 3.0f;    // adaptation rate, 1/s (exponential; 0 = instant)
+    float autoExposureMinEv = -10.0f;  // metered exposure is clamped to [min, max] stops
+    float autoExposureMaxEv = 20.0f;
+
+    // Sky and default lighting (docs/UNITS.md): radiance in W/(sr·m²), times skyIntensity.
+    SkyMode skyMode = SkyMode::Auto;
+    std::array<float, 3> skyZenith = {0.10f, 0.18f, 0.36f};   // linear RGB radiance straight up
+    std::array<float, 3> skyHorizon = {0.30f, 0.34f, 0.40f};  // at the horizon
+    std::array<float, 3> skyGround = {0.08f, 0.07f, 0.06f};   // below the horizon
+    float skyIntensity = 1.0f;                    // multiplier of the sky colours or the .hdr image
+    std::string skyHdrPath;                       // equirectangular .hdr (skyMode Hdr)
+    // When the scene has no lights, a sun at this elevation/azimuth (radians) with this irradiance
+    // (W/m² perpendicular to it, 2.7 klx at 683 lm/W); 0 = none.
+    float defaultSunIrradiance = 4.0f;
+    float defaultSunElevation = 1.05f;  // 60° above the horizon: reaches the floor of courtyards
+    float defaultSunAzimuth = 1.2f;     // from +Z towards +X (69°)
+
+    float exposureScale() const { return std::exp2(exposureEv); }
 
     // Terms (each term can be switched off; Final is the sum of those that are on)
     bool directDiffuse = true;

@@ -2,6 +2,7 @@
 
 #include "gl/Capabilities.h"
 #include "gl/GlError.h"
+#include "passes/AutoExposurePass.h"
 #include "passes/ConeTracePass.h"
 #include "passes/DirectLightingPass.h"
 #include "passes/FrameUniforms.h"
@@ -17,13 +18,16 @@
 #include "passes/LightingTerms.h"
 #include "passes/PostPass.h"
 #include "passes/ShadowPass.h"
+#include "passes/SkyTexture.h"
 #include "scene/Bvh.h"
 #include "scene/Frustum.h"
 #include "scene/GpuScene.h"
 #include "scene/Scene.h"
+#include "scene/Sky.h"
 
 #include <shared.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -61,6 +65,7 @@ struct ShadowKey {
     bool shadows = false;
     int size = 0;
     float depthBias = 0, slopeBias = 0;
+    float sunIrradiance = 0, sunElevation = 0, sunAzimuth = 0;  // the default sun of a scene without lights
     bool operator==(const ShadowKey&) const = default;
 };
 
@@ -103,12 +108,18 @@ struct Renderer::Impl {
           resolve(shaderRoot),
           overlayPass(shaderRoot),
           voxelDebug(shaderRoot),
+          autoExposure(shaderRoot),
           frameUniforms("frame uniforms", sizeof(gpu::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT),
           lightBuffer("lights", sizeof(gpu::GpuLight) * LIT_MAX_LIGHTS, nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
     std::vector<Pass*> passes() {
-        return {&shadow, &gbuffer, &direct, &post, &voxelize, &inject, &mipmap, &coneTrace, &resolve, &overlayPass, &voxelDebug};
+        return {&shadow, &gbuffer, &direct, &post, &voxelize, &inject, &mipmap, &coneTrace, &resolve, &overlayPass,
+                &voxelDebug, &autoExposure};
     }
+
+    // The sky image of settings.skyHdrPath, loaded and uploaded when the path changes; nullptr
+    // when the mode is not Hdr or the file could not be read (logged once per path).
+    const SkyImage* updateSkyImage(const RenderSettings& settings);
 
     // Voxelize / inject / mipmaps when what they depend on changed. Returns whether it ran.
     void updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty, DrawCounters& counters);
@@ -129,6 +140,12 @@ struct Renderer::Impl {
     IndirectResolvePass resolve;
     OverlayPass overlayPass;
     VoxelDebugPass voxelDebug;
+    AutoExposurePass autoExposure;
+    std::chrono::steady_clock::time_point lastMetered{};  // when auto exposure last ran
+    bool meteredLastFrame = false;
+    SkyImage skyImage;
+    std::string skyImagePath;  // the file skyImage (and skyTexture) came from; "" = none tried
+    gl::Texture skyTexture;
     ViewportOverlay overlay;
     // What picking needs of the last frame: its camera (to unproject depth) and voxel volume.
     std::optional<gpu::FrameUniforms> lastFrame;
@@ -224,6 +241,25 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     stats.occupiedVoxels = occupiedCount;
 }
 
+const SkyImage* Renderer::Impl::updateSkyImage(const RenderSettings& settings) {
+    if (settings.skyMode != SkyMode::Hdr) return nullptr;
+    if (settings.skyHdrPath != skyImagePath) {
+        skyImagePath = settings.skyHdrPath;
+        skyImage = {};
+        skyTexture = {};
+        try {
+            skyImage = loadSkyImage(skyImagePath);
+            skyTexture = makeSkyTexture(skyImage);
+            log.info("sky " + skyImagePath + ": " + std::to_string(skyImage.width) + "x" +
+                     std::to_string(skyImage.height));
+        } catch (const SkyLoadError& e) {
+            log.error(std::string(e.what()) + "; using the gradient sky");
+            skyImage = {};
+        }
+    }
+    return skyImage.texels.empty() ? nullptr : &skyImage;
+}
+
 void Renderer::Impl::cullView(const glm::mat4& viewProjection, bool culling, std::vector<std::uint32_t>& visible) {
     const auto start = std::chrono::steady_clock::now();
     if (culling) {
@@ -275,6 +311,7 @@ void Renderer::setScene(const Scene& scene) {
     impl_->shadowKey = {};
     impl_->voxelsValid = false;
     impl_->resolve.resetHistory();
+    impl_->meteredLastFrame = false;  // a new scene is metered afresh, not adapted to
     impl_->lastFrame.reset();  // the G-buffer's node IDs belong to the previous scene
 }
 
@@ -305,8 +342,10 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
 
     // Lights and shadow maps: rebuilt only when the scene or shadow settings change; the camera
     // does not affect them (directional maps are fitted to the scene, not the view).
-    const ShadowKey key{scene.geometryRevision, scene.lightRevision, &scene, settings.shadows, settings.shadowMapSize,
-                        settings.shadowDepthBias, settings.shadowSlopeBias};
+    const ShadowKey key{scene.geometryRevision,     scene.lightRevision,        &scene,
+                        settings.shadows,           settings.shadowMapSize,     settings.shadowDepthBias,
+                        settings.shadowSlopeBias,   settings.defaultSunIrradiance, settings.defaultSunElevation,
+                        settings.defaultSunAzimuth};
     const bool shadowsDirty = !(key == r.shadowKey);
     if (shadowsDirty) {
         r.lights = buildLightSetup(scene, r.bounds, settings, r.log);
@@ -315,8 +354,10 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
                              r.lights.lights.data());
     }
 
+    const Sky sky = resolveSky(scene, settings, r.updateSkyImage(settings));
+    if (sky.mode == SkyMode::Hdr) r.skyTexture.bind(LIT_TEX_SKY);
     const gpu::FrameUniforms frame = makeFrameUniforms(camera, settings, toShaderView(settings.view),
-                                                       static_cast<int>(r.lights.lights.size()));
+                                                       static_cast<int>(r.lights.lights.size()), &sky);
     r.frameUniforms.update(frame);
     r.frameUniforms.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FRAME);
     r.lightBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_LIGHTS);
@@ -405,6 +446,20 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
             r.voxelDebug.execute(settings, giWanted ? &r.voxels : nullptr, r.voxelGeneration);
         } else {
             r.post.composite(settings, r.shadow.maps2d(), shadowLayer);
+        }
+        if (settings.autoExposure && !isDataView(settings.view)) {
+            const auto now = std::chrono::steady_clock::now();
+            // A pause (a still render, an idle editor) does not count as adaptation time.
+            const float dt = r.meteredLastFrame ? std::min(std::chrono::duration<float>(now - r.lastMetered).count(), 0.25f)
+                                                : 0.0f;
+            if (!r.meteredLastFrame) r.autoExposure.reset();
+            Profiler::Scope exposureScope(r.profiler, "auto exposure");
+            r.autoExposure.execute(r.post.hdr(), settings, dt);
+            r.autoExposure.bindExposure();
+            r.lastMetered = now;
+            r.meteredLastFrame = true;
+        } else {
+            r.meteredLastFrame = false;
         }
         r.post.tonemap(settings);
     }
@@ -520,6 +575,10 @@ bool Renderer::reloadChangedShaders() {
 MipmapTimings Renderer::benchmarkMipmaps(int repetitions) {
     if (!impl_->voxelsValid) return {};
     return lit::benchmarkMipmaps(impl_->mipmap, impl_->voxels, repetitions);
+}
+
+float Renderer::exposureEv(const RenderSettings& settings) const {
+    return settings.autoExposure && impl_->meteredLastFrame ? impl_->autoExposure.readExposureEv() : settings.exposureEv;
 }
 
 const VoxelVolume* Renderer::voxels() const { return impl_->voxelsValid ? &impl_->voxels : nullptr; }

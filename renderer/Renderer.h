@@ -85,6 +85,10 @@ public:
     // Times the compute mip chain against glGenerateTextureMipmap on the current radiance volume
     // (after a GI frame; returns zeros before one).
     MipmapTimings benchmarkMipmaps(int repetitions);
+    // The exposure (stops) the last frame was tone-mapped with: the metered one when
+    // settings.autoExposure was on for it (reads a GPU buffer back: tools and tests), else
+    // settings.exposureEv.
+    float exposureEv(const RenderSettings& settings) const;
     // The voxel volume of the last GI frame, for debug views and tests; nullptr before one.
     const VoxelVolume* voxels() const;
 

@@ -3,9 +3,10 @@
 //   final = L_DD + L_ID + L_DS + L_IS (the terms that are switched on)
 // Data views (albedo, normal, roughness/metalness, shadow map) write display values in [0,1]
 // and set uDataView so the tone mapper shows them as they are. The voxel views are drawn by
-// VoxelDebugPass instead.
+// VoxelDebugPass instead. Background pixels of the final view show the sky (sky.glsl).
 #include "frame.glsl"
 #include "gbuffer.glsl"
+#include "sky.glsl"
 
 in vec2 vUv;
 layout(location = 0) out vec4 outColor;
@@ -29,6 +30,10 @@ void main() {
     vec3 color = vec3(0.0);
     if (view == LIT_VIEW_FINAL) {
         color = float(uTerms.x) * dd + float(uTerms.y) * id + float(uTerms.z) * ds + float(uTerms.w) * is;
+        if (texelFetch(gbufferDepth, pixel, 0).r >= 1.0) {
+            vec3 farPoint = worldPositionFromDepth(gl_FragCoord.xy * frame.viewport.zw, 1.0);
+            color = skyRadiance(farPoint - frame.cameraPosition.xyz);
+        }
     } else if (view == LIT_VIEW_DIRECT_DIFFUSE) {
         color = dd;
     } else if (view == LIT_VIEW_INDIRECT_DIFFUSE) {

@@ -221,8 +221,9 @@ void generate(const fs::path& outDir) {
                 {{"rotation", quatJson(shortRotation)}, {"translation", {0.35, 0.0, 0.35}}});
 
     // Ceiling spot light, pointing straight down: rotating the node −90° about X turns its
-    // local −Z (the light direction) to −Y. Intensity in candela: the floor point below is
-    // 1.9 m away, so E = 20 / 1.9² ≈ 5.5 lx and the white floor's radiance is 0.73/π · E ≈ 1.3,
+    // local −Z (the light direction) to −Y. Intensity in candela as glTF wants it: 13 660 cd is
+    // 20 W/sr at 683 lm/W (docs/UNITS.md). The floor point below is 1.9 m away, so
+    // E = 20 / 1.9² ≈ 5.5 W/m² and the white floor's radiance is 0.73/π · E ≈ 1.3 W/(sr·m²),
     // bright but not clipped under ACES at exposure 1. The cone is wide (outer 1.05 rad ≈ 60°,
     // full intensity inside 0.6 rad): the whole floor and the walls below y ≈ 1.3 m are lit
     // directly, while the ceiling and the top of the walls see only bounced light (GI).
@@ -232,7 +233,7 @@ void generate(const fs::path& outDir) {
                             Json::array({{{"name", "ceiling_spot"},
                                           {"type", "spot"},
                                           {"color", {1.0, 1.0, 1.0}},
-                                          {"intensity", 20.0},
+                                          {"intensity", 20.0 * 683.0},
                                           {"spot", {{"innerConeAngle", 0.6}, {"outerConeAngle", 1.05}}}}})}}}};
     sceneNodes.push_back(gltf.addNode({{"name", "ceiling_spot"},
                                        {"rotation", quatJson(down)},

@@ -1,5 +1,7 @@
 #include "panels/InspectorPanel.h"
 
+#include "scene/LightUnits.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -226,12 +228,15 @@ void InspectorPanel::drawLight(Document& doc, int lightIndex) {
     tooltip("Linear RGB, multiplied by the intensity");
     track(doc, "Light Colour", Change::Light, changed, [&] { light.color = colour; });
 
-    // glTF's units: luminous intensity for point and spot lights, illuminance for the sun.
+    // The Scene's radiometric units (W/sr, W/m²); the file holds them × 683 lm/W as cd or lux.
     const bool directional = light.type == LightType::Directional;
     float intensity = light.intensity;
-    changed = ImGui::DragFloat(directional ? "Intensity (lux)" : "Intensity (cd)", &intensity, 0.05f, 0.0f, 1.0e6f,
+    changed = ImGui::DragFloat(directional ? "Intensity (W/m^2)" : "Intensity (W/sr)", &intensity, 0.01f, 0.0f, 1.0e5f,
                                "%.3f", ImGuiSliderFlags_Logarithmic);
-    tooltip(directional ? "Illuminance in lux (lm/m^2)" : "Luminous intensity in candela (lm/sr)");
+    tooltip(directional ? "Irradiance in W/m^2; saved as illuminance in lux (x 683 lm/W, docs/UNITS.md)"
+                        : "Radiant intensity in W/sr; saved as luminous intensity in candela (x 683 lm/W, docs/UNITS.md)");
+    ImGui::TextDisabled(directional ? "= %.1f lux in the file" : "= %.1f cd in the file",
+                        photometricFromRadiometric(intensity));
     track(doc, "Light Intensity", Change::Light, changed, [&] { light.intensity = intensity; });
 
     if (!directional) {

@@ -66,8 +66,15 @@ void tooltip(const char* text) {
 
 bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
     bool changed = comboEnum("View", s.view, kViews);
-    changed |= ImGui::SliderFloat("Exposure", &s.exposure, 0.01f, 16.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
-    tooltip("Linear multiplier applied before tone mapping");
+    changed |= ImGui::SliderFloat("Exposure", &s.exposureEv, -10.0f, 20.0f, "%+.1f EV");
+    tooltip(s.autoExposure ? "Compensation in stops added to the metered exposure"
+                           : "Stops, as Blender's Film > Exposure: radiance x 2^EV before tone mapping");
+    changed |= ImGui::Checkbox("Auto exposure", &s.autoExposure);
+    tooltip("Meter the image (log-luminance histogram) and expose its mean to middle grey");
+    if (s.autoExposure) {
+        changed |= ImGui::SliderFloat("Adaptation", &s.autoExposureSpeed, 0.0f, 10.0f, "%.1f /s");
+        tooltip("How fast the exposure follows the image (exponential rate per second; 0 = at once)");
+    }
     ImGui::SliderFloat("Render scale", &viewport.renderScale, 0.25f, 1.0f, "%.2f");
     tooltip("Render resolution as a fraction of the window (stretched to fit)");
     changed |= ImGui::SliderFloat("Interactive FPS", &s.interactiveFpsTarget, 0.0f, 60.0f, "%.0f FPS");
@@ -78,6 +85,36 @@ bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
     ImGui::Checkbox("Cone directions", &viewport.coneDirections);
     tooltip("Click a pixel in the viewport to draw the cones the cone-trace pass traces from it:\n"
             "green = the six diffuse cones, pink = the specular cones");
+    return changed;
+}
+
+bool drawSky(RenderSettings& s) {
+    bool changed = comboEnum("Sky", s.skyMode, std::array{SkyMode::Auto, SkyMode::None, SkyMode::Uniform,
+                                                          SkyMode::Gradient, SkyMode::Hdr});
+    tooltip("auto: a gradient sky and a sun when the scene has no lights, else none.\n"
+            "The background shows the sky and GI cones that leave the scene receive it.");
+    changed |= ImGui::SliderFloat("Sky intensity", &s.skyIntensity, 0.0f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    tooltip("Multiplier of the sky colours or the .hdr image (radiance, W/(sr m^2))");
+    if (s.skyMode == SkyMode::Uniform || s.skyMode == SkyMode::Gradient || s.skyMode == SkyMode::Auto) {
+        changed |= ImGui::ColorEdit3("Zenith", s.skyZenith.data(), ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+        if (s.skyMode != SkyMode::Uniform) {
+            changed |= ImGui::ColorEdit3("Horizon", s.skyHorizon.data(), ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+            changed |= ImGui::ColorEdit3("Ground", s.skyGround.data(), ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+        }
+    }
+    if (s.skyMode == SkyMode::Hdr) {
+        std::array<char, 512> path{};
+        s.skyHdrPath.copy(path.data(), path.size() - 1);
+        if (ImGui::InputText(".hdr file", path.data(), path.size(), ImGuiInputTextFlags_EnterReturnsTrue)) {
+            s.skyHdrPath = path.data();
+            changed = true;
+        }
+        tooltip("Equirectangular Radiance .hdr (press Enter to load)");
+    }
+    changed |= ImGui::SliderFloat("Default sun", &s.defaultSunIrradiance, 0.0f, 20.0f, "%.2f W/m^2");
+    tooltip("Irradiance of the sun added to scenes without lights (x 683 = lux); 0 = none");
+    changed |= sliderDegrees("Sun elevation", s.defaultSunElevation, 1.0f, 90.0f);
+    changed |= sliderDegrees("Sun azimuth", s.defaultSunAzimuth, -180.0f, 180.0f);
     return changed;
 }
 
@@ -178,6 +215,7 @@ RenderSettingsRequests drawRenderSettingsPanel(RenderSettings& settings, Viewpor
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
     bool changed = drawOutput(settings, viewport);
     if (ImGui::CollapsingHeader("Terms", ImGuiTreeNodeFlags_DefaultOpen)) changed |= drawTerms(settings);
+    if (ImGui::CollapsingHeader("Sky and default light")) changed |= drawSky(settings);
     if (ImGui::CollapsingHeader("Shadows", ImGuiTreeNodeFlags_DefaultOpen))
         changed |= drawShadows(settings, lightCount);
     if (ImGui::CollapsingHeader("Global illumination", ImGuiTreeNodeFlags_DefaultOpen)) {

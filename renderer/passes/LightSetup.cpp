@@ -3,6 +3,7 @@
 #include "Log.h"
 #include "scene/CameraView.h"
 #include "scene/Scene.h"
+#include "scene/Sky.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -49,17 +50,7 @@ LightSetup buildLightSetup(const Scene& scene, const Aabb& sceneBounds, const Re
     LightSetup setup;
     const Aabb bounds = sceneBounds.empty() ? Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)} : sceneBounds;
     bool warnedCount = false, warnedShadows = false;
-    for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
-        const Node& node = scene.nodes[n];
-        if (node.light < 0) continue;
-        if (setup.lights.size() >= LIT_MAX_LIGHTS) {
-            if (!warnedCount) log.warning("more than " + std::to_string(LIT_MAX_LIGHTS) + " lights; the rest are ignored");
-            warnedCount = true;
-            break;
-        }
-        const Light& light = scene.lights[static_cast<std::size_t>(node.light)];
-        const glm::vec3 position = glm::vec3(node.world[3]);
-        const glm::vec3 direction = glm::normalize(glm::vec3(node.world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));
+    const auto addLight = [&](const Light& light, const glm::vec3& position, const glm::vec3& direction) {
         const int type = light.type == LightType::Directional ? LIT_LIGHT_DIRECTIONAL
                          : light.type == LightType::Spot      ? LIT_LIGHT_SPOT
                                                               : LIT_LIGHT_POINT;
@@ -116,6 +107,26 @@ LightSetup buildLightSetup(const Scene& scene, const Aabb& sceneBounds, const Re
             }
         }
         setup.lights.push_back(g);
+    };
+    for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+        const Node& node = scene.nodes[n];
+        if (node.light < 0) continue;
+        if (setup.lights.size() >= LIT_MAX_LIGHTS) {
+            if (!warnedCount) log.warning("more than " + std::to_string(LIT_MAX_LIGHTS) + " lights; the rest are ignored");
+            warnedCount = true;
+            break;
+        }
+        const Light& light = scene.lights[static_cast<std::size_t>(node.light)];
+        addLight(light, glm::vec3(node.world[3]),
+                 glm::normalize(glm::vec3(node.world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f))));
+    }
+    // A scene without lights gets a sun at an angle (scene/Sky.h), as bright as settings say.
+    if (hasDefaultSun(scene, settings)) {
+        Light sun;
+        sun.name = "default sun";
+        sun.type = LightType::Directional;
+        sun.intensity = settings.defaultSunIrradiance;
+        addLight(sun, glm::vec3(0.0f), defaultSunDirection(settings));
     }
     if (warnedShadows) log.warning("too many shadow-casting lights; some lights render without shadows");
     return setup;

@@ -68,6 +68,8 @@ void PostPass::tonemap(const RenderSettings& settings) {
     glEnable(GL_FRAMEBUFFER_SRGB);
     tonemap_.use();
     tonemap_.set("uDataView", isDataView(settings.view) ? 1 : 0);
+    // The exposure buffer is bound by the Renderer (AutoExposurePass) when auto exposure is on.
+    tonemap_.set("uAutoExposure", settings.autoExposure && !isDataView(settings.view) ? 1 : 0);
     hdr_.bind(LIT_TEX_HDR_INPUT);
     triangle_.draw();
     glDisable(GL_FRAMEBUFFER_SRGB);

@@ -123,6 +123,21 @@ CameraView sceneCameraView(const Scene& scene, int cameraIndex, float aspect) {
     return makeCameraView(world, camera.yfov, aspect, znear, zfar);
 }
 
+glm::vec2 depthRangeFor(const glm::vec3& position, const Aabb& bounds) {
+    if (bounds.empty() || !std::isfinite(position.x + position.y + position.z)) return {0.05f, 1000.0f};
+    float farthest = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner{(i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
+                               (i & 4) ? bounds.max.z : bounds.min.z};
+        farthest = std::max(farthest, glm::length(corner - position));
+    }
+    const float zfar = std::max(1.01f * farthest, 0.1f);
+    const glm::vec3 outside = glm::max(glm::max(bounds.min - position, position - bounds.max), glm::vec3(0.0f));
+    const float distanceToBox = glm::length(outside);
+    const float znear = std::max({0.5f * distanceToBox, 1e-4f * zfar, 1e-3f});
+    return {znear, std::max(zfar, 2.0f * znear)};
+}
+
 glm::vec3 FlyCamera::forward() const {
     // Rotate −Z by pitch about +X, then by yaw about +Y (right-handed: positive yaw turns left).
     const float cp = std::cos(pitch);

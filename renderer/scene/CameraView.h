@@ -34,6 +34,12 @@ CameraView frameBounds(const Aabb& bounds, float aspect, float yfov = 0.8f);
 // or the scene has none. Near/far are fitted to the scene bounds when the camera leaves zfar open.
 CameraView sceneCameraView(const Scene& scene, int cameraIndex, float aspect);
 
+// Near and far planes (metres) for a camera at `position` that may look anywhere: far reaches
+// the farthest corner of `bounds`; near is half the distance to the box when the camera is
+// outside it, and far / 10⁴ (at least 1 mm) inside it, so a camera inside a building never
+// clips walls in front of it while depth keeps ~13 bits of range. Empty bounds: (0.05, 1000).
+glm::vec2 depthRangeFor(const glm::vec3& position, const Aabb& bounds);
+
 // Fly camera used by the editor: position plus yaw/pitch in radians (yaw 0 looks down −Z).
 struct FlyCamera {
     glm::vec3 position{0.0f, 1.0f, 3.0f};

@@ -19,6 +19,9 @@
 #include "scene/GltfLoader.h"
 
 #include "Log.h"
+#include "animation/CameraPathIO.h"
+#include "scene/GltfKeep.h"
+#include "scene/LightUnits.h"
 #include "scene/Tangents.h"
 
 #define GLM_ENABLE_EXPERIMENTAL
@@ -224,6 +227,8 @@ private:
     void loadImages(Scene& scene) const;
     void loadLights(Scene& scene) const;
     void loadCameras(Scene& scene) const;
+    void loadAnimations(Scene& scene) const;
+    void keepFileData(Scene& scene) const;
     int textureIndex(int index, const std::string& what) const;
 
     const fs::path& path_;
@@ -231,6 +236,7 @@ private:
     Log& log_;
     const GltfLoadOptions& options_;
     const ImageDeduplicator& images_;  // which images are byte-identical to an earlier one
+    mutable std::vector<int> nodeRemap_;  // file node → Scene node (-1: not imported), set by loadNodes
 };
 
 std::string describeNode(const tinygltf::Model& model, std::size_t index) {
@@ -426,7 +432,7 @@ void Loader::checkExtensions() const {
     for (const std::string& e : model_.extensionsRequired)
         if (!isSupported(e)) fail("requires the glTF extension " + e + ", which Lit does not support");
     for (const std::string& e : model_.extensionsUsed)
-        if (!isSupported(e)) warn("ignores the glTF extension " + e + " (not supported)");
+        if (!isSupported(e)) warn("ignores the glTF extension " + e + " (not supported; its data is kept and saved back as it was)");
 }
 
 void Loader::loadNodes(Scene& scene) const {
@@ -582,9 +588,11 @@ void Loader::loadNodes(Scene& scene) const {
                 node.scale = glm::vec3(in.scale[0], in.scale[1], in.scale[2]);
             }
         }
+        node.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_lights_punctual"});
         scene.nodes.push_back(std::move(node));
     }
     for (int root : roots) scene.roots.push_back(remap[static_cast<std::size_t>(root)]);
+    nodeRemap_ = remap;
 }
 
 void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& meshName, std::size_t primitiveIndex,
@@ -671,6 +679,8 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
 
     if (normalIndex < 0) computeNormals(out);
     if (!haveTangents) computeTangents(out);
+    out.fileHasTangents = haveTangents;
+    out.kept = gltfkeep::keep(in.extras, in.extensions);
     for (const Vertex& v : out.vertices) out.bounds.extend(v.position);
 }
 
@@ -703,6 +713,7 @@ void Loader::loadMeshes(Scene& scene) const {
             }
             mesh.primitives.push_back(std::move(out));
         }
+        mesh.kept = gltfkeep::keep(in.extras, in.extensions);
         scene.meshes.push_back(std::move(mesh));
         report("meshes", m + 1, model_.meshes.size());
     }
@@ -759,6 +770,12 @@ void Loader::loadMaterials(Scene& scene) const {
         }
         out.alphaCutoff = static_cast<float>(in.alphaCutoff);
         out.doubleSided = in.doubleSided;
+        out.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_materials_emissive_strength"});
+        out.textureExtensions = {gltfkeep::extensionsText(pbr.baseColorTexture.extensions),
+                                 gltfkeep::extensionsText(pbr.metallicRoughnessTexture.extensions),
+                                 gltfkeep::extensionsText(in.normalTexture.extensions),
+                                 gltfkeep::extensionsText(in.emissiveTexture.extensions),
+                                 gltfkeep::extensionsText(in.occlusionTexture.extensions)};
         scene.materials.push_back(std::move(out));
     }
 }
@@ -793,6 +810,7 @@ void Loader::loadTextures(Scene& scene) const {
             allowed(s.minFilter, {9728, 9729, 9984, 9985, 9986, 9987}, "minFilter", out.minFilter);
             allowed(s.magFilter, {9728, 9729}, "magFilter", out.magFilter);
         }
+        out.kept = gltfkeep::keep(in.extras, in.extensions);
         scene.textures.push_back(out);
     }
 }
@@ -966,11 +984,19 @@ void Loader::loadLights(Scene& scene) const {
             fail("light " + std::to_string(l) + " has unknown type '" + in.type + "'");
         }
         if (in.color.size() == 3) out.color = glm::vec3(in.color[0], in.color[1], in.color[2]);
-        out.intensity = static_cast<float>(in.intensity);
+        // Photometric in the file (cd, lx), radiometric in the Scene (W/sr, W/m²).
+        out.intensity = radiometricFromPhotometric(in.intensity);
+        out.fileIntensity = in.intensity;
+        out.fileIntensityAsLoaded = out.intensity;
         out.range = static_cast<float>(in.range);
         // Lit's own flag (scene/GltfWriter.cpp writes it); glTF has no shadow switch.
         if (in.extras.Has("litCastsShadow") && in.extras.Get("litCastsShadow").IsBool())
             out.castsShadow = in.extras.Get("litCastsShadow").Get<bool>();
+        out.kept = gltfkeep::keep(in.extras, in.extensions);
+        if (nlohmann::json extras = nlohmann::json::parse(out.kept.extras, nullptr, false); extras.is_object()) {
+            extras.erase("litCastsShadow");  // Lit's own flag: written from castsShadow
+            out.kept.extras = extras.empty() ? std::string() : extras.dump();
+        }
         scene.lights.push_back(std::move(out));
     }
 }
@@ -991,8 +1017,66 @@ void Loader::loadCameras(Scene& scene) const {
             if (in.orthographic.znear > 0.0) out.znear = static_cast<float>(in.orthographic.znear);
             if (in.orthographic.zfar > in.orthographic.znear) out.zfar = static_cast<float>(in.orthographic.zfar);
         }
+        out.kept = gltfkeep::keep(in.extras, in.extensions);
         scene.cameras.push_back(std::move(out));
     }
+}
+
+// Every animation, as floats, for the writer to save back (Lit plays camera paths only). One
+// that cannot be read is reported and left out; the load goes on.
+void Loader::loadAnimations(Scene& scene) const {
+    for (std::size_t a = 0; a < model_.animations.size(); ++a) {
+        const tinygltf::Animation& in = model_.animations[a];
+        const std::string what = "animation " + std::to_string(a) + (in.name.empty() ? "" : " ('" + in.name + "')");
+        Animation out;
+        out.name = in.name;
+        out.kept = gltfkeep::keep(in.extras, in.extensions);
+        try {
+            for (std::size_t i = 0; i < in.samplers.size(); ++i) {
+                const tinygltf::AnimationSampler& s = in.samplers[i];
+                const std::string where = what + " sampler " + std::to_string(i);
+                if (s.output < 0 || static_cast<std::size_t>(s.output) >= model_.accessors.size())
+                    fail(where + " has no valid output accessor");
+                const int outputType = model_.accessors[static_cast<std::size_t>(s.output)].type;
+                const AccessorData input = accessor(s.input, TINYGLTF_TYPE_SCALAR, "input of " + where);
+                const AccessorData output = accessor(s.output, outputType, "output of " + where);
+                Animation::Sampler sampler;
+                sampler.interpolation = s.interpolation.empty() ? "LINEAR" : s.interpolation;
+                sampler.components = output.components;
+                for (std::size_t k = 0; k < input.count; ++k) sampler.input.push_back(input.component(k, 0));
+                for (std::size_t k = 0; k < output.count; ++k)
+                    for (int c = 0; c < output.components; ++c) sampler.output.push_back(output.component(k, c));
+                out.samplers.push_back(std::move(sampler));
+            }
+            for (const tinygltf::AnimationChannel& c : in.channels) {
+                if (c.sampler < 0 || static_cast<std::size_t>(c.sampler) >= out.samplers.size())
+                    fail(what + " has a channel with sampler " + std::to_string(c.sampler) + ", which does not exist");
+                if (c.target_node < 0 || static_cast<std::size_t>(c.target_node) >= nodeRemap_.size()) continue;
+                const int node = nodeRemap_[static_cast<std::size_t>(c.target_node)];
+                if (node < 0) continue;  // a node not imported
+                out.channels.push_back({c.sampler, node, c.target_path});
+            }
+        } catch (const SceneLoadError& e) {
+            warn(std::string(e.what()) + "; the animation is not kept");
+            continue;
+        }
+        scene.animations.push_back(std::move(out));
+    }
+    scene.cameraAnimationNames = cameraAnimationNames(model_);
+}
+
+// The file-level data Lit does not use, for a lossless save.
+void Loader::keepFileData(Scene& scene) const {
+    const int sceneIndex = model_.defaultScene >= 0 ? model_.defaultScene : (model_.scenes.empty() ? -1 : 0);
+    if (sceneIndex >= 0) {
+        const tinygltf::Scene& s = model_.scenes[static_cast<std::size_t>(sceneIndex)];
+        scene.kept = gltfkeep::keep(s.extras, s.extensions);
+    }
+    scene.fileKept = gltfkeep::keep(model_.extras, model_.extensions, {"KHR_lights_punctual"});
+    scene.copyright = model_.asset.copyright;
+    static const std::array<std::string_view, 2> own = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+    for (const std::string& e : model_.extensionsUsed)
+        if (std::find(own.begin(), own.end(), e) == own.end()) scene.unknownExtensionsUsed.push_back(e);
 }
 
 Scene Loader::run() {
@@ -1008,6 +1092,8 @@ Scene Loader::run() {
     report("scene", 0, 1);
     loadLights(scene);
     loadCameras(scene);
+    loadAnimations(scene);
+    keepFileData(scene);
     scene.updateWorldTransforms();
     report("scene", 1, 1);
     return scene;

@@ -10,6 +10,8 @@
 // - An image that came from a file which still exists is referenced by a URI relative to the new
 //   file's folder (not copied, not re-encoded: JPEGs stay JPEGs); any other image (embedded in
 //   the source, generated, or from a file that is gone) is encoded as PNG into the buffer.
+// - Light intensities are written in glTF's photometric units: Scene's W/sr and W/m² times
+//   683 lm/W (scene/LightUnits.h), or the file's own number for a light that was not edited.
 // - Light::castsShadow has no glTF equivalent; false is written to the light's extras as
 //   {"litCastsShadow": false}, which the loader reads back.
 // - A camera's zfar of 0 (fitted to the scene) is written as no zfar, which glTF reads as an
@@ -20,6 +22,8 @@
 #include "animation/CameraPathIO.h"
 #include "image/ImageIO.h"
 #include "io/GltfFile.h"
+#include "scene/GltfKeep.h"
+#include "scene/LightUnits.h"
 #include "scene/Scene.h"
 
 #include <tiny_gltf.h>
@@ -29,6 +33,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <optional>
@@ -63,7 +68,9 @@ std::vector<double> doubles(const glm::vec<N, float>& v) {
 
 class ModelBuilder {
 public:
-    ModelBuilder(const Scene& scene, const fs::path& file) : scene_(scene), file_(file) {}
+    // `replacedAnimation`: the name of a kept animation not to write (the caller writes its own).
+    ModelBuilder(const Scene& scene, const fs::path& file, std::string replacedAnimation)
+        : scene_(scene), file_(file), replacedAnimation_(std::move(replacedAnimation)) {}
 
     tinygltf::Model build();
 
@@ -88,13 +95,29 @@ private:
     void addLights();
     void addCameras();
     void addNodes();
+    void addAnimations();
     void useExtension(const std::string& name);
+    // Writes what the loader kept back into an object, declaring the extensions it brings.
+    void restore(const KeptGltf& kept, tinygltf::Value& extras, tinygltf::ExtensionMap& extensions);
+    void restoreTextureInfo(const std::string& kept, tinygltf::ExtensionMap& extensions);
 
     const Scene& scene_;
     const fs::path& file_;
     tinygltf::Model model_;
+    std::string replacedAnimation_;
     std::vector<int> meshIndex_;  // scene mesh → glTF mesh, -1 when left out
+    std::vector<int> nodeIndex_;  // scene node → glTF node, -1 when not written
 };
+
+void ModelBuilder::restore(const KeptGltf& kept, tinygltf::Value& extras, tinygltf::ExtensionMap& extensions) {
+    gltfkeep::restore(kept, extras, extensions);
+    for (const auto& [name, value] : extensions) useExtension(name);
+}
+
+void ModelBuilder::restoreTextureInfo(const std::string& kept, tinygltf::ExtensionMap& extensions) {
+    tinygltf::Value noExtras;  // a texture reference's extras are not kept
+    restore(KeptGltf{"", kept}, noExtras, extensions);
+}
 
 void ModelBuilder::checkIndex(int index, std::size_t count, const std::string& what, const char* kind) const {
     if (index < -1 || index >= static_cast<int>(count))
@@ -285,6 +308,7 @@ void ModelBuilder::addTextures() {
         tinygltf::Texture out;
         out.source = texture.image;
         out.sampler = it->second;
+        restore(texture.kept, out.extras, out.extensions);
         model_.textures.push_back(std::move(out));
     }
 }
@@ -324,6 +348,12 @@ void ModelBuilder::addMaterials() {
         }
         out.alphaCutoff = material.alphaCutoff;
         out.doubleSided = material.doubleSided;
+        restore(material.kept, out.extras, out.extensions);
+        restoreTextureInfo(material.textureExtensions[0], pbr.baseColorTexture.extensions);
+        restoreTextureInfo(material.textureExtensions[1], pbr.metallicRoughnessTexture.extensions);
+        restoreTextureInfo(material.textureExtensions[2], out.normalTexture.extensions);
+        restoreTextureInfo(material.textureExtensions[3], out.emissiveTexture.extensions);
+        restoreTextureInfo(material.textureExtensions[4], out.occlusionTexture.extensions);
         model_.materials.push_back(std::move(out));
     }
 }
@@ -340,7 +370,19 @@ void ModelBuilder::addMeshes() {
         for (const Primitive& primitive : mesh.primitives) {
             if (primitive.indices.empty()) continue;
             const std::size_t count = primitive.vertices.size();
-            const int vertices = addBufferView(primitive.vertices.data(), count * sizeof(Vertex), kArrayBuffer, sizeof(Vertex));
+            // Tangents only when the file had them (the loader generates them otherwise): without
+            // them the vertices are written 32 bytes apart (POSITION, NORMAL, TEXCOORD_0).
+            const bool tangents = primitive.fileHasTangents;
+            constexpr std::size_t kPackedStride = offsetof(Vertex, tangent);
+            int vertices = -1;
+            if (tangents) {
+                vertices = addBufferView(primitive.vertices.data(), count * sizeof(Vertex), kArrayBuffer, sizeof(Vertex));
+            } else {
+                std::vector<unsigned char> packed(count * kPackedStride);
+                for (std::size_t v = 0; v < count; ++v)
+                    std::memcpy(packed.data() + v * kPackedStride, &primitive.vertices[v], kPackedStride);
+                vertices = addBufferView(packed.data(), packed.size(), kArrayBuffer, kPackedStride);
+            }
             tinygltf::Primitive p;
             p.mode = TINYGLTF_MODE_TRIANGLES;
             p.material = primitive.material;
@@ -358,8 +400,10 @@ void ModelBuilder::addMeshes() {
                                                  TINYGLTF_TYPE_VEC3, count);
             p.attributes["TEXCOORD_0"] =
                 addAccessor(vertices, offsetof(Vertex, uv), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
-            p.attributes["TANGENT"] = addAccessor(vertices, offsetof(Vertex, tangent), TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                                  TINYGLTF_TYPE_VEC4, count);
+            if (tangents)
+                p.attributes["TANGENT"] = addAccessor(vertices, offsetof(Vertex, tangent), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                                      TINYGLTF_TYPE_VEC4, count);
+            restore(primitive.kept, p.extras, p.extensions);
             const int indices = addBufferView(primitive.indices.data(), primitive.indices.size() * sizeof(std::uint32_t),
                                               kElementArrayBuffer, 0);
             p.indices = addAccessor(indices, 0, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
@@ -367,6 +411,7 @@ void ModelBuilder::addMeshes() {
             out.primitives.push_back(std::move(p));
         }
         if (out.primitives.empty()) continue;  // glTF requires at least one primitive per mesh
+        restore(mesh.kept, out.extras, out.extensions);
         meshIndex_[m] = static_cast<int>(model_.meshes.size());
         model_.meshes.push_back(std::move(out));
     }
@@ -377,7 +422,9 @@ void ModelBuilder::addLights() {
         tinygltf::Light out;
         out.name = light.name;
         out.color = doubles(light.color);
-        out.intensity = light.intensity;
+        // Back to the file's photometric units (cd, lx); an unedited light keeps its exact number.
+        out.intensity = light.intensity == light.fileIntensityAsLoaded ? light.fileIntensity
+                                                                       : photometricFromRadiometric(light.intensity);
         out.range = std::max(light.range, 0.0f);  // written only when > 0 (0 = infinite)
         switch (light.type) {
             case LightType::Directional:
@@ -397,6 +444,7 @@ void ModelBuilder::addLights() {
             extras[kCastsShadowKey] = tinygltf::Value(false);
             out.extras = tinygltf::Value(std::move(extras));
         }
+        restore(light.kept, out.extras, out.extensions);
         model_.lights.push_back(std::move(out));
     }
     if (!model_.lights.empty()) useExtension(kLightsExtension);
@@ -411,6 +459,7 @@ void ModelBuilder::addCameras() {
         out.perspective.znear = camera.znear;
         out.perspective.zfar = std::max(camera.zfar, 0.0f);  // 0: left out by writeGltfModel
         out.perspective.aspectRatio = std::max(camera.aspectRatio, 0.0f);  // 0: left out
+        restore(camera.kept, out.extras, out.extensions);
         model_.cameras.push_back(std::move(out));
     }
 }
@@ -438,16 +487,65 @@ void ModelBuilder::addNodes() {
             extension["light"] = tinygltf::Value(node.light);
             out.extensions[kLightsExtension] = tinygltf::Value(std::move(extension));
         }
+        restore(node.kept, out.extras, out.extensions);
         model_.nodes.push_back(std::move(out));
     }
+    nodeIndex_ = remap;
     tinygltf::Scene root;
     root.name = scene_.name;
     for (int index : scene_.roots) {
         const int mapped = remap[static_cast<std::size_t>(index)];
         if (std::find(root.nodes.begin(), root.nodes.end(), mapped) == root.nodes.end()) root.nodes.push_back(mapped);
     }
+    restore(scene_.kept, root.extras, root.extensions);
     model_.scenes.push_back(std::move(root));
     model_.defaultScene = 0;
+}
+
+// The file's animations as the loader kept them (channels of nodes that are not written are
+// dropped, and animations left with none). Float accessors; inputs carry min/max as glTF requires.
+void ModelBuilder::addAnimations() {
+    for (const Animation& animation : scene_.animations) {
+        if (!replacedAnimation_.empty() && animation.name == replacedAnimation_) continue;
+        const bool valid = std::all_of(animation.samplers.begin(), animation.samplers.end(), [](const Animation::Sampler& s) {
+            return s.components >= 1 && s.components <= 4 && !s.input.empty() &&
+                   s.output.size() % static_cast<std::size_t>(s.components) == 0;
+        });
+        if (!valid) continue;
+        tinygltf::Animation out;
+        out.name = animation.name;
+        for (const Animation::Sampler& sampler : animation.samplers) {
+            const int typeOf[] = {0, TINYGLTF_TYPE_SCALAR, TINYGLTF_TYPE_VEC2, TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4};
+            const int inputView = addBufferView(sampler.input.data(), sampler.input.size() * sizeof(float), 0, 0);
+            const int input = addAccessor(inputView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR,
+                                          sampler.input.size());
+            const auto [lo, hi] = std::minmax_element(sampler.input.begin(), sampler.input.end());
+            model_.accessors[static_cast<std::size_t>(input)].minValues = {*lo};
+            model_.accessors[static_cast<std::size_t>(input)].maxValues = {*hi};
+            const int outputView = addBufferView(sampler.output.data(), sampler.output.size() * sizeof(float), 0, 0);
+            const int output = addAccessor(outputView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, typeOf[sampler.components],
+                                           sampler.output.size() / static_cast<std::size_t>(sampler.components));
+            tinygltf::AnimationSampler s;
+            s.input = input;
+            s.output = output;
+            s.interpolation = sampler.interpolation;
+            out.samplers.push_back(std::move(s));
+        }
+        for (const Animation::Channel& channel : animation.channels) {
+            if (channel.node < 0 || static_cast<std::size_t>(channel.node) >= nodeIndex_.size()) continue;
+            const int node = nodeIndex_[static_cast<std::size_t>(channel.node)];
+            if (node < 0 || channel.sampler < 0 || static_cast<std::size_t>(channel.sampler) >= out.samplers.size())
+                continue;
+            tinygltf::AnimationChannel c;
+            c.sampler = channel.sampler;
+            c.target_node = node;
+            c.target_path = channel.path;
+            out.channels.push_back(std::move(c));
+        }
+        if (out.channels.empty()) continue;
+        restore(animation.kept, out.extras, out.extensions);
+        model_.animations.push_back(std::move(out));
+    }
 }
 
 void ModelBuilder::useExtension(const std::string& name) {
@@ -466,6 +564,11 @@ tinygltf::Model ModelBuilder::build() {
     addLights();
     addCameras();
     addNodes();
+    addAnimations();
+    model_.asset.copyright = scene_.copyright;
+    restore(scene_.fileKept, model_.extras, model_.extensions);
+    // Extensions the source declared that no kept data uses any more are not declared again
+    // (the validator reports unused ones); those still used were declared by restore().
     return std::move(model_);
 }
 
@@ -498,7 +601,8 @@ void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& o
                              "'; the file name must end in .gltf or .glb");
     const bool binary = extension == ".glb";
 
-    tinygltf::Model model = ModelBuilder(scene, file).build();
+    const bool ownPath = options.cameraPath && !options.cameraPath->empty();
+    tinygltf::Model model = ModelBuilder(scene, file, ownPath ? options.cameraPathName : std::string()).build();
     if (options.cameraPath && !options.cameraPath->empty()) {
         try {
             writeCameraPathAnimation(model, *options.cameraPath, options.cameraPathName);

@@ -9,12 +9,22 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace lit {
+
+// What a glTF object held that Lit does not use: its "extras" and the extensions Lit does not
+// read, as JSON text ("" = none). Kept so that saving a file loses nothing (scene/GltfWriter.cpp);
+// objects Lit creates have none.
+struct KeptGltf {
+    std::string extras;      // the object's "extras" value
+    std::string extensions;  // a JSON object: extension name → value (Lit's own extensions left out)
+    bool operator==(const KeptGltf&) const = default;
+};
 
 struct Vertex {
     glm::vec3 position{0.0f};
@@ -29,11 +39,16 @@ struct Primitive {
     std::vector<std::uint32_t> indices;  // always triangles; non-indexed input gets 0,1,2,...
     int material = -1;                   // index into Scene::materials, -1 = default material
     Aabb bounds;                         // object space
+    // Whether the file gave TANGENT (else the loader generated them): only then does a save
+    // write them, so a file without tangents does not grow by a third.
+    bool fileHasTangents = false;
+    KeptGltf kept{};
 };
 
 struct Mesh {
     std::string name;
     std::vector<Primitive> primitives;
+    KeptGltf kept{};
 };
 
 // Decoded pixels, RGBA8. Whether they hold sRGB colour or linear data depends on the material
@@ -53,6 +68,7 @@ struct Texture {
     int wrapT = 10497;
     int minFilter = 9987;  // LINEAR_MIPMAP_LINEAR
     int magFilter = 9729;  // LINEAR
+    KeptGltf kept{};
 };
 
 enum class AlphaMode { Opaque, Mask, Blend };
@@ -75,6 +91,10 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
+    KeptGltf kept{};
+    // Extensions of each texture reference (KHR_texture_transform, ...), JSON object text, in the
+    // order base colour, metallic-roughness, normal, emissive, occlusion.
+    std::array<std::string, 5> textureExtensions{};
 
     bool operator==(const Material&) const = default;
 };
@@ -87,11 +107,19 @@ struct Light {
     std::string name;
     LightType type = LightType::Point;
     glm::vec3 color{1.0f};  // linear RGB
-    float intensity = 1.0f;  // candela (point, spot) or lux (directional)
+    // Radiometric: W/sr (point, spot) or W/m² (directional). The file holds candela or lux; the
+    // loader divides by 683 lm/W (scene/LightUnits.h, docs/UNITS.md).
+    float intensity = 1.0f;
     float range = 0.0f;      // metres; 0 = infinite
     float innerConeAngle = 0.0f;                  // radians, spot only
     float outerConeAngle = 0.7853981633974483f;   // radians (π/4), spot only
     bool castsShadow = true;
+    // The photometric number of the file (cd or lx) and the `intensity` it became, so that saving
+    // an unedited light writes the file's number exactly (float(x / 683) · 683 need not be x).
+    // The writer uses `fileIntensity` only while `intensity == fileIntensityAsLoaded`.
+    double fileIntensity = 0.0;
+    float fileIntensityAsLoaded = -1.0f;  // -1: not from a file
+    KeptGltf kept{};
 
     bool operator==(const Light&) const = default;
 };
@@ -103,6 +131,7 @@ struct Camera {
     float aspectRatio = 0.0f;  // 0 = use the output's aspect
     float znear = 0.05f;       // metres
     float zfar = 0.0f;         // metres; 0 = fitted to the scene bounds
+    KeptGltf kept{};
 
     bool operator==(const Camera&) const = default;
 };
@@ -118,8 +147,30 @@ struct Node {
     int light = -1;
     int camera = -1;
     glm::mat4 world{1.0f};  // computed by Scene::updateWorldTransforms()
+    KeptGltf kept{};
 
     glm::mat4 localMatrix() const;
+};
+
+// A glTF animation as the file had it, kept so a save writes it back (Lit plays camera paths
+// through animation/CameraPathIO.h; it does not play other animations). Values are floats as
+// they were read (normalized integers converted).
+struct Animation {
+    struct Sampler {
+        std::vector<float> input;   // key times, seconds
+        std::vector<float> output;  // components × keys (× 3 for CUBICSPLINE)
+        int components = 3;         // 1 (weights), 3 (translation, scale), 4 (rotation)
+        std::string interpolation = "LINEAR";
+    };
+    struct Channel {
+        int sampler = 0;
+        int node = -1;          // index into Scene::nodes; a channel of a node not saved is dropped
+        std::string path;       // "translation", "rotation", "scale" or "weights"
+    };
+    std::string name;
+    std::vector<Sampler> samplers;
+    std::vector<Channel> channels;
+    KeptGltf kept{};  // extras hold Lit's own path keys (litCameraPath) when Lit wrote the animation
 };
 
 struct Scene {
@@ -133,6 +184,17 @@ struct Scene {
     std::vector<Image> images;
     std::vector<Light> lights;
     std::vector<Camera> cameras;
+    // Every animation of the file, in file order. Camera animations (those a camera path can be
+    // read from) are listed in cameraAnimationNames; animation/CameraPathIO.h's
+    // loadCameraPath(scene, name) turns one into a CameraPath for the timeline and lit-render
+    // --path. The writer saves them all, except one of the name the editor saves its own path
+    // under (GltfSaveOptions::cameraPathName), which that path replaces.
+    std::vector<Animation> animations;
+    std::vector<std::string> cameraAnimationNames;  // filled by the loader (CameraPathIO's rule)
+    KeptGltf kept{};           // the glTF scene object's extras and extensions
+    KeptGltf fileKept{};     // the file's top-level extras and extensions (KHR_lights_punctual left out)
+    std::string copyright;   // asset.copyright
+    std::vector<std::string> unknownExtensionsUsed;  // extensionsUsed Lit does not read; written back
 
     // Bumped by whoever edits the scene; the renderer redoes only what changed.
     std::uint64_t geometryRevision = 0;  // meshes, node transforms → shadows, voxels

@@ -29,7 +29,8 @@ void addQuad(Primitive& p, const glm::vec3& origin, const glm::vec3& u, const gl
 }  // namespace
 
 Mesh makeBoxMesh(const std::string& name, const glm::vec3& size, int material) {
-    Mesh mesh{name, {}};
+    Mesh mesh;
+    mesh.name = name;
     Primitive p;
     p.material = material;
     const glm::vec3 h = 0.5f * size;
@@ -49,7 +50,8 @@ Mesh makeBoxMesh(const std::string& name, const glm::vec3& size, int material) {
 }
 
 Mesh makePlaneMesh(const std::string& name, float size, int material, int subdivisions) {
-    Mesh mesh{name, {}};
+    Mesh mesh;
+    mesh.name = name;
     Primitive p;
     p.material = material;
     const int n = std::max(subdivisions, 1);
@@ -131,17 +133,8 @@ int addCameraNode(Scene& scene, const Camera& camera, const glm::vec3& position,
 
 namespace lit {
 
-bool addDefaultLightAndCamera(Scene& scene, Log& log) {
+bool addDefaultCamera(Scene& scene, Log& log) {
     bool added = false;
-    if (scene.lights.empty()) {
-        Light sun;
-        sun.name = "default sun";
-        sun.type = LightType::Directional;
-        sun.intensity = 3.0f;
-        addLightNode(scene, sun, glm::vec3(0.0f), glm::vec3(-0.3f, -1.0f, -0.45f));
-        log.info("the scene has no lights: added a default directional light (3 lx from above)");
-        added = true;
-    }
     if (scene.cameras.empty()) {
         const Aabb bounds = scene.worldBounds();
         if (!bounds.empty()) {
@@ -149,8 +142,10 @@ bool addDefaultLightAndCamera(Scene& scene, Log& log) {
             Camera camera;
             camera.name = "default camera";
             camera.yfov = framing.yfov;
-            camera.znear = framing.znear;
-            camera.zfar = framing.zfar;
+            // Not the framing view's planes: its near plane is metres from a large scene's
+            // outside, and the camera is meant to fly in.
+            camera.znear = 0.05f;
+            camera.zfar = 0.0f;
             addCameraNode(scene, camera, framing.position, framing.position + framing.forward());
             log.info("the scene has no cameras: added a default camera framing its bounds");
             added = true;

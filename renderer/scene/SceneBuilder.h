@@ -29,8 +29,10 @@ glm::quat rotationLookingAlong(const glm::vec3& direction);
 namespace lit {
 class Log;
 
-// Gives a scene without lights a directional "sun" (3 lux from above, slightly tilted so walls
-// facing it are lit too) and a scene without cameras a camera framing its bounds; each addition is
-// reported in `log`. Returns true if anything was added. Front ends call it after loading.
-bool addDefaultLightAndCamera(Scene& scene, Log& log);
+// Gives a scene without cameras a camera framing its bounds (near plane 5 cm, far plane fitted
+// when rendering, so flying inside the scene clips nothing), reported in `log`. Returns true if
+// it added one. Front ends call it after loading. A scene without lights gets no light node: the
+// renderer lights it with a default sun and sky instead (RenderSettings sky fields, scene/Sky.h),
+// which a save does not write into the file.
+bool addDefaultCamera(Scene& scene, Log& log);
 }  // namespace lit

@@ -12,6 +12,7 @@
 // it, and dividing it by a filtered opacity below 1 would brighten it by 1/a.)
 #include "voxel.glsl"
 #include "brdf.glsl"
+#include "sky.glsl"
 
 layout(binding = LIT_TEX_VOXEL_RADIANCE) uniform sampler3D voxelRadianceTexture;
 
@@ -57,8 +58,8 @@ vec2 volumeSpan(vec3 uvwOrigin, vec3 uvwPerMetre) {
 //   aperture     full apex angle (rad)
 //   maxDistance  world distance (m) after which the cone stops
 // Returns rgb: radiance arriving along the cone (W/(sr·m²)), averaged over its solid angle;
-// a: how much of the cone was blocked (0 open, 1 occluded). Space outside the volume is empty
-// and black (no sky light).
+// a: how much of the cone was blocked (0 open, 1 occluded). Space outside the volume is empty;
+// what is left of the cone when it leaves the volume or reaches maxDistance sees the sky.
 //
 // At distance t the cone is d = max(voxelSize, 2·t·tan(aperture/2)) wide and is sampled with one
 // trilinear lookup at mip level log2(d / voxelSize), whose voxels are d wide. Steps are
@@ -113,8 +114,8 @@ vec4 traceCone(vec3 origin, vec3 direction, float aperture, float maxDistance) {
         }
         t += stepLength;
     }
-    // Left the volume or reached maxDistance: the rest of the cone sees empty space (black).
-    return vec4(radiance, opacity);
+    // Left the volume or reached maxDistance: the unblocked rest of the cone sees the sky (sky.glsl).
+    return vec4(radiance + (1.0 - opacity) * skyConeRadiance(direction, aperture), opacity);
 }
 
 // An orthonormal basis (t, b, n) around a unit normal, continuous except at n.z = −1

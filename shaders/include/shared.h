@@ -24,6 +24,8 @@ using mat4 = glm::mat4;
 // ---- Shader storage buffer binding points ------------------------------------------------
 #define LIT_SSBO_LIGHTS 0      // GpuLight[lightCount]
 #define LIT_SSBO_MATERIALS 1   // GpuMaterial[materialCount]
+#define LIT_SSBO_LUMINANCE_HISTOGRAM 2  // uint[LIT_EXPOSURE_BINS]: auto exposure's log-luminance histogram
+#define LIT_SSBO_EXPOSURE 3             // vec4: x multiplier, y log2 multiplier (stops), z metered mean log2 luminance, w valid
 
 // ---- Uniform locations of per-draw values (layout(location = N) uniform ...) ----------------
 #define LIT_LOC_MODEL 0            // mat4 object → world
@@ -75,6 +77,9 @@ using mat4 = glm::mat4;
 #define LIT_TEX_HISTORY_GUIDE 28          // last frame's world normal (xyz) and clip w (m; 0 = background)
 #define LIT_DIFFUSE_ROTATION_STEPS 8      // temporal: the side cones turn by 72°/8 per frame (8-frame cycle)
 
+// Sky (sky.glsl, scene/Sky.h): an equirectangular radiance image, RGB32F, row 0 = straight up.
+#define LIT_TEX_SKY 24
+
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
 #define LIT_IMG_VOXEL_NORMAL 1
@@ -109,6 +114,19 @@ using mat4 = glm::mat4;
 #define LIT_SPECULAR_MAX_SAMPLES 8               // specular cones per pixel at most
 #define LIT_CONE_APERTURE_MAX 3.0                // rad, widest cone traceCone marches (apertures are clamped)
 #define LIT_CONE_REUSE_TOLERANCE 1e-3            // rad: specular cones this much narrower still reuse diffuse ones
+
+// ---- Sky and exposure (sky.glsl = scene/Sky.cpp; AutoExposurePass) ------------------------------
+#define LIT_SKY_NONE 0       // black
+#define LIT_SKY_UNIFORM 1    // FrameUniforms::skyZenith everywhere
+#define LIT_SKY_GRADIENT 2   // ground below the horizon, horizon → zenith above it
+#define LIT_SKY_HDR 3        // the LIT_TEX_SKY image
+#define LIT_SKY_GROUND_BLEND 4.0  // below the horizon the ground colour is reached at −y = 1/4 (14.5°)
+#define LIT_EXPOSURE_BINS 64            // histogram bins; bin 0 counts black pixels (not metered)
+#define LIT_EXPOSURE_LOG2_MIN -16.0     // log2 luminance (W/(sr·m²)) of bin 1's lower edge
+#define LIT_EXPOSURE_LOG2_MAX 16.0      // and of the last bin's upper edge (0.5 stop per bin)
+#define LIT_EXPOSURE_LOW_PERCENT 0.10   // the darkest 10 % of metered pixels are ignored ...
+#define LIT_EXPOSURE_HIGH_PERCENT 0.95  // ... and the brightest 5 % (lamps, sky, speculars)
+#define LIT_EXPOSURE_GROUP_SIZE 16      // luminance_histogram.comp.glsl: 16×16 pixels per group
 
 // ---- Limits -------------------------------------------------------------------------------
 #define LIT_MAX_LIGHTS 64            // lights beyond this are ignored with a warning
@@ -159,6 +177,9 @@ struct FrameUniforms {
     vec4 viewport;         // width, height (pixels), 1/width, 1/height
     vec4 exposure;         // x linear exposure multiplier, y shadow PCF radius (texels), zw unused
     ivec4 counts;          // x light count, y view (LIT_VIEW_*), z shadow debug layer, w flags
+    vec4 skyZenith;        // rgb sky radiance straight up (W/(sr·m²)), w mode (LIT_SKY_*)
+    vec4 skyHorizon;       // rgb at the horizon, w intensity multiplier (all modes)
+    vec4 skyGround;        // rgb below the horizon, w unused
 };
 
 // One punctual light (KHR_lights_punctual). std430, binding LIT_SSBO_LIGHTS.
@@ -199,7 +220,7 @@ struct VoxelUniforms {
 
 #ifdef __cplusplus
 static_assert(sizeof(VoxelUniforms) == 5 * 16);
-static_assert(sizeof(FrameUniforms) == 4 * 64 + 4 * 16);
+static_assert(sizeof(FrameUniforms) == 4 * 64 + 7 * 16);
 static_assert(sizeof(GpuLight) == 5 * 16 + 64);
 static_assert(sizeof(GpuMaterial) == 6 * 16);
 static_assert(sizeof(ShadowPassUniforms) == 64 + 16);

@@ -242,3 +242,37 @@ expect_failure("spp without reference" 2 "--spp needs --reference"
   "${cornell}" --out "${OUT_DIR}/never.png" --spp 4)
 expect_failure("reference albedo view" 2 "--reference renders the views final"
   "${cornell}" --reference --view albedo --out "${OUT_DIR}/never.png")
+
+# ---- Scenes from Blender (tests/data/blender, tools/blender/make_scenes.py) ---------------------
+# --path NAME plays a camera animation made in Blender: "fly" is 3 s long (frames 1..73 at
+# 24 fps), so at 2 fps it is 7 frames (start and end included), and the camera moves.
+set(blender_point "${SOURCE_DIR}/tests/data/blender/point.gltf")
+set(fly_dir "${OUT_DIR}/fly_frames")
+run_lit_render("${blender_point}" --path fly --fps 2 --frames-out "${fly_dir}" --size 32x32 --gi off)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "--path fly failed (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
+endif()
+file(GLOB fly_frames "${fly_dir}/frame_*.png")
+list(LENGTH fly_frames fly_count)
+if(NOT fly_count EQUAL 7)
+  message(FATAL_ERROR "expected 7 frames of Blender's 'fly' animation, found ${fly_count}\nstdout:\n${out}")
+endif()
+file(MD5 "${fly_dir}/frame_00000.png" fly_first)
+file(MD5 "${fly_dir}/frame_00006.png" fly_last)
+if(fly_first STREQUAL fly_last)
+  message(FATAL_ERROR "the first and last frames of 'fly' are identical: the camera did not move")
+endif()
+expect_failure("unknown animation" 2 "no camera animation 'walk'.*'fly'"
+  "${blender_point}" --path walk --frames-out "${OUT_DIR}/never_walk")
+
+# Exposure in stops, auto exposure and the sky flags are accepted; auto exposure reports its value.
+run_lit_render("${blender_point}" --out "${OUT_DIR}/auto.png" --size 32x32 --gi off --auto-exposure on --ev 0.5)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "auto exposure: [-+][0-9.]+ EV")
+  message(FATAL_ERROR "--auto-exposure on printed no metered exposure (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
+endif()
+# A sky image that cannot be read is reported and the gradient sky is used instead.
+run_lit_render("${SOURCE_DIR}/assets/cornell_box.gltf" --out "${OUT_DIR}/sky.png" --size 32x32 --gi off
+  --sky-hdr "${OUT_DIR}/no_such_sky.hdr")
+if(NOT rc EQUAL 0 OR NOT err MATCHES "no_such_sky\\.hdr.*gradient")
+  message(FATAL_ERROR "a missing sky image was not reported (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
+endif()

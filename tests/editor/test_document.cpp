@@ -293,7 +293,7 @@ TEST(Document, RenderSettingsChangesAreUnsavedButNotTheOutputSize) {
     EXPECT_FALSE(doc.canUndo());  // settings are not undo steps
     doc.markSaved();
     EXPECT_FALSE(doc.dirty());
-    doc.settings.exposure *= 2.0f;
+    doc.settings.exposureEv += 1.0f;
     EXPECT_TRUE(doc.dirty());
 }
 

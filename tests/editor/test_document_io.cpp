@@ -113,6 +113,8 @@ TEST(DocumentIO, OpenMissingFileThrows) {
     EXPECT_THROW(openDocument(freshFolder("missing") / "nope.gltf", log), SceneLoadError);
 }
 
+// A scene without lights gets no light node (the renderer lights it with its default sun and
+// sky, which a save does not write); a scene without cameras gets a camera.
 TEST(DocumentIO, OpenGivesASceneWithoutLightsAndCamerasDefaults) {
     const fs::path folder = freshFolder("defaults");
     Scene scene;
@@ -122,13 +124,12 @@ TEST(DocumentIO, OpenGivesASceneWithoutLightsAndCamerasDefaults) {
     Log log;
     quiet(log);
     const Document doc = openDocument(folder / "bare.gltf", log);
-    EXPECT_EQ(doc.scene.lights.size(), 1u);
+    EXPECT_EQ(doc.scene.lights.size(), 0u);
     EXPECT_EQ(doc.scene.cameras.size(), 1u);
     EXPECT_TRUE(doc.cameraPath.empty());
     EXPECT_EQ(doc.settings, RenderSettings{});
     EXPECT_EQ(doc.file, folder / "bare.gltf");
     EXPECT_FALSE(doc.dirty());
-    EXPECT_TRUE(logged(log, LogLevel::Info, "no lights"));
     EXPECT_TRUE(logged(log, LogLevel::Info, "no cameras"));
 }
 
@@ -177,7 +178,7 @@ TEST(DocumentIO, SaveAndOpenKeepEveryEdit) {
     const CameraPath path(fixturePath().keys(), options);
     doc.edit("Path", Change::CameraPath, [&](Scene&) { doc.cameraPath = path; });
     doc.settings.gi = false;
-    doc.settings.exposure = 2.5f;
+    doc.settings.exposureEv = 1.5f;
     doc.settings.view = View::Albedo;
     doc.settings.voxelResolution = 64;
     ASSERT_TRUE(doc.dirty());
@@ -293,7 +294,7 @@ TEST(Autosave, WritesAfterTheIntervalOnlyWhenDirty) {
 TEST(Autosave, ACrashLeavesARecoverableCopy) {
     const fs::path folder = freshFolder("autosave_crash");
     Document doc = fixtureDocument();
-    doc.settings.exposure = 3.0f;
+    doc.settings.exposureEv = 3.0f;
     {
         Autosave crashed(folder, 60.0);
         moveBox(doc, 4.0f);
@@ -320,7 +321,7 @@ TEST(Autosave, ACrashLeavesARecoverableCopy) {
     const Document recovered = next.recover(log);
     EXPECT_EQ(recovered.scene.nodes[0].translation.x, 4.0f);
     EXPECT_EQ(recovered.file, fs::path("fixture.gltf"));
-    EXPECT_EQ(recovered.settings.exposure, 3.0f);
+    EXPECT_EQ(recovered.settings.exposureEv, 3.0f);
     EXPECT_EQ(recovered.cameraPath.keys().size(), 2u);
     EXPECT_TRUE(recovered.dirty());
     EXPECT_FALSE(next.recoverable());

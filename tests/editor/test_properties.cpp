@@ -116,7 +116,7 @@ TEST(Properties, RotationIsXyzEulerDegrees) {
 TEST(Properties, AlbedoTextureOffAndOnAgain) {
     Document doc = fixtureDocument();
     doc.scene.images.push_back(Image{"white", "", 1, 1, {255, 255, 255, 255}, true});
-    doc.scene.textures.push_back(Texture{0});
+    doc.scene.textures.push_back(Texture{.image = 0});
     doc.scene.materials[0].baseColorTexture = 0;
     doc.markSaved();
     doc.selectedNode = findNode(doc.scene, "Box");

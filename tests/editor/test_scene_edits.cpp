@@ -145,8 +145,9 @@ TEST(SceneEdits, DeleteRemovesSubtreeAndItsLightUndoRedoSave) {
     ASSERT_TRUE(doc.redo());
     EXPECT_TRUE(doc.capture() == after);
     const Document back = reopen(doc, "delete");
-    // The only light is gone, so opening adds the default sun (DocumentIO: addDefaultLightAndCamera).
-    EXPECT_EQ(back.scene.nodes.size(), nodes - 2 + 1);
+    // The only light is gone; opening adds no light node (the renderer lights a scene without
+    // lights with its default sun and sky, DocumentIO: addDefaultCamera).
+    EXPECT_EQ(back.scene.nodes.size(), nodes - 2);
     EXPECT_LT(findNode(back.scene, "Lamp"), 0);
     EXPECT_GE(findNode(back.scene, "Cam"), 0);
     EXPECT_EQ(deleteSelection(doc), "nothing is selected");

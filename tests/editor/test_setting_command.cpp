@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+
 #include "EditorState.h"
 #include "SettingCommand.h"
 
@@ -16,7 +19,11 @@ TEST(EditorSettingCommand, SetsNumbersBooleansAndViewNames) {
     EXPECT_EQ(applySetting(settings, "gi", "false"), "");
     EXPECT_FALSE(settings.gi);
     EXPECT_EQ(applySetting(settings, "exposure", "2.5"), "");
-    EXPECT_FLOAT_EQ(settings.exposure, 2.5f);
+    EXPECT_FLOAT_EQ(settings.exposureEv, std::log2(2.5f));  // the linear key of older scripts
+    EXPECT_EQ(applySetting(settings, "exposureEv", "-3.5"), "");
+    EXPECT_FLOAT_EQ(settings.exposureEv, -3.5f);
+    EXPECT_EQ(applySetting(settings, "skyZenith", "[0.5, 0.25, 1]"), "");
+    EXPECT_EQ(settings.skyZenith, (std::array<float, 3>{0.5f, 0.25f, 1.0f}));
     EXPECT_EQ(applySetting(settings, "view", "albedo"), "");
     EXPECT_EQ(settings.view, View::Albedo);
 }

@@ -18,7 +18,10 @@ Document sceneWithLightAndCamera() {
     const int box = addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), material), glm::vec3(0.0f));
     scene.nodes[static_cast<std::size_t>(box)].name = "Box";
     Log log;
-    addDefaultLightAndCamera(scene, log);
+    Light sun;
+    sun.type = LightType::Directional;
+    addLightNode(scene, sun, glm::vec3(0.0f), glm::vec3(-0.3f, -1.0f, -0.45f));
+    addDefaultCamera(scene, log);
     scene.updateWorldTransforms();
     return Document(std::move(scene), CameraPath{}, {});
 }

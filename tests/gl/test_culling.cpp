@@ -233,7 +233,7 @@ TEST_F(Culling, SponzaDrawCountsFromTheDefaultCamera) {
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "Sponza not found at " << path.string() << ": skipped";
     const auto start = std::chrono::steady_clock::now();
     Scene scene = loadGltf(path, log_);
-    addDefaultLightAndCamera(scene, log_);
+    addDefaultCamera(scene, log_);
     const double loadSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     RenderSettings settings = smallSettings();
     settings.width = 256;  // 16:9, the aspect of 1280×720: culling depends on the aspect, not the size
@@ -267,7 +267,7 @@ TEST_F(Culling, SponzaDrawCountsFromTheDefaultCamera) {
     camera.znear = 0.05f;
     camera.zfar = 2.0f * glm::length(size);
     addCameraNode(inside, camera, eye, target);
-    addDefaultLightAndCamera(inside, log_);
+    addDefaultCamera(inside, log_);
     const auto [insideOff, insideOn] = renderCullingOffAndOn(inside, settings);
     std::printf("Sponza (inside the atrium, 16:9): G-buffer draws %d with culling off, %d of %d with culling on; "
                 "triangles %zu -> %zu; culling %.3f ms CPU\n",

@@ -53,7 +53,7 @@ protected:
         if (!lights.lights.empty())
             lightBuffer_.update(0, lights.lights.size() * sizeof(gpu::GpuLight), lights.lights.data());
         gpu::FrameUniforms frame{};
-        frame.exposure = glm::vec4(settings.exposure, settings.shadowPcfRadius, 0.0f, 0.0f);
+        frame.exposure = glm::vec4(settings.exposureScale(), settings.shadowPcfRadius, 0.0f, 0.0f);
         frame.counts = glm::ivec4(static_cast<int>(lights.lights.size()), 0, 0, 0);
         frameBuffer_ = gl::Buffer("frame uniforms", sizeof frame, &frame, 0);
         shadow_ = std::make_unique<ShadowPass>(sourceDir() / "shaders");
@@ -419,6 +419,7 @@ TEST_F(VoxelInject, EmissiveMaterialGivesItsEmission) {
         RenderSettings settings;
         settings.voxelRadianceRgba8 = rgba8;
         settings.voxelRadianceRange = 8.0f;
+        settings.defaultSunIrradiance = 0.0f;  // really no light: not the default sun of a bare scene
         voxelize(scene, 64, settings);
         inject(scene, settings);
         const std::vector<glm::vec4> radiance = readRadianceVoxels(*volume_, 0, settings.voxelRadianceRange);

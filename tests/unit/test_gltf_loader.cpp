@@ -583,10 +583,11 @@ TEST(GltfLoader, PunctualLightsAreAttachedToNodes) {
     EXPECT_EQ(scene.lights[0].name, "sun");
     EXPECT_EQ(scene.lights[0].type, LightType::Directional);
     expectVec(scene.lights[0].color, {1.0f, 0.9f, 0.8f});
-    EXPECT_FLOAT_EQ(scene.lights[0].intensity, 3.0f);
+    // The file's photometric numbers (lux, candela) become W/m² and W/sr at 683 lm/W.
+    EXPECT_FLOAT_EQ(scene.lights[0].intensity, 3.0f / 683.0f);
     EXPECT_EQ(scene.lights[1].type, LightType::Point);
     EXPECT_FLOAT_EQ(scene.lights[1].range, 5.0f);
-    EXPECT_FLOAT_EQ(scene.lights[1].intensity, 100.0f);
+    EXPECT_FLOAT_EQ(scene.lights[1].intensity, 100.0f / 683.0f);
     expectVec(scene.lights[1].color, {1, 1, 1});
     EXPECT_EQ(scene.lights[2].type, LightType::Spot);
     EXPECT_FLOAT_EQ(scene.lights[2].innerConeAngle, 0.2f);

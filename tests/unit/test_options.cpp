@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -54,7 +56,7 @@ TEST(Options, EveryFlag) {
     const lit::RenderSettings s = lit::cli::applyOptions(o, lit::RenderSettings{});
     EXPECT_EQ(s.width, 320);
     EXPECT_EQ(s.height, 200);
-    EXPECT_FLOAT_EQ(s.exposure, 2.5f);
+    EXPECT_FLOAT_EQ(s.exposureEv, std::log2(2.5f));
     EXPECT_FALSE(s.shadows);
     EXPECT_EQ(s.view, lit::View::IndirectDiffuse);
     EXPECT_FALSE(s.gi);
@@ -87,12 +89,29 @@ TEST(Options, FlagsOverrideOnlyWhatTheyName) {
     base.width = 64;
     base.height = 48;
     base.gi = false;
-    base.exposure = 3.0f;
+    base.exposureEv = 3.0f;
     const lit::RenderSettings s = lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--gi", "on"}), base);
     EXPECT_EQ(s.width, 64);
     EXPECT_EQ(s.height, 48);
     EXPECT_TRUE(s.gi);
-    EXPECT_FLOAT_EQ(s.exposure, 3.0f);
+    EXPECT_FLOAT_EQ(s.exposureEv, 3.0f);
+}
+
+TEST(Options, ExposureStopsAutoExposureAndSky) {
+    const Options o = parseOptions({"x.gltf", "--out", "x.png", "--ev", "-2.5", "--auto-exposure", "on", "--sky-hdr", "e.hdr"});
+    const lit::RenderSettings s = lit::cli::applyOptions(o, lit::RenderSettings{});
+    EXPECT_FLOAT_EQ(s.exposureEv, -2.5f);
+    EXPECT_TRUE(s.autoExposure);
+    EXPECT_EQ(s.skyMode, lit::SkyMode::Hdr);
+    EXPECT_EQ(s.skyHdrPath, "e.hdr");
+    EXPECT_EQ(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--sky", "none"}), {}).skyMode,
+              lit::SkyMode::None);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--ev", "21"}), "--ev expects stops from -10 to 20, got '21'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--ev", "1", "--exposure", "2"}),
+              "--ev and --exposure both set the exposure; give one of them");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--sky", "blue"}),
+              "--sky expects auto, none, uniform, gradient or hdr, got 'blue'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--auto-exposure", "1"}), "--auto-exposure expects on or off, got '1'");
 }
 
 TEST(Options, EqualsFormAndUppercaseSizeSeparator) {

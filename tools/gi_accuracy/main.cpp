@@ -28,6 +28,7 @@
 #include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 #include "scene/SceneBuilder.h"
+#include "scene/Sky.h"
 #include "scene/Scene.h"
 #include "io/AtomicFile.h"
 
@@ -185,7 +186,16 @@ struct SceneReport {
 SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& renderer, Log& log) {
     SceneReport report;
     Scene scene = loadGltf(entry.file, log);
-    addDefaultLightAndCamera(scene, log);
+    addDefaultCamera(scene, log);
+    // A scene without lights gets the rasterizer's default sun as a light of its own, so that the
+    // reference (which adds no default light) and the rasterizer see the same light.
+    if (hasDefaultSun(scene, RenderSettings{})) {
+        Light sun;
+        sun.name = "default sun";
+        sun.type = LightType::Directional;
+        sun.intensity = RenderSettings{}.defaultSunIrradiance;
+        addLightNode(scene, sun, glm::vec3(0.0f), defaultSunDirection(RenderSettings{}));
+    }
     scene.updateWorldTransforms();
     const int size = args.size;
     CameraView camera = sceneCameraView(scene, entry.framedInside ? -1 : 0, 1.0f);

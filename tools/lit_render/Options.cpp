@@ -112,6 +112,27 @@ Options parseOptions(const std::vector<std::string>& args) {
             const auto exposure = parseFloat(text);
             if (!exposure || *exposure <= 0.0f) throw UsageError("--exposure expects a positive number, got '" + text + "'");
             options.exposure = *exposure;
+        } else if (flag == "--ev") {
+            const std::string text = value("stops");
+            const auto ev = parseFloat(text);
+            if (!ev || *ev < -10.0f || *ev > 20.0f) throw UsageError("--ev expects stops from -10 to 20, got '" + text + "'");
+            options.ev = *ev;
+        } else if (flag == "--auto-exposure") {
+            const std::string text = value("on or off");
+            if (text == "on")
+                options.autoExposure = true;
+            else if (text == "off")
+                options.autoExposure = false;
+            else
+                throw UsageError("--auto-exposure expects on or off, got '" + text + "'");
+        } else if (flag == "--sky") {
+            const std::string text = value("auto, none, uniform, gradient or hdr");
+            const auto mode = parseSkyMode(text);
+            if (!mode) throw UsageError("--sky expects auto, none, uniform, gradient or hdr, got '" + text + "'");
+            options.sky = *mode;
+        } else if (flag == "--sky-hdr") {
+            options.skyHdr = value("FILE.hdr");
+            if (options.skyHdr.empty()) throw UsageError("--sky-hdr expects a file name, got ''");
         } else if (flag == "--no-shadows") {
             noValue();
             options.noShadows = true;
@@ -222,6 +243,9 @@ Options parseOptions(const std::vector<std::string>& args) {
     }
 
     if (!haveScene) throw UsageError("no scene given (lit-render SCENE.gltf --out image.png)");
+    if (options.ev && options.exposure) throw UsageError("--ev and --exposure both set the exposure; give one of them");
+    if (!options.skyHdr.empty() && options.sky && *options.sky != SkyMode::Hdr)
+        throw UsageError("--sky-hdr needs --sky hdr (or no --sky)");
     if (options.path) {
         // A path renders many frames: its outputs and its camera are its own.
         if (!options.out.empty()) throw UsageError("--out writes one image; with --path use --frames-out DIR");
@@ -265,7 +289,14 @@ bool Options::pathIsFile() const { return path && lower(std::filesystem::path(*p
 RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.width) base.width = *options.width;
     if (options.height) base.height = *options.height;
-    if (options.exposure) base.exposure = *options.exposure;
+    if (options.exposure) base.exposureEv = std::log2(*options.exposure);
+    if (options.ev) base.exposureEv = *options.ev;
+    if (options.autoExposure) base.autoExposure = *options.autoExposure;
+    if (options.sky) base.skyMode = *options.sky;
+    if (!options.skyHdr.empty()) {
+        base.skyMode = SkyMode::Hdr;
+        base.skyHdrPath = options.skyHdr.string();
+    }
     if (options.noShadows) base.shadows = false;
     if (options.view) base.view = *options.view;
     if (options.gi) base.gi = *options.gi;
@@ -298,7 +329,8 @@ int resolveCamera(const Options& options, const Scene& scene) {
 
 std::string shortUsage() {
     return "usage: lit-render SCENE.gltf --out image.png [--hdr image.hdr] [--size WxH] [--camera NAME|INDEX]\n"
-           "                  [--exposure X] [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
+           "                  [--ev STOPS|--exposure X] [--auto-exposure on|off] [--sky MODE] [--sky-hdr FILE.hdr]\n"
+           "                  [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
            "                  [--culling on|off] [--indirect-scale 1|2|4] [--temporal on|off]\n"
            "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
            "       lit-render SCENE.gltf --path FILE.json|ANIMATION [--fps N] [--frames-out DIR] [--bench-path]\n"
@@ -317,7 +349,13 @@ std::string usageText() {
            "  --size WxH           output size in pixels, 1.." + std::to_string(kMaxImageSide) + " each (default: the settings', " + size + ")\n"
            "  --camera NAME|INDEX  scene camera by name or index (default: the scene's first camera, else a\n"
            "                       camera framing the whole scene)\n"
-           "  --exposure X         linear exposure multiplier before tone mapping (default 1)\n"
+           "  --ev STOPS           exposure in stops, -10..20: radiance x 2^STOPS before tone mapping (default 0;\n"
+           "                       with --auto-exposure on, a compensation of the metered value)\n"
+           "  --exposure X         the same as a linear multiplier (X = 2^STOPS)\n"
+           "  --auto-exposure on|off  meter the image (log-luminance histogram) and expose it to middle grey\n"
+           "  --sky MODE           auto (gradient sky and a sun when the scene has no lights, else none), none,\n"
+           "                       uniform, gradient or hdr (default auto)\n"
+           "  --sky-hdr FILE.hdr   equirectangular Radiance .hdr environment (implies --sky hdr)\n"
            "  --no-shadows         render without shadow maps\n"
            "  --allow-external-uris  let the scene read buffers and images outside its folder\n"
            "                       (absolute paths, '..', file:); off: such a scene is refused\n"

@@ -40,7 +40,11 @@ struct Options {
     std::filesystem::path hdr;         // optional Radiance .hdr of the linear image
     std::optional<int> width, height;  // pixels; unset = the settings' size
     std::optional<std::string> camera; // camera name or index as typed; unset = the scene's first
-    std::optional<float> exposure;     // linear multiplier
+    std::optional<float> exposure;     // --exposure: linear multiplier (stored as log2 stops)
+    std::optional<float> ev;           // --ev: exposure in stops (2^ev), −10..+20
+    std::optional<bool> autoExposure;  // --auto-exposure on|off
+    std::optional<SkyMode> sky;        // --sky auto|none|uniform|gradient|hdr
+    std::filesystem::path skyHdr;      // --sky-hdr FILE.hdr (implies --sky hdr)
     bool noShadows = false;
     bool allowExternalUris = false;    // --allow-external-uris: buffers/images outside the scene's folder
     std::optional<View> view;

@@ -21,6 +21,7 @@
 #include "scene/GltfLoader.h"
 #include "scene/SceneBuilder.h"
 #include "scene/Scene.h"
+#include "scene/Sky.h"
 #include "reference/PathTracer.h"
 #include "reference/ReferenceScene.h"
 
@@ -113,7 +114,7 @@ void checkSettingsFile(const fs::path& path, const std::string& text, lit::Rende
     clampWarn("specularSamples", settings.specularSamples, 1, 8);
     clampWarn("voxelSliceAxis", settings.voxelSliceAxis, 0, 2);
     clampWarn("voxelSlice", settings.voxelSlice, 0.0f, 1.0f);
-    clampWarn("exposure", settings.exposure, 0.0f, 1e6f);
+    clampWarn("exposureEv", settings.exposureEv, -10.0f, 20.0f);
     clampWarn("coneStepScale", settings.coneStepScale, 0.05f, 4.0f);
     clampWarn("maxTraceDistance", settings.maxTraceDistance, 0.0f, 2.0f);
 }
@@ -355,6 +356,30 @@ private:
     double lastPrint_ = 0.0;  // seconds since start_
 };
 
+// Load progress on stderr, for long loads only: silent for the first second, then one line per
+// stage ("loading: images 12/69, 4.2 s") when the stage changes or a second has passed, and the
+// GPU upload as its own stage. Uses the loader's progress callback (GltfLoadOptions::progress),
+// which the editor's progress window reads as well.
+class LoadProgressPrinter {
+public:
+    void operator()(const lit::LoadProgress& p) {
+        const double elapsed = secondsSince(start_);
+        const bool newStage = p.stage != stage_;
+        stage_ = p.stage;
+        if (elapsed < 1.0 || (!newStage && elapsed - lastPrint_ < 1.0 && p.done < p.total)) return;
+        lastPrint_ = elapsed;
+        std::fprintf(stderr, "loading: %s %d/%d, %.1f s\n", p.stage.c_str(), p.done, p.total, elapsed);
+        std::fflush(stderr);
+    }
+    void stage(const char* name) { (*this)(lit::LoadProgress{name, 0, 1}); }
+    void done(const char* name) { (*this)(lit::LoadProgress{name, 1, 1}); }
+
+private:
+    Clock::time_point start_ = Clock::now();
+    std::string stage_;
+    double lastPrint_ = -1.0;
+};
+
 // The camera path --path names: a .json file, or a camera animation in the scene file. Runs
 // before any GL work so a bad path is reported at once.
 lit::CameraPath loadPath(const Options& options) {
@@ -555,7 +580,18 @@ extern "C" void onInterrupt(int) { interruptRequested().store(true); }
 int runReference(const Options& options, const lit::Scene& scene, int cameraIndex, const lit::RenderSettings& settings,
                  lit::Log& log) {
     const Clock::time_point buildStart = Clock::now();
-    const lit::reference::ReferenceScene referenceScene(scene, log);
+    // A scene without lights is lit by the rasterizer's default sun (scene/Sky.h); give the
+    // reference the same sun as a light of its own copy of the scene.
+    lit::Scene withSun = scene;
+    if (lit::hasDefaultSun(scene, settings)) {
+        lit::Light sun;
+        sun.name = "default sun";
+        sun.type = lit::LightType::Directional;
+        sun.intensity = settings.defaultSunIrradiance;
+        lit::addLightNode(withSun, sun, glm::vec3(0.0f), lit::defaultSunDirection(settings));
+        withSun.updateWorldTransforms();
+    }
+    const lit::reference::ReferenceScene referenceScene(withSun, log);
     const double buildSeconds = secondsSince(buildStart);
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
     const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
@@ -564,6 +600,10 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
     // Without --bounces the reference follows --gi: one bounce like the VCT, or direct light only.
     reference.bounces = options.bounces.value_or(settings.gi ? 1 : 0);
     reference.seed = options.seed.value_or(0);
+    // Rays that leave the scene see the same sky as the rasterizer's background and cones.
+    std::string skyError;
+    reference.environment = lit::makeSkyFunction(scene, settings, &skyError);
+    if (!skyError.empty()) log.error(skyError + "; using the gradient sky");
     lit::reference::PathTracer tracer(referenceScene, camera, settings.width, settings.height, reference);
 
     interruptRequested().store(false);
@@ -616,7 +656,7 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
     const std::vector<float> rgb = tracer.image().viewRgb(settings.view, settings);
     std::string written;
     if (!options.out.empty()) {
-        lit::writePng(options.out, settings.width, settings.height, lit::reference::toneMapToRgba8(rgb, settings.exposure));
+        lit::writePng(options.out, settings.width, settings.height, lit::reference::toneMapToRgba8(rgb, settings.exposureScale()));
         written = options.out.string();
     }
     if (!options.hdr.empty()) {
@@ -688,9 +728,11 @@ int run(const Options& options) {
     if (!options.framesOut.empty()) checkWritableFolder(options.framesOut / "frame_00000.png", "the frames");
 
     lit::Scene scene;
+    LoadProgressPrinter loadProgress;
     try {
         lit::GltfLoadOptions loadOptions;
         loadOptions.limits.allowExternalUris = options.allowExternalUris;
+        loadOptions.progress = [&](const lit::LoadProgress& p) { loadProgress(p); };
         scene = lit::loadGltf(options.scene, log, loadOptions);  // logs the summary line (meshes, triangles, MB, ms)
     } catch (const std::exception& e) {
         // The loader's messages usually start with the path already; say it once.
@@ -699,7 +741,7 @@ int run(const Options& options) {
         if (reason.starts_with(prefix)) reason.erase(0, prefix.size());
         throw UsageError("cannot load " + options.scene.string() + ": " + reason);
     }
-    lit::addDefaultLightAndCamera(scene, log);
+    lit::addDefaultCamera(scene, log);
     const int cameraIndex = lit::cli::resolveCamera(options, scene);
     if (options.reference) return runReference(options, scene, cameraIndex, settings, log);
     const std::optional<lit::CameraPath> path = options.path ? std::optional(loadPath(options)) : std::nullopt;
@@ -727,7 +769,9 @@ int run(const Options& options) {
     const fs::path shaderRoot = lit::defaultShaderRoot();
     log.info("shaders from " + shaderRoot.string());  // installed, $LIT_SHADER_DIR or source tree
     lit::Renderer renderer(shaderRoot, log);
+    loadProgress.stage("upload");
     renderer.setScene(scene);
+    loadProgress.done("upload");
     if (path) return runPath(options, *path, scene, renderer, settings, context, requireNoGlErrors);
 
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
@@ -747,6 +791,7 @@ int run(const Options& options) {
         if (options.benchFrames > 0) recordBenchFrame(bench, passIndex, renderer, frameStart);
     }
     glFinish();
+    if (settings.autoExposure) std::printf("auto exposure: %+.2f EV\n", static_cast<double>(renderer.exposureEv(settings)));
     if (options.benchFrames > 0 && settings.gi) bench.mipmaps = renderer.benchmarkMipmaps(7);
     if (options.giUpdateRounds > 0 && settings.gi) benchGiUpdates(options.giUpdateRounds, scene, camera, renderer, settings);
 
