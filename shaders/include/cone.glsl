@@ -306,14 +306,12 @@ bool specularCanReuseDiffuseCones(float alpha, int count, float diffuseAperture)
     return specularConeAperture(alpha, count) >= diffuseAperture - LIT_CONE_REUSE_TOLERANCE;
 }
 
-// Indirect specular radiance L_IS for a surface with normal n (unit, facing v), view vector v
-// (unit, towards the eye), F0 and perceptual roughness, from `count` (1..8) importance-sampled
-// cones, or when `reuseDiffuse` from the diffuse cones' radiance `cones` in the same directions
-// (see specularCanReuseDiffuseCones; the diffuse cones must be traced around the same n).
-vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, vec3 f0, float roughness, int count, vec2 pixel, int frameIndex,
-                   float maxDistance, bool reuseDiffuse, vec3 cones[kDiffuseConeCount]) {
+// The lobe-averaged radiance ⟨L⟩ of traceSpecular below, without the directional albedo E, with
+// the diffuse cones `cones` traced in `basis` when `reuseDiffuse`. The reduced-resolution pass
+// stores it and applies E per pixel.
+vec3 traceSpecularLobe(vec3 origin, vec3 n, mat3 basis, vec3 v, float roughness, int count, vec2 pixel, int frameIndex,
+                       float maxDistance, bool reuseDiffuse, vec3 cones[kDiffuseConeCount]) {
     float alpha = alphaFromRoughness(roughness);
-    mat3 basis = tangentFrame(n);
     float aperture = specularConeAperture(alpha, count);
     vec3 weightedRadiance = vec3(0.0);
     float weightSum = 0.0;
@@ -322,7 +320,6 @@ vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, vec3 f0, float roughness, int co
         vec3 l;
         float w = ggxSampleWeight(n, v, h, alpha, l);
         if (w <= 0.0) continue;
-        // basis is orthonormal: its transpose takes world directions to tangent space.
         vec3 radiance = reuseDiffuse ? radianceFromDiffuseCones(normalize(l * basis), cones)
                                      : traceCone(origin, l, aperture, maxDistance).rgb;
         weightedRadiance += w * radiance;
@@ -335,5 +332,16 @@ vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, vec3 f0, float roughness, int co
                                         : traceCone(origin, mirror, aperture, maxDistance).rgb;
         weightSum = 1.0;
     }
-    return specularAlbedo(f0, roughness, max(dot(n, v), 0.0)) * weightedRadiance / weightSum;
+    return weightedRadiance / weightSum;
+}
+
+// Indirect specular radiance L_IS for a surface with normal n (unit, facing v), view vector v
+// (unit, towards the eye), F0 and perceptual roughness, from `count` (1..8) importance-sampled
+// cones, or when `reuseDiffuse` from the diffuse cones' radiance `cones` in the same directions
+// (see specularCanReuseDiffuseCones; the diffuse cones must be traced around the same n).
+vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, vec3 f0, float roughness, int count, vec2 pixel, int frameIndex,
+                   float maxDistance, bool reuseDiffuse, vec3 cones[kDiffuseConeCount]) {
+    vec3 lobe = traceSpecularLobe(origin, n, tangentFrame(n), v, roughness, count, pixel, frameIndex, maxDistance,
+                                  reuseDiffuse, cones);
+    return specularAlbedo(f0, roughness, max(dot(n, v), 0.0)) * lobe;
 }

@@ -67,29 +67,4 @@ vec3 traceDiffuseInFrame(vec3 origin, mat3 basis, float aperture, float maxDista
     return sum;
 }
 
-// traceSpecular of cone.glsl without the directional albedo E (the lobe-averaged radiance ⟨L⟩),
-// with the diffuse cones `cones` traced in `basis` when `reuseDiffuse`.
-vec3 traceSpecularLobe(vec3 origin, vec3 n, mat3 basis, vec3 v, float roughness, int count, vec2 pixel, int frameIndex,
-                       float maxDistance, bool reuseDiffuse, vec3 cones[kDiffuseConeCount]) {
-    float alpha = alphaFromRoughness(roughness);
-    float aperture = specularConeAperture(alpha, count);
-    vec3 weightedRadiance = vec3(0.0);
-    float weightSum = 0.0;
-    for (int k = 0; k < count; ++k) {
-        vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, pixel, frameIndex), alpha);
-        vec3 l;
-        float w = ggxSampleWeight(n, v, h, alpha, l);
-        if (w <= 0.0) continue;
-        vec3 radiance = reuseDiffuse ? radianceFromDiffuseCones(normalize(l * basis), cones)
-                                     : traceCone(origin, l, aperture, maxDistance).rgb;
-        weightedRadiance += w * radiance;
-        weightSum += w;
-    }
-    if (weightSum <= 0.0) {
-        vec3 mirror = reflect(-v, n);
-        weightedRadiance = reuseDiffuse ? radianceFromDiffuseCones(normalize(mirror * basis), cones)
-                                        : traceCone(origin, mirror, aperture, maxDistance).rgb;
-        weightSum = 1.0;
-    }
-    return weightedRadiance / weightSum;
-}
+// traceSpecularLobe (the lobe-averaged radiance without the directional albedo) is in cone.glsl.
