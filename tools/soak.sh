@@ -80,21 +80,44 @@ for _ in $(seq 1 $((minutes * 60 + 100))); do block >> "$script"; done
 
 log="$work/editor.log"
 samples="$work/rss.txt"
+pidfile="$work/editor.pid"
 : > "$samples"
+rm -f "$pidfile"
+# The editor writes its own pid through a one-line wrapper: looking it up by name can find
+# xvfb-run itself (its command line holds the editor's), which then outlives a TERM and leaves
+# the editor running with nobody to stop it.
 LIT_SHADER_DIR="$work/shaders" XDG_STATE_HOME="$work/state" \
-    xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$work/scene/cornell_box.gltf" --size 640x360 --script "$script" \
+    xvfb-run -a -s "-screen 0 1280x720x24" \
+    bash -c 'echo $$ > "$0"; exec "$@"' "$pidfile" "$editor" "$work/scene/cornell_box.gltf" --size 640x360 --script "$script" \
     > "$log" 2>&1 &
 runner=$!
 
-# The editor's own pid (xvfb-run runs it as a child).
+# Stops the editor, lets xvfb-run clean up its X server, and kills what is left after 10 s.
+stop_all() {
+    [ -n "${pid:-}" ] && kill -TERM "$pid" 2>/dev/null || true
+    for _ in $(seq 1 100); do
+        kill -0 "$runner" 2>/dev/null || break
+        sleep 0.1
+    done
+    if kill -0 "$runner" 2>/dev/null; then
+        echo "soak: the editor did not stop on TERM within 10 s; killing it" >&2
+        [ -n "${pid:-}" ] && kill -KILL "$pid" 2>/dev/null || true
+        sleep 1
+        kill -TERM "$runner" 2>/dev/null || true
+        sleep 1
+        kill -KILL "$runner" 2>/dev/null || true
+    fi
+    wait "$runner" 2>/dev/null || true
+}
+trap stop_all EXIT
+
 pid=""
-for _ in $(seq 1 200); do
-    pid=$(pgrep -n -P "$runner" -f lit-editor || true)
-    [ -z "$pid" ] && pid=$(pgrep -n -f "$editor $work/scene" || true)
-    [ -n "$pid" ] && break
+for _ in $(seq 1 600); do
+    [ -s "$pidfile" ] && pid=$(cat "$pidfile") && break
+    kill -0 "$runner" 2>/dev/null || break
     sleep 0.1
 done
-[ -n "$pid" ] || { echo "soak: the editor did not start" >&2; cat "$log" >&2; exit 1; }
+[ -n "$pid" ] || { echo "soak: the editor did not start within 60 s" >&2; cat "$log" >&2; exit 1; }
 
 start=$(date +%s)
 end=$((start + minutes * 60))
@@ -112,8 +135,8 @@ while [ "$(date +%s)" -lt "$end" ] && kill -0 "$pid" 2>/dev/null; do
 done
 alive=1
 kill -0 "$pid" 2>/dev/null || alive=0
-[ "$alive" -eq 1 ] && kill -TERM "$pid" 2>/dev/null || true
-wait "$runner" 2>/dev/null || true
+stop_all
+trap - EXIT
 [ "$alive" -eq 1 ] || { echo "soak: the editor ended before $minutes min:" >&2; tail -20 "$log" >&2; exit 1; }
 
 gl_errors=$(grep -c "error: GL " "$log" || true)
