@@ -37,7 +37,23 @@ bool operator==(const EditableState& a, const EditableState& b) {
     return sameNodes(a.nodes, b.nodes) && a.materials == b.materials && a.lights == b.lights &&
            a.cameras == b.cameras && a.pathKeys == b.pathKeys && a.pathOptions == b.pathOptions &&
            a.meshCount == b.meshCount && a.primitiveMaterials == b.primitiveMaterials &&
-           a.cameraPathName == b.cameraPathName;
+           a.cameraPathName == b.cameraPathName && a.animationChannels == b.animationChannels &&
+           a.skinNodes == b.skinNodes;
+}
+
+std::vector<std::vector<Animation::Channel>> animationChannelsOf(const Scene& scene) {
+    std::vector<std::vector<Animation::Channel>> channels;
+    for (const Animation& animation : scene.animations) channels.push_back(animation.channels);
+    return channels;
+}
+
+std::vector<std::vector<int>> skinNodesOf(const Scene& scene) {
+    std::vector<std::vector<int>> nodes;
+    for (const Skin& skin : scene.skins) {
+        nodes.push_back(skin.joints);
+        nodes.back().push_back(skin.skeleton);
+    }
+    return nodes;
 }
 
 Document::Document(Scene scene_, CameraPath path, std::filesystem::path file_)
@@ -50,7 +66,7 @@ Document::Document(Scene scene_, CameraPath path, std::filesystem::path file_)
 EditableState Document::capture() const {
     return EditableState{scene.nodes,       scene.materials,      scene.lights,        scene.cameras,
                          cameraPath.keys(), cameraPath.options(), scene.meshes.size(), primitiveMaterialsOf(scene),
-                         cameraPathName};
+                         cameraPathName,    animationChannelsOf(scene), skinNodesOf(scene)};
 }
 
 bool Document::matches(const EditableState& state) const {
@@ -58,7 +74,8 @@ bool Document::matches(const EditableState& state) const {
            scene.lights == state.lights && scene.cameras == state.cameras &&
            cameraPath.keys() == state.pathKeys && cameraPath.options() == state.pathOptions &&
            scene.meshes.size() == state.meshCount && primitiveMaterialsOf(scene) == state.primitiveMaterials &&
-           cameraPathName == state.cameraPathName;
+           cameraPathName == state.cameraPathName && animationChannelsOf(scene) == state.animationChannels &&
+           skinNodesOf(scene) == state.skinNodes;
 }
 
 void Document::restore(const EditableState& state) {
@@ -112,6 +129,15 @@ void Document::restore(const EditableState& state) {
         ++scene.lightRevision;
     }
     scene.cameras = state.cameras;
+    // Edits never add or remove animations or skins, only renumber the nodes they name.
+    for (std::size_t a = 0; a < scene.animations.size() && a < state.animationChannels.size(); ++a)
+        scene.animations[a].channels = state.animationChannels[a];
+    for (std::size_t s = 0; s < scene.skins.size() && s < state.skinNodes.size(); ++s) {
+        const std::vector<int>& nodes = state.skinNodes[s];
+        if (nodes.empty()) continue;
+        scene.skins[s].joints.assign(nodes.begin(), nodes.end() - 1);
+        scene.skins[s].skeleton = nodes.back();
+    }
 
     if (selectedNode >= static_cast<int>(scene.nodes.size())) selectedNode = -1;
     std::erase_if(alsoSelected, [this](int n) { return n >= static_cast<int>(scene.nodes.size()) || n == selectedNode; });

@@ -37,6 +37,10 @@ struct EditableState {
     std::size_t meshCount = 0;
     std::vector<std::vector<int>> primitiveMaterials;
     std::string cameraPathName;  // the glTF animation the camera path is saved as
+    // What else names nodes, renumbered by a delete: each animation's channels, and each skin's
+    // joints followed by its skeleton node.
+    std::vector<std::vector<Animation::Channel>> animationChannels;
+    std::vector<std::vector<int>> skinNodes;
 };
 
 // Which revision counters an edit must bump so the renderer redoes the right work.

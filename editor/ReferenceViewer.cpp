@@ -36,7 +36,8 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
     }
     reference::ReferenceSettings referenceSettings;
     referenceSettings.bounces = settings.gi ? 1 : 0;  // the VCT's light paths
-    tracer_.update(scene, camera, settings.width, settings.height, referenceSettings);
+    // The same sky and default sun as the rasterizer (docs/REFERENCE.md).
+    tracer_.update(scene, camera, settings.width, settings.height, referenceSettings, &settings);
 
     const double now = nowSeconds();
     const reference::ProgressiveStatus status = tracer_.status();
@@ -50,7 +51,9 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
     }
     std::vector<std::uint8_t> bytes;
     if (mode_ == ReferenceMode::Reference) {
-        bytes = reference::toneMapToRgba8(rgb, settings.exposureScale());
+        // The exposure the rasterizer's last frame used (the metered one with auto exposure on),
+        // so the two views compare at the same brightness.
+        bytes = reference::toneMapToRgba8(rgb, std::exp2(renderer.exposureEv(settings)));
     } else {
         const std::vector<float> colours = reference::relativeErrorColours(renderer.readHdrRgb(), rgb, maxError_);
         bytes.assign(colours.size() / 3 * 4, 255);

@@ -309,6 +309,19 @@ std::string deleteSelection(Document& doc) {
             nodes.push_back(std::move(n));
         }
         scene.nodes = std::move(nodes);
+        // What else names nodes follows the renumbering: animation channels of deleted nodes go,
+        // and a skin with a deleted joint keeps -1 there (the writer then leaves it out).
+        const auto renumber = [&](int node) {
+            return node >= 0 && static_cast<std::size_t>(node) < count ? remap[static_cast<std::size_t>(node)] : -1;
+        };
+        for (Animation& animation : scene.animations) {
+            for (Animation::Channel& channel : animation.channels) channel.node = renumber(channel.node);
+            std::erase_if(animation.channels, [](const Animation::Channel& c) { return c.node < 0; });
+        }
+        for (Skin& skin : scene.skins) {
+            for (int& joint : skin.joints) joint = renumber(joint);
+            skin.skeleton = renumber(skin.skeleton);
+        }
         ++scene.lightRevision;
         rebuildRoots(scene);
     });

@@ -51,11 +51,39 @@ void addGizmo(const Document& doc, const CameraView& view, glm::vec2 viewport, c
     append(overlay.linesOnTop, gizmoLines(options.gizmoMode, view, viewport, origin, axes, options.hoveredGizmoAxis));
 }
 
-// The other selected nodes (the outline marks the active one): their bounds as boxes.
+// `node` and its descendants (their pixels carry their own node IDs), appended to `out`.
+void appendSubtree(const Scene& scene, int node, std::vector<int>& out) {
+    if (node < 0 || node >= static_cast<int>(scene.nodes.size())) return;
+    std::vector<int> stack{node};
+    for (std::size_t visited = 0; !stack.empty() && visited <= scene.nodes.size(); ++visited) {
+        const int n = stack.back();
+        stack.pop_back();
+        out.push_back(n);
+        for (const int child : scene.nodes[static_cast<std::size_t>(n)].children)
+            if (child >= 0 && child < static_cast<int>(scene.nodes.size())) stack.push_back(child);
+    }
+}
+
+bool subtreeHasMesh(const Scene& scene, int node) {
+    std::vector<int> nodes;
+    appendSubtree(scene, node, nodes);
+    return std::any_of(nodes.begin(), nodes.end(), [&](int n) { return scene.nodes[static_cast<std::size_t>(n)].mesh >= 0; });
+}
+
+// The selection outlined as Blender does: the active node with its descendants in light orange,
+// the other selected nodes with theirs in darker orange.
+void addSelectionOutline(const Document& doc, ViewportOverlay& overlay) {
+    appendSubtree(doc.scene, doc.selectedNode, overlay.activeOutline);
+    for (const int node : doc.selection())
+        if (node != doc.selectedNode) appendSubtree(doc.scene, node, overlay.selectedOutline);
+}
+
+// Selected nodes other than the active one that draw nothing (empties, lights and cameras with
+// no mesh below them) have no pixels to outline: their bounds as boxes.
 void addSelectionBoxes(const Document& doc, ViewportOverlay& overlay) {
     constexpr glm::vec4 kSelectedBoxColor{1.0f, 0.55f, 0.1f, 0.9f};
     for (const int node : doc.selection()) {
-        if (node == doc.selectedNode) continue;
+        if (node == doc.selectedNode || subtreeHasMesh(doc.scene, node)) continue;
         const Aabb box = nodeWorldBounds(doc.scene, node);
         for (int i = 0; i < 8; ++i)
             for (int bit : {1, 2, 4}) {
@@ -140,11 +168,13 @@ ViewportOverlay buildViewportOverlay(const Document& doc, const CameraView& view
                                      const OverlayOptions& options) {
     ViewportOverlay overlay;
     const bool selected = doc.selectedNode >= 0 && doc.selectedNode < static_cast<int>(doc.scene.nodes.size());
-    if (selected && options.selectionOutline) overlay.highlightNode = doc.selectedNode;
     if (options.markers) addMarkers(doc, view, viewport, overlay);
     if (options.cameraPath) addCameraPath(doc, view, viewport, overlay);
     if (options.gizmo && selected) addGizmo(doc, view, viewport, options, overlay);
-    if (options.selectionOutline) addSelectionBoxes(doc, overlay);
+    if (options.selectionOutline) {
+        addSelectionOutline(doc, overlay);
+        addSelectionBoxes(doc, overlay);
+    }
     if (options.coneSurface) addCones(doc, options, overlay);
     return overlay;
 }

@@ -16,15 +16,20 @@ struct OverlayLine {
 };
 
 struct ViewportOverlay {
-    // Node whose visible pixels get an orange outline (2 px, outside the object); -1 = none.
-    int highlightNode = -1;
+    // Nodes whose visible pixels get an outline (2 px, outside them), as Blender outlines a
+    // selection: the active node in light orange, the other selected nodes in a darker orange.
+    // A node's children draw with their own IDs, so a selected group lists its descendants too
+    // (the editor does: editor/ViewportOverlay.cpp). Scene node indices; a node in both lists
+    // is drawn as active.
+    std::vector<int> activeOutline;
+    std::vector<int> selectedOutline;
     // Depth-tested against the scene: the parts behind geometry are drawn faint, not hidden, so
     // markers inside walls stay findable.
     std::vector<OverlayLine> lines;
     // Never hidden (translate gizmo): drawn last, over everything.
     std::vector<OverlayLine> linesOnTop;
 
-    bool empty() const { return highlightNode < 0 && lines.empty() && linesOnTop.empty(); }
+    bool empty() const { return activeOutline.empty() && selectedOutline.empty() && lines.empty() && linesOnTop.empty(); }
 };
 
 // The surface seen through one pixel of the last frame, read back from the G-buffer.

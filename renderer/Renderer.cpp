@@ -466,13 +466,16 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     if (!r.overlay.empty()) {
         Profiler::Scope scope(r.profiler, "overlay");
         r.frameUniforms.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FRAME);
-        // The highlighted node's draw items' world boxes, as the BVH holds them for this frame.
-        Aabb highlightBounds;
+        // The outlined nodes' draw items' world boxes, as the BVH holds them for this frame.
+        const std::vector<std::uint32_t> outlined = OverlayPass::outlineClasses(r.overlay);
+        Aabb outlineBounds;
         const std::vector<DrawItem>& items = r.gpuScene->items();
-        for (std::size_t i = 0; i < items.size(); ++i)
-            if (items[i].node == r.overlay.highlightNode) highlightBounds.extend(r.bvh.itemBounds()[i]);
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            const auto id = static_cast<std::size_t>(items[i].node) + 1;
+            if (items[i].node >= 0 && id < outlined.size() && outlined[id] != 0) outlineBounds.extend(r.bvh.itemBounds()[i]);
+        }
         r.post.bindOutputTarget();
-        r.overlayPass.execute(r.overlay, r.gbuffer, highlightBounds, frame.viewProjection);
+        r.overlayPass.execute(r.overlay, r.gbuffer, outlineBounds, frame.viewProjection);
     }
     r.lastFrame = frame;
     r.lastVoxelSize = giWanted ? r.voxels.voxelSize() : 0.0f;

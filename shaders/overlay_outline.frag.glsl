@@ -1,33 +1,40 @@
 #version 450 core
-// Selection outline (OverlayPass): a pixel that does not show the highlighted node but lies within
-// kOutlineRadius pixels of one that does gets the outline colour; every other pixel is discarded.
-// The outline therefore sits outside the object's visible silhouette and never covers the object.
+// Selection outline (OverlayPass): a pixel that does not show an outlined node but lies within
+// kOutlineRadius pixels of one that does gets the outline colour, the active node's colour when
+// one of those is active (as in Blender); every other pixel is discarded. The outline therefore
+// sits outside the objects' visible silhouettes and never covers one of them.
 #include "shared.h"
 
 layout(binding = LIT_TEX_GBUFFER_ID) uniform usampler2D nodeIds;  // node index + 1, 0 = background
 
-uniform uint uNodeId;  // the highlighted node's ID (index + 1)
-uniform vec4 uColor;   // linear RGBA
+// Per node ID: 0 not outlined, 1 selected, 2 active. IDs past the end are not outlined.
+layout(std430, binding = LIT_SSBO_OUTLINE_CLASSES) readonly buffer OutlineClasses {
+    uint outlineClass[];
+};
+
+uniform vec4 uActiveColor;    // linear RGBA
+uniform vec4 uSelectedColor;  // linear RGBA
 
 layout(location = 0) out vec4 outColor;
 
 const int kOutlineRadius = LIT_OUTLINE_RADIUS;  // pixels
 
+uint classOf(uint id) { return id < uint(outlineClass.length()) ? outlineClass[id] : 0u; }
+
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    if (texelFetch(nodeIds, pixel, 0).r == uNodeId) discard;
+    if (classOf(texelFetch(nodeIds, pixel, 0).r) != 0u) discard;
     ivec2 size = textureSize(nodeIds, 0);
+    uint best = 0u;
     for (int dy = -kOutlineRadius; dy <= kOutlineRadius; ++dy) {
         for (int dx = -kOutlineRadius; dx <= kOutlineRadius; ++dx) {
             // A disc of radius 2 (the 5×5 square without its corners): rounder corners.
             if (dx * dx + dy * dy > kOutlineRadius * kOutlineRadius + 1) continue;
             ivec2 q = pixel + ivec2(dx, dy);
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-            if (texelFetch(nodeIds, q, 0).r == uNodeId) {
-                outColor = uColor;
-                return;
-            }
+            best = max(best, classOf(texelFetch(nodeIds, q, 0).r));
         }
     }
-    discard;
+    if (best == 0u) discard;
+    outColor = best == 2u ? uActiveColor : uSelectedColor;
 }

@@ -1,6 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Lit needs that are missing. Works as root on a fresh Debian 12
 # (bookworm); as another user it uses sudo when available, else prints the command to run.
+#
+#   tools/install-deps.sh                 what building, testing and running Lit need
+#   tools/install-deps.sh --scene-tools   also Blender and python3-numpy, to remake the Blender
+#                                         test scenes (tools/blender/make_scenes.py); Blender's
+#                                         glTF exporter imports numpy, and Debian's blender
+#                                         package does not depend on it. No test needs these.
 set -euo pipefail
 
 packages=(
@@ -14,6 +20,12 @@ packages=(
     xvfb xauth                                # editor tests without a display
     fonts-dejavu-core                         # editor UI font (falls back to ImGui's own)
 )
+for arg in "$@"; do
+    case "$arg" in
+        --scene-tools) packages+=(blender python3-numpy) ;;
+        *) echo "usage: tools/install-deps.sh [--scene-tools]" >&2; exit 2 ;;
+    esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

@@ -2,7 +2,8 @@
 # Regenerates the images under screenshots/ that the README shows, from the current build:
 # the Cornell box with GI off and on, each lighting term alone, the voxel view, and the editor
 # (its panels with a selection and a camera path, the voxel slice view, the cone directions view
-# and the performance overlay), the editor ones driven by a --script run.
+# and the performance overlay), the editor ones driven by a --script run, and Sponza lit by the
+# default sun and sky when the shared scenes are there.
 # Usage: tools/make-screenshots.sh [SIZE] (default 512x512; the editor is captured at 1280x720)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -81,4 +82,30 @@ screenshot $out/editor_rotate_gizmo.png ui
 quit
 SCRIPT
 xvfb-run -a -s "-screen 0 1280x720x24" "$build/editor/lit-editor" "$scene" --script "$script" --size 1280x720
+# Sponza (no lights, no camera: Lit's default sun and gradient sky light it, through the GI too)
+# from inside the atrium, at its east end 1.7 m above the floor looking down its length, when the
+# shared scenes are present (LIT_SCENES_DIR, else ../shared/scenes beside the checkout or the
+# worktree folder). Every render setting at its default.
+sponza=""
+for dir in "${LIT_SCENES_DIR:-}" "$root/../shared/scenes" "$root/../../shared/scenes"; do
+    if [ -n "$dir" ] && [ -f "$dir/sponza/Sponza.gltf" ]; then sponza="$dir/sponza/Sponza.gltf"; break; fi
+done
+if [ -n "$sponza" ]; then
+    cat >"$script" <<SCRIPT
+panel hierarchy off
+panel inspector off
+panel settings off
+panel camera off
+panel timeline off
+panel log off
+panel stats off
+camera 5.47 1.7 -0.31 -12.4 4.0 -0.31
+wait 8
+screenshot $out/sponza_sun_sky.png noui
+quit
+SCRIPT
+    xvfb-run -a -s "-screen 0 1280x720x24" "$build/editor/lit-editor" "$sponza" --script "$script" --size 1280x720
+else
+    echo "Sponza not found (set LIT_SCENES_DIR): screenshots/sponza_sun_sky.png not refreshed" >&2
+fi
 echo "screenshots written to $out"

@@ -70,7 +70,20 @@ glm::ivec4 OverlayPass::screenRect(const Aabb& box, const glm::mat4& viewProject
     return {x0.x, x0.y, x1.x - x0.x, x1.y - x0.y};
 }
 
-void OverlayPass::execute(const ViewportOverlay& overlay, const GBufferPass& gbuffer, const Aabb& highlightBounds,
+std::vector<std::uint32_t> OverlayPass::outlineClasses(const ViewportOverlay& overlay) {
+    std::vector<std::uint32_t> classes;
+    const auto mark = [&](int node, std::uint32_t value) {
+        if (node < 0) return;
+        const auto id = static_cast<std::size_t>(node) + 1;
+        if (classes.size() <= id) classes.resize(id + 1, 0);
+        classes[id] = std::max(classes[id], value);
+    };
+    for (int node : overlay.selectedOutline) mark(node, 1);
+    for (int node : overlay.activeOutline) mark(node, 2);
+    return classes;
+}
+
+void OverlayPass::execute(const ViewportOverlay& overlay, const GBufferPass& gbuffer, const Aabb& outlineBounds,
                           const glm::mat4& viewProjection) {
     const int width = gbuffer.depth().desc().width, height = gbuffer.depth().desc().height;
     glDisable(GL_DEPTH_TEST);
@@ -81,11 +94,22 @@ void OverlayPass::execute(const ViewportOverlay& overlay, const GBufferPass& gbu
     gbuffer.depth().bind(LIT_TEX_GBUFFER_DEPTH);
 
     // The outline reaches kOutlineRadius (2) pixels past the silhouette; 1 more for rounding.
-    const glm::ivec4 rect = screenRect(highlightBounds, viewProjection, width, height, kOutlineRadius + 1);
-    if (overlay.highlightNode >= 0 && rect.z > 0 && rect.w > 0) {
+    const glm::ivec4 rect = screenRect(outlineBounds, viewProjection, width, height, kOutlineRadius + 1);
+    const std::vector<std::uint32_t> classes = outlineClasses(overlay);
+    if (!classes.empty() && rect.z > 0 && rect.w > 0) {
+        if (classes.size() > outlineCapacity_) {
+            outlineCapacity_ = std::max<std::size_t>(256, std::bit_ceil(classes.size()));
+            outlineClasses_ = gl::Buffer("overlay outline classes", outlineCapacity_ * sizeof(std::uint32_t), nullptr,
+                                         GL_DYNAMIC_STORAGE_BIT);
+        }
+        // The whole buffer is read (the shader takes its length): clear what this frame does not set.
+        std::vector<std::uint32_t> upload(outlineCapacity_, 0);
+        std::copy(classes.begin(), classes.end(), upload.begin());
+        outlineClasses_.update(0, upload.size() * sizeof(std::uint32_t), upload.data());
+        outlineClasses_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OUTLINE_CLASSES);
         outline_.use();
-        glProgramUniform1ui(outline_.id(), outline_.location("uNodeId"), static_cast<GLuint>(overlay.highlightNode + 1));
-        glProgramUniform4fv(outline_.id(), outline_.location("uColor"), 1, kOutlineColor);
+        glProgramUniform4fv(outline_.id(), outline_.location("uActiveColor"), 1, kOutlineColor);
+        glProgramUniform4fv(outline_.id(), outline_.location("uSelectedColor"), 1, kSelectedOutlineColor);
         glEnable(GL_SCISSOR_TEST);
         glScissor(rect.x, rect.y, rect.z, rect.w);
         triangle_.draw();

@@ -1,6 +1,7 @@
 #include "reference/ProgressiveReference.h"
 
 #include "Log.h"
+#include "scene/Sky.h"
 
 #include <algorithm>
 #include <chrono>
@@ -22,7 +23,7 @@ ProgressiveReference::~ProgressiveReference() {
 }
 
 void ProgressiveReference::update(const Scene& scene, const CameraView& camera, int width, int height,
-                                  const ReferenceSettings& settings) {
+                                  const ReferenceSettings& settings, const RenderSettings* lighting) {
     Key key;
     key.geometry = scene.geometryRevision;
     key.material = scene.materialRevision;
@@ -35,6 +36,18 @@ void ProgressiveReference::update(const Scene& scene, const CameraView& camera, 
     key.height = height;
     key.bounces = settings.bounces;
     key.seed = settings.seed;
+    if (lighting) {
+        key.lighting = {true,
+                        static_cast<int>(lighting->skyMode),
+                        lighting->skyZenith,
+                        lighting->skyHorizon,
+                        lighting->skyGround,
+                        lighting->skyIntensity,
+                        lighting->skyHdrPath,
+                        lighting->defaultSunIrradiance,
+                        lighting->defaultSunElevation,
+                        lighting->defaultSunAzimuth};
+    }
     {
         std::lock_guard lock(mutex_);
         if (haveKey_ && key == key_) return;
@@ -46,6 +59,7 @@ void ProgressiveReference::update(const Scene& scene, const CameraView& camera, 
         job->width = width;
         job->height = height;
         job->settings = settings;
+        if (lighting) job->lighting = *lighting;
         pending_ = std::move(job);
         cancel_ = true;  // the running job (if any) stops after the tiles in flight
     }
@@ -92,6 +106,12 @@ void ProgressiveReference::run() {
         }
         try {
             job->scene.updateWorldTransforms();
+            if (job->lighting) {
+                // The sky first: with the default sun in, an Auto sky would see a lit scene. An
+                // unreadable .hdr gives the gradient, as in the rasterizer (which reports it).
+                job->settings.environment = makeSkyFunction(job->scene, *job->lighting);
+                addDefaultSun(job->scene, *job->lighting);
+            }
             const ReferenceScene scene(job->scene, quiet);
             PathTracer tracer(scene, job->camera, job->width, job->height, job->settings);
             const Clock::time_point start = Clock::now();

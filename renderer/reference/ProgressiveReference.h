@@ -7,11 +7,16 @@
 #include "reference/PathTracer.h"
 #include "scene/Scene.h"
 
+#include "RenderSettings.h"
+
+#include <array>
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -37,7 +42,12 @@ public:
     // the scene's revisions (geometry, material, light), the camera's matrices, the size or the
     // settings' bounces/seed differ from the running job; the scene is copied then, so the caller
     // may edit its own afterwards. Cheap when nothing changed.
-    void update(const Scene& scene, const CameraView& camera, int width, int height, const ReferenceSettings& settings);
+    // `lighting`: the render settings whose sky and default sun the reference shares with the
+    // rasterizer (scene/Sky.h), as lit-render --reference does: rays that leave the scene see
+    // makeSkyFunction(scene, *lighting) (replacing settings.environment), and a scene without
+    // lights gets the default sun. A change of those settings restarts too. Null: neither.
+    void update(const Scene& scene, const CameraView& camera, int width, int height, const ReferenceSettings& settings,
+                const RenderSettings* lighting = nullptr);
 
     // Linear RGB of `view` (bottom-up rows, settings' term switches for Final) from the latest
     // completed pass; false (and `rgb` untouched) before the first pass of the current job.
@@ -53,6 +63,17 @@ private:
         CameraView camera;
         int width = 0, height = 0;
         ReferenceSettings settings;
+        std::optional<RenderSettings> lighting;
+    };
+    // The RenderSettings fields the sky and the default sun depend on.
+    struct LightingKey {
+        bool given = false;
+        int skyMode = 0;
+        std::array<float, 3> zenith{}, horizon{}, ground{};
+        float skyIntensity = 0.0f;
+        std::string skyHdrPath;
+        float sunIrradiance = 0.0f, sunElevation = 0.0f, sunAzimuth = 0.0f;
+        bool operator==(const LightingKey&) const = default;
     };
     struct Key {
         std::uint64_t geometry = 0, material = 0, light = 0;
@@ -61,6 +82,7 @@ private:
         glm::mat4 view{1.0f}, projection{1.0f};
         int width = 0, height = 0, bounces = 0;
         std::uint64_t seed = 0;
+        LightingKey lighting;
         bool operator==(const Key&) const = default;
     };
     void run();

@@ -13,8 +13,13 @@
 //   GltfLoadOptions::decodeThreads); progress is reported on the calling thread. An image that
 //   is missing or cannot be decoded becomes 1×1 white with a warning, and materials that used it
 //   as a normal map drop the normal map (normalTexture = -1) so they fall back to vertex normals.
-// - Only mode TRIANGLES is imported; other primitive modes are skipped with a warning.
-//   Orthographic cameras become perspective cameras with yfov 0.8 (warning).
+// - Only mode TRIANGLES is drawn; primitives of other modes are kept for saving
+//   (Mesh::otherPrimitives, warning). Orthographic cameras are drawn as perspective cameras with
+//   yfov 0.8 (warning) and saved back as orthographic.
+// - What Lit does not draw is kept as the file had it, for a lossless save (scene/Scene.h):
+//   vertex attributes besides POSITION, NORMAL, TEXCOORD_0 and TANGENT, morph targets and
+//   weights, skins, texture coordinate sets. Unreadable kept data is reported and left out; the
+//   load goes on.
 
 #include "scene/GltfLoader.h"
 
@@ -46,7 +51,10 @@
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <map>
 #include <sstream>
+#include <string_view>
 #include <thread>
 
 namespace lit {
@@ -228,6 +236,18 @@ private:
     void loadLights(Scene& scene) const;
     void loadCameras(Scene& scene) const;
     void loadAnimations(Scene& scene) const;
+    void loadSkins(Scene& scene) const;
+    // An accessor's elements, any type, sparse ones expanded, for data Lit keeps without using.
+    // `expectedCount`: the element count the accessor must have (attributes: the vertex count);
+    // without one the accessor must have a buffer view (so its size is bounded by the file).
+    KeptAccessor keptAccessor(int index, const std::string& role, std::optional<std::size_t> expectedCount) const;
+    // The attributes of `attributes` except those named in `skip`; an unreadable one is reported
+    // and left out.
+    KeptAttributes keptAttributes(const std::map<std::string, int>& attributes, std::initializer_list<std::string_view> skip,
+                                  const std::string& where, std::size_t vertexCount) const;
+    std::vector<KeptAttributes> keptTargets(const tinygltf::Primitive& in, const std::string& where,
+                                            std::size_t vertexCount) const;
+    std::optional<KeptPrimitive> keptPrimitive(const tinygltf::Primitive& in, const std::string& where) const;
     void keepFileData(Scene& scene) const;
     int textureIndex(int index, const std::string& what) const;
 
@@ -543,7 +563,16 @@ void Loader::loadNodes(Scene& scene) const {
                      ", which is out of range (the file has " + std::to_string(model_.lights.size()) + " lights)");
             node.light = light;
         }
-        if (in.skin >= 0) warn(what + " is skinned; skinning is not supported and the mesh is drawn in its bind pose");
+        if (in.skin >= 0) {
+            if (static_cast<std::size_t>(in.skin) < model_.skins.size()) {
+                warn(what + " is skinned; skinning is not supported and the mesh is drawn in its bind pose (the skin is "
+                            "kept and saved back)");
+                node.skin = in.skin;
+            } else {
+                warn(what + " refers to skin " + std::to_string(in.skin) + ", which does not exist; ignored");
+            }
+        }
+        node.weights = in.weights;
 
         if (!in.matrix.empty()) {
             if (in.matrix.size() != 16)
@@ -677,7 +706,25 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
         out.indices.resize(out.indices.size() - out.indices.size() % 3);
     }
 
-    if (normalIndex < 0) computeNormals(out);
+    // The attributes and morph targets Lit does not draw with, kept for a save.
+    out.keptAttributes = keptAttributes(in.attributes, {"POSITION", "NORMAL", "TEXCOORD_0", "TANGENT"}, where, vertexCount);
+    out.morphTargets = keptTargets(in, where, vertexCount);
+    if (normalIndex < 0) {
+        // computeNormals unwelds: new vertex i is old vertex indices[i]. The kept data follows.
+        const std::vector<std::uint32_t> order = out.indices;
+        computeNormals(out);
+        const auto reorder = [&](KeptAccessor& a) {
+            const std::size_t elementSize = a.count ? a.bytes.size() / a.count : 0;
+            std::vector<std::uint8_t> bytes(order.size() * elementSize);
+            for (std::size_t i = 0; i < order.size(); ++i)
+                std::memcpy(bytes.data() + i * elementSize, a.bytes.data() + order[i] * elementSize, elementSize);
+            a.bytes = std::move(bytes);
+            a.count = order.size();
+        };
+        for (auto& [name, a] : out.keptAttributes) reorder(a);
+        for (KeptAttributes& target : out.morphTargets)
+            for (auto& [name, a] : target) reorder(a);
+    }
     if (!haveTangents) computeTangents(out);
     out.fileHasTangents = haveTangents;
     out.kept = gltfkeep::keep(in.extras, in.extensions);
@@ -696,14 +743,18 @@ void Loader::loadMeshes(Scene& scene) const {
             const std::string where = "mesh '" + mesh.name + "' primitive " + std::to_string(p);
             // tinygltf reports an absent mode as -1; glTF's default is TRIANGLES.
             if (prim.mode != -1 && prim.mode != TINYGLTF_MODE_TRIANGLES) {
-                warn(where + " has mode " + std::to_string(prim.mode) + " (only TRIANGLES is supported); skipped");
+                std::optional<KeptPrimitive> kept = keptPrimitive(prim, where);
+                warn(where + " has mode " + std::to_string(prim.mode) + " (only TRIANGLES is drawn); " +
+                     (kept ? "not drawn, kept for saving" : "skipped"));
+                if (kept) mesh.otherPrimitives.push_back(std::move(*kept));
                 continue;
             }
             if (prim.material >= 0 && static_cast<std::size_t>(prim.material) >= model_.materials.size())
                 fail(where + " refers to material " + std::to_string(prim.material) +
                      ", which is out of range (the file has " + std::to_string(model_.materials.size()) +
                      " materials)");
-            if (!prim.targets.empty()) warn(where + " has morph targets; they are ignored");
+            if (!prim.targets.empty())
+                warn(where + " has morph targets; Lit draws the base shape (the targets are kept and saved back)");
             Primitive out;
             out.material = prim.material;
             loadPrimitive(prim, mesh.name, p, out);
@@ -713,6 +764,7 @@ void Loader::loadMeshes(Scene& scene) const {
             }
             mesh.primitives.push_back(std::move(out));
         }
+        mesh.weights = in.weights;
         mesh.kept = gltfkeep::keep(in.extras, in.extensions);
         scene.meshes.push_back(std::move(mesh));
         report("meshes", m + 1, model_.meshes.size());
@@ -734,7 +786,7 @@ void Loader::loadMaterials(Scene& scene) const {
             const int t = textureIndex(index, what + " " + slot);
             if (t >= 0 && texCoord != 0)
                 warn(what + " " + slot + " uses TEXCOORD_" + std::to_string(texCoord) +
-                     "; only TEXCOORD_0 is supported");
+                     "; Lit draws it with TEXCOORD_0 (the file's choice is saved back)");
             return t;
         };
         Material out;
@@ -771,6 +823,8 @@ void Loader::loadMaterials(Scene& scene) const {
         out.alphaCutoff = static_cast<float>(in.alphaCutoff);
         out.doubleSided = in.doubleSided;
         out.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_materials_emissive_strength"});
+        out.textureTexCoord = {pbr.baseColorTexture.texCoord, pbr.metallicRoughnessTexture.texCoord,
+                               in.normalTexture.texCoord, in.emissiveTexture.texCoord, in.occlusionTexture.texCoord};
         out.textureExtensions = {gltfkeep::extensionsText(pbr.baseColorTexture.extensions),
                                  gltfkeep::extensionsText(pbr.metallicRoughnessTexture.extensions),
                                  gltfkeep::extensionsText(in.normalTexture.extensions),
@@ -784,6 +838,7 @@ void Loader::loadTextures(Scene& scene) const {
     for (std::size_t t = 0; t < model_.textures.size(); ++t) {
         const tinygltf::Texture& in = model_.textures[t];
         Texture out;
+        out.name = in.name;
         if (in.source >= 0) {
             if (static_cast<std::size_t>(in.source) >= model_.images.size())
                 fail("texture " + std::to_string(t) + " refers to image " + std::to_string(in.source) +
@@ -1013,12 +1068,198 @@ void Loader::loadCameras(Scene& scene) const {
             out.zfar = static_cast<float>(std::max(in.perspective.zfar, 0.0));
         } else {
             warn("camera " + std::to_string(c) + " is " + (in.type.empty() ? std::string("untyped") : in.type) +
-                 "; Lit renders it as a perspective camera with yfov 0.8");
+                 "; Lit renders it as a perspective camera with yfov 0.8 (it is saved back as it was)");
+            if (in.type == "orthographic") {
+                out.orthographic = true;
+                out.xmag = static_cast<float>(in.orthographic.xmag);
+                out.ymag = static_cast<float>(in.orthographic.ymag);
+            }
             if (in.orthographic.znear > 0.0) out.znear = static_cast<float>(in.orthographic.znear);
             if (in.orthographic.zfar > in.orthographic.znear) out.zfar = static_cast<float>(in.orthographic.zfar);
         }
         out.kept = gltfkeep::keep(in.extras, in.extensions);
         scene.cameras.push_back(std::move(out));
+    }
+}
+
+// Components per element of an accessor type (matrices included), 0 for an unknown type.
+int elementComponents(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_MAT2:
+            return 4;
+        case TINYGLTF_TYPE_MAT3:
+            return 9;
+        case TINYGLTF_TYPE_MAT4:
+            return 16;
+        default:
+            return componentsOf(type);
+    }
+}
+
+KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optional<std::size_t> expectedCount) const {
+    const std::string what = "accessor " + std::to_string(index) + " (" + role + ")";
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size())
+        fail("accessor index " + std::to_string(index) + " (" + role + ") is out of range: the file has " +
+             std::to_string(model_.accessors.size()) + " accessors");
+    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+    const int size = componentSize(a.componentType);
+    if (size == 0) fail(what + " has unsupported component type " + std::to_string(a.componentType));
+    const int components = elementComponents(a.type);
+    if (components == 0) fail(what + " has an unknown type");
+    // Matrices of 1- or 2-byte components have padded columns; glTF uses none for attributes.
+    if ((a.type == TINYGLTF_TYPE_MAT2 || a.type == TINYGLTF_TYPE_MAT3) && size < 4)
+        fail(what + " is a " + typeName(a.type) + " of " + std::to_string(size) + "-byte components, which Lit does not keep");
+    if (expectedCount && a.count != *expectedCount)
+        fail(what + " has " + std::to_string(a.count) + " elements, expected " + std::to_string(*expectedCount));
+    if (!expectedCount && a.bufferView < 0) fail(what + " has no buffer view");
+
+    // A validated pointer to `count` elements of `elementSize` bytes, `stride` apart, in a view.
+    const auto viewData = [&](int viewIndex, std::size_t byteOffset, std::size_t elementSize, std::size_t count,
+                              bool strided) -> std::pair<const unsigned char*, std::size_t> {
+        if (viewIndex < 0 || static_cast<std::size_t>(viewIndex) >= model_.bufferViews.size())
+            fail(what + " refers to buffer view " + std::to_string(viewIndex) + ", which does not exist (the file has " +
+                 std::to_string(model_.bufferViews.size()) + ")");
+        const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(viewIndex)];
+        if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size())
+            fail(what + ": buffer view " + std::to_string(viewIndex) + " refers to buffer " + std::to_string(view.buffer) +
+                 ", which does not exist");
+        const tinygltf::Buffer& buffer = model_.buffers[static_cast<std::size_t>(view.buffer)];
+        if (view.byteOffset > buffer.data.size() || view.byteLength > buffer.data.size() - view.byteOffset)
+            fail(what + ": buffer view " + std::to_string(viewIndex) + " extends past the end of its buffer");
+        const std::size_t stride = strided && view.byteStride ? view.byteStride : elementSize;
+        if (stride < elementSize) fail(what + ": buffer view " + std::to_string(viewIndex) + " has a byteStride smaller than one element");
+        const std::size_t available = view.byteLength;
+        const bool fits = count == 0 || (byteOffset <= available && elementSize <= available - byteOffset &&
+                                         (count - 1) <= (available - byteOffset - elementSize) / stride);
+        if (!fits) fail(what + " reads past the end of buffer view " + std::to_string(viewIndex));
+        return {buffer.data.data() + view.byteOffset + byteOffset, stride};
+    };
+
+    const std::size_t elementSize = static_cast<std::size_t>(size) * static_cast<std::size_t>(components);
+    KeptAccessor out;
+    out.type = typeName(a.type);
+    out.componentType = a.componentType;
+    out.normalized = a.normalized;
+    out.count = a.count;
+    std::pair<const unsigned char*, std::size_t> base{nullptr, 0};
+    if (a.bufferView >= 0 && a.count > 0) base = viewData(a.bufferView, a.byteOffset, elementSize, a.count, true);
+    out.bytes.assign(a.count * elementSize, 0);  // no buffer view: zeros (glTF §3.6.2.3)
+    if (base.first) {
+        const auto [first, stride] = base;
+        for (std::size_t i = 0; i < a.count; ++i) std::memcpy(out.bytes.data() + i * elementSize, first + i * stride, elementSize);
+    }
+    if (a.sparse.isSparse && a.sparse.count > 0) {
+        const auto count = static_cast<std::size_t>(a.sparse.count);
+        if (count > a.count) fail(what + " has more sparse elements (" + std::to_string(count) + ") than elements");
+        const int indexSize = componentSize(a.sparse.indices.componentType);
+        if (a.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            a.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            a.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            fail(what + "'s sparse indices must be unsigned integers");
+        const auto indices = viewData(a.sparse.indices.bufferView, static_cast<std::size_t>(std::max(a.sparse.indices.byteOffset, 0)),
+                                      static_cast<std::size_t>(indexSize), count, false);
+        const auto values = viewData(a.sparse.values.bufferView, static_cast<std::size_t>(std::max(a.sparse.values.byteOffset, 0)),
+                                     elementSize, count, false);
+        for (std::size_t i = 0; i < count; ++i) {
+            std::uint32_t target = 0;
+            const unsigned char* p = indices.first + i * static_cast<std::size_t>(indexSize);
+            if (indexSize == 1) target = p[0];
+            if (indexSize == 2) {
+                std::uint16_t v;
+                std::memcpy(&v, p, 2);
+                target = v;
+            }
+            if (indexSize == 4) std::memcpy(&target, p, 4);
+            if (target >= a.count)
+                fail(what + " has the sparse index " + std::to_string(target) + ", out of range (" +
+                     std::to_string(a.count) + " elements)");
+            std::memcpy(out.bytes.data() + target * elementSize, values.first + i * elementSize, elementSize);
+        }
+    }
+    return out;
+}
+
+KeptAttributes Loader::keptAttributes(const std::map<std::string, int>& attributes,
+                                      std::initializer_list<std::string_view> skip, const std::string& where,
+                                      std::size_t vertexCount) const {
+    KeptAttributes out;
+    for (const auto& [name, index] : attributes) {
+        if (std::find(skip.begin(), skip.end(), name) != skip.end()) continue;
+        try {
+            out[name] = keptAccessor(index, name + " of " + where, vertexCount);
+        } catch (const SceneLoadError& e) {
+            warn(std::string(e.what()) + "; the attribute is not kept");
+        }
+    }
+    return out;
+}
+
+std::vector<KeptAttributes> Loader::keptTargets(const tinygltf::Primitive& in, const std::string& where,
+                                                std::size_t vertexCount) const {
+    std::vector<KeptAttributes> out;
+    for (std::size_t t = 0; t < in.targets.size(); ++t)
+        out.push_back(keptAttributes(in.targets[t], {}, "morph target " + std::to_string(t) + " of " + where, vertexCount));
+    return out;
+}
+
+// A primitive of a mode Lit does not draw, as the file had it; none when its data is unusable.
+std::optional<KeptPrimitive> Loader::keptPrimitive(const tinygltf::Primitive& in, const std::string& where) const {
+    const auto position = in.attributes.find("POSITION");
+    if (position == in.attributes.end() || position->second < 0 ||
+        static_cast<std::size_t>(position->second) >= model_.accessors.size())
+        return std::nullopt;
+    const tinygltf::Accessor& positions = model_.accessors[static_cast<std::size_t>(position->second)];
+    if (positions.bufferView < 0) return std::nullopt;  // its count is not bounded by the file's data
+    KeptPrimitive out;
+    out.mode = in.mode;
+    out.material = in.material;
+    try {
+        // All attributes must be readable here: a line primitive missing one is worse than none.
+        for (const auto& [name, index] : in.attributes) out.attributes[name] = keptAccessor(index, name + " of " + where, positions.count);
+        if (in.indices >= 0) out.indices = keptAccessor(in.indices, "indices of " + where, std::nullopt);
+        for (std::size_t t = 0; t < in.targets.size(); ++t) {
+            KeptAttributes target;
+            for (const auto& [name, index] : in.targets[t])
+                target[name] = keptAccessor(index, name + " of morph target " + std::to_string(t) + " of " + where, positions.count);
+            out.morphTargets.push_back(std::move(target));
+        }
+    } catch (const SceneLoadError& e) {
+        warn(e.what());
+        return std::nullopt;
+    }
+    out.kept = gltfkeep::keep(in.extras, in.extensions);
+    return out;
+}
+
+// Skins, kept for saving: joints as Scene node indices, inverse bind matrices as floats. A skin
+// whose joints are not all imported keeps a joint of -1, and a save leaves it out.
+void Loader::loadSkins(Scene& scene) const {
+    for (std::size_t s = 0; s < model_.skins.size(); ++s) {
+        const tinygltf::Skin& in = model_.skins[s];
+        const std::string what = "skin " + std::to_string(s) + (in.name.empty() ? "" : " ('" + in.name + "')");
+        Skin out;
+        out.name = in.name;
+        const auto node = [&](int index) {
+            return index >= 0 && static_cast<std::size_t>(index) < nodeRemap_.size() ? nodeRemap_[static_cast<std::size_t>(index)] : -1;
+        };
+        for (int joint : in.joints) out.joints.push_back(node(joint));
+        if (std::find(out.joints.begin(), out.joints.end(), -1) != out.joints.end())
+            warn(what + " has joints that are not part of the scene; it is not saved back");
+        out.skeleton = node(in.skeleton);
+        if (in.inverseBindMatrices >= 0) {
+            try {
+                const KeptAccessor matrices = keptAccessor(in.inverseBindMatrices, "inverseBindMatrices of " + what, in.joints.size());
+                if (matrices.type != "MAT4" || matrices.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+                    fail(what + "'s inverseBindMatrices are not MAT4 floats");
+                out.inverseBindMatrices.resize(matrices.bytes.size() / sizeof(float));
+                std::memcpy(out.inverseBindMatrices.data(), matrices.bytes.data(), matrices.bytes.size());
+            } catch (const SceneLoadError& e) {
+                warn(std::string(e.what()) + "; the skin is not saved back");
+                out.joints.assign(out.joints.size(), -1);
+            }
+        }
+        out.kept = gltfkeep::keep(in.extras, in.extensions);
+        scene.skins.push_back(std::move(out));
     }
 }
 
@@ -1092,6 +1333,7 @@ Scene Loader::run() {
     report("scene", 0, 1);
     loadLights(scene);
     loadCameras(scene);
+    loadSkins(scene);
     loadAnimations(scene);
     keepFileData(scene);
     scene.updateWorldTransforms();

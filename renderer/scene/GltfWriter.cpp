@@ -10,6 +10,12 @@
 // - An image that came from a file which still exists is referenced by a URI relative to the new
 //   file's folder (not copied, not re-encoded: JPEGs stay JPEGs); any other image (embedded in
 //   the source, generated, or from a file that is gone) is encoded as PNG into the buffer.
+// - What the loader kept without drawing it (scene/Scene.h: KeptAccessor and friends) is written
+//   back in its own component types: extra vertex attributes and morph targets (one buffer view
+//   each, strides padded to 4 bytes), primitives of other modes, skins (joints remapped like the
+//   nodes; a skin with a joint that is no longer written is left out), node and mesh weights,
+//   texture coordinate sets and orthographic cameras. Kept per-vertex data whose element count no
+//   longer matches the primitive's vertices (an edit rebuilt them) is left out.
 // - Light intensities are written in glTF's photometric units: Scene's W/sr and W/m² times
 //   683 lm/W (scene/LightUnits.h), or the file's own number for a light that was not edited.
 // - Light::castsShadow has no glTF equivalent; false is written to the light's extras as
@@ -87,6 +93,14 @@ private:
 
     int addBufferView(const void* data, std::size_t bytes, int target, std::size_t stride);
     int addAccessor(int view, std::size_t byteOffset, int componentType, int type, std::size_t count);
+    // A kept accessor (scene/Scene.h); vertex data (`target` kArrayBuffer) gets a stride that is
+    // a multiple of 4 bytes, as glTF requires.
+    int addKeptAccessor(const KeptAccessor& kept, int target);
+    // Attribute name → accessor, for kept attributes whose count is `vertexCount` (others are
+    // dropped: the geometry was rebuilt). False when one was dropped.
+    bool addKeptAttributes(const KeptAttributes& kept, std::size_t vertexCount, std::map<std::string, int>& attributes);
+    void addTargets(const std::vector<KeptAttributes>& targets, std::size_t vertexCount, tinygltf::Primitive& primitive);
+    void addSkins(const std::vector<int>& nodeRemap);
     std::optional<std::string> relativeUri(const Image& image) const;
     void addImages();
     void addTextures();
@@ -107,6 +121,8 @@ private:
     std::string replacedAnimation_;
     std::vector<int> meshIndex_;  // scene mesh → glTF mesh, -1 when left out
     std::vector<int> nodeIndex_;  // scene node → glTF node, -1 when not written
+    std::vector<int> skinIndex_;  // scene skin → glTF skin, -1 when not written
+    bool wroteKeptVertexData_ = false;  // kept attributes or morph targets (KHR_mesh_quantization)
 };
 
 void ModelBuilder::restore(const KeptGltf& kept, tinygltf::Value& extras, tinygltf::ExtensionMap& extensions) {
@@ -141,6 +157,7 @@ void ModelBuilder::checkScene() const {
         checkIndex(node.mesh, scene_.meshes.size(), what, "mesh");
         checkIndex(node.light, scene_.lights.size(), what, "light");
         checkIndex(node.camera, scene_.cameras.size(), what, "camera");
+        checkIndex(node.skin, scene_.skins.size(), what, "skin");
         checkFinite(node.translation, what + "'s translation");
         checkFinite(glm::vec4(node.rotation.x, node.rotation.y, node.rotation.z, node.rotation.w), what + "'s rotation");
         checkFinite(node.scale, what + "'s scale");
@@ -255,6 +272,77 @@ int ModelBuilder::addAccessor(int view, std::size_t byteOffset, int componentTyp
     return static_cast<int>(model_.accessors.size()) - 1;
 }
 
+int typeCode(const std::string& type) {
+    static const std::map<std::string, int> codes = {
+        {"SCALAR", TINYGLTF_TYPE_SCALAR}, {"VEC2", TINYGLTF_TYPE_VEC2}, {"VEC3", TINYGLTF_TYPE_VEC3},
+        {"VEC4", TINYGLTF_TYPE_VEC4},     {"MAT2", TINYGLTF_TYPE_MAT2}, {"MAT3", TINYGLTF_TYPE_MAT3},
+        {"MAT4", TINYGLTF_TYPE_MAT4}};
+    const auto it = codes.find(type);
+    return it == codes.end() ? -1 : it->second;
+}
+
+int ModelBuilder::addKeptAccessor(const KeptAccessor& kept, int target) {
+    const int type = typeCode(kept.type);
+    if (type < 0 || kept.count == 0 || kept.bytes.size() % kept.count != 0)
+        fail("kept accessor data of type '" + kept.type + "' is inconsistent (" + std::to_string(kept.bytes.size()) +
+             " bytes for " + std::to_string(kept.count) + " elements)");
+    const std::size_t elementSize = kept.bytes.size() / kept.count;
+    const std::size_t stride = target == kArrayBuffer ? (elementSize + 3) & ~std::size_t(3) : elementSize;
+    int view = -1;
+    if (stride == elementSize) {
+        view = addBufferView(kept.bytes.data(), kept.bytes.size(), target, target == kArrayBuffer ? stride : 0);
+    } else {  // e.g. a normalized UNSIGNED_BYTE VEC3 colour: 3 bytes every 4
+        std::vector<std::uint8_t> padded(kept.count * stride, 0);
+        for (std::size_t i = 0; i < kept.count; ++i)
+            std::memcpy(padded.data() + i * stride, kept.bytes.data() + i * elementSize, elementSize);
+        view = addBufferView(padded.data(), padded.size(), target, stride);
+    }
+    const int accessor = addAccessor(view, 0, kept.componentType, type, kept.count);
+    model_.accessors[static_cast<std::size_t>(accessor)].normalized = kept.normalized;
+    return accessor;
+}
+
+void ModelBuilder::addTargets(const std::vector<KeptAttributes>& targets, std::size_t vertexCount,
+                              tinygltf::Primitive& primitive) {
+    // All or none: a mesh's weights count the targets. None when the geometry was rebuilt.
+    for (const KeptAttributes& target : targets)
+        for (const auto& [name, accessor] : target)
+            if (accessor.count != vertexCount) return;
+    for (const KeptAttributes& target : targets) {
+        std::map<std::string, int> attributes;
+        addKeptAttributes(target, vertexCount, attributes);
+        primitive.targets.push_back(std::move(attributes));
+    }
+}
+
+bool ModelBuilder::addKeptAttributes(const KeptAttributes& kept, std::size_t vertexCount,
+                                     std::map<std::string, int>& attributes) {
+    bool all = true;
+    for (const auto& [name, accessor] : kept) {
+        if (accessor.count != vertexCount) {
+            all = false;
+            continue;
+        }
+        const int index = addKeptAccessor(accessor, kArrayBuffer);
+        // glTF requires min and max on POSITION accessors, morph targets' included.
+        if (name == "POSITION" && accessor.type == "VEC3" && accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+            std::vector<double> lo(3, std::numeric_limits<double>::max()), hi(3, std::numeric_limits<double>::lowest());
+            for (std::size_t i = 0; i < accessor.count; ++i)
+                for (std::size_t c = 0; c < 3; ++c) {
+                    float v;
+                    std::memcpy(&v, accessor.bytes.data() + (i * 3 + c) * sizeof(float), sizeof(float));
+                    lo[c] = std::min(lo[c], double(v));
+                    hi[c] = std::max(hi[c], double(v));
+                }
+            model_.accessors[static_cast<std::size_t>(index)].minValues = lo;
+            model_.accessors[static_cast<std::size_t>(index)].maxValues = hi;
+        }
+        attributes[name] = index;
+        wroteKeptVertexData_ = true;
+    }
+    return all;
+}
+
 // The image's file as seen from the new file's folder, when the image came from a file that
 // still exists.
 std::optional<std::string> ModelBuilder::relativeUri(const Image& image) const {
@@ -306,6 +394,7 @@ void ModelBuilder::addTextures() {
             model_.samplers.push_back(sampler);
         }
         tinygltf::Texture out;
+        out.name = texture.name;
         out.source = texture.image;
         out.sampler = it->second;
         restore(texture.kept, out.extras, out.extensions);
@@ -320,9 +409,14 @@ void ModelBuilder::addMaterials() {
         tinygltf::PbrMetallicRoughness& pbr = out.pbrMetallicRoughness;
         pbr.baseColorFactor = doubles(material.baseColorFactor);
         pbr.baseColorTexture.index = material.baseColorTexture;
+        pbr.baseColorTexture.texCoord = material.textureTexCoord[0];
         pbr.metallicFactor = material.metallic;
         pbr.roughnessFactor = material.roughness;
         pbr.metallicRoughnessTexture.index = material.metallicRoughnessTexture;
+        pbr.metallicRoughnessTexture.texCoord = material.textureTexCoord[1];
+        out.normalTexture.texCoord = material.textureTexCoord[2];
+        out.emissiveTexture.texCoord = material.textureTexCoord[3];
+        out.occlusionTexture.texCoord = material.textureTexCoord[4];
         out.normalTexture.index = material.normalTexture;
         out.normalTexture.scale = material.normalScale;
         out.occlusionTexture.index = material.occlusionTexture;
@@ -403,6 +497,8 @@ void ModelBuilder::addMeshes() {
             if (tangents)
                 p.attributes["TANGENT"] = addAccessor(vertices, offsetof(Vertex, tangent), TINYGLTF_COMPONENT_TYPE_FLOAT,
                                                       TINYGLTF_TYPE_VEC4, count);
+            addKeptAttributes(primitive.keptAttributes, count, p.attributes);
+            addTargets(primitive.morphTargets, count, p);
             restore(primitive.kept, p.extras, p.extensions);
             const int indices = addBufferView(primitive.indices.data(), primitive.indices.size() * sizeof(std::uint32_t),
                                               kElementArrayBuffer, 0);
@@ -410,7 +506,24 @@ void ModelBuilder::addMeshes() {
                                     primitive.indices.size());
             out.primitives.push_back(std::move(p));
         }
+        for (const KeptPrimitive& kept : mesh.otherPrimitives) {
+            const auto position = kept.attributes.find("POSITION");
+            if (position == kept.attributes.end()) continue;  // the loader keeps none without
+            tinygltf::Primitive p;
+            p.mode = kept.mode;
+            p.material = kept.material < static_cast<int>(scene_.materials.size()) ? kept.material : -1;
+            addKeptAttributes(kept.attributes, position->second.count, p.attributes);
+            addTargets(kept.morphTargets, position->second.count, p);
+            if (kept.indices && kept.indices->count > 0) p.indices = addKeptAccessor(*kept.indices, kElementArrayBuffer);
+            restore(kept.kept, p.extras, p.extensions);
+            out.primitives.push_back(std::move(p));
+        }
         if (out.primitives.empty()) continue;  // glTF requires at least one primitive per mesh
+        // Default morph weights, while every primitive still has that many targets (glTF rule).
+        if (!mesh.weights.empty() && std::all_of(out.primitives.begin(), out.primitives.end(), [&](const tinygltf::Primitive& p) {
+                return p.targets.size() == mesh.weights.size();
+            }))
+            out.weights = mesh.weights;
         restore(mesh.kept, out.extras, out.extensions);
         meshIndex_[m] = static_cast<int>(model_.meshes.size());
         model_.meshes.push_back(std::move(out));
@@ -454,11 +567,19 @@ void ModelBuilder::addCameras() {
     for (const Camera& camera : scene_.cameras) {
         tinygltf::Camera out;
         out.name = camera.name;
-        out.type = "perspective";
-        out.perspective.yfov = camera.yfov;
-        out.perspective.znear = camera.znear;
-        out.perspective.zfar = std::max(camera.zfar, 0.0f);  // 0: left out by writeGltfModel
-        out.perspective.aspectRatio = std::max(camera.aspectRatio, 0.0f);  // 0: left out
+        if (camera.orthographic && camera.xmag != 0.0f && camera.ymag != 0.0f && camera.zfar > camera.znear) {
+            out.type = "orthographic";  // as the file had it (Lit draws it in perspective)
+            out.orthographic.xmag = camera.xmag;
+            out.orthographic.ymag = camera.ymag;
+            out.orthographic.znear = camera.znear;
+            out.orthographic.zfar = camera.zfar;
+        } else {
+            out.type = "perspective";
+            out.perspective.yfov = camera.yfov;
+            out.perspective.znear = camera.znear;
+            out.perspective.zfar = std::max(camera.zfar, 0.0f);  // 0: left out by writeGltfModel
+            out.perspective.aspectRatio = std::max(camera.aspectRatio, 0.0f);  // 0: left out
+        }
         restore(camera.kept, out.extras, out.extensions);
         model_.cameras.push_back(std::move(out));
     }
@@ -468,6 +589,7 @@ void ModelBuilder::addNodes() {
     const std::vector<int> written = reachableNodes();
     std::vector<int> remap(scene_.nodes.size(), -1);
     for (std::size_t i = 0; i < written.size(); ++i) remap[static_cast<std::size_t>(written[i])] = static_cast<int>(i);
+    addSkins(remap);
     for (int index : written) {
         const Node& node = scene_.nodes[static_cast<std::size_t>(index)];
         tinygltf::Node out;
@@ -482,6 +604,8 @@ void ModelBuilder::addNodes() {
         if (node.scale != glm::vec3(1.0f)) out.scale = doubles(node.scale);
         out.mesh = node.mesh >= 0 ? meshIndex_[static_cast<std::size_t>(node.mesh)] : -1;
         out.camera = node.camera;
+        out.skin = node.skin >= 0 ? skinIndex_[static_cast<std::size_t>(node.skin)] : -1;
+        out.weights = node.weights;
         if (node.light >= 0) {
             tinygltf::Value::Object extension;
             extension["light"] = tinygltf::Value(node.light);
@@ -500,6 +624,37 @@ void ModelBuilder::addNodes() {
     restore(scene_.kept, root.extras, root.extensions);
     model_.scenes.push_back(std::move(root));
     model_.defaultScene = 0;
+}
+
+// The skins whose joints are all written (a deleted joint leaves its skin out, and the skinned
+// nodes are written without one).
+void ModelBuilder::addSkins(const std::vector<int>& nodeRemap) {
+    skinIndex_.assign(scene_.skins.size(), -1);
+    const auto written = [&](int node) {
+        return node >= 0 && static_cast<std::size_t>(node) < nodeRemap.size() ? nodeRemap[static_cast<std::size_t>(node)] : -1;
+    };
+    for (std::size_t s = 0; s < scene_.skins.size(); ++s) {
+        const Skin& skin = scene_.skins[s];
+        if (skin.joints.empty() ||
+            std::any_of(skin.joints.begin(), skin.joints.end(), [&](int joint) { return written(joint) < 0; }) ||
+            (!skin.inverseBindMatrices.empty() && skin.inverseBindMatrices.size() != 16 * skin.joints.size()))
+            continue;
+        tinygltf::Skin out;
+        out.name = skin.name;
+        for (int joint : skin.joints) out.joints.push_back(written(joint));
+        out.skeleton = written(skin.skeleton);
+        if (!skin.inverseBindMatrices.empty()) {
+            KeptAccessor matrices;
+            matrices.type = "MAT4";
+            matrices.count = skin.joints.size();
+            matrices.bytes.resize(skin.inverseBindMatrices.size() * sizeof(float));
+            std::memcpy(matrices.bytes.data(), skin.inverseBindMatrices.data(), matrices.bytes.size());
+            out.inverseBindMatrices = addKeptAccessor(matrices, 0);
+        }
+        restore(skin.kept, out.extras, out.extensions);
+        skinIndex_[s] = static_cast<int>(model_.skins.size());
+        model_.skins.push_back(std::move(out));
+    }
 }
 
 // The file's animations as the loader kept them (channels of nodes that are not written are
@@ -567,6 +722,14 @@ tinygltf::Model ModelBuilder::build() {
     addAnimations();
     model_.asset.copyright = scene_.copyright;
     restore(scene_.fileKept, model_.extras, model_.extensions);
+    // Kept vertex data may be quantized (KHR_mesh_quantization's types); the extension is then
+    // required, as its specification says.
+    const bool quantized = std::find(scene_.unknownExtensionsUsed.begin(), scene_.unknownExtensionsUsed.end(),
+                                     "KHR_mesh_quantization") != scene_.unknownExtensionsUsed.end();
+    if (quantized && wroteKeptVertexData_) {
+        useExtension("KHR_mesh_quantization");
+        model_.extensionsRequired.push_back("KHR_mesh_quantization");
+    }
     // Extensions the source declared that no kept data uses any more are not declared again
     // (the validator reports unused ones); those still used were declared by restore().
     return std::move(model_);

@@ -3,7 +3,10 @@
 // read it: nodes with TRS, meshes, metallic-roughness materials (with
 // KHR_materials_emissive_strength when the strength is not 1), textures and samplers,
 // KHR_lights_punctual lights, perspective cameras, and optionally a camera path as a glTF
-// animation (animation/CameraPathIO.h). loadGltf() reads everything written here back.
+// animation (animation/CameraPathIO.h), plus everything of the source file the loader kept
+// without drawing it (other animations, extras, extensions, skins, morph targets, extra vertex
+// attributes, other primitive modes, orthographic cameras). loadGltf() reads everything written
+// here back.
 //
 // Saving is atomic: every file is written under a temporary name in the target folder and then
 // renamed into place (buffers first, the .gltf/.glb last), so a failed save leaves the previous

@@ -12,6 +12,8 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,21 @@ struct KeptGltf {
     std::string extensions;  // a JSON object: extension name → value (Lit's own extensions left out)
     bool operator==(const KeptGltf&) const = default;
 };
+
+// An accessor's elements as the file had them, for data Lit carries without using it (extra
+// vertex attributes, morph targets, skin matrices), so that a save writes them back unchanged:
+// tightly packed little-endian components, sparse accessors already expanded.
+struct KeptAccessor {
+    std::string type = "SCALAR";  // glTF accessor type: SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3, MAT4
+    int componentType = 5126;     // glTF (GL) enum: 5120 BYTE, 5121 UNSIGNED_BYTE, ... 5126 FLOAT
+    bool normalized = false;
+    std::size_t count = 0;            // elements
+    std::vector<std::uint8_t> bytes;  // count × element size
+    bool operator==(const KeptAccessor&) const = default;
+};
+
+// Vertex attributes by glTF name ("TEXCOORD_1", "COLOR_0", "JOINTS_0", "_TEMPERATURE", ...).
+using KeptAttributes = std::map<std::string, KeptAccessor>;
 
 struct Vertex {
     glm::vec3 position{0.0f};
@@ -42,12 +59,31 @@ struct Primitive {
     // Whether the file gave TANGENT (else the loader generated them): only then does a save
     // write them, so a file without tangents does not grow by a third.
     bool fileHasTangents = false;
+    // The file's attributes Lit does not draw with (all but POSITION, NORMAL, TEXCOORD_0 and
+    // TANGENT) and its morph targets, one element per vertex in `vertices` order (the loader
+    // reorders them with the vertices when it unwelds a primitive without normals). Written
+    // back only while their count matches `vertices` (an edit that rebuilt the geometry drops them).
+    KeptAttributes keptAttributes{};
+    std::vector<KeptAttributes> morphTargets{};
+    KeptGltf kept{};
+};
+
+// A primitive Lit does not draw (mode POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLE_STRIP or
+// TRIANGLE_FAN), kept as the file had it so that a save writes it back.
+struct KeptPrimitive {
+    int mode = 0;       // glTF primitive mode
+    int material = -1;  // index into Scene::materials
+    KeptAttributes attributes;
+    std::optional<KeptAccessor> indices;  // none = not indexed
+    std::vector<KeptAttributes> morphTargets;
     KeptGltf kept{};
 };
 
 struct Mesh {
     std::string name;
     std::vector<Primitive> primitives;
+    std::vector<KeptPrimitive> otherPrimitives{};  // written after `primitives`
+    std::vector<double> weights{};                 // default morph target weights
     KeptGltf kept{};
 };
 
@@ -69,6 +105,7 @@ struct Texture {
     int minFilter = 9987;  // LINEAR_MIPMAP_LINEAR
     int magFilter = 9729;  // LINEAR
     KeptGltf kept{};
+    std::string name{};
 };
 
 enum class AlphaMode { Opaque, Mask, Blend };
@@ -95,6 +132,9 @@ struct Material {
     // Extensions of each texture reference (KHR_texture_transform, ...), JSON object text, in the
     // order base colour, metallic-roughness, normal, emissive, occlusion.
     std::array<std::string, 5> textureExtensions{};
+    // The TEXCOORD_n set each texture reference reads, same order. Lit draws with TEXCOORD_0
+    // (the loader warns); the file's number is saved back.
+    std::array<int, 5> textureTexCoord{};
 
     bool operator==(const Material&) const = default;
 };
@@ -131,6 +171,11 @@ struct Camera {
     float aspectRatio = 0.0f;  // 0 = use the output's aspect
     float znear = 0.05f;       // metres
     float zfar = 0.0f;         // metres; 0 = fitted to the scene bounds
+    // An orthographic camera of the file: Lit renders it as a perspective camera (yfov 0.8) and
+    // saves it back as orthographic with these half extents (metres).
+    bool orthographic = false;
+    float xmag = 0.0f;
+    float ymag = 0.0f;
     KeptGltf kept{};
 
     bool operator==(const Camera&) const = default;
@@ -146,6 +191,8 @@ struct Node {
     int mesh = -1;
     int light = -1;
     int camera = -1;
+    int skin = -1;                // index into Scene::skins (kept, not drawn: Lit draws the bind pose)
+    std::vector<double> weights{};  // morph target weights of this node's mesh instance
     glm::mat4 world{1.0f};  // computed by Scene::updateWorldTransforms()
     KeptGltf kept{};
 
@@ -166,11 +213,21 @@ struct Animation {
         int sampler = 0;
         int node = -1;          // index into Scene::nodes; a channel of a node not saved is dropped
         std::string path;       // "translation", "rotation", "scale" or "weights"
+        bool operator==(const Channel&) const = default;
     };
     std::string name;
     std::vector<Sampler> samplers;
     std::vector<Channel> channels;
     KeptGltf kept{};  // extras hold Lit's own path keys (litCameraPath) when Lit wrote the animation
+};
+
+// A glTF skin, kept for saving (Lit does not animate skins).
+struct Skin {
+    std::string name;
+    std::vector<int> joints;  // indices into Scene::nodes; a save drops a skin whose joint is gone
+    int skeleton = -1;        // index into Scene::nodes, -1 = none
+    std::vector<float> inverseBindMatrices;  // 16 per joint, column-major; empty = identities
+    KeptGltf kept{};
 };
 
 struct Scene {
@@ -184,6 +241,7 @@ struct Scene {
     std::vector<Image> images;
     std::vector<Light> lights;
     std::vector<Camera> cameras;
+    std::vector<Skin> skins;
     // Every animation of the file, in file order. Camera animations (those a camera path can be
     // read from) are listed in cameraAnimationNames; animation/CameraPathIO.h's
     // loadCameraPath(scene, name) turns one into a CameraPath for the timeline and lit-render

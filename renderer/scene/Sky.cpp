@@ -1,6 +1,7 @@
 #include "scene/Sky.h"
 
 #include "scene/Scene.h"
+#include "scene/SceneBuilder.h"
 
 #include <shared.h>
 #include <stb_image.h>
@@ -107,6 +108,17 @@ std::function<glm::vec3(const glm::vec3&)> makeSkyFunction(const Scene& scene, c
 
 bool hasDefaultSun(const Scene& scene, const RenderSettings& settings) {
     return settings.defaultSunIrradiance > 0.0f && !sceneHasLights(scene);
+}
+
+bool addDefaultSun(Scene& scene, const RenderSettings& settings) {
+    if (!hasDefaultSun(scene, settings)) return false;
+    Light sun;
+    sun.name = "default sun";
+    sun.type = LightType::Directional;
+    sun.intensity = settings.defaultSunIrradiance;  // W/m²
+    addLightNode(scene, sun, glm::vec3(0.0f), defaultSunDirection(settings));
+    scene.updateWorldTransforms();
+    return true;
 }
 
 glm::vec3 defaultSunDirection(const RenderSettings& settings) {

@@ -63,5 +63,9 @@ std::function<glm::vec3(const glm::vec3&)> makeSkyFunction(const Scene& scene, c
 // defaultSunAzimuth from +Z towards +X).
 bool hasDefaultSun(const Scene& scene, const RenderSettings& settings);
 glm::vec3 defaultSunDirection(const RenderSettings& settings);
+// Adds that sun to `scene` as a directional light node ("default sun"), for renderers that take
+// their lights from the scene (the reference path tracer); returns whether it did. Call
+// makeSkyFunction before: once the sun is in, an Auto sky sees a lit scene and resolves to None.
+bool addDefaultSun(Scene& scene, const RenderSettings& settings);
 
 }  // namespace lit

@@ -67,6 +67,7 @@ using mat4 = glm::mat4;
 #define LIT_SPECULAR_ALBEDO_SIZE 32    // texels per side of that table
 // Viewport overlay (OverlayPass): the G-buffer's R32UI node IDs (node index + 1, 0 = background).
 #define LIT_TEX_GBUFFER_ID 23
+#define LIT_SSBO_OUTLINE_CLASSES 4      // uint per node ID (index + 1): 0 not outlined, 1 selected, 2 active (overlay_outline.frag.glsl)
 #define LIT_OUTLINE_RADIUS 2           // selection outline width (pixels outside the silhouette)
 #define LIT_HIDDEN_LINE_OPACITY 0.25   // opacity multiplier of depth-tested lines where the scene hides them
 // Reduced-resolution indirect lighting (ConeTracePass → IndirectResolvePass, docs/GI.md).

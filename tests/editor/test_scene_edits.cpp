@@ -153,6 +153,51 @@ TEST(SceneEdits, DeleteRemovesSubtreeAndItsLightUndoRedoSave) {
     EXPECT_EQ(deleteSelection(doc), "nothing is selected");
 }
 
+// What names nodes besides the hierarchy (a file's animations, skins) follows a delete's
+// renumbering, and undo brings the old numbers back; the save writes them for the right nodes.
+TEST(SceneEdits, DeleteRenumbersAnimationsAndSkinsUndoRestoresThem) {
+    Document doc = fixtureDocument();
+    const int lamp = findNode(doc.scene, "Lamp"), cam = findNode(doc.scene, "Cam"), empty = findNode(doc.scene, "Empty");
+    ASSERT_LT(lamp, cam);  // so the delete renumbers the others
+    Animation bob;
+    bob.name = "bob";
+    bob.samplers.push_back({{0.0f, 1.0f}, {0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f}, 3, "LINEAR"});
+    bob.channels = {{0, empty, "translation"}, {0, lamp, "translation"}};
+    doc.scene.animations.push_back(bob);
+    Skin rig;
+    rig.name = "rig";
+    rig.joints = {cam, empty};
+    rig.skeleton = cam;
+    doc.scene.skins.push_back(rig);
+    doc.select(lamp);
+    ASSERT_EQ(deleteSelection(doc), "");
+    const int camAfter = findNode(doc.scene, "Cam"), emptyAfter = findNode(doc.scene, "Empty");
+    ASSERT_EQ(doc.scene.animations[0].channels.size(), 1u);  // the deleted lamp's channel is gone
+    EXPECT_EQ(doc.scene.animations[0].channels[0].node, emptyAfter);
+    EXPECT_EQ(doc.scene.skins[0].joints, (std::vector<int>{camAfter, emptyAfter}));
+    EXPECT_EQ(doc.scene.skins[0].skeleton, camAfter);
+    ASSERT_TRUE(doc.undo());
+    EXPECT_TRUE(doc.scene.animations[0].channels == bob.channels);
+    EXPECT_EQ(doc.scene.skins[0].joints, rig.joints);
+    EXPECT_EQ(doc.scene.skins[0].skeleton, cam);
+    ASSERT_TRUE(doc.redo());
+    EXPECT_EQ(doc.scene.animations[0].channels.size(), 1u);
+    EXPECT_EQ(doc.scene.skins[0].joints, (std::vector<int>{camAfter, emptyAfter}));
+    const Document back = reopen(doc, "delete_renumbers");
+    ASSERT_EQ(back.scene.skins.size(), 1u);
+    ASSERT_EQ(back.scene.skins[0].joints.size(), 2u);
+    EXPECT_EQ(back.scene.nodes[static_cast<std::size_t>(back.scene.skins[0].joints[0])].name, "Cam");
+    EXPECT_EQ(back.scene.nodes[static_cast<std::size_t>(back.scene.skins[0].joints[1])].name, "Empty");
+    bool bobKept = false;
+    for (const Animation& a : back.scene.animations)
+        if (a.name == "bob") {
+            bobKept = true;
+            ASSERT_EQ(a.channels.size(), 1u);
+            EXPECT_EQ(back.scene.nodes[static_cast<std::size_t>(a.channels[0].node)].name, "Empty");
+        }
+    EXPECT_TRUE(bobKept);
+}
+
 TEST(SceneEdits, DuplicateCopiesSubtreeSharesMeshCopiesLight) {
     Document doc = fixtureDocument();
     const int lamp = findNode(doc.scene, "Lamp");

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "PathEditing.h"
 #include "ViewportOverlay.h"
 #include "Log.h"
@@ -33,7 +35,8 @@ TEST(ViewportOverlay, MarksLightsAndCamerasAndNothingElseWithoutSelection) {
     ASSERT_FALSE(doc.scene.lights.empty());
     ASSERT_FALSE(doc.scene.cameras.empty());
     const ViewportOverlay overlay = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
-    EXPECT_EQ(overlay.highlightNode, -1);
+    EXPECT_TRUE(overlay.activeOutline.empty());
+    EXPECT_TRUE(overlay.selectedOutline.empty());
     EXPECT_FALSE(overlay.lines.empty());
     EXPECT_TRUE(overlay.linesOnTop.empty());  // no gizmo without a selection
 
@@ -49,7 +52,7 @@ TEST(ViewportOverlay, SelectionGetsAnOutlineAndAGizmoAtTheNode) {
     doc.scene.nodes[static_cast<std::size_t>(doc.selectedNode)].translation = {0.5f, 0.25f, -1.0f};
     doc.touched(Change::Transform);
     const ViewportOverlay overlay = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
-    EXPECT_EQ(overlay.highlightNode, doc.selectedNode);
+    EXPECT_EQ(overlay.activeOutline, std::vector<int>{doc.selectedNode});
     ASSERT_FALSE(overlay.linesOnTop.empty());
     // Every gizmo axis starts at the node.
     int fromNode = 0;
@@ -109,7 +112,36 @@ namespace {
 using namespace lit;
 using namespace lit::editor;
 
-TEST(ViewportOverlay, OtherSelectedNodesGetBoxesAndTheGizmoFollowsItsMode) {
+// A selected group outlines its descendants with it (their pixels carry their own node IDs).
+TEST(ViewportOverlay, ASelectedParentOutlinesItsChildren) {
+    Scene scene;
+    const int material = addMaterial(scene, glm::vec3(0.5f));
+    const int group = addMeshNode(scene, makeBoxMesh("a", glm::vec3(1.0f), material), glm::vec3(0.0f));
+    const int child = addMeshNode(scene, makeBoxMesh("b", glm::vec3(0.5f), material), glm::vec3(2.0f, 0.0f, 0.0f));
+    const int grandchild = addMeshNode(scene, makeBoxMesh("c", glm::vec3(0.25f), material), glm::vec3(0.0f, 2.0f, 0.0f));
+    const int other = addMeshNode(scene, makeBoxMesh("d", glm::vec3(0.5f), material), glm::vec3(-2.0f, 0.0f, 0.0f));
+    const int otherChild = addMeshNode(scene, makeBoxMesh("e", glm::vec3(0.5f), material), glm::vec3(0.0f, 0.0f, 2.0f));
+    const auto parent = [&](int node, int to) {
+        std::erase(scene.roots, node);
+        scene.nodes[static_cast<std::size_t>(node)].parent = to;
+        scene.nodes[static_cast<std::size_t>(to)].children.push_back(node);
+    };
+    parent(child, group);
+    parent(grandchild, child);
+    parent(otherChild, other);
+    scene.updateWorldTransforms();
+    Document doc(std::move(scene), CameraPath{}, {});
+    doc.select(other);
+    doc.select(group, /*additive=*/true);
+    const ViewportOverlay overlay = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
+    std::vector<int> active = overlay.activeOutline, selected = overlay.selectedOutline;
+    std::sort(active.begin(), active.end());
+    std::sort(selected.begin(), selected.end());
+    EXPECT_EQ(active, (std::vector<int>{group, child, grandchild}));
+    EXPECT_EQ(selected, (std::vector<int>{other, otherChild}));
+}
+
+TEST(ViewportOverlay, EverySelectedNodeIsOutlinedAndBoxesOnlyForThoseWithoutPixels) {
     Document doc = sceneWithLightAndCamera();
     const int box = findNode(doc.scene, "Box");
     doc.select(box);
@@ -117,9 +149,14 @@ TEST(ViewportOverlay, OtherSelectedNodesGetBoxesAndTheGizmoFollowsItsMode) {
     const int light = doc.scene.nodeOfLight(0);
     doc.select(light, /*additive=*/true);  // the light is active, the box is the other
     const ViewportOverlay both = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
-    EXPECT_EQ(both.highlightNode, light);
-    // The gizmo (same mode, now at the light) plus the box's 12 edges.
-    EXPECT_EQ(both.linesOnTop.size(), single.linesOnTop.size() + 12);
+    EXPECT_EQ(both.activeOutline, std::vector<int>{light});
+    EXPECT_EQ(both.selectedOutline, std::vector<int>{box});  // outlined, not boxed
+    EXPECT_EQ(both.linesOnTop.size(), single.linesOnTop.size());  // the gizmo (same mode, now at the light)
+    doc.select(light);
+    doc.select(box, /*additive=*/true);  // the box is active; the light draws nothing to outline
+    const ViewportOverlay lightOther = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, OverlayOptions{});
+    EXPECT_EQ(lightOther.activeOutline, std::vector<int>{box});
+    EXPECT_EQ(lightOther.linesOnTop.size(), single.linesOnTop.size() + 12);  // the light's box: 12 edges
 
     OverlayOptions rotate;
     rotate.gizmoMode = GizmoMode::Rotate;

@@ -117,7 +117,7 @@ TEST_F(Picking, HighlightOutlinesOnlyTheSelectedSilhouette) {
     const std::vector<float> plainHdr = renderer_->readHdrRgb();
     constexpr int kNode = 5;  // tall box
     ViewportOverlay overlay;
-    overlay.highlightNode = kNode;
+    overlay.activeOutline = {kNode};
     renderer_->setOverlay(overlay);
     const std::vector<std::uint8_t> outlined = renderRgba8(scene, settings);
     EXPECT_TRUE(renderer_->readHdrRgb() == plainHdr) << "the overlay must not touch the HDR image";
@@ -160,6 +160,62 @@ TEST_F(Picking, HighlightOutlinesOnlyTheSelectedSilhouette) {
     // No overlay again: the output is exactly the plain image.
     renderer_->setOverlay({});
     EXPECT_TRUE(renderRgba8(scene, settings) == plain);
+}
+
+// A selection of two nodes (as Blender draws it): the active tall box ringed in light orange, the
+// other selected node, the short box, in darker orange; pixels of either box are never covered.
+TEST_F(Picking, EverySelectedNodeIsOutlinedTheActiveOneBrighter) {
+    const Scene scene = loadCornellBox();
+    const RenderSettings settings = smallSettings(96);
+    renderer_->setScene(scene);
+    const std::vector<std::uint8_t> plain = renderRgba8(scene, settings);
+    constexpr int kTall = 5, kShort = 6;
+    ViewportOverlay overlay;
+    overlay.activeOutline = {kTall};
+    overlay.selectedOutline = {kShort};
+    renderer_->setOverlay(overlay);
+    const std::vector<std::uint8_t> outlined = renderRgba8(scene, settings);
+    const int w = settings.width, h = settings.height;
+    std::vector<int> ids(static_cast<std::size_t>(w * h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) ids[static_cast<std::size_t>(y * w + x)] = renderer_->pickNode({x, y});
+    const auto idAt = [&](int x, int y) { return ids[static_cast<std::size_t>(y * w + x)]; };
+    const auto near = [&](int x, int y, int node) {
+        for (int dy = -2; dy <= 2; ++dy)
+            for (int dx = -2; dx <= 2; ++dx)
+                if (dx * dx + dy * dy <= 5 && x + dx >= 0 && y + dy >= 0 && x + dx < w && y + dy < h &&
+                    idAt(x + dx, y + dy) == node)
+                    return true;
+        return false;
+    };
+    int activeRing = 0, selectedRing = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = (static_cast<std::size_t>(h - 1 - y) * w + x) * 4;  // rows bottom-up
+            const int id = idAt(x, y);
+            if (id == kTall || id == kShort) {
+                EXPECT_TRUE(outlined[i] == plain[i] && outlined[i + 1] == plain[i + 1] && outlined[i + 2] == plain[i + 2])
+                    << "pixel " << x << "," << y << " of a selected box was drawn over";
+                continue;
+            }
+            if (near(x, y, kTall)) {  // the active colour wins where both rings meet
+                ++activeRing;
+                EXPECT_EQ(outlined[i], 255);
+                EXPECT_NEAR(outlined[i + 1], 140, 2);
+                EXPECT_EQ(outlined[i + 2], 0);
+            } else if (near(x, y, kShort)) {
+                ++selectedRing;
+                EXPECT_NEAR(outlined[i], 230, 2);  // sRGB (230, 80, 0) give or take the 8-bit encoding
+                EXPECT_NEAR(outlined[i + 1], 80, 2);
+                EXPECT_EQ(outlined[i + 2], 0);
+            } else {
+                EXPECT_TRUE(outlined[i] == plain[i] && outlined[i + 1] == plain[i + 1] && outlined[i + 2] == plain[i + 2])
+                    << "pixel " << x << "," << y << " changed away from the outlines";
+            }
+        }
+    EXPECT_GT(activeRing, 40);
+    EXPECT_GT(selectedRing, 30) << "the short box's outline should be a ring too at 96²";
+    std::printf("outlines: %d active, %d selected ring pixels\n", activeRing, selectedRing);
 }
 
 TEST_F(Picking, LinesOnTopAndBehindWalls) {
@@ -224,7 +280,7 @@ TEST_F(Picking, ProfiledAsOverlayOnlyWhenThereIsOne) {
     renderer_->profiler().flush();
     EXPECT_EQ(renderer_->profiler().lastRun("overlay"), nullptr);
     ViewportOverlay overlay;
-    overlay.highlightNode = 5;
+    overlay.activeOutline = {5};
     overlay.linesOnTop = translateGizmoLines(glm::vec3(0.0f, 1.0f, 0.0f), 0.3f);
     renderer_->setOverlay(overlay);
     // The first frame with an overlay also compiles its shaders' draw state on llvmpipe.
@@ -253,7 +309,7 @@ TEST_F(Picking, WritesAnOverlayPicture) {
     ASSERT_EQ(sample->node, 0);
 
     ViewportOverlay overlay;
-    overlay.highlightNode = 5;
+    overlay.activeOutline = {5};
     overlay.linesOnTop = translateGizmoLines(nodeBounds(scene, 5).center(), 0.4f);
     const int spotNode = scene.nodeOfLight(0);
     ASSERT_GE(spotNode, 0);

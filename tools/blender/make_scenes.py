@@ -2,6 +2,7 @@
 # glTF exporter (default "Standard" lighting mode: photometric cd / lux at 683 lm/W) and renders
 # it with Cycles for reference numbers.
 #
+#   tools/install-deps.sh --scene-tools     # blender and python3-numpy (the glTF exporter needs numpy)
 #   blender -b --factory-startup --python tools/blender/make_scenes.py -- OUT_DIR
 #
 # Writes OUT_DIR/<scene>.gltf + .bin, OUT_DIR/<scene>_cycles.png (Standard view transform, for
@@ -24,6 +25,12 @@ import sys
 
 import bpy
 from mathutils import Vector
+
+try:
+    import numpy  # noqa: F401  (Blender's glTF exporter imports it; fail here with the fix, not mid-export)
+except ImportError:
+    sys.exit("make_scenes.py: Blender's glTF exporter needs numpy: run tools/install-deps.sh --scene-tools "
+             "(Debian: apt-get install python3-numpy)")
 
 SIZE = 128
 SAMPLES = 256

@@ -583,14 +583,7 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
     // A scene without lights is lit by the rasterizer's default sun (scene/Sky.h); give the
     // reference the same sun as a light of its own copy of the scene.
     lit::Scene withSun = scene;
-    if (lit::hasDefaultSun(scene, settings)) {
-        lit::Light sun;
-        sun.name = "default sun";
-        sun.type = lit::LightType::Directional;
-        sun.intensity = settings.defaultSunIrradiance;
-        lit::addLightNode(withSun, sun, glm::vec3(0.0f), lit::defaultSunDirection(settings));
-        withSun.updateWorldTransforms();
-    }
+    lit::addDefaultSun(withSun, settings);
     const lit::reference::ReferenceScene referenceScene(withSun, log);
     const double buildSeconds = secondsSince(buildStart);
     const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
