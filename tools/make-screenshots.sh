@@ -85,7 +85,7 @@ xvfb-run -a -s "-screen 0 1280x720x24" "$build/editor/lit-editor" "$scene" --scr
 # Sponza (no lights, no camera: Lit's default sun and gradient sky light it, through the GI too)
 # from inside the atrium, at its east end 1.7 m above the floor looking down its length, when the
 # shared scenes are present (LIT_SCENES_DIR, else ../shared/scenes beside the checkout or the
-# worktree folder). Every render setting at its default.
+# worktree folder), looking up at the sky. Every render setting at its default.
 sponza=""
 for dir in "${LIT_SCENES_DIR:-}" "$root/../shared/scenes" "$root/../../shared/scenes"; do
     if [ -n "$dir" ] && [ -f "$dir/sponza/Sponza.gltf" ]; then sponza="$dir/sponza/Sponza.gltf"; break; fi
@@ -99,7 +99,7 @@ panel camera off
 panel timeline off
 panel log off
 panel stats off
-camera 5.47 1.7 -0.31 -12.4 4.0 -0.31
+camera 5.47 1.7 -0.31 -12.4 7.5 -0.31
 wait 8
 screenshot $out/sponza_sun_sky.png noui
 quit
