@@ -18,8 +18,13 @@ start_and_wait_ready() {
     rm -f "$out/ready.txt"
     "$helper" "$1" "$2" "$3" > "$out/ready.txt" 2>&1 &
     pid=$!
+    give_up=$(( $(now_ms) + 60000 ))  # building the document takes well under a second
     while ! grep -q ready "$out/ready.txt" 2>/dev/null; do
         kill -0 "$pid" 2>/dev/null || fail "the helper ended before it was ready: $(cat "$out/ready.txt")"
+        if [ "$(now_ms)" -gt "$give_up" ]; then
+            kill -9 "$pid" 2>/dev/null
+            fail "the helper was not ready within 60 s"
+        fi
         sleep 0.002
     done
 }
@@ -33,13 +38,14 @@ run_kills() {  # MODE (save|autosave)
     # The old version, complete; kept as a pristine copy to restore before every kill.
     rm -rf "$folder" "$out/pristine"
     mkdir -p "$folder"
-    "$helper" "$mode" "$target" 0 > /dev/null || fail "$mode of version 0 failed"
+    timeout -k 5 120 "$helper" "$mode" "$target" 0 > /dev/null || fail "$mode of version 0 failed"
     cp -a "$folder" "$out/pristine"
-    # How long the save of the new version takes once the document is built.
-    start_and_wait_ready "$mode" "$target" 1
-    t0=$(now_ms)
-    wait "$pid" || fail "$mode of version 1 failed"
-    duration=$(( $(now_ms) - t0 ))
+    # How long the save of the new version takes once the document is built (the helper times
+    # it from "ready" to the end of the save and prints "saved in N ms").
+    timeout -k 5 120 "$helper" "$mode" "$target" 1 > "$out/timing.txt" 2>&1 ||
+        fail "$mode of version 1 failed: $(cat "$out/timing.txt")"
+    duration=$(sed -n 's/^saved in \([0-9]*\) ms$/\1/p' "$out/timing.txt")
+    [ -n "$duration" ] || fail "the helper did not say how long the $mode took: $(cat "$out/timing.txt")"
     [ "$duration" -gt 0 ] || duration=1
     echo "$mode: a complete save takes $duration ms; killing at $kills points over it"
     old=0; new=0
@@ -52,9 +58,9 @@ run_kills() {  # MODE (save|autosave)
         kill -9 "$pid" 2>/dev/null
         wait "$pid" 2>/dev/null
         if [ "$mode" = save ]; then
-            result=$("$helper" check "$target") || fail "kill $k at ${delay_ms} ms: the document does not load: $result"
+            result=$(timeout -k 5 120 "$helper" check "$target") || fail "kill $k at ${delay_ms} ms: the document does not load: $result"
         else
-            result=$("$helper" recover "$target") || fail "kill $k at ${delay_ms} ms: recovery failed: $result"
+            result=$(timeout -k 5 120 "$helper" recover "$target") || fail "kill $k at ${delay_ms} ms: recovery failed: $result"
         fi
         case "$result" in
             "variant 0") old=$((old + 1)) ;;
