@@ -83,7 +83,7 @@ case "$command" in
             ctest --output-on-failure -j "$jobs" --timeout 1800
         ;;
     *)
-        sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+        sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
         exit 2
         ;;
 esac
