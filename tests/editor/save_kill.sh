@@ -8,25 +8,24 @@ helper="$1"
 out="$2"
 kills="${3:-20}"
 fail() { echo "FAIL: $*"; exit 1; }
-now_ms() { date +%s%3N; }
 
 rm -rf "$out" && mkdir -p "$out" || fail "cannot create $out"
 
 # start_and_wait_ready MODE PATH VARIANT: starts the helper; returns when it has built the
-# document (the save starts right after "ready"). Sets pid.
+# document (the save starts right after "ready"). Sets pid. The helper writes "ready" into a
+# FIFO that one blocking read waits on (at most 60 s; building the document takes well under a
+# second): no polling loop, whose thousands of forks cost more than the saves themselves, and
+# the kill's delay counts from the moment the helper is ready.
 start_and_wait_ready() {
-    rm -f "$out/ready.txt"
-    "$helper" "$1" "$2" "$3" > "$out/ready.txt" 2>&1 &
+    rm -f "$out/ready" && mkfifo "$out/ready" || fail "cannot make the FIFO $out/ready"
+    "$helper" "$1" "$2" "$3" > "$out/ready" 2> "$out/helper.err" &
     pid=$!
-    give_up=$(( $(now_ms) + 60000 ))  # building the document takes well under a second
-    while ! grep -q ready "$out/ready.txt" 2>/dev/null; do
-        kill -0 "$pid" 2>/dev/null || fail "the helper ended before it was ready: $(cat "$out/ready.txt")"
-        if [ "$(now_ms)" -gt "$give_up" ]; then
-            kill -9 "$pid" 2>/dev/null
-            fail "the helper was not ready within 60 s"
-        fi
-        sleep 0.002
-    done
+    # End of file (empty) when the helper exits without saying it.
+    line=$(timeout 60 head -n 1 "$out/ready")
+    if [ "$line" != ready ]; then
+        kill -9 "$pid" 2>/dev/null
+        fail "the helper was not ready within 60 s: '$line' $(cat "$out/helper.err")"
+    fi
 }
 
 # leftovers DIR: temporaries, backups and journals of an interrupted save.

@@ -3,7 +3,7 @@
 // modes, which do what the next editor start does (recovery) and print what they find.
 //
 //   lit_save_kill_helper save FILE VARIANT       saveDocument(FILE) of document VARIANT (0 or 1);
-//                                                 prints "ready" before and "saved in N ms" after
+//                                                 prints "ready" before, "saved in N ms" (stderr) after
 //   lit_save_kill_helper autosave FOLDER VARIANT  Autosave(FOLDER).saveNow of document VARIANT (same)
 //   lit_save_kill_helper check FILE               openDocument(FILE) (recovers interrupted saves
 //                                                 first); prints "variant N" or fails (exit 1)
@@ -73,7 +73,8 @@ int variantOf(const Document& doc) {
 // "saved in N ms": from "ready" to the end of the save, for spreading the kills over it.
 void printSaveTime(std::chrono::steady_clock::time_point start) {
     const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
-    std::printf("saved in %lld ms\n", static_cast<long long>(ms.count()));
+    // On stderr: stdout is the test's "ready" pipe, whose reader is gone by now.
+    std::fprintf(stderr, "saved in %lld ms\n", static_cast<long long>(ms.count()));
 }
 
 }  // namespace
