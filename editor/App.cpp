@@ -94,6 +94,7 @@ App::App(const EditorOptions& options, std::vector<ScriptCommand> script)
     gl::requireCapabilities();
     // In every build type: GL errors reach the log panel (and stderr) in release builds too.
     gl::installDebugOutput(log_);
+    gl::injectGlErrorIfRequested();  // LIT_TEST_GL_ERROR=1: the test that it reaches the log
     log_.info("OpenGL " + gl::contextDescription());
     renderer_ = std::make_unique<Renderer>(defaultShaderRoot(), log_);
     imgui_.emplace(window_.handle());
@@ -125,7 +126,7 @@ Document App::loadInitialDocument() {
     // constructor starts it: members after doc_ do not exist yet here).
     if (interactive()) return Document{};
     try {
-        Document doc = openDocument(path, log_);
+        Document doc = openDocument(path, log_, {}, loadLimits());
         log_.info("opened scene " + path.string());
         return doc;
     } catch (const std::exception& error) {
@@ -200,7 +201,7 @@ std::string App::openScene(const std::filesystem::path& path) {
     }
     Document loaded;
     try {
-        loaded = openDocument(path, log_);
+        loaded = openDocument(path, log_, {}, loadLimits());
     } catch (const std::exception& error) {
         sceneError_ = error.what();
         log_.error(sceneError_);
@@ -221,11 +222,14 @@ void App::startLoading(const std::filesystem::path& path) {
     loading.startSeconds = glfwGetTime();
     // The worker gets its own copies: the path, the status it reports into, and the log, which
     // is thread-safe. The Document comes back through the future (or its exception does).
-    loading.result = std::async(std::launch::async, [path, status = loading.status, &log = log_] {
-        return openDocument(path, log, [status](const LoadProgress& progress) {
-            const std::lock_guard lock(status->mutex);
-            status->progress = progress;
-        });
+    loading.result = std::async(std::launch::async, [path, status = loading.status, &log = log_, limits = loadLimits()] {
+        return openDocument(
+            path, log,
+            [status](const LoadProgress& progress) {
+                const std::lock_guard lock(status->mutex);
+                status->progress = progress;
+            },
+            limits);
     });
     loading_ = std::move(loading);
     log_.info("loading " + path.string());

@@ -75,6 +75,12 @@ private:
     // A person at the window (neither --script nor --screenshot): scenes load in the background,
     // autosave runs, questions are asked.
     bool interactive() const { return !options_.script && !options_.screenshot; }
+    // What a scene this session opens may make the loader read (--allow-external-uris).
+    GltfLimits loadLimits() const {
+        GltfLimits limits;
+        limits.allowExternalUris = options_.allowExternalUris;
+        return limits;
+    }
     Document loadInitialDocument();
 
     // ---- files -----------------------------------------------------------------------------

@@ -42,9 +42,10 @@ std::optional<std::string> readTextFile(const fs::path& file) {
 
 // The scene and its camera path, as openDocument and recovery read them.
 Document loadScene(const fs::path& sceneFile, const fs::path& documentFile, Log& log,
-                   const std::function<void(const LoadProgress&)>& progress = {}) {
+                   const std::function<void(const LoadProgress&)>& progress = {}, const GltfLimits& limits = {}) {
     GltfLoadOptions options;
     options.progress = progress;
+    options.limits = limits;
     Scene scene = loadGltf(sceneFile, log, options);  // logs the summary line
     addDefaultCamera(scene, log);
     CameraPath path;
@@ -120,12 +121,13 @@ fs::path settingsSidecarPath(const fs::path& sceneFile) {
     return sidecar;
 }
 
-Document openDocument(const fs::path& file, Log& log, const std::function<void(const LoadProgress&)>& progress) {
+Document openDocument(const fs::path& file, Log& log, const std::function<void(const LoadProgress&)>& progress,
+                      const GltfLimits& limits) {
     // A save of this document that a crash interrupted is finished (past its commit point) or
     // undone before the file is read, and its temporaries removed.
     for (const std::string& line : recoverInterruptedSaves(file.has_parent_path() ? file.parent_path() : fs::path(".")))
         log.info(line);
-    Document doc = loadScene(file, file, log, progress);
+    Document doc = loadScene(file, file, log, progress, limits);
     const fs::path sidecar = settingsSidecarPath(file);
     std::error_code error;
     if (fs::exists(sidecar, error)) {

@@ -31,9 +31,11 @@ std::filesystem::path settingsSidecarPath(const std::filesystem::path& sceneFile
 // present. A bad camera path or sidecar is a warning in `log` (the document opens with an empty
 // path / default settings), not a failure. The document is clean, its file `file`. Logs a
 // summary line (meshes, triangles, textures, MB, milliseconds). `progress` (optional) is called
-// on the calling thread as loading goes (GltfLoader.h).
+// on the calling thread as loading goes (GltfLoader.h). `limits` bound what the file may make
+// the loader read and allocate (io/GltfGuard.h; lit-editor --allow-external-uris sets
+// allowExternalUris).
 Document openDocument(const std::filesystem::path& file, Log& log,
-                      const std::function<void(const LoadProgress&)>& progress = {});
+                      const std::function<void(const LoadProgress&)>& progress = {}, const GltfLimits& limits = {});
 
 // Makes camera animation `name` the one the camera path edits (the timeline's animation combo,
 // script "animation NAME"): read from the document's file when the file has it, else a new

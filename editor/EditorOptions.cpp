@@ -61,6 +61,8 @@ EditorOptions parseEditorOptions(std::span<const std::string_view> args) {
             framesGiven = true;
         } else if (arg == "--size") {
             std::tie(options.width, options.height) = parseSize(value());
+        } else if (arg == "--allow-external-uris") {
+            options.allowExternalUris = true;
         } else if (arg.starts_with("-") && arg.size() > 1) {
             throw OptionsError("unknown option '" + std::string(arg) + "'");
         } else {
@@ -79,6 +81,7 @@ EditorOptions parseEditorOptions(std::span<const std::string_view> args) {
 
 std::string editorUsage() {
     return "usage: lit-editor [SCENE.gltf|.glb] [--screenshot FILE.png [--frames N] | --script FILE] [--size WxH]\n"
+           "                  [--allow-external-uris]\n"
            "  SCENE              glTF scene to open (default: the built-in Cornell box)\n"
            "  --screenshot FILE  render N frames, save the window (UI included) as a PNG, exit\n"
            "  --frames N         frames to render before the screenshot (default 8)\n"
@@ -88,6 +91,8 @@ std::string editorUsage() {
            "                     material unique, primitive, gizmo, space, snap, drag, frame, orbit,\n"
            "                     animation, key, play, pause, time, wait N, quit; see docs/EDITOR.md)\n"
            "  --size WxH         window size in screen coordinates (default 1280x720)\n"
+           "  --allow-external-uris  let scenes read buffers and images outside their folder\n"
+           "                     (absolute paths, '..', file:); off: such a scene is refused\n"
            "Viewport: left click selects (Shift+click adds), drag a gizmo handle to move/rotate/scale,\n"
            "Alt+left drag orbits around the selection, right drag looks around and, while held,\n"
            "WASD moves, Q/E down/up, Shift faster, mouse wheel changes the speed.\n"

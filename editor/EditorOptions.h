@@ -1,6 +1,7 @@
 #pragma once
 // lit-editor's command line:
 //   lit-editor [SCENE] [--screenshot FILE.png [--frames N] | --script FILE] [--size WxH]
+//              [--allow-external-uris]
 // Parsed into plain data so it can be tested without a window.
 
 #include <filesystem>
@@ -24,6 +25,11 @@ struct EditorOptions {
     std::optional<std::filesystem::path> script;
     int width = 1280;  // window size, screen coordinates
     int height = 720;
+    // --allow-external-uris, as lit-render's: scenes may read buffers and images outside their
+    // folder (absolute paths, "..", file:). Off, such a scene is refused (GltfLimits), so a file
+    // from the internet cannot read, and a later Save copy, arbitrary files of the user. Applies
+    // to every scene this session opens (command line, File > Open, recent files, script "open").
+    bool allowExternalUris = false;
     bool help = false;
 };
 

@@ -26,6 +26,7 @@ build() {
     # The loader's CPU part and what it needs; tinygltf and stb_image compiled in, instrumented.
     local sources=(renderer/scene/GltfLoader.cpp renderer/io/GltfGuard.cpp renderer/io/GltfFile.cpp
                    renderer/io/AtomicFile.cpp renderer/Log.cpp renderer/scene/Scene.cpp renderer/scene/Tangents.cpp
+                   renderer/animation/CameraPathIO.cpp renderer/animation/CameraPath.cpp renderer/scene/CameraView.cpp
                    tests/fuzz/tinygltf_impl.cpp tests/fuzz/fuzz_gltf_loader.cpp)
     local objects=()
     for source in "${sources[@]}"; do
@@ -36,7 +37,8 @@ build() {
         [ ! -f "$object" ] || [ "$root/$source" -nt "$object" ] && stale=1
         if [ "$source" != tests/fuzz/tinygltf_impl.cpp ]; then
             for header in renderer/io/GltfGuard.h renderer/scene/GltfLoader.h renderer/io/GltfFile.h \
-                          renderer/io/AtomicFile.h renderer/scene/Scene.h renderer/Log.h tests/fuzz/GltfFuzzInput.h; do
+                          renderer/io/AtomicFile.h renderer/scene/Scene.h renderer/Log.h tests/fuzz/GltfFuzzInput.h \
+                          renderer/animation/CameraPathIO.h renderer/animation/CameraPath.h; do
                 [ "$root/$header" -nt "$object" ] && stale=1
             done
         fi

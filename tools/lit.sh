@@ -6,6 +6,8 @@
 #   tools/lit.sh test-sanitize    the same with AddressSanitizer + UndefinedBehaviorSanitizer
 #   tools/lit.sh build            install what is missing and build
 #   tools/lit.sh build-release    build the programs as Release (in build-release/), no tests
+#   tools/lit.sh build-types      build Debug, Release and MinSizeRel with the tests (build-<type>/)
+#                                 and run each one's CPU tests (RelWithDebInfo is what `test` builds)
 #   tools/lit.sh install PREFIX   build Release and install lit-render, lit-editor, shaders, assets
 #   tools/lit.sh deps             only install what is missing
 #
@@ -35,6 +37,15 @@ case "$command" in
     build-release)
         "$root/tools/install-deps.sh"
         build "${LIT_RELEASE_BUILD_DIR:-$root/build-release}" -DCMAKE_BUILD_TYPE=Release -DLIT_BUILD_TESTS=OFF
+        ;;
+    build-types)
+        "$root/tools/install-deps.sh"
+        for type in Debug Release MinSizeRel; do
+            dir="$root/build-$(echo "$type" | tr '[:upper:]' '[:lower:]')"
+            echo "lit: $type in $dir" >&2
+            build "$dir" -DCMAKE_BUILD_TYPE="$type"
+            (cd "$dir" && ctest -L cpu --output-on-failure -j "$jobs" --timeout 900)
+        done
         ;;
     install)
         [ $# -eq 1 ] || { echo "usage: tools/lit.sh install PREFIX" >&2; exit 2; }

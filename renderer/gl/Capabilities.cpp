@@ -5,7 +5,9 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdlib>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lit::gl {
@@ -135,6 +137,14 @@ void installDebugOutput(Log& log) {
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DEBUG_SEVERITY_NOTIFICATION, 0, nullptr, GL_FALSE);
     glDebugMessageCallback(onDebugMessage, &log);
+}
+
+bool injectGlErrorIfRequested() {
+    const char* request = std::getenv("LIT_TEST_GL_ERROR");
+    if (request == nullptr || std::string_view(request) != "1") return false;
+    // Buffer names are small integers handed out by glCreateBuffers; this one was never made.
+    glBindBuffer(GL_ARRAY_BUFFER, 0x7fffffffu);
+    return true;
 }
 
 }  // namespace lit::gl

@@ -15,6 +15,14 @@ void requireCapabilities();
 // caused it). `log` must outlive the context's use of the callback.
 void installDebugOutput(Log& log);
 
+// Test seam for the GL-error paths: when the environment variable LIT_TEST_GL_ERROR is "1",
+// makes one invalid GL call (binding a buffer name that was never generated, which core
+// profile answers with GL_INVALID_OPERATION) and returns true; otherwise does nothing. The
+// programs call it once (lit-render after its frames, the editor when its context is set up)
+// so tests can check what a real GL error does there: lit-render exits 1 and writes nothing,
+// the editor logs it (docs/RELIABILITY.md).
+bool injectGlErrorIfRequested();
+
 std::string contextDescription();  // "4.5 (Core Profile) Mesa 22.3.6 — llvmpipe (...)"
 
 }  // namespace gl

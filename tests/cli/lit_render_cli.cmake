@@ -164,6 +164,22 @@ if(NOT rc EQUAL 2 OR NOT err MATCHES "needs about [0-9]+ MB, more than the 100 M
   message(FATAL_ERROR "a render over the memory cap: exit ${rc}\n${err}")
 endif()
 
+# A GL error during a render (issue #14: it used to end in exit 0 with the error only in the
+# log) makes lit-render exit 1 with a message and write nothing. LIT_TEST_GL_ERROR=1 makes one
+# invalid GL call after the frames (gl::injectGlErrorIfRequested), caught by the same debug
+# output a driver or pass error would reach. A 16x16 render without GI: about a second.
+set(gl_error_png "${OUT_DIR}/gl_error.png")
+execute_process(COMMAND "${CMAKE_COMMAND}" -E env LIT_TEST_GL_ERROR=1
+    "${LIT_RENDER}" "${cornell}" --out "${gl_error_png}" --size 16x16 --gi off
+  RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 120)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "lit: error: GL error \\(api" OR NOT err MATCHES
+   "lit-render: 1 GL error during the render \\(see above\\); nothing was written")
+  message(FATAL_ERROR "a GL error during the render: exit ${rc} (expected 1 and both messages)\n${err}")
+endif()
+if(EXISTS "${gl_error_png}" OR EXISTS "${gl_error_png}.tmp")
+  message(FATAL_ERROR "lit-render wrote ${gl_error_png} although the render had a GL error")
+endif()
+
 # Unknown keys and clamped values in a settings file are warnings, and the render goes on.
 file(WRITE "${OUT_DIR}/odd.json" "{\"sparkles\": 3, \"specularSamples\": 50, \"gi\": false, \"width\": 16, \"height\": 16}")
 run_lit_render("${cornell}" --out "${OUT_DIR}/odd.png" --settings "${OUT_DIR}/odd.json")

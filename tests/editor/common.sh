@@ -15,9 +15,18 @@ require_xvfb() {
 }
 
 # xvfb_editor ARGS...: runs $editor with ARGS on an Xvfb screen of the size every editor test
-# uses, returning its exit status.
+# uses, returning its exit status. Every run is bounded: $editor_timeout seconds (default 240;
+# a script whose runs take longer sets it, below its CTest TIMEOUT divided by its runs). timeout
+# signals its whole process group (xvfb-run, Xvfb and the editor; TERM, then KILL 10 s later),
+# so a hung run fails with a message and leaves no process behind. xvfb-run -a picks a free
+# display and, when a test running in parallel takes the same one first, tries the next.
 xvfb_editor() {
-    xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$@"
+    timeout -k 10 "${editor_timeout:-240}" xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$@"
+    status=$?
+    if [ "$status" -eq 124 ] || [ "$status" -eq 137 ]; then
+        echo "FAIL: lit-editor $* did not finish within ${editor_timeout:-240} s and was stopped" >&2
+    fi
+    return "$status"
 }
 
 # run_editor ARGS...: the same, failing the test unless lit-editor exits 0.

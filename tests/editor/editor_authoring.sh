@@ -17,6 +17,7 @@ scene=$4
 out=$5
 
 . "$(dirname "$0")/common.sh"
+editor_timeout=140  # two runs; CTest TIMEOUT 300
 require_xvfb
 [ -f "$scene" ] || fail "scene $scene not found"
 mkdir -p "$out"

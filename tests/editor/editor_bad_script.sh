@@ -10,13 +10,14 @@ scene=$2
 out=$3
 
 . "$(dirname "$0")/common.sh"
+editor_timeout=200  # one run under Xvfb after the quick ones; CTest TIMEOUT 300
 
 mkdir -p "$out"
 
 # expect_parse_error NAME LINE WORD: runs script NAME, expects status 2 and "NAME:LINE:" and WORD
 # in the message.
 expect_parse_error() {
-    messages=$(env -u DISPLAY "$editor" "$scene" --script "$out/$1" --size 64x64 2>&1)
+    messages=$(env -u DISPLAY timeout -k 5 60 "$editor" "$scene" --script "$out/$1" --size 64x64 2>&1)
     status=$?
     echo "$messages"
     [ "$status" -eq 2 ] || fail "$1: expected exit status 2, got $status"
@@ -36,7 +37,7 @@ expect_parse_error bad_panel.txt 2 maybe
 printf 'view final\nview nonsense\n' >"$out/bad_view.txt"
 expect_parse_error bad_view.txt 2 nonsense
 
-messages=$(env -u DISPLAY "$editor" "$scene" --script "$out/no_such_script.txt" 2>&1)
+messages=$(env -u DISPLAY timeout -k 5 60 "$editor" "$scene" --script "$out/no_such_script.txt" 2>&1)
 status=$?
 echo "$messages"
 [ "$status" -eq 2 ] || fail "a missing script file: expected exit status 2, got $status"

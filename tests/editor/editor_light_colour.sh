@@ -10,6 +10,7 @@ scene=$3
 out=$4
 
 . "$(dirname "$0")/common.sh"
+editor_timeout=540  # one run; CTest TIMEOUT 600
 require_xvfb
 [ -f "$scene" ] || fail "scene $scene not found"
 mkdir -p "$out"

@@ -13,7 +13,7 @@ missing=/nonexistent/lit-editor-test/missing-scene.gltf
 
 mkdir -p "$(dirname "$out")"
 rm -f "$out"
-messages=$("$editor" "$missing" --screenshot "$out" --frames 1 2>&1)
+messages=$(timeout -k 5 40 "$editor" "$missing" --screenshot "$out" --frames 1 2>&1)  # CTest TIMEOUT 60
 status=$?
 echo "$messages"
 [ "$status" -ne 0 ] || fail "lit-editor exited 0 for a missing scene"

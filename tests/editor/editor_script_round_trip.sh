@@ -11,6 +11,7 @@ scene=$3
 out=$4
 
 . "$(dirname "$0")/common.sh"
+editor_timeout=280  # two runs; CTest TIMEOUT 600
 require_xvfb
 [ -f "$scene" ] || fail "scene $scene not found"
 mkdir -p "$out"

@@ -11,6 +11,7 @@ scene=$3
 out=$4
 
 . "$(dirname "$0")/common.sh"
+editor_timeout=840  # one run; CTest TIMEOUT 900
 require_xvfb
 [ -f "$scene" ] || fail "scene $scene not found"
 rm -rf "$out"

@@ -2,8 +2,9 @@
 // test SIGKILLs it at a chosen moment, then checks what is on disk with this program's other
 // modes, which do what the next editor start does (recovery) and print what they find.
 //
-//   lit_save_kill_helper save FILE VARIANT       saveDocument(FILE) of document VARIANT (0 or 1)
-//   lit_save_kill_helper autosave FOLDER VARIANT  Autosave(FOLDER).saveNow of document VARIANT
+//   lit_save_kill_helper save FILE VARIANT       saveDocument(FILE) of document VARIANT (0 or 1);
+//                                                 prints "ready" before, "saved in N ms" (stderr) after
+//   lit_save_kill_helper autosave FOLDER VARIANT  Autosave(FOLDER).saveNow of document VARIANT (same)
 //   lit_save_kill_helper check FILE               openDocument(FILE) (recovers interrupted saves
 //                                                 first); prints "variant N" or fails (exit 1)
 //   lit_save_kill_helper recover FOLDER           the next editor start: Autosave(FOLDER), recover
@@ -16,6 +17,7 @@
 #include "DocumentIO.h"
 #include "Log.h"
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -68,6 +70,13 @@ int variantOf(const Document& doc) {
     return -1;
 }
 
+// "saved in N ms": from "ready" to the end of the save, for spreading the kills over it.
+void printSaveTime(std::chrono::steady_clock::time_point start) {
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
+    // On stderr: stdout is the test's "ready" pipe, whose reader is gone by now.
+    std::fprintf(stderr, "saved in %lld ms\n", static_cast<long long>(ms.count()));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -84,7 +93,9 @@ int main(int argc, char** argv) {
             Document doc = makeDocument(std::atoi(argv[3]));
             std::printf("ready\n");
             std::fflush(stdout);
+            const auto start = std::chrono::steady_clock::now();
             lit::editor::saveDocument(doc, path);
+            printSaveTime(start);
             return 0;
         }
         if (mode == "autosave" && argc == 4) {
@@ -93,7 +104,9 @@ int main(int argc, char** argv) {
             lit::editor::Autosave autosave(path, 60.0);
             std::printf("ready\n");
             std::fflush(stdout);
+            const auto start = std::chrono::steady_clock::now();
             autosave.saveNow(doc);
+            printSaveTime(start);
             return 0;
         }
         if (mode == "check") {

@@ -113,6 +113,33 @@ TEST(DocumentIO, OpenMissingFileThrows) {
     EXPECT_THROW(openDocument(freshFolder("missing") / "nope.gltf", log), SceneLoadError);
 }
 
+// A buffer outside the scene's folder (here "../cornell_box.bin") is refused unless the session
+// allows external URIs (lit-editor --allow-external-uris).
+TEST(DocumentIO, ExternalBufferIsRefusedUnlessAllowed) {
+    const fs::path folder = freshFolder("external");
+    fs::create_directories(folder / "inner");
+    fs::copy_file(fs::path(defaultScenePath()).replace_extension(".bin"), folder / "cornell_box.bin");
+    std::string text = readText(defaultScenePath());
+    const std::string uri = "\"uri\": \"cornell_box.bin\"";
+    const std::size_t at = text.find(uri);
+    ASSERT_NE(at, std::string::npos) << "the Cornell box no longer names cornell_box.bin";
+    text.replace(at, uri.size(), "\"uri\": \"../cornell_box.bin\"");
+    const fs::path scene = folder / "inner" / "outside.gltf";
+    std::ofstream(scene) << text;
+    Log log;
+    quiet(log);
+    try {
+        openDocument(scene, log);
+        ADD_FAILURE() << "a buffer outside the scene's folder was read";
+    } catch (const SceneLoadError& error) {
+        EXPECT_NE(std::string(error.what()).find("--allow-external-uris"), std::string::npos) << error.what();
+    }
+    GltfLimits limits;
+    limits.allowExternalUris = true;
+    const Document doc = openDocument(scene, log, {}, limits);
+    EXPECT_FALSE(doc.scene.meshes.empty());
+}
+
 // A scene without lights gets no light node (the renderer lights it with its default sun and
 // sky, which a save does not write); a scene without cameras gets a camera.
 TEST(DocumentIO, OpenGivesASceneWithoutLightsAndCamerasDefaults) {

@@ -61,6 +61,16 @@ TEST(EditorOptions, Help) {
     EXPECT_TRUE(parse({"-h"}).help);
 }
 
+// As lit-render's flag: off unless given, so a scene from elsewhere cannot read other files.
+TEST(EditorOptions, AllowExternalUrisIsOffUnlessGiven) {
+    EXPECT_FALSE(parse({"scene.gltf"}).allowExternalUris);
+    const EditorOptions options = parse({"--allow-external-uris", "scene.gltf"});
+    EXPECT_TRUE(options.allowExternalUris);
+    ASSERT_TRUE(options.scene);
+    EXPECT_EQ(*options.scene, "scene.gltf");
+    EXPECT_NE(lit::editor::editorUsage().find("--allow-external-uris"), std::string::npos);
+}
+
 TEST(EditorOptions, RejectsBadInputWithMessagesNamingTheProblem) {
     EXPECT_NE(errorOf({"--size", "640"}).find("WIDTHxHEIGHT"), std::string::npos);
     EXPECT_NE(errorOf({"--size", "0x360"}).find("--size"), std::string::npos);

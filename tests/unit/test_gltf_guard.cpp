@@ -10,7 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <chrono>
+#include <ctime>
 #include <cstring>
 #include <vector>
 #include <fstream>
@@ -270,11 +270,13 @@ TEST(GltfGuard, IdenticalImagesAreDecodedOnceAndShared) {
     doc["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", kCopies - 1}}}}}}});
     doc["meshes"][0]["primitives"][0]["material"] = 0;
     QuietLog log;
-    const auto start = std::chrono::steady_clock::now();
     GltfLoadOptions options;
     options.decodeThreads = 1;
+    // Processor time, not wall time: the check is about the work done, and must not fail because
+    // a loaded CI machine gave this process a fraction of a core.
+    const std::clock_t start = std::clock();
     const Scene scene = loadGltf(writeScene(dir, "copies.gltf", doc), log, options);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     ASSERT_EQ(scene.images.size(), static_cast<std::size_t>(kCopies));
     for (const Texture& texture : scene.textures) EXPECT_EQ(texture.image, 0);
     EXPECT_EQ(scene.images[0].width, 64);
@@ -282,7 +284,7 @@ TEST(GltfGuard, IdenticalImagesAreDecodedOnceAndShared) {
     EXPECT_TRUE(scene.images[0].srgb) << "the shared image is used as colour";
     EXPECT_LT(summarize(scene).pixelBytes, 64u * 64u * 4u + kCopies * 4u + 16u);
     // 3000 decodes of this PNG took ~1.5 s (measured before sharing); one decode is ~1 ms.
-    EXPECT_LT(seconds, 5.0);
+    EXPECT_LT(seconds, 5.0) << "processor seconds";
 }
 
 TEST(GltfGuard, DecodedTexturesOverTheBudgetNameTheImage) {

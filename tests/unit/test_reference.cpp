@@ -427,7 +427,9 @@ TEST(ReferenceProgressive, AccumulatesWhileStillAndRestartsOnChange) {
     ReferenceSettings settings;
     progressive.update(scene, camera, 16, 16, settings);
     const auto waitFor = [&](int samples) {
-        for (int i = 0; i < 2000 && progressive.status().samplesPerPixel < samples; ++i)
+        // Up to 60 s: a few milliseconds of work, but a loaded 2-core machine under ASan may
+        // give the worker thread little time; the bound only stops a hang.
+        for (int i = 0; i < 12000 && progressive.status().samplesPerPixel < samples; ++i)
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
         return progressive.status();
     };
@@ -447,7 +449,7 @@ TEST(ReferenceProgressive, AccumulatesWhileStillAndRestartsOnChange) {
     scene.nodes[static_cast<std::size_t>(scene.nodeOfLight(0))].translation.y = 1.5f;
     ++scene.lightRevision;
     progressive.update(scene, camera, 16, 16, settings);
-    for (int i = 0; i < 2000 && progressive.status().restarts < 2; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    for (int i = 0; i < 12000 && progressive.status().restarts < 2; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     EXPECT_EQ(progressive.status().restarts, 2u);
     EXPECT_GE(waitFor(2).samplesPerPixel, 2);
     progressive.stop();

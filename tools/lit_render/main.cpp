@@ -783,6 +783,7 @@ int run(const Options& options) {
         renderer.render(scene, camera, settings);
         if (options.benchFrames > 0) recordBenchFrame(bench, passIndex, renderer, frameStart);
     }
+    lit::gl::injectGlErrorIfRequested();  // LIT_TEST_GL_ERROR=1: the test of the check below
     glFinish();
     if (settings.autoExposure) std::printf("auto exposure: %+.2f EV\n", static_cast<double>(renderer.exposureEv(settings)));
     if (options.benchFrames > 0 && settings.gi) bench.mipmaps = renderer.benchmarkMipmaps(7);
