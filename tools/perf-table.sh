@@ -242,7 +242,7 @@ if compare_rev and groups:
         for i, (b, a) in enumerate(ab, 1):
             cb, ca = cpu_seconds(f"before-{tag}-{i}"), cpu_seconds(f"after-{tag}-{i}")
             w(f"| {tag} | {i} | {cone(b):.1f} | {cone(a):.1f} | {cone(b) / cone(a):.2f}× | {cb:.2f} | {ca:.2f} | {cb - ca:.2f} |")
-fast_rounds = sorted({int(f.split("-")[-1][:-5]) for f in os.listdir(results) if f.startswith("cornell-gi-off-")})
+fast_rounds = sorted({int(f[len("cornell-gi-off-"):-len(".json")]) for f in os.listdir(results) if f.startswith("cornell-gi-off-") and f.endswith(".json")})
 if fast_rounds:
     def pass_mean(run, name):
         for p in run["passes"]:
