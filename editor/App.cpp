@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <sstream>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "ViewportOverlay.h"
 #include "gl/Capabilities.h"
 #include "image/ImageIO.h"
+#include "io/AtomicFile.h"
 #include "panels/CameraPanel.h"
 #include "panels/ErrorPanel.h"
 #include "panels/Layout.h"
@@ -462,6 +464,7 @@ int App::run() {
         const glm::ivec2 renderSize =
             glm::max(glm::ivec2(glm::round(glm::vec2(target.z, target.w) * renderScale)), glm::ivec2(1));
         syncRendererStructure();
+        if (options_.frameLog) frameLog_.push_back({now, renderScale, renderSize, cameraMoved_});
 
         doc_.settings.width = renderSize.x;
         doc_.settings.height = renderSize.y;
@@ -510,16 +513,39 @@ int App::run() {
     }
     // A normal quit: the autosave copy is not needed at the next start.
     if (autosave_ && *exitCode_ == 0) autosave_->cleanExit();
+    if (options_.frameLog) writeFrameLog(glfwGetTime());
     return *exitCode_;
+}
+
+void App::writeFrameLog(double end) {
+    std::ostringstream out;
+    out << "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved\n";
+    char line[160];
+    for (std::size_t i = 0; i < frameLog_.size(); ++i) {
+        const FrameLogRow& row = frameLog_[i];
+        // A frame lasts until the next one begins (the loop's own frame time: update, render,
+        // present); the last one until the editor ends.
+        const double next = i + 1 < frameLog_.size() ? frameLog_[i + 1].start : end;
+        std::snprintf(line, sizeof line, "%zu,%.4f,%.2f,%d,%d,%.2f,%d\n", i, row.start - frameLog_.front().start,
+                      (next - row.start) * 1000.0, row.renderSize.x, row.renderSize.y, row.renderScale,
+                      row.cameraMoved ? 1 : 0);
+        out << line;
+    }
+    try {
+        writeFileAtomically(*options_.frameLog, out.str());
+    } catch (const std::exception& e) {
+        log_.error(std::string("frame log: ") + e.what());
+    }
 }
 
 float App::renderScaleFor(double frameSeconds, const glm::mat4& view) {
     const float full = std::clamp(viewport_.renderScale, 0.1f, 1.0f);
     const bool moving = view != lastView_;
     lastView_ = view;
+    cameraMoved_ = moving;
     const float target = doc_.settings.interactiveFpsTarget;
-    // Scripts and screenshots render what they ask for, at the chosen scale.
-    if (scriptMode() || options_.screenshot || target <= 0.0f || !(moving || ImGui::IsAnyItemActive())) {
+    // Scripts (unless "interactive on") and screenshots render what they ask for, at the chosen scale.
+    if ((scriptMode() && !scriptInteractive_) || options_.screenshot || target <= 0.0f || !(moving || ImGui::IsAnyItemActive())) {
         interactiveScale_ = full;
         return full;
     }
@@ -1055,6 +1081,10 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
     }
     if (name == "undo") return doc_.undo() ? "" : "nothing to undo";
     if (name == "redo") return doc_.redo() ? "" : "nothing to redo";
+    if (name == "interactive") {
+        scriptInteractive_ = arg(0) == "on";
+        return "";
+    }
     if (name == "wait") {
         const std::optional<int> frames = parseNumber<int>(arg(0));
         if (!frames || *frames < 1) return "wait: expected a whole number of frames, got '" + arg(0) + "'";

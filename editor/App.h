@@ -254,6 +254,17 @@ private:
     // while the camera moves or a value is dragged, and the last frame's view to detect motion.
     float interactiveScale_ = 1.0f;
     glm::mat4 lastView_{0.0f};
+    bool cameraMoved_ = false;          // this frame's view differs from the last one's
+    bool scriptInteractive_ = false;    // script command "interactive on"
+    // --frame-log: one row per rendered frame, written at exit.
+    struct FrameLogRow {
+        double start = 0.0;  // s, glfwGetTime() when the frame began
+        float renderScale = 1.0f;
+        glm::ivec2 renderSize{0};
+        bool cameraMoved = false;
+    };
+    std::vector<FrameLogRow> frameLog_;
+    void writeFrameLog(double end);
     // The viewport's render scale this frame: viewport_.renderScale when still, lower while
     // interacting so the frame time meets the target.
     float renderScaleFor(double frameSeconds, const glm::mat4& view);

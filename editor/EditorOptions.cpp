@@ -59,6 +59,10 @@ EditorOptions parseEditorOptions(std::span<const std::string_view> args) {
             if (options.frames < 1 || options.frames > kMaxFrames)
                 throw OptionsError("--frames must be in 1.." + std::to_string(kMaxFrames));
             framesGiven = true;
+        } else if (arg == "--frame-log") {
+            const std::string_view file = value();
+            if (file.empty()) throw OptionsError("--frame-log needs a file name");
+            options.frameLog = std::filesystem::path(file);
         } else if (arg == "--size") {
             std::tie(options.width, options.height) = parseSize(value());
         } else if (arg == "--allow-external-uris") {
@@ -82,6 +86,7 @@ EditorOptions parseEditorOptions(std::span<const std::string_view> args) {
 std::string editorUsage() {
     return "usage: lit-editor [SCENE.gltf|.glb] [--screenshot FILE.png [--frames N] | --script FILE] [--size WxH]\n"
            "                  [--allow-external-uris]\n"
+           "                  [--frame-log FILE.csv]\n"
            "  SCENE              glTF scene to open (default: the built-in Cornell box)\n"
            "  --screenshot FILE  render N frames, save the window (UI included) as a PNG, exit\n"
            "  --frames N         frames to render before the screenshot (default 8)\n"
@@ -93,6 +98,8 @@ std::string editorUsage() {
            "  --size WxH         window size in screen coordinates (default 1280x720)\n"
            "  --allow-external-uris  let scenes read buffers and images outside their folder\n"
            "                     (absolute paths, '..', file:); off: such a scene is refused\n"
+           "  --frame-log FILE   at exit, write each frame's start, duration, render size and scale\n"
+           "                     and whether the camera moved to FILE (CSV)\n"
            "Viewport: left click selects (Shift+click adds), drag a gizmo handle to move/rotate/scale,\n"
            "Alt+left drag orbits around the selection, right drag looks around and, while held,\n"
            "WASD moves, Q/E down/up, Shift faster, mouse wheel changes the speed.\n"

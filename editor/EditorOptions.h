@@ -2,6 +2,7 @@
 // lit-editor's command line:
 //   lit-editor [SCENE] [--screenshot FILE.png [--frames N] | --script FILE] [--size WxH]
 //              [--allow-external-uris]
+//              [--frame-log FILE.csv]
 // Parsed into plain data so it can be tested without a window.
 
 #include <filesystem>
@@ -23,6 +24,9 @@ struct EditorOptions {
     int frames = 8;
     // Script mode: run the editor actions in this file (Script.h), one per frame, then exit.
     std::optional<std::filesystem::path> script;
+    // Frame log: at exit, one CSV line per rendered frame (start time, duration, render size and
+    // scale, whether the camera moved) is written to this file; for measuring frame rates.
+    std::optional<std::filesystem::path> frameLog;
     int width = 1280;  // window size, screen coordinates
     int height = 720;
     // --allow-external-uris, as lit-render's: scenes may read buffers and images outside their

@@ -128,6 +128,10 @@ std::string check(const ScriptCommand& c) {
     if (name == "open") return count(1, 1, "a file");
     if (name == "undo" || name == "redo" || name == "play" || name == "pause" || name == "quit")
         return count(0, 0, "no arguments");
+    if (name == "interactive") {
+        if (auto e = count(1, 1, "on or off"); !e.empty()) return e;
+        return a[0] == "on" || a[0] == "off" ? "" : "interactive: expected on or off, got '" + a[0] + "'";
+    }
     if (name == "wait") {
         if (auto e = count(1, 1, "a number of frames"); !e.empty()) return e;
         return isCount(a[0], 1) ? "" : "wait: expected a whole number of frames (1 or more), got '" + a[0] + "'";

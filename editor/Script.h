@@ -31,6 +31,9 @@
 //   camera X Y Z TX TY TZ        put the fly camera at (X, Y, Z) looking at (TX, TY, TZ), metres
 //   undo | redo
 //   wait N                       let N frames render
+//   interactive on|off           the interactive render scale (RenderSettings::interactiveFpsTarget)
+//                                also in the script (off by default: scripts render at the
+//                                chosen scale, reproducibly)
 //   key add|delete|select I|time I T|update I   camera path keys (the timeline's actions)
 //   play | pause | time T        camera path playback
 //   quit

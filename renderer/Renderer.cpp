@@ -6,6 +6,7 @@
 #include "passes/ConeTracePass.h"
 #include "passes/DirectLightingPass.h"
 #include "passes/FrameUniforms.h"
+#include "passes/IndirectFallbackPass.h"
 #include "passes/IndirectResolvePass.h"
 #include "passes/InjectPass.h"
 #include "passes/MipmapPass.h"
@@ -106,6 +107,7 @@ struct Renderer::Impl {
           mipmap(shaderRoot),
           coneTrace(shaderRoot),
           resolve(shaderRoot),
+          fallback(shaderRoot),
           overlayPass(shaderRoot),
           voxelDebug(shaderRoot),
           autoExposure(shaderRoot),
@@ -113,8 +115,8 @@ struct Renderer::Impl {
           lightBuffer("lights", sizeof(gpu::GpuLight) * LIT_MAX_LIGHTS, nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
     std::vector<Pass*> passes() {
-        return {&shadow, &gbuffer, &direct, &post, &voxelize, &inject, &mipmap, &coneTrace, &resolve, &overlayPass,
-                &voxelDebug, &autoExposure};
+        return {&shadow,    &gbuffer, &direct,   &post,        &voxelize,   &inject,      &mipmap,
+                &coneTrace, &resolve, &fallback, &overlayPass, &voxelDebug, &autoExposure};
     }
 
     // The sky image of settings.skyHdrPath, loaded and uploaded when the path changes; nullptr
@@ -138,6 +140,7 @@ struct Renderer::Impl {
     MipmapPass mipmap;
     ConeTracePass coneTrace;
     IndirectResolvePass resolve;
+    IndirectFallbackPass fallback;
     OverlayPass overlayPass;
     VoxelDebugPass voxelDebug;
     AutoExposurePass autoExposure;
@@ -420,6 +423,10 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
                 Profiler::Scope scope(r.profiler, "indirect resolve");
                 r.gbuffer.bindTargets();
                 r.resolve.execute(r.terms, r.coneTrace, r.voxels, settings, sampling, r.previousViewProjection);
+            }
+            {
+                Profiler::Scope scope(r.profiler, "indirect fallback");
+                r.fallback.execute(r.resolve);
             }
             r.previousViewProjection = frame.viewProjection;
             if (settings.temporalAccumulation) ++r.temporalFrame;

@@ -242,7 +242,7 @@ if compare_rev and groups:
         for i, (b, a) in enumerate(ab, 1):
             cb, ca = cpu_seconds(f"before-{tag}-{i}"), cpu_seconds(f"after-{tag}-{i}")
             w(f"| {tag} | {i} | {cone(b):.1f} | {cone(a):.1f} | {cone(b) / cone(a):.2f}× | {cb:.2f} | {ca:.2f} | {cb - ca:.2f} |")
-fast_rounds = sorted({int(f.split("-")[-1][:-5]) for f in os.listdir(results) if f.startswith("cornell-gi-off-")})
+fast_rounds = sorted({int(f[len("cornell-gi-off-"):-len(".json")]) for f in os.listdir(results) if f.startswith("cornell-gi-off-") and f.endswith(".json")})
 if fast_rounds:
     def pass_mean(run, name):
         for p in run["passes"]:
@@ -256,7 +256,7 @@ if fast_rounds:
     w(f"`assets/cornell_inside.still.path.json` (camera inside the box, 70° vertical fov: every pixel a wall or box), "
       f"{first['width']}×{first['height']}, RGBA16F radiance, `--bench-path` (one untimed warm-up frame, then "
       f"{first['frames']} timed frames of the same view). Frame: mean wall-clock ms. Indirect: the GPU time of "
-      "\"cone trace\" plus \"indirect resolve\" (the upsampling pass; scale 1 has none). Ratios are within one round.")
+      "\"cone trace\" plus \"indirect resolve\" (the upsampling pass) plus \"indirect fallback\" (the per-pixel trace of the pixels the resolve marks; scale 1 has neither). Ratios are within one round.")
     w("")
     w("| Round | GI off frame (ms) | GI on frame, scale 1 / 2 / 4 (ms) | GI on ÷ GI off, scale 1 / 2 / 4 | indirect, scale 1 / 2 / 4 (ms) | indirect speed-up vs scale 1, scale 2 / 4 |")
     w("|---|---|---|---|---|---|")
@@ -267,7 +267,7 @@ if fast_rounds:
             continue
         offMs = off["frameMs"]["mean"]
         frames = [r["frameMs"]["mean"] for r in on]
-        ind = [pass_mean(r, "cone trace") + pass_mean(r, "indirect resolve") for r in on]
+        ind = [pass_mean(r, "cone trace") + pass_mean(r, "indirect resolve") + pass_mean(r, "indirect fallback") for r in on]
         w(f"| {rnd} | {offMs:.0f} | {' / '.join(f'{f:.0f}' for f in frames)} | {' / '.join(f'{f / offMs:.2f}×' for f in frames)} | "
           f"{' / '.join(f'{i:.0f}' for i in ind)} | {ind[0] / ind[1]:.2f}× / {ind[0] / ind[2]:.2f}× |")
     flick = [(t, load_run(f"flicker-temporal-{t}")) for t in ("on", "off")]

@@ -32,6 +32,15 @@ TEST(EditorOptions, DefaultsOpenTheBuiltInSceneInA1280x720Window) {
     EXPECT_FALSE(options.help);
 }
 
+TEST(EditorOptions, FrameLog) {
+    EXPECT_FALSE(parse({}).frameLog);
+    const EditorOptions options = parse({"--script", "s.lit", "--frame-log", "frames.csv"});
+    ASSERT_TRUE(options.frameLog);
+    EXPECT_EQ(*options.frameLog, "frames.csv");
+    EXPECT_EQ(errorOf({"--frame-log"}), "--frame-log needs a value");
+    EXPECT_EQ(errorOf({"--frame-log", ""}), "--frame-log needs a file name");
+}
+
 TEST(EditorOptions, ParsesSceneScreenshotFramesAndSize) {
     const EditorOptions options =
         parse({"scene.gltf", "--screenshot", "out.png", "--frames", "5", "--size", "640x360"});

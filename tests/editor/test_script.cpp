@@ -148,6 +148,17 @@ TEST(Script, CameraAndConeDirectionsCommands) {
     EXPECT_THROW(parseScript("camera 1 2 3 4 5 six\n", "s.txt"), ScriptError);
 }
 
+// "interactive on|off": the interactive render scale in a script (frame-rate measurements).
+TEST(Script, InteractiveCommand) {
+    const std::vector<ScriptCommand> commands = parseScript("interactive on\ninteractive off\n", "s.txt");
+    ASSERT_EQ(commands.size(), 2u);
+    EXPECT_EQ(commands[0].name, "interactive");
+    EXPECT_EQ(commands[0].args[0], "on");
+    EXPECT_EQ(commands[1].args[0], "off");
+    EXPECT_EQ(errorOf("interactive yes\n"), "s.txt:1: interactive: expected on or off, got 'yes'");
+    EXPECT_THROW(parseScript("interactive\n", "s.txt"), ScriptError);
+}
+
 }  // namespace
 
 namespace {

@@ -1,0 +1,211 @@
+// Indirect resolve, the body shared by indirect_resolve.frag.glsl (IndirectResolvePass) and
+// indirect_fallback.frag.glsl (IndirectFallbackPass). It upsamples the low-resolution demodulated terms of
+// indirect_trace.frag.glsl to every pixel with depth- and normal-aware (joint bilateral) weights,
+// traces at full resolution what they cannot stand for, optionally accumulates over frames, and
+// writes the terms:
+//   L_ID = albedo_d · D · intensity · AO,   L_IS = E(F0, roughness, n·v) · S · intensity · AO
+// with D the irradiance/π and S the lobe-averaged radiance of this pixel (indirect.glsl).
+//
+// Upsampling. The pixel sits among the four low-resolution texels whose traced pixels surround
+// it; each is weighted by its bilinear weight (plus a small floor, so a neighbour on the same
+// surface still counts when the nearer ones lie across an edge), by how far its surface point
+// lies off this pixel's tangent plane (relative to the view distance: walls meeting at a corner,
+// an object in front of a wall), and by how far its normal turns. Rough specular also weights by
+// roughness. Where no neighbour is on this pixel's surface (thin objects, silhouettes) the pixel
+// traces its own cones, so indirect light never bleeds across a depth or normal edge.
+//
+// Two passes, so that the common pixel runs no cone code. Without LIT_INDIRECT_FALLBACK (the
+// resolve) a pixel that needs its own trace is only marked: gl_FragDepth 0 (kMarkTrace) in the
+// pass's trace mask, 1 elsewhere; its outputs are left for the fallback. With it (the fallback)
+// early depth tests against that mask run this body on the marked pixels only, with the trace.
+// Both compute the same upsampling and accumulation, so the image is that of one pass doing both.
+// (On llvmpipe the mere presence of the cone loops in the resolve cost about half its time.)
+//
+// Temporal accumulation (uHistoryValid). The surface point is projected into the last frame with
+// its view-projection; the history there is used when that pixel saw the same surface (clip w
+// within kHistoryDepthTolerance, normals within kHistoryNormalCos), else it is dropped
+// (disocclusion). The history is clamped to the range of this frame's low-resolution neighbours
+// (widened by kClampMargin) so stale light does not linger, then blended with weight
+// 1 / (frames + 1), frames ≤ uMaxFrames: a still camera averages the rotated cone sets.
+#include "frame.glsl"
+#include "gbuffer.glsl"
+#include "cone.glsl"
+#include "indirect.glsl"
+
+#ifdef LIT_INDIRECT_FALLBACK
+layout(early_fragment_tests) in;  // the trace mask's depth test decides before the shader runs
+#endif
+
+in vec2 vUv;
+
+layout(location = 0) out vec4 outIndirectDiffuse;   // L_ID
+layout(location = 1) out vec4 outIndirectSpecular;  // L_IS
+layout(location = 2) out vec4 outHistoryDiffuse;    // D, a = frames accumulated
+layout(location = 3) out vec4 outHistorySpecular;   // S, a = frames accumulated
+layout(location = 4) out vec4 outHistoryGuide;      // normal, clip w (0 = background)
+
+layout(binding = LIT_TEX_INDIRECT_LOW_PACKED) uniform usampler2D lowPacked;
+layout(binding = LIT_TEX_INDIRECT_LOW_GUIDE) uniform usampler2D lowGuide;
+layout(binding = LIT_TEX_HISTORY_DIFFUSE) uniform sampler2D historyDiffuse;
+layout(binding = LIT_TEX_HISTORY_SPECULAR) uniform sampler2D historySpecular;
+layout(binding = LIT_TEX_HISTORY_GUIDE) uniform sampler2D historyGuide;
+
+uniform ivec2 uTraceTerms;        // x: L_ID, y: L_IS (1/0)
+uniform float uSmoothRoughness;   // L_IS of smoother surfaces is traced here, per pixel
+uniform int uHistoryValid;        // 1: the history textures hold the last frame's result
+uniform int uMaxFrames;           // frames of history at most
+uniform mat4 uPrevViewProjection; // the last frame's world → clip
+
+// A neighbour 1 % of the view distance off this pixel's tangent plane gets no weight: walls of
+// the Cornell box seen at 1280×720 are < 0.1 % off their plane 4 pixels away, a box standing on
+// the floor is its height (≫ 1 %) off it.
+const float kPlaneTolerance = 0.01;
+const float kNormalPower = 16.0;       // cos^16: 30° apart → 0.1 weight, 45° → 0.004
+const float kRoughnessTolerance = 0.2; // rough specular: neighbours this much rougher/smoother get no weight
+const float kSpatialFloor = 0.02;      // added to each bilinear weight
+const float kMinWeight = 1e-3;         // below: no neighbour stands for this pixel → trace it here
+const float kHistoryDepthTolerance = 0.02;  // relative clip-w difference of a reprojected pixel
+const float kHistoryNormalCos = 0.9;        // cos 25.8°
+const float kClampMargin = 0.1;             // the neighbourhood box is widened by 10 % of its bounds
+const float kMarkTrace = 0.0;  // trace-mask depth of a pixel the fallback traces (IndirectFallbackPass)
+const float kMarkDone = 1.0;   // of one the resolve finished
+
+vec3 clampToBox(vec3 value, vec3 lo, vec3 hi) {
+    return clamp(value, lo * (1.0 - kClampMargin), hi * (1.0 + kClampMargin));
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    // readSurface without the emissive target, which this pass does not use.
+    Surface s;
+    float pixelDepth = texelFetch(gbufferDepth, pixel, 0).r;
+    s.valid = pixelDepth < 1.0;
+    outIndirectDiffuse = vec4(0.0);
+    outIndirectSpecular = vec4(0.0);
+    outHistoryDiffuse = vec4(0.0);
+    outHistorySpecular = vec4(0.0);
+    outHistoryGuide = vec4(0.0);
+#ifndef LIT_INDIRECT_FALLBACK
+    gl_FragDepth = kMarkDone;
+#endif
+    if (!s.valid) return;
+    s.position = worldPositionFromDepth(vUv, pixelDepth);
+    s.normal = normalize(texelFetch(gbufferNormal, pixel, 0).xyz);
+    vec4 albedoAo = texelFetch(gbufferAlbedo, pixel, 0);
+    s.baseColor = albedoAo.rgb;
+    s.occlusion = albedoAo.a;
+    vec2 material = texelFetch(gbufferMaterial, pixel, 0).rg;
+    s.roughness = material.r;
+    s.metalness = material.g;
+    float scale = voxel.traceParams.x * s.occlusion;
+    float clipW = (frame.viewProjection * vec4(s.position, 1.0)).w;
+    vec3 v = normalize(frame.cameraPosition.xyz - s.position);
+    vec3 n = shadingNormal(s.normal, v);
+    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);
+    bool diffuseSurface = max(albedo.r, max(albedo.g, albedo.b)) > 0.0;
+    bool smoothSurface = s.roughness < uSmoothRoughness;
+
+    // ---- Upsampling: the four low-resolution texels around this pixel.
+    ivec2 lowSize = textureSize(lowPacked, 0);
+    vec2 c = (vec2(pixel) - vec2(uJitter)) / float(uScale);
+    ivec2 base = ivec2(floor(c));
+    vec2 f = c - vec2(base);
+    vec3 diffuseSum = vec3(0.0), specularSum = vec3(0.0);
+    float diffuseWeight = 0.0, specularWeight = 0.0;
+    vec3 diffuseLo = vec3(1e30), diffuseHi = vec3(0.0), specularLo = vec3(1e30), specularHi = vec3(0.0);
+    for (int i = 0; i < 4; ++i) {
+        ivec2 offset = ivec2(i & 1, i >> 1);
+        ivec2 low = clamp(base + offset, ivec2(0), lowSize - 1);
+        vec2 bilinear = mix(1.0 - f, f, vec2(offset));
+        float spatial = bilinear.x * bilinear.y + kSpatialFloor;
+        vec4 d, sp;
+        unpackIndirect(texelFetch(lowPacked, low, 0), d, sp);
+        if (d.a <= 0.0 && sp.a <= 0.0) continue;  // nothing traced there (background, ...)
+        uvec4 guide = texelFetch(lowGuide, low, 0);
+        vec3 p = uintBitsToFloat(guide.xyz);
+        vec3 normal = octDecode(unpackSnorm2x16(guide.w));
+        float plane = abs(dot(s.normal, p - s.position)) / max(clipW, 1e-6);
+        float w = spatial * max(1.0 - plane / kPlaneTolerance, 0.0) * pow(max(dot(s.normal, normal), 0.0), kNormalPower);
+        if (w <= 0.0) continue;
+        if (d.a > 0.0) {
+            diffuseSum += w * d.rgb;
+            diffuseWeight += w;
+            diffuseLo = min(diffuseLo, d.rgb);
+            diffuseHi = max(diffuseHi, d.rgb);
+        }
+        if (sp.a > 0.0 && !smoothSurface) {
+            float ws = w * max(1.0 - abs(sp.a - 1.0 - s.roughness) / kRoughnessTolerance, 0.0);
+            if (ws > 0.0) {
+                specularSum += ws * sp.rgb;
+                specularWeight += ws;
+                specularLo = min(specularLo, sp.rgb);
+                specularHi = max(specularHi, sp.rgb);
+            }
+        }
+    }
+
+    bool wantDiffuse = uTraceTerms.x != 0 && diffuseSurface;
+    bool wantSpecular = uTraceTerms.y != 0;
+    bool traceDiffuseHere = wantDiffuse && diffuseWeight < kMinWeight;
+    bool traceSpecularHere = wantSpecular && (smoothSurface || specularWeight < kMinWeight);
+    vec3 diffuse = diffuseWeight > 0.0 ? diffuseSum / diffuseWeight : vec3(0.0);
+    vec3 specular = specularWeight > 0.0 ? specularSum / specularWeight : vec3(0.0);
+    if (traceDiffuseHere || traceSpecularHere) {
+#ifndef LIT_INDIRECT_FALLBACK
+        gl_FragDepth = kMarkTrace;  // the fallback pass redoes this pixel with its own cones
+        return;
+#else
+        // Nothing nearby stands for this pixel: trace its own cones (as indirect_trace does).
+        vec3 origin = coneOrigin(s.position, n);
+        float maxDistance = voxel.traceParams.y;
+        mat3 basis = rotatedTangentFrame(n, uRotation);
+        int count = clamp(voxel.traceOptions.x, 1, 8);
+        bool reuse = traceSpecularHere && diffuseSurface &&
+                     specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
+        vec3 cones[kDiffuseConeCount];
+        if (traceDiffuseHere || reuse) {
+            vec3 traced = traceDiffuseInFrame(origin, basis, voxel.traceParams.w, maxDistance, cones);
+            if (traceDiffuseHere) diffuse = traced;
+        }
+        if (traceSpecularHere)
+            specular = traceSpecularLobe(origin, n, basis, v, s.roughness, count, gl_FragCoord.xy, voxel.traceOptions.y,
+                                         maxDistance, reuse, cones);
+#endif
+    }
+
+    // ---- Temporal accumulation.
+    float diffuseFrames = 1.0, specularFrames = 1.0;
+    if (uHistoryValid != 0) {
+        vec4 prevClip = uPrevViewProjection * vec4(s.position, 1.0);
+        vec2 prevUv = prevClip.w > 0.0 ? prevClip.xy / prevClip.w * 0.5 + 0.5 : vec2(-1.0);
+        if (all(greaterThanEqual(prevUv, vec2(0.0))) && all(lessThan(prevUv, vec2(1.0)))) {
+            ivec2 prevPixel = ivec2(prevUv * frame.viewport.xy);
+            vec4 guide = texelFetch(historyGuide, prevPixel, 0);
+            bool sameSurface = guide.w > 0.0 && abs(guide.w - prevClip.w) < kHistoryDepthTolerance * prevClip.w &&
+                               dot(guide.xyz, s.normal) > kHistoryNormalCos;
+            if (sameSurface) {
+                vec4 hd = texelFetch(historyDiffuse, prevPixel, 0);
+                vec4 hs = texelFetch(historySpecular, prevPixel, 0);
+                if (hd.a > 0.0) {
+                    vec3 h = traceDiffuseHere ? hd.rgb : clampToBox(hd.rgb, diffuseLo, diffuseHi);
+                    diffuseFrames = min(hd.a + 1.0, float(uMaxFrames));
+                    diffuse = mix(h, diffuse, 1.0 / diffuseFrames);
+                }
+                if (hs.a > 0.0) {
+                    vec3 h = traceSpecularHere ? hs.rgb : clampToBox(hs.rgb, specularLo, specularHi);
+                    specularFrames = min(hs.a + 1.0, float(uMaxFrames));
+                    specular = mix(h, specular, 1.0 / specularFrames);
+                }
+            }
+        }
+    }
+    outHistoryDiffuse = vec4(diffuse, diffuseFrames);
+    outHistorySpecular = vec4(specular, specularFrames);
+    outHistoryGuide = vec4(s.normal, clipW);
+
+    if (scale <= 0.0) return;
+    if (wantDiffuse) outIndirectDiffuse = vec4(albedo * diffuse * scale, 1.0);
+    if (wantSpecular)
+        outIndirectSpecular =
+            vec4(specularAlbedo(specularF0(s.baseColor, s.metalness), s.roughness, max(dot(n, v), 0.0)) * specular * scale, 1.0);
+}
