@@ -223,20 +223,27 @@ public:
         glm::vec3 throughputD = bsdf.diffuse(l) * (NdotL / pdf);
         glm::vec3 throughputS = bsdf.specular(l) * (NdotL / pdf);
 
-        Ray ray{offsetOrigin(hit.position, hit.geometricNormal), l, 0.0f, INFINITY};
+        // Follows `ray` one segment: the sky it escapes to, or the emission of the surface it
+        // meets (into `next`), weighted by the two throughputs into the diffuse/specular terms.
+        // False when the ray left the scene.
         SurfaceHit next;
-        ++rays;
-        if (!scene_.intersect(ray, next)) {
-            const glm::vec3 sky = environment(l);
-            out.add(Term::DirectDiffuse, throughputD * sky);
-            out.add(Term::DirectSpecular, throughputS * sky);
-            return;
-        }
-        if (maxComponent(next.emission) > 0.0f) {
-            const glm::vec3 e = next.emission * emissionWeight(next, l, pdf);
-            out.add(Term::DirectDiffuse, throughputD * e);
-            out.add(Term::DirectSpecular, throughputS * e);
-        }
+        const auto segment = [&](const Ray& ray, Term diffuseTerm, Term specularTerm) {
+            ++rays;
+            if (!scene_.intersect(ray, next)) {
+                const glm::vec3 sky = environment(ray.direction);
+                out.add(diffuseTerm, throughputD * sky);
+                out.add(specularTerm, throughputS * sky);
+                return false;
+            }
+            if (maxComponent(next.emission) > 0.0f) {
+                const glm::vec3 e = next.emission * emissionWeight(next, ray.direction, pdf);
+                out.add(diffuseTerm, throughputD * e);
+                out.add(specularTerm, throughputS * e);
+            }
+            return true;
+        };
+        Ray ray{offsetOrigin(hit.position, hit.geometricNormal), l, 0.0f, INFINITY};
+        if (!segment(ray, Term::DirectDiffuse, Term::DirectSpecular)) return;
         if (maxBounces == 0) return;
 
         // Indirect light: Lit scales both indirect terms by the material's ambient occlusion.
@@ -268,18 +275,7 @@ public:
                 throughputS /= survive;
             }
             ray = Ray{offsetOrigin(hit.position, hit.geometricNormal), l, 0.0f, INFINITY};
-            ++rays;
-            if (!scene_.intersect(ray, next)) {
-                const glm::vec3 sky = environment(l);
-                out.add(Term::IndirectDiffuse, throughputD * sky);
-                out.add(Term::IndirectSpecular, throughputS * sky);
-                return;
-            }
-            if (maxComponent(next.emission) > 0.0f) {
-                const glm::vec3 e = next.emission * emissionWeight(next, l, pdf);
-                out.add(Term::IndirectDiffuse, throughputD * e);
-                out.add(Term::IndirectSpecular, throughputS * e);
-            }
+            if (!segment(ray, Term::IndirectDiffuse, Term::IndirectSpecular)) return;
             if (!moreBounces) return;
         }
     }
