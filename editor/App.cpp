@@ -539,23 +539,15 @@ void App::writeFrameLog(double end) {
 }
 
 float App::renderScaleFor(double frameSeconds, const glm::mat4& view) {
-    const float full = std::clamp(viewport_.renderScale, 0.1f, 1.0f);
-    const bool moving = view != lastView_;
+    // The first frame has no view to compare with: it does not count as a motion.
+    const bool moving = view != lastView_ && lastView_ != glm::mat4(0.0f);
     lastView_ = view;
     cameraMoved_ = moving;
-    const float target = doc_.settings.interactiveFpsTarget;
     // Scripts (unless "interactive on") and screenshots render what they ask for, at the chosen scale.
-    if ((scriptMode() && !scriptInteractive_) || options_.screenshot || target <= 0.0f || !(moving || ImGui::IsAnyItemActive())) {
-        interactiveScale_ = full;
-        return full;
-    }
-    // A frame's cost grows with its pixel count, the square of the scale: scale the side by
-    // √(target time / last frame time), at most ×1.25 or ÷2 per frame so it settles instead of
-    // oscillating, in steps of 1/20 so the targets are not reallocated every frame.
-    const double ratio = std::sqrt((1.0 / target) / std::max(frameSeconds, 1e-3));
-    const float wanted = interactiveScale_ * static_cast<float>(std::clamp(ratio, 0.5, 1.25));
-    interactiveScale_ = std::clamp(std::round(wanted * 20.0f) / 20.0f, 0.1f, full);
-    return interactiveScale_;
+    const bool interacting = !(scriptMode() && !scriptInteractive_) && !options_.screenshot &&
+                             (moving || ImGui::IsAnyItemActive());
+    frameScale_ = interactiveScale_.next(viewport_.renderScale, interacting, doc_.settings.interactiveFpsTarget, frameSeconds);
+    return frameScale_;
 }
 
 void App::updateCamera(float dtSeconds) {
@@ -771,7 +763,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.inspector) inspectorPanel_.draw(doc_, layout.inspector, &visible_.inspector);
     if (visible_.stats)
         drawStatsOverlay(frameTimer_, renderer_->profiler(), renderer_->stats(), renderSize, imgui_->monoFont(),
-                         layout.stats, &visible_.stats, renderer_->voxels(), interactiveScale_);
+                         layout.stats, &visible_.stats, renderer_->voxels(), frameScale_);
     if (visible_.renderSettings) {
         const RenderSettingsRequests requests =
             drawRenderSettingsPanel(doc_.settings, viewport_, static_cast<int>(doc_.scene.lights.size()),

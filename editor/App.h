@@ -21,6 +21,7 @@
 #include "EditorState.h"
 #include "FrameTimer.h"
 #include "ImGuiLayer.h"
+#include "InteractiveScale.h"
 #include "Log.h"
 #include "RecentFiles.h"
 #include "Renderer.h"
@@ -252,7 +253,8 @@ private:
     bool looking_ = false;             // right mouse drag in progress
     // Interactive render scale (RenderSettings::interactiveFpsTarget): the scale the viewport uses
     // while the camera moves or a value is dragged, and the last frame's view to detect motion.
-    float interactiveScale_ = 1.0f;
+    InteractiveScale interactiveScale_;
+    float frameScale_ = 1.0f;           // the render scale of the last frame (for the overlay)
     glm::mat4 lastView_{0.0f};
     bool cameraMoved_ = false;          // this frame's view differs from the last one's
     bool scriptInteractive_ = false;    // script command "interactive on"

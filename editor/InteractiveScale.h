@@ -1,0 +1,105 @@
+#pragma once
+// The viewport's render scale while the user interacts (RenderSettings::interactiveFpsTarget):
+// while the camera moves or a value is dragged, the scale drops so the frame time meets the
+// target; when still, the viewport renders at its full (chosen) scale.
+//
+// Why it is a class of its own (issue #12, editor frame log on the full-frame Cornell box): the
+// first version restarted every motion from the full scale and could at most halve the scale per
+// frame, so each motion began with frames at ½ and ¼ scale (0.5–0.75 s and 0.2 s on this machine)
+// before it reached ~0.2; and it re-chose the scale every frame in steps of 0.05, so the scale
+// flipped between neighbouring steps on noise and every flip reallocated the renderer's targets.
+// This controller
+//  - remembers the scale of the last motion and starts the next one there;
+//  - before any motion, jumps to the scale a still frame's time predicts (cost ∝ pixels ∝ scale²);
+//  - ignores the frame time of a frame that was not rendered at the interactive scale (the still
+//    frame before a motion says nothing about the interactive scale's cost);
+//  - keeps the scale while the mean frame time at that scale is within a dead band around the
+//    target, so noise on a loaded machine does not flip it (and reallocate the targets).
+// Pure logic, no GL or ImGui: tests/editor/test_interactive_scale.cpp.
+
+#include <algorithm>
+#include <cmath>
+
+namespace lit::editor {
+
+class InteractiveScale {
+public:
+    static constexpr float kMinScale = 0.1f;
+    static constexpr float kStep = 0.05f;  // scales are multiples of this: fewer distinct target sizes
+    // Dead band: frame times within [target / kBand, target · kBand] keep the scale. 1.3 is about
+    // one 0.05 step at scale ~0.2 in frame time ((0.25/0.2)² = 1.56 split both ways).
+    static constexpr double kBand = 1.3;
+
+    // The scale for the next frame. `full`: the viewport's chosen scale (0.1..1); `interacting`:
+    // the camera moved or a value is being dragged this frame; `targetFps` ≤ 0: off;
+    // `lastFrameSeconds`: how long the previous frame took (update, render, present).
+    float next(float full, bool interacting, float targetFps, double lastFrameSeconds) {
+        full = std::clamp(full, kMinScale, 1.0f);
+        const bool lastWasInteractive = lastInteractive_;
+        if (!interacting || targetFps <= 0.0f) {
+            lastInteractive_ = false;
+            return full;
+        }
+        lastInteractive_ = true;
+        const double targetSeconds = 1.0 / targetFps;
+        const double ratio = std::sqrt(targetSeconds / std::max(lastFrameSeconds, 1e-3));  // side scale factor
+        if (!lastWasInteractive) {
+            // The previous frame was still (full scale): start where the last motion ended, or
+            // where the still frame's cost predicts.
+            if (remembered_ <= 0.0f) remembered_ = quantize(full * static_cast<float>(std::min(ratio, 1.0)), full);
+            scale_ = std::min(remembered_, full);
+            framesAtScale_ = 0;
+            measuredAtScale_ = 0;
+            meanSeconds_ = 0.0;
+            return scale_;
+        }
+        // The frame time of one frame scatters by ±50 % on a loaded machine: decide on a running
+        // mean of the frames rendered at this scale (the first one after a change still pays for
+        // the new targets, so it is not counted), except when one frame is far too slow.
+        ++framesAtScale_;
+        if (framesAtScale_ >= 2) {
+            ++measuredAtScale_;
+            meanSeconds_ = measuredAtScale_ == 1 ? lastFrameSeconds : meanSeconds_ + kMeanWeight * (lastFrameSeconds - meanSeconds_);
+        }
+        const double mean = measuredAtScale_ > 0 ? meanSeconds_ : lastFrameSeconds;
+        const bool farTooSlow = lastFrameSeconds > 2.0 * targetSeconds;
+        const bool decided = measuredAtScale_ >= kFramesToDecide;
+        if (farTooSlow || (decided && (mean > targetSeconds * kBand || mean < targetSeconds / kBand))) {
+            const double seconds = farTooSlow ? lastFrameSeconds : mean;
+            const double wanted = std::sqrt(targetSeconds / seconds);
+            // At most ÷2 or ×1.25 per change so it settles instead of oscillating.
+            setScale(quantize(scale_ * static_cast<float>(std::clamp(wanted, 0.5, 1.25)), full));
+        }
+        if (scale_ > full) setScale(full);
+        remembered_ = scale_;
+        return scale_;
+    }
+
+    float current() const { return scale_; }
+
+private:
+    static float quantize(float scale, float full) {
+        return std::clamp(std::round(scale / kStep) * kStep, kMinScale, full);
+    }
+
+    static constexpr int kFramesToDecide = 3;    // frames measured at a scale before it may rise or fall
+    static constexpr double kMeanWeight = 0.3;   // of the newest frame in the running mean (~3 frames)
+
+    void setScale(float scale) {
+        if (scale != scale_) {
+            framesAtScale_ = 0;
+            measuredAtScale_ = 0;
+            meanSeconds_ = 0.0;
+        }
+        scale_ = scale;
+    }
+
+    float scale_ = 1.0f;
+    int framesAtScale_ = 0;      // frames rendered at scale_ since it was set
+    int measuredAtScale_ = 0;    // of those, the ones whose time counts (all but the first)
+    double meanSeconds_ = 0.0;
+    float remembered_ = 0.0f;  // the scale the last motion ended at (0: none yet)
+    bool lastInteractive_ = false;
+};
+
+}  // namespace lit::editor
