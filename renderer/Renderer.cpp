@@ -128,7 +128,20 @@ struct Renderer::Impl {
     // Logs what the last GI update did and what it cost, once its GPU timings are in.
     void reportGiUpdate();
 
+    // On a software rasterizer (llvmpipe) draws are binned and run on the CPU when something
+    // needs their result, so the CPU time of a pass that samples an earlier pass's output holds
+    // the wait for it: the composite's "post" read seconds with GI at scale 1 (the cone trace), the
+    // resolve read the low-resolution trace. Waiting before those passes in a scope of its own
+    // gives that time an honest line, "GPU wait", and costs nothing there (the pass would wait at
+    // the same point). Not on a GPU, where a glFinish would stall the pipeline.
+    void waitForQueuedPasses() {
+        if (!softwareRasterizer) return;
+        Profiler::Scope scope(profiler, "GPU wait");
+        glFinish();
+    }
+
     Log& log;
+    const bool softwareRasterizer = gl::softwareRasterizer();
     fs::path shaderRoot;
     Profiler profiler;
     ShadowPass shadow;
@@ -419,6 +432,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
                 Profiler::Scope scope(r.profiler, "cone trace");
                 r.coneTrace.executeReduced(r.voxels, settings, sampling);
             }
+            r.waitForQueuedPasses();  // the resolve samples the low-resolution trace
             {
                 Profiler::Scope scope(r.profiler, "indirect resolve");
                 r.gbuffer.bindTargets();
@@ -442,6 +456,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
         r.resolve.resetHistory();  // no terms this frame: the next one starts afresh
     }
     r.stats.voxelBytes = giWanted ? r.voxels.totalBytes() : 0;
+    r.waitForQueuedPasses();  // the composite samples the lighting terms
     {
         Profiler::Scope scope(r.profiler, "post");
         r.terms.bind();

@@ -83,7 +83,7 @@ ImU32 passColor(const std::string& passName) {
         const char* name;
         ImU32 color;
     };
-    static constexpr std::array<Entry, 9> kColors = {{
+    static constexpr std::array<Entry, 10> kColors = {{
         {"shadow", IM_COL32(120, 120, 200, 255)},
         {"g-buffer", IM_COL32(90, 170, 230, 255)},
         {"voxelize", IM_COL32(230, 160, 60, 255)},
@@ -92,6 +92,7 @@ ImU32 passColor(const std::string& passName) {
         {"lighting", IM_COL32(110, 200, 120, 255)},
         {"cone trace", IM_COL32(220, 90, 90, 255)},
         {"post", IM_COL32(180, 110, 200, 255)},
+        {"GPU wait", IM_COL32(90, 90, 90, 255)},
         {"overlay", IM_COL32(160, 160, 160, 255)},
     }};
     for (const Entry& entry : kColors)
@@ -152,6 +153,9 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
                 const ShownTiming shown = shownTiming(profiler, pass);
                 if (shown.current) {
                     ImGui::TextUnformatted(pass.name.c_str());
+                    if (pass.name == "GPU wait" && ImGui::IsItemHovered())
+                        ImGui::SetTooltip("Software rasterizer (llvmpipe): the CPU waits here for the passes above,\n"
+                                          "which run when their result is first needed. Their own cost is their GPU ms.");
                     ImGui::TableNextColumn();
                     ImGui::Text("%8.2f", pass.gpuMs);
                     ImGui::TableNextColumn();

@@ -85,6 +85,14 @@ std::string contextDescription() {
     return glString(GL_VERSION) + " \u2014 " + glString(GL_RENDERER);
 }
 
+bool softwareRasterizer() {
+    if (glGetString(GL_RENDERER) == nullptr) return false;
+    const std::string renderer = glString(GL_RENDERER);
+    for (const char* name : {"llvmpipe", "softpipe", "swrast"})
+        if (renderer.find(name) != std::string::npos) return true;
+    return false;
+}
+
 void requireCapabilities() {
     if (glGetString(GL_VERSION) == nullptr) throw GlError("Lit needs OpenGL 4.5 core, but no OpenGL context is current");
     if (!epoxy_is_desktop_gl())

@@ -25,5 +25,10 @@ bool injectGlErrorIfRequested();
 
 std::string contextDescription();  // "4.5 (Core Profile) Mesa 22.3.6 — llvmpipe (...)"
 
+// Whether the current context rasterizes on the CPU (Mesa llvmpipe, softpipe, swrast). There a
+// pass's draws run when something first needs their result, so a pass's CPU time includes
+// waiting for the passes before it (see Renderer's "GPU wait" scope).
+bool softwareRasterizer();
+
 }  // namespace gl
 }  // namespace lit
