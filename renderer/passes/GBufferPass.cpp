@@ -4,14 +4,30 @@
 
 #include <shared.h>
 
+#include <utility>
+
 namespace lit {
 
 GBufferPass::GBufferPass(const std::filesystem::path& shaderRoot)
     : program_(shaderRoot, "gbuffer",
                {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "gbuffer.frag.glsl"}}) {}
 
+void GBufferPass::swapWithSpare() {
+    std::swap(albedo_, spare_.albedo);
+    std::swap(normal_, spare_.normal);
+    std::swap(material_, spare_.material);
+    std::swap(emissive_, spare_.emissive);
+    std::swap(nodeId_, spare_.nodeId);
+    std::swap(depth_, spare_.depth);
+    std::swap(framebuffer_, spare_.framebuffer);
+    std::swap(width_, spare_.width);
+    std::swap(height_, spare_.height);
+}
+
 void GBufferPass::resize(int width, int height) {
     if (width == width_ && height == height_) return;
+    swapWithSpare();  // the current targets become the spare
+    if (width == width_ && height == height_) return;  // the spare had this size
     width_ = width;
     height_ = height;
     albedo_ = gl::Texture("gbuffer albedo", {GL_TEXTURE_2D, GL_SRGB8_ALPHA8, width, height, 1, 1});

@@ -2,10 +2,25 @@
 
 #include <shared.h>
 
+#include <utility>
+
 namespace lit {
+
+void LightingTerms::swapWithSpare() {
+    for (int i = 0; i < 4; ++i) std::swap(textures_[i], spare_.textures[i]);
+    std::swap(direct_, spare_.direct);
+    std::swap(indirect_, spare_.indirect);
+    std::swap(width_, spare_.width);
+    std::swap(height_, spare_.height);
+}
 
 void LightingTerms::resize(int width, int height) {
     if (width == width_ && height == height_) return;
+    swapWithSpare();  // the current targets become the spare
+    if (width == width_ && height == height_) {  // the spare had this size
+        clearIndirect();  // as after an allocation: no indirect terms of an earlier frame
+        return;
+    }
     width_ = width;
     height_ = height;
     const char* names[4] = {"term direct diffuse", "term direct specular", "term indirect diffuse",

@@ -26,6 +26,17 @@ private:
     gl::Texture textures_[4];
     gl::Framebuffer direct_, indirect_;
     int width_ = 0, height_ = 0;
+    // The targets of the size used before the current one, kept so that switching back (the
+    // editor's interactive render scale: full size when still, a smaller one while moving)
+    // reuses them instead of reallocating: allocating the 1280×720 targets cost 120–590 ms on
+    // llvmpipe in the frame after a motion (docs/PERFORMANCE.md). Empty until a second size is
+    // used (lit-render and the tests render at one size).
+    struct Spare {
+        gl::Texture textures[4];
+        gl::Framebuffer direct, indirect;
+        int width = 0, height = 0;
+    } spare_;
+    void swapWithSpare();
 };
 
 }  // namespace lit

@@ -2,6 +2,8 @@
 
 #include <shared.h>
 
+#include <utility>
+
 namespace lit {
 
 bool isDataView(View view) {
@@ -20,8 +22,19 @@ PostPass::PostPass(const std::filesystem::path& shaderRoot)
     plainSampler_.set(GL_TEXTURE_COMPARE_MODE, GL_NONE);
 }
 
+void PostPass::swapWithSpare() {
+    std::swap(hdr_, spare_.hdr);
+    std::swap(output_, spare_.output);
+    std::swap(hdrFramebuffer_, spare_.hdrFramebuffer);
+    std::swap(outputFramebuffer_, spare_.outputFramebuffer);
+    std::swap(width_, spare_.width);
+    std::swap(height_, spare_.height);
+}
+
 void PostPass::resize(int width, int height) {
     if (width == width_ && height == height_) return;
+    swapWithSpare();  // the current targets become the spare
+    if (width == width_ && height == height_) return;  // the spare had this size
     width_ = width;
     height_ = height;
     // 32-bit float so the HDR image holds the exact sum of the 16-bit term images.
