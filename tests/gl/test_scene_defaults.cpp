@@ -186,8 +186,12 @@ std::filesystem::path sharedScene(const char* relative) {
 // Sponza has no lights and no camera. From inside the atrium, with every setting at its
 // default, the image must be neither black nor blown out, and the sky must light the galleries
 // through the GI (the indirect term with the sun off is well above zero).
-// Known gap, disabled: measured mean 0.026 (the bound is > 0.05) and sky light in the GI ~2e-5:
-// the cones lose nearly all sky light in the deep courtyard. Run with
+// Known gap, disabled (docs/UNITS.md "Sponza's atrium"): measured mean 0.026 (the bound is
+// > 0.05) and sky light in the GI ~2e-5. The path-traced reference of the same view with the same
+// sun and sky gives a mean of 0.024, so the first bound asks for more light than the scene's
+// lighting physically gives this view (it is about 3 stops under the sunlit ground; an exposure
+// choice, not a light-unit error); the reference's sky light on surfaces, ~0.0015, is lost by the
+// cones at coarse mips in the deep courtyard (issue #11). Run with
 // --gtest_also_run_disabled_tests to see today's figures.
 TEST_F(SceneDefaults, DISABLED_SponzaFromInsideTheAtriumIsLitBySunAndSky) {
     const std::filesystem::path path = sharedScene("sponza/Sponza.gltf");
