@@ -1327,6 +1327,7 @@ void Loader::loadAnimations(Scene& scene) const {
                 Animation::Sampler sampler;
                 sampler.interpolation = s.interpolation.empty() ? "LINEAR" : s.interpolation;
                 sampler.components = output.components;
+                sampler.extras = gltfkeep::extrasText(s.extras);
                 for (std::size_t k = 0; k < input.count; ++k) sampler.input.push_back(input.component(k, 0));
                 for (std::size_t k = 0; k < output.count; ++k)
                     for (int c = 0; c < output.components; ++c) sampler.output.push_back(output.component(k, c));
@@ -1338,7 +1339,7 @@ void Loader::loadAnimations(Scene& scene) const {
                 if (c.target_node < 0 || static_cast<std::size_t>(c.target_node) >= nodeRemap_.size()) continue;
                 const int node = nodeRemap_[static_cast<std::size_t>(c.target_node)];
                 if (node < 0) continue;  // a node not imported
-                out.channels.push_back({c.sampler, node, c.target_path});
+                out.channels.push_back({c.sampler, node, c.target_path, gltfkeep::keep(c.extras, c.extensions)});
             }
         } catch (const SceneLoadError& e) {
             warn(std::string(e.what()) + "; the animation is not kept");

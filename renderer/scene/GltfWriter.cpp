@@ -772,6 +772,8 @@ void ModelBuilder::addAnimations() {
             s.input = input;
             s.output = output;
             s.interpolation = sampler.interpolation;
+            tinygltf::ExtensionMap noExtensions;  // a sampler's extensions are not kept
+            restore(KeptGltf{sampler.extras, ""}, s.extras, noExtensions);
             out.samplers.push_back(std::move(s));
         }
         for (const Animation::Channel& channel : animation.channels) {
@@ -783,6 +785,7 @@ void ModelBuilder::addAnimations() {
             c.sampler = channel.sampler;
             c.target_node = node;
             c.target_path = channel.path;
+            restore(channel.kept, c.extras, c.extensions);
             out.channels.push_back(std::move(c));
         }
         if (out.channels.empty()) continue;

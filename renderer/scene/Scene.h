@@ -236,11 +236,13 @@ struct Animation {
         std::vector<float> output;  // components × keys (× 3 for CUBICSPLINE)
         int components = 3;         // 1 (weights), 3 (translation, scale), 4 (rotation)
         std::string interpolation = "LINEAR";
+        std::string extras{};  // the sampler's extras, JSON text ("" when absent)
     };
     struct Channel {
         int sampler = 0;
         int node = -1;          // index into Scene::nodes; a channel of a node not saved is dropped
         std::string path;       // "translation", "rotation", "scale" or "weights"
+        KeptGltf kept{};        // the channel's extras and extensions
         bool operator==(const Channel&) const = default;
     };
     std::string name;

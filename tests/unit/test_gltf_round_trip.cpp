@@ -520,7 +520,8 @@ TEST(GltfRoundTrip, ASceneWithNodesOutsideTheShownOneIsReported) {
 }
 
 // Extras and extensions on every object the writer writes from the Scene: asset, samplers (and
-// their names), images, texture references, pbrMetallicRoughness, scenes, textures, materials.
+// their names), images, texture references, pbrMetallicRoughness, scenes, textures, materials,
+// animation samplers and channels.
 TEST(GltfRoundTrip, ExtrasOfEveryKindSurviveASave) {
     TempDir dir;
     QuietLog log;
@@ -544,6 +545,15 @@ TEST(GltfRoundTrip, ExtrasOfEveryKindSurviveASave) {
         "normalTexture": {"index": 1, "extras": {"slot": "normal"}}}])");
     b.doc["extensionsUsed"] = json::parse(R"(["EXT_lit_test"])");
     b.doc["extras"] = json::parse(R"({"file": "top"})");
+    const int times = b.add(std::vector<float>{0, 1}, 5126, "SCALAR", 2);
+    b.doc["accessors"][times]["min"] = json::array({0});
+    b.doc["accessors"][times]["max"] = json::array({1});
+    const int moves = b.add(std::vector<float>{0, 0, 0, 0, 1, 0}, 5126, "VEC3", 2);
+    b.doc["animations"] = json::array({{{"name", "hop"},
+                                        {"samplers", json::array({{{"input", times}, {"output", moves}, {"extras", {{"curve", "bezier"}}}}})},
+                                        {"channels", json::array({{{"sampler", 0},
+                                                                   {"target", {{"node", 0}, {"path", "translation"}}},
+                                                                   {"extras", {{"channel", 7}}}}})}}});
     const fs::path source = dir / "extras.gltf";
     b.write(source);
     json before = json::parse(lit::testing::readText(source));
@@ -562,6 +572,8 @@ TEST(GltfRoundTrip, ExtrasOfEveryKindSurviveASave) {
     EXPECT_EQ(after["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extras"],
               before["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extras"]);
     EXPECT_EQ(after["materials"][0]["normalTexture"]["extras"], before["materials"][0]["normalTexture"]["extras"]);
+    EXPECT_EQ(after["animations"][0]["samplers"][0]["extras"], before["animations"][0]["samplers"][0]["extras"]);
+    EXPECT_EQ(after["animations"][0]["channels"][0]["extras"], before["animations"][0]["channels"][0]["extras"]);
     // Two samplers with the same wrap and filters stay two when only one has a name and extras.
     ASSERT_EQ(after["samplers"].size(), 2u);
     const json& tiling = after["samplers"][after["textures"][0]["sampler"].get<std::size_t>()];
