@@ -8,8 +8,13 @@
 //   index order, so a scene the loader made keeps its node indices. Primitives without
 //   triangles are left out (the loader skips them), and so are meshes left with none.
 // - An image that came from a file which still exists is referenced by a URI relative to the new
-//   file's folder (not copied, not re-encoded: JPEGs stay JPEGs); any other image (embedded in
-//   the source, generated, or from a file that is gone) is encoded as PNG into the buffer.
+//   file's folder (not copied, not re-encoded: JPEGs stay JPEGs); an image embedded in the source
+//   is written with its own bytes and MIME type (Image::encoded: 16-bit PNGs and KTX2 stay as
+//   they were); any other image (generated, or from a file that is gone) is encoded as PNG into
+//   the buffer. The loader's white stand-in (Image::generated) is not written.
+// - Every glTF scene of the source is written, in its order (Scene::otherScenes around the
+//   shown one, which keeps its index as `scene`).
+// - Kept accessors that were sparse are written sparse (KeptAccessor::Sparse).
 // - What the loader kept without drawing it (scene/Scene.h: KeptAccessor and friends) is written
 //   back in its own component types: extra vertex attributes and morph targets (one buffer view
 //   each, strides padded to 4 bytes), primitives of other modes, skins (joints remapped like the
