@@ -666,7 +666,13 @@ TEST(GltfRoundTrip, EmbeddedImagesAreWrittenByteForByte) {
     b.doc["scenes"] = json::parse(R"([{"nodes": [0]}])");
     const fs::path source = dir / "images.gltf";
     b.write(source);
-    saveGltf(loadGltf(source, log), dir / "saved.gltf");
+    const Scene scene = loadGltf(source, log);
+    // stb_image read the 16-bit PNG (2×1, high bytes of the first pixel 0x12 0x56 0x9A), so the
+    // file is a real one and the save must not write these 8-bit pixels instead.
+    ASSERT_EQ(scene.images.at(0).width, 2);
+    EXPECT_EQ(scene.images[0].rgba.at(0), 0x12);
+    EXPECT_EQ(scene.images[0].rgba.at(2), 0x9A);
+    saveGltf(scene, dir / "saved.gltf");
     const RawGltf saved = readRaw(dir / "saved.gltf");
     const json& images = saved.doc.at("images");
     ASSERT_EQ(images.size(), 4u) << "no image added or lost";
