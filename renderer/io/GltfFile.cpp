@@ -123,7 +123,8 @@ std::string base64Encode(std::span<const std::uint8_t> bytes) {
 }
 
 void writeGltfModel(tinygltf::Model model, const fs::path& file, bool binary,
-                    const std::vector<std::pair<fs::path, std::string>>& alsoWrite) {
+                    const std::vector<std::pair<fs::path, std::string>>& alsoWrite,
+                    const std::vector<std::pair<std::string, std::string>>& jsonPatches) {
     // tinygltf's stream writer base64-encodes every buffer; take the bytes out so that it writes
     // only the JSON, and put the buffers where they belong below.
     std::vector<std::vector<unsigned char>> data(model.buffers.size());
@@ -139,6 +140,14 @@ void writeGltfModel(tinygltf::Model model, const fs::path& file, bool binary,
         doc = OrderedJson::parse(stream.str());
     } catch (const OrderedJson::exception& e) {
         fail(file, std::string("tinygltf wrote JSON that does not parse (") + e.what() + ")");
+    }
+
+    for (const auto& [pointer, text] : jsonPatches) {
+        try {
+            doc[OrderedJson::json_pointer(pointer)] = OrderedJson::parse(text);
+        } catch (const OrderedJson::exception& e) {
+            fail(file, "cannot write " + pointer + " (" + e.what() + ")");
+        }
     }
 
     AtomicFileSet files;

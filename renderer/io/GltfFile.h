@@ -27,8 +27,11 @@ namespace lit {
 // last (io/AtomicFile.h), so a failure leaves all previous files as they were. Throws
 // std::runtime_error whose message starts with the path of the file concerned.
 // `alsoWrite`: other files committed together with the scene (staged before it).
+// `jsonPatches`: (JSON pointer, JSON value text) pairs set into the document after tinygltf wrote
+// it, for what tinygltf 2.7 does not serialise (a sampler's name and extensions).
 void writeGltfModel(tinygltf::Model model, const std::filesystem::path& file, bool binary,
-                    const std::vector<std::pair<std::filesystem::path, std::string>>& alsoWrite = {});
+                    const std::vector<std::pair<std::filesystem::path, std::string>>& alsoWrite = {},
+                    const std::vector<std::pair<std::string, std::string>>& jsonPatches = {});
 
 bool isDataUri(std::string_view uri);
 // "%20" → ' ' (RFC 3986; '+' stays '+').

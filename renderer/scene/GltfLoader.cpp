@@ -25,6 +25,7 @@
 
 #include "Log.h"
 #include "animation/CameraPathIO.h"
+#include "io/GltfFile.h"
 #include "scene/GltfKeep.h"
 #include "scene/LightUnits.h"
 #include "scene/Tangents.h"
@@ -830,6 +831,11 @@ void Loader::loadMaterials(Scene& scene) const {
                                  gltfkeep::extensionsText(in.normalTexture.extensions),
                                  gltfkeep::extensionsText(in.emissiveTexture.extensions),
                                  gltfkeep::extensionsText(in.occlusionTexture.extensions)};
+        out.textureExtras = {gltfkeep::extrasText(pbr.baseColorTexture.extras),
+                             gltfkeep::extrasText(pbr.metallicRoughnessTexture.extras),
+                             gltfkeep::extrasText(in.normalTexture.extras), gltfkeep::extrasText(in.emissiveTexture.extras),
+                             gltfkeep::extrasText(in.occlusionTexture.extras)};
+        out.pbrKept = gltfkeep::keep(pbr.extras, pbr.extensions);
         scene.materials.push_back(std::move(out));
     }
 }
@@ -864,6 +870,8 @@ void Loader::loadTextures(Scene& scene) const {
             allowed(s.wrapT, {10497, 33071, 33648}, "wrapT", out.wrapT);
             allowed(s.minFilter, {9728, 9729, 9984, 9985, 9986, 9987}, "minFilter", out.minFilter);
             allowed(s.magFilter, {9728, 9729}, "magFilter", out.magFilter);
+            out.samplerName = s.name;
+            out.samplerKept = gltfkeep::keep(s.extras, s.extensions);
         }
         out.kept = gltfkeep::keep(in.extras, in.extensions);
         scene.textures.push_back(out);
@@ -903,6 +911,23 @@ DecodedImage decodeImage(const std::vector<unsigned char>& encoded) {
     out.rgba.assign(pixels.get(),
                     pixels.get() + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4u);
     return out;
+}
+
+// The MIME type of an embedded image without a mimeType (a data URI): from the URI
+// ("data:image/png;base64,...") or else from the bytes' signature.
+std::string mimeTypeOf(const std::string& uri, const std::vector<unsigned char>& bytes) {
+    if (uri.starts_with("data:")) {
+        const std::size_t end = uri.find_first_of(";,", 5);
+        if (end != std::string::npos && end > 5) return uri.substr(5, end - 5);
+    }
+    const auto starts = [&](std::initializer_list<unsigned char> magic) {
+        return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin());
+    };
+    if (starts({0x89, 'P', 'N', 'G'})) return "image/png";
+    if (starts({0xFF, 0xD8, 0xFF})) return "image/jpeg";
+    if (starts({0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB})) return "image/ktx2";
+    if (bytes.size() >= 12 && std::equal(bytes.begin() + 8, bytes.begin() + 12, "WEBP")) return "image/webp";
+    return "application/octet-stream";
 }
 
 void Loader::loadImages(Scene& scene) const {
@@ -976,6 +1001,13 @@ void Loader::loadImages(Scene& scene) const {
         Image& out = scene.images[i];
         out.name = in.name;
         out.uri = in.uri;
+        out.kept = gltfkeep::keep(in.extras, in.extensions);
+        if (in.uri.empty() || isDataUri(in.uri)) {
+            // Embedded: keep the file's bytes for a save (a copy of an earlier image shares its
+            // bytes, which the canonical entry holds).
+            out.encoded = model_.images[static_cast<std::size_t>(images_.canonical(static_cast<int>(i)))].image;
+            out.mimeType = in.mimeType.empty() ? mimeTypeOf(in.uri, out.encoded) : in.mimeType;
+        }
         if (images_.canonical(static_cast<int>(i)) != static_cast<int>(i)) {
             // A copy of an earlier image: textures use that one; this entry keeps its name and
             // uri but no pixels of its own.
@@ -1009,6 +1041,7 @@ void Loader::loadImages(Scene& scene) const {
         if (neutral < 0) {
             neutral = static_cast<int>(scene.images.size());
             scene.images.push_back(Image{"neutral", "", 1, 1, {255, 255, 255, 255}, false});
+            scene.images.back().generated = true;  // not in the file: a save leaves it out
             failed.push_back(1);
         }
         warn("texture " + std::to_string(t) + " has no image Lit can read; using a 1x1 white texture");
@@ -1160,6 +1193,10 @@ KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optio
                                       static_cast<std::size_t>(indexSize), count, false);
         const auto values = viewData(a.sparse.values.bufferView, static_cast<std::size_t>(std::max(a.sparse.values.byteOffset, 0)),
                                      elementSize, count, false);
+        KeptAccessor::Sparse sparse;
+        sparse.indexComponentType = a.sparse.indices.componentType;
+        sparse.hasBase = base.first != nullptr;
+        sparse.indices.reserve(count);
         for (std::size_t i = 0; i < count; ++i) {
             std::uint32_t target = 0;
             const unsigned char* p = indices.first + i * static_cast<std::size_t>(indexSize);
@@ -1173,8 +1210,14 @@ KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optio
             if (target >= a.count)
                 fail(what + " has the sparse index " + std::to_string(target) + ", out of range (" +
                      std::to_string(a.count) + " elements)");
+            sparse.indices.push_back(target);
+            if (sparse.hasBase) {
+                const std::uint8_t* element = out.bytes.data() + target * elementSize;
+                sparse.baseBytes.insert(sparse.baseBytes.end(), element, element + elementSize);
+            }
             std::memcpy(out.bytes.data() + target * elementSize, values.first + i * elementSize, elementSize);
         }
+        out.sparse = std::move(sparse);
     }
     return out;
 }
@@ -1284,6 +1327,7 @@ void Loader::loadAnimations(Scene& scene) const {
                 Animation::Sampler sampler;
                 sampler.interpolation = s.interpolation.empty() ? "LINEAR" : s.interpolation;
                 sampler.components = output.components;
+                sampler.extras = gltfkeep::extrasText(s.extras);
                 for (std::size_t k = 0; k < input.count; ++k) sampler.input.push_back(input.component(k, 0));
                 for (std::size_t k = 0; k < output.count; ++k)
                     for (int c = 0; c < output.components; ++c) sampler.output.push_back(output.component(k, c));
@@ -1295,7 +1339,7 @@ void Loader::loadAnimations(Scene& scene) const {
                 if (c.target_node < 0 || static_cast<std::size_t>(c.target_node) >= nodeRemap_.size()) continue;
                 const int node = nodeRemap_[static_cast<std::size_t>(c.target_node)];
                 if (node < 0) continue;  // a node not imported
-                out.channels.push_back({c.sampler, node, c.target_path});
+                out.channels.push_back({c.sampler, node, c.target_path, gltfkeep::keep(c.extras, c.extensions)});
             }
         } catch (const SceneLoadError& e) {
             warn(std::string(e.what()) + "; the animation is not kept");
@@ -1315,6 +1359,30 @@ void Loader::keepFileData(Scene& scene) const {
     }
     scene.fileKept = gltfkeep::keep(model_.extras, model_.extensions, {"KHR_lights_punctual"});
     scene.copyright = model_.asset.copyright;
+    scene.assetKept = gltfkeep::keep(model_.asset.extras, model_.asset.extensions);
+    // The other scenes, by the nodes they share with the shown one.
+    scene.sceneIndex = std::max(sceneIndex, 0);
+    for (std::size_t i = 0; i < model_.scenes.size(); ++i) {
+        if (static_cast<int>(i) == sceneIndex) continue;
+        const tinygltf::Scene& s = model_.scenes[i];
+        Scene::OtherScene other{s.name, {}, gltfkeep::keep(s.extras, s.extensions)};
+        std::size_t missing = 0;
+        for (int root : s.nodes) {
+            const int mapped = root >= 0 && static_cast<std::size_t>(root) < nodeRemap_.size()
+                                   ? nodeRemap_[static_cast<std::size_t>(root)]
+                                   : -1;
+            if (mapped < 0) {
+                ++missing;
+            } else if (std::find(other.roots.begin(), other.roots.end(), mapped) == other.roots.end()) {
+                other.roots.push_back(mapped);
+            }
+        }
+        if (missing > 0)
+            warn("scene " + std::to_string(i) + (s.name.empty() ? "" : " ('" + s.name + "')") + " has " +
+                 std::to_string(missing) + " root nodes that are not part of the scene Lit shows (scene " +
+                 std::to_string(scene.sceneIndex) + "); a save keeps the scene without them");
+        scene.otherScenes.push_back(std::move(other));
+    }
     static const std::array<std::string_view, 2> own = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
     for (const std::string& e : model_.extensionsUsed)
         if (std::find(own.begin(), own.end(), e) == own.end()) scene.unknownExtensionsUsed.push_back(e);

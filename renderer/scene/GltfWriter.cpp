@@ -8,8 +8,13 @@
 //   index order, so a scene the loader made keeps its node indices. Primitives without
 //   triangles are left out (the loader skips them), and so are meshes left with none.
 // - An image that came from a file which still exists is referenced by a URI relative to the new
-//   file's folder (not copied, not re-encoded: JPEGs stay JPEGs); any other image (embedded in
-//   the source, generated, or from a file that is gone) is encoded as PNG into the buffer.
+//   file's folder (not copied, not re-encoded: JPEGs stay JPEGs); an image embedded in the source
+//   is written with its own bytes and MIME type (Image::encoded: 16-bit PNGs and KTX2 stay as
+//   they were); any other image (generated, or from a file that is gone) is encoded as PNG into
+//   the buffer. The loader's white stand-in (Image::generated) is not written.
+// - Every glTF scene of the source is written, in its order (Scene::otherScenes around the
+//   shown one, which keeps its index as `scene`).
+// - Kept accessors that were sparse are written sparse (KeptAccessor::Sparse).
 // - What the loader kept without drawing it (scene/Scene.h: KeptAccessor and friends) is written
 //   back in its own component types: extra vertex attributes and morph targets (one buffer view
 //   each, strides padded to 4 bytes), primitives of other modes, skins (joints remapped like the
@@ -32,6 +37,7 @@
 #include "scene/LightUnits.h"
 #include "scene/Scene.h"
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -43,6 +49,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <tuple>
 
 namespace lit {
 
@@ -79,6 +86,7 @@ public:
         : scene_(scene), file_(file), replacedAnimation_(std::move(replacedAnimation)) {}
 
     tinygltf::Model build();
+    std::vector<std::pair<std::string, std::string>> takeJsonPatches() { return std::move(jsonPatches_); }
 
 private:
     [[noreturn]] void fail(const std::string& problem) const { throw SceneSaveError(file_.string() + ": " + problem); }
@@ -113,7 +121,8 @@ private:
     void useExtension(const std::string& name);
     // Writes what the loader kept back into an object, declaring the extensions it brings.
     void restore(const KeptGltf& kept, tinygltf::Value& extras, tinygltf::ExtensionMap& extensions);
-    void restoreTextureInfo(const std::string& kept, tinygltf::ExtensionMap& extensions);
+    void restoreTextureInfo(const std::string& keptExtras, const std::string& keptExtensions, tinygltf::Value& extras,
+                            tinygltf::ExtensionMap& extensions);
 
     const Scene& scene_;
     const fs::path& file_;
@@ -122,6 +131,10 @@ private:
     std::vector<int> meshIndex_;  // scene mesh → glTF mesh, -1 when left out
     std::vector<int> nodeIndex_;  // scene node → glTF node, -1 when not written
     std::vector<int> skinIndex_;  // scene skin → glTF skin, -1 when not written
+    std::vector<int> imageIndex_;  // scene image → glTF image, -1 when not written (generated)
+    // JSON the tinygltf serialiser cannot write (a sampler's name and extensions): JSON pointer →
+    // value text, set into the document by writeGltfModel.
+    std::vector<std::pair<std::string, std::string>> jsonPatches_;
     bool wroteKeptVertexData_ = false;  // kept attributes or morph targets (KHR_mesh_quantization)
 };
 
@@ -130,9 +143,9 @@ void ModelBuilder::restore(const KeptGltf& kept, tinygltf::Value& extras, tinygl
     for (const auto& [name, value] : extensions) useExtension(name);
 }
 
-void ModelBuilder::restoreTextureInfo(const std::string& kept, tinygltf::ExtensionMap& extensions) {
-    tinygltf::Value noExtras;  // a texture reference's extras are not kept
-    restore(KeptGltf{"", kept}, noExtras, extensions);
+void ModelBuilder::restoreTextureInfo(const std::string& keptExtras, const std::string& keptExtensions,
+                                      tinygltf::Value& extras, tinygltf::ExtensionMap& extensions) {
+    restore(KeptGltf{keptExtras, keptExtensions}, extras, extensions);
 }
 
 void ModelBuilder::checkIndex(int index, std::size_t count, const std::string& what, const char* kind) const {
@@ -287,18 +300,63 @@ int ModelBuilder::addKeptAccessor(const KeptAccessor& kept, int target) {
         fail("kept accessor data of type '" + kept.type + "' is inconsistent (" + std::to_string(kept.bytes.size()) +
              " bytes for " + std::to_string(kept.count) + " elements)");
     const std::size_t elementSize = kept.bytes.size() / kept.count;
+    const KeptAccessor::Sparse* sparse = kept.sparse ? &*kept.sparse : nullptr;
+    const int indexSize = sparse ? (sparse->indexComponentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                                    : sparse->indexComponentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                                    : sparse->indexComponentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                                                           : 0)
+                                 : 0;
+    if (sparse && (indexSize == 0 || sparse->indices.empty() ||
+                   (sparse->hasBase && sparse->baseBytes.size() != sparse->indices.size() * elementSize) ||
+                   std::any_of(sparse->indices.begin(), sparse->indices.end(), [&](std::uint32_t i) {
+                       return i >= kept.count || (indexSize < 4 && i >= (1u << (8 * indexSize)));
+                   })))
+        sparse = nullptr;  // inconsistent (edited): written dense, which holds the same values
+    // The dense part: all elements, or for a sparse accessor its base (the file's base elements
+    // put back where the sparse values replaced them), or nothing when the base was zeros.
+    std::vector<std::uint8_t> base;
+    const std::vector<std::uint8_t>* dense = &kept.bytes;
+    if (sparse && sparse->hasBase) {
+        base = kept.bytes;
+        for (std::size_t s = 0; s < sparse->indices.size(); ++s)
+            std::memcpy(base.data() + sparse->indices[s] * elementSize, sparse->baseBytes.data() + s * elementSize, elementSize);
+        dense = &base;
+    }
     const std::size_t stride = target == kArrayBuffer ? (elementSize + 3) & ~std::size_t(3) : elementSize;
     int view = -1;
-    if (stride == elementSize) {
-        view = addBufferView(kept.bytes.data(), kept.bytes.size(), target, target == kArrayBuffer ? stride : 0);
+    if (sparse && !sparse->hasBase) {
+        view = -1;  // no buffer view: zeros (glTF §3.6.2.3)
+    } else if (stride == elementSize) {
+        view = addBufferView(dense->data(), dense->size(), target, target == kArrayBuffer ? stride : 0);
     } else {  // e.g. a normalized UNSIGNED_BYTE VEC3 colour: 3 bytes every 4
         std::vector<std::uint8_t> padded(kept.count * stride, 0);
         for (std::size_t i = 0; i < kept.count; ++i)
-            std::memcpy(padded.data() + i * stride, kept.bytes.data() + i * elementSize, elementSize);
+            std::memcpy(padded.data() + i * stride, dense->data() + i * elementSize, elementSize);
         view = addBufferView(padded.data(), padded.size(), target, stride);
     }
     const int accessor = addAccessor(view, 0, kept.componentType, type, kept.count);
     model_.accessors[static_cast<std::size_t>(accessor)].normalized = kept.normalized;
+    if (sparse) {
+        // Indices in their own component type, values tightly packed; views without a target
+        // (glTF: sparse data is not bound as a vertex or index buffer).
+        std::vector<std::uint8_t> indices(sparse->indices.size() * static_cast<std::size_t>(indexSize));
+        std::vector<std::uint8_t> values(sparse->indices.size() * elementSize);
+        for (std::size_t s = 0; s < sparse->indices.size(); ++s) {
+            const std::uint32_t index = sparse->indices[s];
+            std::memcpy(indices.data() + s * static_cast<std::size_t>(indexSize), &index, static_cast<std::size_t>(indexSize));  // little-endian
+            std::memcpy(values.data() + s * elementSize, kept.bytes.data() + index * elementSize, elementSize);
+        }
+        const int indexView = addBufferView(indices.data(), indices.size(), 0, 0);
+        const int valueView = addBufferView(values.data(), values.size(), 0, 0);
+        tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(accessor)];
+        a.sparse.isSparse = true;
+        a.sparse.count = static_cast<int>(sparse->indices.size());
+        a.sparse.indices.bufferView = indexView;
+        a.sparse.indices.byteOffset = 0;
+        a.sparse.indices.componentType = sparse->indexComponentType;
+        a.sparse.values.bufferView = valueView;
+        a.sparse.values.byteOffset = 0;
+    }
     return accessor;
 }
 
@@ -360,12 +418,17 @@ std::optional<std::string> ModelBuilder::relativeUri(const Image& image) const {
 }
 
 void ModelBuilder::addImages() {
+    imageIndex_.assign(scene_.images.size(), -1);
     for (std::size_t i = 0; i < scene_.images.size(); ++i) {
         const Image& image = scene_.images[i];
+        if (image.generated) continue;
         tinygltf::Image out;
         out.name = image.name;
         if (const std::optional<std::string> uri = relativeUri(image)) {
             out.uri = *uri;
+        } else if (!image.encoded.empty()) {  // the file's own bytes: not re-encoded (16-bit PNG, KTX2, JPEG)
+            out.bufferView = addBufferView(image.encoded.data(), image.encoded.size(), 0, 0);
+            out.mimeType = image.mimeType.empty() ? "application/octet-stream" : image.mimeType;
         } else {
             std::vector<std::uint8_t> png;
             try {
@@ -376,14 +439,19 @@ void ModelBuilder::addImages() {
             out.bufferView = addBufferView(png.data(), png.size(), 0, 0);
             out.mimeType = "image/png";
         }
+        restore(image.kept, out.extras, out.extensions);
+        imageIndex_[i] = static_cast<int>(model_.images.size());
         model_.images.push_back(std::move(out));
     }
 }
 
 void ModelBuilder::addTextures() {
-    std::map<std::array<int, 4>, int> samplers;  // one glTF sampler per distinct setting
+    // One glTF sampler per distinct setting (name, extras and extensions included).
+    using SamplerKey = std::tuple<std::array<int, 4>, std::string, std::string, std::string>;
+    std::map<SamplerKey, int> samplers;
     for (const Texture& texture : scene_.textures) {
-        const std::array<int, 4> key = {texture.wrapS, texture.wrapT, texture.minFilter, texture.magFilter};
+        const SamplerKey key = {{texture.wrapS, texture.wrapT, texture.minFilter, texture.magFilter},
+                                texture.samplerName, texture.samplerKept.extras, texture.samplerKept.extensions};
         auto [it, added] = samplers.emplace(key, static_cast<int>(model_.samplers.size()));
         if (added) {
             tinygltf::Sampler sampler;
@@ -391,11 +459,21 @@ void ModelBuilder::addTextures() {
             sampler.wrapT = texture.wrapT;
             sampler.minFilter = texture.minFilter;
             sampler.magFilter = texture.magFilter;
+            tinygltf::ExtensionMap extensions;
+            restore(texture.samplerKept, sampler.extras, extensions);
+            // tinygltf 2.7 writes neither a sampler's name nor its extensions: set them in the JSON.
+            const std::string at = "/samplers/" + std::to_string(model_.samplers.size());
+            if (!texture.samplerName.empty())
+                jsonPatches_.emplace_back(at + "/name", nlohmann::json(texture.samplerName).dump());
+            if (!texture.samplerKept.extensions.empty())
+                jsonPatches_.emplace_back(at + "/extensions", texture.samplerKept.extensions);
             model_.samplers.push_back(sampler);
         }
         tinygltf::Texture out;
         out.name = texture.name;
-        out.source = texture.image;
+        out.source = texture.image >= 0 && static_cast<std::size_t>(texture.image) < imageIndex_.size()
+                         ? imageIndex_[static_cast<std::size_t>(texture.image)]
+                         : -1;
         out.sampler = it->second;
         restore(texture.kept, out.extras, out.extensions);
         model_.textures.push_back(std::move(out));
@@ -443,11 +521,14 @@ void ModelBuilder::addMaterials() {
         out.alphaCutoff = material.alphaCutoff;
         out.doubleSided = material.doubleSided;
         restore(material.kept, out.extras, out.extensions);
-        restoreTextureInfo(material.textureExtensions[0], pbr.baseColorTexture.extensions);
-        restoreTextureInfo(material.textureExtensions[1], pbr.metallicRoughnessTexture.extensions);
-        restoreTextureInfo(material.textureExtensions[2], out.normalTexture.extensions);
-        restoreTextureInfo(material.textureExtensions[3], out.emissiveTexture.extensions);
-        restoreTextureInfo(material.textureExtensions[4], out.occlusionTexture.extensions);
+        const auto& extras = material.textureExtras;
+        const auto& extensions = material.textureExtensions;
+        restoreTextureInfo(extras[0], extensions[0], pbr.baseColorTexture.extras, pbr.baseColorTexture.extensions);
+        restoreTextureInfo(extras[1], extensions[1], pbr.metallicRoughnessTexture.extras, pbr.metallicRoughnessTexture.extensions);
+        restoreTextureInfo(extras[2], extensions[2], out.normalTexture.extras, out.normalTexture.extensions);
+        restoreTextureInfo(extras[3], extensions[3], out.emissiveTexture.extras, out.emissiveTexture.extensions);
+        restoreTextureInfo(extras[4], extensions[4], out.occlusionTexture.extras, out.occlusionTexture.extensions);
+        restore(material.pbrKept, pbr.extras, pbr.extensions);
         model_.materials.push_back(std::move(out));
     }
 }
@@ -615,15 +696,27 @@ void ModelBuilder::addNodes() {
         model_.nodes.push_back(std::move(out));
     }
     nodeIndex_ = remap;
-    tinygltf::Scene root;
-    root.name = scene_.name;
-    for (int index : scene_.roots) {
-        const int mapped = remap[static_cast<std::size_t>(index)];
-        if (std::find(root.nodes.begin(), root.nodes.end(), mapped) == root.nodes.end()) root.nodes.push_back(mapped);
+    const auto sceneOf = [&](const std::string& name, const std::vector<int>& roots, const KeptGltf& kept) {
+        tinygltf::Scene out;
+        out.name = name;
+        for (int index : roots) {
+            const int mapped = index >= 0 && static_cast<std::size_t>(index) < remap.size() ? remap[static_cast<std::size_t>(index)] : -1;
+            // A node another scene shares may have been deleted or re-parented under a node.
+            if (mapped < 0 || scene_.nodes[static_cast<std::size_t>(index)].parent >= 0) continue;
+            if (std::find(out.nodes.begin(), out.nodes.end(), mapped) == out.nodes.end()) out.nodes.push_back(mapped);
+        }
+        restore(kept, out.extras, out.extensions);
+        return out;
+    };
+    // The file's scenes in their order, the shown one where it was.
+    const std::size_t shown = std::min(static_cast<std::size_t>(std::max(scene_.sceneIndex, 0)), scene_.otherScenes.size());
+    for (std::size_t i = 0; i < scene_.otherScenes.size(); ++i) {
+        if (i == shown) model_.scenes.push_back(sceneOf(scene_.name, scene_.roots, scene_.kept));
+        const Scene::OtherScene& other = scene_.otherScenes[i];
+        model_.scenes.push_back(sceneOf(other.name, other.roots, other.kept));
     }
-    restore(scene_.kept, root.extras, root.extensions);
-    model_.scenes.push_back(std::move(root));
-    model_.defaultScene = 0;
+    if (shown == scene_.otherScenes.size()) model_.scenes.push_back(sceneOf(scene_.name, scene_.roots, scene_.kept));
+    model_.defaultScene = static_cast<int>(shown);
 }
 
 // The skins whose joints are all written (a deleted joint leaves its skin out, and the skinned
@@ -684,6 +777,8 @@ void ModelBuilder::addAnimations() {
             s.input = input;
             s.output = output;
             s.interpolation = sampler.interpolation;
+            tinygltf::ExtensionMap noExtensions;  // a sampler's extensions are not kept
+            restore(KeptGltf{sampler.extras, ""}, s.extras, noExtensions);
             out.samplers.push_back(std::move(s));
         }
         for (const Animation::Channel& channel : animation.channels) {
@@ -695,6 +790,7 @@ void ModelBuilder::addAnimations() {
             c.sampler = channel.sampler;
             c.target_node = node;
             c.target_path = channel.path;
+            restore(channel.kept, c.extras, c.extensions);
             out.channels.push_back(std::move(c));
         }
         if (out.channels.empty()) continue;
@@ -721,6 +817,12 @@ tinygltf::Model ModelBuilder::build() {
     addNodes();
     addAnimations();
     model_.asset.copyright = scene_.copyright;
+    {
+        tinygltf::Value extras;
+        restore(scene_.assetKept, extras, model_.asset.extensions);
+        // tinygltf writes asset extras only when they are an object (glTF's extras usually are).
+        model_.asset.extras = std::move(extras);
+    }
     restore(scene_.fileKept, model_.extras, model_.extensions);
     // Kept vertex data may be quantized (KHR_mesh_quantization's types); the extension is then
     // required, as its specification says.
@@ -765,7 +867,9 @@ void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& o
     const bool binary = extension == ".glb";
 
     const bool ownPath = options.cameraPath && !options.cameraPath->empty();
-    tinygltf::Model model = ModelBuilder(scene, file, ownPath ? options.cameraPathName : std::string()).build();
+    ModelBuilder builder(scene, file, ownPath ? options.cameraPathName : std::string());
+    tinygltf::Model model = builder.build();
+    const std::vector<std::pair<std::string, std::string>> jsonPatches = builder.takeJsonPatches();
     if (options.cameraPath && !options.cameraPath->empty()) {
         try {
             writeCameraPathAnimation(model, *options.cameraPath, options.cameraPathName);
@@ -777,7 +881,7 @@ void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& o
     if (!binary && !model.buffers.empty()) model.buffers[0].uri = percentEncodePath(file.stem().string() + ".bin");
 
     try {
-        writeGltfModel(std::move(model), file, binary, options.alsoWrite);
+        writeGltfModel(std::move(model), file, binary, options.alsoWrite, jsonPatches);
     } catch (const std::runtime_error& e) {
         const std::string what = e.what();
         throw SceneSaveError(what.starts_with(file.string() + ": ") ? what : file.string() + ": " + what);

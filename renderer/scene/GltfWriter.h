@@ -39,9 +39,9 @@ struct GltfSaveOptions {
 };
 
 // `file` ends in .gltf (JSON + "<stem>.bin" beside it) or .glb (one binary file). Images that
-// came from a file that still exists are referenced by a relative URI; other images (embedded
-// in the source, generated) are embedded as PNG. Throws SceneSaveError naming the file and
-// the reason; on error no existing file is changed.
+// came from a file that still exists are referenced by a relative URI; images embedded in the
+// source are embedded again with their own bytes; generated ones are embedded as PNG. Throws
+// SceneSaveError naming the file and the reason; on error no existing file is changed.
 void saveGltf(const Scene& scene, const std::filesystem::path& file, const GltfSaveOptions& options = {});
 
 }  // namespace lit

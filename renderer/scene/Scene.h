@@ -37,6 +37,17 @@ struct KeptAccessor {
     bool normalized = false;
     std::size_t count = 0;            // elements
     std::vector<std::uint8_t> bytes;  // count × element size
+    // A sparse accessor's layout, so a save writes it sparse again (glTF §3.6.2.3): `bytes` hold
+    // the expanded elements; these say which of them the file stored as sparse values, and what
+    // its base buffer view had there.
+    struct Sparse {
+        int indexComponentType = 5125;       // 5121, 5123 or 5125, as the file had it
+        std::vector<std::uint32_t> indices;  // element indices, in the file's order
+        bool hasBase = false;                // false: no buffer view, the base is zeros
+        std::vector<std::uint8_t> baseBytes; // hasBase: the base's elements at `indices` (indices.size() × element size)
+        bool operator==(const Sparse&) const = default;
+    };
+    std::optional<Sparse> sparse{};
     bool operator==(const KeptAccessor&) const = default;
 };
 
@@ -96,6 +107,15 @@ struct Image {
     int height = 0;
     std::vector<std::uint8_t> rgba;
     bool srgb = false;  // set by the loader from how materials use it
+    // An embedded image's bytes as the file had them (a buffer view or a data URI) and its MIME
+    // type, so a save writes them back unchanged (16-bit PNG, KTX2, JPEG are not re-encoded);
+    // empty for images from files and for generated ones. Whoever changes `rgba` clears it.
+    std::vector<std::uint8_t> encoded{};
+    std::string mimeType{};
+    KeptGltf kept{};
+    // Made by the loader (the white stand-in for textures without a readable source), not in the
+    // file: a save does not write it, and textures using it are written without a source.
+    bool generated = false;
 };
 
 struct Texture {
@@ -106,6 +126,10 @@ struct Texture {
     int magFilter = 9729;  // LINEAR
     KeptGltf kept{};
     std::string name{};
+    // The file's sampler of this texture: its name, extras and extensions (wrap and filters are
+    // above); textures whose samplers agree in all of it share one sampler in a save.
+    std::string samplerName{};
+    KeptGltf samplerKept{};
 };
 
 enum class AlphaMode { Opaque, Mask, Blend };
@@ -135,6 +159,10 @@ struct Material {
     // The TEXCOORD_n set each texture reference reads, same order. Lit draws with TEXCOORD_0
     // (the loader warns); the file's number is saved back.
     std::array<int, 5> textureTexCoord{};
+    // Extras of each texture reference (JSON text, "" when absent), same order, and the extras and
+    // extensions of pbrMetallicRoughness.
+    std::array<std::string, 5> textureExtras{};
+    KeptGltf pbrKept{};
 
     bool operator==(const Material&) const = default;
 };
@@ -208,11 +236,13 @@ struct Animation {
         std::vector<float> output;  // components × keys (× 3 for CUBICSPLINE)
         int components = 3;         // 1 (weights), 3 (translation, scale), 4 (rotation)
         std::string interpolation = "LINEAR";
+        std::string extras{};  // the sampler's extras, JSON text ("" when absent)
     };
     struct Channel {
         int sampler = 0;
         int node = -1;          // index into Scene::nodes; a channel of a node not saved is dropped
         std::string path;       // "translation", "rotation", "scale" or "weights"
+        KeptGltf kept{};        // the channel's extras and extensions
         bool operator==(const Channel&) const = default;
     };
     std::string name;
@@ -252,6 +282,18 @@ struct Scene {
     KeptGltf kept{};           // the glTF scene object's extras and extensions
     KeptGltf fileKept{};     // the file's top-level extras and extensions (KHR_lights_punctual left out)
     std::string copyright;   // asset.copyright
+    KeptGltf assetKept{};    // asset's extras and extensions
+    // The file's other glTF scenes (Lit shows one, `roots`): written back around it in the file's
+    // order, the shown one at `sceneIndex`. Their roots are indices into `nodes`; a scene's nodes
+    // that are not part of the shown scene are not imported (the loader warns) and not kept.
+    struct OtherScene {
+        std::string name;
+        std::vector<int> roots;
+        KeptGltf kept{};
+        bool operator==(const OtherScene&) const = default;
+    };
+    std::vector<OtherScene> otherScenes;
+    int sceneIndex = 0;  // where the shown scene stands among the file's scenes
     std::vector<std::string> unknownExtensionsUsed;  // extensionsUsed Lit does not read; written back
 
     // Bumped by whoever edits the scene; the renderer redoes only what changed.

@@ -56,13 +56,17 @@ TEST_P(BlenderScenes, MeanBrightnessWithin25PercentOfCycles) {
                 cycles.at("directMeanLuminance").get<double>(), directRatio);
     EXPECT_GT(directRatio, 0.9);
     EXPECT_LT(directRatio, 1.1);
-    // Known gap (issue #11, docs/UNITS.md): in the point scene Lit's one cone-traced bounce adds
-    // 0.275 where Cycles' every bounce adds 0.117, so the whole image is 1.28× Cycles though the
-    // direct light matches (0.986). The units are right; the excess is GI accuracy, which the
-    // 25 % bound must not be widened to hide. Until the GI fix lands this case is reported, not
-    // asserted.
+    // Known gap (issue #11, docs/UNITS.md "Brightness against Blender's Cycles"): the point scene
+    // is 1.28x Cycles. Measured by term (128², 128 spp reference): the direct light matches
+    // (Lit 0.417, reference 0.418, Cycles 0.423), and the reference with every bounce matches
+    // Cycles (0.533 against 0.540; ReferenceAgainstCycles in tests/unit/test_reference.cpp checks
+    // it), so the light units and falloff are right. The excess is Lit's cone-traced indirect
+    // diffuse: 0.262 where the reference's one bounce gives 0.069 and every bounce 0.104. The
+    // 25 % bound must not be widened to hide that; until the GI fix lands this case is reported,
+    // not asserted (spot and sun are asserted: the same GI excess is a smaller share of them).
     if (std::string(GetParam()) == "point")
-        GTEST_SKIP() << "point scene: whole-image ratio " << ratio << " (GI overshoot, issue #11); direct ratio checked";
+        GTEST_SKIP() << "point scene: whole-image ratio " << ratio
+                     << " (cone-traced GI 2.5x the reference's indirect light, issue #11); direct ratio checked";
     EXPECT_GT(ratio, 0.75);
     EXPECT_LT(ratio, 1.25);
 }
@@ -182,8 +186,12 @@ std::filesystem::path sharedScene(const char* relative) {
 // Sponza has no lights and no camera. From inside the atrium, with every setting at its
 // default, the image must be neither black nor blown out, and the sky must light the galleries
 // through the GI (the indirect term with the sun off is well above zero).
-// Known gap, disabled: measured mean 0.026 (the bound is > 0.05) and sky light in the GI ~2e-5:
-// the cones lose nearly all sky light in the deep courtyard. Run with
+// Known gap, disabled (docs/UNITS.md "Sponza's atrium"): measured mean 0.026 (the bound is
+// > 0.05) and sky light in the GI ~2e-5. The path-traced reference of the same view with the same
+// sun and sky gives a mean of 0.024, so the first bound asks for more light than the scene's
+// lighting physically gives this view (it is about 3 stops under the sunlit ground; an exposure
+// choice, not a light-unit error); the reference's sky light on surfaces, ~0.0015, is lost by the
+// cones at coarse mips in the deep courtyard (issue #11). Run with
 // --gtest_also_run_disabled_tests to see today's figures.
 TEST_F(SceneDefaults, DISABLED_SponzaFromInsideTheAtriumIsLitBySunAndSky) {
     const std::filesystem::path path = sharedScene("sponza/Sponza.gltf");

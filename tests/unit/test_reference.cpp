@@ -12,8 +12,11 @@
 #include "scene/SceneBuilder.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <numeric>
 #include <thread>
 
@@ -404,6 +407,43 @@ TEST(ReferenceTerms, FinalIsTheSumOfTheTermsAndBouncesAddLight) {
     const std::vector<float> diffuseOnly = image.viewRgb(View::Final, noSpecular);
     EXPECT_NEAR(diffuseOnly[3 * 100], image.mean(Term::DirectDiffuse, 100).r + image.mean(Term::IndirectDiffuse, 100).r, 1e-5f);
     EXPECT_THROW(image.viewRgb(View::Albedo, RenderSettings{}), std::invalid_argument);
+}
+
+// The reference against Blender's own renderer: the Blender scenes of tests/data/blender (made by
+// tools/blender/make_scenes.py: Blender's glTF exporter, photometric units at 683 lm/W) traced
+// with every bounce, against the linear mean of Cycles' render of the same file (256 samples,
+// black world, light radius 0, cycles_reference.json). This ties the light units and the
+// integrator to a renderer Lit does not share code with, and is what tells a units error (the
+// reference would disagree too) from a GI error of the cone tracer (only Lit would): issue #13's
+// point scene is 1.28× Cycles in Lit but not in the reference (docs/UNITS.md).
+// Measured (32 spp, 128²): reference / Cycles = 0.985 point, 0.94 spot, 0.983 sun. The 10 % band
+// covers the shading models (Principled BSDF against glTF's GGX + Lambert) and the spot's edge
+// (Blender's smoothstep blend against glTF's quadratic falloff of the exporter's inner/outer
+// angles: the spot's direct light alone is 0.93× Cycles in both Lit and the reference); a light
+// unit off by π, 4π or 683 is far outside it. About 0.5 s per scene on 2 cores.
+TEST(ReferenceAgainstCycles, BlenderScenesMeanWithin10PercentOfCycles) {
+    const std::filesystem::path folder = std::filesystem::path(LIT_SOURCE_DIR) / "tests" / "data" / "blender";
+    std::ifstream in(folder / "cycles_reference.json");
+    ASSERT_TRUE(in) << "missing " << (folder / "cycles_reference.json").string();
+    const nlohmann::json cycles = nlohmann::json::parse(in).at("scenes");
+    for (const char* name : {"point", "spot", "sun"}) {
+        SCOPED_TRACE(name);
+        QuietLog log;
+        const Scene scene = loadGltf(folder / (std::string(name) + ".gltf"), log);
+        ASSERT_EQ(scene.lights.size(), 1u);  // lit by its own light: no default sun, black sky (as Cycles' world)
+        ReferenceSettings settings;
+        settings.bounces = kAllBounces;
+        const Render r = render(scene, 128, 32, settings);
+        const std::vector<float> rgb = r.tracer->image().viewRgb(View::Final, RenderSettings{});
+        double sum = 0.0;
+        for (std::size_t i = 0; i < rgb.size(); i += 3) sum += 0.2126 * rgb[i] + 0.7152 * rgb[i + 1] + 0.0722 * rgb[i + 2];
+        const double mean = sum / static_cast<double>(rgb.size() / 3);
+        const double ratio = mean / cycles.at(name).at("meanLuminance").get<double>();
+        std::printf("%s: reference (all bounces) %.4f / Cycles %.4f = %.3f\n", name, mean,
+                    cycles.at(name).at("meanLuminance").get<double>(), ratio);
+        EXPECT_GT(ratio, 0.9);
+        EXPECT_LT(ratio, 1.1);
+    }
 }
 
 TEST(ReferenceDifference, FalseColourShowsSignedRelativeError) {
