@@ -42,6 +42,9 @@ enum class VoxelChannel {
 std::string_view toString(VoxelChannel channel);
 std::optional<VoxelChannel> parseVoxelChannel(std::string_view text);  // "radiance", "albedo", ...
 
+// Most light bounces RenderSettings::bounces may ask for (each costs one cone-traced pass over the voxels).
+inline constexpr int kMaxBounces = 8;
+
 // What the background and the cones that leave the scene see (scene/Sky.h evaluates it).
 enum class SkyMode {
     Auto,      // Gradient when the scene has no lights (with a default sun), else None
@@ -109,6 +112,15 @@ struct RenderSettings {
     float diffuseConeAperture = 1.0471975511965976f;  // radians (60°)
     float maxTraceDistance = 1.0f;    // fraction of the voxel volume's side
     float coneStepScale = 0.5f;       // step = scale × cone diameter
+    // GI accuracy (docs/GI.md): directional (anisotropic) voxels for mip levels ≥ 1; the largest
+    // voxel a cone leaving a surface may sample, as a multiple of its height above that surface
+    // (keeps cones out of their own surface's voxels; 0 = unbounded); light bounces (1 = direct
+    // light only is injected, each more re-injects the voxels' own cone-traced indirect light).
+    bool anisotropicVoxels = true;
+    float coneFootprintPerHeight = 0.33f;  // × height above the surface (0 = off)
+    // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
+    // occupied voxel, 2-20 s per light or geometry edit on llvmpipe (docs/GI.md, "Bounces").
+    int bounces = 1;                      // 1..8
     float voxelSlice = 0.5f;          // slice view: slice position along the axis (0..1)
     int voxelSliceAxis = 2;           // slice view: 0 X, 1 Y, 2 Z
     int voxelMip = 0;                 // voxel views: mip level (clamped to the volume's levels)

@@ -61,7 +61,7 @@ vec3 traceDiffuseInFrame(vec3 origin, mat3 basis, float aperture, float maxDista
                          out vec3 cones[kDiffuseConeCount]) {
     vec3 sum = vec3(0.0);
     for (int i = 0; i < kDiffuseConeCount; ++i) {
-        cones[i] = traceCone(origin, basis * kDiffuseConeDirections[i], aperture, maxDistance).rgb;
+        cones[i] = traceDiffuseCone(origin, basis, i, aperture, maxDistance);
         sum += kDiffuseConeWeights[i] * cones[i];
     }
     return sum;
