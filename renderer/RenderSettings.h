@@ -44,6 +44,10 @@ std::optional<VoxelChannel> parseVoxelChannel(std::string_view text);  // "radia
 
 // Most light bounces RenderSettings::bounces may ask for (each costs one cone-traced pass over the voxels).
 inline constexpr int kMaxBounces = 8;
+// The footprint bound of the accurate GI mode (RenderSettings::coneFootprintPerHeight, with
+// anisotropicVoxels on): the largest voxel a cone leaving a surface samples is a third of its
+// height above it (docs/GI.md, "Footprint-bounded cones": 0.25-0.5 measured, 0.33 chosen).
+inline constexpr float kAccurateGiFootprint = 0.33f;
 
 // What the background and the cones that leave the scene see (scene/Sky.h evaluates it).
 enum class SkyMode {
@@ -116,8 +120,11 @@ struct RenderSettings {
     // voxel a cone leaving a surface may sample, as a multiple of its height above that surface
     // (keeps cones out of their own surface's voxels; 0 = unbounded); light bounces (1 = direct
     // light only is injected, each more re-injects the voxels' own cone-traced indirect light).
-    bool anisotropicVoxels = true;
-    float coneFootprintPerHeight = 0.33f;  // × height above the surface (0 = off)
+    // Both accuracy features are off by default: on llvmpipe they cost 5× (anisotropic) and 3×
+    // (footprint) the cone trace, 15-30× together (docs/GI.md, "Cost"); kAccurateGi* is the
+    // combination docs/GI.md measures against the reference.
+    bool anisotropicVoxels = false;
+    float coneFootprintPerHeight = 0.0f;  // × height above the surface (0 = off; accurate: kAccurateGiFootprint)
     // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
     // occupied voxel, 2-20 s per light or geometry edit on llvmpipe (docs/GI.md, "Bounces").
     int bounces = 1;                      // 1..8

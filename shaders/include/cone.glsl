@@ -103,7 +103,16 @@ const float kFaceMinTransmittance = 1.0 / 4096.0;
 // rose from 0.72 to 0.83 of the reference at 128³ (k = 1, 2, 3, 4 measured: docs/GI.md).
 // Partially covered voxels (a surface seen edge-on) block more than their coverage; uniform
 // opaque fields are unchanged (the furnace stays exact).
+// The default mode (no cone feature on) keeps the tracer of before issue #11 (k = 1, the march
+// ends at the volume's face): with isotropic coarse voxels, k = 3 made the side cones' self-
+// occlusion by their own surface's voxels worse (Cornell ceiling at 64³ 0.044 → 0.014 W/(sr·m²)).
+#if LIT_CONE_ANISOTROPIC || LIT_CONE_FOOTPRINT
 const float kOpacityPerVoxel = 3.0;
+const float kPastFaceVoxels = 1.0;  // sampled voxels marched past the volume's face (below)
+#else
+const float kOpacityPerVoxel = 1.0;
+const float kPastFaceVoxels = 0.0;
+#endif
 
 // One sample of the radiance volume at texture coordinate uvw and (fractional) mip level `level`
 // for a cone travelling along `direction`. Isotropic volume (LIT_CONE_ANISOTROPIC 0): one
@@ -181,11 +190,11 @@ vec4 traceConeFromSurface(vec3 origin, vec3 direction, float aperture, float max
         float diameter = max(voxelSize, widthPerDistance * tMid);
 #endif
         float levelVoxelSize = min(diameter, maxLevelVoxelSize);
-        // The march goes on one sampled voxel past the volume's face: trilinear filtering spreads a
-        // surface on the face over a voxel on either side, and a cone stopped at the face would
-        // see only half of its opacity (a closed room whose walls are the volume's faces lost
-        // 45 % of its bounce light).
-        if (tMid < span.x || tMid > span.y + levelVoxelSize) break;
+        // The march goes on one sampled voxel past the volume's face (accurate mode): trilinear
+        // filtering spreads a surface on the face over a voxel on either side, and a cone stopped
+        // at the face would see only half of its opacity (a closed room whose walls are the
+        // volume's faces lost 45 % of its bounce light).
+        if (tMid < span.x || tMid > span.y + kPastFaceVoxels * levelVoxelSize) break;
         vec4 s = sampleRadiance(uvwOrigin + tMid * uvwPerMetre, log2(levelVoxelSize / voxelSize), faceWeights, negative);
         if (s.a > kConeMinOpacity) {
             float a = 1.0 - pow(max(1.0 - s.a, 0.0), kOpacityPerVoxel * stepLength / levelVoxelSize);

@@ -55,11 +55,16 @@ protected:
         renderer_->render(scene, camera, settings);
         return HdrImage{settings.width, settings.height, renderer_->readHdrRgb()};
     }
+    // The accurate GI mode (off by default for its cost: docs/GI.md, "Cost"): anisotropic voxels
+    // and footprint-bounded cones. The tests that compare with the renderer of before switch them
+    // off explicitly.
     static RenderSettings giSettings(int voxels, View view = View::Final, int size = 96) {
         RenderSettings s = smallSettings(size);
         s.gi = true;
         s.voxelResolution = voxels;
         s.view = view;
+        s.anisotropicVoxels = true;
+        s.coneFootprintPerHeight = kAccurateGiFootprint;
         return s;
     }
 };
