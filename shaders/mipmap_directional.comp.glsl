@@ -43,6 +43,9 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D uNormal;
 #endif
 
 uniform ivec3 uFace;  // x axis (0 X, 1 Y, 2 Z), y 1 if the cone travels towards −axis, z edge of the level written
+// The two faces of an axis share one volume, side by side along x (VoxelVolume.h): x offsets in
+// texels of this face's region in the source (x) and destination (y) level; 0 for the +axis face.
+uniform ivec2 uOffsets;
 
 // Share of a level-0 voxel's radiance that leaves towards a cone travelling along `travel`.
 float emissionTowards(ivec3 p, vec3 travel) {
@@ -59,7 +62,7 @@ float emissionTowards(ivec3 p, vec3 travel) {
 }
 
 vec4 child(ivec3 p, vec3 travel) {
-    vec4 c = imageLoad(uSource, p);
+    vec4 c = imageLoad(uSource, p + ivec3(uOffsets.x, 0, 0));
 #if LIT_DIRECTIONAL_FROM_ISO
     if (c.a > 0.0) c.rgb *= emissionTowards(p, travel);
 #endif
@@ -88,5 +91,5 @@ void main() {
         vec4 back = negative ? low : high;
         sum += front + (1.0 - front.a) * back;
     }
-    imageStore(uDest, p, 0.25 * sum);
+    imageStore(uDest, p + ivec3(uOffsets.y, 0, 0), 0.25 * sum);
 }

@@ -117,7 +117,8 @@ void MipmapPass::executeDirectional(const VoxelVolume& volume) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     for (int face = 0; face < LIT_VOXEL_FACE_COUNT; ++face) {
-        const gl::Texture& target = volume.directional(face);
+        const gl::Texture& target = volume.directional(face / 2);
+        const bool negative = face % 2 == 1;
         for (int level = 0; level < target.desc().levels; ++level) {
             const gl::Program& program =
                 level == 0 ? (rgba8 ? directionalFromIso8_ : directionalFromIso16f_) : (rgba8 ? directional8_ : directional16f_);
@@ -128,8 +129,11 @@ void MipmapPass::executeDirectional(const VoxelVolume& volume) {
             else
                 glBindImageTexture(LIT_IMG_MIP_SOURCE, target.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, format);
             glBindImageTexture(LIT_IMG_MIP_DEST, target.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, format);
-            const int edge = std::max(target.desc().width >> level, 1);
+            // The face's region: edge³ texels at x offset 2·edge for the −axis face (VoxelVolume.h).
+            const int edge = std::max(target.desc().height >> level, 1);
             glProgramUniform3i(program.id(), program.location("uFace"), face / 2, face % 2, edge);
+            glProgramUniform2i(program.id(), program.location("uOffsets"), level > 0 && negative ? 4 * edge : 0,
+                               negative ? 2 * edge : 0);
             const auto groups = static_cast<GLuint>(ceilDiv(edge, kGroup));
             glDispatchCompute(groups, groups, groups);
             glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -10,7 +10,7 @@
 namespace lit {
 
 namespace {
-constexpr const char* kFaceNames[LIT_VOXEL_FACE_COUNT] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+constexpr const char* kAxisNames[LIT_VOXEL_AXIS_COUNT] = {"±X", "±Y", "±Z"};
 constexpr int kMinResolution = 64;
 constexpr int kMaxResolution = 512;
 
@@ -27,9 +27,10 @@ std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
     const std::size_t texel = rgba8 ? 4 : 8;
     const std::size_t material = voxels * 4 * 3;
-    // A full 3D mip chain adds 1/8 + 1/64 + ... ≈ 1/7 of the base level; each directional chain
-    // starts at (N/2)³, 1/8 of the base, so the six add 6/7 of it.
-    const std::size_t radiance = voxels * texel * 8 / 7 + 6 * (voxels / 8) * texel * 8 / 7;
+    // A full 3D mip chain adds 1/8 + 1/64 + ... ≈ 1/7 of the base level; each directional volume
+    // (one per axis, its two faces and a gap between them side by side) starts at 3·(N/2)³, 3/8 of
+    // the base, so the three add 9/7 of it.
+    const std::size_t radiance = voxels * texel * 8 / 7 + 9 * (voxels / 8) * texel * 8 / 7;
     return material + radiance + (bounces ? 2 * voxels * texel : 0);
 }
 
@@ -98,11 +99,12 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     glTextureParameterfv(radiance_.id(), GL_TEXTURE_BORDER_COLOR, transparent);
     for (int level = 0; level < mipCount_; ++level)
         glClearTexImage(radiance_.id(), level, GL_RGBA, GL_FLOAT, transparent);
-    for (int face = 0; face < LIT_VOXEL_FACE_COUNT; ++face) {
+    for (int axis = 0; axis < LIT_VOXEL_AXIS_COUNT; ++axis) {
         const int half = std::max(n / 2, 1);
-        gl::Texture& t = directional_[static_cast<std::size_t>(face)];
-        t = gl::Texture("voxel radiance " + std::string(kFaceNames[face]),
-                        {GL_TEXTURE_3D, radianceFormat(), half, half, half, std::max(mipCount_ - 1, 1)});
+        gl::Texture& t = directional_[static_cast<std::size_t>(axis)];
+        // +axis face at x ∈ [0, m), an empty gap [m, 2m), −axis face at [2m, 3m) (m = the level's edge).
+        t = gl::Texture("voxel radiance " + std::string(kAxisNames[axis]),
+                        {GL_TEXTURE_3D, radianceFormat(), 3 * half, half, half, std::max(mipCount_ - 1, 1)});
         t.setFilter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
         t.setWrap(GL_CLAMP_TO_BORDER);
         glTextureParameterfv(t.id(), GL_TEXTURE_BORDER_COLOR, transparent);
@@ -205,7 +207,7 @@ std::size_t VoxelVolume::materialBytes() const {
 std::size_t VoxelVolume::radianceBytes() const {
     std::size_t bytes = 0;
     for (int level = 0, n = resolution_; level < mipCount_; ++level, n = std::max(n / 2, 1))
-        bytes += static_cast<std::size_t>(n) * n * n * (rgba8_ ? 4 : 8) * (level == 0 ? 1 : 1 + LIT_VOXEL_FACE_COUNT);
+        bytes += static_cast<std::size_t>(n) * n * n * (rgba8_ ? 4 : 8) * (level == 0 ? 1 : 1 + 3 * LIT_VOXEL_AXIS_COUNT);
     return bytes;
 }
 
@@ -214,8 +216,8 @@ std::size_t VoxelVolume::bounceBytes() const {
 }
 
 void VoxelVolume::bindDirectional() const {
-    for (int face = 0; face < LIT_VOXEL_FACE_COUNT; ++face)
-        directional_[static_cast<std::size_t>(face)].bind(LIT_TEX_VOXEL_DIRECTIONAL_FIRST + face);
+    for (int axis = 0; axis < LIT_VOXEL_AXIS_COUNT; ++axis)
+        directional_[static_cast<std::size_t>(axis)].bind(LIT_TEX_VOXEL_DIRECTIONAL_FIRST + axis);
 }
 
 void VoxelVolume::ensureBounceVolumes() {

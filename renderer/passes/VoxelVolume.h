@@ -5,9 +5,12 @@
 //   normal    r32ui  N³, 1 level   packed RGBA8: xyz normal·0.5+0.5, a = sample count
 //   emission  r32ui  N³, 1 level   packed RGBA8: rgb emitted radiance / emission range, a = sample count
 //   radiance  RGBA16F (or RGBA8) N³, full mip chain: rgb outgoing radiance, a opacity (0..1)
-//   directional[6]  same format, (N/2)³ with its own mip chain: levels 1.. of the radiance volume
-//             as a cone travelling along +X, −X, +Y, −Y, +Z, −Z sees them (anisotropic voxels,
-//             docs/GI.md); level 0 stays the isotropic radiance volume
+//   directional[3]  same format, 3(N/2) × (N/2) × (N/2) with its own mip chain: levels 1.. of the
+//             radiance volume as a cone travelling along +axis (x ∈ [0, m)) and −axis
+//             (x ∈ [2m, 3m)) sees them, m the level's edge, an empty gap between them so that
+//             filtering never mixes the two (anisotropic voxels, docs/GI.md; one volume per axis
+//             lets a cone pick its face by a coordinate offset instead of a branch, which llvmpipe
+//             would run both sides of); level 0 stays the isotropic radiance volume
 //   direct, bounce  same format, N³, 1 level, allocated when more than one bounce is asked for:
 //             the direct radiance and the next bounce's radiance (InjectPass::executeBounce)
 //
@@ -78,9 +81,10 @@ public:
     const gl::Texture& normal() const { return normal_; }
     const gl::Texture& emission() const { return emission_; }
     const gl::Texture& radiance() const { return radiance_; }
-    // Face f = 2·axis + (1 if the cone travels towards −axis): 0 +X, 1 −X, 2 +Y, 3 −Y, 4 +Z, 5 −Z.
-    const gl::Texture& directional(int face) const { return directional_[static_cast<std::size_t>(face)]; }
-    // Binds the six directional volumes to LIT_TEX_VOXEL_DIRECTIONAL_FIRST + face.
+    // The directional volume of axis 0 X, 1 Y, 2 Z: both faces of the axis side by side along x
+    // (see the layout at the top).
+    const gl::Texture& directional(int axis) const { return directional_[static_cast<std::size_t>(axis)]; }
+    // Binds the three directional volumes to LIT_TEX_VOXEL_DIRECTIONAL_FIRST + axis.
     void bindDirectional() const;
     // Allocates the direct and bounce volumes if they are missing (multiple bounces).
     void ensureBounceVolumes();
@@ -105,7 +109,7 @@ private:
     glm::vec3 min_{0.0f};
     float side_ = 1.0f;
     gl::Texture albedo_, normal_, emission_, radiance_;
-    std::array<gl::Texture, LIT_VOXEL_FACE_COUNT> directional_;
+    std::array<gl::Texture, LIT_VOXEL_AXIS_COUNT> directional_;
     gl::Texture direct_, bounce_;
     gl::Buffer uniforms_;
     gl::Buffer occupied_;

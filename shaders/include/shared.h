@@ -82,11 +82,12 @@ using mat4 = glm::mat4;
 #define LIT_TEX_SKY 24
 
 // Anisotropic radiance volumes (VoxelVolume::directional, levels 1.. of the radiance volume as
-// seen by a cone travelling along +X, −X, +Y, −Y, +Z, −Z): units FIRST .. FIRST + 5 = 29..34,
-// past the history units so no pass has to rebind what another left bound. Unit numbers only
+// seen by a cone travelling along +X, −X, +Y, −Y, +Z, −Z; one volume per axis holds both of its
+// faces): units FIRST .. FIRST + 2 = 29..31, past the history units so no pass has to rebind what another left bound. Unit numbers only
 // have to stay below GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (Capabilities.cpp asks for 35).
 #define LIT_TEX_VOXEL_DIRECTIONAL_FIRST 29
 #define LIT_VOXEL_FACE_COUNT 6
+#define LIT_VOXEL_AXIS_COUNT 3  // directional volumes: one per axis, holding its two faces
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
