@@ -120,9 +120,9 @@ struct RenderSettings {
     // voxel a cone leaving a surface may sample, as a multiple of its height above that surface
     // (keeps cones out of their own surface's voxels; 0 = unbounded); light bounces (1 = direct
     // light only is injected, each more re-injects the voxels' own cone-traced indirect light).
-    // Both accuracy features are off by default: on llvmpipe they cost 5× (anisotropic) and 3×
-    // (footprint) the cone trace, 15-30× together (docs/GI.md, "Cost"); kAccurateGi* is the
-    // combination docs/GI.md measures against the reference.
+    // Both accuracy features are off by default: on llvmpipe they cost 2-3× (anisotropic) and 3-5×
+    // (footprint) the cone trace, 7-14× together (docs/GI.md, "Landing: cost and defaults");
+    // kAccurateGiFootprint with anisotropic voxels is the mode docs/GI.md measures.
     bool anisotropicVoxels = false;
     float coneFootprintPerHeight = 0.0f;  // × height above the surface (0 = off; accurate: kAccurateGiFootprint)
     // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
