@@ -775,8 +775,8 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.timeline) timelinePanel_.draw(doc_, playback_, camera_, layout.timeline, &visible_.timeline);
     if (visible_.camera && drawCameraPanel(camera_, layout.camera, &visible_.camera).resetToSceneCamera) resetCamera();
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
-    drawViewportBar(menuHeight);
     referenceViewer_.drawWindow();
+    drawViewportBar(menuHeight);
     drawErrorPanel(sceneError_, display, menuHeight);
     drawLoadingWindow();
     // An edit opened by a widget that never reported its deactivation (a colour picker popup)

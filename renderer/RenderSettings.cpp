@@ -91,6 +91,9 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("diffuseConeAperture", s.diffuseConeAperture);
     visit("maxTraceDistance", s.maxTraceDistance);
     visit("coneStepScale", s.coneStepScale);
+    visit("anisotropicVoxels", s.anisotropicVoxels);
+    visit("coneFootprintPerHeight", s.coneFootprintPerHeight);
+    visit("bounces", s.bounces);
     visit("voxelSlice", s.voxelSlice);
     visit("voxelSliceAxis", s.voxelSliceAxis);
     visit("voxelMip", s.voxelMip);

@@ -42,6 +42,13 @@ enum class VoxelChannel {
 std::string_view toString(VoxelChannel channel);
 std::optional<VoxelChannel> parseVoxelChannel(std::string_view text);  // "radiance", "albedo", ...
 
+// Most light bounces RenderSettings::bounces may ask for (each costs one cone-traced pass over the voxels).
+inline constexpr int kMaxBounces = 8;
+// The footprint bound of the accurate GI mode (RenderSettings::coneFootprintPerHeight, with
+// anisotropicVoxels on): the largest voxel a cone leaving a surface samples is a third of its
+// height above it (docs/GI.md, "Footprint-bounded cones": 0.25-0.5 measured, 0.33 chosen).
+inline constexpr float kAccurateGiFootprint = 0.33f;
+
 // What the background and the cones that leave the scene see (scene/Sky.h evaluates it).
 enum class SkyMode {
     Auto,      // Gradient when the scene has no lights (with a default sun), else None
@@ -109,6 +116,18 @@ struct RenderSettings {
     float diffuseConeAperture = 1.0471975511965976f;  // radians (60°)
     float maxTraceDistance = 1.0f;    // fraction of the voxel volume's side
     float coneStepScale = 0.5f;       // step = scale × cone diameter
+    // GI accuracy (docs/GI.md): directional (anisotropic) voxels for mip levels ≥ 1; the largest
+    // voxel a cone leaving a surface may sample, as a multiple of its height above that surface
+    // (keeps cones out of their own surface's voxels; 0 = unbounded); light bounces (1 = direct
+    // light only is injected, each more re-injects the voxels' own cone-traced indirect light).
+    // Both accuracy features are off by default: on llvmpipe they cost 2-3× (anisotropic) and 3-5×
+    // (footprint) the cone trace, 7-14× together (docs/GI.md, "Landing: cost and defaults");
+    // kAccurateGiFootprint with anisotropic voxels is the mode docs/GI.md measures.
+    bool anisotropicVoxels = false;
+    float coneFootprintPerHeight = 0.0f;  // × height above the surface (0 = off; accurate: kAccurateGiFootprint)
+    // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
+    // occupied voxel, 2-20 s per light or geometry edit on llvmpipe (docs/GI.md, "Bounces").
+    int bounces = 1;                      // 1..8
     float voxelSlice = 0.5f;          // slice view: slice position along the axis (0..1)
     int voxelSliceAxis = 2;           // slice view: 0 X, 1 Y, 2 Z
     int voxelMip = 0;                 // voxel views: mip level (clamped to the volume's levels)

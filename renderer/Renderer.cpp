@@ -74,8 +74,8 @@ struct ShadowKey {
 struct IndirectKey {
     const Scene* scene = nullptr;
     int indirectScale = 0, specularSamples = 0, voxelResolution = 0;
-    float smoothRoughness = 0, aperture = 0, maxTraceDistance = 0, stepScale = 0;
-    bool rgba8 = false, diffuse = false, specular = false;
+    float smoothRoughness = 0, aperture = 0, maxTraceDistance = 0, stepScale = 0, footprint = 0;
+    bool rgba8 = false, diffuse = false, specular = false, anisotropic = false;
     bool operator==(const IndirectKey&) const = default;
 };
 
@@ -187,6 +187,12 @@ struct Renderer::Impl {
     ShadowKey shadowKey;
     VoxelKey voxelKey;
     float injectedRadianceRange = 0.0f;
+    // What the last injection's bounces were traced with (bounces > 1 depend on the cone settings).
+    int injectedBounces = 0;
+    int pendingBounces = 1;  // bounces of the GI update waiting to be logged
+    bool injectedAnisotropic = true;
+    float injectedFootprint = 0.0f, injectedAperture = 0.0f, injectedStepScale = 0.0f, injectedTraceDistance = 0.0f,
+          injectedIntensity = 0.0f;
     bool voxelsValid = false;
     std::uint64_t voxelGeneration = 0;  // counts voxelizations (the voxel debug views cache by it)
     // Temporal accumulation of the indirect terms: frames accumulated so far (drives the jitter
@@ -217,8 +223,24 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     else if (reallocated) reason = "voxel resolution or format changed";
     else if (moved || key.geometry != voxelKey.geometry || key.scene != voxelKey.scene) reason = "geometry changed";
     else if (key.materials != voxelKey.materials) reason = "materials changed";
-    const bool injectDirty = voxelDirty || shadowsDirty || settings.voxelRadianceRange != injectedRadianceRange;
-    if (!voxelDirty && injectDirty) reason = "lights or shadows changed";
+    // Bounces trace cones through the volume: their settings change what is injected.
+    const bool bounceSettingsChanged =
+        std::clamp(settings.bounces, 1, kMaxBounces) != injectedBounces ||
+        (injectedBounces > 1 && (settings.anisotropicVoxels != injectedAnisotropic ||
+                                 settings.coneFootprintPerHeight != injectedFootprint ||
+                                 settings.diffuseConeAperture != injectedAperture ||
+                                 settings.coneStepScale != injectedStepScale ||
+                                 settings.maxTraceDistance != injectedTraceDistance ||
+                                 settings.indirectIntensity != injectedIntensity));
+    // The six directional mip chains are built only while anisotropic voxels are on (they cost
+    // ~10× the isotropic chain on llvmpipe): switching them on rebuilds them.
+    const bool directionalMissing = settings.anisotropicVoxels && !injectedAnisotropic;
+    const bool injectDirty = voxelDirty || shadowsDirty || settings.voxelRadianceRange != injectedRadianceRange ||
+                             bounceSettingsChanged || directionalMissing;
+    if (!voxelDirty && injectDirty)
+        reason = bounceSettingsChanged  ? "bounce settings changed"
+                 : directionalMissing ? "anisotropic voxels switched on"
+                                      : "lights or shadows changed";
     if (voxelDirty) {
         {
             Profiler::Scope scope(profiler, "voxelize");
@@ -244,8 +266,28 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             Profiler::Scope scope(profiler, "inject");
             inject.execute(voxels, occupiedListComplete);
         }
-        Profiler::Scope scope(profiler, "mipmap");
-        mipmap.execute(voxels);
+        {
+            Profiler::Scope scope(profiler, "mipmap");
+            mipmap.execute(voxels, settings.anisotropicVoxels);
+        }
+        // Bounces 2..N: each re-injects the voxels' cone-traced indirect light (docs/GI.md).
+        const int bounces = std::clamp(settings.bounces, 1, kMaxBounces);
+        if (bounces > 1) {
+            voxels.ensureBounceVolumes();
+            Profiler::Scope scope(profiler, "bounces");
+            for (int b = 2; b <= bounces; ++b) {
+                inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete);
+                mipmap.execute(voxels, settings.anisotropicVoxels);
+            }
+        }
+        injectedBounces = bounces;
+        pendingBounces = bounces;
+        injectedAnisotropic = settings.anisotropicVoxels;
+        injectedFootprint = settings.coneFootprintPerHeight;
+        injectedAperture = settings.diffuseConeAperture;
+        injectedStepScale = settings.coneStepScale;
+        injectedTraceDistance = settings.maxTraceDistance;
+        injectedIntensity = settings.indirectIntensity;
         injectedRadianceRange = settings.voxelRadianceRange;
         pendingGiReason = reason;
         pendingGiFrame = profiler.currentFrame();
@@ -305,6 +347,10 @@ void Renderer::Impl::reportGiUpdate() {
                   occupiedListComplete ? "" : ", list overflowed: whole grid");
     text += occupancy;
     if (mipTiming) text += ", mipmap " + formatMs(mipTiming->gpuMs);
+    const PassTiming* bounceTiming = profiler.lastRun("bounces");
+    if (bounceTiming && bounceTiming->frame >= pendingGiFrame)
+        text += ", " + std::to_string(pendingBounces - 1) + " more bounce" + (pendingBounces > 2 ? "s " : " ") +
+                formatMs(bounceTiming->gpuMs);
     // Every frame of a gizmo drag re-voxelizes: one folded line with a count, not one per frame.
     log.info(text, Fold::IgnoringNumbers);
     pendingGiFrame = 0;
@@ -420,9 +466,11 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
                                   settings.diffuseConeAperture,
                                   settings.maxTraceDistance,
                                   settings.coneStepScale,
+                                  settings.coneFootprintPerHeight,
                                   settings.voxelRadianceRgba8,
                                   work.diffuse,
-                                  work.specular};
+                                  work.specular,
+                                  settings.anisotropicVoxels};
             if (!(key == r.indirectKey)) r.resolve.resetHistory();
             r.indirectKey = key;
             const ConeTracePass::Sampling sampling =
@@ -440,7 +488,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
             }
             {
                 Profiler::Scope scope(r.profiler, "indirect fallback");
-                r.fallback.execute(r.resolve);
+                r.fallback.execute(r.resolve, ConeFeatures::of(settings));
             }
             r.previousViewProjection = frame.viewProjection;
             if (settings.temporalAccumulation) ++r.temporalFrame;

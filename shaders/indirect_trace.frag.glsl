@@ -30,7 +30,7 @@ void main() {
     vec3 n = shadingNormal(s.normal, v);
     vec3 origin = coneOrigin(s.position, n);
     float maxDistance = voxel.traceParams.y;
-    mat3 basis = rotatedTangentFrame(n, uRotation);
+    mat3 basis = rotatedTangentFrame(n, coneSetRotation());
 
     int count = clamp(voxel.traceOptions.x, 1, 8);
     vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);

@@ -103,7 +103,7 @@ Scene thinWalls() {
     scene.name = "thin_walls";
     const RoomMaterials m = addRoomMaterials(scene);
     // VoxelVolume spans the largest extent (2 + 2t) over N − 4 voxels: t = 2 / (128 − 6) makes
-    // t exactly one voxel at 128³ (half a voxel at 64³, two voxels at 256³).
+    // t exactly one voxel at 128³ (two at 64³, half a voxel at 256³).
     addCornellRoom(scene, m, 2.0f / 122.0f);
     Light sun;
     sun.name = "sun";

@@ -170,6 +170,20 @@ bool drawGlobalIllumination(RenderSettings& s) {
     tooltip("Longest cone, as a fraction of the voxel volume's side");
     changed |= ImGui::SliderFloat("Step scale", &s.coneStepScale, 0.1f, 2.0f, "%.2f");
     tooltip("Step along a cone = scale x cone diameter (smaller is slower and smoother)");
+    changed |= ImGui::SliderInt("Bounces", &s.bounces, 1, kMaxBounces);
+    tooltip("Light bounces (count). 1: only direct light is injected into the voxels; each more re-injects\n"
+            "the voxels' own cone-traced indirect light (one extra pass over the occupied voxels per bounce,\n"
+            "run after each light or geometry edit: seconds per bounce on a software rasterizer)");
+    changed |= ImGui::Checkbox("Anisotropic voxels", &s.anisotropicVoxels);
+    tooltip("Six directional volumes per mip level (x6/7 more voxel memory): walls block and emit light\n"
+            "only on the side a cone looks at, so no light leaks or self-illumination through them.\n"
+            "Off by default: 2-3x the cone-trace time and a slower mipmap pass on a software rasterizer.\n"
+            "With Footprint / height 0.33: the accurate GI mode measured in docs/GI.md");
+    changed |= ImGui::SliderFloat("Footprint / height", &s.coneFootprintPerHeight, 0.0f, 2.0f, "%.2f");
+    tooltip("Largest voxel a cone leaving a surface samples, as a multiple of its height above that\n"
+            "surface (ratio; 0 = unbounded). Smaller keeps cones out of their own surface's voxels\n"
+            "(no self-illumination) at the cost of more steps (3-5x the cone-trace time). Off (0) by\n"
+            "default; 0.33 with anisotropic voxels is the accurate GI mode");
     changed |= comboInt("Indirect scale", s.indirectScale, std::array{1, 2, 4});
     tooltip("Trace indirect light for one pixel in N x N and upsample edge-aware (1 = every pixel)");
     changed |= ImGui::SliderFloat("Full-res specular below", &s.specularFullResRoughness, 0.0f, 1.0f, "roughness %.2f");

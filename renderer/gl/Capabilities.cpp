@@ -2,6 +2,7 @@
 
 #include "Log.h"
 #include "gl/GlError.h"
+#include <shared.h>
 
 #include <epoxy/gl.h>
 
@@ -106,16 +107,20 @@ void requireCapabilities() {
 
     // Each limit is queried only where the feature exists, so an old context reports what is
     // missing instead of raising GL_INVALID_ENUM.
-    if (version >= 43 || epoxy_has_gl_extension("GL_ARB_compute_shader"))
+    if (version >= 43 || epoxy_has_gl_extension("GL_ARB_compute_shader")) {
         requireAtLeast(missing, "compute work group invocations", GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, 512);  // 8×8×8 groups
-    else
+        requireAtLeast(missing, "compute texture units", GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, 32);  // bounce injection samples the voxel volumes and the six directional ones
+    } else
         missing.push_back("compute shaders");
     if (version >= 42 || epoxy_has_gl_extension("GL_ARB_shader_image_load_store"))
         requireAtLeast(missing, "image units", GL_MAX_IMAGE_UNITS, 8);  // shared.h uses units 0..5
     else
         missing.push_back("image load/store");
     requireAtLeast(missing, "3D texture size", GL_MAX_3D_TEXTURE_SIZE, 256);  // voxel volumes up to 256³ by default
-    requireAtLeast(missing, "combined texture units", GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, 32);  // shared.h binds up to unit 21
+    requireAtLeast(missing, "combined texture units", GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, LIT_TEX_VOXEL_DIRECTIONAL_FIRST + LIT_VOXEL_AXIS_COUNT);  // shared.h binds up to unit 31
+    // Cone tracing (fragment) samples 17 textures (G-buffer, voxel volumes, the six anisotropic
+    // ones, sky, specular table); desktop GPUs and llvmpipe have 32 per stage.
+    requireAtLeast(missing, "fragment texture units", GL_MAX_TEXTURE_IMAGE_UNITS, 32);
     if (version >= 33 || epoxy_has_gl_extension("GL_ARB_timer_query")) {
         GLint bits = 0;
         glGetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);

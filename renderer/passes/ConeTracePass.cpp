@@ -12,11 +12,13 @@ namespace lit {
 
 ConeTracePass::ConeTracePass(const std::filesystem::path& shaderRoot)
     : program_(shaderRoot, "cone trace",
-               {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "cone_trace.frag.glsl"}}),
+               {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "cone_trace.frag.glsl"}}, {},
+               ConeFeatures::of(RenderSettings{})),
       albedoProgram_(shaderRoot, "specular albedo table",
                      {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "specular_albedo.frag.glsl"}}),
       reducedProgram_(shaderRoot, "indirect trace (reduced)",
-                      {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}}) {
+                      {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}},
+                      {}, ConeFeatures::of(RenderSettings{})) {
     constexpr int size = LIT_SPECULAR_ALBEDO_SIZE;
     albedoTable_ = gl::Texture("specular albedo table", {GL_TEXTURE_2D, GL_RG16F, size, size, 1, 1});
     albedoTable_.setFilter(GL_LINEAR, GL_LINEAR);
@@ -26,6 +28,13 @@ ConeTracePass::ConeTracePass(const std::filesystem::path& shaderRoot)
     albedoTarget_.setDrawBuffers(1);
     albedoTarget_.checkComplete("specular albedo table");
     buildAlbedoTable();
+}
+
+std::vector<gl::Program*> ConeTracePass::programs() {
+    std::vector<gl::Program*> programs{&albedoProgram_};
+    program_.appendBuilt(programs);
+    reducedProgram_.appendBuilt(programs);
+    return programs;
 }
 
 void ConeTracePass::buildAlbedoTable() {
@@ -59,8 +68,11 @@ void ConeTracePass::execute(const LightingTerms& terms, const VoxelVolume& volum
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-    program_.use();
-    glProgramUniform2i(program_.id(), program_.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
+    const ConeFeatures features = ConeFeatures::of(settings);
+    if (features.anisotropic) volume.bindDirectional();
+    const gl::Program& program = program_.get(features);
+    program.use();
+    glProgramUniform2i(program.id(), program.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
     triangle_.draw();
 }
 
@@ -120,13 +132,16 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-    reducedProgram_.use();
-    const GLuint id = reducedProgram_.id();
-    glProgramUniform2i(id, reducedProgram_.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
-    glProgramUniform1f(id, reducedProgram_.location("uSmoothRoughness"), settings.specularFullResRoughness);
-    glProgramUniform1i(id, reducedProgram_.location("uScale"), scale);
-    glProgramUniform2i(id, reducedProgram_.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
-    glProgramUniform1f(id, reducedProgram_.location("uRotation"), sampling.rotation);
+    const ConeFeatures features = ConeFeatures::of(settings);
+    if (features.anisotropic) volume.bindDirectional();
+    const gl::Program& program = reducedProgram_.get(features);
+    program.use();
+    const GLuint id = program.id();
+    glProgramUniform2i(id, program.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
+    glProgramUniform1f(id, program.location("uSmoothRoughness"), settings.specularFullResRoughness);
+    glProgramUniform1i(id, program.location("uScale"), scale);
+    glProgramUniform2i(id, program.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
+    glProgramUniform1f(id, program.location("uRotation"), sampling.rotation);
     triangle_.draw();
 }
 

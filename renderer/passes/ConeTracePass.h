@@ -11,6 +11,7 @@
 //  - executeReduced: one pixel per indirectScale² block (indirect_trace.frag.glsl), demodulated,
 //    into this pass's own low-resolution targets; IndirectResolvePass turns them into the terms.
 
+#include "passes/ConeProgram.h"
 #include "passes/Pass.h"
 
 #include <glm/glm.hpp>
@@ -69,7 +70,7 @@ public:
     // E = F0·r + g. Exposed for tests.
     const gl::Texture& specularAlbedoTable() const { return albedoTable_; }
 
-    std::vector<gl::Program*> programs() override { return {&program_, &albedoProgram_, &reducedProgram_}; }
+    std::vector<gl::Program*> programs() override;
     // Binds the albedo table to LIT_TEX_SPECULAR_ALBEDO (rebuilt first after a shader reload).
     void bindAlbedoTable();
 
@@ -77,9 +78,9 @@ private:
     // (Re)integrates the table with albedoProgram_; called at construction and after a reload.
     void buildAlbedoTable();
 
-    gl::Program program_;
+    ConeProgram program_;
     gl::Program albedoProgram_;
-    gl::Program reducedProgram_;
+    ConeProgram reducedProgram_;
     gl::Texture lowPacked_, lowGuide_;  // RGBA32UI, ⌈width/s⌉ × ⌈height/s⌉
     gl::Framebuffer lowTarget_;
     int lowWidth_ = 0, lowHeight_ = 0;

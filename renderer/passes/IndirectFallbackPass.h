@@ -8,6 +8,7 @@
 // with the trace compiled in). Same upsampling and accumulation as the resolve: together they
 // write what one pass doing both would.
 
+#include "passes/ConeProgram.h"
 #include "passes/Pass.h"
 
 namespace lit {
@@ -19,13 +20,14 @@ public:
     explicit IndirectFallbackPass(const std::filesystem::path& shaderRoot);
 
     // After resolve.execute() of this frame, with the bindings it expects (G-buffer, frame and
-    // voxel UBOs). Does nothing when the resolve wrote no terms this frame.
-    void execute(const IndirectResolvePass& resolve);
+    // voxel UBOs). Does nothing when the resolve wrote no terms this frame. `features`: the cone
+    // features of the frame's settings (ConeFeatures::of).
+    void execute(const IndirectResolvePass& resolve, ConeFeatures features);
 
-    std::vector<gl::Program*> programs() override { return {&program_}; }
+    std::vector<gl::Program*> programs() override;
 
 private:
-    gl::Program program_;
+    ConeProgram program_;
     FullscreenTriangle triangle_;
 };
 

@@ -73,6 +73,7 @@ void IndirectResolvePass::bindInputs(const gl::Program& program) const {
         read.guide.bind(LIT_TEX_HISTORY_GUIDE);
     }
     last_.volume->radiance().bind(LIT_TEX_VOXEL_RADIANCE);
+    last_.volume->bindDirectional();
     last_.cone->bindAlbedoTable();
     last_.cone->lowPacked().bind(LIT_TEX_INDIRECT_LOW_PACKED);
     last_.cone->lowGuide().bind(LIT_TEX_INDIRECT_LOW_GUIDE);

@@ -9,7 +9,59 @@
 namespace lit {
 
 InjectPass::InjectPass(const std::filesystem::path& shaderRoot)
-    : program_(shaderRoot, "inject", {{GL_COMPUTE_SHADER, "inject.comp.glsl"}}) {}
+    : program_(shaderRoot, "inject", {{GL_COMPUTE_SHADER, "inject.comp.glsl"}}), shaderRoot_(shaderRoot) {}
+
+std::vector<gl::Program*> InjectPass::programs() {
+    std::vector<gl::Program*> programs{&program_};
+    bounce8_.appendBuilt(programs);
+    bounce16f_.appendBuilt(programs);
+    return programs;
+}
+
+void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList) {
+    const int n = volume.resolution();
+    if (n <= 0 || !volume.direct()) return;
+    const bool rgba8 = volume.radianceRgba8();
+    ConeProgram& programs = rgba8 ? bounce8_ : bounce16f_;
+    if (programs.empty())
+        programs = ConeProgram(shaderRoot_, rgba8 ? "bounce rgba8" : "bounce rgba16f", {{GL_COMPUTE_SHADER, "bounce.comp.glsl"}},
+                               rgba8 ? "#define LIT_BOUNCE_RGBA8 1\n" : "#define LIT_BOUNCE_RGBA8 0\n", features);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    if (first) {
+        // direct = the injected radiance; bounce starts as it too, so the voxels the list skips
+        // (empty ones: radiance 0) hold the right value when bounce is copied back.
+        glCopyImageSubData(volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.direct().id(), GL_TEXTURE_3D, 0, 0,
+                           0, 0, n, n, n);
+        glCopyImageSubData(volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.bounce().id(), GL_TEXTURE_3D, 0, 0,
+                           0, 0, n, n, n);
+    }
+    const gl::Program& program = programs.get(features);
+    program.use();
+    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
+    volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
+    if (features.anisotropic) volume.bindDirectional();
+    glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY, volume.radianceFormat());
+    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, volume.radianceFormat());
+    fromList = fromList && volume.occupiedList();
+    glProgramUniform1i(program.id(), program.location("uFromList"), fromList ? 1 : 0);
+    glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
+    if (fromList) {
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, volume.occupiedList().id());
+        glDispatchComputeIndirect(4);  // the DispatchIndirectCommand after the count
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    } else {
+        const auto groups = static_cast<GLuint>((n + LIT_INJECT_GROUP_SIZE - 1) / LIT_INJECT_GROUP_SIZE);
+        glDispatchCompute(groups, groups, groups);
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    // The bounce replaces level 0; the caller rebuilds the mips from it.
+    glCopyImageSubData(volume.bounce().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0,
+                       0, n, n, n);
+}
 
 void InjectPass::execute(const VoxelVolume& volume, bool fromList) {
     const int n = volume.resolution();

@@ -3,6 +3,7 @@
 // a Lambertian surface under the scene's direct light (with shadows) plus its emission goes into
 // level 0 of the radiance volume; empty voxels get 0 (opacity 0). See shaders/inject.comp.glsl.
 
+#include "passes/ConeProgram.h"
 #include "passes/Pass.h"
 
 #include <glm/glm.hpp>
@@ -30,10 +31,22 @@ public:
     // every voxel of the grid, empty ones written as 0.
     void execute(const VoxelVolume& volume, bool fromList = true);
 
-    std::vector<gl::Program*> programs() override { return {&program_}; }
+    // Light bounces: after execute() and a full mip build (MipmapPass::execute), each call adds one
+    // bounce: level 0 becomes direct radiance + albedo × the voxel's cone-traced indirect diffuse
+    // (shaders/bounce.comp.glsl). The caller rebuilds the mips after each call. The first call
+    // keeps a copy of the direct radiance in volume.direct() (allocated by ensureBounceVolumes,
+    // which the caller must have called); `first` says whether this is it. `fromList`: only the
+    // occupied-voxel list's voxels trace cones (as execute); false when the list overflowed.
+    // `features`: the cone features to trace with (ConeFeatures::of the settings).
+    void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList = true);
+
+    std::vector<gl::Program*> programs() override;
 
 private:
     gl::Program program_;
+    // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce (most frames have one).
+    ConeProgram bounce8_, bounce16f_;
+    std::filesystem::path shaderRoot_;
 };
 
 // Level `level` of the radiance volume as linear radiance, rgb W/(sr·m²), a opacity; x fastest,

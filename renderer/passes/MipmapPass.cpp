@@ -91,9 +91,56 @@ MipmapPass::MipmapPass(const std::filesystem::path& shaderRoot)
       rgba8_(shaderRoot, "mipmap rgba8", {{GL_COMPUTE_SHADER, "mipmap.comp.glsl"}},
              definesFor(true, rgba8Packed_, kRgba8)),
       rgba16f_(shaderRoot, "mipmap rgba16f", {{GL_COMPUTE_SHADER, "mipmap.comp.glsl"}},
-               definesFor(false, false, kRgba16f)) {}
+               definesFor(false, false, kRgba16f)),
+      directionalFromIso8_(shaderRoot, "directional mipmap rgba8 from level 0",
+                           {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
+                           "#define LIT_MIP_RGBA8 1\n#define LIT_DIRECTIONAL_FROM_ISO 1\n"),
+      directionalFromIso16f_(shaderRoot, "directional mipmap rgba16f from level 0",
+                             {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
+                             "#define LIT_MIP_RGBA8 0\n#define LIT_DIRECTIONAL_FROM_ISO 1\n"),
+      directional8_(shaderRoot, "directional mipmap rgba8", {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
+                    "#define LIT_MIP_RGBA8 1\n#define LIT_DIRECTIONAL_FROM_ISO 0\n"),
+      directional16f_(shaderRoot, "directional mipmap rgba16f", {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
+                      "#define LIT_MIP_RGBA8 0\n#define LIT_DIRECTIONAL_FROM_ISO 0\n") {}
 
-void MipmapPass::execute(const VoxelVolume& volume) { execute(volume.radiance()); }
+void MipmapPass::execute(const VoxelVolume& volume, bool anisotropic) {
+    execute(volume.radiance());
+    if (anisotropic) executeDirectional(volume);
+}
+
+void MipmapPass::executeDirectional(const VoxelVolume& volume) {
+    const int n = volume.resolution();
+    if (n < 2 || !volume.directional(0)) return;
+    const bool rgba8 = volume.radianceRgba8();
+    const GLenum format = volume.radianceFormat();
+    constexpr int kGroup = 4;  // mipmap_directional.comp.glsl: 4×4×4 work groups
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    for (int face = 0; face < LIT_VOXEL_FACE_COUNT; ++face) {
+        const gl::Texture& target = volume.directional(face / 2);
+        const bool negative = face % 2 == 1;
+        for (int level = 0; level < target.desc().levels; ++level) {
+            const gl::Program& program =
+                level == 0 ? (rgba8 ? directionalFromIso8_ : directionalFromIso16f_) : (rgba8 ? directional8_ : directional16f_);
+            program.use();
+            // Level 0 of a directional volume is level 1 of the radiance volume, built from its level 0.
+            if (level == 0)
+                glBindImageTexture(LIT_IMG_MIP_SOURCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_READ_ONLY, format);
+            else
+                glBindImageTexture(LIT_IMG_MIP_SOURCE, target.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, format);
+            glBindImageTexture(LIT_IMG_MIP_DEST, target.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, format);
+            // The face's region: edge³ texels at x offset 2·edge for the −axis face (VoxelVolume.h).
+            const int edge = std::max(target.desc().height >> level, 1);
+            glProgramUniform3i(program.id(), program.location("uFace"), face / 2, face % 2, edge);
+            glProgramUniform2i(program.id(), program.location("uOffsets"), level > 0 && negative ? 4 * edge : 0,
+                               negative ? 2 * edge : 0);
+            const auto groups = static_cast<GLuint>(ceilDiv(edge, kGroup));
+            glDispatchCompute(groups, groups, groups);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
 
 void MipmapPass::execute(const gl::Texture& volume) {
     const gl::TextureDesc& desc = volume.desc();

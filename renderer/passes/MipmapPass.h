@@ -40,16 +40,27 @@ public:
     // glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT) so cone
     // tracing (texture fetches) and image loads see every level. Changes the current program and
     // image units LIT_IMG_MIP_SOURCE, LIT_IMG_MIP_DEST, LIT_IMG_MIP_DEST2, LIT_IMG_MIP_DEST3.
-    void execute(const VoxelVolume& volume);
+    // With `anisotropic`, also builds the six directional chains (executeDirectional): only then,
+    // because they cost ~10× the isotropic chain on llvmpipe (docs/GI.md, "Cost").
+    void execute(const VoxelVolume& volume, bool anisotropic = false);
+    // Builds every level of the six directional volumes (volume.directional(f)) from level 0 of
+    // volume.radiance() and the normal volume (shaders/mipmap_directional.comp.glsl). Uses image
+    // units LIT_IMG_MIP_SOURCE, LIT_IMG_MIP_DEST and LIT_IMG_VOXEL_NORMAL; ends with the same
+    // barriers as execute().
+    void executeDirectional(const VoxelVolume& volume);
     // The same for any cubic, power-of-two GL_TEXTURE_3D in GL_RGBA8 or GL_RGBA16F: levels
     // 1..desc().levels−1 are rebuilt. Throws gl::GlError naming the problem for anything else.
     void execute(const gl::Texture& volume);
 
-    std::vector<gl::Program*> programs() override { return {&rgba8_, &rgba16f_}; }
+    std::vector<gl::Program*> programs() override {
+        return {&rgba8_, &rgba16f_, &directionalFromIso8_, &directionalFromIso16f_, &directional8_, &directional16f_};
+    }
 
 private:
     bool rgba8Packed_ = false;  // RGBA8 levels are bound as r32ui images (see MipmapPass.cpp)
     gl::Program rgba8_, rgba16f_;
+    // Directional chains: level 1 from the isotropic level 0, levels k+1 from level k (RGBA8, RGBA16F).
+    gl::Program directionalFromIso8_, directionalFromIso16f_, directional8_, directional16f_;
 };
 
 // Times the compute chain against glGenerateTextureMipmap (a plain average: a different, cheaper

@@ -10,16 +10,11 @@
 namespace lit {
 
 namespace {
+constexpr const char* kAxisNames[LIT_VOXEL_AXIS_COUNT] = {"±X", "±Y", "±Z"};
 constexpr int kMinResolution = 64;
 constexpr int kMaxResolution = 512;
 
-std::size_t bytesFor(int n, bool rgba8) {
-    const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
-    const std::size_t material = voxels * 4 * 3;
-    // A full 3D mip chain adds 1/8 + 1/64 + ... ≈ 1/7 of the base level.
-    const std::size_t radiance = voxels * (rgba8 ? 4 : 8) * 8 / 7;
-    return material + radiance;
-}
+std::size_t bytesFor(int n, bool rgba8) { return voxelVolumeBytes(n, rgba8, true); }
 
 std::string mib(std::size_t bytes) {
     char text[32];
@@ -27,6 +22,17 @@ std::string mib(std::size_t bytes) {
     return text;
 }
 }  // namespace
+
+std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
+    const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
+    const std::size_t texel = rgba8 ? 4 : 8;
+    const std::size_t material = voxels * 4 * 3;
+    // A full 3D mip chain adds 1/8 + 1/64 + ... ≈ 1/7 of the base level; each directional volume
+    // (one per axis, its two faces and a gap between them side by side) starts at 3·(N/2)³, 3/8 of
+    // the base, so the three add 9/7 of it.
+    const std::size_t radiance = voxels * texel * 8 / 7 + 9 * (voxels / 8) * texel * 8 / 7;
+    return material + radiance + (bounces ? 2 * voxels * texel : 0);
+}
 
 std::size_t queryFreeGpuMemory() {
     GLint kb[4] = {0, 0, 0, 0};
@@ -93,6 +99,20 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     glTextureParameterfv(radiance_.id(), GL_TEXTURE_BORDER_COLOR, transparent);
     for (int level = 0; level < mipCount_; ++level)
         glClearTexImage(radiance_.id(), level, GL_RGBA, GL_FLOAT, transparent);
+    for (int axis = 0; axis < LIT_VOXEL_AXIS_COUNT; ++axis) {
+        const int half = std::max(n / 2, 1);
+        gl::Texture& t = directional_[static_cast<std::size_t>(axis)];
+        // +axis face at x ∈ [0, m), an empty gap [m, 2m), −axis face at [2m, 3m) (m = the level's edge).
+        t = gl::Texture("voxel radiance " + std::string(kAxisNames[axis]),
+                        {GL_TEXTURE_3D, radianceFormat(), 3 * half, half, half, std::max(mipCount_ - 1, 1)});
+        t.setFilter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+        t.setWrap(GL_CLAMP_TO_BORDER);
+        glTextureParameterfv(t.id(), GL_TEXTURE_BORDER_COLOR, transparent);
+        for (int level = 0; level < t.desc().levels; ++level)
+            glClearTexImage(t.id(), level, GL_RGBA, GL_FLOAT, transparent);
+    }
+    direct_ = {};
+    bounce_ = {};
     clearMaterials();
     // A surface crosses about N² voxels per N² of area; 16·N² holds the Cornell box (≈ 6·N²) and
     // Sponza at 256³ with room. An overflow is detected (readOccupiedCount) and grows the list.
@@ -125,6 +145,8 @@ void VoxelVolume::updateUniforms(const RenderSettings& settings, int frameIndex)
                               std::max(settings.coneStepScale, 0.05f), settings.diffuseConeAperture);
     u.traceOptions = glm::ivec4(std::clamp(settings.specularSamples, 1, 8), frameIndex,
                                 rgba8_ ? LIT_RADIANCE_RGBA8 : LIT_RADIANCE_FLOAT16, 0);
+    u.giParams = glm::vec4(std::max(settings.coneFootprintPerHeight, 0.0f), settings.anisotropicVoxels ? 1.0f : 0.0f,
+                           0.0f, 0.0f);
     const float range = rgba8_ ? std::max(settings.voxelRadianceRange, 1e-3f) : 1.0f;
     u.radianceScale = glm::vec4(1.0f / range, range, 0.0f, 0.0f);
     uniforms_.update(u);
@@ -185,14 +207,31 @@ std::size_t VoxelVolume::materialBytes() const {
 std::size_t VoxelVolume::radianceBytes() const {
     std::size_t bytes = 0;
     for (int level = 0, n = resolution_; level < mipCount_; ++level, n = std::max(n / 2, 1))
-        bytes += static_cast<std::size_t>(n) * n * n * (rgba8_ ? 4 : 8);
+        bytes += static_cast<std::size_t>(n) * n * n * (rgba8_ ? 4 : 8) * (level == 0 ? 1 : 1 + 3 * LIT_VOXEL_AXIS_COUNT);
     return bytes;
+}
+
+std::size_t VoxelVolume::bounceBytes() const {
+    return direct_ ? 2 * static_cast<std::size_t>(resolution_) * resolution_ * resolution_ * (rgba8_ ? 4 : 8) : 0;
+}
+
+void VoxelVolume::bindDirectional() const {
+    for (int axis = 0; axis < LIT_VOXEL_AXIS_COUNT; ++axis)
+        directional_[static_cast<std::size_t>(axis)].bind(LIT_TEX_VOXEL_DIRECTIONAL_FIRST + axis);
+}
+
+void VoxelVolume::ensureBounceVolumes() {
+    if (direct_ || resolution_ <= 0) return;
+    const int n = resolution_;
+    direct_ = gl::Texture("voxel direct radiance", {GL_TEXTURE_3D, radianceFormat(), n, n, n, 1});
+    bounce_ = gl::Texture("voxel bounce radiance", {GL_TEXTURE_3D, radianceFormat(), n, n, n, 1});
 }
 
 std::string VoxelVolume::memoryReport() const {
     const std::size_t each = materialBytes() / 3;
     return "albedo " + mib(each) + ", normal " + mib(each) + ", emission " + mib(each) + ", radiance " +
-           mib(radianceBytes()) + " (with mips), total " + mib(totalBytes());
+           mib(radianceBytes()) + " (with mips and 6 directional chains)" +
+           (direct_ ? ", bounce " + mib(bounceBytes()) : std::string()) + ", total " + mib(totalBytes());
 }
 
 }  // namespace lit

@@ -5,6 +5,14 @@
 //   normal    r32ui  N³, 1 level   packed RGBA8: xyz normal·0.5+0.5, a = sample count
 //   emission  r32ui  N³, 1 level   packed RGBA8: rgb emitted radiance / emission range, a = sample count
 //   radiance  RGBA16F (or RGBA8) N³, full mip chain: rgb outgoing radiance, a opacity (0..1)
+//   directional[3]  same format, 3(N/2) × (N/2) × (N/2) with its own mip chain: levels 1.. of the
+//             radiance volume as a cone travelling along +axis (x ∈ [0, m)) and −axis
+//             (x ∈ [2m, 3m)) sees them, m the level's edge, an empty gap between them so that
+//             filtering never mixes the two (anisotropic voxels, docs/GI.md; one volume per axis
+//             lets a cone pick its face by a coordinate offset instead of a branch, which llvmpipe
+//             would run both sides of); level 0 stays the isotropic radiance volume
+//   direct, bounce  same format, N³, 1 level, allocated when more than one bounce is asked for:
+//             the direct radiance and the next bounce's radiance (InjectPass::executeBounce)
 //
 // The material volumes use r32ui because GLSL has atomics only on 32-bit integers: fragments that
 // land in the same voxel average with a compare-and-swap loop (voxel.glsl) instead of flickering.
@@ -16,6 +24,7 @@
 
 #include <shared.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -72,12 +81,22 @@ public:
     const gl::Texture& normal() const { return normal_; }
     const gl::Texture& emission() const { return emission_; }
     const gl::Texture& radiance() const { return radiance_; }
+    // The directional volume of axis 0 X, 1 Y, 2 Z: both faces of the axis side by side along x
+    // (see the layout at the top).
+    const gl::Texture& directional(int axis) const { return directional_[static_cast<std::size_t>(axis)]; }
+    // Binds the three directional volumes to LIT_TEX_VOXEL_DIRECTIONAL_FIRST + axis.
+    void bindDirectional() const;
+    // Allocates the direct and bounce volumes if they are missing (multiple bounces).
+    void ensureBounceVolumes();
+    const gl::Texture& direct() const { return direct_; }
+    const gl::Texture& bounce() const { return bounce_; }
     const gl::Buffer& uniforms() const { return uniforms_; }
 
     // Bytes of GPU memory per volume and in total (radiance counted with its mip chain).
     std::size_t materialBytes() const;   // albedo + normal + emission
-    std::size_t radianceBytes() const;
-    std::size_t totalBytes() const { return materialBytes() + radianceBytes(); }
+    std::size_t radianceBytes() const;     // isotropic chain + the six directional chains
+    std::size_t bounceBytes() const;       // direct + bounce volumes (0 until allocated)
+    std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes(); }
     std::string memoryReport() const;  // "albedo 8.0 MiB, normal 8.0 MiB, ... total 54.9 MiB"
 
     // Radiance that maps to 1.0 in the packed emission volume (W/(sr·m²)).
@@ -90,11 +109,16 @@ private:
     glm::vec3 min_{0.0f};
     float side_ = 1.0f;
     gl::Texture albedo_, normal_, emission_, radiance_;
+    std::array<gl::Texture, LIT_VOXEL_AXIS_COUNT> directional_;
+    gl::Texture direct_, bounce_;
     gl::Buffer uniforms_;
     gl::Buffer occupied_;
     std::uint32_t occupiedCapacity_ = 0;
 };
 
+// Bytes the volumes of an N³ volume take: materials, radiance with mips, the six directional
+// chains and (with `bounces` > 1) the direct and bounce volumes.
+std::size_t voxelVolumeBytes(int n, bool radianceRgba8, bool bounces);
 // Largest N the volumes may use given `availableBytes` of GPU memory (0 = unknown → 512).
 int largestVoxelResolutionFor(std::size_t availableBytes, bool radianceRgba8);
 // GPU memory still free in bytes if the driver says (NVX_gpu_memory_info, ATI_meminfo), else 0.

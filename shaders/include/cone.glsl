@@ -5,16 +5,44 @@
 //
 // The radiance volume (VoxelVolume.h) holds, per voxel and mip level, opacity a (0..1) and
 // opacity-PREMULTIPLIED outgoing radiance rgb = a·L. Level 0 voxels are either opaque (a = 1,
-// rgb = L) or empty (0), so premultiplied and straight colour agree there; a mip level is the
-// plain average of its eight children, and trilinear filtering is a plain weighted average too,
-// so every filtered sample stays premultiplied and rgb / a is its straight colour. (A straight-
+// rgb = L) or empty (0), so premultiplied and straight colour agree there; every mip level (the
+// isotropic stacked chain and the six directional chains, mipmap*.comp.glsl) is a weighted mean of
+// premultiplied children, and trilinear filtering is a plain weighted average too, so every
+// filtered sample stays premultiplied and rgb / a is its straight colour. (A straight-
 // colour mip chain cannot be filtered correctly: trilinear mixing with empty texels would darken
 // it, and dividing it by a filtered opacity below 1 would brighten it by 1/a.)
 #include "voxel.glsl"
 #include "brdf.glsl"
 #include "sky.glsl"
 
+// Compile-time cone features (renderer/passes/ConeProgram.h builds one program per combination):
+// llvmpipe executes both sides of a branch, even a uniform one, so a runtime switch would make
+// every cone pay for the directional lookups and the footprint bound whether they are on or not.
+//   LIT_CONE_ANISOTROPIC 1: levels ≥ 1 read the six directional volumes (RenderSettings::anisotropicVoxels)
+//   LIT_CONE_FOOTPRINT   1: diffuse cones are footprint-bounded (RenderSettings::coneFootprintPerHeight > 0)
+#ifndef LIT_CONE_ANISOTROPIC
+#define LIT_CONE_ANISOTROPIC 0
+#endif
+#ifndef LIT_CONE_FOOTPRINT
+#define LIT_CONE_FOOTPRINT 0
+#endif
+
 layout(binding = LIT_TEX_VOXEL_RADIANCE) uniform sampler3D voxelRadianceTexture;
+#if LIT_CONE_ANISOTROPIC
+// Anisotropic levels ≥ 1, one volume per axis (VoxelVolume::directional): the +axis face at
+// x ∈ [0, ⅓), an empty gap, the −axis face at x ∈ [⅔, 1).
+layout(binding = LIT_TEX_VOXEL_DIRECTIONAL_FIRST + 0) uniform sampler3D voxelDirectionalX;
+layout(binding = LIT_TEX_VOXEL_DIRECTIONAL_FIRST + 1) uniform sampler3D voxelDirectionalY;
+layout(binding = LIT_TEX_VOXEL_DIRECTIONAL_FIRST + 2) uniform sampler3D voxelDirectionalZ;
+
+// Texture coordinate x of volume coordinate x in the region of the face at `faceOffset` (0 for
+// +axis, 2 for −axis). Clamped to [−½, 3/2]: beyond the volume a sample reads the gap or the
+// border (both empty, as outside the volume), never the other face (the march goes one sampled
+// voxel past the volume's face, and the gap is only one texel wide at the coarsest level).
+float faceX(float x, float faceOffset) {
+    return (clamp(x, -0.5, 1.5) + faceOffset) * (1.0 / 3.0);
+}
+#endif
 
 // A cone stops once it is this opaque: the rest (≤ 5 % of its transmittance) would change the
 // result by less than the filtering error and costs as many steps again.
@@ -75,12 +103,79 @@ vec2 volumeSpan(vec3 uvwOrigin, vec3 uvwPerMetre) {
 // testing each sample's coordinates, sample coordinates step linearly in volume space, and the
 // sampled level's voxel size is the cone diameter itself (clamped to the coarsest level) rather
 // than exp2 of the log2 that chose the level.
-vec4 traceCone(vec3 origin, vec3 direction, float aperture, float maxDistance) {
+// Transmittance below which a face counts as opaque when faces are combined (log2 of 0 is −∞).
+const float kFaceMinTransmittance = 1.0 / 4096.0;
+// Opacity correction exponent per sampled voxel width. Trilinear filtering spreads an opaque
+// voxel's opacity over a tent two voxels wide (a(x) = 1 − |x|), and the optical depth of that tent,
+// ∫ −ln(1 − a(x)) dx = 2 voxel widths, lets e^−2 = 13.5 % of a cone through a wall one voxel thick
+// (more when the steps miss the peak): light leaked out of closed rooms and a hollow emissive box
+// gave 0.87 of its furnace value (iso). Counting each voxel width 3×: e^−6 = 0.25 % (≤ 0.7 % at
+// any step phase with steps of half a voxel); the hollow box gives 0.98-1.0, the Cornell ceiling
+// rose from 0.72 to 0.83 of the reference at 128³ (k = 1, 2, 3, 4 measured: docs/GI.md).
+// Partially covered voxels (a surface seen edge-on) block more than their coverage; uniform
+// opaque fields are unchanged (the furnace stays exact).
+// The default mode (no cone feature on) keeps the tracer of before issue #11 (k = 1, the march
+// ends at the volume's face): with isotropic coarse voxels, k = 3 made the side cones' self-
+// occlusion by their own surface's voxels worse (Cornell ceiling at 64³ 0.044 → 0.014 W/(sr·m²)).
+#if LIT_CONE_ANISOTROPIC || LIT_CONE_FOOTPRINT
+const float kOpacityPerVoxel = 3.0;
+const float kPastFaceVoxels = 1.0;  // sampled voxels marched past the volume's face (below)
+#else
+const float kOpacityPerVoxel = 1.0;
+const float kPastFaceVoxels = 0.0;
+#endif
+
+// One sample of the radiance volume at texture coordinate uvw and (fractional) mip level `level`
+// for a cone travelling along `direction`. Isotropic volume (LIT_CONE_ANISOTROPIC 0): one
+// trilinear lookup. Anisotropic (Crassin et al. 2011, section 5.1): levels ≥ 1 come from the three
+// directional volumes whose faces the cone looks through, blended with weights direction²
+// (they sum to 1); below level 1 that blend is mixed with the isotropic level 0.
+// `faceWeights` = direction², `faceOffsets` = 2 where direction < 0, else 0 (per cone, hoisted out
+// of the loop): each axis's face is picked by a coordinate offset in its volume, not by a branch
+// (llvmpipe runs both sides of a branch: two texture reads per axis; measured 1.5× the trace).
+vec4 sampleRadiance(vec3 uvw, float level, vec3 faceWeights, vec3 faceOffsets) {
+#if !LIT_CONE_ANISOTROPIC
+    return textureLod(voxelRadianceTexture, uvw, level);
+#else
+    float faceLevel = max(level - 1.0, 0.0);
+    vec4 x = textureLod(voxelDirectionalX, vec3(faceX(uvw.x, faceOffsets.x), uvw.yz), faceLevel);
+    vec4 y = textureLod(voxelDirectionalY, vec3(faceX(uvw.x, faceOffsets.y), uvw.yz), faceLevel);
+    vec4 z = textureLod(voxelDirectionalZ, vec3(faceX(uvw.x, faceOffsets.z), uvw.yz), faceLevel);
+    // Opacity: the three faces' transmittances combined as a weighted geometric mean (their optical
+    // depths averaged), not their opacities averaged: a wall met at 45° is opaque face-on and
+    // nearly transparent edge-on, and the plain average (½) let half of every oblique cone through
+    // it (a closed box's cones lost 30 % of their light; leaks). Colour: the faces' straight colours
+    // averaged by weight × opacity, premultiplied by the combined opacity. Both reduce to the face
+    // value when the faces agree (the furnace stays exact).
+    vec3 opacities = vec3(x.a, y.a, z.a);
+    float weightedOpacity = dot(faceWeights, opacities);
+    float opacity = 1.0 - exp2(dot(faceWeights, log2(max(vec3(1.0) - opacities, vec3(kFaceMinTransmittance)))));
+    vec3 rgb = faceWeights.x * x.rgb + faceWeights.y * y.rgb + faceWeights.z * z.rgb;
+    vec4 s = weightedOpacity > 0.0 ? vec4(rgb * (opacity / weightedOpacity), opacity) : vec4(0.0);
+    if (level < 1.0) s = mix(textureLod(voxelRadianceTexture, uvw, 0.0), s, level);
+    return s;
+#endif
+}
+
+// traceCone for a cone that leaves a surface: `startHeight` (m) is the apex's height above the
+// surface and `heightPerDistance` = n·direction how fast the axis rises above it. The voxels a
+// sample reads are at most giParams.x × (its height above the surface) wide (0 = no bound):
+// a wide cone near its surface would otherwise read coarse voxels that hold the surface itself,
+// and a lit surface would light itself, an unlit one hide its surroundings behind its own dark
+// voxels (self-illumination; docs/GI.md). Steps shrink with the sampled width, so a bounded cone
+// takes more, narrower samples near the surface.
+vec4 traceConeFromSurface(vec3 origin, vec3 direction, float aperture, float maxDistance, float startHeight,
+                          float heightPerDistance) {
     float voxelSize = voxel.voxelInfo.z;
     float maxLevel = voxel.voxelInfo.w - 1.0;
     float maxLevelVoxelSize = voxelSize * exp2(maxLevel);
     float stepScale = voxel.traceParams.z;
     float widthPerDistance = 2.0 * tan(0.5 * clamp(aperture, 0.0, LIT_CONE_APERTURE_MAX));
+#if LIT_CONE_FOOTPRINT
+    float footprintPerHeight = voxel.giParams.x > 0.0 ? voxel.giParams.x : 1e30;
+#endif
+    vec3 faceWeights = direction * direction;
+    vec3 faceOffsets = 2.0 * vec3(lessThan(direction, vec3(0.0)));
     // Samples at tMid in [span.x, span.y] lie inside the volume; the first one outside ends the
     // march (space outside the volume is empty and black).
     vec3 uvwOrigin = worldToVolume(origin);
@@ -93,15 +188,27 @@ vec4 traceCone(vec3 origin, vec3 direction, float aperture, float maxDistance) {
         // The step [t, t + Δ] is sampled at its middle (midpoint rule): the cone widens along the
         // step, and sampling its start would use a footprint too fine for the rest of it and
         // overestimate the opacity of thin layers by up to 2× at step scale 1.
+#if LIT_CONE_FOOTPRINT
+        float bound = footprintPerHeight * (startHeight + heightPerDistance * t);
+        float stepLength = max(stepScale * max(voxelSize, min(widthPerDistance * t, bound)), 0.5 * voxelSize);
+        float tMid = t + 0.5 * stepLength;
+        // Level log2(d / voxelSize) has voxels d wide (clamped to the coarsest level).
+        float diameter = max(voxelSize, min(widthPerDistance * tMid, footprintPerHeight * (startHeight + heightPerDistance * tMid)));
+#else
         float stepLength = max(stepScale * max(voxelSize, widthPerDistance * t), 0.5 * voxelSize);
         float tMid = t + 0.5 * stepLength;
-        if (tMid < span.x || tMid > span.y) break;
         // Level log2(d / voxelSize) has voxels d wide (clamped to the coarsest level).
         float diameter = max(voxelSize, widthPerDistance * tMid);
+#endif
         float levelVoxelSize = min(diameter, maxLevelVoxelSize);
-        vec4 s = textureLod(voxelRadianceTexture, uvwOrigin + tMid * uvwPerMetre, log2(levelVoxelSize / voxelSize));
+        // The march goes on one sampled voxel past the volume's face (accurate mode): trilinear
+        // filtering spreads a surface on the face over a voxel on either side, and a cone stopped
+        // at the face would see only half of its opacity (a closed room whose walls are the
+        // volume's faces lost 45 % of its bounce light).
+        if (tMid < span.x || tMid > span.y + kPastFaceVoxels * levelVoxelSize) break;
+        vec4 s = sampleRadiance(uvwOrigin + tMid * uvwPerMetre, log2(levelVoxelSize / voxelSize), faceWeights, faceOffsets);
         if (s.a > kConeMinOpacity) {
-            float a = 1.0 - pow(max(1.0 - s.a, 0.0), stepLength / levelVoxelSize);
+            float a = 1.0 - pow(max(1.0 - s.a, 0.0), kOpacityPerVoxel * stepLength / levelVoxelSize);
             // Straight colour = rgb / a of the premultiplied sample, weighted by the corrected opacity.
             radiance += (1.0 - opacity) * (a / s.a) * decodeRadiance(s.rgb);
             opacity += (1.0 - opacity) * a;
@@ -116,6 +223,10 @@ vec4 traceCone(vec3 origin, vec3 direction, float aperture, float maxDistance) {
     }
     // Left the volume or reached maxDistance: the unblocked rest of the cone sees the sky (sky.glsl).
     return vec4(radiance + (1.0 - opacity) * skyConeRadiance(direction, aperture), opacity);
+}
+
+vec4 traceCone(vec3 origin, vec3 direction, float aperture, float maxDistance) {
+    return traceConeFromSurface(origin, direction, aperture, maxDistance, 1e30, 1.0);
 }
 
 // An orthonormal basis (t, b, n) around a unit normal, continuous except at n.z = −1
@@ -155,12 +266,18 @@ const float kDiffuseConeWeights[kDiffuseConeCount] = float[](LIT_DIFFUSE_CONE_WE
 // Irradiance / π at a surface point: Σ W_i/π · C_i, so that L_ID = albedo_d · traceDiffuse(...).
 // `origin` from coneOrigin(), `n` the unit surface normal.
 // `cones` receives each cone's C_i, for rough specular to reuse (radianceFromDiffuseCones).
+// Diffuse cone i of the set in the tangent frame `basis` (its z = the normal), from an apex
+// coneOrigin() puts kConeNormalOffsetVoxels voxels above the surface: footprint-bounded.
+vec3 traceDiffuseCone(vec3 origin, mat3 basis, int i, float aperture, float maxDistance) {
+    return traceConeFromSurface(origin, basis * kDiffuseConeDirections[i], aperture, maxDistance,
+                                kConeNormalOffsetVoxels * voxel.voxelInfo.z, kDiffuseConeDirections[i].z).rgb;
+}
+
 vec3 traceDiffuse(vec3 origin, vec3 n, float aperture, float maxDistance, out vec3 cones[kDiffuseConeCount]) {
     mat3 basis = tangentFrame(n);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < kDiffuseConeCount; ++i) {
-        vec3 direction = basis * kDiffuseConeDirections[i];
-        cones[i] = traceCone(origin, direction, aperture, maxDistance).rgb;
+        cones[i] = traceDiffuseCone(origin, basis, i, aperture, maxDistance);
         sum += kDiffuseConeWeights[i] * cones[i];
     }
     return sum;
@@ -322,6 +439,9 @@ vec3 traceSpecularLobe(vec3 origin, vec3 n, mat3 basis, vec3 v, float roughness,
         if (w <= 0.0) continue;
         vec3 radiance = reuseDiffuse ? radianceFromDiffuseCones(normalize(l * basis), cones)
                                      : traceCone(origin, l, aperture, maxDistance).rgb;
+        // Specular cones are not footprint-bounded: one near the horizon stays close to its surface
+        // and would march half a voxel at a time across the whole volume; narrow cones rarely
+        // reach their surface's voxels anyway.
         weightedRadiance += w * radiance;
         weightSum += w;
     }

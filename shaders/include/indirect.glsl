@@ -16,6 +16,19 @@ uniform int uScale;       // indirect scale s: one traced pixel per s × s block
 uniform ivec2 uJitter;    // which pixel of its block (0..s−1 each) a low-resolution texel traces
 uniform float uRotation;  // rad: this frame's turn of the cone sets about the normal
 
+// The turn the cone sets take this frame. Footprint-bounded cones (LIT_CONE_FOOTPRINT, the
+// accurate mode) see along their axes only, so their result depends on the set's rotation:
+// turning it every frame made a still camera's L_ID change 9.6 % from frame to frame and the
+// cornell_inside path flicker 5.4 % (320×180, 128³); with the set fixed, 0.4 % (docs/GI.md).
+// They keep rotation 0, the set a still without temporal accumulation traces.
+float coneSetRotation() {
+#if LIT_CONE_FOOTPRINT
+    return 0.0;
+#else
+    return uRotation;
+#endif
+}
+
 // The full-resolution pixel that low-resolution texel `low` traces.
 ivec2 tracedPixel(ivec2 low) {
     return min(low * uScale + uJitter, ivec2(frame.viewport.xy) - 1);
@@ -61,7 +74,7 @@ vec3 traceDiffuseInFrame(vec3 origin, mat3 basis, float aperture, float maxDista
                          out vec3 cones[kDiffuseConeCount]) {
     vec3 sum = vec3(0.0);
     for (int i = 0; i < kDiffuseConeCount; ++i) {
-        cones[i] = traceCone(origin, basis * kDiffuseConeDirections[i], aperture, maxDistance).rgb;
+        cones[i] = traceDiffuseCone(origin, basis, i, aperture, maxDistance);
         sum += kDiffuseConeWeights[i] * cones[i];
     }
     return sum;

@@ -158,7 +158,7 @@ void main() {
         // Nothing nearby stands for this pixel: trace its own cones (as indirect_trace does).
         vec3 origin = coneOrigin(s.position, n);
         float maxDistance = voxel.traceParams.y;
-        mat3 basis = rotatedTangentFrame(n, uRotation);
+        mat3 basis = rotatedTangentFrame(n, coneSetRotation());
         int count = clamp(voxel.traceOptions.x, 1, 8);
         bool reuse = traceSpecularHere && diffuseSurface &&
                      specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);

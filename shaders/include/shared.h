@@ -81,6 +81,14 @@ using mat4 = glm::mat4;
 // Sky (sky.glsl, scene/Sky.h): an equirectangular radiance image, RGB32F, row 0 = straight up.
 #define LIT_TEX_SKY 24
 
+// Anisotropic radiance volumes (VoxelVolume::directional, levels 1.. of the radiance volume as
+// seen by a cone travelling along +X, −X, +Y, −Y, +Z, −Z; one volume per axis holds both of its
+// faces): units FIRST .. FIRST + 2 = 29..31, past the history units so no pass has to rebind what another left bound. Unit numbers only
+// have to stay below GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (Capabilities.cpp asks for 35).
+#define LIT_TEX_VOXEL_DIRECTIONAL_FIRST 29
+#define LIT_VOXEL_FACE_COUNT 6
+#define LIT_VOXEL_AXIS_COUNT 3  // directional volumes: one per axis, holding its two faces
+
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
 #define LIT_IMG_VOXEL_NORMAL 1
@@ -92,6 +100,9 @@ using mat4 = glm::mat4;
 // k+2 and k+3 at these. Units 4..7 stay below GL 4.5's guaranteed minimum of 8 image units.
 #define LIT_IMG_MIP_DEST2 6
 #define LIT_IMG_MIP_DEST3 7
+// Multiple bounces (InjectPass::executeBounce): the direct radiance read, the next bounce written.
+#define LIT_IMG_VOXEL_DIRECT 4
+#define LIT_IMG_VOXEL_BOUNCE 5
 
 // ---- Voxelization and radiance injection (VoxelizePass, InjectPass) ------------------------
 #define LIT_VOXEL_EMISSION_RANGE 16.0  // radiance (W/(sr·m²)) stored as 1.0 in the emission volume; = VoxelVolume::kEmissionRange
@@ -217,10 +228,12 @@ struct VoxelUniforms {
     vec4 traceParams;    // x indirect intensity, y max trace distance (m), z step (× cone diameter), w diffuse cone aperture (rad)
     ivec4 traceOptions;  // x specular samples per pixel, y frame index (sample rotation), z radiance encoding (LIT_RADIANCE_*), w unused
     vec4 radianceScale;  // x multiplier applied when storing radiance, y multiplier when reading it back (= 1/x)
+    vec4 giParams;       // x footprint bound (largest sampled voxel ÷ height above the surface; 0 = none),
+                         // y anisotropic (1: directional volumes for levels ≥ 1, 0: isotropic mips), zw unused
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(VoxelUniforms) == 5 * 16);
+static_assert(sizeof(VoxelUniforms) == 6 * 16);
 static_assert(sizeof(FrameUniforms) == 4 * 64 + 7 * 16);
 static_assert(sizeof(GpuLight) == 5 * 16 + 64);
 static_assert(sizeof(GpuMaterial) == 6 * 16);

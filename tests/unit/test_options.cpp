@@ -197,7 +197,10 @@ TEST(Options, ReferenceFlags) {
     EXPECT_EQ(parseOptions({"x.gltf", "--reference", "--out", "r.png"}).referenceSpp(), lit::cli::kDefaultReferenceSpp);
     EXPECT_EQ(parseOptions({"x.gltf", "--reference", "--bounces=2", "--out", "r.png"}).bounces, 2);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--spp", "8"}), "--spp needs --reference");
-    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--bounces", "1"}), "--bounces needs --reference");
+    // Without --reference, --bounces sets the voxel GI's bounces (issue #11): at least 1, all = the most.
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "3"}), {}).bounces, 3);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "0"}), {}).bounces, 1);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "all"}), {}).bounces, lit::kMaxBounces);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--seed", "1"}), "--seed needs --reference");
     EXPECT_EQ(usageError({"x.gltf", "--reference", "--out", "x.png", "--spp", "0"}),
               "--spp expects samples per pixel from 1 to 1048576, got '0'");

@@ -4,7 +4,10 @@
 // truth (docs/GI.md, "Accuracy against the reference"; tools/gi-accuracy.sh runs it).
 //
 //   lit-gi-accuracy [--voxels 64,128,256] [--spp 256] [--size 128] [--scenes a,b,...]
-//                   [--shared DIR] [--out FILE.md]
+//                   [--shared DIR] [--out FILE.md] [--bounces N] [--settings FILE.json]
+// --bounces N: light bounces of both the VCT (RenderSettings::bounces) and the reference (default 1);
+// --settings: RenderSettings JSON the VCT starts from (size, view, GI switch, resolution and
+// bounces are set by the tool), to compare GI variants (e.g. anisotropicVoxels off).
 //
 // Metrics (luminance, per scene and resolution; regions from reference/AccuracyRegions.h):
 //   indirect-only VCT/ref   mean indirect radiance (L_ID + L_IS) of the VCT over the pixels lit only
@@ -40,6 +43,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -71,7 +75,17 @@ struct Args {
     std::vector<std::string> only;
     fs::path shared;
     fs::path out;
+    int bounces = 1;
+    RenderSettings vct;  // what the VCT runs start from (--settings)
 };
+
+std::string readTextFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::invalid_argument("cannot read " + path.string());
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
 
 std::vector<std::string> split(const std::string& text) {
     std::vector<std::string> parts;
@@ -105,6 +119,11 @@ Args parseArgs(int argc, char** argv) {
             args.shared = value;
         } else if (flag == "--out") {
             args.out = value;
+        } else if (flag == "--bounces") {
+            args.bounces = std::stoi(value);
+            if (args.bounces < 1 || args.bounces > kMaxBounces) throw std::invalid_argument("--bounces: 1.." + std::to_string(kMaxBounces));
+        } else if (flag == "--settings") {
+            args.vct = renderSettingsFromJson(readTextFile(value));
         } else {
             throw std::invalid_argument("unknown option " + flag);
         }
@@ -218,11 +237,11 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
         camera = sceneCameraView(scene, static_cast<int>(scene.cameras.size()) - 1, 1.0f);
     }
 
-    // The reference: one bounce, the VCT's light paths.
+    // The reference: the VCT's light paths (--bounces, default one bounce).
     const Clock::time_point referenceStart = Clock::now();
     const ReferenceScene referenceScene(scene, log);
     ReferenceSettings referenceSettings;
-    referenceSettings.bounces = 1;
+    referenceSettings.bounces = args.bounces;
     PathTracer tracer(referenceScene, camera, size, size, referenceSettings);
     tracer.addSamples(args.spp);
     const double referenceSeconds = secondsSince(referenceStart);
@@ -251,7 +270,8 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     renderer.setScene(scene);
     std::vector<VctRun> runs;
     for (const int voxels : args.voxels) {
-        RenderSettings settings;
+        RenderSettings settings = args.vct;
+        settings.bounces = args.bounces;
         settings.width = size;
         settings.height = size;
         settings.gi = true;

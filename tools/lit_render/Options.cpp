@@ -8,6 +8,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <string_view>
 
 namespace lit::cli {
@@ -23,6 +24,13 @@ std::optional<int> parseInt(std::string_view text, int lo, int hi) {
 }
 
 // A finite number spelled exactly, else nullopt.
+// A float as the help text shows it: "0.5", not "0.500000".
+std::string formatNumber(float x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", static_cast<double>(x));
+    return text;
+}
+
 std::optional<float> parseFloat(std::string_view text) {
     float value = 0.0f;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -179,6 +187,19 @@ Options parseOptions(const std::vector<std::string>& args) {
             if (!n || (*n & (*n - 1)) != 0)
                 throw UsageError("--voxels expects a power of two from 64 to 512, got '" + text + "'");
             options.voxels = *n;
+        } else if (flag == "--anisotropic") {
+            const std::string text = value("on or off");
+            if (text == "on")
+                options.anisotropic = true;
+            else if (text == "off")
+                options.anisotropic = false;
+            else
+                throw UsageError("--anisotropic expects on or off, got '" + text + "'");
+        } else if (flag == "--footprint") {
+            const std::string text = value("a number");
+            const auto x = parseFloat(text);
+            if (!x || *x < 0.0f || *x > 100.0f) throw UsageError("--footprint expects a number from 0 to 100, got '" + text + "'");
+            options.footprint = *x;
         } else if (flag == "--frames") {
             const std::string text = value("a frame count");
             const auto n = parseInt(text, 1, kMaxFrames);
@@ -268,7 +289,6 @@ Options parseOptions(const std::vector<std::string>& args) {
                              "indirect-specular, not '" + std::string(toString(*options.view)) + "'");
     } else {
         if (options.spp) throw UsageError("--spp needs --reference");
-        if (options.bounces) throw UsageError("--bounces needs --reference");
         if (options.seed) throw UsageError("--seed needs --reference");
     }
     if (options.benchFrames == 0 && !options.path && options.out.empty())
@@ -301,6 +321,11 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.view) base.view = *options.view;
     if (options.gi) base.gi = *options.gi;
     if (options.voxels) base.voxelResolution = *options.voxels;
+    // --bounces also sets the voxel GI's bounces (at least 1, "all" = the most it does).
+    if (options.bounces)
+        base.bounces = *options.bounces == kAllReferenceBounces ? kMaxBounces : std::clamp(*options.bounces, 1, kMaxBounces);
+    if (options.anisotropic) base.anisotropicVoxels = *options.anisotropic;
+    if (options.footprint) base.coneFootprintPerHeight = *options.footprint;
     if (options.culling) base.frustumCulling = *options.culling;
     if (options.indirectScale) base.indirectScale = *options.indirectScale;
     if (options.temporal) base.temporalAccumulation = *options.temporal;
@@ -331,6 +356,7 @@ std::string shortUsage() {
     return "usage: lit-render SCENE.gltf --out image.png [--hdr image.hdr] [--size WxH] [--camera NAME|INDEX]\n"
            "                  [--ev STOPS|--exposure X] [--auto-exposure on|off] [--sky MODE] [--sky-hdr FILE.hdr]\n"
            "                  [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
+           "                  [--bounces N] [--anisotropic on|off] [--footprint X]\n"
            "                  [--culling on|off] [--indirect-scale 1|2|4] [--temporal on|off]\n"
            "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
            "       lit-render SCENE.gltf --path FILE.json|ANIMATION [--fps N] [--frames-out DIR] [--bench-path]\n"
@@ -364,6 +390,13 @@ std::string usageText() {
            "  --gi on|off          voxel cone traced indirect light (default on)\n"
            "  --voxels N           voxel volume resolution per side: 64, 128, 256 or 512 (default " +
            std::to_string(defaults.voxelResolution) + ")\n"
+           "  --bounces N|all      light bounces of the voxel GI, 1.." + std::to_string(kMaxBounces) + " (default " +
+           std::to_string(defaults.bounces) + "; 1 = one bounce, only direct light is injected; all = " +
+           std::to_string(kMaxBounces) + "); with --reference see below\n"
+           "  --anisotropic on|off directional voxels for the mip levels cones read (default " +
+           std::string(defaults.anisotropicVoxels ? "on" : "off") + ")\n"
+           "  --footprint X        largest voxel a cone leaving a surface samples, × its height above the\n"
+           "                       surface (default " + formatNumber(defaults.coneFootprintPerHeight) + "; 0 = unbounded)\n"
            "  --frames N           frames rendered before the image is read (default 1)\n"
            "  --culling on|off     frustum culling of the camera and shadow views against a BVH (default " +
            std::string(defaults.frustumCulling ? "on" : "off") + ")\n"

@@ -50,6 +50,8 @@ struct Options {
     std::optional<View> view;
     std::optional<bool> gi;
     std::optional<int> voxels;         // voxels per side
+    std::optional<bool> anisotropic;   // --anisotropic on|off: directional voxels for mip levels ≥ 1
+    std::optional<float> footprint;    // --footprint X: RenderSettings::coneFootprintPerHeight (0 = off)
     std::optional<bool> culling;       // --culling on|off: frustum culling of the G-buffer and shadow views
     std::optional<int> indirectScale;  // --indirect-scale 1|2|4
     std::optional<bool> temporal;      // --temporal on|off
@@ -66,7 +68,7 @@ struct Options {
     // --reference: path-trace the scene on the CPU (renderer/reference/) instead of rasterizing.
     bool reference = false;
     std::optional<int> spp;            // --spp: samples per pixel (reference only)
-    std::optional<int> bounces;        // --bounces N|all: indirect bounces (reference only; all = -1)
+    std::optional<int> bounces;        // --bounces N|all: indirect bounces of the reference and the voxel GI (all = -1)
     std::optional<std::uint64_t> seed; // --seed: random seed (reference only)
 
     int referenceSpp() const { return spp.value_or(kDefaultReferenceSpp); }

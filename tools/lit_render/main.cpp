@@ -590,8 +590,9 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
     const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
 
     lit::reference::ReferenceSettings reference;
-    // Without --bounces the reference follows --gi: one bounce like the VCT, or direct light only.
-    reference.bounces = options.bounces.value_or(settings.gi ? 1 : 0);
+    // Without --bounces the reference follows --gi and the settings' bounces: the same light paths
+    // as the VCT, or direct light only.
+    reference.bounces = options.bounces.value_or(settings.gi ? settings.bounces : 0);
     reference.seed = options.seed.value_or(0);
     // Rays that leave the scene see the same sky as the rasterizer's background and cones.
     std::string skyError;

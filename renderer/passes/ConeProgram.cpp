@@ -1,0 +1,40 @@
+#include "passes/ConeProgram.h"
+
+#include "RenderSettings.h"
+
+#include <utility>
+
+namespace lit {
+
+ConeFeatures ConeFeatures::of(const RenderSettings& settings) {
+    return {settings.anisotropicVoxels, settings.coneFootprintPerHeight > 0.0f};
+}
+
+std::string ConeFeatures::defines() const {
+    return std::string("#define LIT_CONE_ANISOTROPIC ") + (anisotropic ? "1" : "0") + "\n#define LIT_CONE_FOOTPRINT " +
+           (footprint ? "1" : "0") + "\n";
+}
+
+ConeProgram::ConeProgram(std::filesystem::path root, std::string label, std::vector<gl::ShaderStageSource> stages,
+                         std::string defines, ConeFeatures initial)
+    : root_(std::move(root)), label_(std::move(label)), stages_(std::move(stages)), defines_(std::move(defines)) {
+    get(initial);
+}
+
+const gl::Program& ConeProgram::get(ConeFeatures features) {
+    gl::Program& program = variants_[static_cast<std::size_t>(features.index())];
+    if (!program) {
+        std::string label = label_;
+        if (features.anisotropic) label += " (anisotropic)";
+        if (features.footprint) label += " (footprint)";
+        program = gl::Program(root_, label, stages_, defines_ + features.defines());
+    }
+    return program;
+}
+
+void ConeProgram::appendBuilt(std::vector<gl::Program*>& out) {
+    for (gl::Program& program : variants_)
+        if (program) out.push_back(&program);
+}
+
+}  // namespace lit

@@ -1,0 +1,53 @@
+#pragma once
+// The programs that trace cones (shaders/include/cone.glsl) come in compile-time variants, one per
+// combination of the optional cone features (anisotropic voxels, footprint-bounded cones).
+// llvmpipe runs both sides of a branch, a uniform one included, so a feature behind a runtime
+// `if` costs its texture reads whether it is on or not: the anisotropic branch in sampleRadiance
+// made the cone trace 3-4× slower with every feature off (docs/GI.md, "Cost"). Each variant is
+// built on first use, so settings that stay at their defaults compile one program.
+
+#include "gl/Shader.h"
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lit {
+
+struct RenderSettings;
+
+// The cone features a program is compiled with (LIT_CONE_ANISOTROPIC, LIT_CONE_FOOTPRINT).
+struct ConeFeatures {
+    bool anisotropic = false;  // directional voxels for levels ≥ 1 (RenderSettings::anisotropicVoxels)
+    bool footprint = false;    // footprint-bounded diffuse cones (RenderSettings::coneFootprintPerHeight > 0)
+
+    static ConeFeatures of(const RenderSettings& settings);
+    std::string defines() const;
+    int index() const { return (anisotropic ? 1 : 0) + (footprint ? 2 : 0); }
+    bool operator==(const ConeFeatures&) const = default;
+};
+
+class ConeProgram {
+public:
+    ConeProgram() = default;
+    // Builds the variant `initial` now (so a broken shader fails at start-up); the others on first use.
+    ConeProgram(std::filesystem::path root, std::string label, std::vector<gl::ShaderStageSource> stages,
+                std::string defines, ConeFeatures initial);
+
+    // The variant for `features`, built now if it was not yet (throws GlError if that fails).
+    const gl::Program& get(ConeFeatures features);
+    // True for a default-constructed one (no program description).
+    bool empty() const { return stages_.empty(); }
+    // The variants built so far (for hot reload).
+    void appendBuilt(std::vector<gl::Program*>& out);
+
+private:
+    std::filesystem::path root_;
+    std::string label_;
+    std::vector<gl::ShaderStageSource> stages_;
+    std::string defines_;
+    std::array<gl::Program, 4> variants_;  // by ConeFeatures::index()
+};
+
+}  // namespace lit

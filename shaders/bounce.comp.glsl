@@ -1,0 +1,69 @@
+#version 450 core
+// One more light bounce in the voxel volume (InjectPass::executeBounce): every occupied voxel's
+// outgoing radiance becomes its direct radiance plus what it reflects of the light the volume
+// holds now,
+//   L_{k+1} = L_direct + albedo · Σ_i W_i/π · C_i(L_k)                (W/(sr·m²))
+// with the same six diffuse cones a pixel traces (cone.glsl, traceDiffuse), from the voxel centre
+// pushed out along its averaged normal. After bounce k the volume holds light that bounced up to
+// k times (k = 1 is direct light only), so a pixel that traces it sees k + 1 bounces in all.
+// Voxels whose normals disagree (both sides of a thin wall) gather over both hemispheres and
+// average them, as injection lights them from both sides. Voxels are treated as Lambertian
+// (metals too: docs/GI.md, known limitations).
+//
+// Work: as inject.comp.glsl, the occupied-voxel list (uFromList = 1; glDispatchComputeIndirect with
+// the dispatch size the voxelization wrote, LIT_INJECT_LIST_GROUP_SIZE entries per group) or,
+// when the list overflowed, the whole grid in 8³ groups. Only occupied voxels trace cones, and
+// over the grid a SIMD vector that holds one of them pays for the whole vector's cones: the
+// list packs occupied voxels densely (docs/GI.md, "Bounces", measured 128³).
+//
+// Defines set by InjectPass: LIT_BOUNCE_RGBA8 (1: rgba8 direct volume, 0: rgba16f).
+#include "cone.glsl"
+
+layout(local_size_x = LIT_INJECT_GROUP_SIZE, local_size_y = LIT_INJECT_GROUP_SIZE, local_size_z = LIT_INJECT_GROUP_SIZE) in;
+
+LIT_OCCUPIED_VOXELS_BLOCK(readonly);
+uniform int uFromList;           // 1: voxels from the list; 0: the whole grid
+uniform uint uOccupiedCapacity;  // entries the list holds at most
+
+#if LIT_BOUNCE_RGBA8
+#define BOUNCE_FORMAT rgba8
+#else
+#define BOUNCE_FORMAT rgba16f
+#endif
+
+layout(binding = LIT_IMG_VOXEL_ALBEDO, r32ui) uniform readonly uimage3D voxelAlbedo;
+layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNormal;
+layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform readonly image3D voxelDirect;
+layout(binding = LIT_IMG_VOXEL_BOUNCE) uniform writeonly image3D voxelBounce;
+
+const float kOneSidedMinLength = 0.5;    // as inject.comp.glsl
+const float kDirectionMinLength = 0.05;  // as inject.comp.glsl
+
+void main() {
+    ivec3 v;
+    if (uFromList != 0) {
+        uint index = gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex;
+        if (index >= min(occupiedCount, uOccupiedCapacity)) return;
+        v = unpackVoxelCoord(occupiedVoxels[index]);
+    } else {
+        v = ivec3(gl_GlobalInvocationID);
+    }
+    int n = int(voxel.voxelInfo.x);
+    if (any(greaterThanEqual(v, ivec3(n)))) return;
+    vec4 albedo = unpackVoxel(imageLoad(voxelAlbedo, v).r);
+    vec4 direct = imageLoad(voxelDirect, v);
+    if (albedo.a == 0.0 || direct.a == 0.0) {
+        imageStore(voxelBounce, v, direct);
+        return;
+    }
+    vec3 averaged = unpackVoxel(imageLoad(voxelNormal, v).r).xyz * 2.0 - 1.0;
+    float agreement = length(averaged);
+    vec3 normal = agreement >= kDirectionMinLength ? averaged / agreement : vec3(0.0, 1.0, 0.0);
+    vec3 centre = voxelCenter(v);
+    float aperture = voxel.traceParams.w, maxDistance = voxel.traceParams.y;
+    vec3 irradiance = traceDiffuse(coneOrigin(centre, normal), normal, aperture, maxDistance);
+    if (agreement < kOneSidedMinLength)
+        irradiance = 0.5 * (irradiance + traceDiffuse(coneOrigin(centre, -normal), -normal, aperture, maxDistance));
+    vec3 radiance = decodeRadiance(direct.rgb) + albedo.rgb * irradiance * voxel.traceParams.x;
+    imageStore(voxelBounce, v, vec4(encodeRadiance(radiance), 1.0));
+}

@@ -1,0 +1,95 @@
+#version 450 core
+// Anisotropic mip levels (Crassin et al. 2011, "Interactive Indirect Illumination Using Voxel Cone
+// Tracing", section 5.1): one volume per face a cone can look through, VoxelVolume::directional.
+// Face f = 2·axis + s holds, for a cone TRAVELLING along +axis (s = 0) or −axis (s = 1), what the
+// cone sees of each 2×2×2 block: the 4 child pairs along the axis are composited front to back
+// (front = the child the cone reaches first), premultiplied,
+//     parent_pair = front + (1 − front.a) · back        (rgb and a alike)
+// and the 4 pairs averaged (their share of the parent's cross-section). A wall one voxel thick
+// stays opaque seen face-on at every level, but covers only 2^-k of the cross-section seen
+// edge-on at level k (the isotropic stacked mips made it opaque from every side, so a surface
+// occluded and lit itself through its own coarse voxels: docs/GI.md). Seen from inside a closed
+// room, a coarse voxel that holds the wall and what lies behind it shows the wall's inner side:
+// the outside no longer bleeds in.
+//
+// Level 1 is built from the isotropic level 0 and the voxels' normals (directional emission):
+// a Lambertian surface sends its radiance only to the side it faces, so a child whose averaged
+// normal n faces away from the cone (n·(−D) < 0, D the travel direction) keeps its opacity but
+// not its light. The weight is clamp(1 + 4·n·(−D), 0, 1): 1 for a face turned towards the cone
+// or seen edge-on, 0 for one turned away by more than 15°. (Edge-on ½ instead halved the light a
+// floor sends to cones that graze it: a hollow emissive box lost 20 % of its bounce light; edge-on 1 lets a one-voxel wall lit on one side
+// glow, seen edge-on, towards its dark side: GiAccuracy.ThinWallLitOnOneSide*.) Voxels whose
+// normals disagree (both faces of a wall thinner than a voxel, averaged length < ½) or that have no
+// normal (volumes filled by tests) stay isotropic. Levels k+1 ≥ 2 come from level k of the same
+// face.
+//
+// Defines set by MipmapPass:
+//   LIT_MIP_RGBA8            1: rgba8 images, 0: rgba16f
+//   LIT_DIRECTIONAL_FROM_ISO 1: build level 1 from the isotropic level 0 (+ normals), 0: from level k
+#include "shared.h"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+#if LIT_MIP_RGBA8
+#define MIP_FORMAT rgba8
+#else
+#define MIP_FORMAT rgba16f
+#endif
+
+layout(binding = LIT_IMG_MIP_SOURCE, MIP_FORMAT) uniform readonly image3D uSource;
+layout(binding = LIT_IMG_MIP_DEST, MIP_FORMAT) uniform writeonly image3D uDest;
+#if LIT_DIRECTIONAL_FROM_ISO
+layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D uNormal;
+#endif
+
+uniform ivec3 uFace;  // x axis (0 X, 1 Y, 2 Z), y 1 if the cone travels towards −axis, z edge of the level written
+// The two faces of an axis share one volume, side by side along x (VoxelVolume.h): x offsets in
+// texels of this face's region in the source (x) and destination (y) level; 0 for the +axis face.
+uniform ivec2 uOffsets;
+
+// Share of a level-0 voxel's radiance that leaves towards a cone travelling along `travel`.
+float emissionTowards(ivec3 p, vec3 travel) {
+#if LIT_DIRECTIONAL_FROM_ISO
+    vec4 stored = unpackUnorm4x8(imageLoad(uNormal, p).r);
+    if (stored.a == 0.0) return 1.0;  // no normal recorded
+    vec3 averaged = stored.xyz * 2.0 - 1.0;
+    float agreement = length(averaged);
+    if (agreement < 0.5) return 1.0;  // both sides of a thin wall: see inject.comp.glsl
+    return clamp(1.0 + 4.0 * dot(averaged / agreement, -travel), 0.0, 1.0);
+#else
+    return 1.0;
+#endif
+}
+
+vec4 child(ivec3 p, vec3 travel) {
+    vec4 c = imageLoad(uSource, p + ivec3(uOffsets.x, 0, 0));
+#if LIT_DIRECTIONAL_FROM_ISO
+    if (c.a > 0.0) c.rgb *= emissionTowards(p, travel);
+#endif
+    return c;
+}
+
+void main() {
+    ivec3 p = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(p, ivec3(uFace.z)))) return;
+    int axis = uFace.x;
+    bool negative = uFace.y != 0;
+    vec3 travel = vec3(0.0);
+    travel[axis] = negative ? -1.0 : 1.0;
+    // The two other axes span the 4 pairs.
+    ivec3 along = ivec3(0);
+    along[axis] = 1;
+    ivec3 u = ivec3(0), v = ivec3(0);
+    u[(axis + 1) % 3] = 1;
+    v[(axis + 2) % 3] = 1;
+    ivec3 base = p * 2;
+    vec4 sum = vec4(0.0);
+    for (int j = 0; j < 4; ++j) {
+        ivec3 q = base + (j & 1) * u + (j >> 1) * v;
+        vec4 low = child(q, travel), high = child(q + along, travel);
+        vec4 front = negative ? high : low;
+        vec4 back = negative ? low : high;
+        sum += front + (1.0 - front.a) * back;
+    }
+    imageStore(uDest, p + ivec3(uOffsets.y, 0, 0), 0.25 * sum);
+}
