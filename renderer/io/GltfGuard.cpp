@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <limits>
@@ -150,6 +151,54 @@ bool hasScheme(std::string_view uri) {
     return false;
 }
 
+// The scheme of a URI that has one, in lower case (schemes are case-insensitive, RFC 3986 §3.1).
+std::string schemeOf(std::string_view uri) {
+    std::string scheme(uri.substr(0, uri.find(':')));
+    for (char& c : scheme) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return scheme;
+}
+
+// The local file a file: URI names (RFC 8089): "file:///a/b", "file://localhost/a/b" and
+// "file:/a/b" name /a/b; percent-escapes in the path are decoded. Another host, or no absolute
+// path, is an error.
+fs::path fileUriPath(const fs::path& file, const std::string& what, const std::string& uri) {
+    std::string_view rest = std::string_view(uri).substr(uri.find(':') + 1);
+    if (rest.starts_with("//")) {
+        rest.remove_prefix(2);
+        const std::size_t slash = rest.find('/');
+        std::string host(rest.substr(0, slash));
+        for (char& c : host) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (!host.empty() && host != "localhost")
+            fail(file, what + "'s uri '" + uri + "' names the host '" + host + "'; Lit reads local files only");
+        rest = slash == std::string_view::npos ? std::string_view() : rest.substr(slash);
+    }
+    if (!rest.starts_with("/")) fail(file, what + "'s uri '" + uri + "' is not a file: URI with an absolute path (file:///...)");
+    return fs::path(percentDecode(rest));
+}
+
+// What tinygltf makes of a URI before it joins it onto the scene's folder (its dlib::urldecode:
+// %XX decoded, and '+' read as a space).
+std::string tinygltfDecode(std::string_view uri) {
+    const auto hex = [](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+        return 0;
+    };
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '+') {
+            out += ' ';
+        } else if (uri[i] == '%' && uri.size() > i + 2) {
+            out += static_cast<char>((hex(uri[i + 1]) << 4) | hex(uri[i + 2]));
+            i += 2;
+        } else {
+            out += uri[i];
+        }
+    }
+    return out;
+}
+
 const nlohmann::json* member(const nlohmann::json& object, const char* name) {
     if (!object.is_object()) return nullptr;
     const auto it = object.find(name);
@@ -164,22 +213,33 @@ std::uint64_t nonNegative(const nlohmann::json* value) {
     return d > 0 ? (d >= 1.8e19 ? std::numeric_limits<std::uint64_t>::max() : static_cast<std::uint64_t>(d)) : 0;
 }
 
-// Checks one buffer or image URI; returns the local file it names (empty for a data URI).
+// Checks one buffer or image URI; returns the local file it names (empty for a data URI):
+// relative to the scene's folder, or absolute for an absolute path or a file: URI.
 // Images may name a relative path that goes up ("../textures/a.png": Lit's own Save As refers to
 // the textures where they are instead of copying them); their bytes only ever become pixels,
 // and a file that is not an image decodes to nothing. Buffers may not: their bytes become
 // geometry and would be copied into the next save.
+// Absolute paths and file: URIs (only with the opt-in) are added to `absoluteFiles`, keyed by
+// what tinygltf will ask the file callbacks for: it joins every URI onto the scene's folder
+// ("scenes/" + "/data/a.bin"), which the callbacks undo through this map.
 fs::path checkUri(const fs::path& file, const std::string& what, const std::string& uri, const GltfLimits& limits,
-                  bool image = false) {
+                  std::map<std::string, fs::path>& absoluteFiles, bool image = false) {
     if (isDataUri(uri)) return {};
     if (uri.empty()) fail(file, what + " has an empty uri");
+    const bool isFileUri = hasScheme(uri) && schemeOf(uri) == "file";
+    if (hasScheme(uri) && !isFileUri)
+        fail(file, what + "'s uri '" + uri + "' uses the scheme '" + schemeOf(uri) +
+                       ":'; Lit reads buffers and images from data: URIs and local files only");
     const fs::path decoded(percentDecode(uri));
-    const bool relative = !hasScheme(uri) && !decoded.is_absolute() && !decoded.has_root_name() && !decoded.has_root_directory();
+    const bool relative = !isFileUri && !decoded.is_absolute() && !decoded.has_root_name() && !decoded.has_root_directory();
     if (!limits.allowExternalUris && !(image ? relative : relative && staysInFolder(uri)))
         fail(file, what + "'s uri '" + uri +
                        "' points outside the scene's folder (absolute, '..' or a scheme such as file:); "
                        "only --allow-external-uris permits that");
-    return fs::path(percentDecode(uri));
+    if (relative) return decoded;
+    const fs::path local = isFileUri ? fileUriPath(file, what, uri) : decoded;
+    absoluteFiles.emplace(tinygltfDecode(uri), local);
+    return local;
 }
 
 // glTF 2.0 §3.2 / §5.2: a loader refuses a major version it does not know and a minVersion it
@@ -210,7 +270,7 @@ void checkVersion(const fs::path& file, const nlohmann::json& doc) {
 
 // What the JSON declares: version, URIs and the bytes tinygltf will read for buffers and images.
 void checkDeclarations(const fs::path& file, const nlohmann::json& doc, const GltfLimits& limits,
-                       std::vector<fs::path>& externalImages) {
+                       std::vector<fs::path>& externalImages, std::map<std::string, fs::path>& absoluteFiles) {
     if (!doc.is_object()) fail(file, "the JSON is not an object, so not a glTF file");
     checkVersion(file, doc);
 
@@ -221,7 +281,7 @@ void checkDeclarations(const fs::path& file, const nlohmann::json& doc, const Gl
             const nlohmann::json& buffer = (*buffers)[i];
             const std::string what = "buffer " + std::to_string(i);
             if (const nlohmann::json* uri = member(buffer, "uri"); uri && uri->is_string())
-                checkUri(file, what, uri->get<std::string>(), limits);
+                checkUri(file, what, uri->get<std::string>(), limits, absoluteFiles);
             // tinygltf allocates byteLength for every buffer (and insists the file has exactly
             // that many bytes), however many buffers name the same file.
             bufferBytes = saturatingAdd(bufferBytes, nonNegative(member(buffer, "byteLength")));
@@ -239,7 +299,7 @@ void checkDeclarations(const fs::path& file, const nlohmann::json& doc, const Gl
             const nlohmann::json& image = (*images)[i];
             const std::string what = "image " + std::to_string(i);
             if (const nlohmann::json* uri = member(image, "uri"); uri && uri->is_string()) {
-                const fs::path local = checkUri(file, what, uri->get<std::string>(), limits, /*image=*/true);
+                const fs::path local = checkUri(file, what, uri->get<std::string>(), limits, absoluteFiles, /*image=*/true);
                 if (local.empty()) continue;  // data URI: its bytes are in the JSON already
                 auto [it, inserted] = fileSizes.try_emplace(local, 0);
                 if (inserted) {
@@ -324,7 +384,7 @@ GuardedScene guardGltfFile(const fs::path& file, bool binary, const GltfLimits& 
     // Within the limits, a DOM is safe to build: its depth and size are bounded now.
     const nlohmann::json doc = nlohmann::json::parse(scene.json.begin(), scene.json.end(), nullptr, /*exceptions=*/false);
     if (doc.is_discarded()) fail(file, "invalid JSON");
-    checkDeclarations(file, doc, limits, scene.externalImages);
+    checkDeclarations(file, doc, limits, scene.externalImages, scene.absoluteFiles);
     return scene;
 }
 
@@ -334,12 +394,25 @@ struct GuardedFileSystem::State {
     fs::path folder;  // canonical
     GltfLimits limits;
     std::vector<fs::path> externalImages;  // canonical; approved by the JSON check
+    std::map<std::string, fs::path> absoluteFiles;  // approved by the JSON check (GuardedScene)
+    // What tinygltf puts before a URI when it looks for the file: its JoinPath of the scene's
+    // folder as the loader passes it ("" stays "", else a '/' is added) and of ".".
+    std::vector<std::string> searchPrefixes;
     std::uint64_t bytesRead = 0;
     std::vector<std::string> refusals;
     std::set<std::string> refused;  // paths already reported
 
     void refuse(const std::string& path, const std::string& reason) {
         if (refused.insert(path).second) refusals.push_back("'" + path + "' " + reason);
+    }
+    // The file tinygltf means when it asks for `joined` (a URI joined onto a search folder).
+    std::string resolve(const std::string& joined) const {
+        for (const std::string& prefix : searchPrefixes) {
+            if (!joined.starts_with(prefix)) continue;
+            if (const auto it = absoluteFiles.find(joined.substr(prefix.size())); it != absoluteFiles.end())
+                return it->second.string();
+        }
+        return joined;
     }
     bool allowed(const std::string& path) {
         if (limits.allowExternalUris) return true;
@@ -354,9 +427,13 @@ struct GuardedFileSystem::State {
 };
 
 GuardedFileSystem::GuardedFileSystem(const fs::path& sceneFile, const GltfLimits& limits,
-                                     std::vector<fs::path> externalImages)
+                                     std::vector<fs::path> externalImages,
+                                     std::map<std::string, fs::path> absoluteFiles)
     : state_(std::make_unique<State>()) {
     state_->externalImages = std::move(externalImages);
+    state_->absoluteFiles = std::move(absoluteFiles);
+    const std::string baseDir = sceneFile.parent_path().string();  // as the loader passes it to tinygltf
+    state_->searchPrefixes = {baseDir.empty() || baseDir.ends_with('/') ? baseDir : baseDir + "/", "./"};
     std::error_code ec;
     const fs::path folder = sceneFile.parent_path().empty() ? fs::path(".") : sceneFile.parent_path();
     state_->folder = fs::weakly_canonical(fs::absolute(folder, ec), ec);
@@ -374,8 +451,10 @@ tinygltf::FsCallbacks GuardedFileSystem::callbacks() {
         std::error_code ec;
         return state.allowed(path) && fs::is_regular_file(path, ec);
     };
-    // tinygltf's default expands ~ and $VARIABLES through wordexp(3); a scene's URIs are plain paths.
-    fs.ExpandFilePath = [](const std::string& path, void*) { return path; };
+    // tinygltf's default expands ~ and $VARIABLES through wordexp(3); a scene's URIs are plain
+    // paths. Only an absolute path or file: URI, joined onto the folder by tinygltf, is mapped
+    // back to the file it names.
+    fs.ExpandFilePath = [](const std::string& path, void* user) { return static_cast<State*>(user)->resolve(path); };
     fs.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
         auto& state = *static_cast<State*>(user);
         if (!state.allowed(path)) {

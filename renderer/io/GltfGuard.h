@@ -5,7 +5,8 @@
 //   1. the scene file: a regular file, not empty, at most GltfLimits::maxFileBytes;
 //   2. its JSON (the .gltf text or a GLB's JSON chunk), read once by nlohmann's SAX parser with
 //      bounded depth and value count, before tinygltf's recursive conversion ever sees it;
-//   3. what the JSON says: asset.version major 2, buffer and image URIs inside the scene's folder,
+//   3. what the JSON says: asset.version major 2, buffer and image URIs inside the scene's folder
+//      (absolute paths and file: URIs only with allowExternalUris; other schemes never),
 //      the bytes the buffers and images declare against the memory budget;
 //   4. the file callbacks tinygltf reads buffers and images through: regular files inside the
 //      scene's folder only, size checked before a byte is allocated;
@@ -17,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -62,6 +64,9 @@ struct GuardedScene {
     // Images named by a relative path that leaves the scene's folder ("../textures/a.png", as
     // Lit's Save As writes them): canonical paths the file callbacks may read.
     std::vector<std::filesystem::path> externalImages;
+    // Absolute paths and file: URIs (read only with GltfLimits::allowExternalUris), keyed by the
+    // URI as tinygltf decodes it (%XX, and '+' as a space): the file each one names.
+    std::map<std::string, std::filesystem::path> absoluteFiles;
 };
 
 // Step 1 without opening the file (a FIFO would block): a path that exists must be a regular
@@ -77,7 +82,8 @@ GuardedScene guardGltfFile(const std::filesystem::path& file, bool binary, const
 class GuardedFileSystem {
 public:
     GuardedFileSystem(const std::filesystem::path& sceneFile, const GltfLimits& limits,
-                      std::vector<std::filesystem::path> externalImages = {});
+                      std::vector<std::filesystem::path> externalImages = {},
+                      std::map<std::string, std::filesystem::path> absoluteFiles = {});
     ~GuardedFileSystem();
     GuardedFileSystem(const GuardedFileSystem&) = delete;
     GuardedFileSystem& operator=(const GuardedFileSystem&) = delete;

@@ -1427,7 +1427,7 @@ Scene loadGltf(const std::filesystem::path& path, Log& log, const GltfLoadOption
     const Container container = detectContainer(path);
     // Size, depth, version and URIs checked before tinygltf sees the file (io/GltfGuard.h).
     const GuardedScene guarded = guardGltfFile(path, container == Container::Binary, options.limits);
-    GuardedFileSystem files(path, options.limits, guarded.externalImages);
+    GuardedFileSystem files(path, options.limits, guarded.externalImages, guarded.absoluteFiles);
 
     tinygltf::Model model;
     tinygltf::TinyGLTF parser;

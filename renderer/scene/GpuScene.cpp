@@ -124,6 +124,11 @@ GpuScene::GpuScene(const Scene& scene, Log& log, std::uint32_t maxChunkTriangles
     const std::uint8_t white[4] = {255, 255, 255, 255};
     glTextureSubImage2D(whiteTexture_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
     std::size_t textureBytes = 0;
+    // An image wider or taller than the driver's limit cannot be a texture (glTextureStorage2D
+    // fails with GL_INVALID_VALUE): checked here, before the upload, so that it is one warning
+    // naming the image instead of a GL error (issue #14).
+    GLint maxTextureSide = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSide);
     for (std::size_t t = 0; t < scene.textures.size(); ++t) {
         const Texture& tex = scene.textures[t];
         const bool valid = tex.image >= 0 && static_cast<std::size_t>(tex.image) < scene.images.size() &&
@@ -134,6 +139,14 @@ GpuScene::GpuScene(const Scene& scene, Log& log, std::uint32_t maxChunkTriangles
             continue;
         }
         const Image& image = scene.images[static_cast<std::size_t>(tex.image)];
+        if (image.width > maxTextureSide || image.height > maxTextureSide) {
+            log.warning("texture " + std::to_string(t) + ": image " + std::to_string(tex.image) +
+                        (image.name.empty() ? "" : " ('" + image.name + "')") + " is " + std::to_string(image.width) +
+                        "x" + std::to_string(image.height) + ", larger than this GL's limit of " +
+                        std::to_string(maxTextureSide) + " pixels a side; using a neutral texture");
+            textures_.emplace_back();
+            continue;
+        }
         textures_.push_back(uploadImage(image, tex, image.name.empty() ? "texture " + std::to_string(t) : image.name));
         textureBytes += image.rgba.size() * 4 / 3;
     }

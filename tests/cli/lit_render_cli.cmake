@@ -128,6 +128,17 @@ string(REPLACE "\"uri\": \"cornell_box.bin\"" "\"uri\": \"../../../../etc/passwd
 file(WRITE "${OUT_DIR}/escape.gltf" "${escape_json}")
 expect_failure("a buffer outside the scene's folder" 2 "points outside the scene's folder"
   "${OUT_DIR}/escape.gltf" --out "${OUT_DIR}/k.png" --size 16x16)
+# An absolute file: URI: refused without the opt-in, read with it (tinygltf would join it onto
+# the scene's folder; GltfGuard maps it back).
+file(MAKE_DIRECTORY "${OUT_DIR}/absolute")
+string(REPLACE "\"uri\": \"cornell_box.bin\"" "\"uri\": \"file://${OUT_DIR}/cornell_box.bin\"" absolute_json "${cornell_json}")
+file(WRITE "${OUT_DIR}/absolute/absolute.gltf" "${absolute_json}")
+expect_failure("a file: URI without --allow-external-uris" 2 "points outside the scene's folder.*--allow-external-uris"
+  "${OUT_DIR}/absolute/absolute.gltf" --out "${OUT_DIR}/absolute/refused.png" --size 16x16)
+run_lit_render("${OUT_DIR}/absolute/absolute.gltf" --allow-external-uris --out "${OUT_DIR}/absolute/read.png" --size 16x16)
+if(NOT rc EQUAL 0 OR NOT EXISTS "${OUT_DIR}/absolute/read.png")
+  message(FATAL_ERROR "a file: URI with --allow-external-uris did not render (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
+endif()
 foreach(size 0x16 -5x16 16x99999 99999999999x2)
   expect_failure("--size ${size}" 2 "--size expects WxH" "${cornell}" --out "${OUT_DIR}/l.png" --size ${size})
 endforeach()

@@ -88,8 +88,13 @@ std::vector<float> actualValue(const lit::Scene& scene, const lit::Node& node, c
 }
 
 std::string join(const std::vector<float>& values) {
+    // Appended piece by piece: `"," + std::to_string(v)` (operator+ on a temporary) made GCC 12 at
+    // -O3 report a false -Wrestrict, an error in a -Werror Release build.
     std::string text;
-    for (const float v : values) text += (text.empty() ? "" : ",") + std::to_string(v);
+    for (const float v : values) {
+        if (!text.empty()) text += ',';
+        text += std::to_string(v);
+    }
     return text;
 }
 

@@ -5,6 +5,8 @@
 #include "GlTestSupport.h"
 
 #include "gl/Capabilities.h"
+#include "scene/GpuScene.h"
+#include "scene/Scene.h"
 
 #include <epoxy/gl.h>
 
@@ -57,6 +59,31 @@ TEST_F(GlErrors, InjectedErrorOnlyWhenRequested) {
     EXPECT_TRUE(gl::injectGlErrorIfRequested());
     ::unsetenv("LIT_TEST_GL_ERROR");
     EXPECT_EQ(glErrorLines().size(), 1u);
+}
+
+// An image larger than GL_MAX_TEXTURE_SIZE (issue #14: it ended in GL errors) is refused before
+// the upload with a warning that names it, and the texture falls back to the neutral one.
+TEST_F(GlErrors, AnImageOverTheTextureLimitIsAWarningNotAGlError) {
+    GLint maxSide = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSide);
+    ASSERT_GT(maxSide, 0);
+    Scene scene;
+    Image wide;
+    wide.name = "too wide";
+    wide.width = maxSide + 1;  // one row: (max + 1) × 4 bytes, 64 kB on llvmpipe (16384)
+    wide.height = 1;
+    wide.rgba.assign(static_cast<std::size_t>(wide.width) * 4, 128);
+    scene.images.push_back(wide);
+    Texture texture;
+    texture.image = 0;
+    scene.textures.push_back(texture);
+    const GpuScene gpuScene(scene, log_);
+    EXPECT_TRUE(glErrorLines().empty()) << glErrorLines().front();
+    bool warned = false;
+    for (const LogMessage& m : messages_)
+        warned = warned || (m.level == LogLevel::Warning && m.text.find("'too wide'") != std::string::npos &&
+                            m.text.find("larger than this GL's limit of " + std::to_string(maxSide)) != std::string::npos);
+    EXPECT_TRUE(warned) << "no warning names the image and the limit";
 }
 
 }  // namespace

@@ -203,6 +203,74 @@ TEST(GltfGuard, UrisOutsideTheScenesFolderAreRefused) {
     EXPECT_EQ(loadGltf(scene, log, options).meshes.size(), 1u);
 }
 
+// An absolute path or a file: URI names a file anywhere: refused without the opt-in, read with
+// it. tinygltf joins every URI onto the scene's folder ("scene/" + "/data/tri.bin"), so before
+// the fix the opt-in still ended in "File not found" (issue #14).
+TEST(GltfGuard, AbsolutePathsAndFileUrisAreReadOnlyWithTheOptIn) {
+    TempDir dir;
+    fs::create_directories(dir / "scene");
+    fs::create_directories(dir / "data");
+    writeBytes(dir / "data" / "tri.bin", triangleBin());
+    writeBytes(dir / "data" / "tri+1 a.bin", triangleBin());  // '+' is a plus in a URI; tinygltf reads a space
+    writeBytes(dir / "data" / "img.png", png(2, 3, 200));
+    const std::string absolute = fs::absolute(dir / "data").string();
+    const std::vector<std::string> uris = {absolute + "/tri.bin", "file://" + absolute + "/tri.bin",
+                                           "file://localhost" + absolute + "/tri.bin", "FILE:" + absolute + "/tri.bin",
+                                           "file://" + absolute + "/tri+1%20a.bin"};
+    const fs::path scene = dir / "scene" / "absolute.gltf";
+    GltfLoadOptions allow;
+    allow.limits.allowExternalUris = true;
+    for (const std::string& uri : uris) {
+        SCOPED_TRACE(uri);
+        writeText(scene, triangleDoc(uri).dump());
+        const std::string refused = loadError(scene);
+        EXPECT_CONTAINS(refused, "points outside the scene's folder");
+        EXPECT_CONTAINS(refused, "--allow-external-uris");
+        QuietLog log;
+        const Scene loaded = loadGltf(scene, log, allow);
+        ASSERT_EQ(loaded.meshes.size(), 1u);
+        ASSERT_EQ(loaded.meshes[0].primitives.size(), 1u);
+        EXPECT_EQ(loaded.meshes[0].primitives[0].indices.size(), 3u);
+    }
+    // The same through a relative scene path (the loader hands tinygltf a relative folder).
+    {
+        writeText(scene, triangleDoc("file://" + absolute + "/tri.bin").dump());
+        QuietLog log;
+        EXPECT_EQ(loadGltf(fs::relative(scene), log, allow).meshes.size(), 1u);
+    }
+
+    // An image by file: URI and by absolute path: its pixels arrive (2×3), not the 1×1 placeholder.
+    writeBytes(dir / "scene" / "tri.bin", triangleBin());
+    for (const std::string& uri : {"file://" + absolute + "/img.png", absolute + "/img.png"}) {
+        SCOPED_TRACE(uri);
+        json doc = triangleDoc();
+        doc["images"] = json::array({{{"uri", uri}}});
+        doc["textures"] = json::array({{{"source", 0}}});
+        writeText(scene, doc.dump());
+        EXPECT_CONTAINS(loadError(scene), "image 0's uri '" + uri + "' points outside the scene's folder");
+        QuietLog log;
+        const Scene loaded = loadGltf(scene, log, allow);
+        ASSERT_EQ(loaded.images.size(), 1u);
+        EXPECT_EQ(loaded.images[0].width, 2);
+        EXPECT_EQ(loaded.images[0].height, 3);
+    }
+
+    // Never read, opt-in or not: another host, a file: URI without an absolute path, other schemes.
+    for (const GltfLoadOptions& options : {GltfLoadOptions{}, allow}) {
+        SCOPED_TRACE(options.limits.allowExternalUris ? "allowed" : "not allowed");
+        writeText(scene, triangleDoc("http://example.com/tri.bin").dump());
+        EXPECT_CONTAINS(loadError(scene, options), "uses the scheme 'http:'; Lit reads buffers and images from data: URIs and local files only");
+        if (!options.limits.allowExternalUris) continue;
+        writeText(scene, triangleDoc("file://example.com" + absolute + "/tri.bin").dump());
+        EXPECT_CONTAINS(loadError(scene, options), "names the host 'example.com'; Lit reads local files only");
+        writeText(scene, triangleDoc("file:tri.bin").dump());
+        EXPECT_CONTAINS(loadError(scene, options), "is not a file: URI with an absolute path");
+    }
+    // A missing absolute file is "not found" by its own path, not by the joined one.
+    writeText(scene, triangleDoc("file://" + absolute + "/missing.bin").dump());
+    EXPECT_CONTAINS(loadError(scene, allow), "File not found");
+}
+
 TEST(GltfGuard, ASymbolicLinkOutOfTheFolderIsNotFollowed) {
     TempDir dir;
     fs::create_directories(dir / "scene");

@@ -150,21 +150,28 @@ struct GltfBuilder {
         while (text.size() % 4) text += ' ';
         std::vector<std::uint8_t> chunk = bin;
         while (chunk.size() % 4) chunk.push_back(0);
-        std::vector<std::uint8_t> out;
-        const auto u32 = [&](std::uint32_t v) {
-            for (int k = 0; k < 4; ++k) out.push_back(static_cast<std::uint8_t>(v >> (8 * k)));
-        };
+        // Sized once and filled by offset, as GltfFile.cpp's writer does: appending (push_back,
+        // insert) made GCC 12 at -O3 report a false -Wstringop-overflow, an error with -Werror.
         const std::size_t total = 12 + 8 + text.size() + (chunk.empty() ? 0 : 8 + chunk.size());
-        out.insert(out.end(), {'g', 'l', 'T', 'F'});
+        std::vector<std::uint8_t> out(total);
+        std::size_t at = 0;
+        const auto u32 = [&](std::uint32_t v) {
+            for (int k = 0; k < 4; ++k) out[at++] = static_cast<std::uint8_t>(v >> (8 * k));
+        };
+        const auto bytes = [&](const void* data, std::size_t size) {
+            if (size > 0) std::memcpy(out.data() + at, data, size);
+            at += size;
+        };
+        bytes("glTF", 4);
         u32(2);
         u32(static_cast<std::uint32_t>(total));
         u32(static_cast<std::uint32_t>(text.size()));
         u32(0x4E4F534Au);  // "JSON"
-        out.insert(out.end(), text.begin(), text.end());
+        bytes(text.data(), text.size());
         if (!chunk.empty()) {
             u32(static_cast<std::uint32_t>(chunk.size()));
             u32(0x004E4942u);  // "BIN\0"
-            out.insert(out.end(), chunk.begin(), chunk.end());
+            bytes(chunk.data(), chunk.size());
         }
         return out;
     }
