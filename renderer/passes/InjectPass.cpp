@@ -8,6 +8,30 @@
 
 namespace lit {
 
+namespace {
+
+// Runs a voxel program (inject.comp.glsl, bounce.comp.glsl) over the occupied-voxel list when
+// there is one and fromList asks for it (indirect dispatch: the voxelization wrote the list and
+// its dispatch size), otherwise over the whole N³ grid.
+void dispatchOverVoxels(const VoxelVolume& volume, const gl::Program& program, bool fromList) {
+    fromList = fromList && volume.occupiedList();
+    glProgramUniform1i(program.id(), program.location("uFromList"), fromList ? 1 : 0);
+    glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
+    if (fromList) {
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, volume.occupiedList().id());
+        glDispatchComputeIndirect(4);  // the DispatchIndirectCommand after the count
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    } else {
+        const int n = volume.resolution();
+        const auto groups = static_cast<GLuint>((n + LIT_INJECT_GROUP_SIZE - 1) / LIT_INJECT_GROUP_SIZE);
+        glDispatchCompute(groups, groups, groups);
+    }
+}
+
+}  // namespace
+
 InjectPass::InjectPass(const std::filesystem::path& shaderRoot)
     : program_(shaderRoot, "inject", {{GL_COMPUTE_SHADER, "inject.comp.glsl"}}), shaderRoot_(shaderRoot) {}
 
@@ -44,19 +68,7 @@ void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features,
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY, volume.radianceFormat());
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, volume.radianceFormat());
-    fromList = fromList && volume.occupiedList();
-    glProgramUniform1i(program.id(), program.location("uFromList"), fromList ? 1 : 0);
-    glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
-    if (fromList) {
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-        volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
-        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, volume.occupiedList().id());
-        glDispatchComputeIndirect(4);  // the DispatchIndirectCommand after the count
-        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    } else {
-        const auto groups = static_cast<GLuint>((n + LIT_INJECT_GROUP_SIZE - 1) / LIT_INJECT_GROUP_SIZE);
-        glDispatchCompute(groups, groups, groups);
-    }
+    dispatchOverVoxels(volume, program, fromList);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     // The bounce replaces level 0; the caller rebuilds the mips from it.
     glCopyImageSubData(volume.bounce().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0,
@@ -73,20 +85,7 @@ void InjectPass::execute(const VoxelVolume& volume, bool fromList) {
     glBindImageTexture(LIT_IMG_VOXEL_EMISSION, volume.emission().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                        volume.radianceFormat());
-    fromList = fromList && volume.occupiedList();
-    glProgramUniform1i(program_.id(), program_.location("uFromList"), fromList ? 1 : 0);
-    glProgramUniform1ui(program_.id(), program_.location("uOccupiedCapacity"), volume.occupiedCapacity());
-    if (fromList) {
-        // The voxelization wrote the list and its dispatch size; read both from the buffer.
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-        volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
-        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, volume.occupiedList().id());
-        glDispatchComputeIndirect(4);  // the DispatchIndirectCommand after the count
-        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    } else {
-        const auto groups = static_cast<GLuint>((n + LIT_INJECT_GROUP_SIZE - 1) / LIT_INJECT_GROUP_SIZE);
-        glDispatchCompute(groups, groups, groups);
-    }
+    dispatchOverVoxels(volume, program_, fromList);
     // The mipmap pass reads level 0 as an image; cone tracing and debug views sample it.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
