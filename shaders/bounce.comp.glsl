@@ -21,9 +21,7 @@
 
 layout(local_size_x = LIT_INJECT_GROUP_SIZE, local_size_y = LIT_INJECT_GROUP_SIZE, local_size_z = LIT_INJECT_GROUP_SIZE) in;
 
-LIT_OCCUPIED_VOXELS_BLOCK(readonly);
-uniform int uFromList;           // 1: voxels from the list; 0: the whole grid
-uniform uint uOccupiedCapacity;  // entries the list holds at most
+LIT_VOXEL_LIST_READER
 
 #if LIT_BOUNCE_RGBA8
 #define BOUNCE_FORMAT rgba8
@@ -42,9 +40,7 @@ const float kDirectionMinLength = 0.05;  // as inject.comp.glsl
 void main() {
     ivec3 v;
     if (uFromList != 0) {
-        uint index = gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex;
-        if (index >= min(occupiedCount, uOccupiedCapacity)) return;
-        v = unpackVoxelCoord(occupiedVoxels[index]);
+        if (!listedVoxel(v)) return;
     } else {
         v = ivec3(gl_GlobalInvocationID);
     }

@@ -48,16 +48,12 @@ uvec3 mortonLocal(uint i) {
 
 // Occupied-voxel list (InjectPass with uFromList = 1): the work groups run along the list
 // (glDispatchComputeIndirect, LIT_INJECT_LIST_GROUP_SIZE = 8³ entries each) instead of over N³.
-LIT_OCCUPIED_VOXELS_BLOCK(readonly);
-uniform int uFromList;           // 1: voxels from the list; 0: the whole grid
-uniform uint uOccupiedCapacity;  // entries the list holds at most
+LIT_VOXEL_LIST_READER
 
 void main() {
     ivec3 v;
     if (uFromList != 0) {
-        uint index = gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex;
-        if (index >= min(occupiedCount, uOccupiedCapacity)) return;
-        v = unpackVoxelCoord(occupiedVoxels[index]);
+        if (!listedVoxel(v)) return;
     } else {
         v = ivec3(gl_WorkGroupID * uint(LIT_INJECT_GROUP_SIZE) + mortonLocal(gl_LocalInvocationIndex));
     }

@@ -59,3 +59,18 @@ uint averageRgbAdd(uint current, vec3 value) {
     }
 uint packVoxelCoord(ivec3 v) { return uint(v.x) | (uint(v.y) << 10) | (uint(v.z) << 20); }
 ivec3 unpackVoxelCoord(uint p) { return ivec3(int(p & 1023u), int((p >> 10) & 1023u), int(p >> 20)); }
+
+// What a compute shader that InjectPass::dispatchOverVoxels runs (injection, bounces) declares:
+// the list, whether this dispatch runs over it (uFromList = 1, LIT_INJECT_LIST_GROUP_SIZE entries
+// per work group) or over the whole grid, and listedVoxel(), this invocation's voxel of the list
+// (false past its end).
+#define LIT_VOXEL_LIST_READER                                                                      \
+    LIT_OCCUPIED_VOXELS_BLOCK(readonly);                                                           \
+    uniform int uFromList;                                                                         \
+    uniform uint uOccupiedCapacity;                                                                \
+    bool listedVoxel(out ivec3 v) {                                                                \
+        uint index = gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex; \
+        if (index >= min(occupiedCount, uOccupiedCapacity)) return false;                         \
+        v = unpackVoxelCoord(occupiedVoxels[index]);                                               \
+        return true;                                                                               \
+    }
