@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "FlyController.h"
+#include "ProcessMemory.h"
 #include "Properties.h"
 #include "ScreenshotNames.h"
 #include "SettingCommand.h"
@@ -1088,6 +1089,14 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
         return runPathCommand(doc_, playback_, camera_, name, args);
     if (name == "quit") {
         exitCode_ = 0;
+        return "";
+    }
+    if (name == "loop") {
+        scriptNext_ = 0;  // the next frame runs the first command again
+        return "";
+    }
+    if (name == "memory") {
+        log_.info(ProcessMemory::query().describe());
         return "";
     }
     return "unknown command '" + name + "'";

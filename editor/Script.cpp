@@ -126,7 +126,8 @@ std::string check(const ScriptCommand& c) {
         return "";
     }
     if (name == "open") return count(1, 1, "a file");
-    if (name == "undo" || name == "redo" || name == "play" || name == "pause" || name == "quit")
+    if (name == "undo" || name == "redo" || name == "play" || name == "pause" || name == "quit" || name == "memory" ||
+        name == "loop")
         return count(0, 0, "no arguments");
     if (name == "interactive") {
         if (auto e = count(1, 1, "on or off"); !e.empty()) return e;

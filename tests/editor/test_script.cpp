@@ -159,6 +159,16 @@ TEST(Script, InteractiveCommand) {
     EXPECT_THROW(parseScript("interactive\n", "s.txt"), ScriptError);
 }
 
+// "memory" logs what the process holds and "loop" starts the script over (the soak test's session).
+TEST(Script, MemoryAndLoopCommands) {
+    const std::vector<ScriptCommand> commands = parseScript("memory\nloop\n", "s.txt");
+    ASSERT_EQ(commands.size(), 2u);
+    EXPECT_EQ(commands[0].name, "memory");
+    EXPECT_EQ(commands[1].name, "loop");
+    EXPECT_EQ(errorOf("wait 1\nmemory now\n"), "s.txt:2: memory: expected no arguments, got 1 argument");
+    EXPECT_EQ(errorOf("loop 3\n"), "s.txt:1: loop: expected no arguments, got 1 argument");
+}
+
 }  // namespace
 
 namespace {
