@@ -1103,6 +1103,9 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
         return "";
     }
     if (name == "memory") {
+        // After the release the editor does every 5 s anyway: the figures are what it holds, not
+        // what happens to wait for the next release (up to a freed voxel volume or two).
+        ProcessMemory::releaseFreeHeap();
         log_.info(ProcessMemory::query().describe());
         return "";
     }

@@ -8,8 +8,10 @@
 #
 # The script is one block of commands followed by `loop`, so it runs as long as the soak wants on
 # any machine (blocks take 2.5 s here on an idle machine, 100 s on a loaded one). Each block ends
-# with the `memory` command, which logs the heap in use, the heap the allocator holds free and the
-# resident size (editor/ProcessMemory.h). Every block ends in the same state (64^3 voxels, final
+# with the `memory` command, which hands the free heap back to the system (as the editor does
+# every 5 s) and logs the heap in use, the free heap and the resident size (editor/ProcessMemory.h):
+# without the release first, a block end that fell just before the editor's periodic one counted
+# up to 65 MB of freed voxel volumes as resident (a one-minute run: 187, 253, 188, 219 MB). Every block ends in the same state (64^3 voxels, final
 # view, nothing selected), so block ends compare like with like; samples at arbitrary moments
 # would differ by the 128^3 voxel volumes a block allocates and frees.
 #
@@ -111,13 +113,10 @@ rm -f "$pidfile"
 # timeout bounds the whole run even if this script is killed before it can stop the editor:
 # it signals its process group (xvfb-run, Xvfb and the editor) 4 minutes after the planned end
 # (start-up, the 2 minutes a slow machine may get, the stop).
-# GLIBC_TUNABLES: RSS should follow the memory the editor holds, not what glibc keeps after a
-# free. With its default dynamic mmap threshold, freeing a 16 MiB voxel volume raises the
-# threshold, later volumes come from the heap, and glibc returns that memory only minutes later:
-# a 10-minute run at 640x360 showed RSS plateaus of +40..60 MB at block ends lasting 1-3 minutes.
-# A fixed 1 MiB threshold keeps every large block (volumes, render targets) in its own mapping,
-# returned to the system when it is freed.
-LIT_SHADER_DIR="$work/shaders" XDG_STATE_HOME="$work/state" GLIBC_TUNABLES=glibc.malloc.mmap_threshold=1048576 \
+# The editor runs with the default allocator, as users run it. (Until its periodic heap release
+# the soak fixed glibc's mmap threshold at 1 MiB: freed 16 MiB voxel volumes raised the dynamic
+# threshold, later ones came from the heap, and RSS showed plateaus of +40..60 MB for minutes.)
+LIT_SHADER_DIR="$work/shaders" XDG_STATE_HOME="$work/state" \
     timeout -k 10 $((minutes * 60 + 240)) xvfb-run -a -s "-screen 0 1280x720x24" \
     bash -c 'echo $$ > "$0"; exec "$@"' "$pidfile" "$editor" "$work/scene/cornell_box.gltf" --size "${LIT_SOAK_SIZE:-640x360}" --script "$script" \
     > "$log" 2>&1 &
