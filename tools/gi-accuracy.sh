@@ -13,7 +13,9 @@
 #                   llvmpipe takes minutes per 512³ frame and ~3 GiB of memory)
 #   GI_SPP          reference samples/pixel   (default: 256)
 #   GI_SIZE         image side in pixels      (default: 128)
-#   GI_SCENES       comma-separated subset: cornell_box,sealed_room,thin_walls,glossy_floor,sponza
+#   GI_SCENES       comma-separated subset: cornell_box,sealed_room,thin_walls,glossy_floor,sponza;
+#                   the diagnostic Cornell variants cornell_room,cornell_mirrored,cornell_swapped
+#                   (assets/gi) run only when named here
 #   GI_OUT          the markdown file updated (default: <repo>/docs/GI.md)
 #   GI_SHARED       the shared scenes folder  (default: <repo>/../shared/scenes; a git worktree
 #                   elsewhere passes the main checkout's, e.g. GI_SHARED=/work/shared/scenes)

@@ -3,6 +3,11 @@
 //   thin_walls.gltf    a Cornell room whose walls are one voxel thick at 128³, with a strong sun
 //                      shining on its roof from outside (any sunlight inside is a leak)
 //   sealed_room.gltf   a closed room on a sunlit ground; nothing inside is lit but by leaks
+//   cornell_room.gltf  the Cornell box built with this file's room (the control for the two below)
+//   cornell_mirrored.gltf  the Cornell box mirrored in x (red wall and tall block at +x): an error that
+//                      moves with the scene is the scene's, one that stays on a side is the tracer's
+//   cornell_swapped.gltf   the Cornell box with the red and green walls' colours swapped (geometry
+//                      unchanged): an error that follows the colour is the colour's, else the geometry's
 // Each is built with SceneBuilder and written with saveGltf (atomic). The Cornell box itself is
 // assets/cornell_box.gltf (tools/make_cornell_box.cpp). tools/gi-accuracy.sh renders the suite;
 // docs/GI.md has the table. Conventions as assets/README.md: metres, +Y up, the camera looks −Z.
@@ -15,6 +20,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <stdexcept>
 
 namespace {
 
@@ -25,6 +31,15 @@ constexpr float kPi = 3.14159265358979323846f;
 
 struct RoomMaterials {
     int white, red, green, floor;
+};
+
+// Variants of the Cornell room for telling a tracer's defect from a scene's property (issue #11:
+// the red-wall shadow): x mirrored (every x negated, so the turns about y too), or the two coloured
+// walls' materials swapped. Node names stay with the colour (the accuracy regions find the red
+// wall by name and take the floor on its side).
+struct RoomVariant {
+    bool mirrorX = false;
+    bool swapColours = false;
 };
 
 // The Cornell box's materials (assets/README.md); the floor is `floor` (white unless given).
@@ -43,8 +58,15 @@ void name(Scene& scene, int node, const char* text) { scene.nodes[static_cast<st
 // names of assets/cornell_box.gltf (the accuracy regions find walls by name). thickness 0: single-
 // sided walls (planes facing in); otherwise closed slabs of that thickness (metres) outside the
 // interior. Two blocks and the down-pointing 20 cd spot of the Cornell box.
-void addCornellRoom(Scene& scene, const RoomMaterials& m, float thickness) {
+void addCornellRoom(Scene& scene, const RoomMaterials& m, float thickness, RoomVariant variant = {}) {
     const float t = thickness;
+    // x of the mirrored room; the blocks' turns about y change sign with it.
+    const float sx = variant.mirrorX ? -1.0f : 1.0f;
+    // The wall at −x (before mirroring) is the red one unless the colours are swapped.
+    const bool redAtLeft = !variant.swapColours;
+    const int leftMaterial = redAtLeft ? m.red : m.green, rightMaterial = redAtLeft ? m.green : m.red;
+    const char* leftName = redAtLeft ? "left_wall_red" : "right_wall_green";
+    const char* rightName = redAtLeft ? "right_wall_green" : "left_wall_red";
     if (t <= 0.0f) {
         const auto plane = [&](const char* n, int material, glm::vec3 at, glm::quat rotation) {
             name(scene, addMeshNode(scene, makePlaneMesh(n, 2.0f, material, 8), at, rotation), n);
@@ -52,9 +74,11 @@ void addCornellRoom(Scene& scene, const RoomMaterials& m, float thickness) {
         plane("floor", m.floor, {0, 0, 0}, glm::quat(1, 0, 0, 0));
         plane("ceiling", m.white, {0, 2, 0}, glm::angleAxis(kPi, glm::vec3(1, 0, 0)));
         plane("back_wall", m.white, {0, 1, -1}, glm::angleAxis(kPi / 2, glm::vec3(1, 0, 0)));
-        plane("left_wall_red", m.red, {-1, 1, 0}, glm::angleAxis(-kPi / 2, glm::vec3(0, 0, 1)));
-        plane("right_wall_green", m.green, {1, 1, 0}, glm::angleAxis(kPi / 2, glm::vec3(0, 0, 1)));
+        // The planes face +y before turning: −90° about z faces +x (the wall at −x), +90° faces −x.
+        plane(leftName, leftMaterial, {-sx, 1, 0}, glm::angleAxis(-sx * kPi / 2, glm::vec3(0, 0, 1)));
+        plane(rightName, rightMaterial, {sx, 1, 0}, glm::angleAxis(sx * kPi / 2, glm::vec3(0, 0, 1)));
     } else {
+        if (variant.mirrorX || variant.swapColours) throw std::logic_error("room variants are made with single-sided walls only");
         const float outer = 2.0f + 2.0f * t, depth = 2.0f + t;  // walls reach from the back slab to z = +1
         const auto slab = [&](const char* n, int material, glm::vec3 size, glm::vec3 at) {
             name(scene, addMeshNode(scene, makeBoxMesh(n, size, material), at), n);
@@ -66,11 +90,11 @@ void addCornellRoom(Scene& scene, const RoomMaterials& m, float thickness) {
         slab("right_wall_green", m.green, {t, outer, depth}, {1.0f + 0.5f * t, 1, -0.5f * t});
     }
     const float turn = 17.0f * kPi / 180.0f;
-    name(scene, addMeshNode(scene, makeBoxMesh("tall_box", {0.6f, 1.2f, 0.6f}, m.white), {-0.33f, 0.6f, -0.3f},
-                            glm::angleAxis(turn, glm::vec3(0, 1, 0))),
+    name(scene, addMeshNode(scene, makeBoxMesh("tall_box", {0.6f, 1.2f, 0.6f}, m.white), {-0.33f * sx, 0.6f, -0.3f},
+                            glm::angleAxis(sx * turn, glm::vec3(0, 1, 0))),
          "tall_box");
-    name(scene, addMeshNode(scene, makeBoxMesh("short_box", {0.6f, 0.6f, 0.6f}, m.white), {0.35f, 0.3f, 0.35f},
-                            glm::angleAxis(-turn, glm::vec3(0, 1, 0))),
+    name(scene, addMeshNode(scene, makeBoxMesh("short_box", {0.6f, 0.6f, 0.6f}, m.white), {0.35f * sx, 0.3f, 0.35f},
+                            glm::angleAxis(-sx * turn, glm::vec3(0, 1, 0))),
          "short_box");
     Light spot;
     spot.name = "ceiling_spot";
@@ -111,6 +135,16 @@ Scene thinWalls() {
     sun.intensity = 20.0f;  // lux: ~3.6× the spot's illuminance on the floor; all of it must stay outside
     // Down and slightly towards +z: it falls on the roof and never through the open front.
     name(scene, addLightNode(scene, sun, {0, 4, 0}, glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f))), "sun");
+    return scene;
+}
+
+// The Cornell box (assets/cornell_box.gltf built with the suite's room) mirrored in x or with the
+// wall colours swapped.
+Scene cornellVariant(const char* sceneName, RoomVariant variant) {
+    Scene scene;
+    scene.name = sceneName;
+    const RoomMaterials m = addRoomMaterials(scene);
+    addCornellRoom(scene, m, 0.0f, variant);
     return scene;
 }
 
@@ -156,7 +190,9 @@ int main(int argc, char** argv) {
     try {
         const fs::path out = argv[1];
         fs::create_directories(out);
-        for (Scene scene : {glossyFloor(), thinWalls(), sealedRoom()}) {
+        for (Scene scene : {glossyFloor(), thinWalls(), sealedRoom(), cornellVariant("cornell_room", {}),
+                            cornellVariant("cornell_mirrored", {.mirrorX = true}),
+                            cornellVariant("cornell_swapped", {.swapColours = true})}) {
             scene.updateWorldTransforms();
             const fs::path file = out / (scene.name + ".gltf");
             saveGltf(scene, file);

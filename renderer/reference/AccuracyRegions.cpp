@@ -64,9 +64,21 @@ std::vector<NamedRegion> cornellBoxRegions(const Scene& scene, const std::vector
         // Two pixels off every edge: the rasterizer's shadow maps move shadow edges by a texel or so.
         regions.push_back({name, erodeEdges(mask, hits, width, height, 2)});
     };
+    // The red wall's side of the floor: x < 0 in assets/cornell_box.gltf; the suite's mirrored and
+    // colour-swapped variants (tools/make_gi_suite.cpp) put it at x > 0. The side is where the
+    // camera sees the red wall (its pixels' mean x), so region names follow the wall colours.
+    double redX = 0.0;
+    std::size_t redPixels = 0;
+    const PixelMask red = nodeMask(scene, hits, "left_wall_red");
+    for (std::size_t i = 0; i < hits.size(); ++i)
+        if (red[i]) {
+            redX += hits[i].position.x;
+            ++redPixels;
+        }
+    const float redSide = redPixels > 0 && redX > 0.0 ? 1.0f : -1.0f;
     add("ceiling", "ceiling", [](const glm::vec3&) { return true; });
-    add("shadowed floor by red wall", "floor", [](const glm::vec3& p) { return p.x < 0.0f; });
-    add("shadowed floor by green wall", "floor", [](const glm::vec3& p) { return p.x > 0.0f; });
+    add("shadowed floor by red wall", "floor", [redSide](const glm::vec3& p) { return p.x * redSide > 0.0f; });
+    add("shadowed floor by green wall", "floor", [redSide](const glm::vec3& p) { return p.x * redSide < 0.0f; });
     // The blocks are 1.2 m and 0.6 m tall; the spot's outer cone reaches the back wall up to ≈ 1.3 m.
     add("back wall above blocks", "back_wall", [](const glm::vec3& p) { return p.y > 1.3f; });
     return regions;

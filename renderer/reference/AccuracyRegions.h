@@ -38,7 +38,8 @@ PixelMask nodeMask(const Scene& scene, const std::vector<FirstHit>& hits, const 
 // of lights (shadow edges, silhouettes), for comparisons that must not depend on edge filtering.
 PixelMask erodeEdges(const PixelMask& mask, const std::vector<FirstHit>& hits, int width, int height, int radius);
 
-// The Cornell box regions above; a region whose node is missing is left out. Regions may be
+// The Cornell box regions above; a region whose node is missing is left out. The floor's halves are
+// named by the wall on their side (the red wall's side found from where the camera sees it). Regions may be
 // empty when the camera does not see them.
 std::vector<NamedRegion> cornellBoxRegions(const Scene& scene, const std::vector<FirstHit>& hits, int width, int height);
 

@@ -151,11 +151,19 @@ vec4 sampleRadiance(vec3 uvw, float level, vec3 faceWeights, vec3 faceOffsets) {
     float weightedOpacity = dot(faceWeights, opacities);
     float opacity = 1.0 - exp2(dot(faceWeights, log2(max(vec3(1.0) - opacities, vec3(kFaceMinTransmittance)))));
     vec3 rgb = faceWeights.x * x.rgb + faceWeights.y * y.rgb + faceWeights.z * z.rgb;
-    vec4 s = weightedOpacity > 0.0 ? vec4(rgb * (opacity / weightedOpacity), opacity) : vec4(0.0);
-    if (level < 1.0) s = mix(textureLod(voxelRadianceTexture, uvw, 0.0), s, level);
-    return s;
+    return weightedOpacity > 0.0 ? vec4(rgb * (opacity / weightedOpacity), opacity) : vec4(0.0);
 #endif
 }
+
+#if LIT_CONE_ANISOTROPIC
+// A sample below level 1 (level ∈ [0, 1)): the directional blend of level 1 mixed with the isotropic
+// level 0. The march reads it only while its samples are finer than level 1 (the first of
+// traceConeFromSurface's two loops): llvmpipe runs both sides of a branch, so a `level < 1` test
+// inside sampleRadiance made every sample pay for this fourth lookup (docs/GI.md, "Landing").
+vec4 sampleRadianceBelowLevel1(vec3 uvw, float level, vec3 faceWeights, vec3 faceOffsets) {
+    return mix(textureLod(voxelRadianceTexture, uvw, 0.0), sampleRadiance(uvw, level, faceWeights, faceOffsets), level);
+}
+#endif
 
 // traceCone for a cone that leaves a surface: `startHeight` (m) is the apex's height above the
 // surface and `heightPerDistance` = n·direction how fast the axis rises above it. The voxels a
@@ -184,43 +192,61 @@ vec4 traceConeFromSurface(vec3 origin, vec3 direction, float aperture, float max
     vec3 radiance = vec3(0.0);
     float opacity = 0.0;
     float t = kConeStartVoxels * voxelSize;
-    for (int i = 0; i < kConeMaxSteps && t <= maxDistance; ++i) {
-        // The step [t, t + Δ] is sampled at its middle (midpoint rule): the cone widens along the
-        // step, and sampling its start would use a footprint too fine for the rest of it and
-        // overestimate the opacity of thin layers by up to 2× at step scale 1.
+    int i = 0;
+    // One step [t, t + Δ] of the march, as two macros so that the anisotropic variant can run it in
+    // two loops (samples below level 1, then from level 1 on) with different sample functions and no
+    // branch between them. Each step is sampled at its middle (midpoint rule): the cone widens along
+    // the step, and sampling its start would use a footprint too fine for the rest of it and
+    // overestimate the opacity of thin layers by up to 2× at step scale 1. Level log2(d / voxelSize)
+    // has voxels d wide (clamped to the coarsest level).
 #if LIT_CONE_FOOTPRINT
-        float bound = footprintPerHeight * (startHeight + heightPerDistance * t);
-        float stepLength = max(stepScale * max(voxelSize, min(widthPerDistance * t, bound)), 0.5 * voxelSize);
-        float tMid = t + 0.5 * stepLength;
-        // Level log2(d / voxelSize) has voxels d wide (clamped to the coarsest level).
-        float diameter = max(voxelSize, min(widthPerDistance * tMid, footprintPerHeight * (startHeight + heightPerDistance * tMid)));
+#define LIT_CONE_STEP_GEOMETRY                                                                                \
+    float bound = footprintPerHeight * (startHeight + heightPerDistance * t);                                \
+    float stepLength = max(stepScale * max(voxelSize, min(widthPerDistance * t, bound)), 0.5 * voxelSize);   \
+    float tMid = t + 0.5 * stepLength;                                                                       \
+    float diameter = max(voxelSize, min(widthPerDistance * tMid,                                             \
+                                        footprintPerHeight * (startHeight + heightPerDistance * tMid)));     \
+    float levelVoxelSize = min(diameter, maxLevelVoxelSize);
 #else
-        float stepLength = max(stepScale * max(voxelSize, widthPerDistance * t), 0.5 * voxelSize);
-        float tMid = t + 0.5 * stepLength;
-        // Level log2(d / voxelSize) has voxels d wide (clamped to the coarsest level).
-        float diameter = max(voxelSize, widthPerDistance * tMid);
+#define LIT_CONE_STEP_GEOMETRY                                                                     \
+    float stepLength = max(stepScale * max(voxelSize, widthPerDistance * t), 0.5 * voxelSize);    \
+    float tMid = t + 0.5 * stepLength;                                                             \
+    float diameter = max(voxelSize, widthPerDistance * tMid);                                      \
+    float levelVoxelSize = min(diameter, maxLevelVoxelSize);
 #endif
-        float levelVoxelSize = min(diameter, maxLevelVoxelSize);
-        // The march goes on one sampled voxel past the volume's face (accurate mode): trilinear
-        // filtering spreads a surface on the face over a voxel on either side, and a cone stopped
-        // at the face would see only half of its opacity (a closed room whose walls are the
-        // volume's faces lost 45 % of its bounce light).
-        if (tMid < span.x || tMid > span.y + kPastFaceVoxels * levelVoxelSize) break;
-        vec4 s = sampleRadiance(uvwOrigin + tMid * uvwPerMetre, log2(levelVoxelSize / voxelSize), faceWeights, faceOffsets);
-        if (s.a > kConeMinOpacity) {
-            float a = 1.0 - pow(max(1.0 - s.a, 0.0), kOpacityPerVoxel * stepLength / levelVoxelSize);
-            // Straight colour = rgb / a of the premultiplied sample, weighted by the corrected opacity.
-            radiance += (1.0 - opacity) * (a / s.a) * decodeRadiance(s.rgb);
-            opacity += (1.0 - opacity) * a;
-            if (opacity >= kConeStopOpacity) {
-                // The last ≤ 5 % of the cone would see more of what it has been seeing (its
-                // radiance averaged by opacity), not black: count it so, which keeps a closed
-                // room's cones unbiased and makes the furnace exact for any opacity.
-                return vec4(radiance / opacity, 1.0);
-            }
-        }
-        t += stepLength;
+    // The march goes on one sampled voxel past the volume's face (accurate mode): trilinear filtering
+    // spreads a surface on the face over a voxel on either side, and a cone stopped at the face would
+    // see only half of its opacity (a closed room whose walls are the volume's faces lost 45 % of its
+    // bounce light). Straight colour = rgb / a of the premultiplied sample, weighted by the corrected
+    // opacity. Once the cone is opaque, the last ≤ 5 % of it would see more of what it has been seeing
+    // (its radiance averaged by opacity), not black: counted so, which keeps a closed room's cones
+    // unbiased and makes the furnace exact for any opacity.
+#define LIT_CONE_STEP_SAMPLE(SAMPLE)                                                                            \
+    if (tMid < span.x || tMid > span.y + kPastFaceVoxels * levelVoxelSize) break;                               \
+    vec4 s = SAMPLE(uvwOrigin + tMid * uvwPerMetre, log2(levelVoxelSize / voxelSize), faceWeights, faceOffsets); \
+    if (s.a > kConeMinOpacity) {                                                                                \
+        float a = 1.0 - pow(max(1.0 - s.a, 0.0), kOpacityPerVoxel * stepLength / levelVoxelSize);               \
+        radiance += (1.0 - opacity) * (a / s.a) * decodeRadiance(s.rgb);                                        \
+        opacity += (1.0 - opacity) * a;                                                                         \
+        if (opacity >= kConeStopOpacity) return vec4(radiance / opacity, 1.0);                                  \
+    }                                                                                                           \
+    t += stepLength;
+#if LIT_CONE_ANISOTROPIC
+    // Samples finer than level 1 blend in the isotropic level 0. The sampled width only grows along
+    // the march (t and the height above the surface both grow), so once a step reaches level 1
+    // every later one does: the second loop reads the three directional volumes only.
+    for (; i < kConeMaxSteps && t <= maxDistance; ++i) {
+        LIT_CONE_STEP_GEOMETRY
+        if (levelVoxelSize >= 2.0 * voxelSize) break;
+        LIT_CONE_STEP_SAMPLE(sampleRadianceBelowLevel1)
     }
+#endif
+    for (; i < kConeMaxSteps && t <= maxDistance; ++i) {
+        LIT_CONE_STEP_GEOMETRY
+        LIT_CONE_STEP_SAMPLE(sampleRadiance)
+    }
+#undef LIT_CONE_STEP_GEOMETRY
+#undef LIT_CONE_STEP_SAMPLE
     // Left the volume or reached maxDistance: the unblocked rest of the cone sees the sky (sky.glsl).
     return vec4(radiance + (1.0 - opacity) * skyConeRadiance(direction, aperture), opacity);
 }

@@ -1,6 +1,7 @@
 // The reference path tracer against closed forms (label cpu). Each test renders a few thousand
 // paths at most; the whole file runs in a few seconds on 2 cores.
 #include "Log.h"
+#include "reference/AccuracyRegions.h"
 #include "reference/MicrofacetBrdf.h"
 #include "reference/DifferenceImage.h"
 #include "reference/PathTracer.h"
@@ -493,6 +494,62 @@ TEST(ReferenceProgressive, AccumulatesWhileStillAndRestartsOnChange) {
     EXPECT_EQ(progressive.status().restarts, 2u);
     EXPECT_GE(waitFor(2).samplesPerPixel, 2);
     progressive.stop();
+}
+
+
+// ---- Accuracy regions on the Cornell box's variants (issue #11's diagnosis) ----------------------
+
+// make-gi-suite's mirrored and colour-swapped Cornell boxes (assets/gi) are what they claim, and the
+// regions name each floor half by the wall on its side: a pixel of the mirrored box sees what the
+// pixel mirrored about the image's centre column sees in the Cornell box, at x negated; the red
+// wall's half of the floor is x < 0 in the Cornell box and x > 0 in both variants. (Those
+// scenes told a tracer defect from a property of the scene and the cone set: docs/GI.md.)
+TEST(AccuracyRegions, CornellVariantsAreMirroredAndRegionsFollowTheRedWall) {
+    // The benchmark's size: at 64² the short block's shadow is too small to survive the regions'
+    // two-pixel erosion.
+    constexpr int kSize = 128;
+    QuietLog log;
+    const auto load = [&](const std::filesystem::path& file) {
+        Scene scene = loadGltf(std::filesystem::path(LIT_SOURCE_DIR) / "assets" / file, log);
+        scene.updateWorldTransforms();
+        return scene;
+    };
+    const Scene original = load("cornell_box.gltf");
+    const Scene mirrored = load(std::filesystem::path("gi") / "cornell_mirrored.gltf");
+    const Scene swapped = load(std::filesystem::path("gi") / "cornell_swapped.gltf");
+    const ReferenceScene originalTracer(original, log), mirroredTracer(mirrored, log), swappedTracer(swapped, log);
+    const std::vector<FirstHit> a = traceFirstHits(originalTracer, sceneCameraView(original, 0, 1.0f), kSize, kSize);
+    const std::vector<FirstHit> b = traceFirstHits(mirroredTracer, sceneCameraView(mirrored, 0, 1.0f), kSize, kSize);
+    const std::vector<FirstHit> c = traceFirstHits(swappedTracer, sceneCameraView(swapped, 0, 1.0f), kSize, kSize);
+
+    int compared = 0, sameNode = 0;
+    float worst = 0.0f;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const FirstHit& p = a[static_cast<std::size_t>(y * kSize + x)];
+            const FirstHit& q = b[static_cast<std::size_t>(y * kSize + (kSize - 1 - x))];
+            if (p.node < 0 || q.node < 0) continue;
+            ++compared;
+            sameNode += original.nodes[static_cast<std::size_t>(p.node)].name == mirrored.nodes[static_cast<std::size_t>(q.node)].name;
+            worst = std::max(worst, glm::length(glm::vec3(-p.position.x, p.position.y, p.position.z) - q.position));
+        }
+    ASSERT_GT(compared, kSize * kSize / 2);
+    // Pixel centres mirror exactly (even width); a few pixels on silhouettes may fall either side.
+    EXPECT_GE(sameNode, compared - kSize / 4) << "of " << compared;
+    EXPECT_LT(worst, 0.05f) << "m, largest distance between a hit and its mirror image (off silhouettes it is ~0)";
+
+    const auto redSideX = [&](const Scene& scene, const std::vector<FirstHit>& hits) {
+        for (const NamedRegion& r : cornellBoxRegions(scene, hits, kSize, kSize))
+            if (r.name == "shadowed floor by red wall" && r.pixels() > 0) return maskedMean([&] {
+                std::vector<float> xs;
+                for (const FirstHit& h : hits) xs.insert(xs.end(), {h.position.x, 0.0f, 0.0f});
+                return xs;
+            }(), r.mask).x;
+        return 0.0;
+    };
+    EXPECT_LT(redSideX(original, a), -0.2);
+    EXPECT_GT(redSideX(mirrored, b), 0.2);
+    EXPECT_GT(redSideX(swapped, c), 0.2);
 }
 
 }  // namespace

@@ -4,10 +4,14 @@
 // truth (docs/GI.md, "Accuracy against the reference"; tools/gi-accuracy.sh runs it).
 //
 //   lit-gi-accuracy [--voxels 64,128,256] [--spp 256] [--size 128] [--scenes a,b,...]
-//                   [--shared DIR] [--out FILE.md] [--bounces N] [--settings FILE.json]
+//                   [--shared DIR] [--out FILE.md] [--bounces N] [--settings FILE.json] [--cone-split]
 // --bounces N: light bounces of both the VCT (RenderSettings::bounces) and the reference (default 1);
 // --settings: RenderSettings JSON the VCT starts from (size, view, GI switch, resolution and
 // bounces are set by the tool), to compare GI variants (e.g. anisotropicVoxels off).
+// --cone-split: also a table of the indirect diffuse of each Cornell region split by the six
+// diffuse cones' regions of the hemisphere (see coneSplit below), the truth's and the VCT's.
+// cornell_room, cornell_mirrored and cornell_swapped (assets/gi, the Cornell box rebuilt, mirrored
+// in x, its wall colours swapped) run only when --scenes names them (diagnostics, issue #11).
 //
 // Metrics (luminance, per scene and resolution; regions from reference/AccuracyRegions.h):
 //   indirect-only VCT/ref   mean indirect radiance (L_ID + L_IS) of the VCT over the pixels lit only
@@ -26,6 +30,7 @@
 #include "context/HeadlessContext.h"
 #include "gl/Capabilities.h"
 #include "reference/AccuracyRegions.h"
+#include "reference/PunctualLights.h"
 #include "reference/PathTracer.h"
 #include "reference/ReferenceScene.h"
 #include "scene/CameraView.h"
@@ -45,6 +50,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -66,6 +72,7 @@ struct SuiteScene {
     std::string what;          // one line for the table
     bool sealed = false;       // report inside radiance as a fraction of the sunlit ground's
     bool framedInside = false;  // no camera in the file: look along the long axis from inside
+    bool onlyWhenNamed = false;  // a diagnostic variant: run only when --scenes names it
 };
 
 struct Args {
@@ -77,6 +84,7 @@ struct Args {
     fs::path out;
     int bounces = 1;
     RenderSettings vct;  // what the VCT runs start from (--settings)
+    bool coneSplit = false;
 };
 
 std::string readTextFile(const fs::path& path) {
@@ -100,6 +108,10 @@ Args parseArgs(int argc, char** argv) {
     args.shared = fs::path(LIT_SOURCE_DIR) / ".." / "shared" / "scenes";
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
+        if (flag == "--cone-split") {
+            args.coneSplit = true;
+            continue;
+        }
         if (i + 1 >= argc) throw std::invalid_argument("missing value for " + flag);
         const std::string value = argv[++i];
         if (flag == "--voxels") {
@@ -140,8 +152,14 @@ std::vector<SuiteScene> suite(const Args& args) {
         {"thin_walls", assets / "gi" / "thin_walls.gltf", "Cornell room with walls 1 voxel thick at 128³, 20 lx sun on the roof"},
         {"glossy_floor", assets / "gi" / "glossy_floor.gltf", "Cornell room with a glossy metal floor (roughness 0.2)"},
         {"sponza", args.shared / "sponza" / "Sponza.gltf", "Sponza (textured, ../shared/scenes), default 3 lx sun", false, true},
+        {"cornell_room", assets / "gi" / "cornell_room.gltf", "the Cornell box rebuilt by make-gi-suite", false, false, true},
+        {"cornell_mirrored", assets / "gi" / "cornell_mirrored.gltf", "the Cornell box mirrored in x", false, false, true},
+        {"cornell_swapped", assets / "gi" / "cornell_swapped.gltf", "the Cornell box, wall colours swapped", false, false, true},
     };
-    if (args.only.empty()) return scenes;
+    if (args.only.empty()) {
+        std::erase_if(scenes, [](const SuiteScene& s) { return s.onlyWhenNamed; });
+        return scenes;
+    }
     std::vector<SuiteScene> chosen;
     for (const SuiteScene& s : scenes)
         if (std::find(args.only.begin(), args.only.end(), s.name) != args.only.end()) chosen.push_back(s);
@@ -199,8 +217,81 @@ std::string format(const char* fmt, double value) {
 std::string ratioCell(double vct, double truth) { return truth > 0.0 ? format("%.2f", vct / truth) : "–"; }
 
 struct SceneReport {
-    std::string summaryRows, regionRows, bleedingRows, leakRows;
+    std::string summaryRows, regionRows, bleedingRows, leakRows, coneRows;
 };
+
+// The indirect diffuse of a pixel split by the regions of the hemisphere the six diffuse cones
+// stand for (cone.glsl: cone 0 the cap θ < 30°, cones 1..5 the ring 30° < θ < 90° in five 72°
+// sectors centred on their axes' azimuths, in the same tangent frame, unturned as the accurate
+// mode and a still without temporal accumulation trace them). For each region i the truth's share
+// is albedo/π · ∫_{Ω_i} L cos θ dω, the one-bounce radiance L of what a ray hits being its
+// Lambertian direct light (albedo/π · E, shadow rays: what the VCT injects into the voxels), by
+// cosine-weighted stratified sampling. Summed over i it is the one-bounce indirect diffuse with
+// Lambertian second surfaces (the reference's also has their GGX term). The VCT's share of cone i
+// is its indirect diffuse with every other cone's weight 0 (shaders/include/shared.h,
+// LIT_DIFFUSE_CONE_WEIGHTS, through a copy of the shaders under LIT_SHADER_DIR).
+constexpr int kConeSplitSamplesPerSide = 24;  // 576 stratified directions per pixel
+
+// cone.glsl tangentFrame (Duff et al. 2017), column by column.
+glm::mat3 coneTangentFrame(const glm::vec3& n) {
+    const float s = n.z >= 0.0f ? 1.0f : -1.0f;
+    const float a = -1.0f / (s + n.z);
+    const float b = n.x * n.y * a;
+    return glm::mat3(glm::vec3(1.0f + s * n.x * n.x * a, s * b, -s * n.x), glm::vec3(b, s + n.y * n.y * a, -n.y), n);
+}
+
+// Which diffuse cone's region a tangent-space direction (z up) falls in.
+int coneRegion(const glm::vec3& d) {
+    if (d.z > std::cos(std::numbers::pi_v<float> / 6.0f)) return 0;
+    float azimuth = std::atan2(d.y, d.x);  // cone 1 at 0, cone k at (k − 1)·72°
+    if (azimuth < 0.0f) azimuth += 2.0f * std::numbers::pi_v<float>;
+    const int sector = static_cast<int>(std::floor(azimuth / (0.4f * std::numbers::pi_v<float>) + 0.5f)) % 5;
+    return 1 + sector;
+}
+
+// Per cone region, the truth's indirect diffuse share averaged over the pixels of `mask` (RGB).
+std::vector<glm::dvec3> coneSplit(const ReferenceScene& scene, const std::vector<FirstHit>& hits, const PixelMask& mask) {
+    std::vector<glm::dvec3> sums(LIT_DIFFUSE_CONE_COUNT, glm::dvec3(0.0));
+    std::size_t pixels = 0;
+    const int k = kConeSplitSamplesPerSide;
+    for (std::size_t p = 0; p < hits.size(); ++p) {
+        if (!mask[p]) continue;
+        ++pixels;
+        const FirstHit& first = hits[p];
+        const glm::vec3 albedo = [&] {
+            SurfaceHit h;
+            const glm::vec3 eyeSide = first.position + first.normal * 0.01f;
+            return scene.intersect(Ray{eyeSide, -first.normal, 0.0f, 0.02f}, h) ? h.baseColor * (1.0f - h.metalness) : glm::vec3(0.0f);
+        }();
+        const glm::mat3 frame = coneTangentFrame(first.normal);
+        const glm::vec3 origin = first.position + first.normal * 1e-4f;
+        for (int i = 0; i < k; ++i)
+            for (int j = 0; j < k; ++j) {
+                // Cosine-weighted (Malley): a uniform point of the unit disc lifted to the hemisphere.
+                const float u = (static_cast<float>(i) + 0.5f) / static_cast<float>(k), v = (static_cast<float>(j) + 0.5f) / static_cast<float>(k);
+                const float r = std::sqrt(u), phi = 2.0f * std::numbers::pi_v<float> * v;
+                const glm::vec3 local(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u)));
+                const glm::vec3 direction = glm::normalize(frame * local);
+                SurfaceHit hit;
+                if (!scene.intersect(Ray{origin, direction, 0.0f, INFINITY}, hit)) continue;
+                glm::vec3 radiance(0.0f);
+                const glm::vec3 n = glm::dot(hit.normal, direction) < 0.0f ? hit.normal : -hit.normal;
+                const glm::vec3 lightOrigin = hit.position + hit.geometricNormal * 1e-4f;
+                for (const gpu::GpuLight& light : scene.punctualLights()) {
+                    const PunctualSample ls = samplePunctualLight(light, hit.position);
+                    const float NdotL = glm::dot(n, ls.l);
+                    if (NdotL <= 0.0f) continue;
+                    if (scene.occluded(Ray{lightOrigin, ls.l, 0.0f, std::isinf(ls.distance) ? INFINITY : ls.distance * (1.0f - 1e-4f)}))
+                        continue;
+                    radiance += ls.irradiance * NdotL * hit.baseColor * (1.0f - hit.metalness) / std::numbers::pi_v<float>;
+                }
+                // E_i = π · mean over the cosine-distributed samples of L·[in Ω_i]; × albedo/π.
+                sums[static_cast<std::size_t>(coneRegion(local))] += glm::dvec3(albedo * radiance) / static_cast<double>(k * k);
+            }
+    }
+    for (glm::dvec3& s : sums) s /= static_cast<double>(std::max<std::size_t>(pixels, 1));
+    return sums;
+}
 
 SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& renderer, Log& log) {
     SceneReport report;
@@ -356,6 +447,29 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
         for (const VctRun& run : runs) bleedRow += " | " + bleed(run.images.indirectDiffuse);
         report.bleedingRows += bleedRow + " |\n";
     }
+    if (args.coneSplit) {
+        const auto rgb = [](const glm::dvec3& c) {
+            char buffer[96];
+            std::snprintf(buffer, sizeof buffer, "%.4f %.4f %.4f (%.4f)", c.r, c.g, c.b, luminance(c));
+            return std::string(buffer);
+        };
+        for (const NamedRegion& region : cornellBoxRegions(scene, hits, size, size)) {
+            if (region.pixels() == 0) continue;
+            const std::vector<glm::dvec3> split = coneSplit(referenceScene, hits, region.mask);
+            glm::dvec3 total(0.0);
+            for (int i = 0; i < LIT_DIFFUSE_CONE_COUNT; ++i) {
+                total += split[static_cast<std::size_t>(i)];
+                report.coneRows += "| " + entry.name + " | " + region.name + " | truth cone " + std::to_string(i) + " | " +
+                                   rgb(split[static_cast<std::size_t>(i)]) + " |\n";
+            }
+            report.coneRows += "| " + entry.name + " | " + region.name + " | truth, sum | " + rgb(total) + " |\n";
+            report.coneRows += "| " + entry.name + " | " + region.name + " | reference L_ID | " +
+                               rgb(maskedMean(truth.indirectDiffuse, region.mask)) + " |\n";
+            for (const VctRun& run : runs)
+                report.coneRows += "| " + entry.name + " | " + region.name + " | VCT " + std::to_string(run.voxels) + "³ L_ID | " +
+                                   rgb(maskedMean(run.images.indirectDiffuse, region.mask)) + " |\n";
+        }
+    }
 
     if (entry.sealed) {
         const double outside = outsideRadiance(scene);
@@ -391,7 +505,7 @@ int main(int argc, char** argv) {
             voxelColumns += " | VCT " + std::to_string(v) + "³";
             voxelRule += "|---:";
         }
-        std::string summary, regions, bleeding, leaks, skipped;
+        std::string summary, regions, bleeding, leaks, cones, skipped;
         for (const SuiteScene& entry : suite(args)) {
             if (!fs::exists(entry.file)) {
                 skipped += "- " + entry.name + ": skipped, " + entry.file.lexically_normal().string() + " is not there\n";
@@ -403,6 +517,7 @@ int main(int argc, char** argv) {
             regions += r.regionRows;
             bleeding += r.bleedingRows;
             leaks += r.leakRows;
+            cones += r.coneRows;
         }
 
         std::string md;
@@ -420,6 +535,9 @@ int main(int argc, char** argv) {
             md += "\nLight inside the sealed room: mean radiance of the inside view as a fraction of the sunlit ground's "
                   "radiance (W/(sr·m²)); any light inside is a leak:\n\n| scene | outside | reference" + voxelColumns +
                   " |\n|---|---:|---:" + voxelRule + "|\n" + leaks;
+        if (!cones.empty())
+            md += "\nIndirect diffuse by diffuse-cone region (--cone-split; W/(sr·m²) R G B (luminance), region means):\n\n"
+                  "| scene | region | what | value |\n|---|---|---|---|\n" + cones;
         if (!skipped.empty()) md += "\n" + skipped;
         if (args.out.empty()) {
             std::fputs(md.c_str(), stdout);
