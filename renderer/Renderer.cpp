@@ -245,7 +245,10 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         {
             Profiler::Scope scope(profiler, "voxelize");
             voxelize.execute(scene, *gpuScene, voxels, counters);
+        }
+        {
             // Once per voxelization: the mip chain is then built over these (light edits too).
+            Profiler::Scope scope(profiler, "mip lists");
             mipmap.listOccupiedParents(voxels);
         }
         voxelKey = key;
@@ -343,6 +346,9 @@ void Renderer::Impl::reportGiUpdate() {
     std::string text = pendingVoxelize ? "re-voxelized " : "re-injected ";
     text += std::to_string(voxels.resolution()) + "³ (" + pendingGiReason + "): ";
     if (pendingVoxelize && voxelizeTiming) text += "voxelize " + formatMs(voxelizeTiming->gpuMs) + ", ";
+    const PassTiming* listsTiming = profiler.lastRun("mip lists");
+    if (pendingVoxelize && listsTiming && listsTiming->frame >= pendingGiFrame)
+        text += "mip lists " + formatMs(listsTiming->gpuMs) + ", ";
     const double n = voxels.resolution();
     char occupancy[96];
     std::snprintf(occupancy, sizeof occupancy, "inject %s over %u occupied voxels (%.2f %% of the grid%s)",
