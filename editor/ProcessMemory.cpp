@@ -37,6 +37,12 @@ ProcessMemory ProcessMemory::query() {
     return memory;
 }
 
+void ProcessMemory::releaseFreeHeap() {
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+    malloc_trim(0);
+#endif
+}
+
 std::string ProcessMemory::describe() const {
     return "memory: heap in use " + kib(heapInUseBytes) + " (" + kib(heapMappedBytes) + " in own mappings), heap free " +
            kib(heapFreeBytes) + ", resident " + std::to_string(residentBytes / 1024) + " KiB";
