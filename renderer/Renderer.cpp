@@ -246,6 +246,11 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             Profiler::Scope scope(profiler, "voxelize");
             voxelize.execute(scene, *gpuScene, voxels, counters);
         }
+        {
+            // Once per voxelization: the mip chain is then built over these (light edits too).
+            Profiler::Scope scope(profiler, "mip lists");
+            mipmap.listOccupiedParents(voxels);
+        }
         voxelKey = key;
         voxelsValid = true;
         ++voxelGeneration;
@@ -255,6 +260,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         occupiedCount = voxels.readOccupiedCount();
         occupiedListComplete = occupiedCount <= voxels.occupiedCapacity();
         if (!occupiedListComplete) {
+            voxels.setParentListsValid(false);  // listed from an incomplete list: mipmaps over the whole grid
             log.warning("occupied-voxel list overflowed (" + std::to_string(occupiedCount) + " voxels, room for " +
                         std::to_string(voxels.occupiedCapacity()) + "); injecting the whole grid until the next voxelization");
             voxels.growOccupiedList(occupiedCount + occupiedCount / 4);
@@ -268,7 +274,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         }
         {
             Profiler::Scope scope(profiler, "mipmap");
-            mipmap.execute(voxels, settings.anisotropicVoxels);
+            mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
         }
         // Bounces 2..N: each re-injects the voxels' cone-traced indirect light (docs/GI.md).
         const int bounces = std::clamp(settings.bounces, 1, kMaxBounces);
@@ -277,7 +283,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             Profiler::Scope scope(profiler, "bounces");
             for (int b = 2; b <= bounces; ++b) {
                 inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete);
-                mipmap.execute(voxels, settings.anisotropicVoxels);
+                mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
             }
         }
         injectedBounces = bounces;
@@ -340,6 +346,9 @@ void Renderer::Impl::reportGiUpdate() {
     std::string text = pendingVoxelize ? "re-voxelized " : "re-injected ";
     text += std::to_string(voxels.resolution()) + "³ (" + pendingGiReason + "): ";
     if (pendingVoxelize && voxelizeTiming) text += "voxelize " + formatMs(voxelizeTiming->gpuMs) + ", ";
+    const PassTiming* listsTiming = profiler.lastRun("mip lists");
+    if (pendingVoxelize && listsTiming && listsTiming->frame >= pendingGiFrame)
+        text += "mip lists " + formatMs(listsTiming->gpuMs) + ", ";
     const double n = voxels.resolution();
     char occupancy[96];
     std::snprintf(occupancy, sizeof occupancy, "inject %s over %u occupied voxels (%.2f %% of the grid%s)",
@@ -647,7 +656,7 @@ bool Renderer::reloadChangedShaders() {
 
 MipmapTimings Renderer::benchmarkMipmaps(int repetitions) {
     if (!impl_->voxelsValid) return {};
-    return lit::benchmarkMipmaps(impl_->mipmap, impl_->voxels, repetitions);
+    return lit::benchmarkMipmaps(impl_->mipmap, impl_->voxels, repetitions, impl_->injectedAnisotropic);
 }
 
 float Renderer::exposureEv(const RenderSettings& settings) const {

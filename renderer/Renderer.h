@@ -82,8 +82,9 @@ public:
     // program stays. Returns true if anything was reloaded.
     bool reloadChangedShaders();
 
-    // Times the compute mip chain against glGenerateTextureMipmap on the current radiance volume
-    // (after a GI frame; returns zeros before one).
+    // Times the compute mip chain, over the whole grid and over the occupied parents, against
+    // glGenerateTextureMipmap on the current radiance volume (after a GI frame; returns zeros
+    // before one). With the last injection's anisotropic setting.
     MipmapTimings benchmarkMipmaps(int repetitions);
     // The exposure (stops) the last frame was tone-mapped with: the metered one when
     // settings.autoExposure was on for it (reads a GPU buffer back: tools and tests), else

@@ -38,7 +38,15 @@
 //   LIT_MIP_PACKED        1: the RGBA8 volume is bound as r32ui (faster loads on llvmpipe)
 //   LIT_MIP_LEVELS        most levels one dispatch writes (1..3)
 //   LIT_MIP_GROUP_X/Y/Z   work-group size
+//   LIT_MIP_FROM_LIST     1: one invocation per entry of level k+1's occupied-parent list
+//                         (mip_parents.glsl, indirect dispatch, LIT_MIP_LEVELS 1, groups of
+//                         LIT_INJECT_LIST_GROUP_SIZE); the level's other voxels are not written
+//                         and stay as cleared (0: all their children are empty, which is what the
+//                         whole-grid chain computes for them)
 #include "shared.h"
+#if LIT_MIP_FROM_LIST
+#include "mip_parents.glsl"
+#endif
 
 layout(local_size_x = LIT_MIP_GROUP_X, local_size_y = LIT_MIP_GROUP_Y, local_size_z = LIT_MIP_GROUP_Z) in;
 
@@ -64,6 +72,9 @@ layout(binding = LIT_IMG_MIP_DEST3, MIP_FORMAT) uniform writeonly MIP_IMAGE uDes
 
 // x: edge (voxels) of the last level this dispatch writes, y: how many levels it writes (1..3).
 uniform ivec2 uDispatch;
+#if LIT_MIP_FROM_LIST
+LIT_MIP_PARENT_READER;
+#endif
 
 // Children of a block, index i = x + 2y + 4z: i's partner along X is i^1, along Y i^2, along Z i^4.
 const ivec3 kChild[8] = ivec3[8](ivec3(0, 0, 0), ivec3(1, 0, 0), ivec3(0, 1, 0), ivec3(1, 1, 0),
@@ -168,6 +179,11 @@ void reduceThrice(ivec3 p) {
 #endif
 
 void main() {
+#if LIT_MIP_FROM_LIST
+    ivec3 parent;
+    if (listedParent(parent)) reduceOnce(parent);
+    return;
+#endif
     ivec3 p = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(p, ivec3(uDispatch.x)))) return;
 #if LIT_MIP_LEVELS >= 3

@@ -26,9 +26,18 @@
 // Defines set by MipmapPass:
 //   LIT_MIP_RGBA8            1: rgba8 images, 0: rgba16f
 //   LIT_DIRECTIONAL_FROM_ISO 1: build level 1 from the isotropic level 0 (+ normals), 0: from level k
+//   LIT_MIP_FROM_LIST        1: one invocation per entry of the occupied-parent list of the
+//                            radiance level this directional level mirrors (mip_parents.glsl,
+//                            indirect dispatch); other voxels stay as cleared (0, as the whole
+//                            grid computes them: their children are all empty)
 #include "shared.h"
-
+#if LIT_MIP_FROM_LIST
+#include "mip_parents.glsl"
+layout(local_size_x = LIT_INJECT_LIST_GROUP_SIZE) in;
+LIT_MIP_PARENT_READER;
+#else
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#endif
 
 #if LIT_MIP_RGBA8
 #define MIP_FORMAT rgba8
@@ -70,7 +79,12 @@ vec4 child(ivec3 p, vec3 travel) {
 }
 
 void main() {
+#if LIT_MIP_FROM_LIST
+    ivec3 p;
+    if (!listedParent(p)) return;
+#else
     ivec3 p = ivec3(gl_GlobalInvocationID);
+#endif
     if (any(greaterThanEqual(p, ivec3(uFace.z)))) return;
     int axis = uFace.x;
     bool negative = uFace.y != 0;

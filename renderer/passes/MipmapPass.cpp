@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <string>
@@ -56,11 +57,16 @@ struct Reduction {
 constexpr Reduction kRgba16f{1, {8, 8, 8}};
 constexpr Reduction kRgba8{3, {8, 8, 1}};
 
-std::string definesFor(bool rgba8, bool packed, const Reduction& r) {
+// Over the occupied parents: one level per dispatch, one invocation per list entry, in groups of
+// the list's dispatch command.
+constexpr Reduction kFromList{1, {LIT_INJECT_LIST_GROUP_SIZE, 1, 1}};
+
+std::string definesFor(bool rgba8, bool packed, const Reduction& r, bool fromList = false) {
     const std::pair<const char*, int> values[] = {
         {"LIT_MIP_RGBA8", rgba8 ? 1 : 0},        {"LIT_MIP_PACKED", packed ? 1 : 0},
         {"LIT_MIP_LEVELS", r.levelsPerDispatch}, {"LIT_MIP_GROUP_X", r.groupSize[0]},
         {"LIT_MIP_GROUP_Y", r.groupSize[1]},     {"LIT_MIP_GROUP_Z", r.groupSize[2]},
+        {"LIT_MIP_FROM_LIST", fromList ? 1 : 0},
     };
     std::string defines;
     for (const auto& [name, value] : values)
@@ -78,6 +84,14 @@ bool rgba8BindsAsR32ui() {
 
 int ceilDiv(int a, int b) { return (a + b - 1) / b; }
 
+std::string directionalDefines(bool rgba8, bool fromIso, bool fromList) {
+    return std::string("#define LIT_MIP_RGBA8 ") + (rgba8 ? "1" : "0") + "\n#define LIT_DIRECTIONAL_FROM_ISO " +
+           (fromIso ? "1" : "0") + "\n#define LIT_MIP_FROM_LIST " + (fromList ? "1" : "0") + "\n";
+}
+
+// Byte offset of level k's DispatchIndirectCommand in the parent lists (after its count).
+GLintptr parentDispatchOffset(int level) { return static_cast<GLintptr>(16 * level + 4); }
+
 std::string hexFormat(GLenum format) {
     char text[16];
     std::snprintf(text, sizeof text, "0x%04X", format);
@@ -93,24 +107,150 @@ MipmapPass::MipmapPass(const std::filesystem::path& shaderRoot)
       rgba16f_(shaderRoot, "mipmap rgba16f", {{GL_COMPUTE_SHADER, "mipmap.comp.glsl"}},
                definesFor(false, false, kRgba16f)),
       directionalFromIso8_(shaderRoot, "directional mipmap rgba8 from level 0",
-                           {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
-                           "#define LIT_MIP_RGBA8 1\n#define LIT_DIRECTIONAL_FROM_ISO 1\n"),
+                           {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}}, directionalDefines(true, true, false)),
       directionalFromIso16f_(shaderRoot, "directional mipmap rgba16f from level 0",
                              {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
-                             "#define LIT_MIP_RGBA8 0\n#define LIT_DIRECTIONAL_FROM_ISO 1\n"),
+                             directionalDefines(false, true, false)),
       directional8_(shaderRoot, "directional mipmap rgba8", {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
-                    "#define LIT_MIP_RGBA8 1\n#define LIT_DIRECTIONAL_FROM_ISO 0\n"),
+                    directionalDefines(true, false, false)),
       directional16f_(shaderRoot, "directional mipmap rgba16f", {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
-                      "#define LIT_MIP_RGBA8 0\n#define LIT_DIRECTIONAL_FROM_ISO 0\n") {}
+                      directionalDefines(false, false, false)),
+      listRgba8_(shaderRoot, "mipmap rgba8 over occupied parents", {{GL_COMPUTE_SHADER, "mipmap.comp.glsl"}},
+                 definesFor(true, rgba8Packed_, kFromList, true)),
+      listRgba16f_(shaderRoot, "mipmap rgba16f over occupied parents", {{GL_COMPUTE_SHADER, "mipmap.comp.glsl"}},
+                   definesFor(false, false, kFromList, true)),
+      listFromIso8_(shaderRoot, "directional mipmap rgba8 from level 0 over occupied parents",
+                    {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}}, directionalDefines(true, true, true)),
+      listFromIso16f_(shaderRoot, "directional mipmap rgba16f from level 0 over occupied parents",
+                      {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}}, directionalDefines(false, true, true)),
+      listDirectional8_(shaderRoot, "directional mipmap rgba8 over occupied parents",
+                        {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}}, directionalDefines(true, false, true)),
+      listDirectional16f_(shaderRoot, "directional mipmap rgba16f over occupied parents",
+                          {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}}, directionalDefines(false, false, true)),
+      listParents_(shaderRoot, "occupied parents", {{GL_COMPUTE_SHADER, "mipmap_parents.comp.glsl"}}) {}
 
-void MipmapPass::execute(const VoxelVolume& volume, bool anisotropic) {
-    execute(volume.radiance());
-    if (anisotropic) executeDirectional(volume);
+void MipmapPass::listOccupiedParents(VoxelVolume& volume) {
+    const int n = volume.resolution();
+    if (n < 2 || !volume.occupiedList()) return;
+    volume.ensureParentLists();
+    const VoxelVolume::ParentLayout& layout = volume.parentLayout();
+    const gl::Buffer& parents = volume.parentLists();
+    // Every level: count 0, dispatch 0 × 1 × 1; every bitmask zero.
+    std::array<std::uint32_t, 4 * LIT_MIP_LIST_LEVELS> header{};
+    for (int level = 0; level < LIT_MIP_LIST_LEVELS; ++level) {
+        header[static_cast<std::size_t>(4 * level + 2)] = 1u;
+        header[static_cast<std::size_t>(4 * level + 3)] = 1u;
+    }
+    glNamedBufferSubData(parents.id(), 0, sizeof header, header.data());
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(parents.id(), GL_R32UI,
+                              static_cast<GLintptr>(VoxelVolume::kParentHeaderBytes + std::size_t{4} * layout.maskBegin),
+                              static_cast<GLsizeiptr>(std::size_t{4} * layout.maskWords), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+
+    const gl::Program& program = listParents_;
+    program.use();
+    volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
+    parents.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MIP_PARENTS);
+    glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
+    const int levels = std::min(volume.mipCount(), LIT_MIP_LIST_LEVELS);
+    for (int level = 1; level < levels; ++level) {
+        const auto k = static_cast<std::size_t>(level);
+        glProgramUniform1i(program.id(), program.location("uLevel"), level);
+        glProgramUniform1ui(program.id(), program.location("uChildList"), level > 1 ? layout.listOffset[k - 1] : 0u);
+        glProgramUniform1ui(program.id(), program.location("uList"), layout.listOffset[k]);
+        glProgramUniform1ui(program.id(), program.location("uMask"), layout.maskOffset[k]);
+        glProgramUniform1i(program.id(), program.location("uEdge"), std::max(n >> level, 1));
+        // Level k's children: the voxelizer's list (its command follows the count) or level k−1's.
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        const gl::Buffer& children = level == 1 ? volume.occupiedList() : parents;
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, children.id());
+        glDispatchComputeIndirect(level == 1 ? 4 : parentDispatchOffset(level - 1));
+    }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    volume.setParentListsValid(true);
 }
 
-void MipmapPass::executeDirectional(const VoxelVolume& volume) {
+void MipmapPass::execute(VoxelVolume& volume, bool anisotropic, bool overOccupiedParents) {
+    if (overOccupiedParents && volume.parentListsValid())
+        executeOverParents(volume);
+    else
+        execute(volume.radiance());
+    if (anisotropic) executeDirectional(volume, overOccupiedParents);
+}
+
+void MipmapPass::executeOverParents(const VoxelVolume& volume) {
+    const gl::Texture& radiance = volume.radiance();
+    const bool rgba8 = volume.radianceRgba8();
+    const gl::Program& program = rgba8 ? listRgba8_ : listRgba16f_;
+    const GLenum imageFormat = rgba8 ? (rgba8Packed_ ? GL_R32UI : GL_RGBA8) : GL_RGBA16F;
+    const GLint listLocation = program.location("uParentList");
+    const int levels = std::min({radiance.desc().levels, volume.mipCount(), LIT_MIP_LIST_LEVELS});
+    // Level 0 may just have been written with imageStore; the lists with a compute shader.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    program.use();
+    volume.parentLists().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MIP_PARENTS);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, volume.parentLists().id());
+    for (int level = 1; level < levels; ++level) {
+        glBindImageTexture(LIT_IMG_MIP_SOURCE, radiance.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, imageFormat);
+        glBindImageTexture(LIT_IMG_MIP_DEST, radiance.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, imageFormat);
+        glProgramUniform2i(program.id(), listLocation, level,
+                           static_cast<GLint>(volume.parentLayout().listOffset[static_cast<std::size_t>(level)]));
+        glDispatchComputeIndirect(parentDispatchOffset(level));
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the next level reads this one
+    }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void MipmapPass::executeDirectionalOverParents(const VoxelVolume& volume) {
+    const bool rgba8 = volume.radianceRgba8();
+    const GLenum format = volume.radianceFormat();
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    volume.parentLists().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MIP_PARENTS);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, volume.parentLists().id());
+    for (int face = 0; face < LIT_VOXEL_FACE_COUNT; ++face) {
+        const gl::Texture& target = volume.directional(face / 2);
+        const bool negative = face % 2 == 1;
+        // Directional level L mirrors radiance level L + 1: its voxels are that level's parents.
+        const int levels = std::min(target.desc().levels, LIT_MIP_LIST_LEVELS - 1);
+        for (int level = 0; level < levels; ++level) {
+            const gl::Program& program = level == 0 ? (rgba8 ? listFromIso8_ : listFromIso16f_)
+                                                    : (rgba8 ? listDirectional8_ : listDirectional16f_);
+            program.use();
+            if (level == 0)
+                glBindImageTexture(LIT_IMG_MIP_SOURCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_READ_ONLY, format);
+            else
+                glBindImageTexture(LIT_IMG_MIP_SOURCE, target.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, format);
+            glBindImageTexture(LIT_IMG_MIP_DEST, target.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, format);
+            const int edge = std::max(target.desc().height >> level, 1);
+            glProgramUniform3i(program.id(), program.location("uFace"), face / 2, face % 2, edge);
+            glProgramUniform2i(program.id(), program.location("uOffsets"), level > 0 && negative ? 4 * edge : 0,
+                               negative ? 2 * edge : 0);
+            const int radianceLevel = level + 1;
+            glProgramUniform2i(program.id(), program.location("uParentList"), radianceLevel,
+                               static_cast<GLint>(volume.parentLayout().listOffset[static_cast<std::size_t>(radianceLevel)]));
+            glDispatchComputeIndirect(parentDispatchOffset(radianceLevel));
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
+    }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void MipmapPass::executeDirectional(VoxelVolume& volume, bool overOccupiedParents) {
     const int n = volume.resolution();
     if (n < 2 || !volume.directional(0)) return;
+    if (overOccupiedParents && volume.parentListsValid()) {
+        // Voxels off the lists keep what they hold: zero them once after a voxelization.
+        if (volume.directionalStale()) volume.clearDirectional();
+        volume.setDirectionalStale(false);
+        executeDirectionalOverParents(volume);
+        return;
+    }
+    volume.setDirectionalStale(false);  // every voxel is written below
     const bool rgba8 = volume.radianceRgba8();
     const GLenum format = volume.radianceFormat();
     constexpr int kGroup = 4;  // mipmap_directional.comp.glsl: 4×4×4 work groups
@@ -220,23 +360,28 @@ double medianOf(std::vector<double> v) {
 
 }  // namespace
 
-MipmapTimings benchmarkMipmaps(MipmapPass& pass, const VoxelVolume& volume, int repetitions) {
+MipmapTimings benchmarkMipmaps(MipmapPass& pass, VoxelVolume& volume, int repetitions, bool anisotropic) {
     MipmapTimings t;
     t.resolution = volume.resolution();
     t.rgba8 = volume.radianceRgba8();
     t.repetitions = std::clamp(repetitions, 1, 100);
+    t.anisotropic = anisotropic;
+    const bool lists = volume.parentListsValid();
     const GLuint texture = volume.radiance().id();
-    const auto compute = [&] { pass.execute(volume); };
+    const auto compute = [&] { pass.execute(volume, anisotropic, false); };
+    const auto occupied = [&] { pass.execute(volume, anisotropic, true); };
     const auto generate = [&] { glGenerateTextureMipmap(texture); };
 
     // Warm-up: llvmpipe compiles the blit shaders of glGenerateMipmap on first use (~0.25 s).
     std::vector<double> ignoredGpu, ignoredCpu;
     timeOnce(compute, ignoredGpu, ignoredCpu);
+    if (lists) timeOnce(occupied, ignoredGpu, ignoredCpu);
     timeOnce(generate, ignoredGpu, ignoredCpu);
 
-    std::vector<double> computeGpu, computeCpu, generateGpu, generateCpu;
+    std::vector<double> computeGpu, computeCpu, occupiedGpu, occupiedCpu, generateGpu, generateCpu;
     for (int i = 0; i < t.repetitions; ++i) {
         timeOnce(compute, computeGpu, computeCpu);
+        if (lists) timeOnce(occupied, occupiedGpu, occupiedCpu);
         timeOnce(generate, generateGpu, generateCpu);
     }
     compute();  // leave execute()'s chain in place, rounded as the cone tracer expects
@@ -247,6 +392,11 @@ MipmapTimings benchmarkMipmaps(MipmapPass& pass, const VoxelVolume& volume, int 
     t.generateMedianMs = medianOf(generateGpu);
     t.computeCpuMedianMs = medianOf(computeCpu);
     t.generateCpuMedianMs = medianOf(generateCpu);
+    t.computeRunsMs = computeGpu;
+    t.occupiedRunsMs = occupiedGpu;
+    t.occupiedMinMs = minOf(occupiedGpu);
+    t.occupiedMedianMs = medianOf(occupiedGpu);
+    t.occupiedCpuMedianMs = medianOf(occupiedCpu);
     return t;
 }
 

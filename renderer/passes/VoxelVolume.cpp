@@ -113,6 +113,8 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     }
     direct_ = {};
     bounce_ = {};
+    parentListsValid_ = false;  // the chains above are zero: nothing stale
+    directionalStale_ = false;
     clearMaterials();
     // A surface crosses about N² voxels per N² of area; 16·N² holds the Cornell box (≈ 6·N²) and
     // Sponza at 256³ with room. An overflow is detected (readOccupiedCount) and grows the list.
@@ -198,6 +200,71 @@ std::vector<glm::ivec3> VoxelVolume::readOccupiedList() const {
 void VoxelVolume::clearRadianceLevel0() const {
     const float transparent[4] = {0, 0, 0, 0};
     if (radiance_) glClearTexImage(radiance_.id(), 0, GL_RGBA, GL_FLOAT, transparent);
+}
+
+void VoxelVolume::clearRadianceMips() {
+    const float transparent[4] = {0, 0, 0, 0};
+    if (radiance_)
+        for (int level = 1; level < radiance_.desc().levels; ++level)
+            glClearTexImage(radiance_.id(), level, GL_RGBA, GL_FLOAT, transparent);
+    directionalStale_ = true;
+    parentListsValid_ = false;
+}
+
+void VoxelVolume::clearDirectional() const {
+    const float transparent[4] = {0, 0, 0, 0};
+    for (const gl::Texture& t : directional_)
+        if (t)
+            for (int level = 0; level < t.desc().levels; ++level)
+                glClearTexImage(t.id(), level, GL_RGBA, GL_FLOAT, transparent);
+}
+
+std::vector<glm::ivec3> VoxelVolume::readParentList(int level) const {
+    if (!parents_ || level < 1 || level >= std::min(mipCount_, LIT_MIP_LIST_LEVELS)) return {};
+    const auto k = static_cast<std::size_t>(level);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::uint32_t count = 0;
+    glGetNamedBufferSubData(parents_.id(), static_cast<GLintptr>(16 * k), sizeof count, &count);
+    count = std::min(count, parentLayout_.listCapacity[k]);
+    std::vector<std::uint32_t> packed(count);
+    if (count)
+        glGetNamedBufferSubData(parents_.id(),
+                                static_cast<GLintptr>(kParentHeaderBytes + std::size_t{4} * parentLayout_.listOffset[k]),
+                                static_cast<GLsizeiptr>(std::size_t{4} * count), packed.data());
+    std::vector<glm::ivec3> voxels;
+    voxels.reserve(count);
+    for (std::uint32_t p : packed)
+        voxels.emplace_back(static_cast<int>(p & 1023u), static_cast<int>((p >> 10) & 1023u), static_cast<int>(p >> 20));
+    return voxels;
+}
+
+void VoxelVolume::ensureParentLists() {
+    ParentLayout layout;
+    std::uint32_t words = 0;
+    for (int level = 1; level < std::min(mipCount_, LIT_MIP_LIST_LEVELS); ++level) {
+        const auto edge = static_cast<std::uint64_t>(std::max(resolution_ >> level, 1));
+        const auto k = static_cast<std::size_t>(level);
+        // No level lists more parents than the occupied list holds children (shaders/mipmap_parents.comp.glsl).
+        layout.listCapacity[k] =
+            static_cast<std::uint32_t>(std::min<std::uint64_t>(occupiedCapacity_, edge * edge * edge));
+        layout.listOffset[k] = words;
+        words += layout.listCapacity[k];
+    }
+    layout.maskBegin = words;
+    for (int level = 1; level < std::min(mipCount_, LIT_MIP_LIST_LEVELS); ++level) {
+        const auto edge = static_cast<std::uint64_t>(std::max(resolution_ >> level, 1));
+        layout.maskOffset[static_cast<std::size_t>(level)] = words;
+        words += static_cast<std::uint32_t>((edge * edge * edge + 31) / 32);
+    }
+    layout.maskWords = words - layout.maskBegin;
+    layout.totalWords = words;
+    const bool same = parents_ && layout.totalWords == parentLayout_.totalWords &&
+                      layout.listOffset == parentLayout_.listOffset && layout.maskOffset == parentLayout_.maskOffset;
+    if (same) return;
+    parentLayout_ = layout;
+    parents_ = gl::Buffer("occupied parents", kParentHeaderBytes + static_cast<std::size_t>(words) * 4, nullptr,
+                          GL_DYNAMIC_STORAGE_BIT);
+    parentListsValid_ = false;
 }
 
 std::size_t VoxelVolume::materialBytes() const {

@@ -68,6 +68,37 @@ public:
     void growOccupiedList(std::uint32_t count);
     // Zeroes level 0 of the radiance volume: injection over the list writes occupied voxels only.
     void clearRadianceLevel0() const;
+    // Zeroes levels 1.. of the radiance volume (before voxelization: the mip chain is built over
+    // the occupied parents only, so the parents of voxels that are empty now must read as empty),
+    // marks the directional chains stale (MipmapPass zeroes them before it next builds them over
+    // the parents; they cost 9/8 of level 0 and are only used with anisotropic voxels) and the
+    // parent lists invalid (MipmapPass::listOccupiedParents lists them again).
+    void clearRadianceMips();
+
+    // The occupied parents of each mip level (SSBO at LIT_SSBO_MIP_PARENTS, shared.h and
+    // shaders/include/mip_parents.glsl): header, then per level k = 1..mipCount−1 its list
+    // (listOffset[k] uints into the data after the header, room for listCapacity[k] entries)
+    // and its bitmask (maskOffset[k], one bit per voxel of the level).
+    struct ParentLayout {
+        std::array<std::uint32_t, LIT_MIP_LIST_LEVELS> listOffset{}, listCapacity{}, maskOffset{};
+        std::uint32_t maskBegin = 0, maskWords = 0;  // the bitmasks: one range, zeroed before listing
+        std::uint32_t totalWords = 0;                // uints after the header
+    };
+    static constexpr std::size_t kParentHeaderBytes = 16 * LIT_MIP_LIST_LEVELS;
+    // (Re)allocates the parent lists for the resolution and occupiedCapacity() (MipmapPass).
+    void ensureParentLists();
+    const gl::Buffer& parentLists() const { return parents_; }
+    const ParentLayout& parentLayout() const { return parentLayout_; }
+    // Whether the parent lists describe the current voxelization (set by MipmapPass once listed).
+    bool parentListsValid() const { return parentListsValid_; }
+    void setParentListsValid(bool valid) { parentListsValid_ = valid; }
+    // Whether the directional chains may hold values of an earlier voxelization (see clearRadianceMips).
+    bool directionalStale() const { return directionalStale_; }
+    void setDirectionalStale(bool stale) { directionalStale_ = stale; }
+    // Level `level`'s listed parents (tests): its count entries in list order; empty before listing.
+    std::vector<glm::ivec3> readParentList(int level) const;
+    // Zeroes every level of the three directional volumes.
+    void clearDirectional() const;
 
     int resolution() const { return resolution_; }
     int mipCount() const { return mipCount_; }
@@ -114,6 +145,10 @@ private:
     gl::Buffer uniforms_;
     gl::Buffer occupied_;
     std::uint32_t occupiedCapacity_ = 0;
+    gl::Buffer parents_;
+    ParentLayout parentLayout_;
+    bool parentListsValid_ = false;
+    bool directionalStale_ = false;
 };
 
 // Bytes the volumes of an N³ volume take: materials, radiance with mips, the six directional

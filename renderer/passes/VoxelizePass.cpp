@@ -22,6 +22,7 @@ void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVo
     volume.clearMaterials();
     volume.resetOccupiedList();
     volume.clearRadianceLevel0();  // injection over the list writes occupied voxels only
+    volume.clearRadianceMips();    // and the mip chain is built over their parents only
     const int n = volume.resolution();
     if (n <= 0 || gpuScene.empty()) {
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

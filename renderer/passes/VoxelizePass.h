@@ -26,7 +26,8 @@ class VoxelizePass : public Pass {
 public:
     explicit VoxelizePass(const std::filesystem::path& shaderRoot);
 
-    // Clears the material volumes, level 0 of the radiance volume and the occupied-voxel list,
+    // Clears the material volumes, the radiance volume's chain (VoxelVolume::clearRadianceMips)
+    // and the occupied-voxel list,
     // then voxelizes every item of `gpuScene` into them, appending each voxel it occupies to
     // volume.occupiedList() (the first fragment to reach a voxel appends it). Needs
     // `volume` allocated (ensure), placed (fitTo) and its uniforms uploaded (updateUniforms);

@@ -110,6 +110,13 @@ using mat4 = glm::mat4;
 // Occupied-voxel list (VoxelizePass appends, InjectPass runs over it with an indirect dispatch).
 #define LIT_SSBO_OCCUPIED_VOXELS 2     // OccupiedVoxels: count, dispatch size, packed coordinates
 #define LIT_INJECT_LIST_GROUP_SIZE 512 // inject.comp.glsl work group over the list: its 8³ group as 512 entries (65535 groups = 33.5 M voxels)
+// Occupied parents (MipmapPass::listOccupiedParents): per mip level k ≥ 1 the voxels of level k
+// with an occupied voxel below them, listed once each, so the mip chain is built over them only.
+// Header: LIT_MIP_LIST_LEVELS × uvec4 (count, indirect dispatch x, y, z; index = level, 0 unused),
+// then the lists and the levels' bitmasks (offsets from MipmapPass). Work groups of
+// LIT_INJECT_LIST_GROUP_SIZE entries, as over the occupied-voxel list.
+#define LIT_SSBO_MIP_PARENTS 5
+#define LIT_MIP_LIST_LEVELS 10  // levels 0..9: a 512³ volume's whole chain
 
 // ---- Cone choice (cone.glsl), mirrored by tracedCones() in renderer/scene/OverlayShapes.cpp ------
 // Written once here so the cone-direction debug view draws the cones the shader traces.

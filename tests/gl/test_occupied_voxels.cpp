@@ -1,11 +1,13 @@
 // The occupied-voxel list: VoxelizePass appends every voxel it occupies, InjectPass lights only
-// those (indirect dispatch). Checked against the volume itself on the Cornell box at 64³.
-// Cost: about 3 s on llvmpipe.
+// those (indirect dispatch), and MipmapPass builds the mip chain over their parents only.
+// Checked against the volume itself and the whole-grid passes on the Cornell box at 64³.
+// Cost: about 3 s on llvmpipe, plus MipmapOverOccupiedParents (below).
 #include "GlTestSupport.h"
 
 #include "gl/Objects.h"
 #include "passes/InjectPass.h"
 #include "passes/LightSetup.h"
+#include "passes/MipmapPass.h"
 #include "passes/ShadowPass.h"
 #include "passes/VoxelVolume.h"
 #include "passes/VoxelizePass.h"
@@ -14,7 +16,11 @@
 #include <shared.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <set>
+#include <string>
+#include <tuple>
 
 namespace lit::test {
 namespace {
@@ -27,8 +33,10 @@ protected:
         voxelize_ = std::make_unique<VoxelizePass>(sourceDir() / "shaders");
         inject_ = std::make_unique<InjectPass>(sourceDir() / "shaders");
         shadow_ = std::make_unique<ShadowPass>(sourceDir() / "shaders");
+        mipmap_ = std::make_unique<MipmapPass>(sourceDir() / "shaders");
     }
     void TearDown() override {
+        mipmap_.reset();
         shadow_.reset();
         inject_.reset();
         voxelize_.reset();
@@ -39,10 +47,10 @@ protected:
         context_.reset();
     }
 
-    void voxelize(const Scene& scene, int n) {
+    void voxelize(const Scene& scene, int n, bool rgba8 = false) {
         gpuScene_ = std::make_unique<GpuScene>(scene, log_);
         volume_ = std::make_unique<VoxelVolume>();
-        volume_->ensure(n, false, log_);
+        volume_->ensure(n, rgba8, log_);
         volume_->fitTo(scene.worldBounds());
         volume_->updateUniforms(settings_, 0);
         DrawCounters counters;
@@ -76,6 +84,7 @@ protected:
     std::unique_ptr<VoxelizePass> voxelize_;
     std::unique_ptr<InjectPass> inject_;
     std::unique_ptr<ShadowPass> shadow_;
+    std::unique_ptr<MipmapPass> mipmap_;
     std::unique_ptr<VoxelVolume> volume_;
     std::unique_ptr<GpuScene> gpuScene_;
     gl::Buffer lightBuffer_, frameBuffer_;
@@ -121,6 +130,149 @@ TEST_F(OccupiedVoxels, InjectionOverTheListEqualsTheWholeGrid) {
     EXPECT_GT(lit, 10000u);
     EXPECT_EQ(different, 0u);
 }
+
+// The bytes of every mip level ≥ 1 of the radiance volume and every level of the six
+// directional chains, as stored (RGBA8 bytes or RGBA16F half floats): compared bit for bit.
+struct MipBytes {
+    std::vector<std::vector<std::uint8_t>> levels;  // radiance 1..mipCount−1, then directional X, Y, Z
+    std::vector<std::string> names;
+};
+
+std::vector<std::uint8_t> textureBytes(const gl::Texture& t, int level, bool rgba8) {
+    const int w = std::max(t.desc().width >> level, 1), h = std::max(t.desc().height >> level, 1),
+              d = std::max(t.desc().depth >> level, 1);
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(w) * h * d * (rgba8 ? 4 : 8));
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(t.id(), level, GL_RGBA, rgba8 ? GL_UNSIGNED_BYTE : GL_HALF_FLOAT,
+                      static_cast<GLsizei>(bytes.size()), bytes.data());
+    return bytes;
+}
+
+MipBytes readMips(const VoxelVolume& volume) {
+    MipBytes m;
+    const bool rgba8 = volume.radianceRgba8();
+    for (int level = 1; level < volume.mipCount(); ++level) {
+        m.levels.push_back(textureBytes(volume.radiance(), level, rgba8));
+        m.names.push_back("radiance level " + std::to_string(level));
+    }
+    for (int axis = 0; axis < LIT_VOXEL_AXIS_COUNT; ++axis)
+        for (int level = 0; level < volume.directional(axis).desc().levels; ++level) {
+            m.levels.push_back(textureBytes(volume.directional(axis), level, rgba8));
+            m.names.push_back("directional axis " + std::to_string(axis) + " level " + std::to_string(level));
+        }
+    return m;
+}
+
+// "" when equal, else the first levels that differ and how many bytes.
+std::string compareMips(const MipBytes& occupied, const MipBytes& grid) {
+    std::string failures;
+    for (std::size_t i = 0; i < grid.levels.size() && i < occupied.levels.size(); ++i) {
+        std::size_t different = 0;
+        for (std::size_t b = 0; b < grid.levels[i].size(); ++b) different += occupied.levels[i][b] != grid.levels[i][b];
+        if (different) failures += grid.names[i] + ": " + std::to_string(different) + " bytes differ; ";
+    }
+    if (occupied.levels.size() != grid.levels.size()) failures += "level counts differ";
+    return failures;
+}
+
+// Voxels whose alpha is non-zero in level `level` of the radiance volume (from its bytes).
+std::size_t nonEmptyVoxels(const std::vector<std::uint8_t>& bytes, bool rgba8) {
+    std::size_t count = 0;
+    const std::size_t texel = rgba8 ? 4 : 8;
+    for (std::size_t i = 0; i + texel <= bytes.size(); i += texel)
+        count += rgba8 ? bytes[i + 3] != 0 : (bytes[i + 6] | bytes[i + 7]) != 0;
+    return count;
+}
+
+// The mip chain built over the occupied parents only (MipmapPass::listOccupiedParents, then
+// execute over the lists) is the whole-grid chain to the bit, isotropic and directional, in both
+// radiance formats; also after the tall box moved and the volume was voxelized again, when voxels
+// the box left are empty and their parents must not keep the old values (VoxelizePass clears the
+// chain; the directional chains are zeroed before their first build after it). Each level's list
+// is checked against the parents of the occupied-voxel list computed on the CPU. The volume is
+// lit (injection over the list), so the values are real radiance with partial opacities.
+// Cost: about 4 s per format on llvmpipe (two voxelizations at 64³, four chains with directional).
+class MipmapOverOccupiedParents : public OccupiedVoxels, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(MipmapOverOccupiedParents, EqualsTheWholeGridChainAlsoAfterAnObjectMoved) {
+    const bool rgba8 = GetParam();
+    Scene scene = loadGltf(sourceDir() / "assets" / "cornell_box.gltf", log_);
+    std::size_t tallBox = scene.nodes.size();
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i)
+        if (scene.nodes[i].name == "tall_box") tallBox = i;
+    ASSERT_LT(tallBox, scene.nodes.size());
+    constexpr int kResolution = 64;
+
+    std::vector<std::uint8_t> level1BeforeMove;
+    for (int pass = 0; pass < 2; ++pass) {
+        SCOPED_TRACE(pass == 0 ? "first voxelization" : "after the tall box moved");
+        if (pass == 0) {
+            voxelize(scene, kResolution, rgba8);
+        } else {
+            // Move the box 0.4 m sideways (13 voxels at 64³ over the 2 m box) and voxelize the same
+            // volume again, as the Renderer does after a transform edit.
+            scene.nodes[tallBox].translation.x += 0.4f;
+            scene.updateWorldTransforms();
+            ++scene.geometryRevision;
+            DrawCounters counters;
+            voxelize_->execute(scene, *gpuScene_, *volume_, counters);
+        }
+        ASSERT_LE(volume_->readOccupiedCount(), volume_->occupiedCapacity());
+        bindLights(scene);
+        inject_->execute(*volume_, true);
+        mipmap_->listOccupiedParents(*volume_);
+        ASSERT_TRUE(volume_->parentListsValid());
+
+        // Each level's list: exactly the parents of the occupied voxels, each once.
+        const std::vector<glm::ivec3> occupied = volume_->readOccupiedList();
+        for (int level = 1; level < volume_->mipCount(); ++level) {
+            std::set<std::tuple<int, int, int>> expected;
+            for (const glm::ivec3& v : occupied) expected.emplace(v.x >> level, v.y >> level, v.z >> level);
+            const std::vector<glm::ivec3> listed = volume_->readParentList(level);
+            std::set<std::tuple<int, int, int>> got;
+            for (const glm::ivec3& p : listed) got.emplace(p.x, p.y, p.z);
+            EXPECT_EQ(listed.size(), got.size()) << "level " << level << " lists a parent twice";
+            EXPECT_TRUE(got == expected) << "level " << level << ": " << got.size() << " listed, " << expected.size()
+                                         << " expected";
+            if (level == 1)
+                std::printf("%s, %s: %zu occupied voxels, %zu of %d level-1 voxels listed (%.1f %%)\n",
+                            rgba8 ? "RGBA8" : "RGBA16F", pass == 0 ? "first voxelization" : "box moved",
+                            occupied.size(), listed.size(), (kResolution / 2) * (kResolution / 2) * (kResolution / 2),
+                            100.0 * static_cast<double>(listed.size()) / ((kResolution / 2) * (kResolution / 2) * (kResolution / 2)));
+        }
+
+        mipmap_->execute(*volume_, true, true);
+        const MipBytes overParents = readMips(*volume_);
+        mipmap_->execute(*volume_, true, false);
+        const MipBytes wholeGrid = readMips(*volume_);
+        EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+        const std::string failures = compareMips(overParents, wholeGrid);
+        EXPECT_TRUE(failures.empty()) << failures;
+        // Not a chain of zeros: the walls and boxes are there at every level.
+        EXPECT_GT(nonEmptyVoxels(wholeGrid.levels[0], rgba8), 5000u);
+
+        if (pass == 0) {
+            level1BeforeMove = wholeGrid.levels[0];
+        } else {
+            // The move emptied level-1 voxels that were occupied before: the case a chain built
+            // over the new parents alone would leave stale.
+            std::size_t emptied = 0;
+            const std::size_t texel = rgba8 ? 4 : 8;
+            const std::vector<std::uint8_t>& now = wholeGrid.levels[0];
+            for (std::size_t i = 0; i + texel <= now.size(); i += texel) {
+                const bool before = rgba8 ? level1BeforeMove[i + 3] != 0
+                                          : (level1BeforeMove[i + 6] | level1BeforeMove[i + 7]) != 0;
+                const bool after = rgba8 ? now[i + 3] != 0 : (now[i + 6] | now[i + 7]) != 0;
+                emptied += before && !after;
+            }
+            EXPECT_GT(emptied, 100u) << "the move should empty some level-1 voxels";
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, MipmapOverOccupiedParents, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Rgba8" : "Rgba16f"; });
 
 }  // namespace
 }  // namespace lit::test

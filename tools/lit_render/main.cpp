@@ -264,6 +264,16 @@ void printBench(const BenchResult& bench, const lit::RenderSettings& settings, c
                     "compute is %.2fx as fast\n",
                     bench.mipmaps.rgba8 ? "RGBA8" : "RGBA16F", bench.mipmaps.computeMinMs, bench.mipmaps.generateMinMs,
                     bench.mipmaps.speedup());
+    const lit::MipmapTimings& m = bench.mipmaps;
+    if (m.occupiedMinMs > 0.0) {
+        // Interleaved rounds: the whole grid, then the occupied parents, back to back.
+        for (std::size_t i = 0; i < m.occupiedRunsMs.size() && i < m.computeRunsMs.size(); ++i)
+            std::printf("mipmap round %zu%s: whole grid %.3f ms | occupied parents %.3f ms | %.2fx\n", i + 1,
+                        m.anisotropic ? " (with directional chains)" : "", m.computeRunsMs[i], m.occupiedRunsMs[i],
+                        m.occupiedRunsMs[i] > 0.0 ? m.computeRunsMs[i] / m.occupiedRunsMs[i] : 0.0);
+        std::printf("radiance mipmaps over occupied parents: %.3f ms, whole grid %.3f ms (min of runs): %.2fx as fast\n",
+                    m.occupiedMinMs, m.computeMinMs, m.occupiedSpeedup());
+    }
 }
 
 nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& options, const lit::RenderSettings& settings,
@@ -293,7 +303,11 @@ nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& option
               {"computeMedianMs", bench.mipmaps.computeMedianMs},
               {"generateMinMs", bench.mipmaps.generateMinMs},
               {"generateMedianMs", bench.mipmaps.generateMedianMs},
-              {"speedup", bench.mipmaps.speedup()}}},
+              {"speedup", bench.mipmaps.speedup()},
+              {"occupiedMinMs", bench.mipmaps.occupiedMinMs},
+              {"occupiedMedianMs", bench.mipmaps.occupiedMedianMs},
+              {"occupiedSpeedup", bench.mipmaps.occupiedSpeedup()},
+              {"anisotropic", bench.mipmaps.anisotropic}}},
             {"triangles", stats.triangles},
             {"drawCalls", stats.drawCalls},
             {"frustumCulling", settings.frustumCulling},
@@ -687,16 +701,19 @@ void benchGiUpdates(int rounds, lit::Scene& scene, const lit::CameraView& camera
         ++scene.lightRevision;
         renderer.render(scene, camera, settings);
         renderer.profiler().flush();
-        const double edit = passMs("inject") + passMs("mipmap"), editShadow = passMs("shadow");
+        const double editInject = passMs("inject"), editMipmap = passMs("mipmap");
+        const double edit = editInject + editMipmap, editShadow = passMs("shadow");
         // B: geometry edit without moving anything: the volume is voxelized again.
         ++scene.geometryRevision;
         renderer.render(scene, camera, settings);
         renderer.profiler().flush();
-        const double revoxelize = passMs("voxelize") + passMs("inject") + passMs("mipmap"), fullShadow = passMs("shadow");
+        const double lists = passMs("mip lists");
+        const double revoxelize = passMs("voxelize") + lists + passMs("inject") + passMs("mipmap"),
+                     fullShadow = passMs("shadow");
         ratios.push_back(edit / revoxelize);
-        std::printf("gi-update round %d: light edit %.1f ms (inject + mipmap) | re-voxelize %.1f ms (voxelize + inject + "
-                    "mipmap) | ratio %.3f | shadow maps %.1f / %.1f ms\n",
-                    round, edit, revoxelize, edit / revoxelize, editShadow, fullShadow);
+        std::printf("gi-update round %d: light edit %.1f ms (inject %.1f + mipmap %.1f) | re-voxelize %.1f ms (voxelize + "
+                    "mip lists %.1f + inject + mipmap) | ratio %.3f | shadow maps %.1f / %.1f ms\n",
+                    round, edit, editInject, editMipmap, revoxelize, lists, edit / revoxelize, editShadow, fullShadow);
     }
     std::sort(ratios.begin(), ratios.end());
     std::printf("gi-update median ratio (light edit / re-voxelize): %.3f\n", ratios[ratios.size() / 2]);
