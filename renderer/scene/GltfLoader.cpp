@@ -460,6 +460,16 @@ void Loader::checkExtensions() const {
         if (!isSupported(e)) warn("ignores the glTF extension " + e + " (not supported; its data is kept and saved back as it was)");
 }
 
+// Notes a file's number that a float cannot hold exactly (scene/Scene.h: FileNumbers).
+void noteNumber(FileNumbers& numbers, const std::string& key, double file) {
+    if (std::isfinite(file) && static_cast<double>(static_cast<float>(file)) != file) numbers[key] = file;
+}
+
+// How far from 1 a rotation's length may be and still count as unit: float32 rounding of the
+// components (Blender writes float32 values) is a few 1e-8; well inside the glTF validator's
+// unit-length tolerance.
+constexpr float kUnitQuaternionTolerance = 1e-6f;
+
 void Loader::loadNodes(Scene& scene) const {
     const std::size_t n = model_.nodes.size();
     // Parents, with every index checked, and the tree property (one parent per node) enforced.
@@ -616,7 +626,9 @@ void Loader::loadNodes(Scene& scene) const {
                                   static_cast<float>(in.rotation[1]), static_cast<float>(in.rotation[2]));
                 const float len = glm::length(q);
                 if (std::isfinite(len) && len > 1e-6f) {
-                    node.rotation = q / len;
+                    // A unit quaternion as float32 (a few ulp off 1) is kept as the file wrote it,
+                    // so a save writes the same numbers; others are normalized.
+                    node.rotation = std::abs(len - 1.0f) <= kUnitQuaternionTolerance ? q : q / len;
                 } else {
                     warn(what + " has a zero rotation quaternion; using the identity");
                 }
@@ -626,6 +638,9 @@ void Loader::loadNodes(Scene& scene) const {
                     fail(what + " has a 'scale' with " + std::to_string(in.scale.size()) + " numbers, expected 3");
                 node.scale = glm::vec3(in.scale[0], in.scale[1], in.scale[2]);
             }
+            for (std::size_t k = 0; k < in.translation.size(); ++k) noteNumber(node.fileNumbers, "t" + std::to_string(k), in.translation[k]);
+            for (std::size_t k = 0; k < in.rotation.size(); ++k) noteNumber(node.fileNumbers, "r" + std::to_string(k), in.rotation[k]);
+            for (std::size_t k = 0; k < in.scale.size(); ++k) noteNumber(node.fileNumbers, "s" + std::to_string(k), in.scale[k]);
         }
         node.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_lights_punctual"});
         (reachable[i] ? scene.nodes : scene.keptNodes).push_back(std::move(node));
@@ -1078,15 +1093,21 @@ void Loader::loadLights(Scene& scene) const {
             out.type = LightType::Spot;
             out.innerConeAngle = static_cast<float>(in.spot.innerConeAngle);
             out.outerConeAngle = static_cast<float>(in.spot.outerConeAngle);
+            noteNumber(out.fileNumbers, "innerConeAngle", in.spot.innerConeAngle);
+            noteNumber(out.fileNumbers, "outerConeAngle", in.spot.outerConeAngle);
         } else {
             fail("light " + std::to_string(l) + " has unknown type '" + in.type + "'");
         }
-        if (in.color.size() == 3) out.color = glm::vec3(in.color[0], in.color[1], in.color[2]);
+        if (in.color.size() == 3) {
+            out.color = glm::vec3(in.color[0], in.color[1], in.color[2]);
+            for (std::size_t k = 0; k < 3; ++k) noteNumber(out.fileNumbers, "color" + std::to_string(k), in.color[k]);
+        }
         // Photometric in the file (cd, lx), radiometric in the Scene (W/sr, W/m²).
         out.intensity = radiometricFromPhotometric(in.intensity);
         out.fileIntensity = in.intensity;
         out.fileIntensityAsLoaded = out.intensity;
         out.range = static_cast<float>(in.range);
+        noteNumber(out.fileNumbers, "range", in.range);
         // Lit's own flag (scene/GltfWriter.cpp writes it); glTF has no shadow switch.
         if (in.extras.Has("litCastsShadow") && in.extras.Get("litCastsShadow").IsBool())
             out.castsShadow = in.extras.Get("litCastsShadow").Get<bool>();
@@ -1109,6 +1130,10 @@ void Loader::loadCameras(Scene& scene) const {
             out.aspectRatio = static_cast<float>(std::max(in.perspective.aspectRatio, 0.0));
             if (in.perspective.znear > 0.0) out.znear = static_cast<float>(in.perspective.znear);
             out.zfar = static_cast<float>(std::max(in.perspective.zfar, 0.0));
+            noteNumber(out.fileNumbers, "yfov", in.perspective.yfov);
+            noteNumber(out.fileNumbers, "aspectRatio", in.perspective.aspectRatio);
+            noteNumber(out.fileNumbers, "znear", in.perspective.znear);
+            noteNumber(out.fileNumbers, "zfar", in.perspective.zfar);
         } else {
             warn("camera " + std::to_string(c) + " is " + (in.type.empty() ? std::string("untyped") : in.type) +
                  "; Lit renders it as a perspective camera with yfov 0.8 (it is saved back as it was)");
@@ -1119,6 +1144,10 @@ void Loader::loadCameras(Scene& scene) const {
             }
             if (in.orthographic.znear > 0.0) out.znear = static_cast<float>(in.orthographic.znear);
             if (in.orthographic.zfar > in.orthographic.znear) out.zfar = static_cast<float>(in.orthographic.zfar);
+            noteNumber(out.fileNumbers, "xmag", in.orthographic.xmag);
+            noteNumber(out.fileNumbers, "ymag", in.orthographic.ymag);
+            noteNumber(out.fileNumbers, "znear", in.orthographic.znear);
+            noteNumber(out.fileNumbers, "zfar", in.orthographic.zfar);
         }
         out.kept = gltfkeep::keep(in.extras, in.extensions);
         scene.cameras.push_back(std::move(out));
@@ -1413,6 +1442,7 @@ void Loader::keepFileData(Scene& scene) const {
     static const std::array<std::string_view, 2> own = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
     for (const std::string& e : model_.extensionsUsed)
         if (std::find(own.begin(), own.end(), e) == own.end()) scene.unknownExtensionsUsed.push_back(e);
+    scene.extensionsRequired = model_.extensionsRequired;
 }
 
 Scene Loader::run() {

@@ -82,6 +82,20 @@ std::string named(const std::string& kind, std::size_t index, const std::string&
     return kind + " " + std::to_string(index) + (name.empty() ? "" : " ('" + name + "')");
 }
 
+// The file's exact number of a field while its float still equals it, else the float
+// (scene/Scene.h: FileNumbers).
+double fileOr(const FileNumbers& numbers, const std::string& key, float value) {
+    const auto it = numbers.find(key);
+    return it != numbers.end() && static_cast<float>(it->second) == value ? it->second : static_cast<double>(value);
+}
+
+template <int N>
+std::vector<double> fileOr(const FileNumbers& numbers, const char* prefix, const glm::vec<N, float>& v) {
+    std::vector<double> out(N);
+    for (int i = 0; i < N; ++i) out[static_cast<std::size_t>(i)] = fileOr(numbers, prefix + std::to_string(i), v[i]);
+    return out;
+}
+
 template <int N>
 std::vector<double> doubles(const glm::vec<N, float>& v) {
     std::vector<double> out(N);
@@ -729,11 +743,11 @@ void ModelBuilder::addLights() {
     for (const Light& light : scene_.lights) {
         tinygltf::Light out;
         out.name = light.name;
-        out.color = doubles(light.color);
+        out.color = fileOr(light.fileNumbers, "color", light.color);
         // Back to the file's photometric units (cd, lx); an unedited light keeps its exact number.
         out.intensity = light.intensity == light.fileIntensityAsLoaded ? light.fileIntensity
                                                                        : photometricFromRadiometric(light.intensity);
-        out.range = std::max(light.range, 0.0f);  // written only when > 0 (0 = infinite)
+        out.range = fileOr(light.fileNumbers, "range", std::max(light.range, 0.0f));  // written only when > 0 (0 = infinite)
         switch (light.type) {
             case LightType::Directional:
                 out.type = "directional";
@@ -743,8 +757,8 @@ void ModelBuilder::addLights() {
                 break;
             case LightType::Spot:
                 out.type = "spot";
-                out.spot.innerConeAngle = light.innerConeAngle;
-                out.spot.outerConeAngle = light.outerConeAngle;
+                out.spot.innerConeAngle = fileOr(light.fileNumbers, "innerConeAngle", light.innerConeAngle);
+                out.spot.outerConeAngle = fileOr(light.fileNumbers, "outerConeAngle", light.outerConeAngle);
                 break;
         }
         if (!light.castsShadow) {
@@ -764,16 +778,18 @@ void ModelBuilder::addCameras() {
         out.name = camera.name;
         if (camera.orthographic && camera.xmag != 0.0f && camera.ymag != 0.0f && camera.zfar > camera.znear) {
             out.type = "orthographic";  // as the file had it (Lit draws it in perspective)
-            out.orthographic.xmag = camera.xmag;
-            out.orthographic.ymag = camera.ymag;
-            out.orthographic.znear = camera.znear;
-            out.orthographic.zfar = camera.zfar;
+            const FileNumbers& n = camera.fileNumbers;
+            out.orthographic.xmag = fileOr(n, "xmag", camera.xmag);
+            out.orthographic.ymag = fileOr(n, "ymag", camera.ymag);
+            out.orthographic.znear = fileOr(n, "znear", camera.znear);
+            out.orthographic.zfar = fileOr(n, "zfar", camera.zfar);
         } else {
             out.type = "perspective";
-            out.perspective.yfov = camera.yfov;
-            out.perspective.znear = camera.znear;
-            out.perspective.zfar = std::max(camera.zfar, 0.0f);  // 0: left out by writeGltfModel
-            out.perspective.aspectRatio = std::max(camera.aspectRatio, 0.0f);  // 0: left out
+            const FileNumbers& n = camera.fileNumbers;
+            out.perspective.yfov = fileOr(n, "yfov", camera.yfov);
+            out.perspective.znear = fileOr(n, "znear", camera.znear);
+            out.perspective.zfar = fileOr(n, "zfar", std::max(camera.zfar, 0.0f));  // 0: left out by writeGltfModel
+            out.perspective.aspectRatio = fileOr(n, "aspectRatio", std::max(camera.aspectRatio, 0.0f));  // 0: left out
         }
         restore(camera.kept, out.extras, out.extensions);
         model_.cameras.push_back(std::move(out));
@@ -792,12 +808,15 @@ void ModelBuilder::addNodes() {
         out.name = node.name;
         for (int child : node.children) out.children.push_back(childIndex[static_cast<std::size_t>(child)]);
         // Only what differs from the glTF defaults, as other exporters do.
-        if (node.translation != glm::vec3(0.0f)) out.translation = doubles(node.translation);
+        if (node.translation != glm::vec3(0.0f)) out.translation = fileOr(node.fileNumbers, "t", node.translation);
         if (node.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) {
-            const glm::quat q = glm::normalize(node.rotation);
-            out.rotation = {q.x, q.y, q.z, q.w};  // glTF order
+            // A rotation already unit within float rounding is written as it is (the file's
+            // numbers after a load), others normalized.
+            const float length = glm::length(node.rotation);
+            const glm::quat q = std::abs(length - 1.0f) <= 1e-6f ? node.rotation : node.rotation / length;
+            out.rotation = fileOr(node.fileNumbers, "r", glm::vec4(q.x, q.y, q.z, q.w));  // glTF order
         }
-        if (node.scale != glm::vec3(1.0f)) out.scale = doubles(node.scale);
+        if (node.scale != glm::vec3(1.0f)) out.scale = fileOr(node.fileNumbers, "s", node.scale);
         out.mesh = node.mesh >= 0 ? meshIndex_[static_cast<std::size_t>(node.mesh)] : -1;
         out.camera = node.camera;
         out.skin = node.skin >= 0 ? skinIndex_[static_cast<std::size_t>(node.skin)] : -1;
@@ -961,6 +980,12 @@ tinygltf::Model ModelBuilder::build() {
         useExtension("KHR_mesh_quantization");
         model_.extensionsRequired.push_back("KHR_mesh_quantization");
     }
+    // What the file required stays required while the saved file uses it (Blender requires
+    // KHR_lights_punctual of a file with lights).
+    for (const std::string& e : scene_.extensionsRequired)
+        if (std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(), e) != model_.extensionsUsed.end() &&
+            std::find(model_.extensionsRequired.begin(), model_.extensionsRequired.end(), e) == model_.extensionsRequired.end())
+            model_.extensionsRequired.push_back(e);
     // Extensions the source declared that no kept data uses any more are not declared again
     // (the validator reports unused ones); those still used were declared by restore().
     return std::move(model_);

@@ -28,6 +28,12 @@ struct KeptGltf {
     bool operator==(const KeptGltf&) const = default;
 };
 
+// The file's numbers of fields Lit holds as float, by field name ("yfov", "t0".."t2",
+// "r0".."r3", "s0".."s2", ...), only those a float cannot hold exactly (JSON numbers are doubles:
+// Blender writes a camera's yfov as 0.39959652046304894). A save writes the file's number for a
+// field whose float still equals it rounded, so an unedited value comes back exactly.
+using FileNumbers = std::map<std::string, double>;
+
 // A glTF buffer or buffer view's name, extras and extensions Lit does not use. Lit lays out its own
 // buffer views (and writes one buffer); these go on the view (buffer) that holds the same data
 // again, so a save loses none of them.
@@ -210,6 +216,7 @@ struct Light {
     // The writer uses `fileIntensity` only while `intensity == fileIntensityAsLoaded`.
     double fileIntensity = 0.0;
     float fileIntensityAsLoaded = -1.0f;  // -1: not from a file
+    FileNumbers fileNumbers{};  // color0..2, range, innerConeAngle, outerConeAngle
     KeptGltf kept{};
 
     bool operator==(const Light&) const = default;
@@ -227,6 +234,7 @@ struct Camera {
     bool orthographic = false;
     float xmag = 0.0f;
     float ymag = 0.0f;
+    FileNumbers fileNumbers{};  // yfov, aspectRatio, znear, zfar, xmag, ymag
     KeptGltf kept{};
 
     bool operator==(const Camera&) const = default;
@@ -245,6 +253,7 @@ struct Node {
     int skin = -1;                // index into Scene::skins (kept, not drawn: Lit draws the bind pose)
     std::vector<double> weights{};  // morph target weights of this node's mesh instance
     glm::mat4 world{1.0f};  // computed by Scene::updateWorldTransforms()
+    FileNumbers fileNumbers{};  // t0..t2, r0..r3 (x, y, z, w), s0..s2
     KeptGltf kept{};
 
     glm::mat4 localMatrix() const;
@@ -339,6 +348,9 @@ struct Scene {
     std::vector<OtherScene> otherScenes;
     int sceneIndex = 0;  // where the shown scene stands among the file's scenes
     std::vector<std::string> unknownExtensionsUsed;  // extensionsUsed Lit does not read; written back
+    // The file's extensionsRequired (all ones Lit reads, or the load fails): a save declares each
+    // again while the saved file still uses it.
+    std::vector<std::string> extensionsRequired;
 
     // Bumped by whoever edits the scene; the renderer redoes only what changed.
     std::uint64_t geometryRevision = 0;  // meshes, node transforms → shadows, voxels

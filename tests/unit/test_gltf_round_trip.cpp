@@ -569,16 +569,18 @@ fs::path writeHiddenNodesFile(const TempDir& dir) {
     doc["nodes"] = json::parse(R"([
         {"name": "ground", "mesh": 0},
         {"name": "stage", "children": [2, 3, 4], "translation": [0, 1, 0]},
-        {"name": "spot", "extensions": {"KHR_lights_punctual": {"light": 1}}, "translation": [0, 3, 0]},
+        {"name": "spot", "extensions": {"KHR_lights_punctual": {"light": 1}}, "translation": [0, 3, 0.1]},
         {"name": "cam", "camera": 0, "translation": [0, 2, 5]},
         {"name": "prop", "mesh": 1, "skin": 0, "children": [5]},
         {"name": "bone", "translation": [0, 0.5, 0]},
         {"name": "loose", "translation": [9, 9, 9], "extras": {"why": "orphan"}},
-        {"name": "sun", "extensions": {"KHR_lights_punctual": {"light": 0}}}])");
+        {"name": "sun", "extensions": {"KHR_lights_punctual": {"light": 0}},
+         "rotation": [-0.13498486578464508, 0, 0, 0.990847647190094]}])");
     doc["extensions"] = json::parse(R"({"KHR_lights_punctual": {"lights": [
         {"name": "sun light", "type": "directional", "intensity": 3},
-        {"name": "spot lamp", "type": "spot", "intensity": 50, "spot": {"outerConeAngle": 0.5}}]}})");
+        {"name": "spot lamp", "type": "spot", "intensity": 50, "spot": {"outerConeAngle": 0.39269908169872414}}]}})");
     doc["extensionsUsed"] = json::array({"KHR_lights_punctual"});
+    doc["extensionsRequired"] = json::array({"KHR_lights_punctual"});  // as Blender 3.4 writes it
     doc["cameras"] = json::parse(R"([{"name": "stage cam", "type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}])");
     doc["skins"] = json::parse(R"([{"name": "prop rig", "joints": [5], "skeleton": 5}])");
     doc["scenes"] = json::parse(R"([{"name": "main", "nodes": [0, 7]}, {"name": "stage", "nodes": [1, 0]}])");
@@ -630,6 +632,15 @@ void expectHiddenNodes(const json& doc) {
     ASSERT_EQ(scenes.size(), 2u);
     EXPECT_EQ(scenes[1], (std::vector<std::string>{"stage", "ground"}));
     EXPECT_EQ(doc.value("scene", -1), 0);
+    // Found by the Blender diff: the file's required extension, a float32 rotation (Blender's
+    // numbers, a few ulp from unit length) and numbers a float cannot hold (0.1, 0.7, π/8) are
+    // written as they were.
+    EXPECT_EQ(node("spot")["translation"], json::array({0.0, 3.0, 0.1}));
+    EXPECT_EQ(doc["cameras"][node("cam")["camera"].get<std::size_t>()]["perspective"]["yfov"], 0.7);
+    EXPECT_EQ(lights[node("spot")["extensions"]["KHR_lights_punctual"]["light"].get<std::size_t>()]["spot"]["outerConeAngle"],
+              0.39269908169872414);
+    EXPECT_EQ(doc.value("extensionsRequired", json()), json::array({"KHR_lights_punctual"}));
+    EXPECT_EQ(node("sun")["rotation"], json::array({-0.13498486578464508, 0.0, 0.0, 0.990847647190094}));
 }
 
 // Nodes in none of the shown scene's trees are kept (not drawn) and saved with their subtrees,
