@@ -38,6 +38,8 @@ namespace {
 
 // How often changed shader files are looked for, in seconds.
 constexpr double kShaderReloadInterval = 0.5;
+// How often the editor hands freed heap pages back to the system (ProcessMemory::releaseFreeHeap).
+constexpr double kHeapReleaseInterval = 5.0;
 // Longest time step given to the camera, in seconds: after a stall (loading a scene) the
 // camera must not jump by the whole stall.
 constexpr float kMaxCameraStep = 1.0f;
@@ -416,6 +418,7 @@ void App::updateTitle() {
 int App::run() {
     double previousTime = glfwGetTime();
     double nextShaderCheck = previousTime + kShaderReloadInterval;
+    double nextHeapRelease = previousTime + kHeapReleaseInterval;
     int framesRendered = 0;
     while (!exitCode_) {
         glfwPollEvents();
@@ -510,6 +513,10 @@ int App::run() {
         if (now >= nextShaderCheck) {
             renderer_->reloadChangedShaders();
             nextShaderCheck = now + kShaderReloadInterval;
+        }
+        if (now >= nextHeapRelease) {
+            ProcessMemory::releaseFreeHeap();
+            nextHeapRelease = now + kHeapReleaseInterval;
         }
     }
     // A normal quit: the autosave copy is not needed at the next start.

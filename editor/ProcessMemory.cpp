@@ -4,7 +4,9 @@
 
 #include <unistd.h>
 #if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/allocator_interface.h>
+// From the sanitizer runtime (<sanitizer/allocator_interface.h>, which Debian ships with clang but
+// not with GCC).
+extern "C" std::size_t __sanitizer_get_current_allocated_bytes();
 #elif defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -35,6 +37,12 @@ ProcessMemory ProcessMemory::query() {
     memory.heapFreeBytes = info.fordblks;
 #endif
     return memory;
+}
+
+void ProcessMemory::releaseFreeHeap() {
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+    malloc_trim(0);
+#endif
 }
 
 std::string ProcessMemory::describe() const {

@@ -13,18 +13,17 @@
 # view, nothing selected), so block ends compare like with like; samples at arbitrary moments
 # would differ by the 128^3 voxel volumes a block allocates and frees.
 #
-# Passes when, from the first block end after WARMUP_SECONDS (default 120) to the last block end,
+# Passes when, from the first block end after WARMUP_SECONDS (default 120: issue #14 asks for less
+# than 5 % resident growth "from minute 2 to the end" of a 10-minute soak) to the last block end,
 #   - the heap in use grows by less than 5 % (what the process has allocated and not freed: a
-#     leak in our code or in the driver's malloc'd objects), and
-#   - the memory held, resident size less the free heap the allocator keeps, grows by less than
-#     5 % (a leak outside malloc: mappings, JIT code),
-# and the log has no GL error. Without glibc's figures (another C library) the resident size is
-# judged instead; under AddressSanitizer, whose quarantine is neither free nor in use, the heap in
-# use alone. Resident size alone is reported but not judged: the allocator
-# keeps freed heap pages resident when live blocks sit above them, and a 90-block run at 320x180
-# showed that free heap climb from 3 to 35 MB over the first ~35 blocks and then level off (and
-# fall back), while the heap in use stayed flat apart from the undo history filling to its
-# 256-step cap (docs/RELIABILITY.md, "Soak"). At least two block ends after the warm-up are
+#     leak in our code or in the driver's malloc'd objects, llvmpipe's textures among them), and
+#   - the resident size grows by less than 5 % (leaks outside malloc too: mappings, JIT code),
+# and the log has no GL error. The editor hands freed heap pages back to the system every 5 s
+# (ProcessMemory::releaseFreeHeap); without that glibc kept them resident below live blocks and
+# RSS climbed by 20-35 MB over the first ~35 blocks while the heap in use stayed flat
+# (docs/RELIABILITY.md, "Soak"). Without glibc's figures (another C library) the resident size
+# alone is judged; under AddressSanitizer the heap in use alone (its quarantine holds freed
+# memory resident for a while by design). At least two block ends after the warm-up are
 # needed; a slow machine gets up to 2 minutes more to reach them. Prints the samples' files and
 # one summary line:
 #   soak: 10 min, 21 blocks, 120 samples, 20 shader reload lines, 0 GL errors: heap in use ... -> PASS
@@ -209,17 +208,12 @@ result=$(awk -v warmup="$warmup" -v errors="$gl_errors" -v samples="$samples" '
             exit
         }
         useGrowth = growth(use[first], use[NR])
-        if (free[first] == "unknown") {  # the heap in use alone (AddressSanitizer: its quarantine is neither free nor in use)
-            verdict = (useGrowth < 5.0 && errors == 0) ? "PASS" : "FAIL"
-            printf "%s %s: heap in use %.1f -> %.1f MB (%+.1f %%); not judged: resident %.1f -> %.1f MB (%+.1f %%), no free-heap figure\n",
-                   verdict, span, mb(use[first]), mb(use[NR]), useGrowth, mb(rss[first]), mb(rss[NR]), rssGrowth
-            exit
-        }
-        heldGrowth = growth(rss[first] - free[first], rss[NR] - free[NR])
-        verdict = (useGrowth < 5.0 && heldGrowth < 5.0 && errors == 0) ? "PASS" : "FAIL"
-        printf "%s %s: heap in use %.1f -> %.1f MB (%+.1f %%), held (resident less free heap) %.1f -> %.1f MB (%+.1f %%); not judged: resident %.1f -> %.1f MB (%+.1f %%), free heap %.1f -> %.1f MB, peak of the 5 s samples after the warm-up %.1f MB, first block end %.1f MB\n",
-               verdict, span, mb(use[first]), mb(use[NR]), useGrowth, mb(rss[first] - free[first]), mb(rss[NR] - free[NR]), heldGrowth,
-               mb(rss[first]), mb(rss[NR]), rssGrowth, mb(free[first]), mb(free[NR]), mb(peak), mb(rss[1])
+        sanitizer = free[first] == "unknown"  # AddressSanitizer: no free-heap figure, RSS holds its quarantine
+        verdict = (useGrowth < 5.0 && (sanitizer || rssGrowth < 5.0) && errors == 0) ? "PASS" : "FAIL"
+        printf "%s %s: heap in use %.1f -> %.1f MB (%+.1f %%), %s %.1f -> %.1f MB (%+.1f %%); free heap %s -> %s MB, peak of the 5 s samples after the warm-up %.1f MB, first block end %.1f MB\n",
+               verdict, span, mb(use[first]), mb(use[NR]), useGrowth, sanitizer ? "not judged (AddressSanitizer): resident" : "resident",
+               mb(rss[first]), mb(rss[NR]), rssGrowth, sanitizer ? "?" : sprintf("%.1f", mb(free[first])), sanitizer ? "?" : sprintf("%.1f", mb(free[NR])),
+               mb(peak), mb(rss[1])
     }' "$block_ends")
 echo "soak samples: every 5 s $samples (seconds, RSS KiB), at block ends $block_ends (seconds, block, heap in use, free heap, RSS KiB); log: $log"
 echo "soak: $minutes min, $(wc -l < "$block_ends") blocks, $(wc -l < "$samples") samples, $reloads shader reload lines, $gl_errors GL errors: ${result#* } -> ${result%% *}"

@@ -287,6 +287,32 @@ std::string numberText(const tinygltf::Value& value) {
     return out.str();
 }
 
+// A number for a message: "2", "2.5", "-0.3".
+std::string numberText(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+// "(0.5, -1, 2)" for a message.
+std::string listText(const std::vector<double>& values) {
+    std::string text = "(";
+    for (std::size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + numberText(values[i]);
+    return text + ")";
+}
+
+// Factors the spec bounds to 0..1 (baseColorFactor, metallic/roughnessFactor, emissiveFactor,
+// a light's color): true when every value is inside; `clamped` gets the values Lit uses.
+bool insideUnitRange(const std::vector<double>& values, std::vector<double>& clamped) {
+    clamped = values;
+    bool inside = true;
+    for (double& v : clamped) {
+        if (!(v >= 0.0 && v <= 1.0)) inside = false;
+        v = std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0);
+    }
+    return inside;
+}
+
 float Loader::AccessorData::component(std::size_t i, int c) const {
     const unsigned char* p = first + i * stride;
     switch (componentType) {
@@ -707,12 +733,15 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
 
     // Indices: from the accessor, or 0..n−1 for non-indexed geometry.
     if (in.indices >= 0) {
-        const AccessorData indices = accessor(in.indices, TINYGLTF_TYPE_SCALAR, "indices of " + where);
-        if (indices.count > 0 && indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-            indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-            indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        // The type first: a float index accessor would otherwise be reported as reading past its view.
+        const int indexType = static_cast<std::size_t>(in.indices) < model_.accessors.size()
+                                  ? model_.accessors[static_cast<std::size_t>(in.indices)].componentType
+                                  : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+        if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
             fail("accessor " + std::to_string(in.indices) + " (indices of " + where +
-                 ") must have an unsigned integer component type, not " + std::to_string(indices.componentType));
+                 ") must have an unsigned integer component type (5121, 5123 or 5125), not " + std::to_string(indexType));
+        const AccessorData indices = accessor(in.indices, TINYGLTF_TYPE_SCALAR, "indices of " + where);
         out.indices.resize(indices.count);
         for (std::size_t i = 0; i < indices.count; ++i) {
             const std::uint32_t value = indices.index(i);
@@ -729,6 +758,26 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
         warn(where + " has " + std::to_string(out.indices.size()) +
              " indices, not a multiple of 3; the incomplete last triangle is dropped");
         out.indices.resize(out.indices.size() - out.indices.size() % 3);
+    }
+    // A NaN or infinite position would poison the bounds, the culling and the voxelization: the
+    // triangles that use one are dropped (the vertices stay, so kept attributes still line up).
+    std::size_t nonFinite = 0;
+    for (const Vertex& v : out.vertices)
+        if (!std::isfinite(v.position.x) || !std::isfinite(v.position.y) || !std::isfinite(v.position.z)) ++nonFinite;
+    if (nonFinite > 0) {
+        const auto finite = [&](std::uint32_t i) {
+            const glm::vec3& p = out.vertices[i].position;
+            return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+        };
+        std::vector<std::uint32_t> kept;
+        kept.reserve(out.indices.size());
+        for (std::size_t t = 0; t + 2 < out.indices.size(); t += 3)
+            if (finite(out.indices[t]) && finite(out.indices[t + 1]) && finite(out.indices[t + 2]))
+                kept.insert(kept.end(), {out.indices[t], out.indices[t + 1], out.indices[t + 2]});
+        warn(where + " has " + std::to_string(nonFinite) + " vertex position" + (nonFinite == 1 ? "" : "s") +
+             " that are not finite (NaN or infinity); the " + std::to_string((out.indices.size() - kept.size()) / 3) +
+             " triangle(s) using them are dropped");
+        out.indices = std::move(kept);
     }
 
     // The attributes and morph targets Lit does not draw with, kept for a save.
@@ -753,7 +802,9 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
     if (!haveTangents) computeTangents(out);
     out.fileHasTangents = haveTangents;
     out.kept = gltfkeep::keep(in.extras, in.extensions);
-    for (const Vertex& v : out.vertices) out.bounds.extend(v.position);
+    for (const Vertex& v : out.vertices)
+        if (std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z))
+            out.bounds.extend(v.position);  // the non-finite ones belong to no triangle (above)
 }
 
 void Loader::loadMeshes(Scene& scene) const {
@@ -817,18 +868,29 @@ void Loader::loadMaterials(Scene& scene) const {
         Material out;
         out.name = in.name;
         const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
-        if (pbr.baseColorFactor.size() == 4)
-            out.baseColorFactor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
-                                            pbr.baseColorFactor[3]);
+        // The spec bounds these factors to 0..1; outside, Lit warns and uses the nearest valid
+        // value (which a save writes).
+        const auto unitFactors = [&](const std::vector<double>& values, const char* name) {
+            std::vector<double> clamped;
+            if (!insideUnitRange(values, clamped))
+                warn(what + " has " + name + " " + listText(values) + " outside 0..1; Lit uses " + listText(clamped));
+            return clamped;
+        };
+        if (pbr.baseColorFactor.size() == 4) {
+            const std::vector<double> f = unitFactors(pbr.baseColorFactor, "baseColorFactor");
+            out.baseColorFactor = glm::vec4(f[0], f[1], f[2], f[3]);
+        }
         out.baseColorTexture = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, "baseColorTexture");
-        out.metallic = static_cast<float>(pbr.metallicFactor);
-        out.roughness = static_cast<float>(pbr.roughnessFactor);
+        out.metallic = static_cast<float>(unitFactors({pbr.metallicFactor}, "metallicFactor")[0]);
+        out.roughness = static_cast<float>(unitFactors({pbr.roughnessFactor}, "roughnessFactor")[0]);
         out.metallicRoughnessTexture = texture(pbr.metallicRoughnessTexture.index,
                                                pbr.metallicRoughnessTexture.texCoord, "metallicRoughnessTexture");
         out.normalTexture = texture(in.normalTexture.index, in.normalTexture.texCoord, "normalTexture");
         out.normalScale = static_cast<float>(in.normalTexture.scale);
-        if (in.emissiveFactor.size() == 3)
-            out.emissiveFactor = glm::vec3(in.emissiveFactor[0], in.emissiveFactor[1], in.emissiveFactor[2]);
+        if (in.emissiveFactor.size() == 3) {
+            const std::vector<double> f = unitFactors(in.emissiveFactor, "emissiveFactor");
+            out.emissiveFactor = glm::vec3(f[0], f[1], f[2]);
+        }
         out.emissiveTexture = texture(in.emissiveTexture.index, in.emissiveTexture.texCoord, "emissiveTexture");
         out.occlusionTexture = texture(in.occlusionTexture.index, in.occlusionTexture.texCoord, "occlusionTexture");
         out.occlusionStrength = static_cast<float>(in.occlusionTexture.strength);
@@ -1085,26 +1147,44 @@ void Loader::loadLights(Scene& scene) const {
         const tinygltf::Light& in = model_.lights[l];
         Light out;
         out.name = in.name;
+        const std::string what = "light " + std::to_string(l) + (in.name.empty() ? "" : " ('" + in.name + "')");
+        // Values outside KHR_lights_punctual's ranges are warnings; Lit uses (and a save writes)
+        // the nearest valid value.
         if (in.type == "directional") {
             out.type = LightType::Directional;
         } else if (in.type == "point") {
             out.type = LightType::Point;
         } else if (in.type == "spot") {
             out.type = LightType::Spot;
-            out.innerConeAngle = static_cast<float>(in.spot.innerConeAngle);
-            out.outerConeAngle = static_cast<float>(in.spot.outerConeAngle);
+            constexpr double kQuarterTurn = 1.5707963267948966;  // the largest outerConeAngle
+            const double outer = std::isnan(in.spot.outerConeAngle) ? kQuarterTurn : std::clamp(in.spot.outerConeAngle, 1e-4, kQuarterTurn);
+            const double inner = std::isnan(in.spot.innerConeAngle) ? 0.0 : std::clamp(in.spot.innerConeAngle, 0.0, outer * 0.999);
+            if (outer != in.spot.outerConeAngle || inner != in.spot.innerConeAngle)
+                warn(what + " has cone angles inner " + numberText(in.spot.innerConeAngle) + ", outer " +
+                     numberText(in.spot.outerConeAngle) + " rad (the spec wants 0 <= inner < outer <= pi/2); Lit uses inner " +
+                     numberText(inner) + ", outer " + numberText(outer));
+            out.innerConeAngle = static_cast<float>(inner);
+            out.outerConeAngle = static_cast<float>(outer);
             noteNumber(out.fileNumbers, "innerConeAngle", in.spot.innerConeAngle);
             noteNumber(out.fileNumbers, "outerConeAngle", in.spot.outerConeAngle);
         } else {
-            fail("light " + std::to_string(l) + " has unknown type '" + in.type + "'");
+            fail(what + " has unknown type '" + in.type + "'");
         }
         if (in.color.size() == 3) {
-            out.color = glm::vec3(in.color[0], in.color[1], in.color[2]);
+            std::vector<double> c;
+            if (!insideUnitRange(in.color, c))
+                warn(what + " has color " + listText(in.color) + " outside 0..1; Lit uses " + listText(c));
+            out.color = glm::vec3(c[0], c[1], c[2]);
             for (std::size_t k = 0; k < 3; ++k) noteNumber(out.fileNumbers, "color" + std::to_string(k), in.color[k]);
         }
+        double fileIntensity = in.intensity;
+        if (!(fileIntensity >= 0.0)) {
+            warn(what + " has intensity " + numberText(fileIntensity) + "; Lit uses 0 (it must not be negative)");
+            fileIntensity = 0.0;
+        }
         // Photometric in the file (cd, lx), radiometric in the Scene (W/sr, W/m²).
-        out.intensity = radiometricFromPhotometric(in.intensity);
-        out.fileIntensity = in.intensity;
+        out.intensity = radiometricFromPhotometric(fileIntensity);
+        out.fileIntensity = fileIntensity;
         out.fileIntensityAsLoaded = out.intensity;
         out.range = static_cast<float>(in.range);
         noteNumber(out.fileNumbers, "range", in.range);
@@ -1126,14 +1206,22 @@ void Loader::loadCameras(Scene& scene) const {
         Camera out;
         out.name = in.name;
         if (in.type == "perspective") {
-            if (in.perspective.yfov > 0.0) out.yfov = static_cast<float>(in.perspective.yfov);
-            out.aspectRatio = static_cast<float>(std::max(in.perspective.aspectRatio, 0.0));
-            if (in.perspective.znear > 0.0) out.znear = static_cast<float>(in.perspective.znear);
-            out.zfar = static_cast<float>(std::max(in.perspective.zfar, 0.0));
-            noteNumber(out.fileNumbers, "yfov", in.perspective.yfov);
-            noteNumber(out.fileNumbers, "aspectRatio", in.perspective.aspectRatio);
-            noteNumber(out.fileNumbers, "znear", in.perspective.znear);
-            noteNumber(out.fileNumbers, "zfar", in.perspective.zfar);
+            const std::string what = "camera " + std::to_string(c) + (in.name.empty() ? "" : " ('" + in.name + "')");
+            const tinygltf::PerspectiveCamera& p = in.perspective;
+            // The spec: yfov > 0, znear > 0, zfar > znear when present (0 here: absent, infinite).
+            if (p.yfov > 0.0 && p.yfov < 3.14159) out.yfov = static_cast<float>(p.yfov);
+            else warn(what + " has yfov " + numberText(p.yfov) + " rad; Lit uses " + numberText(out.yfov));
+            out.aspectRatio = static_cast<float>(std::max(p.aspectRatio, 0.0));
+            if (p.znear > 0.0) out.znear = static_cast<float>(p.znear);
+            else warn(what + " has znear " + numberText(p.znear) + "; Lit uses " + numberText(out.znear));
+            if (p.zfar > 0.0 && !(p.zfar > out.znear))
+                warn(what + " has zfar " + numberText(p.zfar) + " not beyond znear " + numberText(out.znear) +
+                     "; Lit uses an infinite far plane");
+            out.zfar = p.zfar > out.znear ? static_cast<float>(p.zfar) : 0.0f;
+            noteNumber(out.fileNumbers, "yfov", p.yfov);
+            noteNumber(out.fileNumbers, "aspectRatio", p.aspectRatio);
+            noteNumber(out.fileNumbers, "znear", p.znear);
+            noteNumber(out.fileNumbers, "zfar", p.zfar);
         } else {
             warn("camera " + std::to_string(c) + " is " + (in.type.empty() ? std::string("untyped") : in.type) +
                  "; Lit renders it as a perspective camera with yfov 0.8 (it is saved back as it was)");
