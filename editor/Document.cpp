@@ -1,6 +1,7 @@
 #include "Document.h"
 
 #include <algorithm>
+#include <tuple>
 #include <utility>
 
 namespace lit::editor {
@@ -38,7 +39,19 @@ bool operator==(const EditableState& a, const EditableState& b) {
            a.cameras == b.cameras && a.pathKeys == b.pathKeys && a.pathOptions == b.pathOptions &&
            a.meshCount == b.meshCount && a.primitiveMaterials == b.primitiveMaterials &&
            a.cameraPathName == b.cameraPathName && a.animationChannels == b.animationChannels &&
-           a.skinNodes == b.skinNodes;
+           a.skinNodes == b.skinNodes && a.otherSceneRoots == b.otherSceneRoots && a.keptNodeItems == b.keptNodeItems;
+}
+
+std::vector<std::vector<int>> otherSceneRootsOf(const Scene& scene) {
+    std::vector<std::vector<int>> roots;
+    for (const Scene::OtherScene& other : scene.otherScenes) roots.push_back(other.roots);
+    return roots;
+}
+
+std::vector<std::pair<int, int>> keptNodeItemsOf(const Scene& scene) {
+    std::vector<std::pair<int, int>> items;
+    for (const Node& node : scene.keptNodes) items.emplace_back(node.light, node.camera);
+    return items;
 }
 
 std::vector<std::vector<Animation::Channel>> animationChannelsOf(const Scene& scene) {
@@ -66,7 +79,8 @@ Document::Document(Scene scene_, CameraPath path, std::filesystem::path file_)
 EditableState Document::capture() const {
     return EditableState{scene.nodes,       scene.materials,      scene.lights,        scene.cameras,
                          cameraPath.keys(), cameraPath.options(), scene.meshes.size(), primitiveMaterialsOf(scene),
-                         cameraPathName,    animationChannelsOf(scene), skinNodesOf(scene)};
+                         cameraPathName,    animationChannelsOf(scene), skinNodesOf(scene),
+                         otherSceneRootsOf(scene), keptNodeItemsOf(scene)};
 }
 
 bool Document::matches(const EditableState& state) const {
@@ -75,7 +89,8 @@ bool Document::matches(const EditableState& state) const {
            cameraPath.keys() == state.pathKeys && cameraPath.options() == state.pathOptions &&
            scene.meshes.size() == state.meshCount && primitiveMaterialsOf(scene) == state.primitiveMaterials &&
            cameraPathName == state.cameraPathName && animationChannelsOf(scene) == state.animationChannels &&
-           skinNodesOf(scene) == state.skinNodes;
+           skinNodesOf(scene) == state.skinNodes && otherSceneRootsOf(scene) == state.otherSceneRoots &&
+           keptNodeItemsOf(scene) == state.keptNodeItems;
 }
 
 void Document::restore(const EditableState& state) {
@@ -138,6 +153,10 @@ void Document::restore(const EditableState& state) {
         scene.skins[s].joints.assign(nodes.begin(), nodes.end() - 1);
         scene.skins[s].skeleton = nodes.back();
     }
+    for (std::size_t o = 0; o < scene.otherScenes.size() && o < state.otherSceneRoots.size(); ++o)
+        scene.otherScenes[o].roots = state.otherSceneRoots[o];
+    for (std::size_t k = 0; k < scene.keptNodes.size() && k < state.keptNodeItems.size(); ++k)
+        std::tie(scene.keptNodes[k].light, scene.keptNodes[k].camera) = state.keptNodeItems[k];
 
     if (selectedNode >= static_cast<int>(scene.nodes.size())) selectedNode = -1;
     std::erase_if(alsoSelected, [this](int n) { return n >= static_cast<int>(scene.nodes.size()) || n == selectedNode; });

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "RenderSettings.h"
@@ -41,6 +42,10 @@ struct EditableState {
     // joints followed by its skeleton node.
     std::vector<std::vector<Animation::Channel>> animationChannels;
     std::vector<std::vector<int>> skinNodes;
+    // Each other scene's roots, and each kept node's light and camera (scene/Scene.h: keptNodes;
+    // a delete renumbers lights and cameras).
+    std::vector<std::vector<int>> otherSceneRoots;
+    std::vector<std::pair<int, int>> keptNodeItems;
 };
 
 // Which revision counters an edit must bump so the renderer redoes the right work.

@@ -271,13 +271,14 @@ std::string deleteSelection(Document& doc) {
         // Lights and cameras that only deleted nodes held go too.
         std::vector<bool> lightUsed(scene.lights.size(), false), cameraUsed(scene.cameras.size(), false);
         std::vector<bool> lightDeleted(scene.lights.size(), false), cameraDeleted(scene.cameras.size(), false);
-        for (std::size_t i = 0; i < count; ++i) {
-            const Node& n = scene.nodes[i];
+        const auto markUse = [&](const Node& n, bool deleted) {
             if (n.light >= 0 && n.light < static_cast<int>(scene.lights.size()))
-                (removed[i] ? lightDeleted : lightUsed)[static_cast<std::size_t>(n.light)] = true;
+                (deleted ? lightDeleted : lightUsed)[static_cast<std::size_t>(n.light)] = true;
             if (n.camera >= 0 && n.camera < static_cast<int>(scene.cameras.size()))
-                (removed[i] ? cameraDeleted : cameraUsed)[static_cast<std::size_t>(n.camera)] = true;
-        }
+                (deleted ? cameraDeleted : cameraUsed)[static_cast<std::size_t>(n.camera)] = true;
+        };
+        for (std::size_t i = 0; i < count; ++i) markUse(scene.nodes[i], removed[i]);
+        for (const Node& n : scene.keptNodes) markUse(n, false);  // the file's nodes outside the shown scene
         auto compact = [](auto& items, const std::vector<bool>& deleted, const std::vector<bool>& used) {
             std::vector<int> map(items.size(), -1);
             std::size_t keep = 0;
@@ -293,6 +294,12 @@ std::string deleteSelection(Document& doc) {
         const std::vector<int> lightMap = compact(scene.lights, lightDeleted, lightUsed);
         const std::vector<int> cameraMap = compact(scene.cameras, cameraDeleted, cameraUsed);
 
+        const auto renumberItems = [&](Node& n) {
+            if (n.light >= 0 && n.light < static_cast<int>(lightMap.size())) n.light = lightMap[static_cast<std::size_t>(n.light)];
+            if (n.camera >= 0 && n.camera < static_cast<int>(cameraMap.size()))
+                n.camera = cameraMap[static_cast<std::size_t>(n.camera)];
+        };
+        for (Node& n : scene.keptNodes) renumberItems(n);
         std::vector<Node> nodes;
         nodes.reserve(static_cast<std::size_t>(next));
         for (std::size_t i = 0; i < count; ++i) {
@@ -303,20 +310,24 @@ std::string deleteSelection(Document& doc) {
             for (const int c : n.children)
                 if (remap[static_cast<std::size_t>(c)] >= 0) children.push_back(remap[static_cast<std::size_t>(c)]);
             n.children = std::move(children);
-            if (n.light >= 0 && n.light < static_cast<int>(lightMap.size())) n.light = lightMap[static_cast<std::size_t>(n.light)];
-            if (n.camera >= 0 && n.camera < static_cast<int>(cameraMap.size()))
-                n.camera = cameraMap[static_cast<std::size_t>(n.camera)];
+            renumberItems(n);
             nodes.push_back(std::move(n));
         }
         scene.nodes = std::move(nodes);
         // What else names nodes follows the renumbering: animation channels of deleted nodes go,
-        // and a skin with a deleted joint keeps -1 there (the writer then leaves it out).
+        // a skin with a deleted joint keeps -1 there (the writer then leaves it out), and other
+        // scenes lose deleted roots. References to kept nodes (scene/Scene.h: keptNodeRef) stay.
         const auto renumber = [&](int node) {
+            if (node <= -2) return node;
             return node >= 0 && static_cast<std::size_t>(node) < count ? remap[static_cast<std::size_t>(node)] : -1;
         };
         for (Animation& animation : scene.animations) {
             for (Animation::Channel& channel : animation.channels) channel.node = renumber(channel.node);
-            std::erase_if(animation.channels, [](const Animation::Channel& c) { return c.node < 0; });
+            std::erase_if(animation.channels, [](const Animation::Channel& c) { return c.node == -1; });
+        }
+        for (Scene::OtherScene& other : scene.otherScenes) {
+            for (int& root : other.roots) root = renumber(root);
+            std::erase(other.roots, -1);
         }
         for (Skin& skin : scene.skins) {
             for (int& joint : skin.joints) joint = renumber(joint);

@@ -3,8 +3,9 @@
 // little of it and a bad file must give a SceneLoadError, never a crash.
 //
 // Decisions worth knowing:
-// - Only the nodes of the chosen scene (the default scene, else scene 0, else every parentless
-//   node) are imported; nodes of other scenes are dropped and indices remapped.
+// - The nodes of the chosen scene (the default scene, else scene 0, else every parentless node)
+//   become Scene::nodes; the file's other nodes (other scenes' trees, nodes of no scene) become
+//   Scene::keptNodes, kept for saving and not drawn. Both lists are in file order.
 // - Missing NORMALs are computed as flat normals (the primitive is unwelded, as glTF requires);
 //   missing TANGENTs are always computed (not only for normal-mapped materials), so every
 //   vertex carries a valid tangent frame. A file's TANGENTs are ignored when its NORMALs are
@@ -242,6 +243,9 @@ private:
     // `expectedCount`: the element count the accessor must have (attributes: the vertex count);
     // without one the accessor must have a buffer view (so its size is bounded by the file).
     KeptAccessor keptAccessor(int index, const std::string& role, std::optional<std::size_t> expectedCount) const;
+    // A buffer view's / an accessor's name, extras and extensions (empty for an invalid index).
+    KeptObject keptView(int index) const;
+    KeptAccessorInfo accessorInfo(int index) const;
     // The attributes of `attributes` except those named in `skip`; an unreadable one is reported
     // and left out.
     KeptAttributes keptAttributes(const std::map<std::string, int>& attributes, std::initializer_list<std::string_view> skip,
@@ -257,7 +261,7 @@ private:
     Log& log_;
     const GltfLoadOptions& options_;
     const ImageDeduplicator& images_;  // which images are byte-identical to an earlier one
-    mutable std::vector<int> nodeRemap_;  // file node → Scene node (-1: not imported), set by loadNodes
+    mutable std::vector<int> nodeRemap_;  // file node → node reference (scene/Scene.h: keptNodeRef), set by loadNodes
 };
 
 std::string describeNode(const tinygltf::Model& model, std::size_t index) {
@@ -482,6 +486,16 @@ void Loader::checkExtensions() const {
         if (!isSupported(e)) warn("ignores the glTF extension " + e + " (not supported; its data is kept and saved back as it was)");
 }
 
+// Notes a file's number that a float cannot hold exactly (scene/Scene.h: FileNumbers).
+void noteNumber(FileNumbers& numbers, const std::string& key, double file) {
+    if (std::isfinite(file) && static_cast<double>(static_cast<float>(file)) != file) numbers[key] = file;
+}
+
+// How far from 1 a rotation's length may be and still count as unit: float32 rounding of the
+// components (Blender writes float32 values) is a few 1e-8; well inside the glTF validator's
+// unit-length tolerance.
+constexpr float kUnitQuaternionTolerance = 1e-6f;
+
 void Loader::loadNodes(Scene& scene) const {
     const std::size_t n = model_.nodes.size();
     // Parents, with every index checked, and the tree property (one parent per node) enforced.
@@ -547,10 +561,13 @@ void Loader::loadNodes(Scene& scene) const {
             if (parent[i] < 0) roots.push_back(static_cast<int>(i));
     }
 
-    // Keep the nodes reachable from the roots, in file order, and remap indices.
-    std::vector<int> remap(n, -1);
+    // The nodes reachable from the roots become Scene::nodes, the others Scene::keptNodes (kept
+    // for saving, not drawn), each in file order; `reference` maps a file node to its node
+    // reference (scene/Scene.h: keptNodeRef).
+    std::vector<int> remap(n, -1);  // file node → index in its list (nodes or keptNodes)
+    std::vector<int> reference(n, -1);
+    std::vector<std::uint8_t> reachable(n, 0);
     {
-        std::vector<std::uint8_t> reachable(n, 0);
         std::vector<int> stack(roots.begin(), roots.end());
         while (!stack.empty()) {
             const auto i = static_cast<std::size_t>(stack.back());
@@ -558,20 +575,22 @@ void Loader::loadNodes(Scene& scene) const {
             reachable[i] = 1;
             for (int child : model_.nodes[i].children) stack.push_back(child);
         }
-        int next = 0;
-        for (std::size_t i = 0; i < n; ++i)
-            if (reachable[i]) remap[i] = next++;
-        if (static_cast<std::size_t>(next) < n)
-            log_.info(path_.filename().string() + ": " + std::to_string(n - static_cast<std::size_t>(next)) +
-                      " nodes are not part of the scene and were not imported");
+        int shown = 0, kept = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            remap[i] = reachable[i] ? shown++ : kept++;
+            reference[i] = reachable[i] ? remap[i] : keptNodeRef(remap[i]);
+        }
+        if (kept > 0)
+            log_.info(path_.filename().string() + ": " + std::to_string(kept) +
+                      " nodes are not part of the shown scene; they are kept for saving, not drawn");
     }
 
     for (std::size_t i = 0; i < n; ++i) {
-        if (remap[i] < 0) continue;
         const tinygltf::Node& in = model_.nodes[i];
         const std::string what = describeNode(model_, i);
         Node node;
         node.name = in.name;
+        // A node's parent and children are in its own list (a shown node's parent is shown).
         node.parent = parent[i] >= 0 ? remap[static_cast<std::size_t>(parent[i])] : -1;
         for (int child : in.children) node.children.push_back(remap[static_cast<std::size_t>(child)]);
 
@@ -633,7 +652,9 @@ void Loader::loadNodes(Scene& scene) const {
                                   static_cast<float>(in.rotation[1]), static_cast<float>(in.rotation[2]));
                 const float len = glm::length(q);
                 if (std::isfinite(len) && len > 1e-6f) {
-                    node.rotation = q / len;
+                    // A unit quaternion as float32 (a few ulp off 1) is kept as the file wrote it,
+                    // so a save writes the same numbers; others are normalized.
+                    node.rotation = std::abs(len - 1.0f) <= kUnitQuaternionTolerance ? q : q / len;
                 } else {
                     warn(what + " has a zero rotation quaternion; using the identity");
                 }
@@ -643,12 +664,15 @@ void Loader::loadNodes(Scene& scene) const {
                     fail(what + " has a 'scale' with " + std::to_string(in.scale.size()) + " numbers, expected 3");
                 node.scale = glm::vec3(in.scale[0], in.scale[1], in.scale[2]);
             }
+            for (std::size_t k = 0; k < in.translation.size(); ++k) noteNumber(node.fileNumbers, "t" + std::to_string(k), in.translation[k]);
+            for (std::size_t k = 0; k < in.rotation.size(); ++k) noteNumber(node.fileNumbers, "r" + std::to_string(k), in.rotation[k]);
+            for (std::size_t k = 0; k < in.scale.size(); ++k) noteNumber(node.fileNumbers, "s" + std::to_string(k), in.scale[k]);
         }
         node.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_lights_punctual"});
-        scene.nodes.push_back(std::move(node));
+        (reachable[i] ? scene.nodes : scene.keptNodes).push_back(std::move(node));
     }
     for (int root : roots) scene.roots.push_back(remap[static_cast<std::size_t>(root)]);
-    nodeRemap_ = remap;
+    nodeRemap_ = reference;
 }
 
 void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& meshName, std::size_t primitiveIndex,
@@ -1069,6 +1093,7 @@ void Loader::loadImages(Scene& scene) const {
             // bytes, which the canonical entry holds).
             out.encoded = model_.images[static_cast<std::size_t>(images_.canonical(static_cast<int>(i)))].image;
             out.mimeType = in.mimeType.empty() ? mimeTypeOf(in.uri, out.encoded) : in.mimeType;
+            out.view = keptView(in.bufferView);
         }
         if (images_.canonical(static_cast<int>(i)) != static_cast<int>(i)) {
             // A copy of an earlier image: textures use that one; this entry keeps its name and
@@ -1140,6 +1165,8 @@ void Loader::loadLights(Scene& scene) const {
                      numberText(inner) + ", outer " + numberText(outer));
             out.innerConeAngle = static_cast<float>(inner);
             out.outerConeAngle = static_cast<float>(outer);
+            noteNumber(out.fileNumbers, "innerConeAngle", in.spot.innerConeAngle);
+            noteNumber(out.fileNumbers, "outerConeAngle", in.spot.outerConeAngle);
         } else {
             fail(what + " has unknown type '" + in.type + "'");
         }
@@ -1148,6 +1175,7 @@ void Loader::loadLights(Scene& scene) const {
             if (!insideUnitRange(in.color, c))
                 warn(what + " has color " + listText(in.color) + " outside 0..1; Lit uses " + listText(c));
             out.color = glm::vec3(c[0], c[1], c[2]);
+            for (std::size_t k = 0; k < 3; ++k) noteNumber(out.fileNumbers, "color" + std::to_string(k), in.color[k]);
         }
         double fileIntensity = in.intensity;
         if (!(fileIntensity >= 0.0)) {
@@ -1159,6 +1187,7 @@ void Loader::loadLights(Scene& scene) const {
         out.fileIntensity = fileIntensity;
         out.fileIntensityAsLoaded = out.intensity;
         out.range = static_cast<float>(in.range);
+        noteNumber(out.fileNumbers, "range", in.range);
         // Lit's own flag (scene/GltfWriter.cpp writes it); glTF has no shadow switch.
         if (in.extras.Has("litCastsShadow") && in.extras.Get("litCastsShadow").IsBool())
             out.castsShadow = in.extras.Get("litCastsShadow").Get<bool>();
@@ -1189,6 +1218,10 @@ void Loader::loadCameras(Scene& scene) const {
                 warn(what + " has zfar " + numberText(p.zfar) + " not beyond znear " + numberText(out.znear) +
                      "; Lit uses an infinite far plane");
             out.zfar = p.zfar > out.znear ? static_cast<float>(p.zfar) : 0.0f;
+            noteNumber(out.fileNumbers, "yfov", p.yfov);
+            noteNumber(out.fileNumbers, "aspectRatio", p.aspectRatio);
+            noteNumber(out.fileNumbers, "znear", p.znear);
+            noteNumber(out.fileNumbers, "zfar", p.zfar);
         } else {
             warn("camera " + std::to_string(c) + " is " + (in.type.empty() ? std::string("untyped") : in.type) +
                  "; Lit renders it as a perspective camera with yfov 0.8 (it is saved back as it was)");
@@ -1199,6 +1232,10 @@ void Loader::loadCameras(Scene& scene) const {
             }
             if (in.orthographic.znear > 0.0) out.znear = static_cast<float>(in.orthographic.znear);
             if (in.orthographic.zfar > in.orthographic.znear) out.zfar = static_cast<float>(in.orthographic.zfar);
+            noteNumber(out.fileNumbers, "xmag", in.orthographic.xmag);
+            noteNumber(out.fileNumbers, "ymag", in.orthographic.ymag);
+            noteNumber(out.fileNumbers, "znear", in.orthographic.znear);
+            noteNumber(out.fileNumbers, "zfar", in.orthographic.zfar);
         }
         out.kept = gltfkeep::keep(in.extras, in.extensions);
         scene.cameras.push_back(std::move(out));
@@ -1217,6 +1254,18 @@ int elementComponents(int type) {
         default:
             return componentsOf(type);
     }
+}
+
+KeptObject Loader::keptView(int index) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.bufferViews.size()) return {};
+    const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(index)];
+    return KeptObject{view.name, gltfkeep::keep(view.extras, view.extensions)};
+}
+
+KeptAccessorInfo Loader::accessorInfo(int index) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) return {};
+    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+    return KeptAccessorInfo{a.name, gltfkeep::keep(a.extras, a.extensions), keptView(a.bufferView)};
 }
 
 KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optional<std::size_t> expectedCount) const {
@@ -1264,6 +1313,7 @@ KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optio
     out.componentType = a.componentType;
     out.normalized = a.normalized;
     out.count = a.count;
+    out.info = accessorInfo(index);
     std::pair<const unsigned char*, std::size_t> base{nullptr, 0};
     if (a.bufferView >= 0 && a.count > 0) base = viewData(a.bufferView, a.byteOffset, elementSize, a.count, true);
     out.bytes.assign(a.count * elementSize, 0);  // no buffer view: zeros (glTF §3.6.2.3)
@@ -1285,6 +1335,8 @@ KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optio
                                      elementSize, count, false);
         KeptAccessor::Sparse sparse;
         sparse.indexComponentType = a.sparse.indices.componentType;
+        sparse.indicesView = keptView(a.sparse.indices.bufferView);
+        sparse.valuesView = keptView(a.sparse.values.bufferView);
         sparse.hasBase = base.first != nullptr;
         sparse.indices.reserve(count);
         for (std::size_t i = 0; i < count; ++i) {
@@ -1377,7 +1429,7 @@ void Loader::loadSkins(Scene& scene) const {
         };
         for (int joint : in.joints) out.joints.push_back(node(joint));
         if (std::find(out.joints.begin(), out.joints.end(), -1) != out.joints.end())
-            warn(what + " has joints that are not part of the scene; it is not saved back");
+            warn(what + " has joints that do not exist; it is not saved back");
         out.skeleton = node(in.skeleton);
         if (in.inverseBindMatrices >= 0) {
             try {
@@ -1385,6 +1437,7 @@ void Loader::loadSkins(Scene& scene) const {
                 if (matrices.type != "MAT4" || matrices.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
                     fail(what + "'s inverseBindMatrices are not MAT4 floats");
                 out.inverseBindMatrices.resize(matrices.bytes.size() / sizeof(float));
+                out.inverseBindMatricesInfo = matrices.info;
                 std::memcpy(out.inverseBindMatrices.data(), matrices.bytes.data(), matrices.bytes.size());
             } catch (const SceneLoadError& e) {
                 warn(std::string(e.what()) + "; the skin is not saved back");
@@ -1417,7 +1470,9 @@ void Loader::loadAnimations(Scene& scene) const {
                 Animation::Sampler sampler;
                 sampler.interpolation = s.interpolation.empty() ? "LINEAR" : s.interpolation;
                 sampler.components = output.components;
-                sampler.extras = gltfkeep::extrasText(s.extras);
+                sampler.kept = gltfkeep::keep(s.extras, s.extensions);
+                sampler.inputInfo = accessorInfo(s.input);
+                sampler.outputInfo = accessorInfo(s.output);
                 for (std::size_t k = 0; k < input.count; ++k) sampler.input.push_back(input.component(k, 0));
                 for (std::size_t k = 0; k < output.count; ++k)
                     for (int c = 0; c < output.components; ++c) sampler.output.push_back(output.component(k, c));
@@ -1428,7 +1483,7 @@ void Loader::loadAnimations(Scene& scene) const {
                     fail(what + " has a channel with sampler " + std::to_string(c.sampler) + ", which does not exist");
                 if (c.target_node < 0 || static_cast<std::size_t>(c.target_node) >= nodeRemap_.size()) continue;
                 const int node = nodeRemap_[static_cast<std::size_t>(c.target_node)];
-                if (node < 0) continue;  // a node not imported
+                if (node == -1) continue;
                 out.channels.push_back({c.sampler, node, c.target_path, gltfkeep::keep(c.extras, c.extensions)});
             }
         } catch (const SceneLoadError& e) {
@@ -1449,33 +1504,33 @@ void Loader::keepFileData(Scene& scene) const {
     }
     scene.fileKept = gltfkeep::keep(model_.extras, model_.extensions, {"KHR_lights_punctual"});
     scene.copyright = model_.asset.copyright;
+    scene.generator = model_.asset.generator;
+    for (const tinygltf::Buffer& buffer : model_.buffers)
+        scene.buffers.push_back(KeptObject{buffer.name, gltfkeep::keep(buffer.extras, buffer.extensions)});
     scene.assetKept = gltfkeep::keep(model_.asset.extras, model_.asset.extensions);
-    // The other scenes, by the nodes they share with the shown one.
+    // The other scenes.
     scene.sceneIndex = std::max(sceneIndex, 0);
     for (std::size_t i = 0; i < model_.scenes.size(); ++i) {
         if (static_cast<int>(i) == sceneIndex) continue;
         const tinygltf::Scene& s = model_.scenes[i];
         Scene::OtherScene other{s.name, {}, gltfkeep::keep(s.extras, s.extensions)};
-        std::size_t missing = 0;
+        // Its roots: nodes the shown scene shares, or kept nodes (scene/Scene.h: keptNodeRef).
         for (int root : s.nodes) {
             const int mapped = root >= 0 && static_cast<std::size_t>(root) < nodeRemap_.size()
                                    ? nodeRemap_[static_cast<std::size_t>(root)]
                                    : -1;
-            if (mapped < 0) {
-                ++missing;
-            } else if (std::find(other.roots.begin(), other.roots.end(), mapped) == other.roots.end()) {
+            if (mapped == -1)
+                warn("scene " + std::to_string(i) + (s.name.empty() ? "" : " ('" + s.name + "')") + " lists node " +
+                     std::to_string(root) + ", which does not exist; a save leaves it out");
+            else if (std::find(other.roots.begin(), other.roots.end(), mapped) == other.roots.end())
                 other.roots.push_back(mapped);
-            }
         }
-        if (missing > 0)
-            warn("scene " + std::to_string(i) + (s.name.empty() ? "" : " ('" + s.name + "')") + " has " +
-                 std::to_string(missing) + " root nodes that are not part of the scene Lit shows (scene " +
-                 std::to_string(scene.sceneIndex) + "); a save keeps the scene without them");
         scene.otherScenes.push_back(std::move(other));
     }
     static const std::array<std::string_view, 2> own = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
     for (const std::string& e : model_.extensionsUsed)
         if (std::find(own.begin(), own.end(), e) == own.end()) scene.unknownExtensionsUsed.push_back(e);
+    scene.extensionsRequired = model_.extensionsRequired;
 }
 
 Scene Loader::run() {
@@ -1506,6 +1561,28 @@ std::vector<std::string> lines(const std::string& text) {
     for (std::string line; std::getline(in, line);)
         if (!line.empty()) out.push_back(line);
     return out;
+}
+
+// tinygltf 2.7 reads an animation sampler's "extensions" from the animation object instead of
+// the sampler: read them from the JSON again (only files with animations pay for the parse).
+void readAnimationSamplerExtensions(tinygltf::Model& model, std::string_view text) {
+    if (model.animations.empty()) return;
+    const nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+    const nlohmann::json* animations = doc.is_object() && doc.contains("animations") ? &doc["animations"] : nullptr;
+    for (std::size_t a = 0; a < model.animations.size(); ++a) {
+        const nlohmann::json* samplers = animations && animations->is_array() && a < animations->size() &&
+                                                 (*animations)[a].is_object() && (*animations)[a].contains("samplers")
+                                             ? &(*animations)[a]["samplers"]
+                                             : nullptr;
+        for (std::size_t i = 0; i < model.animations[a].samplers.size(); ++i) {
+            tinygltf::ExtensionMap& extensions = model.animations[a].samplers[i].extensions;
+            extensions.clear();
+            if (!samplers || !samplers->is_array() || i >= samplers->size() || !(*samplers)[i].is_object()) continue;
+            const auto found = (*samplers)[i].find("extensions");
+            if (found == (*samplers)[i].end() || !found->is_object()) continue;
+            for (auto it = found->begin(); it != found->end(); ++it) extensions[it.key()] = gltfkeep::toValue(it.value());
+        }
+    }
 }
 
 }  // namespace
@@ -1551,6 +1628,7 @@ Scene loadGltf(const std::filesystem::path& path, Log& log, const GltfLoadOption
         throw SceneLoadError(message);
     }
     for (std::size_t i = 0; i < model.images.size(); ++i) model.images[i].image = imageContext.images.take(static_cast<int>(i));
+    readAnimationSamplerExtensions(model, guarded.json);
     checkMemoryBudget(path, model, imageContext.images, options.limits);
 
     if (options.progress) options.progress({"file", 1, 1});

@@ -4,9 +4,16 @@
 // - All geometry and embedded images go into one buffer: "<stem>.bin" beside a .gltf, the BIN
 //   chunk of a .glb. A primitive's vertices are one interleaved buffer view (lit::Vertex as it
 //   is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes); indices are UNSIGNED_INT.
-// - Only nodes reachable from Scene::roots are written (the loader imports no others), in
-//   index order, so a scene the loader made keeps its node indices. Primitives without
-//   triangles are left out (the loader skips them), and so are meshes left with none.
+// - The nodes reachable from Scene::roots are written first, in index order, then
+//   Scene::keptNodes (the file's nodes outside the shown scene), in theirs: a file whose shown
+//   nodes came first keeps its node indices. Primitives without triangles are left out (the
+//   loader skips them), and so are meshes left with none.
+// - Names, extras and extensions of the file's accessors, buffer views and buffers go on the
+//   accessor or view that holds the same data again (kept attributes, sparse data, embedded
+//   images, animation data); the one buffer gets those of all the file's buffers.
+// - asset.generator is "Lit": glTF means the tool that wrote the file, and importers use it to
+//   work around that tool's quirks. The file's own generator goes to the asset's extras as
+//   "litSourceGenerator" (a file Lit wrote keeps the one it already has there).
 // - An image that came from a file which still exists is referenced by a URI relative to the new
 //   file's folder (not copied, not re-encoded: JPEGs stay JPEGs); an image embedded in the source
 //   is written with its own bytes and MIME type (Image::encoded: 16-bit PNGs and KTX2 stay as
@@ -50,6 +57,7 @@
 #include <map>
 #include <optional>
 #include <tuple>
+#include <utility>
 
 namespace lit {
 
@@ -62,6 +70,8 @@ constexpr int kElementArrayBuffer = 34963;  // GL_ELEMENT_ARRAY_BUFFER: indices
 constexpr const char* kLightsExtension = "KHR_lights_punctual";
 constexpr const char* kEmissiveStrengthExtension = "KHR_materials_emissive_strength";
 constexpr const char* kCastsShadowKey = "litCastsShadow";
+constexpr const char* kGenerator = "Lit";
+constexpr const char* kSourceGeneratorKey = "litSourceGenerator";
 
 std::string lowercase(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -70,6 +80,20 @@ std::string lowercase(std::string s) {
 
 std::string named(const std::string& kind, std::size_t index, const std::string& name) {
     return kind + " " + std::to_string(index) + (name.empty() ? "" : " ('" + name + "')");
+}
+
+// The file's exact number of a field while its float still equals it, else the float
+// (scene/Scene.h: FileNumbers).
+double fileOr(const FileNumbers& numbers, const std::string& key, float value) {
+    const auto it = numbers.find(key);
+    return it != numbers.end() && static_cast<float>(it->second) == value ? it->second : static_cast<double>(value);
+}
+
+template <int N>
+std::vector<double> fileOr(const FileNumbers& numbers, const char* prefix, const glm::vec<N, float>& v) {
+    std::vector<double> out(N);
+    for (int i = 0; i < N; ++i) out[static_cast<std::size_t>(i)] = fileOr(numbers, prefix + std::to_string(i), v[i]);
+    return out;
 }
 
 template <int N>
@@ -108,7 +132,14 @@ private:
     // dropped: the geometry was rebuilt). False when one was dropped.
     bool addKeptAttributes(const KeptAttributes& kept, std::size_t vertexCount, std::map<std::string, int>& attributes);
     void addTargets(const std::vector<KeptAttributes>& targets, std::size_t vertexCount, tinygltf::Primitive& primitive);
-    void addSkins(const std::vector<int>& nodeRemap);
+    void addSkins();
+    // The written index of a node reference (scene/Scene.h: keptNodeRef), -1 when not written.
+    int writtenNode(int reference) const;
+    // Names, extras and extensions of the file's objects Lit lays out itself (scene/Scene.h).
+    void keepView(int view, const KeptObject& kept);
+    void keepAccessor(int accessor, const KeptAccessorInfo& info);
+    void keepBuffers();
+    void checkKeptNodes() const;
     std::optional<std::string> relativeUri(const Image& image) const;
     void addImages();
     void addTextures();
@@ -130,6 +161,7 @@ private:
     std::string replacedAnimation_;
     std::vector<int> meshIndex_;  // scene mesh → glTF mesh, -1 when left out
     std::vector<int> nodeIndex_;  // scene node → glTF node, -1 when not written
+    std::vector<int> keptNodeIndex_;  // Scene::keptNodes → glTF node
     std::vector<int> skinIndex_;  // scene skin → glTF skin, -1 when not written
     std::vector<int> imageIndex_;  // scene image → glTF image, -1 when not written (generated)
     // JSON the tinygltf serialiser cannot write (a sampler's name and extensions): JSON pointer →
@@ -146,6 +178,97 @@ void ModelBuilder::restore(const KeptGltf& kept, tinygltf::Value& extras, tinygl
 void ModelBuilder::restoreTextureInfo(const std::string& keptExtras, const std::string& keptExtensions,
                                       tinygltf::Value& extras, tinygltf::ExtensionMap& extensions) {
     restore(KeptGltf{keptExtras, keptExtensions}, extras, extensions);
+}
+
+void ModelBuilder::keepView(int view, const KeptObject& kept) {
+    if (view < 0 || kept.empty()) return;
+    tinygltf::BufferView& out = model_.bufferViews[static_cast<std::size_t>(view)];
+    out.name = kept.name;
+    tinygltf::ExtensionMap extensions;
+    restore(kept.kept, out.extras, extensions);
+    // tinygltf 2.7 writes no buffer view extensions: set them in the JSON.
+    if (!kept.kept.extensions.empty())
+        jsonPatches_.emplace_back("/bufferViews/" + std::to_string(view) + "/extensions", kept.kept.extensions);
+}
+
+void ModelBuilder::keepAccessor(int accessor, const KeptAccessorInfo& info) {
+    if (accessor < 0) return;
+    tinygltf::Accessor& out = model_.accessors[static_cast<std::size_t>(accessor)];
+    out.name = info.name;
+    tinygltf::ExtensionMap extensions;
+    restore(info.kept, out.extras, extensions);
+    // tinygltf 2.7 writes no accessor extensions: set them in the JSON.
+    if (!info.kept.extensions.empty())
+        jsonPatches_.emplace_back("/accessors/" + std::to_string(accessor) + "/extensions", info.kept.extensions);
+    keepView(out.bufferView, info.view);
+}
+
+// The one buffer gets the first buffer's name (the first that has one) and every buffer's extras
+// keys and extensions, the first buffer's winning.
+void ModelBuilder::keepBuffers() {
+    if (model_.buffers.empty()) return;
+    tinygltf::Buffer& out = model_.buffers[0];
+    nlohmann::json extensions = nlohmann::json::object();
+    for (const KeptObject& kept : scene_.buffers) {
+        if (out.name.empty()) out.name = kept.name;
+        tinygltf::ExtensionMap ignored;
+        if (!(out.extras.Type() != tinygltf::NULL_TYPE && !out.extras.IsObject()))  // a non-object extras: the first's
+            restore(KeptGltf{kept.kept.extras, ""}, out.extras, ignored);
+        const nlohmann::json e = nlohmann::json::parse(kept.kept.extensions.empty() ? "{}" : kept.kept.extensions, nullptr, false);
+        if (e.is_object())
+            for (auto it = e.begin(); it != e.end(); ++it)
+                if (!extensions.contains(it.key())) {
+                    extensions[it.key()] = it.value();
+                    useExtension(it.key());
+                }
+    }
+    // tinygltf 2.7 writes no buffer extensions: set them in the JSON.
+    if (!extensions.empty()) jsonPatches_.emplace_back("/buffers/0/extensions", extensions.dump());
+}
+
+int ModelBuilder::writtenNode(int reference) const {
+    if (reference >= 0)
+        return static_cast<std::size_t>(reference) < nodeIndex_.size() ? nodeIndex_[static_cast<std::size_t>(reference)] : -1;
+    const int kept = keptNodeIndex(reference);
+    return reference <= -2 && static_cast<std::size_t>(kept) < keptNodeIndex_.size()
+               ? keptNodeIndex_[static_cast<std::size_t>(kept)]
+               : -1;
+}
+
+// Kept nodes form trees of their own (the loader's): children in range, each node reached once
+// from the kept nodes without a parent.
+void ModelBuilder::checkKeptNodes() const {
+    const std::size_t count = scene_.keptNodes.size();
+    std::vector<int> parent(count, -1);
+    for (std::size_t i = 0; i < count; ++i) {
+        const Node& node = scene_.keptNodes[i];
+        const std::string what = named("kept node", i, node.name);
+        for (int child : node.children) {
+            if (child < 0 || static_cast<std::size_t>(child) >= count)
+                fail(what + " has child " + std::to_string(child) + ", which does not exist (there are " +
+                     std::to_string(count) + " kept nodes)");
+            if (parent[static_cast<std::size_t>(child)] >= 0 || static_cast<std::size_t>(child) == i)
+                fail(named("kept node", static_cast<std::size_t>(child), scene_.keptNodes[static_cast<std::size_t>(child)].name) +
+                     " has two parents or is its own child");
+            parent[static_cast<std::size_t>(child)] = static_cast<int>(i);
+        }
+        checkIndex(node.mesh, scene_.meshes.size(), what, "mesh");
+        checkIndex(node.light, scene_.lights.size(), what, "light");
+        checkIndex(node.camera, scene_.cameras.size(), what, "camera");
+        checkIndex(node.skin, scene_.skins.size(), what, "skin");
+    }
+    std::vector<std::uint8_t> reached(count, 0);
+    std::vector<std::size_t> stack;
+    for (std::size_t i = 0; i < count; ++i)
+        if (parent[i] < 0) stack.push_back(i);
+    while (!stack.empty()) {
+        const std::size_t i = stack.back();
+        stack.pop_back();
+        reached[i] = 1;
+        for (int child : scene_.keptNodes[i].children) stack.push_back(static_cast<std::size_t>(child));
+    }
+    for (std::size_t i = 0; i < count; ++i)
+        if (!reached[i]) fail(named("kept node", i, scene_.keptNodes[i].name) + " is part of a cycle");
 }
 
 void ModelBuilder::checkIndex(int index, std::size_t count, const std::string& what, const char* kind) const {
@@ -176,6 +299,7 @@ void ModelBuilder::checkScene() const {
         checkFinite(node.scale, what + "'s scale");
         if (glm::length(node.rotation) < 1e-6f) fail(what + "'s rotation is a zero quaternion");
     }
+    checkKeptNodes();
     for (int root : scene_.roots)
         if (root < 0 || root >= static_cast<int>(scene_.nodes.size()))
             fail("root " + std::to_string(root) + " does not exist (the scene has " +
@@ -356,7 +480,10 @@ int ModelBuilder::addKeptAccessor(const KeptAccessor& kept, int target) {
         a.sparse.indices.componentType = sparse->indexComponentType;
         a.sparse.values.bufferView = valueView;
         a.sparse.values.byteOffset = 0;
+        keepView(indexView, sparse->indicesView);
+        keepView(valueView, sparse->valuesView);
     }
+    keepAccessor(accessor, kept.info);
     return accessor;
 }
 
@@ -439,6 +566,7 @@ void ModelBuilder::addImages() {
             out.bufferView = addBufferView(png.data(), png.size(), 0, 0);
             out.mimeType = "image/png";
         }
+        keepView(out.bufferView, image.view);
         restore(image.kept, out.extras, out.extensions);
         imageIndex_[i] = static_cast<int>(model_.images.size());
         model_.images.push_back(std::move(out));
@@ -615,11 +743,11 @@ void ModelBuilder::addLights() {
     for (const Light& light : scene_.lights) {
         tinygltf::Light out;
         out.name = light.name;
-        out.color = doubles(light.color);
+        out.color = fileOr(light.fileNumbers, "color", light.color);
         // Back to the file's photometric units (cd, lx); an unedited light keeps its exact number.
         out.intensity = light.intensity == light.fileIntensityAsLoaded ? light.fileIntensity
                                                                        : photometricFromRadiometric(light.intensity);
-        out.range = std::max(light.range, 0.0f);  // written only when > 0 (0 = infinite)
+        out.range = fileOr(light.fileNumbers, "range", std::max(light.range, 0.0f));  // written only when > 0 (0 = infinite)
         switch (light.type) {
             case LightType::Directional:
                 out.type = "directional";
@@ -629,8 +757,8 @@ void ModelBuilder::addLights() {
                 break;
             case LightType::Spot:
                 out.type = "spot";
-                out.spot.innerConeAngle = light.innerConeAngle;
-                out.spot.outerConeAngle = light.outerConeAngle;
+                out.spot.innerConeAngle = fileOr(light.fileNumbers, "innerConeAngle", light.innerConeAngle);
+                out.spot.outerConeAngle = fileOr(light.fileNumbers, "outerConeAngle", light.outerConeAngle);
                 break;
         }
         if (!light.castsShadow) {
@@ -650,16 +778,18 @@ void ModelBuilder::addCameras() {
         out.name = camera.name;
         if (camera.orthographic && camera.xmag != 0.0f && camera.ymag != 0.0f && camera.zfar > camera.znear) {
             out.type = "orthographic";  // as the file had it (Lit draws it in perspective)
-            out.orthographic.xmag = camera.xmag;
-            out.orthographic.ymag = camera.ymag;
-            out.orthographic.znear = camera.znear;
-            out.orthographic.zfar = camera.zfar;
+            const FileNumbers& n = camera.fileNumbers;
+            out.orthographic.xmag = fileOr(n, "xmag", camera.xmag);
+            out.orthographic.ymag = fileOr(n, "ymag", camera.ymag);
+            out.orthographic.znear = fileOr(n, "znear", camera.znear);
+            out.orthographic.zfar = fileOr(n, "zfar", camera.zfar);
         } else {
             out.type = "perspective";
-            out.perspective.yfov = camera.yfov;
-            out.perspective.znear = camera.znear;
-            out.perspective.zfar = std::max(camera.zfar, 0.0f);  // 0: left out by writeGltfModel
-            out.perspective.aspectRatio = std::max(camera.aspectRatio, 0.0f);  // 0: left out
+            const FileNumbers& n = camera.fileNumbers;
+            out.perspective.yfov = fileOr(n, "yfov", camera.yfov);
+            out.perspective.znear = fileOr(n, "znear", camera.znear);
+            out.perspective.zfar = fileOr(n, "zfar", std::max(camera.zfar, 0.0f));  // 0: left out by writeGltfModel
+            out.perspective.aspectRatio = fileOr(n, "aspectRatio", std::max(camera.aspectRatio, 0.0f));  // 0: left out
         }
         restore(camera.kept, out.extras, out.extensions);
         model_.cameras.push_back(std::move(out));
@@ -668,21 +798,25 @@ void ModelBuilder::addCameras() {
 
 void ModelBuilder::addNodes() {
     const std::vector<int> written = reachableNodes();
-    std::vector<int> remap(scene_.nodes.size(), -1);
-    for (std::size_t i = 0; i < written.size(); ++i) remap[static_cast<std::size_t>(written[i])] = static_cast<int>(i);
-    addSkins(remap);
-    for (int index : written) {
-        const Node& node = scene_.nodes[static_cast<std::size_t>(index)];
+    nodeIndex_.assign(scene_.nodes.size(), -1);
+    for (std::size_t i = 0; i < written.size(); ++i) nodeIndex_[static_cast<std::size_t>(written[i])] = static_cast<int>(i);
+    keptNodeIndex_.resize(scene_.keptNodes.size());
+    for (std::size_t k = 0; k < scene_.keptNodes.size(); ++k) keptNodeIndex_[k] = static_cast<int>(written.size() + k);
+    addSkins();
+    const auto addNode = [&](const Node& node, const std::vector<int>& childIndex) {
         tinygltf::Node out;
         out.name = node.name;
-        for (int child : node.children) out.children.push_back(remap[static_cast<std::size_t>(child)]);
+        for (int child : node.children) out.children.push_back(childIndex[static_cast<std::size_t>(child)]);
         // Only what differs from the glTF defaults, as other exporters do.
-        if (node.translation != glm::vec3(0.0f)) out.translation = doubles(node.translation);
+        if (node.translation != glm::vec3(0.0f)) out.translation = fileOr(node.fileNumbers, "t", node.translation);
         if (node.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) {
-            const glm::quat q = glm::normalize(node.rotation);
-            out.rotation = {q.x, q.y, q.z, q.w};  // glTF order
+            // A rotation already unit within float rounding is written as it is (the file's
+            // numbers after a load), others normalized.
+            const float length = glm::length(node.rotation);
+            const glm::quat q = std::abs(length - 1.0f) <= 1e-6f ? node.rotation : node.rotation / length;
+            out.rotation = fileOr(node.fileNumbers, "r", glm::vec4(q.x, q.y, q.z, q.w));  // glTF order
         }
-        if (node.scale != glm::vec3(1.0f)) out.scale = doubles(node.scale);
+        if (node.scale != glm::vec3(1.0f)) out.scale = fileOr(node.fileNumbers, "s", node.scale);
         out.mesh = node.mesh >= 0 ? meshIndex_[static_cast<std::size_t>(node.mesh)] : -1;
         out.camera = node.camera;
         out.skin = node.skin >= 0 ? skinIndex_[static_cast<std::size_t>(node.skin)] : -1;
@@ -694,15 +828,19 @@ void ModelBuilder::addNodes() {
         }
         restore(node.kept, out.extras, out.extensions);
         model_.nodes.push_back(std::move(out));
-    }
-    nodeIndex_ = remap;
+    };
+    for (int index : written) addNode(scene_.nodes[static_cast<std::size_t>(index)], nodeIndex_);
+    for (const Node& node : scene_.keptNodes) addNode(node, keptNodeIndex_);
     const auto sceneOf = [&](const std::string& name, const std::vector<int>& roots, const KeptGltf& kept) {
         tinygltf::Scene out;
         out.name = name;
-        for (int index : roots) {
-            const int mapped = index >= 0 && static_cast<std::size_t>(index) < remap.size() ? remap[static_cast<std::size_t>(index)] : -1;
+        for (int reference : roots) {
+            const int mapped = writtenNode(reference);
+            if (mapped < 0) continue;
             // A node another scene shares may have been deleted or re-parented under a node.
-            if (mapped < 0 || scene_.nodes[static_cast<std::size_t>(index)].parent >= 0) continue;
+            const Node& node = reference >= 0 ? scene_.nodes[static_cast<std::size_t>(reference)]
+                                              : scene_.keptNodes[static_cast<std::size_t>(keptNodeIndex(reference))];
+            if (node.parent >= 0) continue;
             if (std::find(out.nodes.begin(), out.nodes.end(), mapped) == out.nodes.end()) out.nodes.push_back(mapped);
         }
         restore(kept, out.extras, out.extensions);
@@ -721,11 +859,9 @@ void ModelBuilder::addNodes() {
 
 // The skins whose joints are all written (a deleted joint leaves its skin out, and the skinned
 // nodes are written without one).
-void ModelBuilder::addSkins(const std::vector<int>& nodeRemap) {
+void ModelBuilder::addSkins() {
     skinIndex_.assign(scene_.skins.size(), -1);
-    const auto written = [&](int node) {
-        return node >= 0 && static_cast<std::size_t>(node) < nodeRemap.size() ? nodeRemap[static_cast<std::size_t>(node)] : -1;
-    };
+    const auto written = [&](int reference) { return writtenNode(reference); };
     for (std::size_t s = 0; s < scene_.skins.size(); ++s) {
         const Skin& skin = scene_.skins[s];
         if (skin.joints.empty() ||
@@ -742,6 +878,7 @@ void ModelBuilder::addSkins(const std::vector<int>& nodeRemap) {
             matrices.count = skin.joints.size();
             matrices.bytes.resize(skin.inverseBindMatrices.size() * sizeof(float));
             std::memcpy(matrices.bytes.data(), skin.inverseBindMatrices.data(), matrices.bytes.size());
+            matrices.info = skin.inverseBindMatricesInfo;
             out.inverseBindMatrices = addKeptAccessor(matrices, 0);
         }
         restore(skin.kept, out.extras, out.extensions);
@@ -762,6 +899,19 @@ void ModelBuilder::addAnimations() {
         if (!valid) continue;
         tinygltf::Animation out;
         out.name = animation.name;
+        for (const Animation::Channel& channel : animation.channels) {
+            const int node = writtenNode(channel.node);
+            if (node < 0 || channel.sampler < 0 || static_cast<std::size_t>(channel.sampler) >= animation.samplers.size())
+                continue;
+            tinygltf::AnimationChannel c;
+            c.sampler = channel.sampler;
+            c.target_node = node;
+            c.target_path = channel.path;
+            restore(channel.kept, c.extras, c.extensions);
+            out.channels.push_back(std::move(c));
+        }
+        if (out.channels.empty()) continue;
+        const std::string at = "/animations/" + std::to_string(model_.animations.size()) + "/samplers/";
         for (const Animation::Sampler& sampler : animation.samplers) {
             const int typeOf[] = {0, TINYGLTF_TYPE_SCALAR, TINYGLTF_TYPE_VEC2, TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4};
             const int inputView = addBufferView(sampler.input.data(), sampler.input.size() * sizeof(float), 0, 0);
@@ -773,27 +923,19 @@ void ModelBuilder::addAnimations() {
             const int outputView = addBufferView(sampler.output.data(), sampler.output.size() * sizeof(float), 0, 0);
             const int output = addAccessor(outputView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, typeOf[sampler.components],
                                            sampler.output.size() / static_cast<std::size_t>(sampler.components));
+            keepAccessor(input, sampler.inputInfo);
+            keepAccessor(output, sampler.outputInfo);
             tinygltf::AnimationSampler s;
             s.input = input;
             s.output = output;
             s.interpolation = sampler.interpolation;
-            tinygltf::ExtensionMap noExtensions;  // a sampler's extensions are not kept
-            restore(KeptGltf{sampler.extras, ""}, s.extras, noExtensions);
+            tinygltf::ExtensionMap extensions;
+            restore(sampler.kept, s.extras, extensions);
+            // tinygltf 2.7 writes no animation sampler extensions: set them in the JSON.
+            if (!sampler.kept.extensions.empty())
+                jsonPatches_.emplace_back(at + std::to_string(out.samplers.size()) + "/extensions", sampler.kept.extensions);
             out.samplers.push_back(std::move(s));
         }
-        for (const Animation::Channel& channel : animation.channels) {
-            if (channel.node < 0 || static_cast<std::size_t>(channel.node) >= nodeIndex_.size()) continue;
-            const int node = nodeIndex_[static_cast<std::size_t>(channel.node)];
-            if (node < 0 || channel.sampler < 0 || static_cast<std::size_t>(channel.sampler) >= out.samplers.size())
-                continue;
-            tinygltf::AnimationChannel c;
-            c.sampler = channel.sampler;
-            c.target_node = node;
-            c.target_path = channel.path;
-            restore(channel.kept, c.extras, c.extensions);
-            out.channels.push_back(std::move(c));
-        }
-        if (out.channels.empty()) continue;
         restore(animation.kept, out.extras, out.extensions);
         model_.animations.push_back(std::move(out));
     }
@@ -807,7 +949,7 @@ void ModelBuilder::useExtension(const std::string& name) {
 tinygltf::Model ModelBuilder::build() {
     checkScene();
     model_.asset.version = "2.0";
-    model_.asset.generator = "Lit";
+    model_.asset.generator = kGenerator;
     addImages();
     addTextures();
     addMaterials();
@@ -816,9 +958,15 @@ tinygltf::Model ModelBuilder::build() {
     addCameras();
     addNodes();
     addAnimations();
+    keepBuffers();
     model_.asset.copyright = scene_.copyright;
     {
         tinygltf::Value extras;
+        if (!scene_.generator.empty() && scene_.generator != kGenerator) {
+            tinygltf::Value::Object source;
+            source[kSourceGeneratorKey] = tinygltf::Value(scene_.generator);
+            extras = tinygltf::Value(std::move(source));
+        }
         restore(scene_.assetKept, extras, model_.asset.extensions);
         // tinygltf writes asset extras only when they are an object (glTF's extras usually are).
         model_.asset.extras = std::move(extras);
@@ -832,6 +980,12 @@ tinygltf::Model ModelBuilder::build() {
         useExtension("KHR_mesh_quantization");
         model_.extensionsRequired.push_back("KHR_mesh_quantization");
     }
+    // What the file required stays required while the saved file uses it (Blender requires
+    // KHR_lights_punctual of a file with lights).
+    for (const std::string& e : scene_.extensionsRequired)
+        if (std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(), e) != model_.extensionsUsed.end() &&
+            std::find(model_.extensionsRequired.begin(), model_.extensionsRequired.end(), e) == model_.extensionsRequired.end())
+            model_.extensionsRequired.push_back(e);
     // Extensions the source declared that no kept data uses any more are not declared again
     // (the validator reports unused ones); those still used were declared by restore().
     return std::move(model_);
@@ -854,7 +1008,6 @@ void mergeBuffers(tinygltf::Model& model) {
         view.buffer = 0;
     }
     model.buffers.resize(1);
-    model.buffers[0].name.clear();
 }
 
 }  // namespace
@@ -872,7 +1025,15 @@ void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& o
     const std::vector<std::pair<std::string, std::string>> jsonPatches = builder.takeJsonPatches();
     if (options.cameraPath && !options.cameraPath->empty()) {
         try {
+            // The path animates a camera of the shown scene: the kept nodes (written after the
+            // shown ones) are hidden from writeCameraPathAnimation's search for a camera node, so
+            // without a shown camera it adds one rather than animate a node Lit does not show.
+            const std::size_t shownNodes = model.nodes.size() - scene.keptNodes.size();
+            std::vector<int> keptCameras;
+            for (std::size_t i = shownNodes; i < model.nodes.size(); ++i)
+                keptCameras.push_back(std::exchange(model.nodes[i].camera, -1));
             writeCameraPathAnimation(model, *options.cameraPath, options.cameraPathName);
+            for (std::size_t i = 0; i < keptCameras.size(); ++i) model.nodes[shownNodes + i].camera = keptCameras[i];
         } catch (const CameraPathError& e) {
             throw SceneSaveError(file.string() + ": cannot write the camera path: " + e.what());
         }

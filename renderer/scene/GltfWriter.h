@@ -4,7 +4,8 @@
 // KHR_materials_emissive_strength when the strength is not 1), textures and samplers,
 // KHR_lights_punctual lights, perspective cameras, and optionally a camera path as a glTF
 // animation (animation/CameraPathIO.h), plus everything of the source file the loader kept
-// without drawing it (other animations, extras, extensions, skins, morph targets, extra vertex
+// without drawing it (nodes outside the shown scene, other scenes and animations, extras,
+// extensions, names of accessors and buffer views, skins, morph targets, extra vertex
 // attributes, other primitive modes, orthographic cameras). loadGltf() reads everything written
 // here back.
 //

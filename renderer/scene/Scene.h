@@ -28,6 +28,31 @@ struct KeptGltf {
     bool operator==(const KeptGltf&) const = default;
 };
 
+// The file's numbers of fields Lit holds as float, by field name ("yfov", "t0".."t2",
+// "r0".."r3", "s0".."s2", ...), only those a float cannot hold exactly (JSON numbers are doubles:
+// Blender writes a camera's yfov as 0.39959652046304894). A save writes the file's number for a
+// field whose float still equals it rounded, so an unedited value comes back exactly.
+using FileNumbers = std::map<std::string, double>;
+
+// A glTF buffer or buffer view's name, extras and extensions Lit does not use. Lit lays out its own
+// buffer views (and writes one buffer); these go on the view (buffer) that holds the same data
+// again, so a save loses none of them.
+struct KeptObject {
+    std::string name;
+    KeptGltf kept{};
+    bool empty() const { return name.empty() && kept.extras.empty() && kept.extensions.empty(); }
+    bool operator==(const KeptObject&) const = default;
+};
+
+// What an accessor held besides its elements: its name, extras and extensions, and its buffer
+// view's (a sparse accessor without a base: none).
+struct KeptAccessorInfo {
+    std::string name;
+    KeptGltf kept{};
+    KeptObject view{};
+    bool operator==(const KeptAccessorInfo&) const = default;
+};
+
 // An accessor's elements as the file had them, for data Lit carries without using it (extra
 // vertex attributes, morph targets, skin matrices), so that a save writes them back unchanged:
 // tightly packed little-endian components, sparse accessors already expanded.
@@ -45,9 +70,12 @@ struct KeptAccessor {
         std::vector<std::uint32_t> indices;  // element indices, in the file's order
         bool hasBase = false;                // false: no buffer view, the base is zeros
         std::vector<std::uint8_t> baseBytes; // hasBase: the base's elements at `indices` (indices.size() × element size)
+        KeptObject indicesView{};            // the buffer views of the sparse indices and values
+        KeptObject valuesView{};
         bool operator==(const Sparse&) const = default;
     };
     std::optional<Sparse> sparse{};
+    KeptAccessorInfo info{};
     bool operator==(const KeptAccessor&) const = default;
 };
 
@@ -112,6 +140,7 @@ struct Image {
     // empty for images from files and for generated ones. Whoever changes `rgba` clears it.
     std::vector<std::uint8_t> encoded{};
     std::string mimeType{};
+    KeptObject view{};  // the buffer view an embedded image was in (name, extras, extensions)
     KeptGltf kept{};
     // Made by the loader (the white stand-in for textures without a readable source), not in the
     // file: a save does not write it, and textures using it are written without a source.
@@ -187,6 +216,7 @@ struct Light {
     // The writer uses `fileIntensity` only while `intensity == fileIntensityAsLoaded`.
     double fileIntensity = 0.0;
     float fileIntensityAsLoaded = -1.0f;  // -1: not from a file
+    FileNumbers fileNumbers{};  // color0..2, range, innerConeAngle, outerConeAngle
     KeptGltf kept{};
 
     bool operator==(const Light&) const = default;
@@ -204,6 +234,7 @@ struct Camera {
     bool orthographic = false;
     float xmag = 0.0f;
     float ymag = 0.0f;
+    FileNumbers fileNumbers{};  // yfov, aspectRatio, znear, zfar, xmag, ymag
     KeptGltf kept{};
 
     bool operator==(const Camera&) const = default;
@@ -222,6 +253,7 @@ struct Node {
     int skin = -1;                // index into Scene::skins (kept, not drawn: Lit draws the bind pose)
     std::vector<double> weights{};  // morph target weights of this node's mesh instance
     glm::mat4 world{1.0f};  // computed by Scene::updateWorldTransforms()
+    FileNumbers fileNumbers{};  // t0..t2, r0..r3 (x, y, z, w), s0..s2
     KeptGltf kept{};
 
     glm::mat4 localMatrix() const;
@@ -236,11 +268,13 @@ struct Animation {
         std::vector<float> output;  // components × keys (× 3 for CUBICSPLINE)
         int components = 3;         // 1 (weights), 3 (translation, scale), 4 (rotation)
         std::string interpolation = "LINEAR";
-        std::string extras{};  // the sampler's extras, JSON text ("" when absent)
+        KeptGltf kept{};                // the sampler's extras and extensions
+        KeptAccessorInfo inputInfo{};   // its input and output accessors' names, extras, extensions
+        KeptAccessorInfo outputInfo{};
     };
     struct Channel {
         int sampler = 0;
-        int node = -1;          // index into Scene::nodes; a channel of a node not saved is dropped
+        int node = -1;          // a node reference (see keptNodeRef); a channel of a node not saved is dropped
         std::string path;       // "translation", "rotation", "scale" or "weights"
         KeptGltf kept{};        // the channel's extras and extensions
         bool operator==(const Channel&) const = default;
@@ -254,17 +288,30 @@ struct Animation {
 // A glTF skin, kept for saving (Lit does not animate skins).
 struct Skin {
     std::string name;
-    std::vector<int> joints;  // indices into Scene::nodes; a save drops a skin whose joint is gone
-    int skeleton = -1;        // index into Scene::nodes, -1 = none
+    std::vector<int> joints;  // node references (see keptNodeRef); a save drops a skin whose joint is gone
+    int skeleton = -1;        // a node reference, -1 = none
     std::vector<float> inverseBindMatrices;  // 16 per joint, column-major; empty = identities
+    KeptAccessorInfo inverseBindMatricesInfo{};
     KeptGltf kept{};
 };
+
+// Nodes of the file that are in none of the shown scene's trees live in Scene::keptNodes (they
+// are not drawn, listed or edited; a save writes them back). What names a node in a skin, an
+// animation channel or another scene's roots is a node reference: an index into Scene::nodes
+// (>= 0), or keptNodeRef(k) for Scene::keptNodes[k] (<= -2); -1 is none. Code that only knows
+// Scene::nodes sees a kept node's reference as "no node".
+constexpr int keptNodeRef(int keptIndex) { return -2 - keptIndex; }
+constexpr int keptNodeIndex(int reference) { return -2 - reference; }  // for reference <= -2
 
 struct Scene {
     std::string name;
     std::filesystem::path sourcePath;
     std::vector<Node> nodes;
     std::vector<int> roots;
+    // The file's nodes outside the shown scene's trees, in file order: their parent and children
+    // index this list (a kept node's subtree is all kept); mesh, light, camera and skin index the
+    // Scene's lists as a shown node's do. World transforms are not computed for them.
+    std::vector<Node> keptNodes;
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
     std::vector<Texture> textures;
@@ -282,10 +329,16 @@ struct Scene {
     KeptGltf kept{};           // the glTF scene object's extras and extensions
     KeptGltf fileKept{};     // the file's top-level extras and extensions (KHR_lights_punctual left out)
     std::string copyright;   // asset.copyright
+    // asset.generator as the file had it ("" when absent). A save writes "Lit" (the tool that
+    // wrote the file, as glTF means it) and this in the asset's extras as "litSourceGenerator".
+    std::string generator;
+    // The file's buffers' names, extras and extensions, in file order: a save writes one buffer,
+    // which gets the first's name and all their extras keys and extensions (the first wins).
+    std::vector<KeptObject> buffers;
     KeptGltf assetKept{};    // asset's extras and extensions
     // The file's other glTF scenes (Lit shows one, `roots`): written back around it in the file's
-    // order, the shown one at `sceneIndex`. Their roots are indices into `nodes`; a scene's nodes
-    // that are not part of the shown scene are not imported (the loader warns) and not kept.
+    // order, the shown one at `sceneIndex`. Their roots are node references (nodes the shown
+    // scene shares, or kept nodes).
     struct OtherScene {
         std::string name;
         std::vector<int> roots;
@@ -295,6 +348,9 @@ struct Scene {
     std::vector<OtherScene> otherScenes;
     int sceneIndex = 0;  // where the shown scene stands among the file's scenes
     std::vector<std::string> unknownExtensionsUsed;  // extensionsUsed Lit does not read; written back
+    // The file's extensionsRequired (all ones Lit reads, or the load fails): a save declares each
+    // again while the saved file still uses it.
+    std::vector<std::string> extensionsRequired;
 
     // Bumped by whoever edits the scene; the renderer redoes only what changed.
     std::uint64_t geometryRevision = 0;  // meshes, node transforms → shadows, voxels

@@ -344,4 +344,103 @@ TEST(SceneEdits, DecomposeRoundTrips) {
     expectNear(back, m);
 }
 
+// The file's nodes outside the shown scene (Scene::keptNodes) are neither listed nor edited, but
+// a delete that removes a light or camera before theirs renumbers their lights and cameras,
+// another scene loses only the deleted root, references to them stay, undo brings all back, and
+// a save writes them for the right objects. Fails when a delete or a save mixes them up.
+TEST(SceneEdits, DeleteAndAddKeepTheNodesOutsideTheShownScene) {
+    Scene scene = lit::editor::testing::fixtureScene();
+    Light hiddenLight;
+    hiddenLight.name = "hidden light";
+    scene.lights.push_back(hiddenLight);
+    Camera hiddenCamera;
+    hiddenCamera.name = "hidden camera";
+    scene.cameras.push_back(hiddenCamera);
+    ASSERT_EQ(scene.lights.size(), 2u);  // the fixture's Lamp comes first
+    ASSERT_EQ(scene.cameras.size(), 2u);  // and its Cam
+    Node hiddenLamp;
+    hiddenLamp.name = "hidden lamp";
+    hiddenLamp.light = 1;
+    hiddenLamp.children = {1};
+    Node hiddenCam;
+    hiddenCam.name = "hidden cam";
+    hiddenCam.camera = 1;
+    hiddenCam.parent = 0;
+    scene.keptNodes = {hiddenLamp, hiddenCam};
+    const int cam = findNode(scene, "Cam");
+    scene.otherScenes.push_back({"backstage", {keptNodeRef(0), cam}, {}});
+    scene.sceneIndex = 0;
+    Animation blink;
+    blink.name = "blink";
+    blink.samplers.push_back({{0.0f, 1.0f}, {0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f}, 3, "LINEAR"});
+    blink.channels = {{0, keptNodeRef(0), "translation"}};
+    scene.animations.push_back(blink);
+    Skin rig;
+    rig.name = "rig";
+    rig.joints = {keptNodeRef(1)};
+    scene.skins.push_back(rig);
+    Document doc(std::move(scene), lit::editor::testing::fixturePath(), "fixture.gltf");
+    const auto expectKept = [](const Scene& s, const std::string& light, const std::string& camera) {
+        ASSERT_EQ(s.keptNodes.size(), 2u);
+        EXPECT_EQ(s.lights.at(static_cast<std::size_t>(s.keptNodes[0].light)).name, light);
+        EXPECT_EQ(s.cameras.at(static_cast<std::size_t>(s.keptNodes[1].camera)).name, camera);
+        ASSERT_EQ(s.animations.at(0).channels.size(), 1u);
+        EXPECT_EQ(s.animations[0].channels[0].node, keptNodeRef(0));
+        EXPECT_EQ(s.skins.at(0).joints, std::vector<int>{keptNodeRef(1)});
+    };
+    doc.select(findNode(doc.scene, "Lamp"));
+    ASSERT_EQ(deleteSelection(doc), "");
+    doc.select(findNode(doc.scene, "Cam"));
+    ASSERT_EQ(deleteSelection(doc), "");
+    ASSERT_EQ(doc.scene.lights.size(), 1u);
+    ASSERT_EQ(doc.scene.cameras.size(), 1u);
+    expectKept(doc.scene, "hidden light", "hidden camera");
+    EXPECT_EQ(doc.scene.otherScenes.at(0).roots, std::vector<int>{keptNodeRef(0)});
+    const int added = addNode(doc, NodeKind::PointLight, glm::vec3(0.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+    EXPECT_GE(added, 0);
+    expectKept(doc.scene, "hidden light", "hidden camera");
+    ASSERT_TRUE(doc.undo());
+    ASSERT_TRUE(doc.undo());
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.scene.lights.size(), 2u);
+    expectKept(doc.scene, "hidden light", "hidden camera");
+    EXPECT_EQ(doc.scene.otherScenes.at(0).roots, (std::vector<int>{keptNodeRef(0), cam}));
+    ASSERT_TRUE(doc.redo());
+    ASSERT_TRUE(doc.redo());
+    ASSERT_TRUE(doc.redo());
+    expectKept(doc.scene, "hidden light", "hidden camera");
+
+    const Document back = reopen(doc, "kept_nodes");
+    EXPECT_EQ(findNode(back.scene, "hidden lamp"), -1);  // not shown after the reopen either
+    ASSERT_EQ(back.scene.keptNodes.size(), 2u);
+    const Node& lamp = back.scene.keptNodes[0].name == "hidden lamp" ? back.scene.keptNodes[0] : back.scene.keptNodes[1];
+    const Node& camNode = back.scene.keptNodes[0].name == "hidden cam" ? back.scene.keptNodes[0] : back.scene.keptNodes[1];
+    ASSERT_EQ(lamp.name, "hidden lamp");
+    ASSERT_EQ(camNode.name, "hidden cam");
+    EXPECT_EQ(back.scene.lights.at(static_cast<std::size_t>(lamp.light)).name, "hidden light");
+    EXPECT_EQ(back.scene.cameras.at(static_cast<std::size_t>(camNode.camera)).name, "hidden camera");
+    ASSERT_EQ(lamp.children.size(), 1u);
+    EXPECT_EQ(back.scene.keptNodes.at(static_cast<std::size_t>(lamp.children[0])).name, "hidden cam");
+    ASSERT_EQ(back.scene.otherScenes.size(), 1u);
+    ASSERT_EQ(back.scene.otherScenes[0].roots.size(), 1u);
+    EXPECT_EQ(back.scene.keptNodes.at(static_cast<std::size_t>(keptNodeIndex(back.scene.otherScenes[0].roots[0]))).name,
+              "hidden lamp");
+    bool blinkKept = false;
+    for (const Animation& a : back.scene.animations)
+        if (a.name == "blink") {
+            blinkKept = true;
+            ASSERT_EQ(a.channels.size(), 1u);
+            ASSERT_LE(a.channels[0].node, -2);
+            EXPECT_EQ(back.scene.keptNodes.at(static_cast<std::size_t>(keptNodeIndex(a.channels[0].node))).name, "hidden lamp");
+        }
+    EXPECT_TRUE(blinkKept);
+    ASSERT_EQ(back.scene.skins.size(), 1u);
+    ASSERT_EQ(back.scene.skins[0].joints.size(), 1u);
+    ASSERT_LE(back.scene.skins[0].joints[0], -2);
+    EXPECT_EQ(back.scene.keptNodes.at(static_cast<std::size_t>(keptNodeIndex(back.scene.skins[0].joints[0]))).name, "hidden cam");
+    // The camera path animates a camera of the shown scene (a new one: the shown Cam is deleted),
+    // not the kept one.
+    EXPECT_GE(findNode(back.scene, "camera path"), 0);
+}
+
 }  // namespace
