@@ -76,6 +76,7 @@ public:
 private:
     void executeOverParents(const VoxelVolume& volume);
     void executeDirectionalOverParents(const VoxelVolume& volume);
+    static int useDirectionalLevel(const gl::Program& program, const VoxelVolume& volume, int face, int level);
 
     bool rgba8Packed_ = false;  // RGBA8 levels are bound as r32ui images (see MipmapPass.cpp)
     gl::Program rgba8_, rgba16f_;

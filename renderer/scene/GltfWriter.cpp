@@ -138,6 +138,8 @@ private:
     // Names, extras and extensions of the file's objects Lit lays out itself (scene/Scene.h).
     void keepView(int view, const KeptObject& kept);
     void keepAccessor(int accessor, const KeptAccessorInfo& info);
+    template <class Object>
+    void keepNameAndExtras(Object& out, const char* array, int index, const std::string& name, const KeptGltf& kept);
     void keepBuffers();
     void checkKeptNodes() const;
     std::optional<std::string> relativeUri(const Image& image) const;
@@ -180,26 +182,27 @@ void ModelBuilder::restoreTextureInfo(const std::string& keptExtras, const std::
     restore(KeptGltf{keptExtras, keptExtensions}, extras, extensions);
 }
 
+// Gives object `index` of the file's `array` ("accessors", "bufferViews") the name, extras and
+// extensions it had: tinygltf 2.7 writes no extensions for these, so they go in as a JSON patch.
+template <class Object>
+void ModelBuilder::keepNameAndExtras(Object& out, const char* array, int index, const std::string& name,
+                                     const KeptGltf& kept) {
+    out.name = name;
+    tinygltf::ExtensionMap extensions;
+    restore(kept, out.extras, extensions);
+    if (!kept.extensions.empty())
+        jsonPatches_.emplace_back("/" + std::string(array) + "/" + std::to_string(index) + "/extensions", kept.extensions);
+}
+
 void ModelBuilder::keepView(int view, const KeptObject& kept) {
     if (view < 0 || kept.empty()) return;
-    tinygltf::BufferView& out = model_.bufferViews[static_cast<std::size_t>(view)];
-    out.name = kept.name;
-    tinygltf::ExtensionMap extensions;
-    restore(kept.kept, out.extras, extensions);
-    // tinygltf 2.7 writes no buffer view extensions: set them in the JSON.
-    if (!kept.kept.extensions.empty())
-        jsonPatches_.emplace_back("/bufferViews/" + std::to_string(view) + "/extensions", kept.kept.extensions);
+    keepNameAndExtras(model_.bufferViews[static_cast<std::size_t>(view)], "bufferViews", view, kept.name, kept.kept);
 }
 
 void ModelBuilder::keepAccessor(int accessor, const KeptAccessorInfo& info) {
     if (accessor < 0) return;
     tinygltf::Accessor& out = model_.accessors[static_cast<std::size_t>(accessor)];
-    out.name = info.name;
-    tinygltf::ExtensionMap extensions;
-    restore(info.kept, out.extras, extensions);
-    // tinygltf 2.7 writes no accessor extensions: set them in the JSON.
-    if (!info.kept.extensions.empty())
-        jsonPatches_.emplace_back("/accessors/" + std::to_string(accessor) + "/extensions", info.kept.extensions);
+    keepNameAndExtras(out, "accessors", accessor, info.name, info.kept);
     keepView(out.bufferView, info.view);
 }
 
