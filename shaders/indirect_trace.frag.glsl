@@ -10,6 +10,7 @@
 #include "gbuffer.glsl"
 #include "cone.glsl"
 #include "indirect.glsl"
+#include "cone_strata.glsl"
 
 layout(location = 0) out uvec4 outPacked;
 layout(location = 1) out uvec4 outGuide;
@@ -41,7 +42,13 @@ void main() {
                  specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
     vec3 cones[kDiffuseConeCount];
     if ((uTraceTerms.x != 0 || reuse) && diffuseSurface)
+#if LIT_CONE_FOOTPRINT
+        // Bounded cones: this texel's stratified set (cone_strata.glsl; ConeStrataFilterPass averages the sets).
+        outDiffuse = vec4(traceDiffuseStratified(origin, basis, coneSetIndex(ivec2(gl_FragCoord.xy)), voxel.traceParams.w,
+                                                 maxDistance, cones), 1.0);
+#else
         outDiffuse = vec4(traceDiffuseInFrame(origin, basis, voxel.traceParams.w, maxDistance, cones), 1.0);
+#endif
     if (specular) {
         vec3 lobe = traceSpecularLobe(origin, n, basis, v, s.roughness, count, vec2(pixel), voxel.traceOptions.y,
                                       maxDistance, reuse, cones);

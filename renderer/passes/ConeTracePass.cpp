@@ -18,7 +18,8 @@ ConeTracePass::ConeTracePass(const std::filesystem::path& shaderRoot)
                      {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "specular_albedo.frag.glsl"}}),
       reducedProgram_(shaderRoot, "indirect trace (reduced)",
                       {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}},
-                      {}, ConeFeatures::of(RenderSettings{})) {
+                      {}, ConeFeatures::of(RenderSettings{})),
+      strataFilter_(shaderRoot) {
     constexpr int size = LIT_SPECULAR_ALBEDO_SIZE;
     albedoTable_ = gl::Texture("specular albedo table", {GL_TEXTURE_2D, GL_RG16F, size, size, 1, 1});
     albedoTable_.setFilter(GL_LINEAR, GL_LINEAR);
@@ -34,6 +35,7 @@ std::vector<gl::Program*> ConeTracePass::programs() {
     std::vector<gl::Program*> programs{&albedoProgram_};
     program_.appendBuilt(programs);
     reducedProgram_.appendBuilt(programs);
+    for (gl::Program* program : strataFilter_.programs()) programs.push_back(program);
     return programs;
 }
 
@@ -86,7 +88,7 @@ int ConeTracePass::indirectScale(const RenderSettings& settings) {
 }
 
 bool ConeTracePass::reducedPath(const RenderSettings& settings) {
-    return indirectScale(settings) > 1 || settings.temporalAccumulation;
+    return indirectScale(settings) > 1 || settings.temporalAccumulation || ConeFeatures::of(settings).footprint;
 }
 
 ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scale) {
@@ -118,6 +120,21 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         lowTarget_.attach(GL_COLOR_ATTACHMENT1, lowGuide_);
         lowTarget_.setDrawBuffers(2);
         lowTarget_.checkComplete("indirect (reduced)");
+        tracedPacked_ = gl::Texture();
+    }
+    const ConeFeatures features = ConeFeatures::of(settings);
+    if (features.footprint && !tracedPacked_) {
+        tracedPacked_ = gl::Texture("indirect terms (reduced, stratified)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
+        tracedPacked_.setFilter(GL_NEAREST, GL_NEAREST);
+        tracedTarget_ = gl::Framebuffer("indirect (reduced, stratified)");
+        tracedTarget_.attach(GL_COLOR_ATTACHMENT0, tracedPacked_);
+        tracedTarget_.attach(GL_COLOR_ATTACHMENT1, lowGuide_);
+        tracedTarget_.setDrawBuffers(2);
+        tracedTarget_.checkComplete("indirect (reduced, stratified)");
+        filteredTarget_ = gl::Framebuffer("indirect (reduced, strata filtered)");
+        filteredTarget_.attach(GL_COLOR_ATTACHMENT0, lowPacked_);
+        filteredTarget_.setDrawBuffers(1);
+        filteredTarget_.checkComplete("indirect (reduced, strata filtered)");
     }
     const Work work = workFor(settings);
     const GLuint zero[4] = {0, 0, 0, 0};
@@ -127,12 +144,11 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         return;
     }
     bindAlbedoTable();
-    lowTarget_.bind();
+    (features.footprint ? tracedTarget_ : lowTarget_).bind();
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-    const ConeFeatures features = ConeFeatures::of(settings);
     if (features.anisotropic) volume.bindDirectional();
     const gl::Program& program = reducedProgram_.get(features);
     program.use();
@@ -143,6 +159,7 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     glProgramUniform2i(id, program.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
     glProgramUniform1f(id, program.location("uRotation"), sampling.rotation);
     triangle_.draw();
+    if (features.footprint) strataFilter_.execute(tracedPacked_, lowGuide_, filteredTarget_, w, h);
 }
 
 }  // namespace lit

@@ -267,6 +267,57 @@ TEST_F(CornellAccuracy, DirectionalVolumesAreMirrorSymmetric) {
     EXPECT_LT(relativeRmse, 0.15);
 }
 
+// The accurate mode (footprint-bounded cones) gives the Cornell box and its mirror image in x mirror-
+// image indirect light. Its bounded cones see along their axes; with one fixed six-cone set (the
+// mirror image of the set is the set turned by 36°) the red-wall nook got 0.25 of the reference in
+// the Cornell box and 1.11 in the mirrored box, ratio 4.4 (docs/GI.md, "The red-wall shadow").
+// The stratified cone sets (cone_strata.glsl, ConeStrataFilterPass) integrate each region over
+// LIT_CONE_STRATA² cells, so the result no longer depends on the set's orientation. Bars as
+// DirectionalVolumesAreMirrorSymmetric's (the defects it guards against scored 0.55-0.57 and
+// 20-22 %): every region within ±20 % of its mirror image's. Measured (64³, 96²): 0.92-1.07;
+// with the fixed set (before) the nook's benchmark values 0.25 and 1.11 (ratio 4.4).
+TEST_F(CornellAccuracy, AccurateModeIsMirrorSymmetric) {
+    const Scene original = loadCornellBox();
+    const Scene mirrored = loadGltf(sourceDir() / "assets" / "gi" / "cornell_mirrored.gltf", log_);
+    RenderSettings settings = giSettings(64, View::IndirectDiffuse, kSize);
+    settings.bounces = 1;
+    const HdrImage a = render(original, settings), b = render(mirrored, settings);
+    std::vector<float> flipped(b.rgb.size());
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x)
+            for (int c = 0; c < 3; ++c)
+                flipped[static_cast<std::size_t>((y * kSize + x) * 3 + c)] = b.rgb[static_cast<std::size_t>((y * kSize + (kSize - 1 - x)) * 3 + c)];
+    Log quiet;
+    quiet.setSink(nullptr);
+    const reference::ReferenceScene rs(original, quiet);
+    const std::vector<reference::FirstHit> hits = reference::traceFirstHits(rs, cameraFor(original, settings), kSize, kSize);
+    int checked = 0;
+    for (const reference::NamedRegion& region : reference::cornellBoxRegions(original, hits, kSize, kSize)) {
+        if (region.pixels() < 10) continue;
+        const double u = lum(reference::maskedMean(a.rgb, region.mask)), v = lum(reference::maskedMean(flipped, region.mask));
+        std::printf("accurate: %s (%zu px): Cornell box %.4f, mirrored %.4f (%.3f)\n", region.name.c_str(), region.pixels(), u, v, v / u);
+        EXPECT_NEAR(v / u, 1.0, 0.20) << region.name;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 4);
+    const reference::PixelMask surfaces = reference::surfaceMask(hits);
+    double squares = 0.0, sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t p = 0; p < surfaces.size(); ++p) {
+        if (!surfaces[p]) continue;
+        const double u = lum(glm::dvec3(a.rgb[3 * p], a.rgb[3 * p + 1], a.rgb[3 * p + 2]));
+        const double v = lum(glm::dvec3(flipped[3 * p], flipped[3 * p + 1], flipped[3 * p + 2]));
+        squares += (u - v) * (u - v);
+        sum += u;
+        ++count;
+    }
+    const double relativeRmse = std::sqrt(squares / static_cast<double>(count)) / (sum / static_cast<double>(count));
+    // Printed, not asserted: the pattern of the cone sets is not mirrored with the image, so
+    // silhouettes and edges (where the strata filter keeps part of its window) differ pixel by
+    // pixel; measured 14.2 % (the unbounded mode's 10.5 %, above).
+    std::printf("accurate: L_ID RMSE against the mirror image: %.1f %% of the mean\n", 100.0 * relativeRmse);
+}
+
 // Issue #11: the mean indirect radiance of each region lit only indirectly within ±20 % of the
 // reference. Before (isotropic voxels, benchmark at 64³, docs/GI.md): ceiling 0.19, back wall
 // 0.38, shadowed floor by the green wall 1.01. Now 0.93, 0.91, 1.01 (benchmark, 128²). The
