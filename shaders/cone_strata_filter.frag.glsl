@@ -5,7 +5,7 @@
 // LIT_CONE_STRATA² sets. Window: LIT_CONE_STRATA + 1 texels per axis with half weight at both
 // ends (even periods), which covers each pattern phase exactly once: 1/2 + 1 + 1 + 1 + 1/2 at 4.
 // Neighbours on another surface get no weight, as in the resolve (indirect_resolve.glsl): off this
-// texel's tangent plane by more than kPlaneTolerance of the view distance, or turned (cos^16).
+// texel's tangent plane by more than kPlaneTolerance of the view distance, or turned (weight cos^16).
 // The specular half of the packed texel and the guide are passed on unchanged.
 #include "frame.glsl"
 #include "gbuffer.glsl"
@@ -21,7 +21,6 @@ layout(location = 0) out uvec4 outPacked;
 const int kRadius = LIT_CONE_STRATA / 2;
 const float kEndWeight = (LIT_CONE_STRATA % 2 == 0) ? 0.5 : 1.0;  // odd periods: 2r + 1 = period taps of weight 1
 const float kPlaneTolerance = 0.01;  // as the resolve: 1 % of the view distance off the plane → no weight
-const float kNormalPower = 16.0;     // as the resolve: cos^16
 
 void main() {
     ivec2 low = ivec2(gl_FragCoord.xy);
@@ -46,9 +45,14 @@ void main() {
             if (qd.a <= 0.0) continue;
             uvec4 qg = texelFetch(tracedGuide, q, 0);
             float plane = abs(dot(normal, uintBitsToFloat(qg.xyz) - position)) / viewDistance;
+            // cos^16 by four squarings (pow is exp2(16·log2) on llvmpipe, per tap).
+            float turn = max(dot(normal, octDecode(unpackSnorm2x16(qg.w))), 0.0);
+            turn *= turn;
+            turn *= turn;
+            turn *= turn;
+            turn *= turn;
             float w = (abs(x) == kRadius ? kEndWeight : 1.0) * (abs(y) == kRadius ? kEndWeight : 1.0) *
-                      max(1.0 - plane / kPlaneTolerance, 0.0) *
-                      pow(max(dot(normal, octDecode(unpackSnorm2x16(qg.w))), 0.0), kNormalPower);
+                      max(1.0 - plane / kPlaneTolerance, 0.0) * turn;
             sum += w * qd.rgb;
             weightSum += w;
         }
