@@ -1,7 +1,7 @@
 // Reduced-resolution indirect lighting and its temporal accumulation (ConeTracePass::
 // executeReduced + IndirectResolvePass), through the Renderer on the Cornell box seen from
 // inside (every pixel a wall or box, as in the full-frame benchmark).
-// Cost: about 20 s in all on llvmpipe (2 cores), 96² to 128² pixels, 64³ voxels.
+// Cost: about 25 s in all on llvmpipe (2 cores), 96² to 128² pixels, 64³ voxels.
 #include "GlTestSupport.h"
 
 #include <glm/gtc/matrix_transform.hpp>
