@@ -338,6 +338,15 @@ TEST(Options, FastGiFlags) {
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--indirect-scale", "3"}),
               "--indirect-scale expects 1, 2 or 4, got '3'");
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--temporal", "yes"}), "--temporal expects on or off, got 'yes'");
+    EXPECT_TRUE(s.temporalConeSubsets);  // the default
+    EXPECT_FALSE(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "a.png", "--cone-subsets", "off"}),
+                                        lit::RenderSettings{})
+                     .temporalConeSubsets);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--cone-subsets", "1"}),
+              "--cone-subsets expects on or off, got '1'");
+    lit::RenderSettings noSubsets;
+    noSubsets.temporalConeSubsets = false;
+    EXPECT_EQ(lit::renderSettingsFromJson(lit::toJson(noSubsets)), noSubsets);  // saved and read back
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--bench-gi-updates", "2"}),
               "--bench-gi-updates needs --bench (the steady frames come first)");
 }

@@ -195,6 +195,14 @@ Options parseOptions(const std::vector<std::string>& args) {
                 options.temporal = false;
             else
                 throw UsageError("--temporal expects on or off, got '" + text + "'");
+        } else if (flag == "--cone-subsets") {
+            const std::string text = value("on or off");
+            if (text == "on")
+                options.coneSubsets = true;
+            else if (text == "off")
+                options.coneSubsets = false;
+            else
+                throw UsageError("--cone-subsets expects on or off, got '" + text + "'");
         } else if (flag == "--voxels") {
             const std::string text = value("64, 128, 256 or 512");
             const auto n = parseInt(text, 64, 512);
@@ -350,6 +358,7 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.culling) base.frustumCulling = *options.culling;
     if (options.indirectScale) base.indirectScale = *options.indirectScale;
     if (options.temporal) base.temporalAccumulation = *options.temporal;
+    if (options.coneSubsets) base.temporalConeSubsets = *options.coneSubsets;
     return base;
 }
 
@@ -379,6 +388,7 @@ std::string shortUsage() {
            "                  [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
            "                  [--bounces N] [--anisotropic on|off] [--footprint X]\n"
            "                  [--culling on|off] [--indirect-scale 1|2|4] [--temporal on|off]\n"
+           "                  [--cone-subsets on|off]\n"
            "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
            "                  [--compare REF.hdr [--difference FILE.png [--max-error X]]]\n"
            "       lit-render SCENE.gltf --path FILE.json|ANIMATION [--fps N] [--frames-out DIR] [--bench-path]\n"
@@ -435,6 +445,9 @@ std::string usageText() {
            std::string(defaults.temporalAccumulation ? "on" : "off") + "); a still then renders\n"
            "                       temporalMaxFrames (" + std::to_string(defaults.temporalMaxFrames) +
            ") frames unless --frames says otherwise, so it converges\n"
+           "  --cone-subsets on|off with --temporal on: each traced texel marches the normal cone and 2 of\n"
+           "                       the 5 side cones per frame, a different pair each frame (default " +
+           std::string(defaults.temporalConeSubsets ? "on" : "off") + ")\n"
            "  --bench FRAMES       render FRAMES frames and print per-pass GPU times and the frame rate\n"
            "  --bench-gi-updates N after the frames, time N interleaved rounds of a light edit (re-inject +\n"
            "                       mipmaps) against a re-voxelization (voxelize + inject + mipmaps)\n"

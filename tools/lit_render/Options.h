@@ -59,6 +59,7 @@ struct Options {
     std::optional<bool> culling;       // --culling on|off: frustum culling of the G-buffer and shadow views
     std::optional<int> indirectScale;  // --indirect-scale 1|2|4
     std::optional<bool> temporal;      // --temporal on|off
+    std::optional<bool> coneSubsets;   // --cone-subsets on|off
     std::optional<int> frames;         // frames rendered before the image is read (GI settles)
     int benchFrames = 0;               // 0 = no benchmark
     std::filesystem::path benchJson;   // --json: benchmark results as JSON
