@@ -173,7 +173,8 @@ TEST(Options, StructuralMessages) {
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "-q"}), "unknown option '-q'");
     EXPECT_EQ(usageError({"--out", "x.png"}), "no scene given (lit-render SCENE.gltf --out image.png)");
     EXPECT_EQ(usageError({}), "no scene given (lit-render SCENE.gltf --out image.png)");
-    EXPECT_EQ(usageError({"x.gltf"}), "--out is required (unless --bench, --path or --compare)");
+    EXPECT_EQ(usageError({"x.gltf"}), "--out is required (unless --hdr, --bench, --path or --compare)");
+    EXPECT_EQ(usageError({"x.gltf", "--reference", "--hdr", "r.hdr"}), "") << "the linear image alone is an output";
     EXPECT_EQ(usageError({"x.gltf", "--out"}), "missing value for --out (expects FILE.png)");
     EXPECT_EQ(usageError({"x.gltf", "--out", "--size", "4x4"}), "missing value for --out (expects FILE.png)");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size"}), "missing value for --size (expects WxH)");

@@ -314,8 +314,9 @@ Options parseOptions(const std::vector<std::string>& args) {
         if (options.spp) throw UsageError("--spp needs --reference");
         if (options.seed) throw UsageError("--seed needs --reference");
     }
-    if (options.benchFrames == 0 && !options.path && options.out.empty() && options.compare.empty())
-        throw UsageError("--out is required (unless --bench, --path or --compare)");
+    if (options.benchFrames == 0 && !options.path && options.out.empty() && options.hdr.empty() &&
+        options.compare.empty())
+        throw UsageError("--out is required (unless --hdr, --bench, --path or --compare)");
     if (!options.out.empty()) requireExtension(options.out, "--out", ".png");
     if (!options.hdr.empty()) requireExtension(options.hdr, "--hdr", ".hdr");
     if (!options.compare.empty()) requireExtension(options.compare, "--compare", ".hdr", "reads");
@@ -402,7 +403,7 @@ std::string usageText() {
            "\n"
            "Renders a glTF scene headless (EGL, no window) with voxel cone traced global illumination.\n"
            "\n"
-           "  --out FILE.png       tone-mapped sRGB image (required unless --bench, --path or --compare)\n"
+           "  --out FILE.png       tone-mapped sRGB image (required unless --hdr, --bench, --path or --compare)\n"
            "  --hdr FILE.hdr       also write the linear HDR image of the chosen view (Radiance .hdr)\n"
            "  --compare REF.hdr    compare the linear image of the chosen view with REF.hdr (same size; e.g. a\n"
            "                       --reference render's --hdr): print both mean luminances, their ratio and\n"
