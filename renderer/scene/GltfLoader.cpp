@@ -1312,7 +1312,11 @@ KeptObject Loader::keptView(int index) const {
 KeptAccessorInfo Loader::accessorInfo(int index) const {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) return {};
     const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
-    return KeptAccessorInfo{a.name, gltfkeep::keep(a.extras, a.extensions), keptView(a.bufferView), a.minValues, a.maxValues, index};
+    const std::size_t stride = a.bufferView >= 0 && static_cast<std::size_t>(a.bufferView) < model_.bufferViews.size()
+                                   ? model_.bufferViews[static_cast<std::size_t>(a.bufferView)].byteStride
+                                   : 0;
+    return KeptAccessorInfo{a.name, gltfkeep::keep(a.extras, a.extensions), keptView(a.bufferView), a.minValues, a.maxValues,
+                            index, stride};
 }
 
 KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optional<std::size_t> expectedCount) const {

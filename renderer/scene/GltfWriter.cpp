@@ -2,15 +2,22 @@
 //
 // Decisions worth knowing:
 // - All geometry and embedded images go into one buffer: "<stem>.bin" beside a .gltf, the BIN
-//   chunk of a .glb. A primitive's vertices are one interleaved buffer view (lit::Vertex as it
-//   is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes); indices are UNSIGNED_INT.
-// - The nodes reachable from Scene::roots are written first, in index order, then
-//   Scene::keptNodes (the file's nodes outside the shown scene), in theirs: a file whose shown
-//   nodes came first keeps its node indices. Primitives without triangles are left out (the
-//   loader skips them), and so are meshes left with none.
+//   chunk of a .glb. A primitive's vertices are laid out as the file had them (scene/Scene.h:
+//   Primitive::fileSeparateViews): one tightly packed view per attribute, or one interleaved
+//   view (lit::Vertex as it is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes);
+//   indices in the file's component type while they fit, else UNSIGNED_INT.
+// - Nodes are written in the file's order (Node::fileIndex), nodes Lit made after them: an
+//   unedited file keeps its node indices. A node's `matrix` is written back while its transform
+//   is unedited and no written animation moves it. Primitives without triangles are left out
+//   (the loader skips them), and so are meshes left with none.
+// - A primitive's accessors are written in the file's order, and an accessor the file shared
+//   (KeptAccessorInfo::file) is written once while the values agree, so an unedited file keeps
+//   its accessor indices too; min/max the file had are recomputed from the written values
+//   (the file's exact numbers where their floats agree).
 // - Names, extras and extensions of the file's accessors, buffer views and buffers go on the
 //   accessor or view that holds the same data again (kept attributes, sparse data, embedded
-//   images, animation data); the one buffer gets those of all the file's buffers.
+//   images, animation data, drawn geometry while unedited); the one buffer gets those of all the
+//   file's buffers.
 // - asset.generator is "Lit": glTF means the tool that wrote the file, and importers use it to
 //   work around that tool's quirks. The file's own generator goes to the asset's extras as
 //   "litSourceGenerator" (a file Lit wrote keeps the one it already has there).
@@ -22,6 +29,8 @@
 // - Every glTF scene of the source is written, in its order (Scene::otherScenes around the
 //   shown one, which keeps its index as `scene`).
 // - Kept accessors that were sparse are written sparse (KeptAccessor::Sparse).
+// - Animation outputs are written in the file's component type (normalized integer rotations
+//   and weights); key times shared by samplers are written once.
 // - What the loader kept without drawing it (scene/Scene.h: KeptAccessor and friends) is written
 //   back in its own component types: extra vertex attributes and morph targets (one buffer view
 //   each, strides padded to 4 bytes), primitives of other modes, skins (joints remapped like the
@@ -135,7 +144,10 @@ private:
     // dropped: the geometry was rebuilt). False when one was dropped.
     bool addKeptAttributes(const KeptAttributes& kept, std::size_t vertexCount, std::map<std::string, int>& attributes);
     void addTargets(const std::vector<KeptAttributes>& targets, std::size_t vertexCount, tinygltf::Primitive& primitive);
-    void addSkins();
+    // The skins (in order) up to the first whose inverse bind matrices came after the file's
+    // accessor `beforeFileAccessor`, so they are written in the file's accessor order.
+    void addSkins(int beforeFileAccessor);
+    void orderNodes();
     // The written index of a node reference (scene/Scene.h: keptNodeRef), -1 when not written.
     int writtenNode(int reference) const;
     // Names, extras and extensions of the file's objects Lit lays out itself (scene/Scene.h).
@@ -175,6 +187,8 @@ private:
     std::vector<int> nodeIndex_;  // scene node → glTF node, -1 when not written
     std::vector<int> keptNodeIndex_;  // Scene::keptNodes → glTF node
     std::vector<int> skinIndex_;  // scene skin → glTF skin, -1 when not written
+    std::size_t nextSkin_ = 0;    // the next skin addSkins looks at
+    std::vector<std::pair<const Node*, bool>> writtenNodes_;  // in written order; true: a kept node
     std::vector<int> imageIndex_;  // scene image → glTF image, -1 when not written (generated)
     // JSON the tinygltf serialiser cannot write (a sampler's name and extensions): JSON pointer →
     // value text, set into the document by writeGltfModel.
@@ -574,7 +588,9 @@ int ModelBuilder::addKeptAccessor(const KeptAccessor& kept, int target) {
     if (sparse && !sparse->hasBase) {
         view = -1;  // no buffer view: zeros (glTF §3.6.2.3)
     } else if (stride == elementSize) {
-        view = addBufferView(dense->data(), dense->size(), target, target == kArrayBuffer ? stride : 0);
+        // byteStride only where the file's view had it (it is optional for a view of one accessor).
+        view = addBufferView(dense->data(), dense->size(), target,
+                             target == kArrayBuffer && kept.info.viewStride == stride ? stride : 0);
     } else {  // e.g. a normalized UNSIGNED_BYTE VEC3 colour: 3 bytes every 4
         std::vector<std::uint8_t> padded(kept.count * stride, 0);
         for (std::size_t i = 0; i < kept.count; ++i)
@@ -640,7 +656,16 @@ void ModelBuilder::addTargets(const std::vector<KeptAttributes>& targets, std::s
 bool ModelBuilder::addKeptAttributes(const KeptAttributes& kept, std::size_t vertexCount,
                                      std::map<std::string, int>& attributes) {
     bool all = true;
-    for (const auto& [name, accessor] : kept) {
+    // In the file's accessor order (those without a file index last).
+    std::vector<std::pair<const std::string*, const KeptAccessor*>> ordered;
+    for (const auto& [name, accessor] : kept) ordered.emplace_back(&name, &accessor);
+    std::stable_sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) {
+        const auto key = [](const KeptAccessor* k) { return k->info.file >= 0 ? k->info.file : std::numeric_limits<int>::max(); };
+        return key(a.second) < key(b.second);
+    });
+    for (const auto& [namePointer, accessorPointer] : ordered) {
+        const std::string& name = *namePointer;
+        const KeptAccessor& accessor = *accessorPointer;
         if (accessor.count != vertexCount) {
             all = false;
             continue;
@@ -837,7 +862,9 @@ tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
             minMaxOnly.max = info->max;
             keepMinMax(accessor, minMaxOnly);
         }
-        if (info->file >= 0) writtenByFile_.emplace(info->file, accessor);
+        // Shared again only by accessors that keep the same (an edited primitive's lost its names).
+        const bool plain = info->name.empty() && info->kept == KeptGltf{} && info->view.empty();
+        if (info->file >= 0 && (unedited || plain)) writtenByFile_.emplace(info->file, accessor);
     };
     const auto fileIndex = [&](const char* name) {
         const KeptAccessorInfo* info = fileInfo(name);
@@ -866,7 +893,8 @@ tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
                     p.attributes[a.name] = shared;
                     return;
                 }
-                const int view = addBufferView(packed.data(), packed.size(), kArrayBuffer, 0);
+                const int view = addBufferView(packed.data(), packed.size(), kArrayBuffer,
+                                               info && info->viewStride == a.bytes ? a.bytes : 0);
                 p.attributes[a.name] = addAccessor(view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, count);
                 if (a.offset == offsetof(Vertex, position)) setPositionBounds(p.attributes[a.name], primitive);
                 keepFile(p.attributes[a.name], a.name);
@@ -985,6 +1013,12 @@ void ModelBuilder::addMeshes() {
     meshIndex_.assign(scene_.meshes.size(), -1);
     for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
         const Mesh& mesh = scene_.meshes[m];
+        // Skins whose matrices the file had before this mesh's data.
+        int first = std::numeric_limits<int>::max();
+        for (const Primitive& primitive : mesh.primitives)
+            for (const auto& [name, info] : primitive.fileAccessors)
+                if (info.file >= 0) first = std::min(first, info.file);
+        addSkins(first);
         tinygltf::Mesh out;
         out.name = mesh.name;
         for (const Primitive& primitive : mesh.primitives) {
@@ -1085,7 +1119,7 @@ void addTrs(const Node& node, tinygltf::Node& out) {
     if (node.scale != glm::vec3(1.0f)) out.scale = fileOr(node.fileNumbers, "s", node.scale);
 }
 
-void ModelBuilder::addNodes() {
+void ModelBuilder::orderNodes() {
     // The written nodes (the shown ones reachable from the roots, then the kept ones) in the
     // file's order (Node::fileIndex), those Lit made after them in their own order: an unedited
     // file keeps its node indices, an edited one its nodes' order. A file index seen twice (a
@@ -1117,7 +1151,12 @@ void ModelBuilder::addNodes() {
     keptNodeIndex_.assign(scene_.keptNodes.size(), -1);
     for (std::size_t i = 0; i < written.size(); ++i)
         (written[i].kept ? keptNodeIndex_ : nodeIndex_)[static_cast<std::size_t>(written[i].index)] = static_cast<int>(i);
-    addSkins();
+    for (const Written& w : written) writtenNodes_.emplace_back(w.node, w.kept);
+    skinIndex_.assign(scene_.skins.size(), -1);
+}
+
+void ModelBuilder::addNodes() {
+    addSkins(std::numeric_limits<int>::max());
     // Nodes a written animation moves: glTF forbids a matrix on them (§5.25).
     std::vector<const Node*> animated;
     for (const Animation& animation : scene_.animations) {
@@ -1156,7 +1195,7 @@ void ModelBuilder::addNodes() {
         restore(node.kept, out.extras, out.extensions);
         model_.nodes.push_back(std::move(out));
     };
-    for (const Written& w : written) addNode(*w.node, w.kept ? keptNodeIndex_ : nodeIndex_);
+    for (const auto& [node, kept] : writtenNodes_) addNode(*node, kept ? keptNodeIndex_ : nodeIndex_);
     const auto sceneOf = [&](const std::string& name, const std::vector<int>& roots, const KeptGltf& kept) {
         tinygltf::Scene out;
         out.name = name;
@@ -1185,11 +1224,12 @@ void ModelBuilder::addNodes() {
 
 // The skins whose joints are all written (a deleted joint leaves its skin out, and the skinned
 // nodes are written without one).
-void ModelBuilder::addSkins() {
-    skinIndex_.assign(scene_.skins.size(), -1);
+void ModelBuilder::addSkins(int beforeFileAccessor) {
     const auto written = [&](int reference) { return writtenNode(reference); };
-    for (std::size_t s = 0; s < scene_.skins.size(); ++s) {
+    for (; nextSkin_ < scene_.skins.size(); ++nextSkin_) {
+        const std::size_t s = nextSkin_;
         const Skin& skin = scene_.skins[s];
+        if (skin.inverseBindMatricesInfo.file >= beforeFileAccessor) break;
         if (skin.joints.empty() ||
             std::any_of(skin.joints.begin(), skin.joints.end(), [&](int joint) { return written(joint) < 0; }) ||
             (!skin.inverseBindMatrices.empty() && skin.inverseBindMatrices.size() != 16 * skin.joints.size()))
@@ -1328,6 +1368,7 @@ tinygltf::Model ModelBuilder::build() {
     addImages();
     addTextures();
     addMaterials();
+    orderNodes();
     addMeshes();
     addLights();
     addCameras();

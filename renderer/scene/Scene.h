@@ -58,6 +58,9 @@ struct KeptAccessorInfo {
     // The accessor's index in the file (-1: none): accessors the file shared between primitives
     // (Blender shares identical ones) are written once again while their elements agree.
     int file = -1;
+    // Its buffer view's byteStride in the file (0: none): written again where the elements are
+    // still that far apart.
+    std::size_t viewStride = 0;
     bool operator==(const KeptAccessorInfo&) const = default;
 };
 
