@@ -783,8 +783,10 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.timeline) timelinePanel_.draw(doc_, playback_, camera_, layout.timeline, &visible_.timeline);
     if (visible_.camera && drawCameraPanel(camera_, layout.camera, &visible_.camera).resetToSceneCamera) resetCamera();
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
-    referenceViewer_.drawWindow();
-    drawViewportBar(menuHeight);
+    drawViewportBar(menuHeight);  // computes viewportRect_
+    constexpr float kViewportMargin = 8.0f;
+    referenceViewer_.drawWindow(ImVec2(viewportRect_.x + viewportRect_.z - kViewportMargin, viewportRect_.y + kViewportMargin),
+                                resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
     drawErrorPanel(sceneError_, display, menuHeight);
     drawLoadingWindow();
     // An edit opened by a widget that never reported its deactivation (a colour picker popup)

@@ -78,8 +78,10 @@ const gl::Texture* ReferenceViewer::output() const {
     return mode_ != ReferenceMode::Off && haveImage_ && texture_ ? &texture_ : nullptr;
 }
 
-void ReferenceViewer::drawWindow() {
+void ReferenceViewer::drawWindow(ImVec2 topRight, ImGuiCond placeCondition) {
     ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    // Without a place ImGui puts a new window at (60, 60), over the hierarchy panel.
+    ImGui::SetNextWindowPos(topRight, placeCondition, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Reference")) {
         ImGui::End();

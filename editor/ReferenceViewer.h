@@ -10,6 +10,8 @@
 #include "gl/Objects.h"
 #include "reference/ProgressiveReference.h"
 
+#include <imgui.h>
+
 namespace lit {
 
 class Renderer;
@@ -26,8 +28,10 @@ public:
     void update(const Scene& scene, const CameraView& camera, const RenderSettings& settings, Renderer& renderer);
     // The image to show instead of the renderer's output, or nullptr (mode Off, no image yet).
     const gl::Texture* output() const;
-    // A small window: mode, samples per pixel, samples/s, the colour bar and its range.
-    void drawWindow();
+    // A small window: mode, samples per pixel, samples/s, the colour bar and its range. Placed
+    // with its top right corner at `topRight` (the free viewport area's corner, clear of the
+    // panels) on first use, or always when `placeCondition` is ImGuiCond_Always (after a resize).
+    void drawWindow(ImVec2 topRight, ImGuiCond placeCondition);
 
 private:
     ReferenceMode mode_ = ReferenceMode::Off;

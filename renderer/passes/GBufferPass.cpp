@@ -12,53 +12,38 @@ GBufferPass::GBufferPass(const std::filesystem::path& shaderRoot)
     : program_(shaderRoot, "gbuffer",
                {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "gbuffer.frag.glsl"}}) {}
 
-void GBufferPass::swapWithSpare() {
-    std::swap(albedo_, spare_.albedo);
-    std::swap(normal_, spare_.normal);
-    std::swap(material_, spare_.material);
-    std::swap(emissive_, spare_.emissive);
-    std::swap(nodeId_, spare_.nodeId);
-    std::swap(depth_, spare_.depth);
-    std::swap(framebuffer_, spare_.framebuffer);
-    std::swap(width_, spare_.width);
-    std::swap(height_, spare_.height);
-}
-
 void GBufferPass::resize(int width, int height) {
-    if (width == width_ && height == height_) return;
-    swapWithSpare();  // the current targets become the spare
-    if (width == width_ && height == height_) return;  // the spare had this size
-    width_ = width;
-    height_ = height;
-    albedo_ = gl::Texture("gbuffer albedo", {GL_TEXTURE_2D, GL_SRGB8_ALPHA8, width, height, 1, 1});
-    normal_ = gl::Texture("gbuffer normal", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
-    material_ = gl::Texture("gbuffer material", {GL_TEXTURE_2D, GL_RGBA8, width, height, 1, 1});
-    emissive_ = gl::Texture("gbuffer emissive", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
-    nodeId_ = gl::Texture("gbuffer node id", {GL_TEXTURE_2D, GL_R32UI, width, height, 1, 1});
-    depth_ = gl::Texture("gbuffer depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, 1});
-    for (const gl::Texture* t : {&albedo_, &normal_, &material_, &emissive_, &nodeId_, &depth_})
-        t->setFilter(GL_NEAREST, GL_NEAREST);
-    framebuffer_ = gl::Framebuffer("gbuffer");
-    framebuffer_.attach(GL_COLOR_ATTACHMENT0, albedo_);
-    framebuffer_.attach(GL_COLOR_ATTACHMENT1, normal_);
-    framebuffer_.attach(GL_COLOR_ATTACHMENT2, material_);
-    framebuffer_.attach(GL_COLOR_ATTACHMENT3, emissive_);
-    framebuffer_.attach(GL_COLOR_ATTACHMENT4, nodeId_);
-    framebuffer_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    framebuffer_.setDrawBuffers(5);
-    framebuffer_.checkComplete("gbuffer");
+    if (targets_.select(width, height) != TargetsBySize<Targets>::Selected::Empty) return;
+    Targets& t = targets_.current();
+    t.albedo = gl::Texture("gbuffer albedo", {GL_TEXTURE_2D, GL_SRGB8_ALPHA8, width, height, 1, 1});
+    t.normal = gl::Texture("gbuffer normal", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
+    t.material = gl::Texture("gbuffer material", {GL_TEXTURE_2D, GL_RGBA8, width, height, 1, 1});
+    t.emissive = gl::Texture("gbuffer emissive", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
+    t.nodeId = gl::Texture("gbuffer node id", {GL_TEXTURE_2D, GL_R32UI, width, height, 1, 1});
+    t.depth = gl::Texture("gbuffer depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, 1});
+    for (const gl::Texture* texture : {&t.albedo, &t.normal, &t.material, &t.emissive, &t.nodeId, &t.depth})
+        texture->setFilter(GL_NEAREST, GL_NEAREST);
+    t.framebuffer = gl::Framebuffer("gbuffer");
+    t.framebuffer.attach(GL_COLOR_ATTACHMENT0, t.albedo);
+    t.framebuffer.attach(GL_COLOR_ATTACHMENT1, t.normal);
+    t.framebuffer.attach(GL_COLOR_ATTACHMENT2, t.material);
+    t.framebuffer.attach(GL_COLOR_ATTACHMENT3, t.emissive);
+    t.framebuffer.attach(GL_COLOR_ATTACHMENT4, t.nodeId);
+    t.framebuffer.attach(GL_DEPTH_ATTACHMENT, t.depth);
+    t.framebuffer.setDrawBuffers(5);
+    t.framebuffer.checkComplete("gbuffer");
 }
 
 void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters,
                           const std::vector<std::uint32_t>* visibleItems) {
-    framebuffer_.bind();
-    glViewport(0, 0, width_, height_);
+    targets_->framebuffer.bind();
+    glViewport(0, 0, targets_->width, targets_->height);
     const float zero[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(targets_->framebuffer.id(), GL_COLOR, i, zero);
     const GLuint background = 0;
-    glClearNamedFramebufferuiv(framebuffer_.id(), GL_COLOR, 4, &background);
+    glClearNamedFramebufferuiv(targets_->framebuffer.id(), GL_COLOR, 4, &background);
     const float one = 1.0f;
-    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
+    glClearNamedFramebufferfv(targets_->framebuffer.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
@@ -84,11 +69,11 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
 }
 
 void GBufferPass::bindTargets() const {
-    albedo_.bind(LIT_TEX_GBUFFER_ALBEDO);
-    normal_.bind(LIT_TEX_GBUFFER_NORMAL);
-    material_.bind(LIT_TEX_GBUFFER_MATERIAL);
-    emissive_.bind(LIT_TEX_GBUFFER_EMISSIVE);
-    depth_.bind(LIT_TEX_GBUFFER_DEPTH);
+    targets_->albedo.bind(LIT_TEX_GBUFFER_ALBEDO);
+    targets_->normal.bind(LIT_TEX_GBUFFER_NORMAL);
+    targets_->material.bind(LIT_TEX_GBUFFER_MATERIAL);
+    targets_->emissive.bind(LIT_TEX_GBUFFER_EMISSIVE);
+    targets_->depth.bind(LIT_TEX_GBUFFER_DEPTH);
 }
 
 }  // namespace lit

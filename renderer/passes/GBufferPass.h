@@ -5,6 +5,7 @@
 // the scene node drawn there + 1, 0 = background; for picking and the selection outline), depth (32F).
 
 #include "passes/Pass.h"
+#include "passes/TargetsBySize.h"
 
 #include <cstdint>
 #include <vector>
@@ -27,29 +28,21 @@ public:
     // Binds the targets to LIT_TEX_GBUFFER_* for the full-screen passes.
     void bindTargets() const;
 
-    const gl::Texture& depth() const { return depth_; }
-    const gl::Texture& albedo() const { return albedo_; }
-    const gl::Texture& normal() const { return normal_; }
-    const gl::Texture& material() const { return material_; }
-    const gl::Texture& nodeId() const { return nodeId_; }
+    const gl::Texture& depth() const { return targets_->depth; }
+    const gl::Texture& albedo() const { return targets_->albedo; }
+    const gl::Texture& normal() const { return targets_->normal; }
+    const gl::Texture& material() const { return targets_->material; }
+    const gl::Texture& nodeId() const { return targets_->nodeId; }
     std::vector<gl::Program*> programs() override { return {&program_}; }
 
 private:
     gl::Program program_;
-    gl::Texture albedo_, normal_, material_, emissive_, nodeId_, depth_;
-    gl::Framebuffer framebuffer_;
-    int width_ = 0, height_ = 0;
-    // The targets of the size used before the current one, kept so that switching back (the
-    // editor's interactive render scale: full size when still, a smaller one while moving)
-    // reuses them instead of reallocating: allocating the 1280×720 targets cost 120–590 ms on
-    // llvmpipe in the frame after a motion (docs/PERFORMANCE.md). Empty until a second size is
-    // used (lit-render and the tests render at one size).
-    struct Spare {
+    struct Targets {
         gl::Texture albedo, normal, material, emissive, nodeId, depth;
         gl::Framebuffer framebuffer;
         int width = 0, height = 0;
-    } spare_;
-    void swapWithSpare();
+    };
+    TargetsBySize<Targets> targets_;
 };
 
 }  // namespace lit

@@ -3,6 +3,7 @@
 // lighting pass, L_ID, L_IS by the cone-tracing pass. The composite pass sums them.
 
 #include "gl/Objects.h"
+#include "passes/TargetsBySize.h"
 
 namespace lit {
 
@@ -11,32 +12,24 @@ enum class Term { DirectDiffuse = 0, DirectSpecular = 1, IndirectDiffuse = 2, In
 class LightingTerms {
 public:
     void resize(int width, int height);
-    const gl::Texture& texture(Term term) const { return textures_[static_cast<int>(term)]; }
+    const gl::Texture& texture(Term term) const { return targets_->textures[static_cast<int>(term)]; }
     // Framebuffer writing L_DD to attachment 0 and L_DS to attachment 1.
-    const gl::Framebuffer& directFramebuffer() const { return direct_; }
+    const gl::Framebuffer& directFramebuffer() const { return targets_->direct; }
     // Framebuffer writing L_ID to attachment 0 and L_IS to attachment 1.
-    const gl::Framebuffer& indirectFramebuffer() const { return indirect_; }
+    const gl::Framebuffer& indirectFramebuffer() const { return targets_->indirect; }
     void clearIndirect() const;
     // Binds all four to LIT_TEX_TERM_* units.
     void bind() const;
-    int width() const { return width_; }
-    int height() const { return height_; }
+    int width() const { return targets_->width; }
+    int height() const { return targets_->height; }
 
 private:
-    gl::Texture textures_[4];
-    gl::Framebuffer direct_, indirect_;
-    int width_ = 0, height_ = 0;
-    // The targets of the size used before the current one, kept so that switching back (the
-    // editor's interactive render scale: full size when still, a smaller one while moving)
-    // reuses them instead of reallocating: allocating the 1280×720 targets cost 120–590 ms on
-    // llvmpipe in the frame after a motion (docs/PERFORMANCE.md). Empty until a second size is
-    // used (lit-render and the tests render at one size).
-    struct Spare {
+    struct Targets {
         gl::Texture textures[4];
         gl::Framebuffer direct, indirect;
         int width = 0, height = 0;
-    } spare_;
-    void swapWithSpare();
+    };
+    TargetsBySize<Targets> targets_;
 };
 
 }  // namespace lit

@@ -22,43 +22,31 @@ PostPass::PostPass(const std::filesystem::path& shaderRoot)
     plainSampler_.set(GL_TEXTURE_COMPARE_MODE, GL_NONE);
 }
 
-void PostPass::swapWithSpare() {
-    std::swap(hdr_, spare_.hdr);
-    std::swap(output_, spare_.output);
-    std::swap(hdrFramebuffer_, spare_.hdrFramebuffer);
-    std::swap(outputFramebuffer_, spare_.outputFramebuffer);
-    std::swap(width_, spare_.width);
-    std::swap(height_, spare_.height);
-}
-
 void PostPass::resize(int width, int height) {
-    if (width == width_ && height == height_) return;
-    swapWithSpare();  // the current targets become the spare
-    if (width == width_ && height == height_) return;  // the spare had this size
-    width_ = width;
-    height_ = height;
+    if (targets_.select(width, height) != TargetsBySize<Targets>::Selected::Empty) return;
+    Targets& t = targets_.current();
     // 32-bit float so the HDR image holds the exact sum of the 16-bit term images.
-    hdr_ = gl::Texture("hdr", {GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, 1});
-    hdr_.setFilter(GL_NEAREST, GL_NEAREST);
-    output_ = gl::Texture("output", {GL_TEXTURE_2D, GL_SRGB8_ALPHA8, width, height, 1, 1});
-    hdrFramebuffer_ = gl::Framebuffer("hdr");
-    hdrFramebuffer_.attach(GL_COLOR_ATTACHMENT0, hdr_);
-    hdrFramebuffer_.setDrawBuffers(1);
-    hdrFramebuffer_.checkComplete("hdr");
-    outputFramebuffer_ = gl::Framebuffer("output");
-    outputFramebuffer_.attach(GL_COLOR_ATTACHMENT0, output_);
-    outputFramebuffer_.setDrawBuffers(1);
-    outputFramebuffer_.checkComplete("output");
+    t.hdr = gl::Texture("hdr", {GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, 1});
+    t.hdr.setFilter(GL_NEAREST, GL_NEAREST);
+    t.output = gl::Texture("output", {GL_TEXTURE_2D, GL_SRGB8_ALPHA8, width, height, 1, 1});
+    t.hdrFramebuffer = gl::Framebuffer("hdr");
+    t.hdrFramebuffer.attach(GL_COLOR_ATTACHMENT0, t.hdr);
+    t.hdrFramebuffer.setDrawBuffers(1);
+    t.hdrFramebuffer.checkComplete("hdr");
+    t.outputFramebuffer = gl::Framebuffer("output");
+    t.outputFramebuffer.attach(GL_COLOR_ATTACHMENT0, t.output);
+    t.outputFramebuffer.setDrawBuffers(1);
+    t.outputFramebuffer.checkComplete("output");
 }
 
 void PostPass::bindHdrTarget() const {
-    hdrFramebuffer_.bind();
-    glViewport(0, 0, width_, height_);
+    targets_->hdrFramebuffer.bind();
+    glViewport(0, 0, targets_->width, targets_->height);
 }
 
 void PostPass::bindOutputTarget() const {
-    outputFramebuffer_.bind();
-    glViewport(0, 0, width_, height_);
+    targets_->outputFramebuffer.bind();
+    glViewport(0, 0, targets_->width, targets_->height);
 }
 
 void PostPass::composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer) {
@@ -83,7 +71,7 @@ void PostPass::tonemap(const RenderSettings& settings) {
     tonemap_.set("uDataView", isDataView(settings.view) ? 1 : 0);
     // The exposure buffer is bound by the Renderer (AutoExposurePass) when auto exposure is on.
     tonemap_.set("uAutoExposure", settings.autoExposure && !isDataView(settings.view) ? 1 : 0);
-    hdr_.bind(LIT_TEX_HDR_INPUT);
+    targets_->hdr.bind(LIT_TEX_HDR_INPUT);
     triangle_.draw();
     glDisable(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

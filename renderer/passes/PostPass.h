@@ -4,6 +4,7 @@
 
 #include "RenderSettings.h"
 #include "passes/Pass.h"
+#include "passes/TargetsBySize.h"
 
 namespace lit {
 
@@ -25,28 +26,20 @@ public:
     // Tone maps the HDR image into the sRGB output.
     void tonemap(const RenderSettings& settings);
 
-    const gl::Texture& hdr() const { return hdr_; }
-    const gl::Texture& output() const { return output_; }
+    const gl::Texture& hdr() const { return targets_->hdr; }
+    const gl::Texture& output() const { return targets_->output; }
     std::vector<gl::Program*> programs() override { return {&composite_, &tonemap_}; }
 
 private:
     gl::Program composite_, tonemap_;
     FullscreenTriangle triangle_;
-    gl::Texture hdr_, output_;
-    gl::Framebuffer hdrFramebuffer_, outputFramebuffer_;
     gl::Sampler plainSampler_;
-    int width_ = 0, height_ = 0;
-    // The targets of the size used before the current one, kept so that switching back (the
-    // editor's interactive render scale: full size when still, a smaller one while moving)
-    // reuses them instead of reallocating: allocating the 1280×720 targets cost 120–590 ms on
-    // llvmpipe in the frame after a motion (docs/PERFORMANCE.md). Empty until a second size is
-    // used (lit-render and the tests render at one size).
-    struct Spare {
+    struct Targets {
         gl::Texture hdr, output;
         gl::Framebuffer hdrFramebuffer, outputFramebuffer;
         int width = 0, height = 0;
-    } spare_;
-    void swapWithSpare();
+    };
+    TargetsBySize<Targets> targets_;
 };
 
 // Views whose HDR image already holds display values in [0,1] (the tone mapper only clamps).

@@ -1,0 +1,46 @@
+#pragma once
+// A pass's screen-sized render targets for the size in use, plus those of the size used before it.
+//
+// Why the second set: the editor's interactive render scale switches between two sizes (full
+// size when still, a smaller one while the camera moves or a value is dragged). Keeping the
+// previous size's targets lets the switch back reuse them instead of reallocating: allocating the
+// 1280×720 targets cost 120–590 ms on llvmpipe in the frame after a motion (docs/PERFORMANCE.md).
+// The spare set stays empty until a second size is used (lit-render and the tests use one size).
+//
+// `Targets` is a pass's plain struct of GL objects with `int width, height` members; it is swapped
+// whole, so a target added to the struct cannot be forgotten by the swap.
+
+#include <utility>
+
+namespace lit {
+
+template <class Targets>
+class TargetsBySize {
+public:
+    enum class Selected {
+        Unchanged,  // the targets in use already had this size
+        Reused,     // the spare set had this size and is now in use
+        Empty,      // neither had it: the set in use is empty, sized, and must be allocated
+    };
+
+    // Makes the targets of `width` × `height` the ones in use; the set that was in use becomes
+    // the spare.
+    Selected select(int width, int height) {
+        if (current_.width == width && current_.height == height) return Selected::Unchanged;
+        std::swap(current_, spare_);
+        if (current_.width == width && current_.height == height) return Selected::Reused;
+        current_ = Targets{};  // frees the older set's GL objects before the new ones are made
+        current_.width = width;
+        current_.height = height;
+        return Selected::Empty;
+    }
+
+    Targets& current() { return current_; }
+    Targets* operator->() { return &current_; }
+    const Targets* operator->() const { return &current_; }
+
+private:
+    Targets current_, spare_;
+};
+
+}  // namespace lit
