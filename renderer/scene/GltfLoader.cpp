@@ -200,7 +200,7 @@ bool keepEncodedImage(tinygltf::Image* image, const int imageIndex, std::string*
 class Loader {
 public:
     // `sparseKept`: by accessor index, the extras and extensions of its `sparse`, `sparse.indices`
-    // and `sparse.values` objects (readSparseExtras).
+    // and `sparse.values` objects (readWhatTinygltfSkips).
     Loader(const fs::path& path, const tinygltf::Model& model, Log& log, const GltfLoadOptions& options,
            const ImageDeduplicator& images, const std::map<int, std::array<KeptGltf, 3>>& sparseKept)
         : path_(path), model_(model), log_(log), options_(options), images_(images), sparseKept_(sparseKept) {}
@@ -843,10 +843,8 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
             out.fileIndexType = 0;
         }
         // Only a primitive with names, extras or extensions to give back pays for the hash.
-        const bool named = std::any_of(out.fileAccessors.begin(), out.fileAccessors.end(), [](const auto& entry) {
-            const KeptAccessorInfo& info = entry.second;
-            return !info.name.empty() || !(info.kept == KeptGltf{}) || !info.view.empty();
-        });
+        const bool named = std::any_of(out.fileAccessors.begin(), out.fileAccessors.end(),
+                                       [](const auto& entry) { return entry.second.hasNameOrExtras(); });
         if (named) out.fileDataHash = gltfkeep::drawnDataHash(out);
     }
     for (const Vertex& v : out.vertices)

@@ -844,10 +844,7 @@ tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
     };
     // The file's names, extras and extensions go back only on the same data (scene/Scene.h).
     const bool unedited = std::any_of(primitive.fileAccessors.begin(), primitive.fileAccessors.end(),
-                                      [](const auto& entry) {
-                                          const KeptAccessorInfo& info = entry.second;
-                                          return !info.name.empty() || !(info.kept == KeptGltf{}) || !info.view.empty();
-                                      }) &&
+                                      [](const auto& entry) { return entry.second.hasNameOrExtras(); }) &&
                           gltfkeep::drawnDataHash(primitive) == primitive.fileDataHash;
     // A new accessor of drawn data: the file's min/max, and its name, extras and extensions while
     // unedited; remembered under its file index, so that primitives that shared it share it again.
@@ -863,8 +860,7 @@ tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
             keepMinMax(accessor, minMaxOnly);
         }
         // Shared again only by accessors that keep the same (an edited primitive's lost its names).
-        const bool plain = info->name.empty() && info->kept == KeptGltf{} && info->view.empty();
-        if (info->file >= 0 && (unedited || plain)) writtenByFile_.emplace(info->file, accessor);
+        if (info->file >= 0 && (unedited || !info->hasNameOrExtras())) writtenByFile_.emplace(info->file, accessor);
     };
     const auto fileIndex = [&](const char* name) {
         const KeptAccessorInfo* info = fileInfo(name);

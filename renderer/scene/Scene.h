@@ -61,6 +61,8 @@ struct KeptAccessorInfo {
     // Its buffer view's byteStride in the file (0: none): written again where the elements are
     // still that far apart.
     std::size_t viewStride = 0;
+    // Whether it carries a name, extras or extensions (its own or its view's).
+    bool hasNameOrExtras() const { return !name.empty() || !(kept == KeptGltf{}) || !view.empty(); }
     bool operator==(const KeptAccessorInfo&) const = default;
 };
 
