@@ -103,6 +103,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("specularFullResRoughness", s.specularFullResRoughness);
     visit("temporalAccumulation", s.temporalAccumulation);
     visit("temporalMaxFrames", s.temporalMaxFrames);
+    visit("temporalConeSubsets", s.temporalConeSubsets);
     visit("interactiveFpsTarget", s.interactiveFpsTarget);
 }
 }  // namespace

@@ -483,8 +483,9 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
             if (!(key == r.indirectKey)) r.resolve.resetHistory();
             r.indirectKey = key;
             const ConeTracePass::Sampling sampling =
-                settings.temporalAccumulation ? ConeTracePass::samplingFor(r.temporalFrame, key.indirectScale)
-                                              : ConeTracePass::Sampling{};
+                settings.temporalAccumulation
+                    ? ConeTracePass::samplingFor(r.temporalFrame, key.indirectScale, ConeTracePass::coneSubsets(settings))
+                    : ConeTracePass::Sampling{};
             {
                 Profiler::Scope scope(r.profiler, "cone trace");
                 r.coneTrace.executeReduced(r.voxels, settings, sampling);

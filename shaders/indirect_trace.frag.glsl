@@ -10,12 +10,52 @@
 #include "gbuffer.glsl"
 #include "cone.glsl"
 #include "indirect.glsl"
+#include "cone_strata.glsl"
 
 layout(location = 0) out uvec4 outPacked;
 layout(location = 1) out uvec4 outGuide;
 
 uniform ivec2 uTraceTerms;       // x: L_ID wanted, y: L_IS wanted (1/0)
 uniform float uSmoothRoughness;  // L_IS of smoother surfaces is left to the resolve
+uniform int uConeSubset;         // LIT_CONE_SUBSETS: this frame's phase (0..4) of the subsets
+
+// Cone subsets (LIT_CONE_SUBSETS 1, a separate program: RenderSettings::temporalConeSubsets with
+// temporal accumulation; ConeTracePass::executeReduced picks it): a texel traces the normal cone and two of the five side cones, k and k + 2
+// (mod 5, 144° apart), k = (phase + x + 2y) mod 5 for texel (x, y), so the four neighbours of a
+// texel trace the other four pairs and each side cone comes back every five frames. Half the
+// marching per texel (3 of 6 cones); the irradiance estimate
+//   D = W_0·C_0 + (1 − W_0)·½(C_k + C_{k+2})
+// is exact in a uniform field (the furnace holds every frame) and its mean over the five phases
+// is the full set's W_0·C_0 + Σ W_i·C_i (each side cone is in two of the five pairs, W_i = (1 − W_0)/5);
+// the temporal accumulation averages the phases (docs/GI.md). Not for footprint-bounded cones,
+// which trace the stratified sets of cone_strata.glsl instead, nor for another cone table.
+#ifndef LIT_CONE_SUBSETS
+#define LIT_CONE_SUBSETS 0
+#endif
+#if LIT_CONE_SUBSETS && (LIT_CONE_FOOTPRINT || LIT_DIFFUSE_CONE_COUNT != 6)
+#error "cone subsets need the six-cone table and unbounded cones"
+#endif
+
+#if LIT_CONE_SUBSETS
+const int kSideCones = kDiffuseConeCount - 1;
+
+// The first side cone (1..5) of texel `low`'s pair at phase `phase`; the second is secondSideCone().
+int firstSideCone(ivec2 low, int phase) { return 1 + (phase + low.x + 2 * low.y) % kSideCones; }
+int secondSideCone(int first) { return 1 + (first - 1 + 2) % kSideCones; }
+
+// radianceFromDiffuseCones (cone.glsl) over the traced cones only: 0, a and b.
+vec3 radianceFromConeSubset(vec3 l, vec3 cones[kDiffuseConeCount], int a, int b) {
+    int traced[3] = int[](0, a, b);
+    vec3 sum = vec3(0.0);
+    float weightSum = 0.0;
+    for (int j = 0; j < 3; ++j) {
+        float w = max(dot(l, kDiffuseConeDirections[traced[j]]) - 0.5, 0.0);
+        sum += (w * w) * cones[traced[j]];
+        weightSum += w * w;
+    }
+    return weightSum > 0.0 ? sum / weightSum : cones[0];
+}
+#endif
 
 void main() {
     ivec2 pixel = tracedPixel(ivec2(gl_FragCoord.xy));
@@ -40,12 +80,56 @@ void main() {
     bool reuse = specular && diffuseSurface &&
                  specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
     vec3 cones[kDiffuseConeCount];
-    if ((uTraceTerms.x != 0 || reuse) && diffuseSurface)
+    bool diffuseWanted = (uTraceTerms.x != 0 || reuse) && diffuseSurface;
+#if LIT_CONE_SUBSETS
+    {
+        int a = firstSideCone(ivec2(gl_FragCoord.xy), uConeSubset), b = secondSideCone(a);
+        if (diffuseWanted) {
+            for (int i = 0; i < kDiffuseConeCount; ++i) cones[i] = vec3(0.0);
+            int traced[3] = int[](0, a, b);
+            for (int j = 0; j < 3; ++j)
+                cones[traced[j]] = traceDiffuseCone(origin, basis, traced[j], voxel.traceParams.w, maxDistance);
+            float w0 = kDiffuseConeWeights[0];
+            outDiffuse = vec4(w0 * cones[0] + (1.0 - w0) * 0.5 * (cones[a] + cones[b]), 1.0);
+        }
+        if (specular) {
+            vec3 lobe;
+            if (reuse) {
+                // traceSpecularLobe's reuse branch with the subset's cones (same samples and weights).
+                float alpha = alphaFromRoughness(s.roughness);
+                vec3 weighted = vec3(0.0);
+                float weightSum = 0.0;
+                for (int k = 0; k < count; ++k) {
+                    vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, vec2(pixel), voxel.traceOptions.y), alpha);
+                    vec3 l;
+                    float w = ggxSampleWeight(n, v, h, alpha, l);
+                    if (w <= 0.0) continue;
+                    weighted += w * radianceFromConeSubset(normalize(l * basis), cones, a, b);
+                    weightSum += w;
+                }
+                lobe = weightSum > 0.0 ? weighted / weightSum
+                                       : radianceFromConeSubset(normalize(reflect(-v, n) * basis), cones, a, b);
+            } else {
+                lobe = traceSpecularLobe(origin, n, basis, v, s.roughness, count, vec2(pixel), voxel.traceOptions.y,
+                                         maxDistance, false, cones);
+            }
+            outSpecular = vec4(lobe, 1.0 + s.roughness);
+        }
+    }
+#else
+    if (diffuseWanted)
+#if LIT_CONE_FOOTPRINT
+        // Bounded cones: this texel's stratified set (cone_strata.glsl; ConeStrataFilterPass averages the sets).
+        outDiffuse = vec4(traceDiffuseStratified(origin, basis, coneSetIndex(ivec2(gl_FragCoord.xy)), voxel.traceParams.w,
+                                                 maxDistance, cones), 1.0);
+#else
         outDiffuse = vec4(traceDiffuseInFrame(origin, basis, voxel.traceParams.w, maxDistance, cones), 1.0);
+#endif
     if (specular) {
         vec3 lobe = traceSpecularLobe(origin, n, basis, v, s.roughness, count, vec2(pixel), voxel.traceOptions.y,
                                       maxDistance, reuse, cones);
         outSpecular = vec4(lobe, 1.0 + s.roughness);
     }
+#endif
     outPacked = packIndirect(outDiffuse, outSpecular);
 }

@@ -19,10 +19,25 @@ for view in final direct-diffuse indirect-diffuse direct-specular indirect-specu
     "$render" "$scene" --out "$out/cornell_gi_${view}.png" --size "$size" --gi on --voxels 128 --view "$view"
 done
 
+# The same view path-traced by Lit's reference (docs/REFERENCE.md): one bounce (the light paths
+# of the one-bounce GI above) and every bounce; then the Difference view of the GI image against
+# the one-bounce reference (blue too dark, white right, red too bright; ±50 % at the ends), for the
+# default mode and the accurate mode (docs/GI.md).
+tmpdir="$(mktemp -d)"
+trap 'rm -rf "$tmpdir"' EXIT
+spp="${LIT_SCREENSHOT_SPP:-512}"
+"$render" "$scene" --reference --bounces 1 --spp "$spp" --size "$size" --out "$out/cornell_reference_1bounce.png" \
+    --hdr "$tmpdir/reference_1bounce.hdr"
+"$render" "$scene" --reference --bounces all --spp "$spp" --size "$size" --out "$out/cornell_reference_all.png"
+"$render" "$scene" --size "$size" --gi on --voxels 128 --compare "$tmpdir/reference_1bounce.hdr" \
+    --difference "$out/cornell_gi_difference.png"
+"$render" "$scene" --size "$size" --gi on --voxels 128 --anisotropic on --footprint 0.33 \
+    --out "$out/cornell_gi_accurate.png" --compare "$tmpdir/reference_1bounce.hdr" \
+    --difference "$out/cornell_gi_accurate_difference.png"
+
 # The editor. Keys of a camera path in front of the box, seen from further back and to the side
 # so the curve and its key frusta show; the tall box selected (outline, gizmo) in the inspector.
-script="$(mktemp)"
-trap 'rm -f "$script"' EXIT
+script="$tmpdir/script.txt"
 cat >"$script" <<SCRIPT
 camera 0.9 1.0 4.1 0 1 0
 time 0

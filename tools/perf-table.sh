@@ -24,7 +24,8 @@
 #   PERF_COMPARE_SIZE, PERF_COMPARE_FRAMES   image size and frames of those runs (default: 640x360, 6)
 #   PERF_FAST         1 (default): also the fast-GI rows (issue #12): the full-frame Cornell box
 #                     (assets/cornell_inside.still.path.json: inside the box, 70° fov) at PERF_SIZE
-#                     and 128³ with GI off and GI on at indirect scale 1, 2 and 4, interleaved
+#                     and 128³ with GI off and GI on at indirect scale 1, 2 and 4 and at 2 with
+#                     temporal accumulation (cone subsets), interleaved
 #                     PERF_FAST_ROUNDS times; the flicker figure on assets/cornell_inside.path.json
 #                     (PERF_FLICKER_SIZE, temporal accumulation on and off); and a light edit
 #                     against a re-voxelization on Sponza at 256³ (--bench-gi-updates). 0: skip them.
@@ -113,6 +114,9 @@ if [[ "$fast" == 1 ]]; then
         for scale in 1 2 4; do
             run "cornell-gi-s$scale-$round" --path "$still" --fps 10 --bench-path --gi on --voxels 128 --indirect-scale "$scale"
         done
+        # ½ scale with temporal accumulation, which traces cone subsets (half the cones per texel).
+        run "cornell-gi-s2t-$round" --path "$still" --fps 10 --bench-path --gi on --voxels 128 --indirect-scale 2 \
+            --temporal on
     done
     benchSize="$flickerSize"
     for temporal in on off; do
@@ -270,6 +274,21 @@ if fast_rounds:
         ind = [pass_mean(r, "cone trace") + pass_mean(r, "indirect resolve") + pass_mean(r, "indirect fallback") for r in on]
         w(f"| {rnd} | {offMs:.0f} | {' / '.join(f'{f:.0f}' for f in frames)} | {' / '.join(f'{f / offMs:.2f}×' for f in frames)} | "
           f"{' / '.join(f'{i:.0f}' for i in ind)} | {ind[0] / ind[1]:.2f}× / {ind[0] / ind[2]:.2f}× |")
+    temporal_rounds = [(rnd, load_run(f"cornell-gi-off-{rnd}"), load_run(f"cornell-gi-s1-{rnd}"),
+                        load_run(f"cornell-gi-s2t-{rnd}")) for rnd in fast_rounds]
+    temporal_rounds = [t for t in temporal_rounds if all(t[1:])]
+    if temporal_rounds:
+        w("")
+        w("Scale 2 with temporal accumulation (`--temporal on`: each low-resolution texel marches the normal cone and "
+          "2 of the 5 side cones per frame, `temporalConeSubsets`), same rounds; indirect = cone trace + resolve + fallback.")
+        w("")
+        w("| Round | frame (ms) | GI on ÷ GI off | indirect (ms): trace + resolve + fallback | indirect speed-up vs scale 1 |")
+        w("|---|---|---|---|---|")
+        for rnd, off, s1, t in temporal_rounds:
+            tr, rs, fb = pass_mean(t, "cone trace"), pass_mean(t, "indirect resolve"), pass_mean(t, "indirect fallback")
+            full = pass_mean(s1, "cone trace")
+            w(f"| {rnd} | {t['frameMs']['mean']:.0f} | {t['frameMs']['mean'] / off['frameMs']['mean']:.2f}× | "
+              f"{tr + rs + fb:.0f}: {tr:.0f} + {rs:.0f} + {fb:.0f} | {full / (tr + rs + fb):.2f}× |")
     flick = [(t, load_run(f"flicker-temporal-{t}")) for t in ("on", "off")]
     flick = [(t, r) for t, r in flick if r and "flickerPercent" in r]
     if flick:

@@ -192,6 +192,10 @@ bool drawGlobalIllumination(RenderSettings& s) {
     tooltip("Average indirect light over frames (reprojected; history dropped on disocclusion and edits)");
     changed |= ImGui::SliderInt("History frames", &s.temporalMaxFrames, 1, 64);
     tooltip("Frames averaged at most: more is smoother, slower to follow changes");
+    changed |= ImGui::Checkbox("Cone subsets", &s.temporalConeSubsets);
+    tooltip("With temporal accumulation: each traced pixel marches the normal cone and 2 of the 5 side\n"
+            "cones per frame, a different pair each frame, and the accumulation averages them (half\n"
+            "the cone-trace time; not with footprint-bounded cones)");
     ImGui::EndDisabled();
     if (s.view == View::Voxels || s.view == View::VoxelSlice) {
         ImGui::Separator();

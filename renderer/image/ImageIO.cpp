@@ -3,10 +3,12 @@
 #include "io/AtomicFile.h"
 
 // The implementation lives in libstb (Debian); only the declarations are included here.
+#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -78,6 +80,25 @@ void writeHdr(const fs::path& path, int width, int height, std::span<const float
     if (!stbi_write_hdr_to_func(&appendBytes, &hdr, width, height, 3, rows.data()))
         throw std::runtime_error(what + ": stb_image_write could not encode the HDR image");
     writeFileAtomically(path, hdr);
+}
+
+HdrImage readHdr(const fs::path& path) {
+    const std::string what = "cannot read " + path.string();
+    // stbi_is_hdr first: stbi_loadf also converts 8-bit images (PNG, JPEG) to float, which would
+    // silently compare a tone-mapped image with a linear one.
+    if (!stbi_is_hdr(path.string().c_str()))
+        throw std::runtime_error(what + ": not a Radiance .hdr image (or the file cannot be opened)");
+    int width = 0, height = 0, channels = 0;
+    const std::unique_ptr<float, void (*)(void*)> pixels(stbi_loadf(path.string().c_str(), &width, &height, &channels, 3),
+                                                          stbi_image_free);
+    if (!pixels) throw std::runtime_error(what + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error"));
+    HdrImage image;
+    image.width = width;
+    image.height = height;
+    // The file's rows are top-down; flip them to the bottom-up order used everywhere else.
+    image.rgb = rowsInFileOrder(std::span<const float>(pixels.get(), static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3),
+                                static_cast<std::size_t>(width) * 3, height, true);
+    return image;
 }
 
 }  // namespace lit

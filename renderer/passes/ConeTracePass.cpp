@@ -18,7 +18,11 @@ ConeTracePass::ConeTracePass(const std::filesystem::path& shaderRoot)
                      {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "specular_albedo.frag.glsl"}}),
       reducedProgram_(shaderRoot, "indirect trace (reduced)",
                       {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}},
-                      {}, ConeFeatures::of(RenderSettings{})) {
+                      {}, ConeFeatures::of(RenderSettings{})),
+      reducedSubsetProgram_(shaderRoot, "indirect trace (reduced, cone subsets)",
+                            {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}},
+                            "#define LIT_CONE_SUBSETS 1\n", ConeFeatures::of(RenderSettings{})),
+      strataFilter_(shaderRoot) {
     constexpr int size = LIT_SPECULAR_ALBEDO_SIZE;
     albedoTable_ = gl::Texture("specular albedo table", {GL_TEXTURE_2D, GL_RG16F, size, size, 1, 1});
     albedoTable_.setFilter(GL_LINEAR, GL_LINEAR);
@@ -34,6 +38,8 @@ std::vector<gl::Program*> ConeTracePass::programs() {
     std::vector<gl::Program*> programs{&albedoProgram_};
     program_.appendBuilt(programs);
     reducedProgram_.appendBuilt(programs);
+    reducedSubsetProgram_.appendBuilt(programs);
+    for (gl::Program* program : strataFilter_.programs()) programs.push_back(program);
     return programs;
 }
 
@@ -86,10 +92,14 @@ int ConeTracePass::indirectScale(const RenderSettings& settings) {
 }
 
 bool ConeTracePass::reducedPath(const RenderSettings& settings) {
-    return indirectScale(settings) > 1 || settings.temporalAccumulation;
+    return indirectScale(settings) > 1 || settings.temporalAccumulation || ConeFeatures::of(settings).footprint;
 }
 
-ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scale) {
+bool ConeTracePass::coneSubsets(const RenderSettings& settings) {
+    return settings.temporalAccumulation && settings.temporalConeSubsets && !ConeFeatures::of(settings).footprint;
+}
+
+ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scale, bool coneSubsets) {
     Sampling sampling;
     const auto s = static_cast<std::uint64_t>(std::max(scale, 1));
     const std::uint64_t index = frame % (s * s);
@@ -99,6 +109,9 @@ ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scal
     const float sideConePeriod = 2.0f * 3.14159265358979f / 5.0f;  // the five side cones repeat every 72°
     sampling.rotation = sideConePeriod * static_cast<float>(frame % LIT_DIFFUSE_ROTATION_STEPS) /
                         static_cast<float>(LIT_DIFFUSE_ROTATION_STEPS);
+    // Five phases (each side cone is in two of the five pairs); 5 is prime to the jitter's s² and
+    // the rotation's 8 frames, so the history sees every combination.
+    if (coneSubsets) sampling.coneSubset = static_cast<int>(frame % 5);
     return sampling;
 }
 
@@ -118,6 +131,21 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         lowTarget_.attach(GL_COLOR_ATTACHMENT1, lowGuide_);
         lowTarget_.setDrawBuffers(2);
         lowTarget_.checkComplete("indirect (reduced)");
+        tracedPacked_ = gl::Texture();
+    }
+    const ConeFeatures features = ConeFeatures::of(settings);
+    if (features.footprint && !tracedPacked_) {
+        tracedPacked_ = gl::Texture("indirect terms (reduced, stratified)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
+        tracedPacked_.setFilter(GL_NEAREST, GL_NEAREST);
+        tracedTarget_ = gl::Framebuffer("indirect (reduced, stratified)");
+        tracedTarget_.attach(GL_COLOR_ATTACHMENT0, tracedPacked_);
+        tracedTarget_.attach(GL_COLOR_ATTACHMENT1, lowGuide_);
+        tracedTarget_.setDrawBuffers(2);
+        tracedTarget_.checkComplete("indirect (reduced, stratified)");
+        filteredTarget_ = gl::Framebuffer("indirect (reduced, strata filtered)");
+        filteredTarget_.attach(GL_COLOR_ATTACHMENT0, lowPacked_);
+        filteredTarget_.setDrawBuffers(1);
+        filteredTarget_.checkComplete("indirect (reduced, strata filtered)");
     }
     const Work work = workFor(settings);
     const GLuint zero[4] = {0, 0, 0, 0};
@@ -127,14 +155,15 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         return;
     }
     bindAlbedoTable();
-    lowTarget_.bind();
+    (features.footprint ? tracedTarget_ : lowTarget_).bind();
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-    const ConeFeatures features = ConeFeatures::of(settings);
     if (features.anisotropic) volume.bindDirectional();
-    const gl::Program& program = reducedProgram_.get(features);
+    // The subset program only for unbounded cones (its shader has no footprint variant).
+    const bool subsets = sampling.coneSubset >= 0 && !features.footprint;
+    const gl::Program& program = (subsets ? reducedSubsetProgram_ : reducedProgram_).get(features);
     program.use();
     const GLuint id = program.id();
     glProgramUniform2i(id, program.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
@@ -142,7 +171,9 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     glProgramUniform1i(id, program.location("uScale"), scale);
     glProgramUniform2i(id, program.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
     glProgramUniform1f(id, program.location("uRotation"), sampling.rotation);
+    if (subsets) glProgramUniform1i(id, program.location("uConeSubset"), sampling.coneSubset);
     triangle_.draw();
+    if (features.footprint) strataFilter_.execute(tracedPacked_, lowGuide_, filteredTarget_, w, h);
 }
 
 }  // namespace lit

@@ -12,6 +12,7 @@
 //    into this pass's own low-resolution targets; IndirectResolvePass turns them into the terms.
 
 #include "passes/ConeProgram.h"
+#include "passes/ConeStrataFilterPass.h"
 #include "passes/Pass.h"
 
 #include <glm/glm.hpp>
@@ -42,19 +43,29 @@ public:
     struct Sampling {
         glm::ivec2 jitter{0};   // pixel inside the indirectScale² block (0..scale−1 each)
         float rotation = 0.0f;  // rad, turn of the cone sets about the normal
+        // −1: every texel traces the whole diffuse cone set; 0..4: the phase of the cone subsets
+        // (indirect_trace.frag.glsl, LIT_CONE_SUBSETS): the normal cone and two side cones per texel.
+        int coneSubset = -1;
     };
     // The sampling of temporal frame `frame` at indirect scale `scale`: the jitter runs through
-    // the block's pixels (a Latin square, so successive frames move diagonally) and the rotation
-    // through LIT_DIFFUSE_ROTATION_STEPS steps of the side cones' 72° period.
-    static Sampling samplingFor(std::uint64_t frame, int scale);
+    // the block's pixels (a Latin square, so successive frames move diagonally), the rotation
+    // through LIT_DIFFUSE_ROTATION_STEPS steps of the side cones' 72° period, and, with
+    // `coneSubsets`, the subset phase through frame mod 5.
+    static Sampling samplingFor(std::uint64_t frame, int scale, bool coneSubsets = false);
+    // Whether a temporal frame with `settings` traces cone subsets (RenderSettings::temporalConeSubsets,
+    // temporal accumulation on, cones not footprint-bounded).
+    static bool coneSubsets(const RenderSettings& settings);
     // Whether a frame with `settings` takes the reduced path (executeReduced + IndirectResolvePass).
+    // Always with footprint-bounded cones (the accurate mode): their stratified cone sets need
+    // ConeStrataFilterPass, which runs on the reduced trace (at indirect scale 1 too).
     static bool reducedPath(const RenderSettings& settings);
     // RenderSettings::indirectScale made valid: 1, 2 or 4.
     static int indirectScale(const RenderSettings& settings);
 
     // The low-resolution trace (same bindings as execute): ⌈width/s⌉ × ⌈height/s⌉ texels of
     // demodulated L_ID and rough L_IS and of the traced pixels' positions and normals, packed
-    // (indirect.glsl), read by IndirectResolvePass.
+    // (indirect.glsl), read by IndirectResolvePass. With footprint-bounded cones each texel traces
+    // its stratified cone set and lowPacked() holds the trace after ConeStrataFilterPass.
     void executeReduced(const VoxelVolume& volume, const RenderSettings& settings, const Sampling& sampling);
     const gl::Texture& lowPacked() const { return lowPacked_; }  // RGBA32UI
     const gl::Texture& lowGuide() const { return lowGuide_; }    // RGBA32UI
@@ -81,8 +92,14 @@ private:
     ConeProgram program_;
     gl::Program albedoProgram_;
     ConeProgram reducedProgram_;
+    ConeProgram reducedSubsetProgram_;  // indirect_trace.frag.glsl with LIT_CONE_SUBSETS 1
     gl::Texture lowPacked_, lowGuide_;  // RGBA32UI, ⌈width/s⌉ × ⌈height/s⌉
     gl::Framebuffer lowTarget_;
+    // Footprint-bounded cones: the trace goes to tracedPacked_ (+ lowGuide_), the strata filter
+    // writes lowPacked_ from it (allocated on first use, at the low-resolution size).
+    ConeStrataFilterPass strataFilter_;
+    gl::Texture tracedPacked_;
+    gl::Framebuffer tracedTarget_, filteredTarget_;
     int lowWidth_ = 0, lowHeight_ = 0;
     GLuint albedoTableBuiltWith_ = 0;  // albedoProgram_ id the table was built with (hot reload)
     gl::Texture albedoTable_;

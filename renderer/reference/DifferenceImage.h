@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace lit::reference {
@@ -41,6 +42,38 @@ inline std::vector<float> relativeErrorColours(const std::vector<float>& test, c
         out[3 * p + 2] = c.b;
     }
     return out;
+}
+
+// Figures of an image against its reference (linear RGB, 3 floats per pixel, same size), on
+// luminance (Rec. 709 weights) over all pixels: what `lit-render --compare` prints.
+struct ImageComparison {
+    double testMean = 0.0;       // mean luminance of the image compared
+    double referenceMean = 0.0;  // mean luminance of the reference
+    // Root mean square of the per-pixel luminance difference, relative to the reference's mean
+    // (0.1 = 10 %); 0 when the reference is black.
+    double relativeRmse = 0.0;
+    double meanRatio() const { return referenceMean > 0.0 ? testMean / referenceMean : 0.0; }
+};
+
+inline ImageComparison compareImages(const std::vector<float>& test, const std::vector<float>& truth) {
+    const auto luminance = [](const std::vector<float>& rgb, std::size_t p) {
+        return 0.2126 * rgb[3 * p] + 0.7152 * rgb[3 * p + 1] + 0.0722 * rgb[3 * p + 2];
+    };
+    const std::size_t pixels = std::min(test.size(), truth.size()) / 3;
+    ImageComparison result;
+    if (pixels == 0) return result;
+    double squares = 0.0;
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const double t = luminance(test, p), r = luminance(truth, p);
+        result.testMean += t;
+        result.referenceMean += r;
+        squares += (t - r) * (t - r);
+    }
+    const double n = static_cast<double>(pixels);
+    result.testMean /= n;
+    result.referenceMean /= n;
+    result.relativeRmse = result.referenceMean > 0.0 ? std::sqrt(squares / n) / result.referenceMean : 0.0;
+    return result;
 }
 
 }  // namespace lit::reference

@@ -117,9 +117,19 @@ const float kFaceMinTransmittance = 1.0 / 4096.0;
 // The default mode (no cone feature on) keeps the tracer of before issue #11 (k = 1, the march
 // ends at the volume's face): with isotropic coarse voxels, k = 3 made the side cones' self-
 // occlusion by their own surface's voxels worse (Cornell ceiling at 64³ 0.044 → 0.014 W/(sr·m²)).
-#if LIT_CONE_ANISOTROPIC || LIT_CONE_FOOTPRINT
-const float kOpacityPerVoxel = 3.0;
+// With footprint-bounded cones (the accurate mode) k = 2: k = 3 was chosen while the six fixed
+// bounded cones under-read the hemisphere (pencils along their axes), and its extra opacity made up
+// for part of that; with the stratified cone sets (cone_strata.glsl) integrating the hemisphere,
+// k = 3 over-read the Cornell ceiling by 21 % at 64³; k = 2 gives ceiling 1.09 / 0.96, red-wall nook
+// 0.80 / 0.87 of the reference at 64³ / 128³, and the self-illumination, thin-wall and GL sealed-room
+// bars still hold; the benchmark's sealed room (1.6-voxel walls) leaks 2.1 % (k = 3: 1.7 %; fixed
+// set 1.0 %): docs/GI.md, "Stratified cone sets".
+#if LIT_CONE_FOOTPRINT
+const float kOpacityPerVoxel = 2.0;
 const float kPastFaceVoxels = 1.0;  // sampled voxels marched past the volume's face (below)
+#elif LIT_CONE_ANISOTROPIC
+const float kOpacityPerVoxel = 3.0;
+const float kPastFaceVoxels = 1.0;
 #else
 const float kOpacityPerVoxel = 1.0;
 const float kPastFaceVoxels = 0.0;

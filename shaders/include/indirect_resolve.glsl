@@ -31,6 +31,7 @@
 #include "gbuffer.glsl"
 #include "cone.glsl"
 #include "indirect.glsl"
+#include "cone_strata.glsl"
 
 #ifdef LIT_INDIRECT_FALLBACK
 layout(early_fragment_tests) in;  // the trace mask's depth test decides before the shader runs
@@ -164,7 +165,13 @@ void main() {
                      specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
         vec3 cones[kDiffuseConeCount];
         if (traceDiffuseHere || reuse) {
+#if LIT_CONE_FOOTPRINT
+            // The stratified set of the low-resolution texel this pixel falls in (cone_strata.glsl).
+            vec3 traced = traceDiffuseStratified(origin, basis, coneSetIndex((pixel - uJitter) / uScale),
+                                                 voxel.traceParams.w, maxDistance, cones);
+#else
             vec3 traced = traceDiffuseInFrame(origin, basis, voxel.traceParams.w, maxDistance, cones);
+#endif
             if (traceDiffuseHere) diffuse = traced;
         }
         if (traceSpecularHere)

@@ -126,6 +126,10 @@ using mat4 = glm::mat4;
 #define LIT_DIFFUSE_CONE_COUNT 6
 #define LIT_DIFFUSE_CONE_DIRECTIONS vec3(0.0, 0.0, 1.0), vec3(0.8660254, 0.0, 0.5), vec3(0.2676166, 0.8236391, 0.5), vec3(-0.7006293, 0.5090370, 0.5), vec3(-0.7006293, -0.5090370, 0.5), vec3(0.2676166, -0.8236391, 0.5)
 #define LIT_DIFFUSE_CONE_WEIGHTS 0.25, 0.15, 0.15, 0.15, 0.15, 0.15
+// Accurate mode (footprint-bounded cones): each diffuse region is cut into LIT_CONE_STRATA² cells, one
+// per cone set, the sets laid out as a LIT_CONE_STRATA × LIT_CONE_STRATA pattern over the reduced
+// trace's texels (cone_strata.glsl) and averaged by ConeStrataFilterPass (docs/GI.md).
+#define LIT_CONE_STRATA 4
 #define LIT_CONE_NORMAL_OFFSET_VOXELS 1.7320508  // cone apex: √3 voxels along the normal off the surface
 #define LIT_SPECULAR_LOBE_SHARE 0.75             // share of the GGX lobe specular samples are drawn from
 #define LIT_SPECULAR_APERTURE_MIN 0.02           // rad, narrowest specular cone

@@ -68,6 +68,21 @@ if(NOT out MATCHES "reference: 32x32, 2 spp .* Mrays/s")
   message(FATAL_ERROR "lit-render --reference printed no rays/s summary; stdout:\n${out}")
 endif()
 
+# ---- Comparing with the reference: a self-comparison is exact, a wrong reference is refused ----
+set(diff_png "${OUT_DIR}/difference.png")
+run_lit_render("${cornell}" --reference --spp 2 --size 32x32 --compare "${ref_hdr}" --difference "${diff_png}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "--compare of the reference with itself failed (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
+endif()
+# The image compared is the float render; the reference its .hdr file, whose RGBE encoding keeps
+# 8 bits of mantissa (up to ~0.8 % per channel): ratio within 1 %, RMSE below 2 %.
+if(NOT out MATCHES "compare with [^\n]*reference\\.hdr: mean luminance [0-9.e-]+ against [0-9.e-]+ \\(ratio (1\\.00|0\\.99)[0-9]\\), RMSE [01]\\.[0-9] %")
+  message(FATAL_ERROR "the same image compared with itself should give a ratio within 1 % of 1 and an RMSE below 2 %; stdout:\n${out}")
+endif()
+if(NOT EXISTS "${diff_png}")
+  message(FATAL_ERROR "--difference did not write ${diff_png}")
+endif()
+
 # ---- Bad inputs -------------------------------------------------------------------------------
 # expect_failure(NAME EXPECTED_RC STDERR_REGEX ARGS...): EXPECTED_RC is 1 (runtime) or 2 (bad
 # input: the command line, the scene, settings or path file, the output folder, the size).
@@ -303,3 +318,10 @@ run_lit_render("${SOURCE_DIR}/assets/cornell_box.gltf" --out "${OUT_DIR}/sky.png
 if(NOT rc EQUAL 0 OR NOT err MATCHES "no_such_sky\\.hdr.*gradient")
   message(FATAL_ERROR "a missing sky image was not reported (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
 endif()
+
+# --compare: the reference must be a Radiance .hdr of the render's size, checked before rendering.
+configure_file("${ref_png}" "${OUT_DIR}/png_named.hdr" COPYONLY)
+expect_failure("compare with a PNG" 2 "--compare: cannot read .*png_named\\.hdr: not a Radiance \\.hdr image"
+  "${cornell}" --size 32x32 --compare "${OUT_DIR}/png_named.hdr")
+expect_failure("compare size" 2 "reference\\.hdr is 32x32, the image will be 16x16: render both at one --size"
+  "${cornell}" --size 16x16 --compare "${ref_hdr}")

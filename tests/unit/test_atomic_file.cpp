@@ -10,6 +10,7 @@
 #include <csignal>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <fstream>
 #include <functional>
@@ -217,6 +218,31 @@ TEST(ImageIO, PngEncodesAndWritesRowsInFileOrder) {
     const std::vector<float> rgb(12, 0.5f);
     EXPECT_EQ(errorOf([&] { writeHdr(dir / "taken.hdr", 2, 2, rgb); }),
               (dir / "taken.hdr").string() + ": is a folder, not a file");
+}
+
+TEST(ImageIO, HdrReadsBackWhatWriteHdrWrote) {
+    TempDir dir;
+    // 2×3, rows bottom-up as the renderer gives them; values of different exponents (RGBE keeps
+    // an 8-bit mantissa per channel under a shared exponent: ~1 % of the largest channel).
+    const std::vector<float> rgb = {0.5f, 0.25f, 0.125f, 2.0f, 4.0f, 8.0f,  1.0f,  1.0f, 1.0f,
+                                    0.0f, 0.0f,  0.0f,   100.f, 50.f, 25.f, 0.01f, 0.02f, 0.04f};
+    const fs::path file = dir / "image.hdr";
+    writeHdr(file, 2, 3, rgb);
+    const HdrImage image = readHdr(file);
+    ASSERT_EQ(image.width, 2);
+    ASSERT_EQ(image.height, 3);
+    ASSERT_EQ(image.rgb.size(), rgb.size());
+    for (std::size_t i = 0; i < rgb.size(); i += 3) {
+        const float largest = std::max({rgb[i], rgb[i + 1], rgb[i + 2]});
+        for (std::size_t c = 0; c < 3; ++c)
+            EXPECT_NEAR(image.rgb[i + c], rgb[i + c], 0.01f * largest) << "pixel " << i / 3 << " channel " << c;
+    }
+
+    writePng(dir / "image.png", 1, 1, std::vector<std::uint8_t>{1, 2, 3, 255});
+    EXPECT_EQ(errorOf([&] { readHdr(dir / "image.png"); }),
+              "cannot read " + (dir / "image.png").string() + ": not a Radiance .hdr image (or the file cannot be opened)");
+    EXPECT_EQ(errorOf([&] { readHdr(dir / "missing.hdr"); }),
+              "cannot read " + (dir / "missing.hdr").string() + ": not a Radiance .hdr image (or the file cannot be opened)");
 }
 
 }  // namespace

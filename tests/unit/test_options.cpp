@@ -173,7 +173,7 @@ TEST(Options, StructuralMessages) {
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "-q"}), "unknown option '-q'");
     EXPECT_EQ(usageError({"--out", "x.png"}), "no scene given (lit-render SCENE.gltf --out image.png)");
     EXPECT_EQ(usageError({}), "no scene given (lit-render SCENE.gltf --out image.png)");
-    EXPECT_EQ(usageError({"x.gltf"}), "--out is required (unless --bench or --path)");
+    EXPECT_EQ(usageError({"x.gltf"}), "--out is required (unless --bench, --path or --compare)");
     EXPECT_EQ(usageError({"x.gltf", "--out"}), "missing value for --out (expects FILE.png)");
     EXPECT_EQ(usageError({"x.gltf", "--out", "--size", "4x4"}), "missing value for --out (expects FILE.png)");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--size"}), "missing value for --size (expects WxH)");
@@ -215,6 +215,25 @@ TEST(Options, ReferenceFlags) {
               "--reference and --bench do not go together (the reference prints its own rays/s)");
     EXPECT_EQ(usageError({"x.gltf", "--reference", "--path", "p.json", "--frames-out", "f"}),
               "--reference renders a still image; it does not fly --path");
+}
+
+TEST(Options, CompareFlags) {
+    const Options o = parseOptions({"x.gltf", "--compare", "ref.hdr", "--difference", "d.png", "--max-error", "0.25"});
+    EXPECT_EQ(o.compare, "ref.hdr");
+    EXPECT_EQ(o.difference, "d.png");
+    EXPECT_EQ(o.maxError, 0.25f);
+    EXPECT_TRUE(o.out.empty()) << "--compare alone needs no --out: its figures are the output";
+    EXPECT_FALSE(parseOptions({"x.gltf", "--compare", "r.HDR"}).maxError.has_value());
+    EXPECT_EQ(usageError({"x.gltf", "--compare", "ref.png"}), "--compare reads a .hdr file; got 'ref.png'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--difference", "d.png"}),
+              "--difference needs --compare REF.hdr (the image to compare against)");
+    EXPECT_EQ(usageError({"x.gltf", "--compare", "r.hdr", "--difference", "d.hdr"}), "--difference writes a .png file; got 'd.hdr'");
+    EXPECT_EQ(usageError({"x.gltf", "--compare", "r.hdr", "--max-error", "0.5"}), "--max-error needs --difference FILE.png");
+    EXPECT_EQ(usageError({"x.gltf", "--compare", "r.hdr", "--difference", "d.png", "--max-error", "0"}),
+              "--max-error expects a relative error above 0 and at most 100 (0.5 = 50 %), got '0'");
+    EXPECT_EQ(usageError({"x.gltf", "--compare", ""}), "--compare expects a file name, got ''");
+    EXPECT_EQ(usageError({"x.gltf", "--path", "p.json", "--bench-path", "--compare", "r.hdr"}),
+              "--compare compares one image; it does not apply to --path");
 }
 
 TEST(Options, PathFlags) {
@@ -319,6 +338,15 @@ TEST(Options, FastGiFlags) {
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--indirect-scale", "3"}),
               "--indirect-scale expects 1, 2 or 4, got '3'");
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--temporal", "yes"}), "--temporal expects on or off, got 'yes'");
+    EXPECT_TRUE(s.temporalConeSubsets);  // the default
+    EXPECT_FALSE(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "a.png", "--cone-subsets", "off"}),
+                                        lit::RenderSettings{})
+                     .temporalConeSubsets);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--cone-subsets", "1"}),
+              "--cone-subsets expects on or off, got '1'");
+    lit::RenderSettings noSubsets;
+    noSubsets.temporalConeSubsets = false;
+    EXPECT_EQ(lit::renderSettingsFromJson(lit::toJson(noSubsets)), noSubsets);  // saved and read back
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--bench-gi-updates", "2"}),
               "--bench-gi-updates needs --bench (the steady frames come first)");
 }

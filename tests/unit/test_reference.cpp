@@ -461,6 +461,21 @@ TEST(ReferenceDifference, FalseColourShowsSignedRelativeError) {
     EXPECT_GT(differenceRampColour(-1.0f).b, differenceRampColour(-1.0f).r);
 }
 
+TEST(ReferenceDifference, ComparisonFiguresOnLuminance) {
+    // Reference luminances 1 and 3 (grey), the image 2 and 3: means 2 and 2.5, one pixel off by 1.
+    const std::vector<float> truth = {1, 1, 1, 3, 3, 3};
+    const std::vector<float> test = {2, 2, 2, 3, 3, 3};
+    const ImageComparison figures = compareImages(test, truth);
+    EXPECT_NEAR(figures.referenceMean, 2.0, 1e-6);
+    EXPECT_NEAR(figures.testMean, 2.5, 1e-6);
+    EXPECT_NEAR(figures.meanRatio(), 1.25, 1e-6);
+    EXPECT_NEAR(figures.relativeRmse, std::sqrt(0.5) / 2.0, 1e-6);  // sqrt((1² + 0²) / 2) / 2
+    // Luminance weights: pure green counts 0.7152.
+    EXPECT_NEAR(compareImages({0, 1, 0}, {1, 1, 1}).meanRatio(), 0.7152, 1e-6);
+    EXPECT_EQ(compareImages(test, {0, 0, 0, 0, 0, 0}).relativeRmse, 0.0) << "a black reference has no relative error";
+    EXPECT_EQ(compareImages({}, {}).meanRatio(), 0.0);
+}
+
 TEST(ReferenceProgressive, AccumulatesWhileStillAndRestartsOnChange) {
     Scene scene = cornellBox();
     const CameraView camera = sceneCameraView(scene, 0, 1.0f);

@@ -51,9 +51,11 @@ std::string viewNames() {
     return names;
 }
 
-void requireExtension(const std::filesystem::path& path, const char* flag, const char* extension) {
+// `verb`: what the flag does with the file ("writes", "reads").
+void requireExtension(const std::filesystem::path& path, const char* flag, const char* extension,
+                      const char* verb = "writes") {
     if (lower(path.extension().string()) != extension)
-        throw UsageError(std::string(flag) + " writes a " + extension + " file; got '" + path.string() + "'");
+        throw UsageError(std::string(flag) + " " + verb + " a " + extension + " file; got '" + path.string() + "'");
 }
 
 }  // namespace
@@ -102,6 +104,18 @@ Options parseOptions(const std::vector<std::string>& args) {
         } else if (flag == "--hdr") {
             options.hdr = value("FILE.hdr");
             if (options.hdr.empty()) throw UsageError("--hdr expects a file name, got ''");
+        } else if (flag == "--compare") {
+            options.compare = value("REF.hdr");
+            if (options.compare.empty()) throw UsageError("--compare expects a file name, got ''");
+        } else if (flag == "--difference") {
+            options.difference = value("FILE.png");
+            if (options.difference.empty()) throw UsageError("--difference expects a file name, got ''");
+        } else if (flag == "--max-error") {
+            const std::string text = value("X");
+            const auto x = parseFloat(text);
+            if (!x || !(*x > 0.0f) || *x > 100.0f)
+                throw UsageError("--max-error expects a relative error above 0 and at most 100 (0.5 = 50 %), got '" + text + "'");
+            options.maxError = *x;
         } else if (flag == "--size") {
             const std::string text = value("WxH");
             const std::size_t x = text.find_first_of("xX");
@@ -181,6 +195,14 @@ Options parseOptions(const std::vector<std::string>& args) {
                 options.temporal = false;
             else
                 throw UsageError("--temporal expects on or off, got '" + text + "'");
+        } else if (flag == "--cone-subsets") {
+            const std::string text = value("on or off");
+            if (text == "on")
+                options.coneSubsets = true;
+            else if (text == "off")
+                options.coneSubsets = false;
+            else
+                throw UsageError("--cone-subsets expects on or off, got '" + text + "'");
         } else if (flag == "--voxels") {
             const std::string text = value("64, 128, 256 or 512");
             const auto n = parseInt(text, 64, 512);
@@ -271,6 +293,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         // A path renders many frames: its outputs and its camera are its own.
         if (!options.out.empty()) throw UsageError("--out writes one image; with --path use --frames-out DIR");
         if (!options.hdr.empty()) throw UsageError("--hdr writes one image; with --path use --frames-out DIR");
+        if (!options.compare.empty()) throw UsageError("--compare compares one image; it does not apply to --path");
         if (options.camera) throw UsageError("--path and --camera both choose the camera; give one of them");
         if (options.frames) throw UsageError("--frames does not apply to --path (each frame of the path is rendered once)");
         if (options.benchFrames > 0) throw UsageError("--bench renders a still view; use --bench-path to time the path");
@@ -291,10 +314,16 @@ Options parseOptions(const std::vector<std::string>& args) {
         if (options.spp) throw UsageError("--spp needs --reference");
         if (options.seed) throw UsageError("--seed needs --reference");
     }
-    if (options.benchFrames == 0 && !options.path && options.out.empty())
-        throw UsageError("--out is required (unless --bench or --path)");
+    if (options.benchFrames == 0 && !options.path && options.out.empty() && options.compare.empty())
+        throw UsageError("--out is required (unless --bench, --path or --compare)");
     if (!options.out.empty()) requireExtension(options.out, "--out", ".png");
     if (!options.hdr.empty()) requireExtension(options.hdr, "--hdr", ".hdr");
+    if (!options.compare.empty()) requireExtension(options.compare, "--compare", ".hdr", "reads");
+    if (!options.difference.empty()) {
+        if (options.compare.empty()) throw UsageError("--difference needs --compare REF.hdr (the image to compare against)");
+        requireExtension(options.difference, "--difference", ".png");
+    }
+    if (options.maxError && options.difference.empty()) throw UsageError("--max-error needs --difference FILE.png");
     if (!options.benchJson.empty() && options.benchFrames == 0 && !options.benchPath)
         throw UsageError("--json needs --bench or --bench-path");
     if (options.frames && options.benchFrames > 0)
@@ -329,6 +358,7 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.culling) base.frustumCulling = *options.culling;
     if (options.indirectScale) base.indirectScale = *options.indirectScale;
     if (options.temporal) base.temporalAccumulation = *options.temporal;
+    if (options.coneSubsets) base.temporalConeSubsets = *options.coneSubsets;
     return base;
 }
 
@@ -358,7 +388,9 @@ std::string shortUsage() {
            "                  [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
            "                  [--bounces N] [--anisotropic on|off] [--footprint X]\n"
            "                  [--culling on|off] [--indirect-scale 1|2|4] [--temporal on|off]\n"
+           "                  [--cone-subsets on|off]\n"
            "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
+           "                  [--compare REF.hdr [--difference FILE.png [--max-error X]]]\n"
            "       lit-render SCENE.gltf --path FILE.json|ANIMATION [--fps N] [--frames-out DIR] [--bench-path]\n"
            "       lit-render SCENE.gltf --reference --out image.png [--spp N] [--bounces N|all] [--seed S] [...]\n";
 }
@@ -370,8 +402,14 @@ std::string usageText() {
            "\n"
            "Renders a glTF scene headless (EGL, no window) with voxel cone traced global illumination.\n"
            "\n"
-           "  --out FILE.png       tone-mapped sRGB image (required unless --bench or --path)\n"
+           "  --out FILE.png       tone-mapped sRGB image (required unless --bench, --path or --compare)\n"
            "  --hdr FILE.hdr       also write the linear HDR image of the chosen view (Radiance .hdr)\n"
+           "  --compare REF.hdr    compare the linear image of the chosen view with REF.hdr (same size; e.g. a\n"
+           "                       --reference render's --hdr): print both mean luminances, their ratio and\n"
+           "                       the RMSE of luminance relative to the reference's mean\n"
+           "  --difference FILE.png  with --compare: write the editor's Difference view, the signed relative\n"
+           "                       error per pixel (blue too dark, white right, red too bright)\n"
+           "  --max-error X        relative error at the Difference ramp's ends (default " + formatNumber(kDefaultMaxError) + " = ±50 %)\n"
            "  --size WxH           output size in pixels, 1.." + std::to_string(kMaxImageSide) + " each (default: the settings', " + size + ")\n"
            "  --camera NAME|INDEX  scene camera by name or index (default: the scene's first camera, else a\n"
            "                       camera framing the whole scene)\n"
@@ -407,6 +445,9 @@ std::string usageText() {
            std::string(defaults.temporalAccumulation ? "on" : "off") + "); a still then renders\n"
            "                       temporalMaxFrames (" + std::to_string(defaults.temporalMaxFrames) +
            ") frames unless --frames says otherwise, so it converges\n"
+           "  --cone-subsets on|off with --temporal on: each traced texel marches the normal cone and 2 of\n"
+           "                       the 5 side cones per frame, a different pair each frame (default " +
+           std::string(defaults.temporalConeSubsets ? "on" : "off") + ")\n"
            "  --bench FRAMES       render FRAMES frames and print per-pass GPU times and the frame rate\n"
            "  --bench-gi-updates N after the frames, time N interleaved rounds of a light edit (re-inject +\n"
            "                       mipmaps) against a re-voxelization (voxelize + inject + mipmaps)\n"

@@ -32,12 +32,16 @@ inline constexpr int kDefaultReferenceSpp = 64;   // samples per pixel of --refe
 inline constexpr int kMaxReferenceSpp = 1 << 20;  // a guard against typos
 inline constexpr int kMaxReferenceBounces = 64;   // --bounces N; "all" is unbounded (Russian roulette)
 inline constexpr int kAllReferenceBounces = -1;   // --bounces all
+inline constexpr float kDefaultMaxError = 0.5f;   // --max-error: ±50 % at the Difference ramp's ends (the editor's default)
 
 struct Options {
     bool help = false;                 // --help: print usage, ignore the rest
     std::filesystem::path scene;       // SCENE.gltf or .glb
     std::filesystem::path out;         // PNG (tone-mapped, sRGB); may be empty with --bench
     std::filesystem::path hdr;         // optional Radiance .hdr of the linear image
+    std::filesystem::path compare;     // --compare REF.hdr: print the image's figures against a reference
+    std::filesystem::path difference;  // --difference FILE.png: the Difference view's false colour (needs --compare)
+    std::optional<float> maxError;     // --max-error X: relative error at the ramp's ends (default kDefaultMaxError)
     std::optional<int> width, height;  // pixels; unset = the settings' size
     std::optional<std::string> camera; // camera name or index as typed; unset = the scene's first
     std::optional<float> exposure;     // --exposure: linear multiplier (stored as log2 stops)
@@ -55,6 +59,7 @@ struct Options {
     std::optional<bool> culling;       // --culling on|off: frustum culling of the G-buffer and shadow views
     std::optional<int> indirectScale;  // --indirect-scale 1|2|4
     std::optional<bool> temporal;      // --temporal on|off
+    std::optional<bool> coneSubsets;   // --cone-subsets on|off
     std::optional<int> frames;         // frames rendered before the image is read (GI settles)
     int benchFrames = 0;               // 0 = no benchmark
     std::filesystem::path benchJson;   // --json: benchmark results as JSON

@@ -22,6 +22,7 @@
 #include "scene/SceneBuilder.h"
 #include "scene/Scene.h"
 #include "scene/Sky.h"
+#include "reference/DifferenceImage.h"
 #include "reference/PathTracer.h"
 #include "reference/ReferenceScene.h"
 
@@ -590,6 +591,34 @@ std::atomic<bool>& interruptRequested() {
 }
 extern "C" void onInterrupt(int) { interruptRequested().store(true); }
 
+// --compare REF.hdr [--difference FILE.png]: the image's figures against a reference image of the
+// same size (typically `--reference --hdr`), and the editor's Difference view as a PNG.
+void compareWithReference(const Options& options, int width, int height, const std::vector<float>& rgb) {
+    if (options.compare.empty()) return;
+    const lit::HdrImage truth = lit::readHdr(options.compare);
+    if (truth.width != width || truth.height != height)
+        throw RunError(options.compare.string() + " is " + std::to_string(truth.width) + "x" + std::to_string(truth.height) +
+                       ", the image is " + std::to_string(width) + "x" + std::to_string(height) +
+                       ": render both at one --size");
+    const lit::reference::ImageComparison figures = lit::reference::compareImages(rgb, truth.rgb);
+    std::printf("compare with %s: mean luminance %.5g against %.5g (ratio %.3f), RMSE %.1f %% of the reference's mean\n",
+                options.compare.string().c_str(), figures.testMean, figures.referenceMean, figures.meanRatio(),
+                100.0 * figures.relativeRmse);
+    if (options.difference.empty()) return;
+    const float maxError = options.maxError.value_or(lit::cli::kDefaultMaxError);
+    const std::vector<float> colours = lit::reference::relativeErrorColours(rgb, truth.rgb, maxError);
+    std::vector<std::uint8_t> rgba(colours.size() / 3 * 4, 255);
+    for (std::size_t p = 0; p < colours.size() / 3; ++p)
+        for (std::size_t c = 0; c < 3; ++c) {
+            // The ramp is display colour: encode it as sRGB, as the editor's blit does.
+            const float v = std::clamp(colours[3 * p + c], 0.0f, 1.0f);
+            const float encoded = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+            rgba[4 * p + c] = static_cast<std::uint8_t>(std::lround(encoded * 255.0f));
+        }
+    lit::writePng(options.difference, width, height, rgba);
+    std::printf("wrote %s (relative error, ramp ends at ±%.0f %%)\n", options.difference.string().c_str(), 100.0 * maxError);
+}
+
 // --reference: path-trace the still on the CPU and write the same images as the rasterizer.
 int runReference(const Options& options, const lit::Scene& scene, int cameraIndex, const lit::RenderSettings& settings,
                  lit::Log& log) {
@@ -672,6 +701,7 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
         written += (written.empty() ? "" : " and ") + options.hdr.string();
     }
     if (!written.empty()) std::printf("wrote %s\n", written.c_str());
+    compareWithReference(options, settings.width, settings.height, rgb);
     if (interrupted) {
         std::fprintf(stderr, "lit-render: interrupted after %d of %d samples per pixel; the image so far was written\n",
                      tracer.samplesDone(), spp);
@@ -734,7 +764,21 @@ int run(const Options& options) {
         checkSettingsFile(options.settings, text, settings, log);
     }
     settings = lit::cli::applyOptions(options, settings);
-    for (const fs::path* file : {&options.out, &options.hdr, &options.benchJson})
+    // The reference is read now, before a render that may take minutes, so a wrong name or size
+    // fails at once; it is read again (cheaply) when the image is there.
+    if (!options.compare.empty()) {
+        lit::HdrImage truth;
+        try {
+            truth = lit::readHdr(options.compare);
+        } catch (const std::exception& e) {
+            throw UsageError(std::string("--compare: ") + e.what());
+        }
+        if (truth.width != settings.width || truth.height != settings.height)
+            throw UsageError(options.compare.string() + " is " + std::to_string(truth.width) + "x" +
+                           std::to_string(truth.height) + ", the image will be " + std::to_string(settings.width) + "x" +
+                           std::to_string(settings.height) + ": render both at one --size");
+    }
+    for (const fs::path* file : {&options.out, &options.hdr, &options.benchJson, &options.difference})
         if (!file->empty()) checkWritableFolder(*file, "the output");
     if (!options.framesOut.empty()) checkWritableFolder(options.framesOut / "frame_00000.png", "the frames");
 
@@ -823,10 +867,13 @@ int run(const Options& options) {
         lit::writePng(options.out, settings.width, settings.height, rgba);
         written = options.out.string();
     }
-    if (!options.hdr.empty()) {
+    if (!options.hdr.empty() || !options.compare.empty()) {
         const std::vector<float> rgb = renderer.readHdrRgb();
-        lit::writeHdr(options.hdr, settings.width, settings.height, rgb);
-        written += (written.empty() ? "" : " and ") + options.hdr.string();
+        if (!options.hdr.empty()) {
+            lit::writeHdr(options.hdr, settings.width, settings.height, rgb);
+            written += (written.empty() ? "" : " and ") + options.hdr.string();
+        }
+        compareWithReference(options, settings.width, settings.height, rgb);
     }
     if (!written.empty())
         std::printf("wrote %s (%d\u00d7%d, %.2f s)\n", written.c_str(), settings.width, settings.height, secondsSince(renderStart));
