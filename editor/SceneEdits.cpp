@@ -351,6 +351,7 @@ std::string duplicateSelection(Document& doc) {
             node.name = uniqueNodeName(scene, node.name.empty() ? "node" : node.name);
             node.parent = parent;
             node.children.clear();
+            node.fileIndex = -1;  // a new node: saved after the file's (scene/Scene.h)
             if (node.light >= 0 && node.light < static_cast<int>(scene.lights.size())) {
                 Light light = scene.lights[static_cast<std::size_t>(node.light)];
                 scene.lights.push_back(light);

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 namespace lit::gltfkeep {
@@ -97,6 +99,38 @@ inline void restore(const KeptGltf& kept, tinygltf::Value& extras, tinygltf::Ext
         if (j.is_object())
             for (auto it = j.begin(); it != j.end(); ++it) extensions.emplace(it.key(), toValue(it.value()));
     }
+}
+
+// A fingerprint of a primitive's drawn data (vertices and indices, FNV-1a over 8-byte words):
+// the loader stores it, and a save compares it to tell an unedited primitive, whose accessors get
+// the file's names, extras and extensions back, from an edited one.
+inline std::uint64_t drawnDataHash(const Primitive& primitive) {
+    std::uint64_t hash = 14695981039346656037ull;
+    const auto mix = [&](const void* data, std::size_t bytes) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        std::size_t i = 0;
+        for (; i + 8 <= bytes; i += 8) {
+            std::uint64_t word;
+            std::memcpy(&word, p + i, 8);
+            hash = (hash ^ word) * 1099511628211ull;
+        }
+        for (; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
+        hash = (hash ^ bytes) * 1099511628211ull;  // the length, so moved bytes differ
+    };
+    mix(primitive.vertices.data(), primitive.vertices.size() * sizeof(Vertex));
+    mix(primitive.indices.data(), primitive.indices.size() * sizeof(std::uint32_t));
+    return hash;
+}
+
+// Extras and extensions of a JSON object the parser does not read (sparse accessor parts).
+inline KeptGltf keepFromJson(const nlohmann::json& object) {
+    KeptGltf out;
+    if (!object.is_object()) return out;
+    if (const auto extras = object.find("extras"); extras != object.end()) out.extras = extras->dump();
+    if (const auto extensions = object.find("extensions"); extensions != object.end() && extensions->is_object() &&
+                                                             !extensions->empty())
+        out.extensions = extensions->dump();
+    return out;
 }
 
 }  // namespace lit::gltfkeep

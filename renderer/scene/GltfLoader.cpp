@@ -58,6 +58,7 @@
 #include <sstream>
 #include <string_view>
 #include <thread>
+#include <tuple>
 
 namespace lit {
 
@@ -198,9 +199,11 @@ bool keepEncodedImage(tinygltf::Image* image, const int imageIndex, std::string*
 
 class Loader {
 public:
+    // `sparseKept`: by accessor index, the extras and extensions of its `sparse`, `sparse.indices`
+    // and `sparse.values` objects (readWhatTinygltfSkips).
     Loader(const fs::path& path, const tinygltf::Model& model, Log& log, const GltfLoadOptions& options,
-           const ImageDeduplicator& images)
-        : path_(path), model_(model), log_(log), options_(options), images_(images) {}
+           const ImageDeduplicator& images, const std::map<int, std::array<KeptGltf, 3>>& sparseKept)
+        : path_(path), model_(model), log_(log), options_(options), images_(images), sparseKept_(sparseKept) {}
 
     Scene run();
 
@@ -261,6 +264,7 @@ private:
     Log& log_;
     const GltfLoadOptions& options_;
     const ImageDeduplicator& images_;  // which images are byte-identical to an earlier one
+    const std::map<int, std::array<KeptGltf, 3>>& sparseKept_;
     mutable std::vector<int> nodeRemap_;  // file node → node reference (scene/Scene.h: keptNodeRef), set by loadNodes
 };
 
@@ -590,6 +594,7 @@ void Loader::loadNodes(Scene& scene) const {
         const std::string what = describeNode(model_, i);
         Node node;
         node.name = in.name;
+        node.fileIndex = static_cast<int>(i);
         // A node's parent and children are in its own list (a shown node's parent is shown).
         node.parent = parent[i] >= 0 ? remap[static_cast<std::size_t>(parent[i])] : -1;
         for (int child : in.children) node.children.push_back(remap[static_cast<std::size_t>(child)]);
@@ -636,6 +641,11 @@ void Loader::loadNodes(Scene& scene) const {
                 node.scale = {glm::length(glm::vec3(local[0])), glm::length(glm::vec3(local[1])),
                               glm::length(glm::vec3(local[2]))};
             }
+            // Saved back as this matrix while the transform stays as decomposed here.
+            node.fileMatrix = in.matrix;
+            node.matrixTranslation = node.translation;
+            node.matrixRotation = node.rotation;
+            node.matrixScale = node.scale;
         } else {
             if (!in.translation.empty()) {
                 if (in.translation.size() != 3)
@@ -674,6 +684,10 @@ void Loader::loadNodes(Scene& scene) const {
     for (int root : roots) scene.roots.push_back(remap[static_cast<std::size_t>(root)]);
     nodeRemap_ = reference;
 }
+
+// How far from 1 a tangent's length may be and still count as unit (float32 rounding of its
+// components is a few 1e-8; exporters write normalized float32 tangents).
+constexpr float kUnitTangentTolerance = 1e-6f;
 
 void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& meshName, std::size_t primitiveIndex,
                            Primitive& out) const {
@@ -726,7 +740,10 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
                 haveTangents = false;  // unusable data: recompute the whole primitive below
                 break;
             }
-            out.vertices[i].tangent = glm::vec4(t / len, tangents.component(i, 3) < 0.0f ? -1.0f : 1.0f);
+            // A tangent already unit within float rounding is kept as the file wrote it, so a
+            // save writes the same numbers.
+            out.vertices[i].tangent = glm::vec4(std::abs(len - 1.0f) <= kUnitTangentTolerance ? t : t / len,
+                                                tangents.component(i, 3) < 0.0f ? -1.0f : 1.0f);
         }
         if (!haveTangents) warn(where + " has zero or non-finite TANGENTs; they are recomputed");
     }
@@ -802,6 +819,34 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
     if (!haveTangents) computeTangents(out);
     out.fileHasTangents = haveTangents;
     out.kept = gltfkeep::keep(in.extras, in.extensions);
+    // How the file stored the drawn data and what its accessors held besides the values, for a
+    // save (scene/Scene.h: Primitive::fileAccessors).
+    {
+        std::vector<int> views;
+        bool separate = true;
+        const auto keepInfo = [&](const char* name, int index) {
+            if (index < 0) return;
+            const int view = model_.accessors[static_cast<std::size_t>(index)].bufferView;
+            separate = separate && std::find(views.begin(), views.end(), view) == views.end();
+            views.push_back(view);
+            out.fileAccessors[name] = accessorInfo(index);
+        };
+        keepInfo("POSITION", positionIndex);
+        keepInfo("NORMAL", normalIndex);
+        keepInfo("TEXCOORD_0", uvIndex);
+        keepInfo("TANGENT", haveTangents ? tangentIndex : -1);
+        out.fileSeparateViews = separate;
+        if (in.indices >= 0) {
+            out.fileIndexType = model_.accessors[static_cast<std::size_t>(in.indices)].componentType;
+            out.fileAccessors["indices"] = accessorInfo(in.indices);
+        } else {
+            out.fileIndexType = 0;
+        }
+        // Only a primitive with names, extras or extensions to give back pays for the hash.
+        const bool named = std::any_of(out.fileAccessors.begin(), out.fileAccessors.end(),
+                                       [](const auto& entry) { return entry.second.hasNameOrExtras(); });
+        if (named) out.fileDataHash = gltfkeep::drawnDataHash(out);
+    }
     for (const Vertex& v : out.vertices)
         if (std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z))
             out.bounds.extend(v.position);  // the non-finite ones belong to no triangle (above)
@@ -1265,7 +1310,11 @@ KeptObject Loader::keptView(int index) const {
 KeptAccessorInfo Loader::accessorInfo(int index) const {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) return {};
     const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
-    return KeptAccessorInfo{a.name, gltfkeep::keep(a.extras, a.extensions), keptView(a.bufferView)};
+    const std::size_t stride = a.bufferView >= 0 && static_cast<std::size_t>(a.bufferView) < model_.bufferViews.size()
+                                   ? model_.bufferViews[static_cast<std::size_t>(a.bufferView)].byteStride
+                                   : 0;
+    return KeptAccessorInfo{a.name, gltfkeep::keep(a.extras, a.extensions), keptView(a.bufferView), a.minValues, a.maxValues,
+                            index, stride};
 }
 
 KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optional<std::size_t> expectedCount) const {
@@ -1337,6 +1386,9 @@ KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optio
         sparse.indexComponentType = a.sparse.indices.componentType;
         sparse.indicesView = keptView(a.sparse.indices.bufferView);
         sparse.valuesView = keptView(a.sparse.values.bufferView);
+        if (const auto found = sparseKept_.find(index); found != sparseKept_.end())
+            std::tie(sparse.sparseKept, sparse.indicesKept, sparse.valuesKept) =
+                std::tie(found->second[0], found->second[1], found->second[2]);
         sparse.hasBase = base.first != nullptr;
         sparse.indices.reserve(count);
         for (std::size_t i = 0; i < count; ++i) {
@@ -1473,6 +1525,10 @@ void Loader::loadAnimations(Scene& scene) const {
                 sampler.kept = gltfkeep::keep(s.extras, s.extensions);
                 sampler.inputInfo = accessorInfo(s.input);
                 sampler.outputInfo = accessorInfo(s.output);
+                sampler.fileInput = s.input;
+                sampler.fileOutput = s.output;
+                sampler.outputComponentType = output.componentType;
+                sampler.outputNormalized = output.normalized;
                 for (std::size_t k = 0; k < input.count; ++k) sampler.input.push_back(input.component(k, 0));
                 for (std::size_t k = 0; k < output.count; ++k)
                     for (int c = 0; c < output.components; ++c) sampler.output.push_back(output.component(k, c));
@@ -1563,11 +1619,30 @@ std::vector<std::string> lines(const std::string& text) {
     return out;
 }
 
-// tinygltf 2.7 reads an animation sampler's "extensions" from the animation object instead of
-// the sampler: read them from the JSON again (only files with animations pay for the parse).
-void readAnimationSamplerExtensions(tinygltf::Model& model, std::string_view text) {
-    if (model.animations.empty()) return;
+// What tinygltf 2.7 does not read, from the file's JSON (only files with animations or sparse
+// accessors pay for the second parse): an animation sampler's "extensions" (tinygltf reads them
+// from the animation object instead of the sampler, fixed in the model) and the extras and
+// extensions of sparse accessors' parts (returned by accessor index).
+std::map<int, std::array<KeptGltf, 3>> readWhatTinygltfSkips(tinygltf::Model& model, std::string_view text) {
+    std::map<int, std::array<KeptGltf, 3>> sparseKept;
+    const bool sparse = std::any_of(model.accessors.begin(), model.accessors.end(),
+                                    [](const tinygltf::Accessor& a) { return a.sparse.isSparse; });
+    if (model.animations.empty() && !sparse) return sparseKept;
     const nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+    if (sparse && doc.is_object() && doc.contains("accessors") && doc["accessors"].is_array()) {
+        const nlohmann::json& accessors = doc["accessors"];
+        for (std::size_t i = 0; i < accessors.size() && i < model.accessors.size(); ++i) {
+            if (!model.accessors[i].sparse.isSparse || !accessors[i].is_object()) continue;
+            const auto found = accessors[i].find("sparse");
+            if (found == accessors[i].end() || !found->is_object()) continue;
+            const auto part = [&](const char* key) {
+                const auto p = found->find(key);
+                return p == found->end() ? KeptGltf{} : gltfkeep::keepFromJson(*p);
+            };
+            std::array<KeptGltf, 3> kept{gltfkeep::keepFromJson(*found), part("indices"), part("values")};
+            if (!(kept == std::array<KeptGltf, 3>{})) sparseKept[static_cast<int>(i)] = std::move(kept);
+        }
+    }
     const nlohmann::json* animations = doc.is_object() && doc.contains("animations") ? &doc["animations"] : nullptr;
     for (std::size_t a = 0; a < model.animations.size(); ++a) {
         const nlohmann::json* samplers = animations && animations->is_array() && a < animations->size() &&
@@ -1583,6 +1658,7 @@ void readAnimationSamplerExtensions(tinygltf::Model& model, std::string_view tex
             for (auto it = found->begin(); it != found->end(); ++it) extensions[it.key()] = gltfkeep::toValue(it.value());
         }
     }
+    return sparseKept;
 }
 
 }  // namespace
@@ -1628,11 +1704,11 @@ Scene loadGltf(const std::filesystem::path& path, Log& log, const GltfLoadOption
         throw SceneLoadError(message);
     }
     for (std::size_t i = 0; i < model.images.size(); ++i) model.images[i].image = imageContext.images.take(static_cast<int>(i));
-    readAnimationSamplerExtensions(model, guarded.json);
+    const std::map<int, std::array<KeptGltf, 3>> sparseKept = readWhatTinygltfSkips(model, guarded.json);
     checkMemoryBudget(path, model, imageContext.images, options.limits);
 
     if (options.progress) options.progress({"file", 1, 1});
-    Scene scene = Loader(path, model, log, options, imageContext.images).run();
+    Scene scene = Loader(path, model, log, options, imageContext.images, sparseKept).run();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     // The one summary line of a load, for every front end: "loaded Sponza.gltf: 1 mesh, 262k
     // triangles, 69 textures, 297 MB in 3912 ms".

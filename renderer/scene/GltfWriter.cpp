@@ -2,15 +2,22 @@
 //
 // Decisions worth knowing:
 // - All geometry and embedded images go into one buffer: "<stem>.bin" beside a .gltf, the BIN
-//   chunk of a .glb. A primitive's vertices are one interleaved buffer view (lit::Vertex as it
-//   is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes); indices are UNSIGNED_INT.
-// - The nodes reachable from Scene::roots are written first, in index order, then
-//   Scene::keptNodes (the file's nodes outside the shown scene), in theirs: a file whose shown
-//   nodes came first keeps its node indices. Primitives without triangles are left out (the
-//   loader skips them), and so are meshes left with none.
+//   chunk of a .glb. A primitive's vertices are laid out as the file had them (scene/Scene.h:
+//   Primitive::fileSeparateViews): one tightly packed view per attribute, or one interleaved
+//   view (lit::Vertex as it is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes);
+//   indices in the file's component type while they fit, else UNSIGNED_INT.
+// - Nodes are written in the file's order (Node::fileIndex), nodes Lit made after them: an
+//   unedited file keeps its node indices. A node's `matrix` is written back while its transform
+//   is unedited and no written animation moves it. Primitives without triangles are left out
+//   (the loader skips them), and so are meshes left with none.
+// - A primitive's accessors are written in the file's order, and an accessor the file shared
+//   (KeptAccessorInfo::file) is written once while the values agree, so an unedited file keeps
+//   its accessor indices too; min/max the file had are recomputed from the written values
+//   (the file's exact numbers where their floats agree).
 // - Names, extras and extensions of the file's accessors, buffer views and buffers go on the
 //   accessor or view that holds the same data again (kept attributes, sparse data, embedded
-//   images, animation data); the one buffer gets those of all the file's buffers.
+//   images, animation data, drawn geometry while unedited); the one buffer gets those of all the
+//   file's buffers.
 // - asset.generator is "Lit": glTF means the tool that wrote the file, and importers use it to
 //   work around that tool's quirks. The file's own generator goes to the asset's extras as
 //   "litSourceGenerator" (a file Lit wrote keeps the one it already has there).
@@ -22,6 +29,8 @@
 // - Every glTF scene of the source is written, in its order (Scene::otherScenes around the
 //   shown one, which keeps its index as `scene`).
 // - Kept accessors that were sparse are written sparse (KeptAccessor::Sparse).
+// - Animation outputs are written in the file's component type (normalized integer rotations
+//   and weights); key times shared by samplers are written once.
 // - What the loader kept without drawing it (scene/Scene.h: KeptAccessor and friends) is written
 //   back in its own component types: extra vertex attributes and morph targets (one buffer view
 //   each, strides padded to 4 bytes), primitives of other modes, skins (joints remapped like the
@@ -53,6 +62,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -111,6 +121,8 @@ public:
 
     tinygltf::Model build();
     std::vector<std::pair<std::string, std::string>> takeJsonPatches() { return std::move(jsonPatches_); }
+    // The written indices of Scene::keptNodes (valid after build()).
+    const std::vector<int>& keptNodeIndices() const { return keptNodeIndex_; }
 
 private:
     [[noreturn]] void fail(const std::string& problem) const { throw SceneSaveError(file_.string() + ": " + problem); }
@@ -132,12 +144,17 @@ private:
     // dropped: the geometry was rebuilt). False when one was dropped.
     bool addKeptAttributes(const KeptAttributes& kept, std::size_t vertexCount, std::map<std::string, int>& attributes);
     void addTargets(const std::vector<KeptAttributes>& targets, std::size_t vertexCount, tinygltf::Primitive& primitive);
-    void addSkins();
+    // The skins (in order) up to the first whose inverse bind matrices came after the file's
+    // accessor `beforeFileAccessor`, so they are written in the file's accessor order.
+    void addSkins(int beforeFileAccessor);
+    void orderNodes();
     // The written index of a node reference (scene/Scene.h: keptNodeRef), -1 when not written.
     int writtenNode(int reference) const;
     // Names, extras and extensions of the file's objects Lit lays out itself (scene/Scene.h).
     void keepView(int view, const KeptObject& kept);
     void keepAccessor(int accessor, const KeptAccessorInfo& info);
+    std::pair<std::vector<double>, std::vector<double>> minMaxOf(int accessor) const;
+    void keepMinMax(int accessor, const KeptAccessorInfo& info);
     template <class Object>
     void keepNameAndExtras(Object& out, const char* array, int index, const std::string& name, const KeptGltf& kept);
     void keepBuffers();
@@ -147,10 +164,15 @@ private:
     void addTextures();
     void addMaterials();
     void addMeshes();
+    tinygltf::Primitive addPrimitive(const Primitive& primitive);
+    void setPositionBounds(int accessor, const Primitive& primitive);
+    int sharedAccessor(int file, int componentType, int type, bool normalized, const unsigned char* bytes,
+                       std::size_t count) const;
     void addLights();
     void addCameras();
     void addNodes();
     void addAnimations();
+    int addAnimationOutput(const Animation::Sampler& sampler, int type);
     void useExtension(const std::string& name);
     // Writes what the loader kept back into an object, declaring the extensions it brings.
     void restore(const KeptGltf& kept, tinygltf::Value& extras, tinygltf::ExtensionMap& extensions);
@@ -165,10 +187,16 @@ private:
     std::vector<int> nodeIndex_;  // scene node → glTF node, -1 when not written
     std::vector<int> keptNodeIndex_;  // Scene::keptNodes → glTF node
     std::vector<int> skinIndex_;  // scene skin → glTF skin, -1 when not written
+    std::size_t nextSkin_ = 0;    // the next skin addSkins looks at
+    std::vector<std::pair<const Node*, bool>> writtenNodes_;  // in written order; true: a kept node
     std::vector<int> imageIndex_;  // scene image → glTF image, -1 when not written (generated)
     // JSON the tinygltf serialiser cannot write (a sampler's name and extensions): JSON pointer →
     // value text, set into the document by writeGltfModel.
     std::vector<std::pair<std::string, std::string>> jsonPatches_;
+    // Animation accessors written so far, by the file's accessor index (Animation::Sampler).
+    std::map<int, std::pair<int, const std::vector<float>*>> writtenInputs_;
+    std::map<int, std::pair<int, const Animation::Sampler*>> writtenOutputs_;
+    std::map<int, int> writtenByFile_;  // the file's accessor → its written copy (sharedAccessor)
     bool wroteKeptVertexData_ = false;  // kept attributes or morph targets (KHR_mesh_quantization)
 };
 
@@ -201,9 +229,111 @@ void ModelBuilder::keepView(int view, const KeptObject& kept) {
 
 void ModelBuilder::keepAccessor(int accessor, const KeptAccessorInfo& info) {
     if (accessor < 0) return;
+    keepMinMax(accessor, info);
     tinygltf::Accessor& out = model_.accessors[static_cast<std::size_t>(accessor)];
     keepNameAndExtras(out, "accessors", accessor, info.name, info.kept);
     keepView(out.bufferView, info.view);
+}
+
+// Component c of an element, as the number glTF's min/max give (not normalized).
+double componentValue(const unsigned char* element, int componentType, int c) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return static_cast<std::int8_t>(element[c]);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return element[c];
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            std::int16_t v;
+            std::memcpy(&v, element + 2 * c, 2);
+            return v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            std::uint16_t v;
+            std::memcpy(&v, element + 2 * c, 2);
+            return v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            std::uint32_t v;
+            std::memcpy(&v, element + 4 * c, 4);
+            return v;
+        }
+        default: {
+            float v;
+            std::memcpy(&v, element + 4 * c, 4);
+            return v;
+        }
+    }
+}
+
+std::size_t componentBytes(int componentType) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
+        default:
+            return 4;
+    }
+}
+
+// Min and max of a written accessor's elements (its buffer view, or zeros, with its sparse values
+// put in), per component.
+std::pair<std::vector<double>, std::vector<double>> ModelBuilder::minMaxOf(int index) const {
+    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+    const int components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
+    if (components <= 0 || a.count == 0) return {};
+    const std::size_t elementSize = componentBytes(a.componentType) * static_cast<std::size_t>(components);
+    const std::vector<unsigned char> zeros(elementSize, 0);
+    const auto viewBytes = [&](int view) {
+        const tinygltf::BufferView& v = model_.bufferViews[static_cast<std::size_t>(view)];
+        return model_.buffers[static_cast<std::size_t>(v.buffer)].data.data() + v.byteOffset;
+    };
+    std::vector<const unsigned char*> elements(a.count, zeros.data());
+    if (a.bufferView >= 0) {
+        const tinygltf::BufferView& v = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+        const std::size_t stride = v.byteStride ? v.byteStride : elementSize;
+        const unsigned char* first = viewBytes(a.bufferView) + a.byteOffset;
+        for (std::size_t i = 0; i < a.count; ++i) elements[i] = first + i * stride;
+    }
+    if (a.sparse.isSparse) {
+        const unsigned char* indices = viewBytes(a.sparse.indices.bufferView) + a.sparse.indices.byteOffset;
+        const unsigned char* values = viewBytes(a.sparse.values.bufferView) + a.sparse.values.byteOffset;
+        for (std::size_t s = 0; s < static_cast<std::size_t>(a.sparse.count); ++s) {
+            const auto target = static_cast<std::size_t>(
+                componentValue(indices, a.sparse.indices.componentType, static_cast<int>(s)));
+            elements[target] = values + s * elementSize;
+        }
+    }
+    std::vector<double> lo(static_cast<std::size_t>(components), std::numeric_limits<double>::max());
+    std::vector<double> hi(static_cast<std::size_t>(components), std::numeric_limits<double>::lowest());
+    for (const unsigned char* element : elements)
+        for (int c = 0; c < components; ++c) {
+            const double v = componentValue(element, a.componentType, c);
+            lo[static_cast<std::size_t>(c)] = std::min(lo[static_cast<std::size_t>(c)], v);
+            hi[static_cast<std::size_t>(c)] = std::max(hi[static_cast<std::size_t>(c)], v);
+        }
+    return {lo, hi};
+}
+
+// The file had min/max on this accessor: written again, recomputed from the written values, each
+// number the file's own where it still holds (its float equals the recomputed one), so an
+// unedited accessor keeps the file's exact JSON numbers.
+void ModelBuilder::keepMinMax(int accessor, const KeptAccessorInfo& info) {
+    if (info.min.empty() && info.max.empty()) return;
+    auto [lo, hi] = minMaxOf(accessor);
+    if (lo.empty()) return;
+    const auto fileNumbers = [](std::vector<double>& computed, const std::vector<double>& file) {
+        if (file.size() != computed.size()) return;
+        for (std::size_t c = 0; c < computed.size(); ++c)
+            if (static_cast<float>(file[c]) == static_cast<float>(computed[c])) computed[c] = file[c];
+    };
+    fileNumbers(lo, info.min);
+    fileNumbers(hi, info.max);
+    tinygltf::Accessor& out = model_.accessors[static_cast<std::size_t>(accessor)];
+    out.minValues = std::move(lo);
+    out.maxValues = std::move(hi);
 }
 
 // The one buffer gets the first buffer's name (the first that has one) and every buffer's extras
@@ -427,6 +557,10 @@ int ModelBuilder::addKeptAccessor(const KeptAccessor& kept, int target) {
         fail("kept accessor data of type '" + kept.type + "' is inconsistent (" + std::to_string(kept.bytes.size()) +
              " bytes for " + std::to_string(kept.count) + " elements)");
     const std::size_t elementSize = kept.bytes.size() / kept.count;
+    if (!kept.sparse) {
+        const int shared = sharedAccessor(kept.info.file, kept.componentType, type, kept.normalized, kept.bytes.data(), kept.count);
+        if (shared >= 0) return shared;
+    }
     const KeptAccessor::Sparse* sparse = kept.sparse ? &*kept.sparse : nullptr;
     const int indexSize = sparse ? (sparse->indexComponentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
                                     : sparse->indexComponentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
@@ -454,7 +588,9 @@ int ModelBuilder::addKeptAccessor(const KeptAccessor& kept, int target) {
     if (sparse && !sparse->hasBase) {
         view = -1;  // no buffer view: zeros (glTF §3.6.2.3)
     } else if (stride == elementSize) {
-        view = addBufferView(dense->data(), dense->size(), target, target == kArrayBuffer ? stride : 0);
+        // byteStride only where the file's view had it (it is optional for a view of one accessor).
+        view = addBufferView(dense->data(), dense->size(), target,
+                             target == kArrayBuffer && kept.info.viewStride == stride ? stride : 0);
     } else {  // e.g. a normalized UNSIGNED_BYTE VEC3 colour: 3 bytes every 4
         std::vector<std::uint8_t> padded(kept.count * stride, 0);
         for (std::size_t i = 0; i < kept.count; ++i)
@@ -485,8 +621,22 @@ int ModelBuilder::addKeptAccessor(const KeptAccessor& kept, int target) {
         a.sparse.values.byteOffset = 0;
         keepView(indexView, sparse->indicesView);
         keepView(valueView, sparse->valuesView);
+        // tinygltf 2.7 writes no extras or extensions of these parts: set them in the JSON.
+        const std::string at = "/accessors/" + std::to_string(accessor) + "/sparse";
+        const auto keepPart = [&](const std::string& where, const KeptGltf& kept) {
+            if (!kept.extras.empty()) jsonPatches_.emplace_back(where + "/extras", kept.extras);
+            if (kept.extensions.empty()) return;
+            jsonPatches_.emplace_back(where + "/extensions", kept.extensions);
+            const nlohmann::json e = nlohmann::json::parse(kept.extensions, nullptr, false);
+            if (e.is_object())
+                for (auto it = e.begin(); it != e.end(); ++it) useExtension(it.key());
+        };
+        keepPart(at, sparse->sparseKept);
+        keepPart(at + "/indices", sparse->indicesKept);
+        keepPart(at + "/values", sparse->valuesKept);
     }
     keepAccessor(accessor, kept.info);
+    if (kept.info.file >= 0) writtenByFile_.emplace(kept.info.file, accessor);
     return accessor;
 }
 
@@ -506,24 +656,26 @@ void ModelBuilder::addTargets(const std::vector<KeptAttributes>& targets, std::s
 bool ModelBuilder::addKeptAttributes(const KeptAttributes& kept, std::size_t vertexCount,
                                      std::map<std::string, int>& attributes) {
     bool all = true;
-    for (const auto& [name, accessor] : kept) {
+    // In the file's accessor order (those without a file index last).
+    std::vector<std::pair<const std::string*, const KeptAccessor*>> ordered;
+    for (const auto& [name, accessor] : kept) ordered.emplace_back(&name, &accessor);
+    std::stable_sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) {
+        const auto key = [](const KeptAccessor* k) { return k->info.file >= 0 ? k->info.file : std::numeric_limits<int>::max(); };
+        return key(a.second) < key(b.second);
+    });
+    for (const auto& [namePointer, accessorPointer] : ordered) {
+        const std::string& name = *namePointer;
+        const KeptAccessor& accessor = *accessorPointer;
         if (accessor.count != vertexCount) {
             all = false;
             continue;
         }
         const int index = addKeptAccessor(accessor, kArrayBuffer);
         // glTF requires min and max on POSITION accessors, morph targets' included.
-        if (name == "POSITION" && accessor.type == "VEC3" && accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
-            std::vector<double> lo(3, std::numeric_limits<double>::max()), hi(3, std::numeric_limits<double>::lowest());
-            for (std::size_t i = 0; i < accessor.count; ++i)
-                for (std::size_t c = 0; c < 3; ++c) {
-                    float v;
-                    std::memcpy(&v, accessor.bytes.data() + (i * 3 + c) * sizeof(float), sizeof(float));
-                    lo[c] = std::min(lo[c], double(v));
-                    hi[c] = std::max(hi[c], double(v));
-                }
-            model_.accessors[static_cast<std::size_t>(index)].minValues = lo;
-            model_.accessors[static_cast<std::size_t>(index)].maxValues = hi;
+        if (name == "POSITION" && model_.accessors[static_cast<std::size_t>(index)].minValues.empty()) {
+            auto [lo, hi] = minMaxOf(index);
+            model_.accessors[static_cast<std::size_t>(index)].minValues = std::move(lo);
+            model_.accessors[static_cast<std::size_t>(index)].maxValues = std::move(hi);
         }
         attributes[name] = index;
         wroteKeptVertexData_ = true;
@@ -664,21 +816,90 @@ void ModelBuilder::addMaterials() {
     }
 }
 
-void ModelBuilder::addMeshes() {
-    static_assert(offsetof(Vertex, position) == 0 && offsetof(Vertex, normal) == 12 && offsetof(Vertex, uv) == 24 &&
-                      offsetof(Vertex, tangent) == 32,
-                  "the interleaved vertex view below mirrors lit::Vertex");
-    meshIndex_.assign(scene_.meshes.size(), -1);
-    for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
-        const Mesh& mesh = scene_.meshes[m];
-        tinygltf::Mesh out;
-        out.name = mesh.name;
-        for (const Primitive& primitive : mesh.primitives) {
-            if (primitive.indices.empty()) continue;
-            const std::size_t count = primitive.vertices.size();
-            // Tangents only when the file had them (the loader generates them otherwise): without
-            // them the vertices are written 32 bytes apart (POSITION, NORMAL, TEXCOORD_0).
-            const bool tangents = primitive.fileHasTangents;
+// A drawn primitive: POSITION, NORMAL, TEXCOORD_0, TANGENT (only when the file had them: the
+// loader generates them otherwise) and indices, laid out as the file had them (one view per
+// attribute, or Lit's interleaved one; the file's index type while the indices fit, none for a
+// file without indices while they are still 0, 1, 2, ...), then the kept attributes and targets.
+tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
+    const std::size_t count = primitive.vertices.size();
+    const bool tangents = primitive.fileHasTangents;
+    struct Attribute {
+        const char* name;
+        std::size_t offset;  // in lit::Vertex
+        std::size_t bytes;
+        int type;
+    };
+    std::vector<Attribute> attributes = {{"POSITION", offsetof(Vertex, position), 12, TINYGLTF_TYPE_VEC3},
+                                         {"NORMAL", offsetof(Vertex, normal), 12, TINYGLTF_TYPE_VEC3},
+                                         {"TEXCOORD_0", offsetof(Vertex, uv), 8, TINYGLTF_TYPE_VEC2}};
+    if (tangents) attributes.push_back({"TANGENT", offsetof(Vertex, tangent), 16, TINYGLTF_TYPE_VEC4});
+    // A file's primitive without TEXCOORD_0 is written without while its coordinates are still
+    // the zeros the loader gave it.
+    if (primitive.fileAccessors.count("POSITION") && !primitive.fileAccessors.count("TEXCOORD_0") &&
+        std::all_of(primitive.vertices.begin(), primitive.vertices.end(), [](const Vertex& v) { return v.uv == glm::vec2(0.0f); }))
+        attributes.erase(attributes.begin() + 2);
+    const auto fileInfo = [&](const char* name) -> const KeptAccessorInfo* {
+        const auto found = primitive.fileAccessors.find(name);
+        return found == primitive.fileAccessors.end() ? nullptr : &found->second;
+    };
+    // The file's names, extras and extensions go back only on the same data (scene/Scene.h).
+    const bool unedited = std::any_of(primitive.fileAccessors.begin(), primitive.fileAccessors.end(),
+                                      [](const auto& entry) { return entry.second.hasNameOrExtras(); }) &&
+                          gltfkeep::drawnDataHash(primitive) == primitive.fileDataHash;
+    // A new accessor of drawn data: the file's min/max, and its name, extras and extensions while
+    // unedited; remembered under its file index, so that primitives that shared it share it again.
+    const auto keepFile = [&](int accessor, const char* name) {
+        const KeptAccessorInfo* info = fileInfo(name);
+        if (!info) return;
+        if (unedited) {
+            keepAccessor(accessor, *info);
+        } else {
+            KeptAccessorInfo minMaxOnly;
+            minMaxOnly.min = info->min;
+            minMaxOnly.max = info->max;
+            keepMinMax(accessor, minMaxOnly);
+        }
+        // Shared again only by accessors that keep the same (an edited primitive's lost its names).
+        if (info->file >= 0 && (unedited || !info->hasNameOrExtras())) writtenByFile_.emplace(info->file, accessor);
+    };
+    const auto fileIndex = [&](const char* name) {
+        const KeptAccessorInfo* info = fileInfo(name);
+        return info && info->file >= 0 ? info->file : std::numeric_limits<int>::max();
+    };
+    tinygltf::Primitive p;
+    p.mode = TINYGLTF_MODE_TRIANGLES;
+    p.material = primitive.material;
+
+    // The accessors are written in the file's order (drawn attributes, kept ones, morph targets,
+    // indices; what has no file index after the rest), so an unedited file keeps its accessor
+    // indices where Lit writes what the file had.
+    std::vector<std::pair<int, std::function<void()>>> writes;
+    if (primitive.fileSeparateViews) {
+        // One tightly packed view per attribute, as Blender writes them.
+        for (const Attribute& a : attributes)
+            writes.emplace_back(fileIndex(a.name), [&, a] {
+                std::vector<unsigned char> packed(count * a.bytes);
+                for (std::size_t v = 0; v < count; ++v)
+                    std::memcpy(packed.data() + v * a.bytes,
+                                reinterpret_cast<const unsigned char*>(&primitive.vertices[v]) + a.offset, a.bytes);
+                const KeptAccessorInfo* info = fileInfo(a.name);
+                const int shared = sharedAccessor(info ? info->file : -1, TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, false,
+                                                  packed.data(), count);
+                if (shared >= 0) {
+                    p.attributes[a.name] = shared;
+                    return;
+                }
+                const int view = addBufferView(packed.data(), packed.size(), kArrayBuffer,
+                                               info && info->viewStride == a.bytes ? a.bytes : 0);
+                p.attributes[a.name] = addAccessor(view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, count);
+                if (a.offset == offsetof(Vertex, position)) setPositionBounds(p.attributes[a.name], primitive);
+                keepFile(p.attributes[a.name], a.name);
+            });
+    } else {
+        int first = std::numeric_limits<int>::max();
+        for (const Attribute& a : attributes) first = std::min(first, fileIndex(a.name));
+        writes.emplace_back(first, [&] {
+            // One interleaved view: lit::Vertex as it is in memory, 32 bytes a vertex without tangents.
             constexpr std::size_t kPackedStride = offsetof(Vertex, tangent);
             int vertices = -1;
             if (tangents) {
@@ -689,34 +910,115 @@ void ModelBuilder::addMeshes() {
                     std::memcpy(packed.data() + v * kPackedStride, &primitive.vertices[v], kPackedStride);
                 vertices = addBufferView(packed.data(), packed.size(), kArrayBuffer, kPackedStride);
             }
-            tinygltf::Primitive p;
-            p.mode = TINYGLTF_MODE_TRIANGLES;
-            p.material = primitive.material;
-            const int position = addAccessor(vertices, offsetof(Vertex, position), TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                             TINYGLTF_TYPE_VEC3, count);
-            glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-            for (const Vertex& v : primitive.vertices) {
-                lo = glm::min(lo, v.position);
-                hi = glm::max(hi, v.position);
+            std::vector<Attribute> inFileOrder = attributes;
+            std::stable_sort(inFileOrder.begin(), inFileOrder.end(),
+                             [&](const Attribute& a, const Attribute& b) { return fileIndex(a.name) < fileIndex(b.name); });
+            for (const Attribute& a : inFileOrder)
+                p.attributes[a.name] = addAccessor(vertices, a.offset, TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, count);
+            setPositionBounds(p.attributes["POSITION"], primitive);
+            for (const Attribute& a : attributes) keepFile(p.attributes[a.name], a.name);
+        });
+    }
+    for (const auto& [name, accessor] : primitive.keptAttributes)
+        writes.emplace_back(accessor.info.file >= 0 ? accessor.info.file : std::numeric_limits<int>::max(), [&, name = name] {
+            KeptAttributes one;
+            one.emplace(name, primitive.keptAttributes.at(name));
+            addKeptAttributes(one, count, p.attributes);
+        });
+    if (!primitive.morphTargets.empty()) {
+        int first = std::numeric_limits<int>::max();
+        for (const KeptAttributes& target : primitive.morphTargets)
+            for (const auto& [name, accessor] : target)
+                if (accessor.info.file >= 0) first = std::min(first, accessor.info.file);
+        writes.emplace_back(first, [&] { addTargets(primitive.morphTargets, count, p); });
+    }
+    bool sequential = primitive.fileIndexType == 0 && primitive.indices.size() == count;
+    for (std::size_t i = 0; sequential && i < primitive.indices.size(); ++i) sequential = primitive.indices[i] == i;
+    if (!sequential)
+        writes.emplace_back(fileIndex("indices"), [&] {
+            // The file's index type while every index fits in it (glTF: a type's largest value is
+            // reserved for primitive restart), else UNSIGNED_INT.
+            const std::uint32_t largest = *std::max_element(primitive.indices.begin(), primitive.indices.end());
+            int type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+            if (primitive.fileIndexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT && largest < 0xFFFFu) type = primitive.fileIndexType;
+            if (primitive.fileIndexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && largest < 0xFFu) type = primitive.fileIndexType;
+            std::vector<unsigned char> bytes;
+            if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+                const std::vector<std::uint16_t> narrow(primitive.indices.begin(), primitive.indices.end());
+                bytes.assign(reinterpret_cast<const unsigned char*>(narrow.data()),
+                             reinterpret_cast<const unsigned char*>(narrow.data() + narrow.size()));
+            } else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+                bytes.assign(primitive.indices.begin(), primitive.indices.end());
+            } else {
+                bytes.assign(reinterpret_cast<const unsigned char*>(primitive.indices.data()),
+                             reinterpret_cast<const unsigned char*>(primitive.indices.data() + primitive.indices.size()));
             }
-            model_.accessors[static_cast<std::size_t>(position)].minValues = doubles(lo);
-            model_.accessors[static_cast<std::size_t>(position)].maxValues = doubles(hi);
-            p.attributes["POSITION"] = position;
-            p.attributes["NORMAL"] = addAccessor(vertices, offsetof(Vertex, normal), TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                                 TINYGLTF_TYPE_VEC3, count);
-            p.attributes["TEXCOORD_0"] =
-                addAccessor(vertices, offsetof(Vertex, uv), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
-            if (tangents)
-                p.attributes["TANGENT"] = addAccessor(vertices, offsetof(Vertex, tangent), TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                                      TINYGLTF_TYPE_VEC4, count);
-            addKeptAttributes(primitive.keptAttributes, count, p.attributes);
-            addTargets(primitive.morphTargets, count, p);
-            restore(primitive.kept, p.extras, p.extensions);
-            const int indices = addBufferView(primitive.indices.data(), primitive.indices.size() * sizeof(std::uint32_t),
-                                              kElementArrayBuffer, 0);
-            p.indices = addAccessor(indices, 0, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                                    primitive.indices.size());
-            out.primitives.push_back(std::move(p));
+            const KeptAccessorInfo* info = fileInfo("indices");
+            const int shared = sharedAccessor(info ? info->file : -1, type, TINYGLTF_TYPE_SCALAR, false, bytes.data(),
+                                              primitive.indices.size());
+            if (shared >= 0) {
+                p.indices = shared;
+                return;
+            }
+            const int view = addBufferView(bytes.data(), bytes.size(), kElementArrayBuffer, 0);
+            p.indices = addAccessor(view, 0, type, TINYGLTF_TYPE_SCALAR, primitive.indices.size());
+            keepFile(p.indices, "indices");
+        });
+    std::stable_sort(writes.begin(), writes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [order, write] : writes) write();
+    restore(primitive.kept, p.extras, p.extensions);
+    return p;
+}
+
+// glTF requires POSITION's min and max.
+void ModelBuilder::setPositionBounds(int accessor, const Primitive& primitive) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const Vertex& v : primitive.vertices) {
+        lo = glm::min(lo, v.position);
+        hi = glm::max(hi, v.position);
+    }
+    model_.accessors[static_cast<std::size_t>(accessor)].minValues = doubles(lo);
+    model_.accessors[static_cast<std::size_t>(accessor)].maxValues = doubles(hi);
+}
+
+// The accessor already written for the file's accessor `file`, when it has this type and these
+// elements (tightly packed); -1 otherwise.
+int ModelBuilder::sharedAccessor(int file, int componentType, int type, bool normalized, const unsigned char* bytes,
+                                 std::size_t count) const {
+    if (file < 0) return -1;
+    const auto found = writtenByFile_.find(file);
+    if (found == writtenByFile_.end()) return -1;
+    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(found->second)];
+    if (a.componentType != componentType || a.type != type || a.count != count || a.normalized != normalized ||
+        a.sparse.isSparse || a.bufferView < 0)
+        return -1;
+    const std::size_t elementSize =
+        componentBytes(componentType) * static_cast<std::size_t>(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(type)));
+    const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    const std::size_t stride = view.byteStride ? view.byteStride : elementSize;
+    const unsigned char* first = model_.buffers[static_cast<std::size_t>(view.buffer)].data.data() + view.byteOffset + a.byteOffset;
+    for (std::size_t i = 0; i < count; ++i)
+        if (std::memcmp(first + i * stride, bytes + i * elementSize, elementSize) != 0) return -1;
+    return found->second;
+}
+
+void ModelBuilder::addMeshes() {
+    static_assert(offsetof(Vertex, position) == 0 && offsetof(Vertex, normal) == 12 && offsetof(Vertex, uv) == 24 &&
+                      offsetof(Vertex, tangent) == 32,
+                  "the interleaved vertex view below mirrors lit::Vertex");
+    meshIndex_.assign(scene_.meshes.size(), -1);
+    for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
+        const Mesh& mesh = scene_.meshes[m];
+        // Skins whose matrices the file had before this mesh's data.
+        int first = std::numeric_limits<int>::max();
+        for (const Primitive& primitive : mesh.primitives)
+            for (const auto& [name, info] : primitive.fileAccessors)
+                if (info.file >= 0) first = std::min(first, info.file);
+        addSkins(first);
+        tinygltf::Mesh out;
+        out.name = mesh.name;
+        for (const Primitive& primitive : mesh.primitives) {
+            if (!primitive.indices.empty()) out.primitives.push_back(addPrimitive(primitive));
         }
         for (const KeptPrimitive& kept : mesh.otherPrimitives) {
             const auto position = kept.attributes.find("POSITION");
@@ -799,27 +1101,84 @@ void ModelBuilder::addCameras() {
     }
 }
 
-void ModelBuilder::addNodes() {
-    const std::vector<int> written = reachableNodes();
+// A node's translation, rotation and scale, only what differs from the glTF defaults (as other
+// exporters write them), with the file's exact numbers while they still hold.
+void addTrs(const Node& node, tinygltf::Node& out) {
+    if (node.translation != glm::vec3(0.0f)) out.translation = fileOr(node.fileNumbers, "t", node.translation);
+    if (node.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) {
+        // A rotation already unit within float rounding is written as it is (the file's
+        // numbers after a load), others normalized.
+        const float length = glm::length(node.rotation);
+        const glm::quat q = std::abs(length - 1.0f) <= 1e-6f ? node.rotation : node.rotation / length;
+        out.rotation = fileOr(node.fileNumbers, "r", glm::vec4(q.x, q.y, q.z, q.w));  // glTF order
+    }
+    if (node.scale != glm::vec3(1.0f)) out.scale = fileOr(node.fileNumbers, "s", node.scale);
+}
+
+void ModelBuilder::orderNodes() {
+    // The written nodes (the shown ones reachable from the roots, then the kept ones) in the
+    // file's order (Node::fileIndex), those Lit made after them in their own order: an unedited
+    // file keeps its node indices, an edited one its nodes' order. A file index seen twice (a
+    // copied node) counts once.
+    struct Written {
+        const Node* node;
+        bool kept;
+        int index;  // in Scene::nodes or Scene::keptNodes
+        long long order;
+    };
+    std::vector<Written> written;
+    for (int index : reachableNodes()) written.push_back({&scene_.nodes[static_cast<std::size_t>(index)], false, index, 0});
+    for (std::size_t k = 0; k < scene_.keptNodes.size(); ++k) written.push_back({&scene_.keptNodes[k], true, static_cast<int>(k), 0});
+    {
+        std::vector<std::uint8_t> seen;
+        constexpr long long kMade = 1LL << 40;  // after every file index
+        for (std::size_t i = 0; i < written.size(); ++i) {
+            const int file = written[i].node->fileIndex;
+            const bool first = file >= 0 && (static_cast<std::size_t>(file) >= seen.size() || !seen[static_cast<std::size_t>(file)]);
+            if (first) {
+                if (static_cast<std::size_t>(file) >= seen.size()) seen.resize(static_cast<std::size_t>(file) + 1, 0);
+                seen[static_cast<std::size_t>(file)] = 1;
+            }
+            written[i].order = first ? file : kMade + static_cast<long long>(i);
+        }
+        std::stable_sort(written.begin(), written.end(), [](const Written& a, const Written& b) { return a.order < b.order; });
+    }
     nodeIndex_.assign(scene_.nodes.size(), -1);
-    for (std::size_t i = 0; i < written.size(); ++i) nodeIndex_[static_cast<std::size_t>(written[i])] = static_cast<int>(i);
-    keptNodeIndex_.resize(scene_.keptNodes.size());
-    for (std::size_t k = 0; k < scene_.keptNodes.size(); ++k) keptNodeIndex_[k] = static_cast<int>(written.size() + k);
-    addSkins();
+    keptNodeIndex_.assign(scene_.keptNodes.size(), -1);
+    for (std::size_t i = 0; i < written.size(); ++i)
+        (written[i].kept ? keptNodeIndex_ : nodeIndex_)[static_cast<std::size_t>(written[i].index)] = static_cast<int>(i);
+    for (const Written& w : written) writtenNodes_.emplace_back(w.node, w.kept);
+    skinIndex_.assign(scene_.skins.size(), -1);
+}
+
+void ModelBuilder::addNodes() {
+    addSkins(std::numeric_limits<int>::max());
+    // Nodes a written animation moves: glTF forbids a matrix on them (§5.25).
+    std::vector<const Node*> animated;
+    for (const Animation& animation : scene_.animations) {
+        if (!replacedAnimation_.empty() && animation.name == replacedAnimation_) continue;
+        for (const Animation::Channel& channel : animation.channels) {
+            if (channel.path == "weights") continue;
+            if (channel.node >= 0 && static_cast<std::size_t>(channel.node) < scene_.nodes.size())
+                animated.push_back(&scene_.nodes[static_cast<std::size_t>(channel.node)]);
+            else if (channel.node <= -2 && static_cast<std::size_t>(keptNodeIndex(channel.node)) < scene_.keptNodes.size())
+                animated.push_back(&scene_.keptNodes[static_cast<std::size_t>(keptNodeIndex(channel.node))]);
+        }
+    }
     const auto addNode = [&](const Node& node, const std::vector<int>& childIndex) {
         tinygltf::Node out;
         out.name = node.name;
         for (int child : node.children) out.children.push_back(childIndex[static_cast<std::size_t>(child)]);
-        // Only what differs from the glTF defaults, as other exporters do.
-        if (node.translation != glm::vec3(0.0f)) out.translation = fileOr(node.fileNumbers, "t", node.translation);
-        if (node.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) {
-            // A rotation already unit within float rounding is written as it is (the file's
-            // numbers after a load), others normalized.
-            const float length = glm::length(node.rotation);
-            const glm::quat q = std::abs(length - 1.0f) <= 1e-6f ? node.rotation : node.rotation / length;
-            out.rotation = fileOr(node.fileNumbers, "r", glm::vec4(q.x, q.y, q.z, q.w));  // glTF order
+        // The file's matrix while the transform is the one it gave (an edit writes TRS).
+        const bool fileMatrix = node.fileMatrix.size() == 16 && node.translation == node.matrixTranslation &&
+                                node.rotation == node.matrixRotation && node.scale == node.matrixScale &&
+                                std::find(animated.begin(), animated.end(), &node) == animated.end();
+        if (fileMatrix) {
+            out.matrix = node.fileMatrix;
+        } else {
+            addTrs(node, out);
         }
-        if (node.scale != glm::vec3(1.0f)) out.scale = fileOr(node.fileNumbers, "s", node.scale);
+
         out.mesh = node.mesh >= 0 ? meshIndex_[static_cast<std::size_t>(node.mesh)] : -1;
         out.camera = node.camera;
         out.skin = node.skin >= 0 ? skinIndex_[static_cast<std::size_t>(node.skin)] : -1;
@@ -832,8 +1191,7 @@ void ModelBuilder::addNodes() {
         restore(node.kept, out.extras, out.extensions);
         model_.nodes.push_back(std::move(out));
     };
-    for (int index : written) addNode(scene_.nodes[static_cast<std::size_t>(index)], nodeIndex_);
-    for (const Node& node : scene_.keptNodes) addNode(node, keptNodeIndex_);
+    for (const auto& [node, kept] : writtenNodes_) addNode(*node, kept ? keptNodeIndex_ : nodeIndex_);
     const auto sceneOf = [&](const std::string& name, const std::vector<int>& roots, const KeptGltf& kept) {
         tinygltf::Scene out;
         out.name = name;
@@ -862,11 +1220,12 @@ void ModelBuilder::addNodes() {
 
 // The skins whose joints are all written (a deleted joint leaves its skin out, and the skinned
 // nodes are written without one).
-void ModelBuilder::addSkins() {
-    skinIndex_.assign(scene_.skins.size(), -1);
+void ModelBuilder::addSkins(int beforeFileAccessor) {
     const auto written = [&](int reference) { return writtenNode(reference); };
-    for (std::size_t s = 0; s < scene_.skins.size(); ++s) {
+    for (; nextSkin_ < scene_.skins.size(); ++nextSkin_) {
+        const std::size_t s = nextSkin_;
         const Skin& skin = scene_.skins[s];
+        if (skin.inverseBindMatricesInfo.file >= beforeFileAccessor) break;
         if (skin.joints.empty() ||
             std::any_of(skin.joints.begin(), skin.joints.end(), [&](int joint) { return written(joint) < 0; }) ||
             (!skin.inverseBindMatrices.empty() && skin.inverseBindMatrices.size() != 16 * skin.joints.size()))
@@ -888,6 +1247,40 @@ void ModelBuilder::addSkins() {
         skinIndex_[s] = static_cast<int>(model_.skins.size());
         model_.skins.push_back(std::move(out));
     }
+}
+
+// An animation sampler's output values: floats, or the file's normalized integer type
+// (rotations and morph weights may be BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT, glTF §5.7.1):
+// the loader read c as c / 127 (BYTE), c / 255, c / 32767 or c / 65535, which round(v · that)
+// turns back into c.
+int ModelBuilder::addAnimationOutput(const Animation::Sampler& sampler, int type) {
+    const std::size_t count = sampler.output.size() / static_cast<std::size_t>(sampler.components);
+    const auto quantized = [&](auto zero, double scale, double lo) {
+        using T = decltype(zero);
+        std::vector<T> values(sampler.output.size());
+        for (std::size_t i = 0; i < values.size(); ++i)
+            values[i] = static_cast<T>(std::clamp(std::round(double(sampler.output[i]) * scale), lo, scale));
+        const int view = addBufferView(values.data(), values.size() * sizeof(T), 0, 0);
+        const int accessor = addAccessor(view, 0, sampler.outputComponentType, type, count);
+        model_.accessors[static_cast<std::size_t>(accessor)].normalized = true;
+        return accessor;
+    };
+    if (sampler.outputNormalized) {
+        switch (sampler.outputComponentType) {
+            case TINYGLTF_COMPONENT_TYPE_BYTE:
+                return quantized(std::int8_t{}, 127.0, -127.0);
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                return quantized(std::uint8_t{}, 255.0, 0.0);
+            case TINYGLTF_COMPONENT_TYPE_SHORT:
+                return quantized(std::int16_t{}, 32767.0, -32767.0);
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+                return quantized(std::uint16_t{}, 65535.0, 0.0);
+            default:
+                break;
+        }
+    }
+    const int view = addBufferView(sampler.output.data(), sampler.output.size() * sizeof(float), 0, 0);
+    return addAccessor(view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, type, count);
 }
 
 // The file's animations as the loader kept them (channels of nodes that are not written are
@@ -917,17 +1310,32 @@ void ModelBuilder::addAnimations() {
         const std::string at = "/animations/" + std::to_string(model_.animations.size()) + "/samplers/";
         for (const Animation::Sampler& sampler : animation.samplers) {
             const int typeOf[] = {0, TINYGLTF_TYPE_SCALAR, TINYGLTF_TYPE_VEC2, TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4};
-            const int inputView = addBufferView(sampler.input.data(), sampler.input.size() * sizeof(float), 0, 0);
-            const int input = addAccessor(inputView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR,
-                                          sampler.input.size());
-            const auto [lo, hi] = std::minmax_element(sampler.input.begin(), sampler.input.end());
-            model_.accessors[static_cast<std::size_t>(input)].minValues = {*lo};
-            model_.accessors[static_cast<std::size_t>(input)].maxValues = {*hi};
-            const int outputView = addBufferView(sampler.output.data(), sampler.output.size() * sizeof(float), 0, 0);
-            const int output = addAccessor(outputView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, typeOf[sampler.components],
-                                           sampler.output.size() / static_cast<std::size_t>(sampler.components));
-            keepAccessor(input, sampler.inputInfo);
-            keepAccessor(output, sampler.outputInfo);
+            // An accessor the file's samplers shared is written once while the values agree.
+            int input = -1;
+            if (const auto shared = writtenInputs_.find(sampler.fileInput);
+                sampler.fileInput >= 0 && shared != writtenInputs_.end() && *shared->second.second == sampler.input) {
+                input = shared->second.first;
+            } else {
+                const int inputView = addBufferView(sampler.input.data(), sampler.input.size() * sizeof(float), 0, 0);
+                input = addAccessor(inputView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, sampler.input.size());
+                const auto [lo, hi] = std::minmax_element(sampler.input.begin(), sampler.input.end());
+                model_.accessors[static_cast<std::size_t>(input)].minValues = {*lo};
+                model_.accessors[static_cast<std::size_t>(input)].maxValues = {*hi};
+                keepAccessor(input, sampler.inputInfo);
+                if (sampler.fileInput >= 0) writtenInputs_[sampler.fileInput] = {input, &sampler.input};
+            }
+            int output = -1;
+            if (const auto shared = writtenOutputs_.find(sampler.fileOutput);
+                sampler.fileOutput >= 0 && shared != writtenOutputs_.end() && shared->second.second->output == sampler.output &&
+                shared->second.second->components == sampler.components &&
+                shared->second.second->outputComponentType == sampler.outputComponentType &&
+                shared->second.second->outputNormalized == sampler.outputNormalized) {
+                output = shared->second.first;
+            } else {
+                output = addAnimationOutput(sampler, typeOf[sampler.components]);
+                keepAccessor(output, sampler.outputInfo);
+                if (sampler.fileOutput >= 0) writtenOutputs_[sampler.fileOutput] = {output, &sampler};
+            }
             tinygltf::AnimationSampler s;
             s.input = input;
             s.output = output;
@@ -956,6 +1364,7 @@ tinygltf::Model ModelBuilder::build() {
     addImages();
     addTextures();
     addMaterials();
+    orderNodes();
     addMeshes();
     addLights();
     addCameras();
@@ -1028,15 +1437,15 @@ void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& o
     const std::vector<std::pair<std::string, std::string>> jsonPatches = builder.takeJsonPatches();
     if (options.cameraPath && !options.cameraPath->empty()) {
         try {
-            // The path animates a camera of the shown scene: the kept nodes (written after the
-            // shown ones) are hidden from writeCameraPathAnimation's search for a camera node, so
-            // without a shown camera it adds one rather than animate a node Lit does not show.
-            const std::size_t shownNodes = model.nodes.size() - scene.keptNodes.size();
+            // The path animates a camera of the shown scene: the kept nodes are hidden from
+            // writeCameraPathAnimation's search for a camera node, so without a shown camera it
+            // adds one rather than animate a node Lit does not show.
+            const std::vector<int>& keptNodes = builder.keptNodeIndices();
             std::vector<int> keptCameras;
-            for (std::size_t i = shownNodes; i < model.nodes.size(); ++i)
-                keptCameras.push_back(std::exchange(model.nodes[i].camera, -1));
+            for (int i : keptNodes) keptCameras.push_back(std::exchange(model.nodes[static_cast<std::size_t>(i)].camera, -1));
             writeCameraPathAnimation(model, *options.cameraPath, options.cameraPathName);
-            for (std::size_t i = 0; i < keptCameras.size(); ++i) model.nodes[shownNodes + i].camera = keptCameras[i];
+            for (std::size_t i = 0; i < keptCameras.size(); ++i)
+                model.nodes[static_cast<std::size_t>(keptNodes[i])].camera = keptCameras[i];
         } catch (const CameraPathError& e) {
             throw SceneSaveError(file.string() + ": cannot write the camera path: " + e.what());
         }

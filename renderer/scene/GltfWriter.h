@@ -1,6 +1,7 @@
 #pragma once
 // Writes a Scene back to glTF 2.0 (.gltf + .bin, or one .glb) so that Blender and other tools
-// read it: nodes with TRS, meshes, metallic-roughness materials (with
+// read it: nodes with TRS (or the file's matrix while unedited), in the file's order, meshes in
+// the file's layout, metallic-roughness materials (with
 // KHR_materials_emissive_strength when the strength is not 1), textures and samplers,
 // KHR_lights_punctual lights, perspective cameras, and optionally a camera path as a glTF
 // animation (animation/CameraPathIO.h), plus everything of the source file the loader kept

@@ -50,6 +50,19 @@ struct KeptAccessorInfo {
     std::string name;
     KeptGltf kept{};
     KeptObject view{};
+    // The file's min and max (empty when it had none): a save writes them again, recomputed from
+    // the written elements, with the file's exact numbers where they still hold (a JSON double
+    // such as Blender's 3.0416666666666665 for a float key time of 3.0416667).
+    std::vector<double> min{};
+    std::vector<double> max{};
+    // The accessor's index in the file (-1: none): accessors the file shared between primitives
+    // (Blender shares identical ones) are written once again while their elements agree.
+    int file = -1;
+    // Its buffer view's byteStride in the file (0: none): written again where the elements are
+    // still that far apart.
+    std::size_t viewStride = 0;
+    // Whether it carries a name, extras or extensions (its own or its view's).
+    bool hasNameOrExtras() const { return !name.empty() || !(kept == KeptGltf{}) || !view.empty(); }
     bool operator==(const KeptAccessorInfo&) const = default;
 };
 
@@ -72,6 +85,11 @@ struct KeptAccessor {
         std::vector<std::uint8_t> baseBytes; // hasBase: the base's elements at `indices` (indices.size() × element size)
         KeptObject indicesView{};            // the buffer views of the sparse indices and values
         KeptObject valuesView{};
+        // The extras and extensions of the `sparse`, `sparse.indices` and `sparse.values` objects
+        // (read from the file's JSON: tinygltf 2.7 does not read them).
+        KeptGltf sparseKept{};
+        KeptGltf indicesKept{};
+        KeptGltf valuesKept{};
         bool operator==(const Sparse&) const = default;
     };
     std::optional<Sparse> sparse{};
@@ -105,6 +123,20 @@ struct Primitive {
     KeptAttributes keptAttributes{};
     std::vector<KeptAttributes> morphTargets{};
     KeptGltf kept{};
+    // How the file stored the drawn data, so that a save can store it the same way: each of
+    // POSITION, NORMAL, TEXCOORD_0 and TANGENT in its own buffer view (Blender) rather than one
+    // interleaved view, and the indices' component type (5121, 5123 or 5125; 0 = the file had no
+    // indices: written without while they are still 0, 1, 2, ...). A type too small for an
+    // edited primitive's indices is widened.
+    bool fileSeparateViews = false;
+    int fileIndexType = 5125;
+    // The names, extras, extensions, min/max and file indices of the file's POSITION, NORMAL,
+    // TEXCOORD_0, TANGENT and "indices" accessors (and their buffer views), by that name. A save gives them
+    // to the accessors it writes for the same data while `fileDataHash` still matches the
+    // primitive's vertices and indices (scene/GltfKeep.h: drawnDataHash); min/max are always
+    // recomputed from the written values.
+    std::map<std::string, KeptAccessorInfo> fileAccessors{};
+    std::uint64_t fileDataHash = 0;
 };
 
 // A primitive Lit does not draw (mode POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLE_STRIP or
@@ -255,6 +287,16 @@ struct Node {
     glm::mat4 world{1.0f};  // computed by Scene::updateWorldTransforms()
     FileNumbers fileNumbers{};  // t0..t2, r0..r3 (x, y, z, w), s0..s2
     KeptGltf kept{};
+    // A node the file gave a `matrix`: its 16 numbers (column-major) and the translation,
+    // rotation and scale they became. A save writes the matrix again while the node's transform
+    // still equals those (unedited); an edited node is written as translation, rotation, scale.
+    std::vector<double> fileMatrix{};
+    glm::vec3 matrixTranslation{0.0f};
+    glm::quat matrixRotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::vec3 matrixScale{1.0f};
+    // The node's index in the file (-1: made by Lit). A save writes the file's nodes in this
+    // order, nodes Lit made after them, so a file keeps its node indices while none is deleted.
+    int fileIndex = -1;
 
     glm::mat4 localMatrix() const;
 };
@@ -271,6 +313,14 @@ struct Animation {
         KeptGltf kept{};                // the sampler's extras and extensions
         KeptAccessorInfo inputInfo{};   // its input and output accessors' names, extras, extensions
         KeptAccessorInfo outputInfo{};
+        // The file's input and output accessor indices (-1: made by Lit): samplers that shared an
+        // accessor share it again in a save while their values are still the same.
+        int fileInput = -1;
+        int fileOutput = -1;
+        // The output's component type and normalization (5126 float; normalized 5120, 5121,
+        // 5122 or 5123 for rotations and morph weights): written back in that type.
+        int outputComponentType = 5126;
+        bool outputNormalized = false;
     };
     struct Channel {
         int sampler = 0;
