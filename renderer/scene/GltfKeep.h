@@ -14,6 +14,24 @@
 
 namespace lit::gltfkeep {
 
+// Bytes per component of a glTF 2.0 accessor component type; 0 for anything else (tinygltf's
+// GetComponentSizeInBytes also takes INT and DOUBLE, which glTF 2.0 accessors may not use).
+inline int componentBytes(int componentType) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return 4;
+        default:
+            return 0;
+    }
+}
+
 inline nlohmann::json toJson(const tinygltf::Value& value) {
     switch (value.Type()) {
         case tinygltf::NULL_TYPE: return nullptr;

@@ -373,22 +373,6 @@ std::uint32_t Loader::AccessorData::index(std::size_t i) const {
     }
 }
 
-int componentSize(int componentType) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return 1;
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-            return 2;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT:
-            return 4;
-        default:
-            return 0;
-    }
-}
-
 const char* typeName(int type) {
     switch (type) {
         case TINYGLTF_TYPE_SCALAR:
@@ -433,7 +417,7 @@ Loader::AccessorData Loader::accessor(int index, int expectedType, const std::st
     const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
     if (a.sparse.isSparse) fail(what + " is a sparse accessor, which Lit does not support");
     if (a.type != expectedType) fail(what + " has type " + typeName(a.type) + ", expected " + typeName(expectedType));
-    const int size = componentSize(a.componentType);
+    const int size = gltfkeep::componentBytes(a.componentType);
     if (size == 0) fail(what + " has unsupported component type " + std::to_string(a.componentType));
     if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && expectedType != TINYGLTF_TYPE_SCALAR)
         fail(what + " has component type UNSIGNED_INT, which glTF allows only for indices");
@@ -1323,7 +1307,7 @@ KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optio
         fail("accessor index " + std::to_string(index) + " (" + role + ") is out of range: the file has " +
              std::to_string(model_.accessors.size()) + " accessors");
     const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
-    const int size = componentSize(a.componentType);
+    const int size = gltfkeep::componentBytes(a.componentType);
     if (size == 0) fail(what + " has unsupported component type " + std::to_string(a.componentType));
     const int components = elementComponents(a.type);
     if (components == 0) fail(what + " has an unknown type");
@@ -1373,7 +1357,7 @@ KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optio
     if (a.sparse.isSparse && a.sparse.count > 0) {
         const auto count = static_cast<std::size_t>(a.sparse.count);
         if (count > a.count) fail(what + " has more sparse elements (" + std::to_string(count) + ") than elements");
-        const int indexSize = componentSize(a.sparse.indices.componentType);
+        const int indexSize = gltfkeep::componentBytes(a.sparse.indices.componentType);
         if (a.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
             a.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
             a.sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)

@@ -265,26 +265,13 @@ double componentValue(const unsigned char* element, int componentType, int c) {
     }
 }
 
-std::size_t componentBytes(int componentType) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return 1;
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-            return 2;
-        default:
-            return 4;
-    }
-}
-
 // Min and max of a written accessor's elements (its buffer view, or zeros, with its sparse values
 // put in), per component.
 std::pair<std::vector<double>, std::vector<double>> ModelBuilder::minMaxOf(int index) const {
     const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
     const int components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
     if (components <= 0 || a.count == 0) return {};
-    const std::size_t elementSize = componentBytes(a.componentType) * static_cast<std::size_t>(components);
+    const std::size_t elementSize = static_cast<std::size_t>(gltfkeep::componentBytes(a.componentType)) * static_cast<std::size_t>(components);
     const std::vector<unsigned char> zeros(elementSize, 0);
     const auto viewBytes = [&](int view) {
         const tinygltf::BufferView& v = model_.bufferViews[static_cast<std::size_t>(view)];
@@ -993,7 +980,7 @@ int ModelBuilder::sharedAccessor(int file, int componentType, int type, bool nor
         a.sparse.isSparse || a.bufferView < 0)
         return -1;
     const std::size_t elementSize =
-        componentBytes(componentType) * static_cast<std::size_t>(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(type)));
+        static_cast<std::size_t>(gltfkeep::componentBytes(componentType)) * static_cast<std::size_t>(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(type)));
     const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
     const std::size_t stride = view.byteStride ? view.byteStride : elementSize;
     const unsigned char* first = model_.buffers[static_cast<std::size_t>(view.buffer)].data.data() + view.byteOffset + a.byteOffset;
