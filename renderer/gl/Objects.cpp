@@ -96,6 +96,15 @@ void Framebuffer::setDrawBuffers(int count) {
     glNamedFramebufferDrawBuffers(handle_.id(), count, buffers);
 }
 
+Framebuffer Framebuffer::withColours(std::string_view label, std::initializer_list<const Texture*> colours) {
+    Framebuffer framebuffer(label);
+    int index = 0;
+    for (const Texture* colour : colours) framebuffer.attach(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + index++), *colour);
+    framebuffer.setDrawBuffers(index);
+    framebuffer.checkComplete(label);
+    return framebuffer;
+}
+
 void Framebuffer::checkComplete(std::string_view what) const {
     const GLenum status = glCheckNamedFramebufferStatus(handle_.id(), GL_FRAMEBUFFER);
     if (status == GL_FRAMEBUFFER_COMPLETE) return;

@@ -5,6 +5,7 @@
 #include "gl/Handle.h"
 
 #include <cstddef>
+#include <initializer_list>
 #include <span>
 #include <string_view>
 
@@ -67,6 +68,9 @@ class Framebuffer {
 public:
     Framebuffer() = default;
     explicit Framebuffer(std::string_view label);
+    // A complete framebuffer drawing to `colours` (level 0) as colour attachments 0, 1, ... in
+    // order; throws GlError naming `label` when incomplete.
+    static Framebuffer withColours(std::string_view label, std::initializer_list<const Texture*> colours);
 
     void attach(GLenum attachment, const Texture& texture, int level = 0);
     void attachLayer(GLenum attachment, const Texture& texture, int layer, int level = 0);

@@ -126,26 +126,15 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         lowGuide_ = gl::Texture("indirect guide (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
         lowPacked_.setFilter(GL_NEAREST, GL_NEAREST);
         lowGuide_.setFilter(GL_NEAREST, GL_NEAREST);
-        lowTarget_ = gl::Framebuffer("indirect (reduced)");
-        lowTarget_.attach(GL_COLOR_ATTACHMENT0, lowPacked_);
-        lowTarget_.attach(GL_COLOR_ATTACHMENT1, lowGuide_);
-        lowTarget_.setDrawBuffers(2);
-        lowTarget_.checkComplete("indirect (reduced)");
+        lowTarget_ = gl::Framebuffer::withColours("indirect (reduced)", {&lowPacked_, &lowGuide_});
         tracedPacked_ = gl::Texture();
     }
     const ConeFeatures features = ConeFeatures::of(settings);
     if (features.footprint && !tracedPacked_) {
         tracedPacked_ = gl::Texture("indirect terms (reduced, stratified)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
         tracedPacked_.setFilter(GL_NEAREST, GL_NEAREST);
-        tracedTarget_ = gl::Framebuffer("indirect (reduced, stratified)");
-        tracedTarget_.attach(GL_COLOR_ATTACHMENT0, tracedPacked_);
-        tracedTarget_.attach(GL_COLOR_ATTACHMENT1, lowGuide_);
-        tracedTarget_.setDrawBuffers(2);
-        tracedTarget_.checkComplete("indirect (reduced, stratified)");
-        filteredTarget_ = gl::Framebuffer("indirect (reduced, strata filtered)");
-        filteredTarget_.attach(GL_COLOR_ATTACHMENT0, lowPacked_);
-        filteredTarget_.setDrawBuffers(1);
-        filteredTarget_.checkComplete("indirect (reduced, strata filtered)");
+        tracedTarget_ = gl::Framebuffer::withColours("indirect (reduced, stratified)", {&tracedPacked_, &lowGuide_});
+        filteredTarget_ = gl::Framebuffer::withColours("indirect (reduced, strata filtered)", {&lowPacked_});
     }
     const Work work = workFor(settings);
     const GLuint zero[4] = {0, 0, 0, 0};

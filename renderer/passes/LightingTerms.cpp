@@ -20,16 +20,8 @@ void LightingTerms::resize(int width, int height) {
         t.textures[i] = gl::Texture(names[i], {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
         t.textures[i].setFilter(GL_NEAREST, GL_NEAREST);
     }
-    t.direct = gl::Framebuffer("direct lighting terms");
-    t.direct.attach(GL_COLOR_ATTACHMENT0, t.textures[0]);
-    t.direct.attach(GL_COLOR_ATTACHMENT1, t.textures[1]);
-    t.direct.setDrawBuffers(2);
-    t.direct.checkComplete("direct lighting terms");
-    t.indirect = gl::Framebuffer("indirect lighting terms");
-    t.indirect.attach(GL_COLOR_ATTACHMENT0, t.textures[2]);
-    t.indirect.attach(GL_COLOR_ATTACHMENT1, t.textures[3]);
-    t.indirect.setDrawBuffers(2);
-    t.indirect.checkComplete("indirect lighting terms");
+    t.direct = gl::Framebuffer::withColours("direct lighting terms", {&t.textures[0], &t.textures[1]});
+    t.indirect = gl::Framebuffer::withColours("indirect lighting terms", {&t.textures[2], &t.textures[3]});
     clearIndirect();
 }
 

@@ -29,14 +29,8 @@ void PostPass::resize(int width, int height) {
     t.hdr = gl::Texture("hdr", {GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, 1});
     t.hdr.setFilter(GL_NEAREST, GL_NEAREST);
     t.output = gl::Texture("output", {GL_TEXTURE_2D, GL_SRGB8_ALPHA8, width, height, 1, 1});
-    t.hdrFramebuffer = gl::Framebuffer("hdr");
-    t.hdrFramebuffer.attach(GL_COLOR_ATTACHMENT0, t.hdr);
-    t.hdrFramebuffer.setDrawBuffers(1);
-    t.hdrFramebuffer.checkComplete("hdr");
-    t.outputFramebuffer = gl::Framebuffer("output");
-    t.outputFramebuffer.attach(GL_COLOR_ATTACHMENT0, t.output);
-    t.outputFramebuffer.setDrawBuffers(1);
-    t.outputFramebuffer.checkComplete("output");
+    t.hdrFramebuffer = gl::Framebuffer::withColours("hdr", {&t.hdr});
+    t.outputFramebuffer = gl::Framebuffer::withColours("output", {&t.output});
 }
 
 void PostPass::bindHdrTarget() const {
