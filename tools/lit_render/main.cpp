@@ -593,13 +593,8 @@ extern "C" void onInterrupt(int) { interruptRequested().store(true); }
 
 // --compare REF.hdr [--difference FILE.png]: the image's figures against a reference image of the
 // same size (typically `--reference --hdr`), and the editor's Difference view as a PNG.
-void compareWithReference(const Options& options, int width, int height, const std::vector<float>& rgb) {
-    if (options.compare.empty()) return;
-    const lit::HdrImage truth = lit::readHdr(options.compare);
-    if (truth.width != width || truth.height != height)
-        throw RunError(options.compare.string() + " is " + std::to_string(truth.width) + "x" + std::to_string(truth.height) +
-                       ", the image is " + std::to_string(width) + "x" + std::to_string(height) +
-                       ": render both at one --size");
+// `truth` was read, and its size checked against the render's, before rendering (run()).
+void compareWithReference(const Options& options, const lit::HdrImage& truth, const std::vector<float>& rgb) {
     const lit::reference::ImageComparison figures = lit::reference::compareImages(rgb, truth.rgb);
     std::printf("compare with %s: mean luminance %.5g against %.5g (ratio %.3f), RMSE %.1f %% of the reference's mean\n",
                 options.compare.string().c_str(), figures.testMean, figures.referenceMean, figures.meanRatio(),
@@ -615,13 +610,13 @@ void compareWithReference(const Options& options, int width, int height, const s
             const float encoded = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
             rgba[4 * p + c] = static_cast<std::uint8_t>(std::lround(encoded * 255.0f));
         }
-    lit::writePng(options.difference, width, height, rgba);
+    lit::writePng(options.difference, truth.width, truth.height, rgba);
     std::printf("wrote %s (relative error, ramp ends at ±%.0f %%)\n", options.difference.string().c_str(), 100.0 * maxError);
 }
 
 // --reference: path-trace the still on the CPU and write the same images as the rasterizer.
 int runReference(const Options& options, const lit::Scene& scene, int cameraIndex, const lit::RenderSettings& settings,
-                 lit::Log& log) {
+                 const lit::HdrImage* compareTruth, lit::Log& log) {
     const Clock::time_point buildStart = Clock::now();
     // A scene without lights is lit by the rasterizer's default sun (scene/Sky.h); give the
     // reference the same sun as a light of its own copy of the scene.
@@ -701,7 +696,7 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
         written += (written.empty() ? "" : " and ") + options.hdr.string();
     }
     if (!written.empty()) std::printf("wrote %s\n", written.c_str());
-    compareWithReference(options, settings.width, settings.height, rgb);
+    if (compareTruth) compareWithReference(options, *compareTruth, rgb);
     if (interrupted) {
         std::fprintf(stderr, "lit-render: interrupted after %d of %d samples per pixel; the image so far was written\n",
                      tracer.samplesDone(), spp);
@@ -765,14 +760,15 @@ int run(const Options& options) {
     }
     settings = lit::cli::applyOptions(options, settings);
     // The reference is read now, before a render that may take minutes, so a wrong name or size
-    // fails at once; it is read again (cheaply) when the image is there.
+    // fails at once.
+    std::optional<lit::HdrImage> compareTruth;
     if (!options.compare.empty()) {
-        lit::HdrImage truth;
         try {
-            truth = lit::readHdr(options.compare);
+            compareTruth = lit::readHdr(options.compare);
         } catch (const std::exception& e) {
             throw UsageError(std::string("--compare: ") + e.what());
         }
+        const lit::HdrImage& truth = *compareTruth;
         if (truth.width != settings.width || truth.height != settings.height)
             throw UsageError(options.compare.string() + " is " + std::to_string(truth.width) + "x" +
                            std::to_string(truth.height) + ", the image will be " + std::to_string(settings.width) + "x" +
@@ -798,7 +794,7 @@ int run(const Options& options) {
     }
     lit::addDefaultCamera(scene, log);
     const int cameraIndex = lit::cli::resolveCamera(options, scene);
-    if (options.reference) return runReference(options, scene, cameraIndex, settings, log);
+    if (options.reference) return runReference(options, scene, cameraIndex, settings, compareTruth ? &*compareTruth : nullptr, log);
     const std::optional<lit::CameraPath> path = options.path ? std::optional(loadPath(options)) : std::nullopt;
 
     lit::HeadlessContext context;
@@ -867,13 +863,13 @@ int run(const Options& options) {
         lit::writePng(options.out, settings.width, settings.height, rgba);
         written = options.out.string();
     }
-    if (!options.hdr.empty() || !options.compare.empty()) {
+    if (!options.hdr.empty() || compareTruth) {
         const std::vector<float> rgb = renderer.readHdrRgb();
         if (!options.hdr.empty()) {
             lit::writeHdr(options.hdr, settings.width, settings.height, rgb);
             written += (written.empty() ? "" : " and ") + options.hdr.string();
         }
-        compareWithReference(options, settings.width, settings.height, rgb);
+        if (compareTruth) compareWithReference(options, *compareTruth, rgb);
     }
     if (!written.empty())
         std::printf("wrote %s (%d\u00d7%d, %.2f s)\n", written.c_str(), settings.width, settings.height, secondsSince(renderStart));
