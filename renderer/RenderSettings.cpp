@@ -144,6 +144,33 @@ std::optional<SkyMode> parseSkyMode(std::string_view text) {
     return std::nullopt;
 }
 
+std::string_view toString(GiMode mode) {
+    switch (mode) {
+    case GiMode::Fast: return "fast";
+    case GiMode::Accurate: return "accurate";
+    case GiMode::Custom: break;
+    }
+    return "custom";
+}
+
+std::optional<GiMode> parseGiMode(std::string_view text) {
+    if (text == "fast") return GiMode::Fast;
+    if (text == "accurate") return GiMode::Accurate;
+    return std::nullopt;
+}
+
+GiMode giModeOf(const RenderSettings& settings) {
+    if (!settings.anisotropicVoxels && settings.coneFootprintPerHeight == 0.0f) return GiMode::Fast;
+    if (settings.anisotropicVoxels && settings.coneFootprintPerHeight == kAccurateGiFootprint) return GiMode::Accurate;
+    return GiMode::Custom;
+}
+
+void setGiMode(RenderSettings& settings, GiMode mode) {
+    if (mode == GiMode::Custom) return;
+    settings.anisotropicVoxels = mode == GiMode::Accurate;
+    settings.coneFootprintPerHeight = mode == GiMode::Accurate ? kAccurateGiFootprint : 0.0f;
+}
+
 std::string toJson(const RenderSettings& settings) {
     nlohmann::json j;
     RenderSettings copy = settings;

@@ -31,7 +31,7 @@ spp="${LIT_SCREENSHOT_SPP:-512}"
 "$render" "$scene" --reference --bounces all --spp "$spp" --size "$size" --out "$out/cornell_reference_all.png"
 "$render" "$scene" --size "$size" --gi on --voxels 128 --compare "$tmpdir/reference_1bounce.hdr" \
     --difference "$out/cornell_gi_difference.png"
-"$render" "$scene" --size "$size" --gi on --voxels 128 --anisotropic on --footprint 0.33 \
+"$render" "$scene" --size "$size" --gi on --voxels 128 --gi-mode accurate \
     --out "$out/cornell_gi_accurate.png" --compare "$tmpdir/reference_1bounce.hdr" \
     --difference "$out/cornell_gi_accurate_difference.png"
 

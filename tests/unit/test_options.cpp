@@ -352,4 +352,30 @@ TEST(Options, FastGiFlags) {
               "--bench-gi-updates needs --bench (the steady frames come first)");
 }
 
+TEST(Options, GiModePresetAndTheFlagsThatOverrideIt) {
+    using lit::GiMode;
+    const lit::RenderSettings defaults;
+    EXPECT_EQ(lit::giModeOf(defaults), GiMode::Fast);
+    const auto settingsFor = [](const std::vector<std::string>& args) {
+        return lit::cli::applyOptions(parseOptions(args), lit::RenderSettings{});
+    };
+    const lit::RenderSettings accurate = settingsFor({"x.gltf", "--out", "a.png", "--gi-mode", "accurate"});
+    EXPECT_TRUE(accurate.anisotropicVoxels);
+    EXPECT_EQ(accurate.coneFootprintPerHeight, lit::kAccurateGiFootprint);
+    EXPECT_EQ(lit::giModeOf(accurate), GiMode::Accurate);
+    // The two fields' own flags win over the preset, whatever their order: the result is Custom.
+    const lit::RenderSettings custom = settingsFor({"x.gltf", "--footprint", "0.5", "--out", "a.png", "--gi-mode", "accurate"});
+    EXPECT_EQ(custom.coneFootprintPerHeight, 0.5f);
+    EXPECT_TRUE(custom.anisotropicVoxels);
+    EXPECT_EQ(lit::giModeOf(custom), GiMode::Custom);
+    // fast puts back what a settings file switched on.
+    lit::RenderSettings fromFile = accurate;
+    const lit::RenderSettings fast = lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "a.png", "--gi-mode", "fast"}), fromFile);
+    EXPECT_EQ(lit::giModeOf(fast), GiMode::Fast);
+    EXPECT_EQ(fast, defaults);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--gi-mode", "custom"}), "--gi-mode expects fast or accurate, got 'custom'");
+    EXPECT_EQ(lit::toString(GiMode::Accurate), "accurate");
+    EXPECT_NE(lit::cli::usageText().find("--gi-mode MODE       fast or accurate (default fast)"), std::string::npos);
+}
+
 }  // namespace

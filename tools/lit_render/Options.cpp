@@ -209,6 +209,10 @@ Options parseOptions(const std::vector<std::string>& args) {
             if (!n || (*n & (*n - 1)) != 0)
                 throw UsageError("--voxels expects a power of two from 64 to 512, got '" + text + "'");
             options.voxels = *n;
+        } else if (flag == "--gi-mode") {
+            const std::string text = value("fast or accurate");
+            options.giMode = parseGiMode(text);
+            if (!options.giMode) throw UsageError("--gi-mode expects fast or accurate, got '" + text + "'");
         } else if (flag == "--anisotropic") {
             const std::string text = value("on or off");
             if (text == "on")
@@ -354,6 +358,7 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
     // --bounces also sets the voxel GI's bounces (at least 1, "all" = the most it does).
     if (options.bounces)
         base.bounces = *options.bounces == kAllReferenceBounces ? kMaxBounces : std::clamp(*options.bounces, 1, kMaxBounces);
+    if (options.giMode) setGiMode(base, *options.giMode);
     if (options.anisotropic) base.anisotropicVoxels = *options.anisotropic;
     if (options.footprint) base.coneFootprintPerHeight = *options.footprint;
     if (options.culling) base.frustumCulling = *options.culling;
@@ -387,7 +392,7 @@ std::string shortUsage() {
     return "usage: lit-render SCENE.gltf --out image.png [--hdr image.hdr] [--size WxH] [--camera NAME|INDEX]\n"
            "                  [--ev STOPS|--exposure X] [--auto-exposure on|off] [--sky MODE] [--sky-hdr FILE.hdr]\n"
            "                  [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
-           "                  [--bounces N] [--anisotropic on|off] [--footprint X]\n"
+           "                  [--bounces N] [--gi-mode fast|accurate] [--anisotropic on|off] [--footprint X]\n"
            "                  [--culling on|off] [--indirect-scale 1|2|4] [--temporal on|off]\n"
            "                  [--cone-subsets on|off]\n"
            "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
@@ -432,6 +437,9 @@ std::string usageText() {
            "  --bounces N|all      light bounces of the voxel GI, 1.." + std::to_string(kMaxBounces) + " (default " +
            std::to_string(defaults.bounces) + "; 1 = one bounce, only direct light is injected; all = " +
            std::to_string(kMaxBounces) + "); with --reference see below\n"
+           "  --gi-mode MODE       fast or accurate (default " + std::string(toString(giModeOf(defaults))) + "): accurate = --anisotropic on\n"
+           "                       --footprint " + formatNumber(kAccurateGiFootprint) + ", the mode measured against the reference\n"
+           "                       (docs/GI.md; several times the cone-trace time); the two flags below override it\n"
            "  --anisotropic on|off directional voxels for the mip levels cones read (default " +
            std::string(defaults.anisotropicVoxels ? "on" : "off") + ")\n"
            "  --footprint X        largest voxel a cone leaving a surface samples, × its height above the\n"
