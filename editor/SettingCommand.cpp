@@ -4,6 +4,7 @@
 
 #include <bit>
 #include <exception>
+#include <optional>
 
 namespace lit::editor {
 
@@ -11,6 +12,14 @@ std::string applySetting(RenderSettings& settings, std::string_view key, std::st
     const std::string name(key);
     if (name == "width" || name == "height")
         return "setting " + name + ": the editor sizes its render from the window (use --size WxH)";
+    // The GI preset is not a field of its own: it names values of anisotropicVoxels and
+    // coneFootprintPerHeight (RenderSettings.h, GiMode).
+    if (name == "giMode") {
+        const std::optional<GiMode> mode = parseGiMode(value);
+        if (!mode) return "setting giMode: expected fast or accurate (got '" + std::string(value) + "')";
+        setGiMode(settings, *mode);
+        return "";
+    }
     // renderSettingsFromJson ignores unknown keys (files from newer versions still load); a
     // script naming one has a typo, so check against the keys toJson writes.
     const nlohmann::json known = nlohmann::json::parse(toJson(settings));

@@ -40,6 +40,20 @@ TEST(EditorSettingCommand, RejectsUnknownKeysBadValuesAndTheWindowSize) {
     EXPECT_EQ(settings, before);  // nothing changed by any of them
 }
 
+// "setting giMode accurate|fast" sets the two fields the preset names (the panel's GI mode combo).
+TEST(EditorSettingCommand, GiModeSetsBothAccuracyFields) {
+    RenderSettings settings;
+    EXPECT_EQ(applySetting(settings, "giMode", "accurate"), "");
+    EXPECT_TRUE(settings.anisotropicVoxels);
+    EXPECT_EQ(settings.coneFootprintPerHeight, lit::kAccurateGiFootprint);
+    EXPECT_EQ(applySetting(settings, "coneFootprintPerHeight", "0.5"), "");
+    EXPECT_EQ(lit::giModeOf(settings), lit::GiMode::Custom);
+    EXPECT_EQ(applySetting(settings, "giMode", "fast"), "");
+    EXPECT_EQ(settings, RenderSettings{});
+    EXPECT_EQ(applySetting(settings, "giMode", "custom"), "setting giMode: expected fast or accurate (got 'custom')");
+    EXPECT_EQ(settings, RenderSettings{});
+}
+
 // The script's "panel NAME on|off" and the View menu name the same flags.
 TEST(EditorPanelFlag, NamesEveryPanelAndRejectsOthers) {
     lit::editor::PanelVisibility visible;
