@@ -196,9 +196,8 @@ struct Renderer::Impl {
     bool voxelsValid = false;
     std::uint64_t voxelGeneration = 0;  // counts voxelizations (the voxel debug views cache by it)
     // Temporal accumulation of the indirect terms: frames accumulated so far (drives the jitter
-    // and cone rotation), the camera of the last resolved frame, and what its history means.
+    // and cone rotation) and what its history means (IndirectResolvePass keeps the history's camera).
     std::uint64_t temporalFrame = 0;
-    glm::mat4 previousViewProjection{1.0f};
     IndirectKey indirectKey;
     // The GI update waiting for its GPU timings to be logged: what ran, why, in which frame.
     std::string pendingGiReason;
@@ -494,13 +493,12 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
             {
                 Profiler::Scope scope(r.profiler, "indirect resolve");
                 r.gbuffer.bindTargets();
-                r.resolve.execute(r.terms, r.coneTrace, r.voxels, settings, sampling, r.previousViewProjection);
+                r.resolve.execute(r.terms, r.coneTrace, r.voxels, settings, sampling, frame.viewProjection);
             }
             {
                 Profiler::Scope scope(r.profiler, "indirect fallback");
                 r.fallback.execute(r.resolve, ConeFeatures::of(settings));
             }
-            r.previousViewProjection = frame.viewProjection;
             if (settings.temporalAccumulation) ++r.temporalFrame;
         } else if (giWanted) {
             Profiler::Scope scope(r.profiler, "cone trace");

@@ -119,32 +119,31 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
                                    const Sampling& sampling) {
     const int scale = indirectScale(settings);
     const int w = (settings.width + scale - 1) / scale, h = (settings.height + scale - 1) / scale;
-    if (w != lowWidth_ || h != lowHeight_) {
-        lowWidth_ = w;
-        lowHeight_ = h;
-        lowPacked_ = gl::Texture("indirect terms (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
-        lowGuide_ = gl::Texture("indirect guide (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
-        lowPacked_.setFilter(GL_NEAREST, GL_NEAREST);
-        lowGuide_.setFilter(GL_NEAREST, GL_NEAREST);
-        lowTarget_ = gl::Framebuffer::withColours("indirect (reduced)", {&lowPacked_, &lowGuide_});
-        tracedPacked_ = gl::Texture();
+    if (low_.select(w, h) == TargetsBySize<LowTargets>::Selected::Empty) {
+        LowTargets& t = low_.current();
+        t.packed = gl::Texture("indirect terms (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
+        t.guide = gl::Texture("indirect guide (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
+        t.packed.setFilter(GL_NEAREST, GL_NEAREST);
+        t.guide.setFilter(GL_NEAREST, GL_NEAREST);
+        t.target = gl::Framebuffer::withColours("indirect (reduced)", {&t.packed, &t.guide});
     }
+    LowTargets& t = low_.current();
     const ConeFeatures features = ConeFeatures::of(settings);
-    if (features.footprint && !tracedPacked_) {
-        tracedPacked_ = gl::Texture("indirect terms (reduced, stratified)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
-        tracedPacked_.setFilter(GL_NEAREST, GL_NEAREST);
-        tracedTarget_ = gl::Framebuffer::withColours("indirect (reduced, stratified)", {&tracedPacked_, &lowGuide_});
-        filteredTarget_ = gl::Framebuffer::withColours("indirect (reduced, strata filtered)", {&lowPacked_});
+    if (features.footprint && !t.tracedPacked) {
+        t.tracedPacked = gl::Texture("indirect terms (reduced, stratified)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
+        t.tracedPacked.setFilter(GL_NEAREST, GL_NEAREST);
+        t.tracedTarget = gl::Framebuffer::withColours("indirect (reduced, stratified)", {&t.tracedPacked, &t.guide});
+        t.filteredTarget = gl::Framebuffer::withColours("indirect (reduced, strata filtered)", {&t.packed});
     }
     const Work work = workFor(settings);
     const GLuint zero[4] = {0, 0, 0, 0};
     if ((!work.diffuse && !work.specular) || !volume.radiance()) {
-        glClearNamedFramebufferuiv(lowTarget_.id(), GL_COLOR, 0, zero);
-        glClearNamedFramebufferuiv(lowTarget_.id(), GL_COLOR, 1, zero);
+        glClearNamedFramebufferuiv(t.target.id(), GL_COLOR, 0, zero);
+        glClearNamedFramebufferuiv(t.target.id(), GL_COLOR, 1, zero);
         return;
     }
     bindAlbedoTable();
-    (features.footprint ? tracedTarget_ : lowTarget_).bind();
+    (features.footprint ? t.tracedTarget : t.target).bind();
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
@@ -162,7 +161,7 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     glProgramUniform1f(id, program.location("uRotation"), sampling.rotation);
     if (subsets) glProgramUniform1i(id, program.location("uConeSubset"), sampling.coneSubset);
     triangle_.draw();
-    if (features.footprint) strataFilter_.execute(tracedPacked_, lowGuide_, filteredTarget_, w, h);
+    if (features.footprint) strataFilter_.execute(t.tracedPacked, t.guide, t.filteredTarget, w, h);
 }
 
 }  // namespace lit

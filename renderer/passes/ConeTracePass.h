@@ -14,6 +14,7 @@
 #include "passes/ConeProgram.h"
 #include "passes/ConeStrataFilterPass.h"
 #include "passes/Pass.h"
+#include "passes/TargetsBySize.h"
 
 #include <glm/glm.hpp>
 
@@ -67,8 +68,8 @@ public:
     // (indirect.glsl), read by IndirectResolvePass. With footprint-bounded cones each texel traces
     // its stratified cone set and lowPacked() holds the trace after ConeStrataFilterPass.
     void executeReduced(const VoxelVolume& volume, const RenderSettings& settings, const Sampling& sampling);
-    const gl::Texture& lowPacked() const { return lowPacked_; }  // RGBA32UI
-    const gl::Texture& lowGuide() const { return lowGuide_; }    // RGBA32UI
+    const gl::Texture& lowPacked() const { return low_->packed; }  // RGBA32UI
+    const gl::Texture& lowGuide() const { return low_->guide; }    // RGBA32UI
 
     // Which of the two terms a frame with `settings` needs traced.
     struct Work {
@@ -93,14 +94,19 @@ private:
     gl::Program albedoProgram_;
     ConeProgram reducedProgram_;
     ConeProgram reducedSubsetProgram_;  // indirect_trace.frag.glsl with LIT_CONE_SUBSETS 1
-    gl::Texture lowPacked_, lowGuide_;  // RGBA32UI, ⌈width/s⌉ × ⌈height/s⌉
-    gl::Framebuffer lowTarget_;
-    // Footprint-bounded cones: the trace goes to tracedPacked_ (+ lowGuide_), the strata filter
-    // writes lowPacked_ from it (allocated on first use, at the low-resolution size).
+    // The low-resolution targets of one size, kept for two sizes (the editor's interactive render
+    // scale switches back and forth; TargetsBySize): RGBA32UI, ⌈width/s⌉ × ⌈height/s⌉.
+    struct LowTargets {
+        int width = 0, height = 0;
+        gl::Texture packed, guide;
+        gl::Framebuffer target;
+        // Footprint-bounded cones: the trace goes to tracedPacked (+ guide), the strata filter
+        // writes packed from it (allocated on first use).
+        gl::Texture tracedPacked;
+        gl::Framebuffer tracedTarget, filteredTarget;
+    };
+    TargetsBySize<LowTargets> low_;
     ConeStrataFilterPass strataFilter_;
-    gl::Texture tracedPacked_;
-    gl::Framebuffer tracedTarget_, filteredTarget_;
-    int lowWidth_ = 0, lowHeight_ = 0;
     GLuint albedoTableBuiltWith_ = 0;  // albedoProgram_ id the table was built with (hot reload)
     gl::Texture albedoTable_;
     gl::Framebuffer albedoTarget_;

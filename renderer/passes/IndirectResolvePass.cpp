@@ -14,60 +14,58 @@ IndirectResolvePass::IndirectResolvePass(const std::filesystem::path& shaderRoot
     : program_(shaderRoot, "indirect resolve",
                {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_resolve.frag.glsl"}}) {}
 
-void IndirectResolvePass::ensureTargets(const LightingTerms& terms) {
-    const GLuint diffuseId = terms.texture(Term::IndirectDiffuse).id();
-    const GLuint specularId = terms.texture(Term::IndirectSpecular).id();
-    if (traceMask_ && terms.width() == traceMask_.desc().width && terms.height() == traceMask_.desc().height &&
-        diffuseId == plainTermIds_[0] && specularId == plainTermIds_[1])
-        return;
-    plainTermIds_[0] = diffuseId;
-    plainTermIds_[1] = specularId;
-    // Only 0 and 1 are written: 16 bits is the smallest depth format.
-    traceMask_ =
-        gl::Texture("indirect trace mask", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT16, terms.width(), terms.height(), 1, 1});
-    plainTarget_ = gl::Framebuffer("indirect resolve");
-    plainTarget_.attach(GL_COLOR_ATTACHMENT0, terms.texture(Term::IndirectDiffuse));
-    plainTarget_.attach(GL_COLOR_ATTACHMENT1, terms.texture(Term::IndirectSpecular));
-    plainTarget_.attach(GL_DEPTH_ATTACHMENT, traceMask_);
-    plainTarget_.setDrawBuffers(2);  // outputs 2..4 (history) have no buffer and are dropped
-    plainTarget_.checkComplete("indirect resolve");
-    width_ = 0;  // the history targets hold the old mask: rebuild them too
-}
-
-void IndirectResolvePass::ensureHistory(const LightingTerms& terms) {
-    const GLuint diffuseId = terms.texture(Term::IndirectDiffuse).id();
-    const GLuint specularId = terms.texture(Term::IndirectSpecular).id();
-    if (terms.width() == width_ && terms.height() == height_ && diffuseId == termIds_[0] && specularId == termIds_[1])
-        return;
-    width_ = terms.width();
-    height_ = terms.height();
-    termIds_[0] = diffuseId;
-    termIds_[1] = specularId;
-    for (HistorySet& set : history_) {
-        set.diffuse = gl::Texture("indirect history diffuse", {GL_TEXTURE_2D, GL_RGBA16F, width_, height_, 1, 1});
-        set.specular = gl::Texture("indirect history specular", {GL_TEXTURE_2D, GL_RGBA16F, width_, height_, 1, 1});
-        // Clip w is a distance in metres: 16F keeps 11 bits, 0.05 % of it, far below the 2 %
-        // rejection tolerance.
-        set.guide = gl::Texture("indirect history guide", {GL_TEXTURE_2D, GL_RGBA16F, width_, height_, 1, 1});
-        for (const gl::Texture* t : {&set.diffuse, &set.specular, &set.guide}) t->setFilter(GL_NEAREST, GL_NEAREST);
+IndirectResolvePass::Targets& IndirectResolvePass::targetsFor(const LightingTerms& terms, bool temporal) {
+    targets_.select(terms.width(), terms.height());
+    Targets& t = targets_.current();
+    if (!t.traceMask) {
+        // Only 0 and 1 are written: 16 bits is the smallest depth format.
+        t.traceMask = gl::Texture("indirect trace mask", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT16, t.width, t.height, 1, 1});
+        t.termIds[0] = t.termIds[1] = 0;
+    }
+    const bool historyAllocated = static_cast<bool>(t.history[0].diffuse);
+    if (temporal && !historyAllocated) {
+        for (HistorySet& set : t.history) {
+            set.diffuse = gl::Texture("indirect history diffuse", {GL_TEXTURE_2D, GL_RGBA16F, t.width, t.height, 1, 1});
+            set.specular = gl::Texture("indirect history specular", {GL_TEXTURE_2D, GL_RGBA16F, t.width, t.height, 1, 1});
+            // Clip w is a distance in metres: 16F keeps 11 bits, 0.05 % of it, far below the 2 %
+            // rejection tolerance.
+            set.guide = gl::Texture("indirect history guide", {GL_TEXTURE_2D, GL_RGBA16F, t.width, t.height, 1, 1});
+            for (const gl::Texture* h : {&set.diffuse, &set.specular, &set.guide}) h->setFilter(GL_NEAREST, GL_NEAREST);
+        }
+        t.historyWritten = false;  // new textures hold nothing
+    }
+    // The framebuffers write the terms' textures of this size: rebuilt when those were reallocated.
+    const GLuint ids[2] = {terms.texture(Term::IndirectDiffuse).id(), terms.texture(Term::IndirectSpecular).id()};
+    if (ids[0] == t.termIds[0] && ids[1] == t.termIds[1] && historyAllocated == static_cast<bool>(t.history[0].diffuse))
+        return t;
+    t.termIds[0] = ids[0];
+    t.termIds[1] = ids[1];
+    t.plainTarget = gl::Framebuffer("indirect resolve");
+    t.plainTarget.attach(GL_COLOR_ATTACHMENT0, terms.texture(Term::IndirectDiffuse));
+    t.plainTarget.attach(GL_COLOR_ATTACHMENT1, terms.texture(Term::IndirectSpecular));
+    t.plainTarget.attach(GL_DEPTH_ATTACHMENT, t.traceMask);
+    t.plainTarget.setDrawBuffers(2);  // outputs 2..4 (history) have no buffer and are dropped
+    t.plainTarget.checkComplete("indirect resolve");
+    if (!t.history[0].diffuse) return t;
+    for (HistorySet& set : t.history) {
         set.target = gl::Framebuffer("indirect resolve");
         set.target.attach(GL_COLOR_ATTACHMENT0, terms.texture(Term::IndirectDiffuse));
         set.target.attach(GL_COLOR_ATTACHMENT1, terms.texture(Term::IndirectSpecular));
         set.target.attach(GL_COLOR_ATTACHMENT2, set.diffuse);
         set.target.attach(GL_COLOR_ATTACHMENT3, set.specular);
         set.target.attach(GL_COLOR_ATTACHMENT4, set.guide);
-        set.target.attach(GL_DEPTH_ATTACHMENT, traceMask_);
+        set.target.attach(GL_DEPTH_ATTACHMENT, t.traceMask);
         set.target.setDrawBuffers(5);
         set.target.checkComplete("indirect resolve");
     }
-    historyValid_ = false;  // a new size has no history
+    return t;
 }
 
 void IndirectResolvePass::bindInputs(const gl::Program& program) const {
     last_.target->bind();
-    glViewport(0, 0, traceMask_.desc().width, traceMask_.desc().height);
+    glViewport(0, 0, last_.targets->width, last_.targets->height);
     if (last_.history >= 0) {
-        const HistorySet& read = history_[last_.history];
+        const HistorySet& read = last_.targets->history[last_.history];
         read.diffuse.bind(LIT_TEX_HISTORY_DIFFUSE);
         read.specular.bind(LIT_TEX_HISTORY_SPECULAR);
         read.guide.bind(LIT_TEX_HISTORY_GUIDE);
@@ -97,24 +95,27 @@ bool IndirectResolvePass::bindForFallback(const gl::Program& program) const {
 
 void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& cone, const VoxelVolume& volume,
                                   const RenderSettings& settings, const ConeTracePass::Sampling& sampling,
-                                  const glm::mat4& previousViewProjection) {
+                                  const glm::mat4& viewProjection) {
     last_.ran = false;
     const ConeTracePass::Work work = ConeTracePass::workFor(settings);
     if ((!work.diffuse && !work.specular) || !volume.radiance()) {
         terms.clearIndirect();
-        historyValid_ = false;
+        resetHistory();
         return;
     }
-    ensureTargets(terms);
     const bool temporal = settings.temporalAccumulation;
+    Targets& t = targetsFor(terms, temporal);
+    last_.targets = &t;
     last_.history = -1;
+    last_.historyValid = false;
     if (temporal) {
-        ensureHistory(terms);
-        current_ = 1 - current_;
-        last_.history = 1 - current_;
-        last_.target = &history_[current_].target;
+        last_.historyValid = historyUsable(t, generation_);
+        last_.previousViewProjection = t.viewProjection;
+        t.current = 1 - t.current;
+        last_.history = 1 - t.current;
+        last_.target = &t.history[t.current].target;
     } else {
-        last_.target = &plainTarget_;
+        last_.target = &t.plainTarget;
     }
     last_.cone = &cone;
     last_.volume = &volume;
@@ -122,9 +123,7 @@ void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& con
     last_.smoothRoughness = settings.specularFullResRoughness;
     last_.scale = ConeTracePass::indirectScale(settings);
     last_.sampling = sampling;
-    last_.historyValid = temporal && historyValid_;
     last_.maxFrames = std::max(settings.temporalMaxFrames, 1);
-    last_.previousViewProjection = previousViewProjection;
     bindInputs(program_);
     // Every pixel writes the trace mask (gl_FragDepth): the depth test must be on to write it.
     glEnable(GL_DEPTH_TEST);
@@ -135,7 +134,11 @@ void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& con
     triangle_.draw();
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    historyValid_ = temporal;
+    // The history (only a temporal frame writes it) and the camera it was written with; the other
+    // size's history is left as it is, for when that size comes back.
+    t.historyWritten = temporal;
+    t.generation = generation_;
+    t.viewProjection = viewProjection;
     last_.ran = true;
 }
 

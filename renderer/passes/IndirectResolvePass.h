@@ -10,13 +10,18 @@
 //
 // History: two sets (ping-pong) of full-resolution textures, demodulated diffuse and specular
 // (a = frames accumulated) and a guide (normal, clip w) for the rejection test. It is dropped
-// (resetHistory) on scene edits and when what the terms mean changes; a resize drops it too.
+// (resetHistory) on scene edits and when what the terms mean changes. The targets and history are
+// kept per size for two sizes (TargetsBySize): the editor's interactive render scale switches to a
+// small size while the camera moves and back when it stops, and the still frame then finds its
+// size's history (with the camera it was written with) and its targets instead of starting afresh
+// and reallocating them (docs/PERFORMANCE.md, "Editor: history kept per size").
 
 #include <cstdint>
 #include <glm/glm.hpp>
 
 #include "passes/ConeTracePass.h"
 #include "passes/Pass.h"
+#include "passes/TargetsBySize.h"
 
 namespace lit {
 
@@ -32,15 +37,16 @@ public:
     // (ConeTracePass::executeReduced of this frame with the same settings and `sampling`).
     // Expects bound as for ConeTracePass: the G-buffer, the frame UBO (this frame's camera), the
     // voxel UBO; binds the radiance volume and albedo table itself. With
-    // settings.temporalAccumulation the history of the last frame is blended in when it is valid
-    // (same size, no reset since), reprojected with `previousViewProjection`.
+    // settings.temporalAccumulation the history of the last temporal frame at this size is blended
+    // in when it is valid (no reset since), reprojected with the view-projection of the frame that
+    // wrote it; `viewProjection` is this frame's (world → clip), kept with the history it writes.
     void execute(const LightingTerms& terms, ConeTracePass& cone, const VoxelVolume& volume,
                  const RenderSettings& settings, const ConeTracePass::Sampling& sampling,
-                 const glm::mat4& previousViewProjection);
+                 const glm::mat4& viewProjection);
 
-    // The next frame starts without history (scene edit, settings that change the terms).
-    void resetHistory() { historyValid_ = false; }
-    bool historyValid() const { return historyValid_; }
+    // The next frame starts without history (scene edit, settings that change the terms), at
+    // every size.
+    void resetHistory() { ++generation_; }
 
     std::vector<gl::Program*> programs() override { return {&program_}; }
 
@@ -50,9 +56,27 @@ public:
     bool bindForFallback(const gl::Program& program) const;
 
 private:
+    struct HistorySet {
+        gl::Texture diffuse, specular, guide;
+        gl::Framebuffer target;  // L_ID, L_IS of the terms, then these three; depth: the trace mask
+    };
+    // Everything of one size (TargetsBySize swaps it whole).
+    struct Targets {
+        int width = 0, height = 0;
+        // Trace mask: 16-bit depth, only 0 (trace here) and 1 are written.
+        gl::Texture traceMask;
+        gl::Framebuffer plainTarget;  // without temporal accumulation: L_ID, L_IS and the trace mask
+        HistorySet history[2];        // allocated by the first temporal frame at this size
+        GLuint termIds[2] = {0, 0};   // term textures the framebuffers were built with
+        int current = 0;              // set written last; the other one is read next
+        bool historyWritten = false;  // a temporal frame wrote history[current] ...
+        std::uint64_t generation = 0;  // ... while generation_ had this value ...
+        glm::mat4 viewProjection{1.0f};  // ... with this camera
+    };
     // What execute() drew with, for bindForFallback.
     struct Inputs {
         bool ran = false;
+        const Targets* targets = nullptr;
         const gl::Framebuffer* target = nullptr;
         ConeTracePass* cone = nullptr;
         const VoxelVolume* volume = nullptr;
@@ -65,26 +89,18 @@ private:
         int maxFrames = 1;
         glm::mat4 previousViewProjection{1.0f};
     };
-    void ensureTargets(const LightingTerms& terms);
-    void ensureHistory(const LightingTerms& terms);
+    // The targets of the terms' size, (re)built as needed; with `temporal` the history sets too.
+    Targets& targetsFor(const LightingTerms& terms, bool temporal);
+    static bool historyUsable(const Targets& t, std::uint64_t generation) {
+        return t.historyWritten && t.generation == generation;
+    }
     void bindInputs(const gl::Program& program) const;
 
     gl::Program program_;
     FullscreenTriangle triangle_;
-    // Trace mask: 16-bit depth, only 0 (trace here) and 1 are written.
-    gl::Texture traceMask_;
-    gl::Framebuffer plainTarget_;  // without temporal accumulation: L_ID, L_IS and the trace mask
+    TargetsBySize<Targets> targets_;
     Inputs last_;
-    struct HistorySet {
-        gl::Texture diffuse, specular, guide;
-        gl::Framebuffer target;  // L_ID, L_IS of the terms, then these three; depth: the trace mask
-    };
-    HistorySet history_[2];
-    int current_ = 0;  // set written this frame; the other one is read
-    int width_ = 0, height_ = 0;
-    GLuint termIds_[2] = {0, 0};       // term textures the history targets were built with
-    GLuint plainTermIds_[2] = {0, 0};  // and the plain target
-    bool historyValid_ = false;
+    std::uint64_t generation_ = 1;  // resetHistory counts up: history of an older one is stale
 };
 
 }  // namespace lit

@@ -1,5 +1,6 @@
-// TargetsBySize keeps a pass's targets for the size in use and the size before it (the editor's
-// interactive render scale switches between two sizes; see passes/TargetsBySize.h).
+// TargetsBySize keeps a pass's targets for the size in use and one other size, the larger one when
+// a third comes (the editor's interactive render scale switches between the full size and smaller
+// ones; see passes/TargetsBySize.h).
 
 #include "passes/TargetsBySize.h"
 
@@ -45,20 +46,30 @@ TEST(TargetsBySize, SwitchingBetweenTwoSizesReusesBothSets) {
     }
 }
 
-TEST(TargetsBySize, AThirdSizeReplacesTheOlderSetAndKeepsTheNewer) {
+// A third size replaces the smaller set: the editor's interactive scale uses several small sizes in
+// one motion, and the still (full) size must survive them.
+TEST(TargetsBySize, AThirdSizeReplacesTheSmallerSetAndKeepsTheLarger) {
     TargetsBySize<FakeTargets> targets;
     int nextSerial = 1;
-    ASSERT_EQ(targets.select(100, 100), Selected::Empty);
+    ASSERT_EQ(targets.select(1280, 720), Selected::Empty);
+    const int full = allocate(targets, nextSerial);
+    ASSERT_EQ(targets.select(256, 144), Selected::Empty);  // the motion starts
     allocate(targets, nextSerial);
-    ASSERT_EQ(targets.select(50, 50), Selected::Empty);
-    const int fifty = allocate(targets, nextSerial);
-    ASSERT_EQ(targets.select(25, 25), Selected::Empty);  // the 100×100 set is dropped
+    ASSERT_EQ(targets.select(128, 72), Selected::Empty);   // its scale drops: 256×144 is dropped
     EXPECT_EQ(targets->serial, nullptr) << "a new size starts from an empty set";
-    EXPECT_EQ(targets->width, 25);
+    EXPECT_EQ(targets->width, 128);
     allocate(targets, nextSerial);
-    EXPECT_EQ(targets.select(50, 50), Selected::Reused);
-    EXPECT_EQ(*targets->serial, fifty);
-    EXPECT_EQ(targets.select(100, 100), Selected::Empty);
+    ASSERT_EQ(targets.select(192, 108), Selected::Empty);  // and rises: 128×72 is dropped
+    allocate(targets, nextSerial);
+    EXPECT_EQ(targets.select(1280, 720), Selected::Reused) << "the still size survives the motion's sizes";
+    EXPECT_EQ(*targets->serial, full);
+    EXPECT_EQ(targets.select(128, 72), Selected::Empty) << "dropped by 192×108, not reused";
+    // A larger third size (a bigger window) replaces the smaller set too: the old full size stays.
+    allocate(targets, nextSerial);
+    ASSERT_EQ(targets.select(1920, 1080), Selected::Empty);
+    allocate(targets, nextSerial);
+    EXPECT_EQ(targets.select(1280, 720), Selected::Reused);
+    EXPECT_EQ(*targets->serial, full);
 }
 
 }  // namespace
