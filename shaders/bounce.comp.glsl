@@ -19,8 +19,8 @@
 // Accurate mode (LIT_CONE_FOOTPRINT, footprint-bounded cones): a voxel traces one of the
 // stratified cone sets of cone_strata.glsl instead of the fixed six-cone set, chosen by its
 // coordinates across its surface (voxelConeSetIndex), so that each 4 × 4 patch of a surface's voxels
-// holds all 16 sets and the mip levels the pixels' cones read average them (docs/GI.md, "Bounces
-// with the stratified sets"). The fixed set's pencils would otherwise give every voxel the same
+// holds all 16 sets and the mip levels the pixels' cones read average them (docs/GI.md, "The
+// cone-direction view and the bounces with the stratified sets"). The fixed set's pencils would otherwise give every voxel the same
 // few directions (what they happen to hit), as they did to the pixels before the sets.
 //
 // Defines set by InjectPass: LIT_BOUNCE_RGBA8 (1: rgba8 direct volume, 0: rgba16f).

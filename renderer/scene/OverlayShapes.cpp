@@ -282,9 +282,10 @@ std::vector<ConeSample> coneSamples(const TracedCone& cone, float voxelSize, flo
     const auto bound = [&](float t) {
         return bounded ? cone.footprintPerHeight * (cone.startHeight + cone.heightPerDistance * t) : 1e30f;
     };
-    float t = voxelSize;
+    constexpr int kConeMaxSteps = 1800;  // cone.glsl
+    float t = voxelSize;                 // kConeStartVoxels = 1
     const float end = std::min(upTo, cone.length);
-    for (int i = 0; i < 1800 && t <= end; ++i) {
+    for (int i = 0; i < kConeMaxSteps && t <= end; ++i) {
         const float stepLength = std::max(stepScale * std::max(voxelSize, std::min(widthPerDistance * t, bound(t))),
                                           0.5f * voxelSize);
         const float tMid = t + 0.5f * stepLength;
