@@ -133,6 +133,26 @@ void addCones(const Document& doc, const OverlayOptions& options, ViewportOverla
         // marching (docs/GI.md): drawn faint, so the view shows what is really traced.
         glm::vec4 color = cone.specular ? kSpecularConeColor : kDiffuseConeColor;
         if (!cone.marched) color.a *= 0.3f;
+        if (cone.footprintPerHeight > 0.0f && surface.voxelSize > 0.0f) {
+            // A footprint-bounded cone (the accurate mode's stratified set) reads voxels no wider
+            // than a third of its height above the surface: near the surface it is a pencil, not
+            // the 60° cone its aperture says. Drawn as its axis and, at each sample of its march,
+            // a circle as wide as the voxels that sample reads. With anisotropic voxels a sample
+            // from level 1 on blends the X, Y and Z directional faces by direction² (cone.glsl,
+            // sampleRadiance): those circles show the blend as colour (red X, green Y, blue Z, as
+            // the gizmo's axes); finer samples, which mix in the isotropic level 0, keep the cone's.
+            overlay.linesOnTop.push_back({cone.apex, cone.apex + cone.direction * length, color});
+            const glm::vec3 faces = cone.direction * cone.direction;
+            const glm::vec4 faceColor(faces / std::max({faces.x, faces.y, faces.z, 1e-6f}), color.a);
+            for (const ConeSample& sample :
+                 coneSamples(cone, surface.voxelSize, surface.volumeSide, doc.settings.coneStepScale, length)) {
+                const bool blendsFaces = doc.settings.anisotropicVoxels && sample.diameter >= 2.0f * surface.voxelSize;
+                append(overlay.linesOnTop, circleLines(cone.apex + cone.direction * sample.tMid, cone.direction,
+                                                       0.5f * sample.diameter, blendsFaces ? faceColor : color,
+                                                       kConeSampleCircleSegments));
+            }
+            continue;
+        }
         append(overlay.linesOnTop, coneLines(cone.apex, cone.direction, cone.aperture, length, color));
     }
 }

@@ -27,6 +27,11 @@ struct OverlayOptions {
     glm::vec3 coneCameraPosition{0.0f};
 };
 
+// Segments of the circles drawn at the samples of footprint-bounded cones (cone directions view,
+// accurate mode): ~30 samples per cone within the drawn quarter volume at 128³, so fewer than the
+// shapes' 32 keep the overlay at a few thousand lines.
+inline constexpr int kConeSampleCircleSegments = 12;
+
 // Samples per path segment for the curve: smooth at editor sizes, cheap to rebuild each frame.
 inline constexpr int kPathCurveSamplesPerKey = 24;
 

@@ -3,7 +3,7 @@
 // outgoing radiance becomes its direct radiance plus what it reflects of the light the volume
 // holds now,
 //   L_{k+1} = L_direct + albedo · Σ_i W_i/π · C_i(L_k)                (W/(sr·m²))
-// with the same six diffuse cones a pixel traces (cone.glsl, traceDiffuse), from the voxel centre
+// with six diffuse cones as a pixel traces them (cone.glsl, traceDiffuse), from the voxel centre
 // pushed out along its averaged normal. After bounce k the volume holds light that bounced up to
 // k times (k = 1 is direct light only), so a pixel that traces it sees k + 1 bounces in all.
 // Voxels whose normals disagree (both sides of a thin wall) gather over both hemispheres and
@@ -16,8 +16,16 @@
 // over the grid a SIMD vector that holds one of them pays for the whole vector's cones: the
 // list packs occupied voxels densely (docs/GI.md, "Bounces", measured 128³).
 //
+// Accurate mode (LIT_CONE_FOOTPRINT, footprint-bounded cones): a voxel traces one of the
+// stratified cone sets of cone_strata.glsl instead of the fixed six-cone set, chosen by its
+// coordinates across its surface (voxelConeSetIndex), so that each 4 × 4 patch of a surface's voxels
+// holds all 16 sets and the mip levels the pixels' cones read average them (docs/GI.md, "The
+// cone-direction view and the bounces with the stratified sets"). The fixed set's pencils would otherwise give every voxel the same
+// few directions (what they happen to hit), as they did to the pixels before the sets.
+//
 // Defines set by InjectPass: LIT_BOUNCE_RGBA8 (1: rgba8 direct volume, 0: rgba16f).
 #include "cone.glsl"
+#include "cone_strata.glsl"
 
 layout(local_size_x = LIT_INJECT_GROUP_SIZE, local_size_y = LIT_INJECT_GROUP_SIZE, local_size_z = LIT_INJECT_GROUP_SIZE) in;
 
@@ -36,6 +44,16 @@ layout(binding = LIT_IMG_VOXEL_BOUNCE) uniform writeonly image3D voxelBounce;
 
 const float kOneSidedMinLength = 0.5;    // as inject.comp.glsl
 const float kDirectionMinLength = 0.05;  // as inject.comp.glsl
+
+// Irradiance/π of voxel v's surface seen from the cone origin `origin` with normal `normal`.
+vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float maxDistance) {
+#if LIT_CONE_FOOTPRINT
+    vec3 cones[kDiffuseConeCount];
+    return traceDiffuseStratified(origin, tangentFrame(normal), voxelConeSetIndex(v, normal), aperture, maxDistance, cones);
+#else
+    return traceDiffuse(origin, normal, aperture, maxDistance);
+#endif
+}
 
 void main() {
     ivec3 v;
@@ -57,9 +75,9 @@ void main() {
     vec3 normal = agreement >= kDirectionMinLength ? averaged / agreement : vec3(0.0, 1.0, 0.0);
     vec3 centre = voxelCenter(v);
     float aperture = voxel.traceParams.w, maxDistance = voxel.traceParams.y;
-    vec3 irradiance = traceDiffuse(coneOrigin(centre, normal), normal, aperture, maxDistance);
+    vec3 irradiance = bounceIrradiance(v, coneOrigin(centre, normal), normal, aperture, maxDistance);
     if (agreement < kOneSidedMinLength)
-        irradiance = 0.5 * (irradiance + traceDiffuse(coneOrigin(centre, -normal), -normal, aperture, maxDistance));
+        irradiance = 0.5 * (irradiance + bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance));
     vec3 radiance = decodeRadiance(direct.rgb) + albedo.rgb * irradiance * voxel.traceParams.x;
     imageStore(voxelBounce, v, vec4(encodeRadiance(radiance), 1.0));
 }

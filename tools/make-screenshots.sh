@@ -2,6 +2,7 @@
 # Regenerates the images under screenshots/ that the README shows, from the current build:
 # the Cornell box with GI off and on, each lighting term alone, the voxel view, and the editor
 # (its panels with a selection and a camera path, the voxel slice view, the cone directions view
+# in the default and in the accurate GI mode,
 # and the performance overlay), the editor ones driven by a --script run, and Sponza lit by the
 # default sun and sky when the shared scenes are there.
 # Usage: tools/make-screenshots.sh [SIZE] (default 512x512; the editor is captured at 1280x720)
@@ -74,6 +75,14 @@ wait 1
 pick 520 560
 wait 1
 screenshot $out/editor_cone_directions.png ui
+setting anisotropicVoxels true
+setting coneFootprintPerHeight 0.33
+wait 2
+pick 520 560
+wait 1
+screenshot $out/editor_cone_directions_accurate.png ui
+setting anisotropicVoxels false
+setting coneFootprintPerHeight 0
 view final
 panel settings off
 panel camera off

@@ -1,5 +1,7 @@
 #include "scene/OverlayShapes.h"
 
+#include "passes/ConeProgram.h"
+#include "passes/ConeTracePass.h"
 #include "scene/Scene.h"
 
 #include <shared.h>
@@ -37,10 +39,10 @@ glm::vec3 perpendicular(const glm::vec3& v) {
 }
 
 void addCircle(std::vector<OverlayLine>& lines, const glm::vec3& centre, const glm::vec3& u, const glm::vec3& v,
-               float radius, const glm::vec4& color) {
-    for (int i = 0; i < kOverlayCircleSegments; ++i) {
-        const float a0 = 2.0f * kPi * float(i) / float(kOverlayCircleSegments);
-        const float a1 = 2.0f * kPi * float(i + 1) / float(kOverlayCircleSegments);
+               float radius, const glm::vec4& color, int segments = kOverlayCircleSegments) {
+    for (int i = 0; i < segments; ++i) {
+        const float a0 = 2.0f * kPi * float(i) / float(segments);
+        const float a1 = 2.0f * kPi * float(i + 1) / float(segments);
         lines.push_back({centre + radius * (std::cos(a0) * u + std::sin(a0) * v),
                          centre + radius * (std::cos(a1) * u + std::sin(a1) * v), color});
     }
@@ -206,6 +208,15 @@ std::vector<OverlayLine> translateGizmoLines(const glm::vec3& origin, float leng
     return lines;
 }
 
+std::vector<OverlayLine> circleLines(const glm::vec3& centre, const glm::vec3& axis, float radius, const glm::vec4& color,
+                                     int segments) {
+    const glm::vec3 a = normalizedOr(axis, {0, 0, -1});
+    const glm::vec3 u = perpendicular(a), v = glm::cross(a, u);
+    std::vector<OverlayLine> lines;
+    addCircle(lines, centre, u, v, radius, color, std::max(segments, 3));
+    return lines;
+}
+
 std::vector<OverlayLine> coneLines(const glm::vec3& apex, const glm::vec3& direction, float apertureRadians,
                                    float length, const glm::vec4& color) {
     const glm::vec3 axis = normalizedOr(direction, {0, 0, -1});
@@ -224,6 +235,67 @@ std::vector<OverlayLine> coneLines(const glm::vec3& apex, const glm::vec3& direc
     return lines;
 }
 
+int coneSetIndex(glm::ivec2 low) {
+    constexpr int strata = LIT_CONE_STRATA;
+    glm::ivec2 cell(static_cast<int>(static_cast<unsigned>(low.x) % unsigned(strata)),
+                    static_cast<int>(static_cast<unsigned>(low.y) % unsigned(strata)));
+    if (strata == 4) cell = ((cell & 1) << 1) | (cell >> 1);
+    return cell.x + strata * cell.y;
+}
+
+glm::vec3 stratifiedDiffuseConeDirection(int i, int setIndex) {
+    constexpr int strata = LIT_CONE_STRATA;
+    const float n = float(strata);
+    if (i == 0) {
+        const int a = setIndex % strata, p = setIndex / strata;
+        const float sin2 = 0.25f * (float(p) + 0.5f) / n;
+        const float phi = 2.0f * kPi * (float(a) + (float(p) + 0.5f) / n) / n;
+        const float s = std::sqrt(sin2);
+        return {s * std::cos(phi), s * std::sin(phi), std::sqrt(1.0f - sin2)};
+    }
+    const int cell = (setIndex + (strata + 1) * (i - 1)) % (strata * strata);
+    const int a = cell % strata, p = cell / strata;
+    const float sin2 = 0.25f + 0.75f * (float(p) + 0.5f) / n;
+    const float phi = (72.0f * kPi / 180.0f) * (float(i - 1) + (float(a) + 0.5f) / n - 0.5f);
+    const float s = std::sqrt(sin2);
+    return {s * std::cos(phi), s * std::sin(phi), std::sqrt(1.0f - sin2)};
+}
+
+int coneSetOfPixel(glm::ivec2 glPixel, const RenderSettings& settings) {
+    if (!ConeFeatures::of(settings).footprint) return -1;
+    // Footprint-bounded cones always take the reduced path (ConeTracePass::reducedPath): texel
+    // (pixel − jitter) / scale, as the resolve's fallback computes it; the jitter is 0 at frame 0.
+    const int scale = ConeTracePass::indirectScale(settings);
+    return coneSetIndex(glm::max(glPixel, glm::ivec2(0)) / scale);
+}
+
+std::vector<ConeSample> coneSamples(const TracedCone& cone, float voxelSize, float volumeSide, float coneStepScale,
+                                    float upTo) {
+    // traceConeFromSurface's LIT_CONE_STEP_GEOMETRY (cone.glsl), without the opacity that ends a real
+    // march; kConeStartVoxels = 1, the step scale clamped as VoxelVolume::updateUniforms does.
+    std::vector<ConeSample> samples;
+    if (voxelSize <= 0.0f) return samples;
+    const float stepScale = std::max(coneStepScale, 0.05f);
+    const float widthPerDistance = 2.0f * std::tan(0.5f * std::clamp(cone.aperture, 0.0f, float(LIT_CONE_APERTURE_MAX)));
+    const float maxLevelVoxelSize = std::max(volumeSide, voxelSize);
+    const bool bounded = cone.footprintPerHeight > 0.0f;
+    const auto bound = [&](float t) {
+        return bounded ? cone.footprintPerHeight * (cone.startHeight + cone.heightPerDistance * t) : 1e30f;
+    };
+    constexpr int kConeMaxSteps = 1800;  // cone.glsl
+    float t = voxelSize;                 // kConeStartVoxels = 1
+    const float end = std::min(upTo, cone.length);
+    for (int i = 0; i < kConeMaxSteps && t <= end; ++i) {
+        const float stepLength = std::max(stepScale * std::max(voxelSize, std::min(widthPerDistance * t, bound(t))),
+                                          0.5f * voxelSize);
+        const float tMid = t + 0.5f * stepLength;
+        const float diameter = std::max(voxelSize, std::min(widthPerDistance * tMid, bound(tMid)));
+        samples.push_back({tMid, std::min(diameter, maxLevelVoxelSize)});
+        t += stepLength;
+    }
+    return samples;
+}
+
 std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec3& cameraPosition,
                                     const RenderSettings& settings) {
     // cone_trace.frag.glsl, main(): view vector, shading normal, cone origin, trace length.
@@ -236,10 +308,24 @@ std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec
     const glm::mat3 basis = tangentFrame(n);
     // traceCone clamps the aperture.
     const float diffuseAperture = std::clamp(settings.diffuseConeAperture, 0.0f, float(LIT_CONE_APERTURE_MAX));
+    // The accurate mode (indirect_trace.frag.glsl, LIT_CONE_FOOTPRINT): the stratified set of the
+    // pixel's low-resolution texel (rotation 0: coneSetRotation), each cone footprint-bounded.
+    const int coneSet = coneSetOfPixel(surface.glPixel, settings);
     if (surface.diffuse)
-        for (int i = 0; i < LIT_DIFFUSE_CONE_COUNT; ++i)
-            cones.push_back({origin, glm::normalize(basis * gpu::kDiffuseConeDirections[i]), diffuseAperture,
-                             maxDistance, gpu::kDiffuseConeWeights[i], false, true});
+        for (int i = 0; i < LIT_DIFFUSE_CONE_COUNT; ++i) {
+            const glm::vec3 local =
+                coneSet >= 0 ? stratifiedDiffuseConeDirection(i, coneSet) : gpu::kDiffuseConeDirections[i];
+            TracedCone cone{origin, glm::normalize(basis * local), diffuseAperture, maxDistance,
+                            gpu::kDiffuseConeWeights[i], false, true};
+            // traceDiffuseCone / traceDiffuseStratified: start height √3 voxels, rising at n·d = local.z.
+            if (coneSet >= 0) {
+                cone.coneSet = coneSet;
+                cone.footprintPerHeight = settings.coneFootprintPerHeight;
+                cone.startHeight = float(LIT_CONE_NORMAL_OFFSET_VOXELS) * surface.voxelSize;
+                cone.heightPerDistance = local.z;
+            }
+            cones.push_back(cone);
+        }
 
     // traceSpecular with the pixel's gl_FragCoord.xy (the pixel centre) and frame index 0.
     const int count = std::clamp(settings.specularSamples, 1, LIT_SPECULAR_MAX_SAMPLES);

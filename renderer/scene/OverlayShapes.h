@@ -44,6 +44,10 @@ std::vector<OverlayLine> translateGizmoLines(const glm::vec3& origin, float leng
 std::vector<OverlayLine> coneLines(const glm::vec3& apex, const glm::vec3& direction, float apertureRadians,
                                    float length, const glm::vec4& color);
 
+// A circle of `radius` metres around `centre` in the plane perpendicular to `axis`, `segments` lines.
+std::vector<OverlayLine> circleLines(const glm::vec3& centre, const glm::vec3& axis, float radius, const glm::vec4& color,
+                                     int segments = kOverlayCircleSegments);
+
 // One cone the cone-trace pass marches from a pixel.
 struct TracedCone {
     glm::vec3 apex{0.0f};       // world (m): the surface point moved √3 voxels along the shading normal
@@ -56,11 +60,45 @@ struct TracedCone {
     // for them but blends the diffuse cones' radiance in their direction (cone.glsl,
     // specularCanReuseDiffuseCones / radianceFromDiffuseCones).
     bool marched = true;
+    // Accurate mode (footprint-bounded cones): the stratified set the diffuse cones come from
+    // (cone_strata.glsl, 0..LIT_CONE_STRATA²−1); −1 for the fixed six-cone set and for specular cones.
+    int coneSet = -1;
+    // Footprint-bounded diffuse cones (traceConeFromSurface): the sampled voxels are at most
+    // footprintPerHeight × (startHeight + heightPerDistance · t) wide; footprintPerHeight 0 = unbounded.
+    float footprintPerHeight = 0.0f;
+    float startHeight = 0.0f;        // m: the apex's height above the surface
+    float heightPerDistance = 1.0f;  // n · direction
 };
+
+// One step of a cone's march (cone.glsl, LIT_CONE_STEP_GEOMETRY): the sample at distance tMid
+// (m) from the apex reads voxels `diameter` metres wide (mip level log2(diameter / voxelSize)).
+struct ConeSample {
+    float tMid = 0.0f;
+    float diameter = 0.0f;
+};
+
+// The samples traceConeFromSurface takes along `cone` up to distance `upTo` (m) in an empty
+// volume (a real march stops earlier where it turns opaque): the sampled widths, bounded by the
+// footprint for bounded cones. `voxelSize` and `volumeSide` (m) as in SurfaceSample,
+// `coneStepScale` RenderSettings::coneStepScale; none when voxelSize is 0 (no GI).
+std::vector<ConeSample> coneSamples(const TracedCone& cone, float voxelSize, float volumeSide, float coneStepScale,
+                                    float upTo);
+
+// C++ copies of shaders/include/cone_strata.glsl (the accurate mode's stratified diffuse cone sets),
+// checked against the shader by tests/gl/test_cone_mirror.cpp.
+// The set low-resolution texel `low` of the reduced trace traces (coneSetIndex).
+int coneSetIndex(glm::ivec2 low);
+// Tangent-space direction (z = normal) of diffuse cone i (0..5) of set `setIndex`.
+glm::vec3 stratifiedDiffuseConeDirection(int i, int setIndex);
+// The set whose cones the accurate mode traces for full-resolution GL pixel `glPixel`: that of
+// the low-resolution texel the pixel falls in at frame 0 (jitter 0; the indirect scale as
+// ConeTracePass::indirectScale); −1 when `settings` trace the fixed six-cone set (no footprint bound).
+int coneSetOfPixel(glm::ivec2 glPixel, const RenderSettings& settings);
 
 // The cones shaders/cone_trace.frag.glsl traces for `surface` seen from `cameraPosition` under
 // `settings` when both indirect terms are on (the final view): the six diffuse cones
-// (cone.glsl traceDiffuse; none when !surface.diffuse), then the specular cones (traceSpecular:
+// (cone.glsl traceDiffuse; none when !surface.diffuse; in the accurate mode, coneFootprintPerHeight
+// > 0, the pixel's stratified set, coneSetOfPixel, with their footprint bound), then the specular cones (traceSpecular:
 // clamp(specularSamples, 1, 8) GGX samples with the pixel's sample rotation, samples below the
 // horizon dropped, the mirror direction when all are; marched = false where they reuse the
 // diffuse cones). The diffuse table and the constants come

@@ -34,6 +34,16 @@ int coneSetIndex(ivec2 low) {
     return cell.x + kConeStrata * cell.y;
 }
 
+// The set voxel v traces in a bounce pass (bounce.comp.glsl), `normal` its surface's (averaged)
+// normal: the texels' pattern over the two coordinates that run along the surface (the axes other
+// than the normal's dominant one), so each 4 × 4 patch of a wall's or floor's voxels holds every
+// set once and the mip levels that pixels' cones read average the sets.
+int voxelConeSetIndex(ivec3 v, vec3 normal) {
+    vec3 a = abs(normal);
+    ivec2 along = a.x >= a.y && a.x >= a.z ? v.yz : (a.y >= a.z ? v.xz : v.xy);
+    return coneSetIndex(along);
+}
+
 // Tangent-space direction (z = normal) of diffuse cone i of set `setIndex` (0 ≤ setIndex < kConeSetCount).
 vec3 stratifiedDiffuseConeDirection(int i, int setIndex) {
     float n = float(kConeStrata);

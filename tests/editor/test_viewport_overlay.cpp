@@ -9,6 +9,8 @@
 #include "scene/OverlayShapes.h"
 #include "scene/SceneBuilder.h"
 
+#include <shared.h>
+
 namespace {
 
 using namespace lit;
@@ -103,6 +105,58 @@ TEST(ViewportOverlay, ConeDirectionsViewDrawsSixDiffuseConesAndTheSpecularOnes) 
     const std::size_t cones = tracedCones(surface, options.coneCameraPosition, doc.settings).size();
     EXPECT_GE(cones, 7u);
     EXPECT_EQ(overlay.linesOnTop.size(), cones * coneLines({}, {0, 1, 0}, 1.0f, 1.0f, {}).size());
+}
+
+// The accurate mode traces, per low-resolution texel, one of the stratified sets (cone_strata.glsl):
+// the view draws the picked pixel's set, each diffuse cone as its axis and the sampled footprint
+// (a circle per march sample), not the fixed six-cone set's wireframe cones.
+TEST(ViewportOverlay, ConeDirectionsViewDrawsThePixelsStratifiedSetInTheAccurateMode) {
+    Document doc = sceneWithLightAndCamera();
+    doc.settings.anisotropicVoxels = true;
+    doc.settings.coneFootprintPerHeight = kAccurateGiFootprint;
+    doc.settings.indirectScale = 1;
+    OverlayOptions options;
+    options.markers = false;
+    options.coneCameraPosition = {0.0f, 3.0f, 0.0f};
+    SurfaceSample surface;
+    surface.position = {0.0f, 0.5f, 0.0f};
+    surface.normal = {0.0f, 1.0f, 0.0f};
+    surface.roughness = 0.0f;  // a mirror: its specular cone is marched, drawn as a plain cone
+    surface.voxelSize = 0.025f;
+    surface.volumeSide = 3.2f;
+    // The normal cone's end point for two neighbouring pixels: different sets, different cones.
+    std::vector<glm::vec3> capEnds;
+    for (const glm::ivec2 pixel : {glm::ivec2(10, 20), glm::ivec2(11, 20)}) {
+        surface.glPixel = pixel;
+        options.coneSurface = surface;
+        const ViewportOverlay overlay = buildViewportOverlay(doc, viewOf(doc), {1280, 720}, options);
+        const std::vector<TracedCone> cones = tracedCones(surface, options.coneCameraPosition, doc.settings);
+        ASSERT_GT(cones.size(), std::size_t(LIT_DIFFUSE_CONE_COUNT));
+        const int set = coneSetIndex(pixel);
+        std::size_t expectedLines = 0;
+        for (int i = 0; i < LIT_DIFFUSE_CONE_COUNT; ++i) {
+            const TracedCone& cone = cones[static_cast<std::size_t>(i)];
+            const float length = std::min(cone.length, 0.25f * surface.volumeSide);  // as addCones draws it
+            EXPECT_EQ(cone.coneSet, set);
+            // The set's angle to the normal (the directions themselves: tests/gl/test_cone_mirror.cpp).
+            EXPECT_NEAR(glm::dot(cone.direction, surface.normal), stratifiedDiffuseConeDirection(i, set).z, 1e-5f);
+            const glm::vec3 end = cone.apex + cone.direction * length;
+            const bool axisDrawn = std::any_of(overlay.linesOnTop.begin(), overlay.linesOnTop.end(), [&](const OverlayLine& l) {
+                return glm::length(l.a - cone.apex) < 1e-5f && glm::length(l.b - end) < 1e-4f;
+            });
+            EXPECT_TRUE(axisDrawn) << "cone " << i << ", pixel " << pixel.x;
+            if (i == 0) capEnds.push_back(end);
+            const std::size_t samples =
+                coneSamples(cone, surface.voxelSize, surface.volumeSide, doc.settings.coneStepScale, length).size();
+            EXPECT_GT(samples, 5u);
+            expectedLines += 1 + samples * std::size_t(kConeSampleCircleSegments);
+        }
+        // The mirror's specular cones: plain wireframe cones.
+        expectedLines += (cones.size() - LIT_DIFFUSE_CONE_COUNT) * coneLines({}, {0, 1, 0}, 1.0f, 1.0f, {}).size();
+        EXPECT_EQ(overlay.linesOnTop.size(), expectedLines);
+    }
+    ASSERT_EQ(capEnds.size(), 2u);
+    EXPECT_GT(glm::length(capEnds[0] - capEnds[1]), 1e-3f);
 }
 
 }  // namespace

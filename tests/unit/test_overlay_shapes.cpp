@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -161,6 +162,81 @@ TEST(OverlayShapes, SharedDiffuseConeTable) {
         const float expected = 2.0f * kPi * float(i - 1) / 5.0f;
         EXPECT_NEAR(std::remainder(azimuth - expected, 2.0f * kPi), 0.0f, 1e-5f) << "cone " << i;
     }
+}
+
+// The stratified sets (C++ copy of cone_strata.glsl; tests/gl/test_cone_mirror.cpp compares it with
+// the shader): over the LIT_CONE_STRATA² sets each region gets LIT_CONE_STRATA² different
+// directions, all inside the region (cap θ < 30°; side region i within ±36° of azimuth 72°(i − 1),
+// 30° ≤ θ < 90°), and the mean of their cosθ is the region's cosine-weighted mean cosθ (the cells
+// are of equal projected solid angle): cap (2/3)(1 − cos³30°)/sin²30° ≈ 0.9346, ring
+// (2/3)cos³30°/cos²30° ≈ 0.5774.
+TEST(OverlayShapes, StratifiedConeSetsCoverEachRegionOnce) {
+    constexpr int sets = LIT_CONE_STRATA * LIT_CONE_STRATA;
+    const float degrees = 180.0f / kPi;
+    for (int i = 0; i < LIT_DIFFUSE_CONE_COUNT; ++i) {
+        std::vector<glm::vec3> directions;
+        float meanCos = 0.0f;
+        for (int k = 0; k < sets; ++k) {
+            const glm::vec3 d = stratifiedDiffuseConeDirection(i, k);
+            EXPECT_NEAR(glm::length(d), 1.0f, 1e-5f);
+            const float theta = std::acos(std::clamp(d.z, -1.0f, 1.0f)) * degrees;
+            if (i == 0) {
+                EXPECT_LT(theta, 30.0f) << "set " << k;
+            } else {
+                EXPECT_GE(theta, 30.0f) << "cone " << i << ", set " << k;
+                EXPECT_LT(theta, 90.0f) << "cone " << i << ", set " << k;
+                const float azimuth = std::atan2(d.y, d.x) * degrees;
+                EXPECT_LE(std::abs(std::remainder(azimuth - 72.0f * float(i - 1), 360.0f)), 36.0f)
+                    << "cone " << i << ", set " << k;
+            }
+            for (const glm::vec3& other : directions)
+                EXPECT_GT(glm::length(d - other), 1e-3f) << "cone " << i << ": set " << k << " repeats a cell";
+            directions.push_back(d);
+            meanCos += d.z / float(sets);
+        }
+        const float c30 = std::cos(30.0f / degrees);
+        const float expected = i == 0 ? (2.0f / 3.0f) * (1.0f - c30 * c30 * c30) / 0.25f : (2.0f / 3.0f) * c30 * c30 * c30 / 0.75f;
+        // The cells' medians (midpoint rule in sin²θ over 4 strata) give 0.9347 and 0.5828 (+0.9 %:
+        // cosθ = √(1 − sin²θ) is steep near the horizon); bar 1 %. A wrong stratum is off by ≥ 5 %.
+        EXPECT_NEAR(meanCos, expected, 0.01f * expected) << "cone " << i;
+    }
+    // Each 4 × 4 block of texels (anywhere, negative coordinates too) holds every set once.
+    for (const glm::ivec2 origin : {glm::ivec2(0, 0), glm::ivec2(5, 9), glm::ivec2(-3, 2)}) {
+        std::vector<int> seen(sets, 0);
+        for (int y = 0; y < LIT_CONE_STRATA; ++y)
+            for (int x = 0; x < LIT_CONE_STRATA; ++x) ++seen[static_cast<std::size_t>(coneSetIndex(origin + glm::ivec2(x, y)))];
+        for (int k = 0; k < sets; ++k) EXPECT_EQ(seen[static_cast<std::size_t>(k)], 1) << "set " << k;
+    }
+}
+
+// coneSamples repeats the march's step geometry: a bounded cone's samples read voxels no wider
+// than footprint × height (and never finer than a voxel), an unbounded one's grow as its
+// aperture says; the samples are ordered and stop at `upTo`.
+TEST(OverlayShapes, ConeSamplesAreBoundedByTheFootprint) {
+    const float voxel = 0.025f, side = 3.2f;
+    TracedCone cone{{0, 0, 0}, glm::normalize(glm::vec3(1, 0, 1)), kPi / 3.0f, side, 0.15f, false, true};
+    cone.footprintPerHeight = 0.33f;
+    cone.startHeight = float(LIT_CONE_NORMAL_OFFSET_VOXELS) * voxel;
+    cone.heightPerDistance = cone.direction.z;
+    const std::vector<ConeSample> bounded = coneSamples(cone, voxel, side, 0.5f, 0.8f);
+    ASSERT_GT(bounded.size(), 5u);
+    float previous = 0.0f;
+    for (const ConeSample& s : bounded) {
+        EXPECT_GT(s.tMid, previous);
+        EXPECT_LE(s.tMid, 0.8f + s.diameter);
+        EXPECT_GE(s.diameter, voxel);
+        EXPECT_LE(s.diameter, std::max(voxel, 0.33f * (cone.startHeight + cone.heightPerDistance * s.tMid)) * 1.0001f);
+        previous = s.tMid;
+    }
+    // Near the surface the bounded cone reads single voxels where the 60° cone would read wider ones.
+    EXPECT_FLOAT_EQ(bounded.front().diameter, voxel);
+    cone.footprintPerHeight = 0.0f;
+    const std::vector<ConeSample> free = coneSamples(cone, voxel, side, 0.5f, 0.8f);
+    ASSERT_FALSE(free.empty());
+    EXPECT_LT(free.size(), bounded.size());  // wider samples, longer steps
+    const float widthPerDistance = 2.0f * std::tan(kPi / 6.0f);
+    for (const ConeSample& s : free) EXPECT_NEAR(s.diameter, std::max(voxel, widthPerDistance * s.tMid), 1e-5f);
+    EXPECT_TRUE(coneSamples(cone, 0.0f, side, 0.5f, 0.8f).empty());
 }
 
 // cone.glsl must read its table and constants from shared.h, or the debug view would draw
