@@ -144,7 +144,12 @@ void writeGltfModel(tinygltf::Model model, const fs::path& file, bool binary,
 
     for (const auto& [pointer, text] : jsonPatches) {
         try {
-            doc[OrderedJson::json_pointer(pointer)] = OrderedJson::parse(text);
+            const OrderedJson::json_pointer at(pointer);
+            if (text.empty()) {  // remove the member
+                if (doc.contains(at)) doc[at.parent_pointer()].erase(at.back());
+                continue;
+            }
+            doc[at] = OrderedJson::parse(text);
         } catch (const OrderedJson::exception& e) {
             fail(file, "cannot write " + pointer + " (" + e.what() + ")");
         }

@@ -28,7 +28,9 @@ namespace lit {
 // std::runtime_error whose message starts with the path of the file concerned.
 // `alsoWrite`: other files committed together with the scene (staged before it).
 // `jsonPatches`: (JSON pointer, JSON value text) pairs set into the document after tinygltf wrote
-// it, for what tinygltf 2.7 does not serialise (a sampler's name and extensions).
+// it, in order, for what tinygltf 2.7 does not serialise (a sampler's name and extensions, a
+// default value the source file wrote out); an empty text removes the member (a sampler's wrapS
+// the source left out).
 void writeGltfModel(tinygltf::Model model, const std::filesystem::path& file, bool binary,
                     const std::vector<std::pair<std::filesystem::path, std::string>>& alsoWrite = {},
                     const std::vector<std::pair<std::string, std::string>>& jsonPatches = {});

@@ -119,26 +119,15 @@ inline void restore(const KeptGltf& kept, tinygltf::Value& extras, tinygltf::Ext
     }
 }
 
-// A fingerprint of a primitive's drawn data (vertices and indices, FNV-1a over 8-byte words):
-// the loader stores it, and a save compares it to tell an unedited primitive, whose accessors get
-// the file's names, extras and extensions back, from an edited one.
-inline std::uint64_t drawnDataHash(const Primitive& primitive) {
-    std::uint64_t hash = 14695981039346656037ull;
-    const auto mix = [&](const void* data, std::size_t bytes) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        std::size_t i = 0;
-        for (; i + 8 <= bytes; i += 8) {
-            std::uint64_t word;
-            std::memcpy(&word, p + i, 8);
-            hash = (hash ^ word) * 1099511628211ull;
-        }
-        for (; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
-        hash = (hash ^ bytes) * 1099511628211ull;  // the length, so moved bytes differ
-    };
-    mix(primitive.vertices.data(), primitive.vertices.size() * sizeof(Vertex));
-    mix(primitive.indices.data(), primitive.indices.size() * sizeof(std::uint32_t));
-    return hash;
-}
+// A material's optional fields (JSON pointers inside the material object) whose presence a save
+// keeps: the loader notes those the file wrote (Material::fileFields), the writer writes them
+// again even where they hold glTF's default, which tinygltf leaves out.
+inline constexpr const char* kMaterialFields[] = {
+    "alphaCutoff", "alphaMode", "doubleSided", "emissiveFactor",
+    "pbrMetallicRoughness/baseColorFactor", "pbrMetallicRoughness/metallicFactor",
+    "pbrMetallicRoughness/roughnessFactor", "pbrMetallicRoughness/baseColorTexture/texCoord",
+    "pbrMetallicRoughness/metallicRoughnessTexture/texCoord", "normalTexture/texCoord", "normalTexture/scale",
+    "emissiveTexture/texCoord", "occlusionTexture/texCoord", "occlusionTexture/strength"};
 
 // Extras and extensions of a JSON object the parser does not read (sparse accessor parts).
 inline KeptGltf keepFromJson(const nlohmann::json& object) {

@@ -200,10 +200,13 @@ bool keepEncodedImage(tinygltf::Image* image, const int imageIndex, std::string*
 class Loader {
 public:
     // `sparseKept`: by accessor index, the extras and extensions of its `sparse`, `sparse.indices`
-    // and `sparse.values` objects (readWhatTinygltfSkips).
+    // and `sparse.values` objects (readWhatTinygltfSkips). `doc`: the file's JSON (null when it
+    // does not parse as JSON here), for what tinygltf does not tell: which optional fields the
+    // file wrote (materials, samplers).
     Loader(const fs::path& path, const tinygltf::Model& model, Log& log, const GltfLoadOptions& options,
-           const ImageDeduplicator& images, const std::map<int, std::array<KeptGltf, 3>>& sparseKept)
-        : path_(path), model_(model), log_(log), options_(options), images_(images), sparseKept_(sparseKept) {}
+           const ImageDeduplicator& images, const std::map<int, std::array<KeptGltf, 3>>& sparseKept,
+           const nlohmann::json& doc)
+        : path_(path), model_(model), log_(log), options_(options), images_(images), sparseKept_(sparseKept), doc_(doc) {}
 
     Scene run();
 
@@ -265,6 +268,15 @@ private:
     const GltfLoadOptions& options_;
     const ImageDeduplicator& images_;  // which images are byte-identical to an earlier one
     const std::map<int, std::array<KeptGltf, 3>>& sparseKept_;
+    const nlohmann::json& doc_;
+    // The file's JSON object `index` of the top-level array `array` (null when absent).
+    const nlohmann::json& fileObject(const char* array, std::size_t index) const {
+        static const nlohmann::json none;
+        if (!doc_.is_object()) return none;
+        const auto found = doc_.find(array);
+        if (found == doc_.end() || !found->is_array() || index >= found->size() || !(*found)[index].is_object()) return none;
+        return (*found)[index];
+    }
     mutable std::vector<int> nodeRemap_;  // file node → node reference (scene/Scene.h: keptNodeRef), set by loadNodes
 };
 
@@ -717,19 +729,27 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
         const AccessorData tangents = accessor(tangentIndex, TINYGLTF_TYPE_VEC4, "TANGENT of " + where);
         checkCount(tangents, tangentIndex, "TANGENT");
         haveTangents = true;
+        bool allUnit = true;
         for (std::size_t i = 0; i < vertexCount; ++i) {
             const glm::vec3 t{tangents.component(i, 0), tangents.component(i, 1), tangents.component(i, 2)};
             const float len = glm::length(t);
-            if (!std::isfinite(len) || len < 1e-12f) {
+            if (!std::isfinite(len) || len < 1e-12f || !std::isfinite(tangents.component(i, 3))) {
                 haveTangents = false;  // unusable data: recompute the whole primitive below
                 break;
             }
             // A tangent already unit within float rounding is kept as the file wrote it, so a
-            // save writes the same numbers.
-            out.vertices[i].tangent = glm::vec4(std::abs(len - 1.0f) <= kUnitTangentTolerance ? t : t / len,
-                                                tangents.component(i, 3) < 0.0f ? -1.0f : 1.0f);
+            // save writes the same numbers; others are normalized for drawing, and the file's
+            // values kept for a save (Primitive::fileTangents).
+            const bool unit = std::abs(len - 1.0f) <= kUnitTangentTolerance;
+            allUnit = allUnit && unit && std::abs(tangents.component(i, 3)) == 1.0f;
+            out.vertices[i].tangent = glm::vec4(unit ? t : t / len, tangents.component(i, 3) < 0.0f ? -1.0f : 1.0f);
         }
         if (!haveTangents) warn(where + " has zero or non-finite TANGENTs; they are recomputed");
+        if (haveTangents && !allUnit) {
+            out.fileTangents.resize(vertexCount);
+            for (std::size_t i = 0; i < vertexCount; ++i)
+                for (int c = 0; c < 4; ++c) out.fileTangents[i][c] = tangents.component(i, c);
+        }
     }
 
     // Indices: from the accessor, or 0..n−1 for non-indexed geometry.
@@ -806,30 +826,25 @@ void Loader::loadPrimitive(const tinygltf::Primitive& in, const std::string& mes
     // How the file stored the drawn data and what its accessors held besides the values, for a
     // save (scene/Scene.h: Primitive::fileAccessors).
     {
-        std::vector<int> views;
-        bool separate = true;
+        // Every drawn attribute in a buffer view (not sparse): written in the file's views again.
+        bool inViews = true;
         const auto keepInfo = [&](const char* name, int index) {
             if (index < 0) return;
-            const int view = model_.accessors[static_cast<std::size_t>(index)].bufferView;
-            separate = separate && std::find(views.begin(), views.end(), view) == views.end();
-            views.push_back(view);
+            const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+            inViews = inViews && a.bufferView >= 0 && !a.sparse.isSparse;
             out.fileAccessors[name] = accessorInfo(index);
         };
         keepInfo("POSITION", positionIndex);
         keepInfo("NORMAL", normalIndex);
         keepInfo("TEXCOORD_0", uvIndex);
         keepInfo("TANGENT", haveTangents ? tangentIndex : -1);
-        out.fileSeparateViews = separate;
+        out.fileViews = inViews;
         if (in.indices >= 0) {
             out.fileIndexType = model_.accessors[static_cast<std::size_t>(in.indices)].componentType;
             out.fileAccessors["indices"] = accessorInfo(in.indices);
         } else {
             out.fileIndexType = 0;
         }
-        // Only a primitive with names, extras or extensions to give back pays for the hash.
-        const bool named = std::any_of(out.fileAccessors.begin(), out.fileAccessors.end(),
-                                       [](const auto& entry) { return entry.second.hasNameOrExtras(); });
-        if (named) out.fileDataHash = gltfkeep::drawnDataHash(out);
     }
     for (const Vertex& v : out.vertices)
         if (std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z))
@@ -951,6 +966,24 @@ void Loader::loadMaterials(Scene& scene) const {
                              gltfkeep::extrasText(in.normalTexture.extras), gltfkeep::extrasText(in.emissiveTexture.extras),
                              gltfkeep::extrasText(in.occlusionTexture.extras)};
         out.pbrKept = gltfkeep::keep(pbr.extras, pbr.extensions);
+        // What tinygltf does not report: which optional fields the file wrote (a save writes
+        // them again, defaults included), and its exact numbers (scene/Scene.h: Material).
+        if (const nlohmann::json& file = fileObject("materials", m); file.is_object())
+            for (const char* field : gltfkeep::kMaterialFields)
+                if (file.contains(nlohmann::json::json_pointer(std::string("/") + field)))
+                    out.fileFields.emplace_back(field);
+        for (std::size_t c = 0; c < pbr.baseColorFactor.size() && c < 4; ++c)
+            noteNumber(out.fileNumbers, "baseColorFactor" + std::to_string(c), pbr.baseColorFactor[c]);
+        for (std::size_t c = 0; c < in.emissiveFactor.size() && c < 3; ++c)
+            noteNumber(out.fileNumbers, "emissiveFactor" + std::to_string(c), in.emissiveFactor[c]);
+        noteNumber(out.fileNumbers, "metallicFactor", pbr.metallicFactor);
+        noteNumber(out.fileNumbers, "roughnessFactor", pbr.roughnessFactor);
+        noteNumber(out.fileNumbers, "normalScale", in.normalTexture.scale);
+        noteNumber(out.fileNumbers, "occlusionStrength", in.occlusionTexture.strength);
+        noteNumber(out.fileNumbers, "alphaCutoff", in.alphaCutoff);
+        if (auto it = in.extensions.find("KHR_materials_emissive_strength"); it != in.extensions.end())
+            if (const tinygltf::Value& strength = it->second.Get("emissiveStrength"); strength.IsNumber())
+                noteNumber(out.fileNumbers, "emissiveStrength", strength.GetNumberAsDouble());
         scene.materials.push_back(std::move(out));
     }
 }
@@ -965,6 +998,7 @@ void Loader::loadTextures(Scene& scene) const {
                 fail("texture " + std::to_string(t) + " refers to image " + std::to_string(in.source) +
                      ", which is out of range (the file has " + std::to_string(model_.images.size()) + " images)");
             out.image = images_.canonical(in.source);  // identical images are decoded once and shared
+            out.fileImage = in.source;
         }
         if (in.sampler >= 0) {
             if (static_cast<std::size_t>(in.sampler) >= model_.samplers.size())
@@ -987,6 +1021,13 @@ void Loader::loadTextures(Scene& scene) const {
             allowed(s.magFilter, {9728, 9729}, "magFilter", out.magFilter);
             out.samplerName = s.name;
             out.samplerKept = gltfkeep::keep(s.extras, s.extensions);
+            // Which fields the sampler wrote (tinygltf reports absent filters as -1 but fills in
+            // absent wraps with REPEAT): a save leaves out what the file left out.
+            const nlohmann::json& file = fileObject("samplers", static_cast<std::size_t>(in.sampler));
+            out.samplerFields = {!file.is_object() || file.contains("wrapS"), !file.is_object() || file.contains("wrapT"),
+                                 s.minFilter >= 0, s.magFilter >= 0};
+        } else {
+            out.hasSampler = false;
         }
         out.kept = gltfkeep::keep(in.extras, in.extensions);
         scene.textures.push_back(out);
@@ -1117,6 +1158,11 @@ void Loader::loadImages(Scene& scene) const {
         out.name = in.name;
         out.uri = in.uri;
         out.kept = gltfkeep::keep(in.extras, in.extensions);
+        // Optional for an image by URI (tinygltf reads it only beside a bufferView); set below for
+        // embedded ones.
+        if (const nlohmann::json& file = fileObject("images", i); file.is_object())
+            if (const auto mime = file.find("mimeType"); mime != file.end() && mime->is_string())
+                out.mimeType = mime->get<std::string>();
         if (in.uri.empty() || isDataUri(in.uri)) {
             // Embedded: keep the file's bytes for a save (a copy of an earlier image shares its
             // bytes, which the canonical entry holds).
@@ -1127,6 +1173,7 @@ void Loader::loadImages(Scene& scene) const {
         if (images_.canonical(static_cast<int>(i)) != static_cast<int>(i)) {
             // A copy of an earlier image: textures use that one; this entry keeps its name and
             // uri but no pixels of its own.
+            out.sameAs = images_.canonical(static_cast<int>(i));
             out.width = 1;
             out.height = 1;
             out.rgba = {255, 255, 255, 255};
@@ -1298,7 +1345,7 @@ KeptAccessorInfo Loader::accessorInfo(int index) const {
                                    ? model_.bufferViews[static_cast<std::size_t>(a.bufferView)].byteStride
                                    : 0;
     return KeptAccessorInfo{a.name, gltfkeep::keep(a.extras, a.extensions), keptView(a.bufferView), a.minValues, a.maxValues,
-                            index, stride};
+                            index, stride, a.bufferView, a.byteOffset};
 }
 
 KeptAccessor Loader::keptAccessor(int index, const std::string& role, std::optional<std::size_t> expectedCount) const {
@@ -1578,7 +1625,10 @@ Scene Loader::run() {
     scene.sourcePath = path_;
     checkExtensions();
     loadNodes(scene);
-    if (scene.name.empty()) scene.name = path_.stem().string();
+    if (scene.name.empty()) {
+        scene.name = path_.stem().string();
+        scene.fileSceneNamed = false;
+    }
     loadMeshes(scene);
     loadMaterials(scene);
     loadTextures(scene);
@@ -1603,16 +1653,14 @@ std::vector<std::string> lines(const std::string& text) {
     return out;
 }
 
-// What tinygltf 2.7 does not read, from the file's JSON (only files with animations or sparse
-// accessors pay for the second parse): an animation sampler's "extensions" (tinygltf reads them
+// What tinygltf 2.7 does not read, from the file's JSON: an animation sampler's "extensions" (tinygltf reads them
 // from the animation object instead of the sampler, fixed in the model) and the extras and
 // extensions of sparse accessors' parts (returned by accessor index).
-std::map<int, std::array<KeptGltf, 3>> readWhatTinygltfSkips(tinygltf::Model& model, std::string_view text) {
+std::map<int, std::array<KeptGltf, 3>> readWhatTinygltfSkips(tinygltf::Model& model, const nlohmann::json& doc) {
     std::map<int, std::array<KeptGltf, 3>> sparseKept;
     const bool sparse = std::any_of(model.accessors.begin(), model.accessors.end(),
                                     [](const tinygltf::Accessor& a) { return a.sparse.isSparse; });
     if (model.animations.empty() && !sparse) return sparseKept;
-    const nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
     if (sparse && doc.is_object() && doc.contains("accessors") && doc["accessors"].is_array()) {
         const nlohmann::json& accessors = doc["accessors"];
         for (std::size_t i = 0; i < accessors.size() && i < model.accessors.size(); ++i) {
@@ -1688,11 +1736,13 @@ Scene loadGltf(const std::filesystem::path& path, Log& log, const GltfLoadOption
         throw SceneLoadError(message);
     }
     for (std::size_t i = 0; i < model.images.size(); ++i) model.images[i].image = imageContext.images.take(static_cast<int>(i));
-    const std::map<int, std::array<KeptGltf, 3>> sparseKept = readWhatTinygltfSkips(model, guarded.json);
+    // The JSON once more, for what tinygltf does not read or report (a few ms for Sponza's 0.3 MB).
+    const nlohmann::json doc = nlohmann::json::parse(guarded.json.begin(), guarded.json.end(), nullptr, false);
+    const std::map<int, std::array<KeptGltf, 3>> sparseKept = readWhatTinygltfSkips(model, doc);
     checkMemoryBudget(path, model, imageContext.images, options.limits);
 
     if (options.progress) options.progress({"file", 1, 1});
-    Scene scene = Loader(path, model, log, options, imageContext.images, sparseKept).run();
+    Scene scene = Loader(path, model, log, options, imageContext.images, sparseKept, doc).run();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     // The one summary line of a load, for every front end: "loaded Sponza.gltf: 1 mesh, 262k
     // triangles, 69 textures, 297 MB in 3912 ms".

@@ -2,10 +2,11 @@
 //
 // Decisions worth knowing:
 // - All geometry and embedded images go into one buffer: "<stem>.bin" beside a .gltf, the BIN
-//   chunk of a .glb. A primitive's vertices are laid out as the file had them (scene/Scene.h:
-//   Primitive::fileSeparateViews): one tightly packed view per attribute, or one interleaved
-//   view (lit::Vertex as it is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes);
-//   indices in the file's component type while they fit, else UNSIGNED_INT.
+//   chunk of a .glb. A primitive's vertices are laid out in the file's views (scene/Scene.h:
+//   Primitive::fileViews): attributes the file kept in one view in one view again (one per view,
+//   blocks one after the other, or interleaved at the file's offsets and stride), or else in one
+//   interleaved view (lit::Vertex as it is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every
+//   48 bytes); indices in the file's component type while they fit, else UNSIGNED_INT.
 // - Nodes are written in the file's order (Node::fileIndex), nodes Lit made after them: an
 //   unedited file keeps its node indices. A node's `matrix` is written back while its transform
 //   is unedited and no written animation moves it. Primitives without triangles are left out
@@ -113,6 +114,14 @@ std::vector<double> doubles(const glm::vec<N, float>& v) {
     return out;
 }
 
+// A drawn vertex attribute of lit::Vertex as a primitive writes it.
+struct PrimitiveAttribute {
+    const char* name;
+    std::size_t offset;  // in lit::Vertex
+    std::size_t bytes;
+    int type;
+};
+
 class ModelBuilder {
 public:
     // `replacedAnimation`: the name of a kept animation not to write (the caller writes its own).
@@ -163,8 +172,11 @@ private:
     void addImages();
     void addTextures();
     void addMaterials();
+    void keepMaterialFields(const Material& material, const tinygltf::Material& out, std::size_t index);
     void addMeshes();
     tinygltf::Primitive addPrimitive(const Primitive& primitive);
+    void addAttributeView(const std::vector<PrimitiveAttribute>& group, const std::vector<Vertex>& vertices,
+                          const Primitive& primitive, tinygltf::Primitive& p);
     void setPositionBounds(int accessor, const Primitive& primitive);
     int sharedAccessor(int file, int componentType, int type, bool normalized, const unsigned char* bytes,
                        std::size_t count) const;
@@ -695,6 +707,10 @@ void ModelBuilder::addImages() {
         out.name = image.name;
         if (const std::optional<std::string> uri = relativeUri(image)) {
             out.uri = *uri;
+            // tinygltf writes no mimeType beside a uri; the file's optional one goes back.
+            if (!image.mimeType.empty())
+                jsonPatches_.emplace_back("/images/" + std::to_string(model_.images.size()) + "/mimeType",
+                                          nlohmann::json(image.mimeType).dump());
         } else if (!image.encoded.empty()) {  // the file's own bytes: not re-encoded (16-bit PNG, KTX2, JPEG)
             out.bufferView = addBufferView(image.encoded.data(), image.encoded.size(), 0, 0);
             out.mimeType = image.mimeType.empty() ? "application/octet-stream" : image.mimeType;
@@ -716,35 +732,53 @@ void ModelBuilder::addImages() {
 }
 
 void ModelBuilder::addTextures() {
-    // One glTF sampler per distinct setting (name, extras and extensions included).
-    using SamplerKey = std::tuple<std::array<int, 4>, std::string, std::string, std::string>;
+    // One glTF sampler per distinct setting (name, extras, extensions and the fields written
+    // included).
+    using SamplerKey = std::tuple<std::array<int, 4>, std::array<bool, 4>, std::string, std::string, std::string>;
     std::map<SamplerKey, int> samplers;
+    // Lit's values for what a file left out (scene/Scene.h: Texture).
+    const std::array<int, 4> defaults = {10497, 10497, 9987, 9729};
     for (const Texture& texture : scene_.textures) {
-        const SamplerKey key = {{texture.wrapS, texture.wrapT, texture.minFilter, texture.magFilter},
-                                texture.samplerName, texture.samplerKept.extras, texture.samplerKept.extensions};
-        auto [it, added] = samplers.emplace(key, static_cast<int>(model_.samplers.size()));
-        if (added) {
-            tinygltf::Sampler sampler;
-            sampler.wrapS = texture.wrapS;
-            sampler.wrapT = texture.wrapT;
-            sampler.minFilter = texture.minFilter;
-            sampler.magFilter = texture.magFilter;
-            tinygltf::ExtensionMap extensions;
-            restore(texture.samplerKept, sampler.extras, extensions);
-            // tinygltf 2.7 writes neither a sampler's name nor its extensions: set them in the JSON.
-            const std::string at = "/samplers/" + std::to_string(model_.samplers.size());
-            if (!texture.samplerName.empty())
-                jsonPatches_.emplace_back(at + "/name", nlohmann::json(texture.samplerName).dump());
-            if (!texture.samplerKept.extensions.empty())
-                jsonPatches_.emplace_back(at + "/extensions", texture.samplerKept.extensions);
-            model_.samplers.push_back(sampler);
+        const std::array<int, 4> values = {texture.wrapS, texture.wrapT, texture.minFilter, texture.magFilter};
+        // A field is written where the file had it or where it no longer holds Lit's default.
+        std::array<bool, 4> written{};
+        for (std::size_t f = 0; f < 4; ++f)
+            written[f] = (texture.hasSampler && texture.samplerFields[f]) || values[f] != defaults[f];
+        const bool anySampler = texture.hasSampler || std::find(written.begin(), written.end(), true) != written.end();
+        int samplerIndex = -1;
+        if (anySampler) {
+            const SamplerKey key = {values, written, texture.samplerName, texture.samplerKept.extras, texture.samplerKept.extensions};
+            auto [it, added] = samplers.emplace(key, static_cast<int>(model_.samplers.size()));
+            if (added) {
+                tinygltf::Sampler sampler;
+                sampler.wrapS = texture.wrapS;
+                sampler.wrapT = texture.wrapT;
+                sampler.minFilter = written[2] ? texture.minFilter : -1;  // -1: not written by tinygltf
+                sampler.magFilter = written[3] ? texture.magFilter : -1;
+                tinygltf::ExtensionMap extensions;
+                restore(texture.samplerKept, sampler.extras, extensions);
+                // tinygltf 2.7 writes neither a sampler's name nor its extensions: set them in the
+                // JSON; it always writes wrapS and wrapT: removed where the file had none.
+                const std::string at = "/samplers/" + std::to_string(model_.samplers.size());
+                if (!texture.samplerName.empty())
+                    jsonPatches_.emplace_back(at + "/name", nlohmann::json(texture.samplerName).dump());
+                if (!texture.samplerKept.extensions.empty())
+                    jsonPatches_.emplace_back(at + "/extensions", texture.samplerKept.extensions);
+                if (!written[0]) jsonPatches_.emplace_back(at + "/wrapS", "");
+                if (!written[1]) jsonPatches_.emplace_back(at + "/wrapT", "");
+                model_.samplers.push_back(sampler);
+            }
+            samplerIndex = it->second;
         }
         tinygltf::Texture out;
         out.name = texture.name;
-        out.source = texture.image >= 0 && static_cast<std::size_t>(texture.image) < imageIndex_.size()
-                         ? imageIndex_[static_cast<std::size_t>(texture.image)]
-                         : -1;
-        out.sampler = it->second;
+        // The file's own image where the loader shared an identical earlier one (Texture::fileImage).
+        int image = texture.image;
+        if (texture.fileImage >= 0 && static_cast<std::size_t>(texture.fileImage) < scene_.images.size() &&
+            texture.image >= 0 && scene_.images[static_cast<std::size_t>(texture.fileImage)].sameAs == texture.image)
+            image = texture.fileImage;
+        out.source = image >= 0 && static_cast<std::size_t>(image) < imageIndex_.size() ? imageIndex_[static_cast<std::size_t>(image)] : -1;
+        out.sampler = samplerIndex;
         restore(texture.kept, out.extras, out.extensions);
         model_.textures.push_back(std::move(out));
     }
@@ -752,28 +786,29 @@ void ModelBuilder::addTextures() {
 
 void ModelBuilder::addMaterials() {
     for (const Material& material : scene_.materials) {
+        const FileNumbers& n = material.fileNumbers;
         tinygltf::Material out;
         out.name = material.name;
         tinygltf::PbrMetallicRoughness& pbr = out.pbrMetallicRoughness;
-        pbr.baseColorFactor = doubles(material.baseColorFactor);
+        pbr.baseColorFactor = fileOr(n, "baseColorFactor", material.baseColorFactor);
         pbr.baseColorTexture.index = material.baseColorTexture;
         pbr.baseColorTexture.texCoord = material.textureTexCoord[0];
-        pbr.metallicFactor = material.metallic;
-        pbr.roughnessFactor = material.roughness;
+        pbr.metallicFactor = fileOr(n, "metallicFactor", material.metallic);
+        pbr.roughnessFactor = fileOr(n, "roughnessFactor", material.roughness);
         pbr.metallicRoughnessTexture.index = material.metallicRoughnessTexture;
         pbr.metallicRoughnessTexture.texCoord = material.textureTexCoord[1];
         out.normalTexture.texCoord = material.textureTexCoord[2];
         out.emissiveTexture.texCoord = material.textureTexCoord[3];
         out.occlusionTexture.texCoord = material.textureTexCoord[4];
         out.normalTexture.index = material.normalTexture;
-        out.normalTexture.scale = material.normalScale;
+        out.normalTexture.scale = fileOr(n, "normalScale", material.normalScale);
         out.occlusionTexture.index = material.occlusionTexture;
-        out.occlusionTexture.strength = material.occlusionStrength;
+        out.occlusionTexture.strength = fileOr(n, "occlusionStrength", material.occlusionStrength);
         out.emissiveTexture.index = material.emissiveTexture;
-        out.emissiveFactor = doubles(material.emissiveFactor);
-        if (material.emissiveStrength != 1.0f) {
+        out.emissiveFactor = fileOr(n, "emissiveFactor", material.emissiveFactor);
+        if (material.emissiveStrength != 1.0f || n.count("emissiveStrength")) {
             tinygltf::Value::Object extension;
-            extension["emissiveStrength"] = tinygltf::Value(static_cast<double>(material.emissiveStrength));
+            extension["emissiveStrength"] = tinygltf::Value(fileOr(n, "emissiveStrength", material.emissiveStrength));
             out.extensions[kEmissiveStrengthExtension] = tinygltf::Value(std::move(extension));
             useExtension(kEmissiveStrengthExtension);
         }
@@ -788,8 +823,9 @@ void ModelBuilder::addMaterials() {
                 out.alphaMode = "BLEND";
                 break;
         }
-        out.alphaCutoff = material.alphaCutoff;
+        out.alphaCutoff = fileOr(n, "alphaCutoff", material.alphaCutoff);
         out.doubleSided = material.doubleSided;
+        keepMaterialFields(material, out, model_.materials.size());
         restore(material.kept, out.extras, out.extensions);
         const auto& extras = material.textureExtras;
         const auto& extensions = material.textureExtensions;
@@ -803,6 +839,39 @@ void ModelBuilder::addMaterials() {
     }
 }
 
+// The optional fields the file wrote (Material::fileFields) go back even where they hold glTF's
+// default, which tinygltf leaves out: as JSON patches of the values being written. Texture
+// reference fields only while the material still has that texture.
+void ModelBuilder::keepMaterialFields(const Material& material, const tinygltf::Material& out, std::size_t index) {
+    const auto number = [](double v) { return nlohmann::json(v).dump(); };
+    const auto numbers = [](const std::vector<double>& v) { return nlohmann::json(v).dump(); };
+    const tinygltf::PbrMetallicRoughness& pbr = out.pbrMetallicRoughness;
+    for (const std::string& field : material.fileFields) {
+        std::optional<std::string> value;
+        if (field == "alphaCutoff") value = number(out.alphaCutoff);
+        else if (field == "alphaMode") value = nlohmann::json(out.alphaMode).dump();
+        else if (field == "doubleSided") value = nlohmann::json(out.doubleSided).dump();
+        else if (field == "emissiveFactor") value = numbers(out.emissiveFactor);
+        else if (field == "pbrMetallicRoughness/baseColorFactor") value = numbers(pbr.baseColorFactor);
+        else if (field == "pbrMetallicRoughness/metallicFactor") value = number(pbr.metallicFactor);
+        else if (field == "pbrMetallicRoughness/roughnessFactor") value = number(pbr.roughnessFactor);
+        else if (field == "pbrMetallicRoughness/baseColorTexture/texCoord" && pbr.baseColorTexture.index >= 0)
+            value = std::to_string(pbr.baseColorTexture.texCoord);
+        else if (field == "pbrMetallicRoughness/metallicRoughnessTexture/texCoord" && pbr.metallicRoughnessTexture.index >= 0)
+            value = std::to_string(pbr.metallicRoughnessTexture.texCoord);
+        else if (field == "normalTexture/texCoord" && out.normalTexture.index >= 0)
+            value = std::to_string(out.normalTexture.texCoord);
+        else if (field == "normalTexture/scale" && out.normalTexture.index >= 0) value = number(out.normalTexture.scale);
+        else if (field == "emissiveTexture/texCoord" && out.emissiveTexture.index >= 0)
+            value = std::to_string(out.emissiveTexture.texCoord);
+        else if (field == "occlusionTexture/texCoord" && out.occlusionTexture.index >= 0)
+            value = std::to_string(out.occlusionTexture.texCoord);
+        else if (field == "occlusionTexture/strength" && out.occlusionTexture.index >= 0)
+            value = number(out.occlusionTexture.strength);
+        if (value) jsonPatches_.emplace_back("/materials/" + std::to_string(index) + "/" + field, *value);
+    }
+}
+
 // A drawn primitive: POSITION, NORMAL, TEXCOORD_0, TANGENT (only when the file had them: the
 // loader generates them otherwise) and indices, laid out as the file had them (one view per
 // attribute, or Lit's interleaved one; the file's index type while the indices fit, none for a
@@ -810,12 +879,7 @@ void ModelBuilder::addMaterials() {
 tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
     const std::size_t count = primitive.vertices.size();
     const bool tangents = primitive.fileHasTangents;
-    struct Attribute {
-        const char* name;
-        std::size_t offset;  // in lit::Vertex
-        std::size_t bytes;
-        int type;
-    };
+    using Attribute = PrimitiveAttribute;
     std::vector<Attribute> attributes = {{"POSITION", offsetof(Vertex, position), 12, TINYGLTF_TYPE_VEC3},
                                          {"NORMAL", offsetof(Vertex, normal), 12, TINYGLTF_TYPE_VEC3},
                                          {"TEXCOORD_0", offsetof(Vertex, uv), 8, TINYGLTF_TYPE_VEC2}};
@@ -829,26 +893,35 @@ tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
         const auto found = primitive.fileAccessors.find(name);
         return found == primitive.fileAccessors.end() ? nullptr : &found->second;
     };
-    // The file's names, extras and extensions go back only on the same data (scene/Scene.h).
-    const bool unedited = std::any_of(primitive.fileAccessors.begin(), primitive.fileAccessors.end(),
-                                      [](const auto& entry) { return entry.second.hasNameOrExtras(); }) &&
-                          gltfkeep::drawnDataHash(primitive) == primitive.fileDataHash;
-    // A new accessor of drawn data: the file's min/max, and its name, extras and extensions while
-    // unedited; remembered under its file index, so that primitives that shared it share it again.
+    // A new accessor of drawn data: the file's min/max (recomputed), name, extras and extensions,
+    // edited or not (the data is still that attribute); remembered under its file index, so that
+    // primitives that shared it share it again while their values agree (sharedAccessor).
     const auto keepFile = [&](int accessor, const char* name) {
         const KeptAccessorInfo* info = fileInfo(name);
         if (!info) return;
-        if (unedited) {
-            keepAccessor(accessor, *info);
-        } else {
-            KeptAccessorInfo minMaxOnly;
-            minMaxOnly.min = info->min;
-            minMaxOnly.max = info->max;
-            keepMinMax(accessor, minMaxOnly);
-        }
-        // Shared again only by accessors that keep the same (an edited primitive's lost its names).
-        if (info->file >= 0 && (unedited || !info->hasNameOrExtras())) writtenByFile_.emplace(info->file, accessor);
+        keepAccessor(accessor, *info);
+        if (info->file >= 0) writtenByFile_.emplace(info->file, accessor);
     };
+    // The file's own TANGENTs where it wrote some that are not unit length, while every vertex
+    // still has their normalized direction and sign (the loader's reading of them).
+    const std::vector<Vertex>* vertices = &primitive.vertices;
+    std::vector<Vertex> withFileTangents;
+    if (tangents && primitive.fileTangents.size() == count) {
+        bool unedited = true;
+        for (std::size_t v = 0; unedited && v < count; ++v) {
+            const glm::vec4& file = primitive.fileTangents[v];
+            const glm::vec3 xyz(file);
+            const float length = glm::length(xyz);
+            const glm::vec3 direction = std::abs(length - 1.0f) <= 1e-6f ? xyz : xyz / length;  // as the loader
+            unedited = glm::vec3(primitive.vertices[v].tangent) == direction &&
+                       primitive.vertices[v].tangent.w == (file.w < 0.0f ? -1.0f : 1.0f);
+        }
+        if (unedited) {
+            withFileTangents = primitive.vertices;
+            for (std::size_t v = 0; v < count; ++v) withFileTangents[v].tangent = primitive.fileTangents[v];
+            vertices = &withFileTangents;
+        }
+    }
     const auto fileIndex = [&](const char* name) {
         const KeptAccessorInfo* info = fileInfo(name);
         return info && info->file >= 0 ? info->file : std::numeric_limits<int>::max();
@@ -861,47 +934,47 @@ tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
     // indices; what has no file index after the rest), so an unedited file keeps its accessor
     // indices where Lit writes what the file had.
     std::vector<std::pair<int, std::function<void()>>> writes;
-    if (primitive.fileSeparateViews) {
-        // One tightly packed view per attribute, as Blender writes them.
-        for (const Attribute& a : attributes)
-            writes.emplace_back(fileIndex(a.name), [&, a] {
-                std::vector<unsigned char> packed(count * a.bytes);
-                for (std::size_t v = 0; v < count; ++v)
-                    std::memcpy(packed.data() + v * a.bytes,
-                                reinterpret_cast<const unsigned char*>(&primitive.vertices[v]) + a.offset, a.bytes);
-                const KeptAccessorInfo* info = fileInfo(a.name);
-                const int shared = sharedAccessor(info ? info->file : -1, TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, false,
-                                                  packed.data(), count);
-                if (shared >= 0) {
-                    p.attributes[a.name] = shared;
-                    return;
-                }
-                const int view = addBufferView(packed.data(), packed.size(), kArrayBuffer,
-                                               info && info->viewStride == a.bytes ? a.bytes : 0);
-                p.attributes[a.name] = addAccessor(view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, count);
-                if (a.offset == offsetof(Vertex, position)) setPositionBounds(p.attributes[a.name], primitive);
-                keepFile(p.attributes[a.name], a.name);
-            });
+    if (primitive.fileViews) {
+        // The file's views: attributes it kept in one view go in one view again (one per view as
+        // Blender writes them, one block after the other, or interleaved); one without a view in
+        // the file gets its own.
+        std::vector<std::vector<Attribute>> groups;
+        std::map<int, std::size_t> groupOfView;
+        for (const Attribute& a : attributes) {
+            const KeptAccessorInfo* info = fileInfo(a.name);
+            if (!info || info->fileView < 0) {
+                groups.push_back({a});
+                continue;
+            }
+            const auto [it, added] = groupOfView.emplace(info->fileView, groups.size());
+            if (added) groups.emplace_back();
+            groups[it->second].push_back(a);
+        }
+        for (std::vector<Attribute>& group : groups) {
+            std::stable_sort(group.begin(), group.end(),
+                             [&](const Attribute& a, const Attribute& b) { return fileIndex(a.name) < fileIndex(b.name); });
+            writes.emplace_back(fileIndex(group.front().name), [&, group] { addAttributeView(group, *vertices, primitive, p); });
+        }
     } else {
         int first = std::numeric_limits<int>::max();
         for (const Attribute& a : attributes) first = std::min(first, fileIndex(a.name));
         writes.emplace_back(first, [&] {
             // One interleaved view: lit::Vertex as it is in memory, 32 bytes a vertex without tangents.
             constexpr std::size_t kPackedStride = offsetof(Vertex, tangent);
-            int vertices = -1;
+            int view = -1;
             if (tangents) {
-                vertices = addBufferView(primitive.vertices.data(), count * sizeof(Vertex), kArrayBuffer, sizeof(Vertex));
+                view = addBufferView(vertices->data(), count * sizeof(Vertex), kArrayBuffer, sizeof(Vertex));
             } else {
                 std::vector<unsigned char> packed(count * kPackedStride);
                 for (std::size_t v = 0; v < count; ++v)
-                    std::memcpy(packed.data() + v * kPackedStride, &primitive.vertices[v], kPackedStride);
-                vertices = addBufferView(packed.data(), packed.size(), kArrayBuffer, kPackedStride);
+                    std::memcpy(packed.data() + v * kPackedStride, &(*vertices)[v], kPackedStride);
+                view = addBufferView(packed.data(), packed.size(), kArrayBuffer, kPackedStride);
             }
             std::vector<Attribute> inFileOrder = attributes;
             std::stable_sort(inFileOrder.begin(), inFileOrder.end(),
                              [&](const Attribute& a, const Attribute& b) { return fileIndex(a.name) < fileIndex(b.name); });
             for (const Attribute& a : inFileOrder)
-                p.attributes[a.name] = addAccessor(vertices, a.offset, TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, count);
+                p.attributes[a.name] = addAccessor(view, a.offset, TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, count);
             setPositionBounds(p.attributes["POSITION"], primitive);
             for (const Attribute& a : attributes) keepFile(p.attributes[a.name], a.name);
         });
@@ -955,6 +1028,87 @@ tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
     for (const auto& [order, write] : writes) write();
     restore(primitive.kept, p.extras, p.extensions);
     return p;
+}
+
+// One buffer view of drawn attributes as the file had them in one view (Primitive::fileViews):
+// interleaved at the file's offsets and stride where they fitted in one element, else one block
+// after the other in the file's order (elements the file's stride apart where it had one); every
+// accessor shared again where the file shared them all and the values still agree.
+void ModelBuilder::addAttributeView(const std::vector<PrimitiveAttribute>& group, const std::vector<Vertex>& vertices,
+                                    const Primitive& primitive, tinygltf::Primitive& p) {
+    const std::size_t count = vertices.size();
+    const auto fileInfo = [&](const char* name) -> const KeptAccessorInfo* {
+        const auto found = primitive.fileAccessors.find(name);
+        return found == primitive.fileAccessors.end() ? nullptr : &found->second;
+    };
+    const std::size_t n = group.size();
+    std::vector<std::vector<unsigned char>> packed(n);
+    std::vector<int> shared(n, -1);
+    bool allShared = true;
+    for (std::size_t k = 0; k < n; ++k) {
+        const PrimitiveAttribute& a = group[k];
+        packed[k].resize(count * a.bytes);
+        for (std::size_t v = 0; v < count; ++v)
+            std::memcpy(packed[k].data() + v * a.bytes, reinterpret_cast<const unsigned char*>(&vertices[v]) + a.offset, a.bytes);
+        const KeptAccessorInfo* info = fileInfo(a.name);
+        shared[k] = sharedAccessor(info ? info->file : -1, TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, false, packed[k].data(), count);
+        allShared = allShared && shared[k] >= 0;
+    }
+    if (allShared) {
+        for (std::size_t k = 0; k < n; ++k) p.attributes[group[k].name] = shared[k];
+        return;
+    }
+    const KeptAccessorInfo* first = fileInfo(group[0].name);
+    const std::size_t fileStride = first ? first->viewStride : 0;
+    std::size_t largest = 0;
+    for (const PrimitiveAttribute& a : group) largest = std::max(largest, a.bytes);
+    // Offsets in the file's view relative to the group's first byte.
+    std::vector<std::size_t> fileOffset(n, 0);
+    for (std::size_t k = 0; k < n; ++k)
+        if (const KeptAccessorInfo* info = fileInfo(group[k].name)) fileOffset[k] = info->byteOffset;
+    const std::size_t base = *std::min_element(fileOffset.begin(), fileOffset.end());
+    std::vector<std::size_t> order(n);
+    for (std::size_t k = 0; k < n; ++k) order[k] = k;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return fileOffset[a] < fileOffset[b]; });
+    bool interleaved = n > 1 && fileStride > 0;
+    for (std::size_t i = 0; interleaved && i < n; ++i) {
+        const std::size_t k = order[i];
+        const std::size_t end = fileOffset[k] - base + group[k].bytes;
+        interleaved = end <= fileStride && (i + 1 == n || base + end <= fileOffset[order[i + 1]]);
+    }
+    std::vector<std::size_t> offset(n, 0);
+    std::size_t stride = 0, length = 0;
+    if (interleaved) {
+        stride = fileStride;
+        for (std::size_t k = 0; k < n; ++k) offset[k] = fileOffset[k] - base;
+        length = count * stride;
+    } else {
+        stride = fileStride >= largest ? fileStride : 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t k = order[i];
+            length = (length + 3) & ~std::size_t(3);
+            offset[k] = length;
+            length += count * (stride ? stride : group[k].bytes);
+        }
+    }
+    std::vector<unsigned char> bytes(length, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t step = stride ? stride : group[k].bytes;
+        for (std::size_t v = 0; v < count; ++v)
+            std::memcpy(bytes.data() + offset[k] + v * step, packed[k].data() + v * group[k].bytes, group[k].bytes);
+    }
+    // byteStride where the file had one (optional for a view of one tightly packed accessor).
+    const int view = addBufferView(bytes.data(), bytes.size(), kArrayBuffer, fileStride > 0 ? stride : 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        const PrimitiveAttribute& a = group[k];
+        const int accessor = addAccessor(view, offset[k], TINYGLTF_COMPONENT_TYPE_FLOAT, a.type, count);
+        p.attributes[a.name] = accessor;
+        if (a.offset == offsetof(Vertex, position)) setPositionBounds(accessor, primitive);
+        if (const KeptAccessorInfo* info = fileInfo(a.name)) {
+            keepAccessor(accessor, *info);
+            if (info->file >= 0) writtenByFile_.emplace(info->file, accessor);
+        }
+    }
 }
 
 // glTF requires POSITION's min and max.
@@ -1194,14 +1348,17 @@ void ModelBuilder::addNodes() {
         restore(kept, out.extras, out.extensions);
         return out;
     };
-    // The file's scenes in their order, the shown one where it was.
+    // The file's scenes in their order, the shown one where it was (without a name while it still
+    // has the one the loader gave an unnamed scene).
+    const std::string shownName =
+        !scene_.fileSceneNamed && scene_.name == scene_.sourcePath.stem().string() ? std::string() : scene_.name;
     const std::size_t shown = std::min(static_cast<std::size_t>(std::max(scene_.sceneIndex, 0)), scene_.otherScenes.size());
     for (std::size_t i = 0; i < scene_.otherScenes.size(); ++i) {
-        if (i == shown) model_.scenes.push_back(sceneOf(scene_.name, scene_.roots, scene_.kept));
+        if (i == shown) model_.scenes.push_back(sceneOf(shownName, scene_.roots, scene_.kept));
         const Scene::OtherScene& other = scene_.otherScenes[i];
         model_.scenes.push_back(sceneOf(other.name, other.roots, other.kept));
     }
-    if (shown == scene_.otherScenes.size()) model_.scenes.push_back(sceneOf(scene_.name, scene_.roots, scene_.kept));
+    if (shown == scene_.otherScenes.size()) model_.scenes.push_back(sceneOf(shownName, scene_.roots, scene_.kept));
     model_.defaultScene = static_cast<int>(shown);
 }
 

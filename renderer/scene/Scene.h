@@ -61,6 +61,11 @@ struct KeptAccessorInfo {
     // Its buffer view's byteStride in the file (0: none): written again where the elements are
     // still that far apart.
     std::size_t viewStride = 0;
+    // Its buffer view's index in the file (-1: none) and its byteOffset in that view: the drawn
+    // attributes a file kept in one view (two attributes one after the other, or interleaved) are
+    // written in one view again (Primitive::fileViews).
+    int fileView = -1;
+    std::size_t byteOffset = 0;
     // Whether it carries a name, extras or extensions (its own or its view's).
     bool hasNameOrExtras() const { return !name.empty() || !(kept == KeptGltf{}) || !view.empty(); }
     bool operator==(const KeptAccessorInfo&) const = default;
@@ -123,20 +128,24 @@ struct Primitive {
     KeptAttributes keptAttributes{};
     std::vector<KeptAttributes> morphTargets{};
     KeptGltf kept{};
-    // How the file stored the drawn data, so that a save can store it the same way: each of
-    // POSITION, NORMAL, TEXCOORD_0 and TANGENT in its own buffer view (Blender) rather than one
-    // interleaved view, and the indices' component type (5121, 5123 or 5125; 0 = the file had no
-    // indices: written without while they are still 0, 1, 2, ...). A type too small for an
-    // edited primitive's indices is widened.
-    bool fileSeparateViews = false;
+    // How the file stored the drawn data, so that a save can store it the same way: POSITION,
+    // NORMAL, TEXCOORD_0 and TANGENT in the file's buffer views (fileAccessors' fileView,
+    // byteOffset and viewStride: one view per attribute as Blender writes them, two attributes one
+    // after the other in one view, or interleaved) rather than Lit's interleaved view, and the
+    // indices' component type (5121, 5123 or 5125; 0 = the file had no indices: written without
+    // while they are still 0, 1, 2, ...). A type too small for an edited primitive's indices is
+    // widened.
+    bool fileViews = false;
     int fileIndexType = 5125;
     // The names, extras, extensions, min/max and file indices of the file's POSITION, NORMAL,
-    // TEXCOORD_0, TANGENT and "indices" accessors (and their buffer views), by that name. A save gives them
-    // to the accessors it writes for the same data while `fileDataHash` still matches the
-    // primitive's vertices and indices (scene/GltfKeep.h: drawnDataHash); min/max are always
-    // recomputed from the written values.
+    // TEXCOORD_0, TANGENT and "indices" accessors (and their buffer views), by that name. A save
+    // gives them to the accessors it writes for that attribute, edited or not (an edit changes
+    // the values, not what the data is); min/max are always recomputed from the written values.
     std::map<std::string, KeptAccessorInfo> fileAccessors{};
-    std::uint64_t fileDataHash = 0;
+    // The file's TANGENTs as it wrote them, only when some were not unit length (the loader
+    // normalizes those in `vertices`): a save writes these while every vertex's tangent is still
+    // the normalized file tangent, so an unedited primitive keeps the file's numbers.
+    std::vector<glm::vec4> fileTangents{};
 };
 
 // A primitive Lit does not draw (mode POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLE_STRIP or
@@ -170,6 +179,8 @@ struct Image {
     // An embedded image's bytes as the file had them (a buffer view or a data URI) and its MIME
     // type, so a save writes them back unchanged (16-bit PNG, KTX2, JPEG are not re-encoded);
     // empty for images from files and for generated ones. Whoever changes `rgba` clears it.
+    // An image referenced by URI has the file's optional mimeType here ("" when it had none),
+    // written back while the image is still referenced by URI.
     std::vector<std::uint8_t> encoded{};
     std::string mimeType{};
     KeptObject view{};  // the buffer view an embedded image was in (name, extras, extensions)
@@ -177,6 +188,9 @@ struct Image {
     // Made by the loader (the white stand-in for textures without a readable source), not in the
     // file: a save does not write it, and textures using it are written without a source.
     bool generated = false;
+    // The earlier image whose bytes this one's equal (the loader decodes them once; textures
+    // use that one), -1 for none.
+    int sameAs = -1;
 };
 
 struct Texture {
@@ -191,6 +205,16 @@ struct Texture {
     // above); textures whose samplers agree in all of it share one sampler in a save.
     std::string samplerName{};
     KeptGltf samplerKept{};
+    // Whether the file's texture had a sampler (glTF: none = repeat, filters up to the renderer),
+    // and which of wrapS, wrapT, minFilter, magFilter that sampler wrote. A save writes no sampler
+    // and no field the file left out while the values are still the defaults Lit gave them
+    // (10497 REPEAT, 9987 LINEAR_MIPMAP_LINEAR, 9729 LINEAR). Textures Lit makes have all.
+    bool hasSampler = true;
+    std::array<bool, 4> samplerFields{true, true, true, true};
+    // The file's image of this texture (-1: none, or made by Lit): where the loader pointed
+    // `image` at an identical earlier image (Image::sameAs), a save writes the file's own while
+    // `image` is still that one, so the file keeps its texture sources.
+    int fileImage = -1;
 };
 
 enum class AlphaMode { Opaque, Mask, Blend };
@@ -224,6 +248,15 @@ struct Material {
     // extensions of pbrMetallicRoughness.
     std::array<std::string, 5> textureExtras{};
     KeptGltf pbrKept{};
+    // The file's exact numbers of factors a float cannot hold (FileNumbers: "baseColorFactor0".."3",
+    // "metallicFactor", "roughnessFactor", "normalScale", "emissiveFactor0".."2",
+    // "occlusionStrength", "alphaCutoff", "emissiveStrength"), and the optional fields the file
+    // wrote, as JSON pointers inside the material ("alphaCutoff", "pbrMetallicRoughness/
+    // roughnessFactor", "normalTexture/texCoord", ...: scene/GltfKeep.h kMaterialFields). A save
+    // writes those fields even where they hold glTF's default (which it leaves out otherwise),
+    // so a file keeps what it had and gets nothing it did not have.
+    FileNumbers fileNumbers{};
+    std::vector<std::string> fileFields{};
 
     bool operator==(const Material&) const = default;
 };
@@ -355,6 +388,9 @@ constexpr int keptNodeIndex(int reference) { return -2 - reference; }  // for re
 
 struct Scene {
     std::string name;
+    // False when the file's scene had no name (the loader then names it after the file): a save
+    // writes no name while `name` is still the source file's stem.
+    bool fileSceneNamed = true;
     std::filesystem::path sourcePath;
     std::vector<Node> nodes;
     std::vector<int> roots;

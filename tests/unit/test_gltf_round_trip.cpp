@@ -1160,8 +1160,8 @@ fs::path writeLosslessFile(const TempDir& dir) {
 }
 
 // The parts of a document the writer lays out itself, made comparable: offsets (Lit packs the
-// buffer its own way), view targets (the source has none), defaults written out (TRIANGLES,
-// LINEAR) and the scene's name (Lit names an unnamed scene after the file).
+// buffer its own way), view targets (the source has none) and defaults written out (TRIANGLES,
+// LINEAR).
 json comparable(json doc) {
     for (json& a : doc["accessors"]) {
         if (a.value("byteOffset", 0) == 0) a.erase("byteOffset");
@@ -1172,7 +1172,6 @@ json comparable(json doc) {
     for (json& animation : doc["animations"])
         for (json& sampler : animation["samplers"])
             if (sampler.value("interpolation", "LINEAR") == "LINEAR") sampler.erase("interpolation");
-    for (json& scene : doc["scenes"]) scene.erase("name");
     for (json& v : doc["bufferViews"]) {
         v.erase("byteOffset");
         v.erase("target");
@@ -1231,9 +1230,9 @@ TEST(GltfRoundTrip, AnUnlitFileLayoutIsWrittenBackAsTheFileHadIt) {
 }
 
 // What an edit changes: a moved matrix node is written as translation, rotation and scale (its
-// other values the matrix's); edited geometry is written fresh (no file names or extras on its
-// accessors, min/max recomputed from the new values) while the file's layout stays; a node Lit
-// adds goes after the file's nodes, which keep their indices. A few milliseconds.
+// other values the matrix's); edited geometry is written fresh (min/max recomputed from the new
+// values, the file's names, extras and extensions of its accessors kept) while the file's layout
+// stays; a node Lit adds goes after the file's nodes, which keep their indices. A few milliseconds.
 TEST(GltfRoundTrip, EditsWriteFreshDataAndKeepTheRest) {
     TempDir dir;
     QuietLog log;
@@ -1269,17 +1268,24 @@ TEST(GltfRoundTrip, EditsWriteFreshDataAndKeepTheRest) {
         EXPECT_NEAR(node["scale"][0].get<double>(), 2.0, 1e-6);
         EXPECT_NEAR(node["scale"][2].get<double>(), 2.0, 1e-6);
         EXPECT_NEAR(std::abs(node["rotation"][1].get<double>()), std::sqrt(0.5), 1e-6);
-        // The edited floor: fresh accessors in the file's layout, min/max of the new values.
+        // The edited floor: fresh accessors in the file's layout, min/max of the new values, and
+        // the file's names, extras and extensions of those accessors and views (before issue #13's
+        // sixth session an edited primitive lost them silently).
         const json& floorPrimitive = got["meshes"][0]["primitives"][0];
         const json& positions = got["accessors"][floorPrimitive["attributes"]["POSITION"].get<std::size_t>()];
-        EXPECT_FALSE(positions.contains("name"));
+        EXPECT_EQ(positions.value("name", ""), "floor positions");
         EXPECT_EQ(positions["max"][0], 2.0);
         const json& uvs = got["accessors"][floorPrimitive["attributes"]["TEXCOORD_0"].get<std::size_t>()];
-        EXPECT_FALSE(uvs.contains("extras"));
+        EXPECT_EQ(uvs.value("extras", json()), json({{"accessor", "uv"}}));
         EXPECT_EQ(uvs["max"], json::array({1.0, 3.0}));
+        const json& normals = got["accessors"][floorPrimitive["attributes"]["NORMAL"].get<std::size_t>()];
+        EXPECT_EQ(normals.value("extensions", json()), json({{"EXT_lit_test", {{"n", 1}}}}));
+        const json& normalView = got["bufferViews"][normals["bufferView"].get<std::size_t>()];
+        EXPECT_EQ(normalView.value("name", ""), "normal view");
+        EXPECT_EQ(normalView.value("extras", json()), json({{"view", "normal"}}));
         const json& indices = got["accessors"][floorPrimitive["indices"].get<std::size_t>()];
         EXPECT_EQ(indices["componentType"], 5123);
-        EXPECT_FALSE(indices.contains("name"));
+        EXPECT_EQ(indices.value("name", ""), "floor indices");
         EXPECT_EQ(indices["max"], json::array({3}));
         EXPECT_FALSE(got["bufferViews"][positions["bufferView"].get<std::size_t>()].contains("byteStride"));  // not interleaved
         // The twin, unedited, keeps its names (it no longer shares the edited positions).
@@ -1327,7 +1333,8 @@ TEST(GltfRoundTrip, BlenderExportsComeBackAsTheyWere) {
                     got["nodes"][0] = want["nodes"][0];
                 }
                 for (const char* key : {"nodes", "scenes", "meshes", "accessors", "animations", "skins", "materials",
-                                        "cameras", "extensions", "extensionsUsed", "extensionsRequired"})
+                                        "textures", "samplers", "images", "cameras", "extensions", "extensionsUsed",
+                                        "extensionsRequired"})
                     EXPECT_EQ(got.value(key, json()), want.value(key, json())) << key;
                 ASSERT_EQ(got["bufferViews"].size(), want["bufferViews"].size());
                 for (std::size_t v = 0; v < want["bufferViews"].size(); ++v) {
@@ -1344,6 +1351,155 @@ TEST(GltfRoundTrip, BlenderExportsComeBackAsTheyWere) {
                         << "accessor " << a;
             }
     }
+}
+
+// A file that writes glTF defaults out (alphaCutoff 0.5, roughnessFactor 1, alphaMode OPAQUE,
+// doubleSided false, texCoord 0, normal scale 1, ...), leaves others out (a texture without a
+// sampler, a sampler without wraps or minFilter, a material with no fields, a scene without a
+// name), gives an image by URI its optional mimeType and has material factors a float cannot
+// hold (0.1, 0.7): a save writes exactly what the file had. Before issue #13's sixth session the
+// defaults were dropped, a default sampler added, the scene named after the file, the mimeType
+// dropped and 0.1 written as 0.10000000149011612. An edit of one factor changes only it.
+// A few milliseconds.
+fs::path writeDefaultsFile(const TempDir& dir) {
+    GltfBuilder b;
+    json& doc = b.doc;
+    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 0, -1}, 5126, "VEC3", 3);
+    doc["accessors"][position]["min"] = json::array({0, 0, -1});
+    doc["accessors"][position]["max"] = json::array({1, 0, 0});
+    const int normal = b.add(std::vector<float>{0, 1, 0, 0, 1, 0, 0, 1, 0}, 5126, "VEC3", 3);
+    const int uv = b.add(std::vector<float>{0, 0, 1, 0, 1, 1}, 5126, "VEC2", 3);
+    const json attributes = {{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_0", uv}};
+    doc["meshes"] = json::array({{{"name", "tri"},
+                                  {"primitives", json::array({{{"attributes", attributes}, {"material", 0}},
+                                                              {{"attributes", attributes}, {"material", 1}}})}}});
+    doc["materials"] = json::parse(R"([
+        {"name": "explicit", "alphaMode": "OPAQUE", "alphaCutoff": 0.5, "doubleSided": false,
+         "emissiveFactor": [0.0, 0.0, 0.0],
+         "pbrMetallicRoughness": {"baseColorFactor": [0.1, 0.2, 0.3, 1.0], "metallicFactor": 0.7,
+                                  "roughnessFactor": 1.0, "baseColorTexture": {"index": 0, "texCoord": 0}},
+         "normalTexture": {"index": 1, "scale": 1.0}, "occlusionTexture": {"index": 1, "strength": 0.3}},
+        {"name": "bare"}])");
+    doc["textures"] = json::parse(R"([{"source": 0}, {"source": 0, "sampler": 0}])");
+    doc["samplers"] = json::parse(R"([{"magFilter": 9728}])");
+    doc["images"] = json::parse(R"([{"uri": "white.png", "mimeType": "image/png"}])");
+    doc["nodes"] = json::parse(R"([{"name": "tri", "mesh": 0}])");
+    doc["scenes"] = json::parse(R"([{"nodes": [0]}])");
+    doc["scene"] = 0;
+    writePng(dir / "white.png", 2, 2, std::vector<std::uint8_t>(16, 255));
+    const fs::path file = dir / "defaults.gltf";
+    b.write(file);
+    return file;
+}
+
+TEST(GltfRoundTrip, DefaultsAndExactFactorsAreWrittenAsTheFileHadThem) {
+    TempDir dir;
+    QuietLog log;
+    const fs::path source = writeDefaultsFile(dir);
+    const json want = jsonOf(source);
+    Scene scene = loadGltf(source, log);
+    Scene edited = scene;
+    ASSERT_EQ(edited.materials.size(), 2u);
+    edited.materials[0].metallic = 0.25f;
+    for (const auto& [kind, which] : {std::pair{"unedited", &scene}, std::pair{"edited", &edited}})
+        for (const char* ext : {".gltf", ".glb"}) {
+            SCOPED_TRACE(std::string(kind) + ext);
+            const fs::path saved = dir / (std::string(kind) + ext);  // beside white.png: the same uri
+            saveGltf(*which, saved);
+            json got = jsonOf(saved);
+            if (which == &edited) {
+                EXPECT_EQ(got["materials"][0]["pbrMetallicRoughness"]["metallicFactor"], 0.25);
+                got["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 0.7;
+            }
+            for (const char* key : {"materials", "textures", "samplers", "images", "scenes"})
+                EXPECT_EQ(got.value(key, json()), want.value(key, json())) << key;
+            // The numbers are the file's doubles, not their floats' (0.10000000149011612).
+            EXPECT_EQ(got["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"][0].get<double>(), 0.1);
+            // What the file wrote is read back the same way.
+            const Scene back = loadGltf(saved, log);
+            if (which == &scene) {
+                EXPECT_EQ(back.materials, scene.materials);
+            }
+            EXPECT_FALSE(back.fileSceneNamed);
+            EXPECT_EQ(back.name, kind);  // the loader names an unnamed scene after the file
+        }
+}
+
+// A primitive whose TANGENTs are not unit length (glTF requires unit ones; some exporters write
+// them scaled): drawn normalized, saved as the file had them while the tangents are unedited,
+// normalized once one is edited. Before issue #13's sixth session the save wrote them normalized.
+// A few milliseconds.
+TEST(GltfRoundTrip, NonUnitTangentsAreWrittenAsTheFileHadThem) {
+    TempDir dir;
+    QuietLog log;
+    GltfBuilder b;
+    json& doc = b.doc;
+    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 0, -1}, 5126, "VEC3", 3);
+    doc["accessors"][position]["min"] = json::array({0, 0, -1});
+    doc["accessors"][position]["max"] = json::array({1, 0, 0});
+    const int normal = b.add(std::vector<float>{0, 1, 0, 0, 1, 0, 0, 1, 0}, 5126, "VEC3", 3);
+    const std::vector<float> fileTangents = {2, 0, 0, 1, 0.5f, 0, 0, -1, 1, 0, 0, 1};
+    const int tangent = b.add(fileTangents, 5126, "VEC4", 3);
+    doc["meshes"] = json::array(
+        {{{"name", "tri"}, {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"NORMAL", normal}, {"TANGENT", tangent}}}}})}}});
+    doc["nodes"] = json::parse(R"([{"name": "tri", "mesh": 0}])");
+    doc["scenes"] = json::parse(R"([{"nodes": [0]}])");
+    const fs::path source = dir / "tangents.gltf";
+    b.write(source);
+    const Scene scene = loadGltf(source, log);
+    const Primitive& primitive = scene.meshes.at(0).primitives.at(0);
+    EXPECT_EQ(primitive.vertices.at(0).tangent, glm::vec4(1, 0, 0, 1));  // drawn normalized
+    EXPECT_EQ(primitive.vertices.at(1).tangent, glm::vec4(1, 0, 0, -1));
+    const auto savedTangents = [&](const Scene& s, const char* name) {
+        saveGltf(s, dir / name);
+        const tinygltf::Model model = readModel(dir / name);
+        const tinygltf::Primitive& p = model.meshes.at(0).primitives.at(0);
+        std::vector<float> out;
+        for (const std::vector<double>& e : elements(model, p.attributes.at("TANGENT")))
+            for (double c : e) out.push_back(static_cast<float>(c));
+        return out;
+    };
+    EXPECT_EQ(savedTangents(scene, "unedited.gltf"), fileTangents);
+    EXPECT_EQ(savedTangents(scene, "unedited.glb"), fileTangents);
+    Scene edited = scene;
+    edited.meshes[0].primitives[0].vertices[2].tangent = glm::vec4(0, 0, 1, 1);
+    EXPECT_EQ(savedTangents(edited, "edited.gltf"), (std::vector<float>{1, 0, 0, 1, 1, 0, 0, -1, 0, 0, 1, 1}));
+}
+
+// The shared test scenes (../shared/scenes or LIT_SCENES_DIR: Khronos samples and Sponza, skipped
+// where absent) come back from a save with the same JSON: nodes, scenes (unnamed ones stay
+// unnamed), meshes, accessors, materials (defaults the file wrote out), textures, samplers (the
+// DamagedHelmet's empty one), images (mimeType beside a uri; the uri itself points at the same
+// file from the new folder) and buffer views (but for where Lit puts them in its buffer).
+// Sponza takes about 2 s, the others a few ms each.
+TEST(GltfRoundTrip, SharedScenesComeBackAsTheyWere) {
+    const char* env = std::getenv("LIT_SCENES_DIR");
+    const fs::path root = env && *env ? fs::path(env) : fs::path(LIT_SOURCE_DIR) / ".." / "shared" / "scenes";
+    const std::vector<std::string> files = {"avocado/Avocado.gltf", "box_textured/BoxTextured.gltf",
+                                            "damaged_helmet/DamagedHelmet.gltf", "water_bottle/WaterBottle.gltf",
+                                            "cornell_box/CornellBox-Original.gltf", "sponza/Sponza.gltf"};
+    TempDir dir;
+    QuietLog log;
+    int found = 0;
+    for (const std::string& name : files) {
+        const fs::path source = root / name;
+        if (!fs::exists(source)) continue;
+        ++found;
+        SCOPED_TRACE(name);
+        const fs::path saved = dir / fs::path(name).filename();
+        saveGltf(loadGltf(source, log), saved);
+        json want = comparable(jsonOf(source));
+        json got = comparable(jsonOf(saved));
+        for (json* doc : {&want, &got}) {
+            for (json& image : (*doc)["images"])
+                if (image.contains("uri")) image["uri"] = fs::path(percentDecode(image["uri"].get<std::string>())).filename().string();
+            for (json& view : (*doc)["bufferViews"]) view.erase("buffer");
+        }
+        for (const char* key : {"nodes", "scenes", "meshes", "accessors", "materials", "textures", "samplers", "images",
+                                "bufferViews", "extensionsUsed", "extensionsRequired"})
+            EXPECT_EQ(got.value(key, json()), want.value(key, json())) << key;
+    }
+    if (found == 0) GTEST_SKIP() << "no shared scenes in " << root.string() << " (set LIT_SCENES_DIR): skipped";
 }
 
 // The Khronos validator accepts the saved file (strides, min/max of morph POSITIONs, skins).
@@ -1373,10 +1529,12 @@ TEST(GltfRoundTrip, ValidatorAcceptsTheSavedFile) {
     saveGltf(loadGltf(writeDataExtrasFile(dir), log), dir / "data_extras_saved.gltf");
     saveGltf(loadGltf(writeLosslessFile(dir), log), dir / "lossless_saved.glb");
     saveGltf(loadGltf(fs::path(LIT_SOURCE_DIR) / "tests" / "data" / "blender" / "rig.gltf", log), dir / "rig_saved.gltf");
+    saveGltf(loadGltf(writeDefaultsFile(dir), log), dir / "defaults_saved.gltf");
     std::string files;
     for (const char* name : {"rigged.gltf", "saved.gltf", "saved.glb", "scenes.gltf", "scenes_saved.gltf", "sparse.gltf",
                              "sparse_saved.glb", "extras.gltf", "extras_saved.gltf", "hidden.gltf", "hidden_saved.glb",
-                             "data_extras.gltf", "data_extras_saved.gltf", "lossless.gltf", "lossless_saved.glb", "rig_saved.gltf"})
+                             "data_extras.gltf", "data_extras_saved.gltf", "lossless.gltf", "lossless_saved.glb", "rig_saved.gltf",
+                             "defaults.gltf", "defaults_saved.gltf"})
         files += " '" + (dir / name).string() + "'";
     const std::string command = "node '" + (fs::path(LIT_SOURCE_DIR) / "tools" / "validate_gltf.cjs").string() + "' '" +
                                 validatorDir.string() + "'" + files + " > '" + (dir / "report.txt").string() + "' 2>&1";
@@ -1391,6 +1549,7 @@ TEST(GltfRoundTrip, ValidatorAcceptsTheSavedFile) {
     EXPECT_NE(report.find("hidden.gltf: 0 errors"), std::string::npos) << report;
     EXPECT_NE(report.find("data_extras.gltf: 0 errors"), std::string::npos) << report;
     EXPECT_NE(report.find("lossless.gltf: 0 errors"), std::string::npos) << report;
+    EXPECT_NE(report.find("defaults.gltf: 0 errors"), std::string::npos) << report;
     EXPECT_EQ(status, 0) << report;
 }
 
