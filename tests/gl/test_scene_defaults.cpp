@@ -197,8 +197,8 @@ std::filesystem::path sharedScene(const char* relative) {
 //  - sky light on surfaces, sun off: the diffuse light the sky gives the surfaces in view by one
 //    segment (Lit's one-bounce cones return the sky, its voxels hold no sky light), as a mean over
 //    all pixels (background 0): 0.00099 (every bounce: 0.00118). This is a presence check, not an
-//    accuracy check: the accurate mode (anisotropic voxels, footprint 0.33) measures 0.00023 =
-//    0.23 of it (narrower footprints read more: 0.1 → 0.00054, 0.03 → 0.00075; the coarse voxels
+//    accuracy check: the accurate mode (anisotropic voxels, footprint 0.25) measures 0.00028 =
+//    0.28 of it (0.33: 0.23; narrower footprints read more: 0.1 → 0.00054, 0.03 → 0.00075; the coarse voxels
 //    over the atrium's 11 m walls block most of its opening, docs/UNITS.md), the default mode
 //    2·10⁻⁵ = 0.02 (lost). The bar, more than a tenth of the reference, fails when the sky light
 //    is lost as in the default mode and passes with the accurate mode's known gap; the upper bar,
