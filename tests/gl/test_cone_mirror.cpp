@@ -54,15 +54,21 @@ void main() {
 
 class ConeMirror : public ContextFixture {};
 
-TEST_F(ConeMirror, TracedConesMatchTheShader) {
-    if (HasFatalFailure()) return;
+// Builds a compute program from `source`, written to a temporary file outside shaders/: its
+// #include "cone.glsl" (and the others) resolve in shaders/include as the renderer's own do.
+gl::Program testComputeProgram(const std::string& name, const char* source) {
     const fs::path dir = fs::temp_directory_path() / ("lit_cone_mirror_" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    const fs::path file = dir / "cone_mirror.comp.glsl";
-    std::ofstream(file) << kShader;
-    // The shader lives outside shaders/; its #include "cone.glsl" resolves in shaders/include.
-    gl::Program program(sourceDir() / "shaders", "cone mirror", {{GL_COMPUTE_SHADER, file.string()}});
+    const fs::path file = dir / "test.comp.glsl";
+    std::ofstream(file) << source;
+    gl::Program program(sourceDir() / "shaders", name, {{GL_COMPUTE_SHADER, file.string()}});
     fs::remove_all(dir);
+    return program;
+}
+
+TEST_F(ConeMirror, TracedConesMatchTheShader) {
+    if (HasFatalFailure()) return;
+    gl::Program program = testComputeProgram("cone mirror", kShader);
     gl::Buffer results("cone mirror results", kResults * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
 
     struct Case {
@@ -168,12 +174,7 @@ void main() {
 
 TEST_F(ConeMirror, AccurateModeTracedConesAreThePixelsStratifiedSet) {
     if (HasFatalFailure()) return;
-    const fs::path dir = fs::temp_directory_path() / ("lit_cone_strata_mirror_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const fs::path file = dir / "cone_strata_mirror.comp.glsl";
-    std::ofstream(file) << kStrataShader;
-    gl::Program program(sourceDir() / "shaders", "cone strata mirror", {{GL_COMPUTE_SHADER, file.string()}});
-    fs::remove_all(dir);
+    gl::Program program = testComputeProgram("cone strata mirror", kStrataShader);
     constexpr std::size_t kCount = std::size_t(kStrataPixels) * LIT_DIFFUSE_CONE_COUNT;
     gl::Buffer results("cone strata mirror results", kCount * sizeof(glm::vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
 
@@ -269,12 +270,7 @@ void main() {
 
 TEST_F(ConeMirror, BounceVoxelSetsCoverEverySetOnEachSurfacePatch) {
     if (HasFatalFailure()) return;
-    const fs::path dir = fs::temp_directory_path() / ("lit_voxel_sets_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const fs::path file = dir / "voxel_sets.comp.glsl";
-    std::ofstream(file) << kVoxelSetShader;
-    gl::Program program(sourceDir() / "shaders", "voxel cone sets", {{GL_COMPUTE_SHADER, file.string()}});
-    fs::remove_all(dir);
+    gl::Program program = testComputeProgram("voxel cone sets", kVoxelSetShader);
     constexpr std::size_t kCount = std::size_t(kPatch) * kPatch;
     gl::Buffer results("voxel cone sets", kCount * sizeof(int), nullptr, GL_DYNAMIC_STORAGE_BIT);
     struct Case {
