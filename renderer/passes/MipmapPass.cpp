@@ -252,7 +252,8 @@ void MipmapPass::executeDirectionalOverParents(const VoxelVolume& volume) {
 
 void MipmapPass::executeDirectional(VoxelVolume& volume, bool overOccupiedParents) {
     const int n = volume.resolution();
-    if (n < 2 || !volume.directional(0)) return;
+    if (n < 2) return;
+    volume.ensureDirectionalVolumes();
     if (overOccupiedParents && volume.parentListsValid()) {
         // Voxels off the lists keep what they hold: zero them once after a voxelization.
         if (volume.directionalStale()) volume.clearDirectional();

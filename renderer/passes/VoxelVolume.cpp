@@ -99,18 +99,9 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     glTextureParameterfv(radiance_.id(), GL_TEXTURE_BORDER_COLOR, transparent);
     for (int level = 0; level < mipCount_; ++level)
         glClearTexImage(radiance_.id(), level, GL_RGBA, GL_FLOAT, transparent);
-    for (int axis = 0; axis < LIT_VOXEL_AXIS_COUNT; ++axis) {
-        const int half = std::max(n / 2, 1);
-        gl::Texture& t = directional_[static_cast<std::size_t>(axis)];
-        // +axis face at x ∈ [0, m), an empty gap [m, 2m), −axis face at [2m, 3m) (m = the level's edge).
-        t = gl::Texture("voxel radiance " + std::string(kAxisNames[axis]),
-                        {GL_TEXTURE_3D, radianceFormat(), 3 * half, half, half, std::max(mipCount_ - 1, 1)});
-        t.setFilter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
-        t.setWrap(GL_CLAMP_TO_BORDER);
-        glTextureParameterfv(t.id(), GL_TEXTURE_BORDER_COLOR, transparent);
-        for (int level = 0; level < t.desc().levels; ++level)
-            glClearTexImage(t.id(), level, GL_RGBA, GL_FLOAT, transparent);
-    }
+    // The directional chains are made by the first anisotropic mipmap build (ensureDirectionalVolumes):
+    // the default mode never reads them, and at 512³ they are 0.6 GiB (RGBA8) or 1.3 GiB (RGBA16F).
+    directional_ = {};
     direct_ = {};
     bounce_ = {};
     parentListsValid_ = false;  // the chains above are zero: nothing stale
@@ -274,7 +265,8 @@ std::size_t VoxelVolume::materialBytes() const {
 std::size_t VoxelVolume::radianceBytes() const {
     std::size_t bytes = 0;
     for (int level = 0, n = resolution_; level < mipCount_; ++level, n = std::max(n / 2, 1))
-        bytes += static_cast<std::size_t>(n) * n * n * (rgba8_ ? 4 : 8) * (level == 0 ? 1 : 1 + 3 * LIT_VOXEL_AXIS_COUNT);
+        bytes += static_cast<std::size_t>(n) * n * n * (rgba8_ ? 4 : 8) *
+                 (level == 0 || !directional_[0] ? 1 : 1 + 3 * LIT_VOXEL_AXIS_COUNT);
     return bytes;
 }
 
@@ -287,6 +279,26 @@ void VoxelVolume::bindDirectional() const {
         directional_[static_cast<std::size_t>(axis)].bind(LIT_TEX_VOXEL_DIRECTIONAL_FIRST + axis);
 }
 
+void VoxelVolume::ensureDirectionalVolumes() {
+    if (directional_[0] || resolution_ <= 0) return;
+    const int half = std::max(resolution_ / 2, 1);
+    const float transparent[4] = {0, 0, 0, 0};
+    for (int axis = 0; axis < LIT_VOXEL_AXIS_COUNT; ++axis) {
+        gl::Texture& t = directional_[static_cast<std::size_t>(axis)];
+        // +axis face at x ∈ [0, m), an empty gap [m, 2m), −axis face at [2m, 3m) (m = the level's edge).
+        t = gl::Texture("voxel radiance " + std::string(kAxisNames[axis]),
+                        {GL_TEXTURE_3D, radianceFormat(), 3 * half, half, half, std::max(mipCount_ - 1, 1)});
+        t.setFilter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+        t.setWrap(GL_CLAMP_TO_BORDER);
+        glTextureParameterfv(t.id(), GL_TEXTURE_BORDER_COLOR, transparent);
+        for (int level = 0; level < t.desc().levels; ++level)
+            glClearTexImage(t.id(), level, GL_RGBA, GL_FLOAT, transparent);
+    }
+    directionalStale_ = false;  // zero, as the whole-grid build leaves voxels off the lists
+}
+
+void VoxelVolume::releaseDirectionalVolumes() { directional_ = {}; }
+
 void VoxelVolume::ensureBounceVolumes() {
     if (direct_ || resolution_ <= 0) return;
     const int n = resolution_;
@@ -297,7 +309,7 @@ void VoxelVolume::ensureBounceVolumes() {
 std::string VoxelVolume::memoryReport() const {
     const std::size_t each = materialBytes() / 3;
     return "albedo " + mib(each) + ", normal " + mib(each) + ", emission " + mib(each) + ", radiance " +
-           mib(radianceBytes()) + " (with mips and 6 directional chains)" +
+           mib(radianceBytes()) + (directional_[0] ? " (with mips and 6 directional chains)" : " (with mips)") +
            (direct_ ? ", bounce " + mib(bounceBytes()) : std::string()) + ", total " + mib(totalBytes());
 }
 

@@ -119,13 +119,17 @@ public:
     void bindDirectional() const;
     // Allocates the direct and bounce volumes if they are missing (multiple bounces).
     void ensureBounceVolumes();
+    // The three directional volumes (anisotropic voxels), made zeroed on first use and freed when
+    // anisotropic voxels are switched off: the default mode does not pay their memory.
+    void ensureDirectionalVolumes();
+    void releaseDirectionalVolumes();
     const gl::Texture& direct() const { return direct_; }
     const gl::Texture& bounce() const { return bounce_; }
     const gl::Buffer& uniforms() const { return uniforms_; }
 
     // Bytes of GPU memory per volume and in total (radiance counted with its mip chain).
     std::size_t materialBytes() const;   // albedo + normal + emission
-    std::size_t radianceBytes() const;     // isotropic chain + the six directional chains
+    std::size_t radianceBytes() const;     // isotropic chain + the six directional chains while they exist
     std::size_t bounceBytes() const;       // direct + bounce volumes (0 until allocated)
     std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes(); }
     std::string memoryReport() const;  // "albedo 8.0 MiB, normal 8.0 MiB, ... total 54.9 MiB"

@@ -403,7 +403,8 @@ TEST_F(CornellAccuracy, DISABLED_ColourBleedingAndResolutionIndependence) {
 
 // Switching the accurate mode on in a running renderer (the editor's checkbox) without any scene
 // change: the directional mip chains, built only while anisotropic voxels are on, must be built
-// then, so the image equals a fresh renderer's. A renderer that skipped them would trace empty
+// then, so the image equals a fresh renderer's; they are not allocated in the default mode and are
+// freed when the mode is switched off, and built again when it comes back. A renderer that skipped them would trace empty
 // directional volumes (no indirect light). Bar: 0.1 % of the mean, i.e. the same image.
 TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
     const Scene scene = loadCornellBox();
@@ -413,19 +414,35 @@ TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
     plain.anisotropicVoxels = false;
     plain.coneFootprintPerHeight = 0.0f;
     render(scene, plain);
+    // The default mode does not allocate the directional volumes (0.6-1.3 GiB at 512³).
+    ASSERT_NE(renderer_->voxels(), nullptr);
+    EXPECT_FALSE(static_cast<bool>(renderer_->voxels()->directional(0))) << "directional volumes allocated in the default mode";
+    const std::size_t plainBytes = renderer_->voxels()->radianceBytes();
     // The same renderer and scene (no setScene: that would re-voxelize), only the settings change.
     renderer_->render(scene, cameraFor(scene, accurate), accurate);
     const HdrImage switched{accurate.width, accurate.height, renderer_->readHdrRgb()};
+    EXPECT_TRUE(static_cast<bool>(renderer_->voxels()->directional(0)));
+    EXPECT_GT(renderer_->voxels()->radianceBytes(), plainBytes);
+    // Switched off again: their memory goes back.
+    renderer_->render(scene, cameraFor(scene, plain), plain);
+    EXPECT_FALSE(static_cast<bool>(renderer_->voxels()->directional(0))) << "directional volumes kept after the accurate mode was switched off";
+    EXPECT_EQ(renderer_->voxels()->radianceBytes(), plainBytes);
+    // ... and switching on once more makes and builds them again.
+    renderer_->render(scene, cameraFor(scene, accurate), accurate);
+    const HdrImage switchedAgain{accurate.width, accurate.height, renderer_->readHdrRgb()};
     renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
     const HdrImage fresh = render(scene, accurate);
-    double difference = 0.0, total = 0.0;
+    double difference = 0.0, differenceAgain = 0.0, total = 0.0;
     for (std::size_t i = 0; i < fresh.rgb.size(); ++i) {
         difference += std::abs(double(switched.rgb[i]) - fresh.rgb[i]);
+        differenceAgain += std::abs(double(switchedAgain.rgb[i]) - fresh.rgb[i]);
         total += fresh.rgb[i];
     }
     ASSERT_GT(total, 0.0) << "the indirect light must not be black (else the test is vacuous)";
-    std::printf("accurate mode switched on vs fresh: mean difference %.4f %% of the mean\n", 100.0 * difference / total);
+    std::printf("accurate mode switched on vs fresh: mean difference %.4f %% of the mean (on again: %.4f %%)\n",
+                100.0 * difference / total, 100.0 * differenceAgain / total);
     EXPECT_LT(difference / total, 0.001);
+    EXPECT_LT(differenceAgain / total, 0.001);
 }
 
 // Temporal accumulation in the accurate mode, still camera, indirect scale 1 (so no pixel jitter:
