@@ -21,7 +21,8 @@ ConeTracePass::ConeTracePass(const std::filesystem::path& shaderRoot)
                       {}, ConeFeatures::of(RenderSettings{})),
       reducedSubsetProgram_(shaderRoot, "indirect trace (reduced, cone subsets)",
                             {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}},
-                            "#define LIT_CONE_SUBSETS 1\n", ConeFeatures::of(RenderSettings{})),
+                            // Cone subsets exist only for the unbounded six-cone table (the fast mode).
+                            "#define LIT_CONE_SUBSETS 1\n", ConeFeatures{}),
       strataFilter_(shaderRoot) {
     constexpr int size = LIT_SPECULAR_ALBEDO_SIZE;
     albedoTable_ = gl::Texture("specular albedo table", {GL_TEXTURE_2D, GL_RG16F, size, size, 1, 1});

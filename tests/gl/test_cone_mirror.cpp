@@ -111,6 +111,7 @@ TEST_F(ConeMirror, TracedConesMatchTheShader) {
         s.roughness = c.roughness;
         s.glPixel = c.glPixel;
         RenderSettings settings;
+        setGiMode(settings, GiMode::Fast);  // the fixed six-cone set the shader above traces
         settings.specularSamples = c.count;
         const std::vector<TracedCone> cones = tracedCones(s, v * 3.0f, settings);
 
@@ -238,10 +239,12 @@ TEST_F(ConeMirror, AccurateModeTracedConesAreThePixelsStratifiedSet) {
                 EXPECT_EQ(setsOfBlock.size(), std::size_t(LIT_CONE_STRATA * LIT_CONE_STRATA));
             }
         }
-    // The default mode keeps the fixed set (TracedConesMatchTheShader checks its directions).
+    // The fast mode keeps the fixed set (TracedConesMatchTheShader checks its directions).
     SurfaceSample s;
     s.glPixel = {5, 6};
-    for (const TracedCone& cone : tracedCones(s, {0, 3, 0}, RenderSettings{})) {
+    RenderSettings fast;
+    setGiMode(fast, GiMode::Fast);
+    for (const TracedCone& cone : tracedCones(s, {0, 3, 0}, fast)) {
         EXPECT_EQ(cone.coneSet, -1);
         EXPECT_EQ(cone.footprintPerHeight, 0.0f);
     }

@@ -107,6 +107,10 @@ protected:
         settings_.width = 96;
         settings_.height = 96;
         settings_.voxelResolution = 64;
+        // The fast mode's tracer (isotropic mips, unbounded cones): this fixture fills only the
+        // isotropic volume (glGenerateTextureMipmap); the accurate mode reads the directional
+        // volumes MipmapPass builds, and is tested through the whole pipeline (test_gi_accuracy.cpp).
+        setGiMode(settings_, GiMode::Fast);
     }
 
     void TearDown() override {

@@ -45,13 +45,13 @@ TEST_F(CornellGi, FourTermsSumToTheFinalImage) {
 
 TEST_F(CornellGi, CeilingIsLitOnlyWithGi) {
     const Scene scene = loadCornellBox();
-    const RenderSettings settings = giSettings(true);
-    // The accurate GI mode (anisotropic voxels, footprint-bounded cones; off by default for its
-    // cost, docs/GI.md).
+    // Both GI modes, whichever is the default (docs/GI.md): the fast one (isotropic voxels, wide
+    // unbounded cones) and the accurate one (anisotropic voxels, footprint-bounded cones).
+    RenderSettings settings = giSettings(true);
+    setGiMode(settings, GiMode::Fast);
     RenderSettings accurateSettings = settings;
-    accurateSettings.anisotropicVoxels = true;
-    accurateSettings.coneFootprintPerHeight = kAccurateGiFootprint;
-    const HdrImage on = renderView(scene, true, View::Final), off = renderView(scene, false, View::Final);
+    setGiMode(accurateSettings, GiMode::Accurate);
+    const HdrImage on = render(scene, settings), off = renderView(scene, false, View::Final);
     const HdrImage accurate = render(scene, accurateSettings);
     float withGi = 1e9f, withAccurateGi = 1e9f, withoutGi = 0.0f;
     for (const glm::vec3& p : {glm::vec3(0.0f, 2.0f, 0.0f), glm::vec3(-0.5f, 2.0f, 0.5f), glm::vec3(0.5f, 2.0f, -0.5f)}) {
@@ -61,7 +61,7 @@ TEST_F(CornellGi, CeilingIsLitOnlyWithGi) {
     }
     std::printf("ceiling radiance with GI (darkest of 3 points): %.4f, accurate GI %.4f\n", withGi, withAccurateGi);
     EXPECT_LT(withoutGi, 1e-3f) << "the downward spot does not reach the ceiling";
-    // Default mode. The ceiling sees the spot-lit floor (radiance ≈ 0.8-1.3) over a large solid
+    // Fast mode. The ceiling sees the spot-lit floor (radiance ≈ 0.8-1.3) over a large solid
     // angle: a physical estimate is 0.1-0.2. With the mip chain stacking opacity (thin walls stay
     // opaque) 64³ gives 0.044; with plain-average mips the cones saw through the walls and it was
     // 0.008. The remaining gap is the side cones' self-occlusion by the ceiling's own coarse
@@ -70,30 +70,75 @@ TEST_F(CornellGi, CeilingIsLitOnlyWithGi) {
     EXPECT_LT(withGi, 0.3f) << "more than the lit floor can send";
     // Accurate mode, re-derived from the reference path tracer (issue #10; docs/GI.md, accuracy):
     // the ceiling's mean one-bounce radiance is 0.42 W/(sr·m²) (0.47 with two bounces). The
-    // default mode gives 0.044 (above); the accurate one 0.3-0.4. Bars: at least half of the
+    // fast mode gives 0.044 (above); the accurate one 0.3-0.4. Bars: at least half of the
     // one-bounce mean at the darkest of the three points, at most 1.2 × the two-bounce mean.
     EXPECT_GT(withAccurateGi, 0.5f * 0.42f) << "accurate GI: bounced light must reach the ceiling";
     EXPECT_LT(withAccurateGi, 1.2f * 0.47f) << "accurate GI: more than the lit floor can send";
 }
 
+// Colour bleeding at points next to the red (x = −1) and green (x = +1) walls, with bars from the
+// path-traced reference of the same view (ReferenceScene + PathTracer, 128 spp, Final view):
+//                                    one bounce      two bounces
+//   ceiling, R/G by red, G/R by green  0.997, 0.994    1.124, 1.063
+//   back wall low down (GI off 1.000)  1.170, 1.133    1.231, 1.187
+// With one bounce the ceiling does not bleed: it sees the coloured walls, but those are lit only
+// where the downward spot reaches them, far below. Its colour comes with the second bounce (light
+// → floor → wall → ceiling). Measured (64³, 128²), one bounce / two bounces:
+//   fast:     ceiling 1.127, 1.187 / 1.547, 1.299   back wall 1.179, 1.177 / 1.349, 1.298
+//   accurate: ceiling 1.015, 1.012 / 1.188, 1.119   back wall 1.270, 1.151 / 1.369, 1.258
+// Every mode must bleed where the reference does (at least half its excess over 1). The accurate
+// mode must also match the reference's ratios within ±20 % (issue #11's bar) and not bleed where
+// the reference does not: the one-bounce ceiling within ±5 % of grey, since the smallest real
+// bleed in this view is 6.3 %. The fast mode bleeds on the one-bounce ceiling by 13-19 %, and its
+// two-bounce ceiling is 1.38× and 1.22× the reference's ratios: known errors of that mode
+// (docs/GI.md), not asserted. (An earlier version of this test asked every mode for > 1.05 on the
+// one-bounce ceiling: the fast mode's error, not light.)
 TEST_F(CornellGi, WhiteSurfacesNearColouredWallsBleedTheirColour) {
     const Scene scene = loadCornellBox();
-    const RenderSettings settings = giSettings(true);
-    const HdrImage on = renderView(scene, true, View::Final);
-    const HdrImage off = renderView(scene, false, View::Final);
-    // Ceiling and back-wall points next to the red (x = −1) and green (x = +1) walls.
     const auto ratio = [](const glm::vec3& c, int a, int b) { return c[a] / std::max(c[b], 1e-4f); };
-    const glm::vec3 nearRedCeiling = radianceAt(scene, settings, on, {-0.85f, 2.0f, 0.0f});
-    const glm::vec3 nearGreenCeiling = radianceAt(scene, settings, on, {0.85f, 2.0f, 0.0f});
-    EXPECT_GT(ratio(nearRedCeiling, 0, 1), 1.05f) << "R/G on the ceiling next to the red wall";
-    EXPECT_GT(ratio(nearGreenCeiling, 1, 0), 1.05f) << "G/R on the ceiling next to the green wall";
-    // The back wall low down is lit directly; GI must still shift it towards the near wall's colour.
-    const glm::vec3 redSideOn = radianceAt(scene, settings, on, {-0.9f, 0.9f, -1.0f});
-    const glm::vec3 redSideOff = radianceAt(scene, settings, off, {-0.9f, 0.9f, -1.0f});
-    const glm::vec3 greenSideOn = radianceAt(scene, settings, on, {0.9f, 0.9f, -1.0f});
-    const glm::vec3 greenSideOff = radianceAt(scene, settings, off, {0.9f, 0.9f, -1.0f});
-    EXPECT_GT(ratio(redSideOn, 0, 1), 1.02f * ratio(redSideOff, 0, 1));
-    EXPECT_GT(ratio(greenSideOn, 1, 0), 1.02f * ratio(greenSideOff, 1, 0));
+    struct Ratios {
+        float ceilingRed, ceilingGreen, backRed, backGreen;
+    };
+    const auto measure = [&](GiMode mode, int bounces) {
+        RenderSettings settings = giSettings(true);
+        setGiMode(settings, mode);
+        settings.bounces = bounces;
+        const HdrImage image = render(scene, settings);
+        const Ratios r{ratio(radianceAt(scene, settings, image, {-0.85f, 2.0f, 0.0f}), 0, 1),
+                       ratio(radianceAt(scene, settings, image, {0.85f, 2.0f, 0.0f}), 1, 0),
+                       ratio(radianceAt(scene, settings, image, {-0.9f, 0.9f, -1.0f}), 0, 1),
+                       ratio(radianceAt(scene, settings, image, {0.9f, 0.9f, -1.0f}), 1, 0)};
+        std::printf("%s, %d bounce(s): ceiling R/G %.3f, G/R %.3f; back wall R/G %.3f, G/R %.3f\n",
+                    std::string(toString(mode)).c_str(), bounces, r.ceilingRed, r.ceilingGreen, r.backRed, r.backGreen);
+        return r;
+    };
+    const Ratios oneBounceReference{0.997f, 0.994f, 1.170f, 1.133f};
+    const Ratios twoBounceReference{1.124f, 1.063f, 1.231f, 1.187f};
+    const auto bleedsAtLeastHalf = [](float vct, float reference) { return vct - 1.0f > 0.5f * (reference - 1.0f); };
+
+    // GI off: the back-wall points are lit by the white spot alone.
+    const RenderSettings offSettings = giSettings(false);
+    const HdrImage off = render(scene, offSettings);
+    EXPECT_NEAR(ratio(radianceAt(scene, offSettings, off, {-0.9f, 0.9f, -1.0f}), 0, 1), 1.0f, 0.01f);
+    EXPECT_NEAR(ratio(radianceAt(scene, offSettings, off, {0.9f, 0.9f, -1.0f}), 1, 0), 1.0f, 0.01f);
+
+    for (const GiMode mode : {GiMode::Fast, GiMode::Accurate}) {
+        const std::string name(toString(mode));
+        const Ratios one = measure(mode, 1), two = measure(mode, 2);
+        EXPECT_TRUE(bleedsAtLeastHalf(one.backRed, oneBounceReference.backRed)) << name << ": back wall by the red wall";
+        EXPECT_TRUE(bleedsAtLeastHalf(one.backGreen, oneBounceReference.backGreen)) << name << ": back wall by the green wall";
+        EXPECT_TRUE(bleedsAtLeastHalf(two.ceilingRed, twoBounceReference.ceilingRed)) << name << ": ceiling by the red wall";
+        EXPECT_TRUE(bleedsAtLeastHalf(two.ceilingGreen, twoBounceReference.ceilingGreen)) << name << ": ceiling by the green wall";
+        if (mode != GiMode::Accurate) continue;
+        EXPECT_NEAR(one.ceilingRed, 1.0f, 0.05f) << "no bleeding on the one-bounce ceiling";
+        EXPECT_NEAR(one.ceilingGreen, 1.0f, 0.05f) << "no bleeding on the one-bounce ceiling";
+        EXPECT_NEAR(one.backRed / oneBounceReference.backRed, 1.0f, 0.2f);
+        EXPECT_NEAR(one.backGreen / oneBounceReference.backGreen, 1.0f, 0.2f);
+        EXPECT_NEAR(two.ceilingRed / twoBounceReference.ceilingRed, 1.0f, 0.2f);
+        EXPECT_NEAR(two.ceilingGreen / twoBounceReference.ceilingGreen, 1.0f, 0.2f);
+        EXPECT_NEAR(two.backRed / twoBounceReference.backRed, 1.0f, 0.2f);
+        EXPECT_NEAR(two.backGreen / twoBounceReference.backGreen, 1.0f, 0.2f);
+    }
 }
 
 TEST_F(CornellGi, MirrorFloorReflectsTheRedWall) {
