@@ -42,6 +42,13 @@ constexpr std::array<std::pair<SkyMode, std::string_view>, 5> kSkyModeNames{{
     {SkyMode::Hdr, "hdr"},
 }};
 
+// Custom is written but not parsed: it names "neither preset", not settings one could ask for.
+constexpr std::array<std::pair<GiMode, std::string_view>, 3> kGiModeNames{{
+    {GiMode::Fast, "fast"},
+    {GiMode::Accurate, "accurate"},
+    {GiMode::Custom, "custom"},
+}};
+
 // Text of an enum field in JSON, and back (overloads picked by the field's type).
 std::optional<VoxelChannel> parseEnum(std::string_view text, VoxelChannel*) { return parseVoxelChannel(text); }
 std::optional<SkyMode> parseEnum(std::string_view text, SkyMode*) { return parseSkyMode(text); }
@@ -145,17 +152,14 @@ std::optional<SkyMode> parseSkyMode(std::string_view text) {
 }
 
 std::string_view toString(GiMode mode) {
-    switch (mode) {
-    case GiMode::Fast: return "fast";
-    case GiMode::Accurate: return "accurate";
-    case GiMode::Custom: break;
-    }
+    for (const auto& [m, name] : kGiModeNames)
+        if (m == mode) return name;
     return "custom";
 }
 
 std::optional<GiMode> parseGiMode(std::string_view text) {
-    if (text == "fast") return GiMode::Fast;
-    if (text == "accurate") return GiMode::Accurate;
+    for (const auto& [m, name] : kGiModeNames)
+        if (name == text && m != GiMode::Custom) return m;
     return std::nullopt;
 }
 
