@@ -77,6 +77,13 @@ inline tinygltf::Value toValue(const nlohmann::json& j) {
     return tinygltf::Value();
 }
 
+// FNV-1a, 64 bits: tells a buffer view's bytes at save time from the file's (Scene::fileBufferViews).
+inline std::uint64_t hashBytes(const unsigned char* bytes, std::size_t count) {
+    std::uint64_t hash = 14695981039346656037ull;
+    for (std::size_t i = 0; i < count; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+    return hash;
+}
+
 // Extras as JSON text ("" when absent).
 inline std::string extrasText(const tinygltf::Value& extras) {
     return extras.Type() == tinygltf::NULL_TYPE ? std::string() : toJson(extras).dump();

@@ -1592,8 +1592,21 @@ void Loader::keepFileData(Scene& scene) const {
     scene.fileKept = gltfkeep::keep(model_.extras, model_.extensions, {"KHR_lights_punctual"});
     scene.copyright = model_.asset.copyright;
     scene.generator = model_.asset.generator;
-    for (const tinygltf::Buffer& buffer : model_.buffers)
+    for (const tinygltf::Buffer& buffer : model_.buffers) {
         scene.buffers.push_back(KeptObject{buffer.name, gltfkeep::keep(buffer.extras, buffer.extensions)});
+        scene.fileBufferSizes.push_back(buffer.data.size());
+    }
+    for (const tinygltf::BufferView& view : model_.bufferViews) {
+        Scene::FileBufferView place{view.buffer, view.byteOffset, view.byteLength, 0};
+        const bool inside = view.buffer >= 0 && static_cast<std::size_t>(view.buffer) < model_.buffers.size() &&
+                            view.byteOffset <= model_.buffers[static_cast<std::size_t>(view.buffer)].data.size() &&
+                            view.byteLength <= model_.buffers[static_cast<std::size_t>(view.buffer)].data.size() - view.byteOffset;
+        if (!inside) place.buffer = -1;  // never matched (the loader reports views it reads past their buffer)
+        else
+            place.hash = gltfkeep::hashBytes(model_.buffers[static_cast<std::size_t>(view.buffer)].data.data() + view.byteOffset,
+                                             view.byteLength);
+        scene.fileBufferViews.push_back(place);
+    }
     scene.assetKept = gltfkeep::keep(model_.asset.extras, model_.asset.extensions);
     // The other scenes.
     scene.sceneIndex = std::max(sceneIndex, 0);

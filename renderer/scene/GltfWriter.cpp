@@ -2,7 +2,8 @@
 //
 // Decisions worth knowing:
 // - All geometry and embedded images go into one buffer: "<stem>.bin" beside a .gltf, the BIN
-//   chunk of a .glb. A primitive's vertices are laid out in the file's views (scene/Scene.h:
+//   chunk of a .glb. A view whose bytes the source file had goes back to the file's offset
+//   (keepFileLayout); edited and new data fill the gaps or follow. A primitive's vertices are laid out in the file's views (scene/Scene.h:
 //   Primitive::fileViews): attributes the file kept in one view in one view again (one per view,
 //   blocks one after the other, or interleaved at the file's offsets and stride), or else in one
 //   interleaved view (lit::Vertex as it is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every
@@ -29,7 +30,8 @@
 //   the buffer. The loader's white stand-in (Image::generated) is not written.
 // - Every glTF scene of the source is written, in its order (Scene::otherScenes around the
 //   shown one, which keeps its index as `scene`).
-// - Kept accessors that were sparse are written sparse (KeptAccessor::Sparse).
+// - Kept accessors that were sparse are written sparse (KeptAccessor::Sparse), with a new layout
+//   where an edit made the file's wrong (resparse).
 // - Animation outputs are written in the file's component type (normalized integer rotations
 //   and weights); key times shared by samplers are written once.
 // - What the loader kept without drawing it (scene/Scene.h: KeptAccessor and friends) is written
@@ -550,6 +552,81 @@ int typeCode(const std::string& type) {
     return it == codes.end() ? -1 : it->second;
 }
 
+int sparseIndexBytes(int componentType) {
+    return componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+           : componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+           : componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                     : 0;
+}
+
+bool isZero(const std::uint8_t* element, std::size_t bytes) {
+    return std::all_of(element, element + bytes, [](std::uint8_t b) { return b == 0; });
+}
+
+// Whether a kept sparse accessor's layout (KeptAccessor::Sparse) still describes its elements:
+// indices strictly increasing, inside the elements and their component type, the base's elements
+// known, and with a base of zeros, every element outside the indices zero.
+bool sparseLayoutHolds(const KeptAccessor& kept, std::size_t elementSize) {
+    const KeptAccessor::Sparse& sparse = *kept.sparse;
+    const int indexSize = sparseIndexBytes(sparse.indexComponentType);
+    if (indexSize == 0 || sparse.indices.empty() ||
+        (sparse.hasBase && sparse.baseBytes.size() != sparse.indices.size() * elementSize))
+        return false;
+    for (std::size_t s = 0; s < sparse.indices.size(); ++s) {
+        const std::uint32_t i = sparse.indices[s];
+        if (i >= kept.count || (indexSize < 4 && i >= (1u << (8 * indexSize))) || (s > 0 && i <= sparse.indices[s - 1]))
+            return false;
+    }
+    if (sparse.hasBase) return true;
+    std::size_t s = 0;
+    for (std::size_t i = 0; i < kept.count; ++i) {
+        if (s < sparse.indices.size() && sparse.indices[s] == i) {
+            ++s;
+            continue;
+        }
+        if (!isZero(kept.bytes.data() + i * elementSize, elementSize)) return false;
+    }
+    return true;
+}
+
+// A sparse layout for elements an edit changed so the file's no longer holds them (an index past
+// the elements, a non-zero element over a base of zeros): the file's indices still inside the
+// elements, with a base of zeros also every non-zero element, in a component type that holds them
+// (the file's, or wider). The parts' names, extras and extensions stay (before issue #13's seventh
+// session such an accessor was written dense, without them). Where the base is kept, the file's
+// base elements stay under its indices; under an index past the file's base, the element itself.
+KeptAccessor::Sparse resparse(const KeptAccessor& kept, std::size_t elementSize) {
+    const KeptAccessor::Sparse& file = *kept.sparse;
+    KeptAccessor::Sparse out = file;
+    out.indices.clear();
+    out.baseBytes.clear();
+    const bool baseKnown = file.hasBase && file.baseBytes.size() == file.indices.size() * elementSize;
+    constexpr std::size_t kNotSparse = std::numeric_limits<std::size_t>::max();
+    std::vector<std::size_t> fileSlot(kept.count, kNotSparse);  // element → its place in file.indices
+    for (std::size_t s = 0; s < file.indices.size(); ++s)
+        if (file.indices[s] < kept.count && fileSlot[file.indices[s]] == kNotSparse) fileSlot[file.indices[s]] = s;
+    for (std::size_t i = 0; i < kept.count; ++i) {
+        const std::uint8_t* element = kept.bytes.data() + i * elementSize;
+        if (fileSlot[i] == kNotSparse && (file.hasBase || isZero(element, elementSize))) continue;
+        out.indices.push_back(static_cast<std::uint32_t>(i));
+        if (file.hasBase) {
+            const std::uint8_t* under = baseKnown && fileSlot[i] != kNotSparse ? file.baseBytes.data() + fileSlot[i] * elementSize : element;
+            out.baseBytes.insert(out.baseBytes.end(), under, under + elementSize);
+        }
+    }
+    if (out.indices.empty()) {  // glTF: sparse.count ≥ 1; element 0 over its own base (or zero over zeros)
+        out.indices.push_back(0);
+        if (file.hasBase) out.baseBytes.assign(kept.bytes.begin(), kept.bytes.begin() + static_cast<std::ptrdiff_t>(elementSize));
+    }
+    const std::uint32_t last = out.indices.back();
+    const int wanted = last < 256u ? 1 : last < 65536u ? 2 : 4;
+    const int size = std::max(wanted, sparseIndexBytes(file.indexComponentType));
+    out.indexComponentType = size == 1   ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
+                             : size == 2 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT
+                                         : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    return out;
+}
+
 int ModelBuilder::addKeptAccessor(const KeptAccessor& kept, int target) {
     const int type = typeCode(kept.type);
     if (type < 0 || kept.count == 0 || kept.bytes.size() % kept.count != 0)
@@ -561,17 +638,12 @@ int ModelBuilder::addKeptAccessor(const KeptAccessor& kept, int target) {
         if (shared >= 0) return shared;
     }
     const KeptAccessor::Sparse* sparse = kept.sparse ? &*kept.sparse : nullptr;
-    const int indexSize = sparse ? (sparse->indexComponentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
-                                    : sparse->indexComponentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
-                                    : sparse->indexComponentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
-                                                                                                           : 0)
-                                 : 0;
-    if (sparse && (indexSize == 0 || sparse->indices.empty() ||
-                   (sparse->hasBase && sparse->baseBytes.size() != sparse->indices.size() * elementSize) ||
-                   std::any_of(sparse->indices.begin(), sparse->indices.end(), [&](std::uint32_t i) {
-                       return i >= kept.count || (indexSize < 4 && i >= (1u << (8 * indexSize)));
-                   })))
-        sparse = nullptr;  // inconsistent (edited): written dense, which holds the same values
+    std::optional<KeptAccessor::Sparse> resparsed;
+    if (sparse && !sparseLayoutHolds(kept, elementSize)) {
+        resparsed = resparse(kept, elementSize);
+        sparse = &*resparsed;
+    }
+    const int indexSize = sparse ? sparseIndexBytes(sparse->indexComponentType) : 0;
     // The dense part: all elements, or for a sparse accessor its base (the file's base elements
     // put back where the sparse values replaced them), or nothing when the base was zeros.
     std::vector<std::uint8_t> base;
@@ -1566,6 +1638,111 @@ void mergeBuffers(tinygltf::Model& model) {
     model.buffers.resize(1);
 }
 
+// Puts written buffer views whose bytes a view of the source file had (same length and hash,
+// Scene::fileBufferViews) at that view's place: the file's buffers one after the other, each
+// starting 4-byte aligned, so a file with one buffer keeps its offsets, and an unedited file's
+// .bin comes back byte for byte (bytes the file had outside every view are written as zeros).
+// A place is taken only where every accessor using the view stays aligned to its component size
+// (glTF §3.6.2.4) and it agrees with the views already placed where they overlap (views the
+// file let share bytes share them again). The other views (edited or new data) go into the gaps
+// that are large enough, 4-byte aligned, else after the end. Runs on the merged buffer 0.
+void keepFileLayout(tinygltf::Model& model, const Scene& scene) {
+    if (model.buffers.size() != 1 || scene.fileBufferViews.empty()) return;
+    for (const tinygltf::BufferView& view : model.bufferViews)  // mergeBuffers made them so; else leave the layout
+        if (view.buffer != 0 || view.byteOffset > model.buffers[0].data.size() ||
+            view.byteLength > model.buffers[0].data.size() - view.byteOffset)
+            return;
+    const auto align4 = [](std::size_t n) { return (n + 3) & ~std::size_t(3); };
+    std::vector<std::size_t> base(scene.fileBufferSizes.size(), 0);
+    for (std::size_t b = 0, end = 0; b < base.size(); ++b) {
+        base[b] = align4(end);
+        end = base[b] + scene.fileBufferSizes[b];
+    }
+    std::map<std::pair<std::size_t, std::uint64_t>, std::vector<std::size_t>> byContent;  // (length, hash) → file views
+    for (std::size_t f = 0; f < scene.fileBufferViews.size(); ++f) {
+        const Scene::FileBufferView& v = scene.fileBufferViews[f];
+        if (v.buffer >= 0 && static_cast<std::size_t>(v.buffer) < base.size() && v.byteLength > 0)
+            byContent[{v.byteLength, v.hash}].push_back(f);
+    }
+    // What each written view's place must be a multiple of, per accessor: (byteOffset, component size).
+    std::vector<std::vector<std::pair<std::size_t, int>>> needs(model.bufferViews.size());
+    const auto need = [&](int view, std::size_t offset, int componentType) {
+        if (view >= 0 && static_cast<std::size_t>(view) < needs.size())
+            needs[static_cast<std::size_t>(view)].emplace_back(offset, std::max(gltfkeep::componentBytes(componentType), 1));
+    };
+    for (const tinygltf::Accessor& a : model.accessors) {
+        need(a.bufferView, a.byteOffset, a.componentType);
+        if (a.sparse.isSparse) {
+            need(a.sparse.indices.bufferView, a.sparse.indices.byteOffset, a.sparse.indices.componentType);
+            need(a.sparse.values.bufferView, a.sparse.values.byteOffset, a.componentType);
+        }
+    }
+    const std::vector<unsigned char>& written = model.buffers[0].data;
+    constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+    std::vector<std::size_t> place(model.bufferViews.size(), kNone);
+    std::vector<char> taken(scene.fileBufferViews.size(), 0);
+    for (std::size_t v = 0; v < model.bufferViews.size(); ++v) {
+        const tinygltf::BufferView& view = model.bufferViews[v];
+        if (view.byteLength == 0) continue;
+        const auto it = byContent.find({view.byteLength, gltfkeep::hashBytes(written.data() + view.byteOffset, view.byteLength)});
+        if (it == byContent.end()) continue;
+        const auto fits = [&](std::size_t at) {
+            return std::all_of(needs[v].begin(), needs[v].end(), [&](const auto& n) { return (at + n.first) % static_cast<std::size_t>(n.second) == 0; });
+        };
+        // The first file view of these bytes not taken yet (files write equal data more than once), else a taken one.
+        for (int pass = 0; pass < 2 && place[v] == kNone; ++pass)
+            for (std::size_t f : it->second) {
+                const Scene::FileBufferView& file = scene.fileBufferViews[f];
+                const std::size_t at = base[static_cast<std::size_t>(file.buffer)] + file.byteOffset;
+                if ((pass == 0 && taken[f]) || !fits(at)) continue;
+                place[v] = at;
+                taken[f] = 1;
+                break;
+            }
+    }
+    std::vector<std::size_t> order;
+    for (std::size_t v = 0; v < place.size(); ++v)
+        if (place[v] != kNone) order.push_back(v);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return place[a] < place[b]; });
+    std::vector<unsigned char> out;
+    std::vector<std::pair<std::size_t, std::size_t>> gaps;  // [begin, end) between placed views
+    std::size_t end = 0;  // of the placed views so far; [place, end) is inside the view that reached `end`
+    for (std::size_t v : order) {
+        const tinygltf::BufferView& view = model.bufferViews[v];
+        const unsigned char* bytes = written.data() + view.byteOffset;
+        const std::size_t at = place[v];
+        const std::size_t overlap = at < end ? std::min(end, at + view.byteLength) - at : 0;
+        if (overlap > 0 && std::memcmp(out.data() + at, bytes, overlap) != 0) {
+            place[v] = kNone;  // shares bytes with a placed view that now differ: written elsewhere
+            continue;
+        }
+        if (at > end) gaps.emplace_back(end, at);
+        if (at + view.byteLength > out.size()) out.resize(at + view.byteLength, 0);
+        std::memcpy(out.data() + at + overlap, bytes + overlap, view.byteLength - overlap);
+        end = std::max(end, at + view.byteLength);
+    }
+    for (std::size_t v = 0; v < place.size(); ++v) {
+        tinygltf::BufferView& view = model.bufferViews[v];
+        if (place[v] != kNone) continue;
+        std::size_t at = kNone;
+        for (auto& gap : gaps)
+            if (align4(gap.first) + view.byteLength <= gap.second) {
+                at = align4(gap.first);
+                gap.first = at + view.byteLength;
+                break;
+            }
+        if (at == kNone) {
+            at = align4(out.size());
+            out.resize(at, 0);
+        }
+        if (at + view.byteLength > out.size()) out.resize(at + view.byteLength, 0);
+        std::memcpy(out.data() + at, written.data() + view.byteOffset, view.byteLength);
+        place[v] = at;
+    }
+    for (std::size_t v = 0; v < place.size(); ++v) model.bufferViews[v].byteOffset = place[v];
+    model.buffers[0].data = std::move(out);
+}
+
 }  // namespace
 
 void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& options) {
@@ -1595,6 +1772,7 @@ void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& o
         }
     }
     mergeBuffers(model);
+    keepFileLayout(model, scene);
     if (!binary && !model.buffers.empty()) model.buffers[0].uri = percentEncodePath(file.stem().string() + ".bin");
 
     try {

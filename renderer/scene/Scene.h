@@ -421,6 +421,19 @@ struct Scene {
     // The file's buffers' names, extras and extensions, in file order: a save writes one buffer,
     // which gets the first's name and all their extras keys and extensions (the first wins).
     std::vector<KeptObject> buffers;
+    // Where the file kept each buffer view's bytes (in file order) and a hash of them: a save puts
+    // a view whose bytes are the same again at the same place of its one buffer (the file's
+    // buffers one after the other, each starting 4-byte aligned), so an unedited file's .bin comes
+    // back byte for byte (scene/GltfWriter.cpp: keepFileLayout).
+    struct FileBufferView {
+        int buffer = 0;
+        std::size_t byteOffset = 0;
+        std::size_t byteLength = 0;
+        std::uint64_t hash = 0;  // gltfkeep::hashBytes of the view's bytes
+        bool operator==(const FileBufferView&) const = default;
+    };
+    std::vector<FileBufferView> fileBufferViews;
+    std::vector<std::size_t> fileBufferSizes;  // the file's buffers' byte lengths, in file order
     KeptGltf assetKept{};    // asset's extras and extensions
     // The file's other glTF scenes (Lit shows one, `roots`): written back around it in the file's
     // order, the shown one at `sceneIndex`. Their roots are node references (nodes the shown

@@ -6,9 +6,10 @@
 # kept), duplicate the box with its light, make the copy's material unique and edit it, delete a
 # node, undo and redo that, save. lit_check_saved_scene then reads the file back and compares
 # every edit; a second run reopens the saved file in the editor and saves it as .glb, which must
-# hold the same; that run also checks that the voxel slice view is rendered for the free area
-# between the panels only, not the whole window. GI is off: the test is about editing, and llvmpipe frames stay short (about
-# 20 s in all). Exit 77 (skipped) without xvfb-run.
+# hold the same, runs the view commands on a two-node selection (local axes, frame F, orbit
+# Alt+drag; they must not fail) and checks that the voxel slice view is rendered for the free
+# area between the panels only, not the whole window. GI is off: the test is about editing, and
+# llvmpipe frames stay short (about 25 s in all). Exit 77 (skipped) without xvfb-run.
 set -u
 editor=$1
 check=$2
@@ -79,6 +80,12 @@ checks="*.nodes=12 new_box.rotation=0,0,0.7071068,0.7071068 new_box.scale=2,1,1 
 cat >"$out/authored_again.txt" <<SCRIPT
 setting gi false
 save $resaved
+select new_box
+select+ new_lamp
+space local
+frame
+orbit 40 10
+wait 1
 view voxel-slice
 wait 1
 screenshot $out/slice.png noui

@@ -314,6 +314,23 @@ TEST(SceneEdits, PerPrimitiveMaterialSelection) {
     // Make the second primitive's material unique although the node is its only user: the
     // first primitive does not share it, so this is refused; sharing it makes it allowed.
     EXPECT_NE(makeMaterialUnique(doc, box, 1), "");
+    // Undo, redo, save and reopen (the issue: every edit undoable and saved): the edit stays on
+    // the second primitive's material, the first primitive's is untouched.
+    const EditableState after = doc.capture();
+    ASSERT_TRUE(doc.undo());
+    EXPECT_FLOAT_EQ(doc.scene.materials[static_cast<std::size_t>(blue)].roughness, 0.3f);
+    ASSERT_TRUE(doc.redo());
+    EXPECT_TRUE(doc.capture() == after);
+    const Document back = reopen(doc, "primitive");
+    const int backBox = findNode(back.scene, "Box");
+    const int first = nodePrimitiveMaterial(back.scene, backBox, 0);
+    const int second = nodePrimitiveMaterial(back.scene, backBox, 1);
+    ASSERT_GE(first, 0);
+    ASSERT_GE(second, 0);
+    EXPECT_NE(first, second);
+    EXPECT_FLOAT_EQ(back.scene.materials[static_cast<std::size_t>(second)].roughness, 0.9f);
+    EXPECT_FLOAT_EQ(back.scene.materials[static_cast<std::size_t>(first)].roughness, 0.5f);
+    EXPECT_EQ(back.scene.materials[static_cast<std::size_t>(second)].name, "Blue");
 }
 
 TEST(SceneEdits, MultiSelectionToggles) {

@@ -5,6 +5,7 @@
 // written, or a size this GL or this machine's memory cannot render; 130 a --reference render
 // interrupted by Ctrl+C (after writing the image so far).
 
+#include "LoadProgressLines.h"
 #include "Options.h"
 
 #include "Log.h"
@@ -371,28 +372,23 @@ private:
     double lastPrint_ = 0.0;  // seconds since start_
 };
 
-// Load progress on stderr, for long loads only: silent for the first second, then one line per
-// stage ("loading: images 12/69, 4.2 s") when the stage changes or a second has passed, and the
-// GPU upload as its own stage. Uses the loader's progress callback (GltfLoadOptions::progress),
-// which the editor's progress window reads as well.
+// Load progress on stderr, for long loads only (LoadProgressLines.h says when a line is printed),
+// with the GPU upload as its own stage. Uses the loader's progress callback
+// (GltfLoadOptions::progress), which the editor's progress window reads as well.
 class LoadProgressPrinter {
 public:
     void operator()(const lit::LoadProgress& p) {
-        const double elapsed = secondsSince(start_);
-        const bool newStage = p.stage != stage_;
-        stage_ = p.stage;
-        if (elapsed < 1.0 || (!newStage && elapsed - lastPrint_ < 1.0 && p.done < p.total)) return;
-        lastPrint_ = elapsed;
-        std::fprintf(stderr, "loading: %s %d/%d, %.1f s\n", p.stage.c_str(), p.done, p.total, elapsed);
-        std::fflush(stderr);
+        if (const auto line = lines_(p, secondsSince(start_))) {
+            std::fprintf(stderr, "%s\n", line->c_str());
+            std::fflush(stderr);
+        }
     }
     void stage(const char* name) { (*this)(lit::LoadProgress{name, 0, 1}); }
     void done(const char* name) { (*this)(lit::LoadProgress{name, 1, 1}); }
 
 private:
     Clock::time_point start_ = Clock::now();
-    std::string stage_;
-    double lastPrint_ = -1.0;
+    lit::cli::LoadProgressLines lines_;
 };
 
 // The camera path --path names: a .json file, or a camera animation in the scene file. Runs
