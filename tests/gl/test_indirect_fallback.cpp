@@ -2,8 +2,9 @@
 // runs in its own pass, over only the pixels the resolve marked. The image must be the one a
 // single resolve pass with the trace inline writes (the path before the split), and the pass must
 // run on the marked pixels only.
-// Cost: about 6 s on llvmpipe (2 cores): three renderers, 3 frames each at 96², 64³ voxels.
+// Cost: about 5-8 s on llvmpipe (2 cores): three renderers per GI mode, 3 frames each at 96², 64³ voxels.
 #include "GlTestSupport.h"
+#include "passes/ConeProgram.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -38,11 +39,11 @@ protected:
     // Renders `frames` frames of the Cornell box from inside (the full-frame view) with the
     // shaders under `shaderRoot`; returns the last frame. Temporal accumulation on, so the history
     // outputs of both passes feed the later frames.
-    HdrImage renderWith(const fs::path& shaderRoot, int scale, int frames, View view = View::Final) {
+    HdrImage renderWith(const fs::path& shaderRoot, GiMode mode, int scale, int frames, View view = View::Final) {
         Renderer renderer(shaderRoot, log_);
         const Scene scene = loadGltf(sourceDir() / "assets" / "cornell_box.gltf", log_);
         renderer.setScene(scene);
-        RenderSettings s;
+        RenderSettings s = settingsFor(mode);
         s.width = s.height = kSize;
         s.voxelResolution = 64;
         s.gi = true;
@@ -53,6 +54,12 @@ protected:
         const CameraView camera = makeCameraView(world, glm::radians(70.0f), 1.0f, 0.05f, 20.0f);
         for (int i = 0; i < frames; ++i) renderer.render(scene, camera, s);
         return HdrImage{kSize, kSize, renderer.readHdrRgb()};
+    }
+
+    static RenderSettings settingsFor(GiMode mode) {
+        RenderSettings s;
+        setGiMode(s, mode);
+        return s;
     }
 
     static double meanLuminance(const HdrImage& image) {
@@ -74,50 +81,65 @@ protected:
 
 // The resolve as it was before the split: the trace inline (the fallback's body as the resolve's
 // shader). It writes no trace mask of its own (the triangle's depth, 0.5, everywhere), so the
-// fallback pass then runs on no pixel.
-constexpr const char* kOnePassResolve =
-    "#version 450 core\n#define LIT_INDIRECT_FALLBACK 1\n#include \"indirect_resolve.glsl\"\n";
+// fallback pass then runs on no pixel. The resolve's program is built without the cone features'
+// defines (it has no cone code), so the one-pass shader states those of the settings rendered
+// (each GI mode's, here), as the fallback's ConeProgram variant gets them: without them
+// it traced the fast mode's fixed cone set where the fallback traces the accurate mode's
+// stratified set, and the images differed by 41 % of the mean at the worst pixel.
+std::string onePassResolve(const RenderSettings& settings) {
+    return "#version 450 core\n" + ConeFeatures::of(settings).defines() +
+           "#define LIT_INDIRECT_FALLBACK 1\n#include \"indirect_resolve.glsl\"\n";
+}
 // A fallback that writes nothing: the marked pixels keep what the resolve left there.
 constexpr const char* kNoFallback = "#version 450 core\nvoid main() { discard; }\n";
 
+// Both GI modes: the fast mode's fixed cone set and the accurate mode's stratified sets (the
+// fallback traces the set of the texel its pixel falls in) are separate programs of both passes.
 TEST_F(IndirectFallback, SplitPassesMatchTheOnePassResolve) {
     if (HasFatalFailure()) return;
-    // Quarter resolution: the most pixels without a neighbour on their surface.
-    const int scale = 4, frames = 3;
-    const HdrImage split = renderWith(sourceDir() / "shaders", scale, frames);
-    const HdrImage onePass =
-        renderWith(shadersWith("one_pass", "indirect_resolve.frag.glsl", kOnePassResolve), scale, frames);
-    const HdrImage noFallback =
-        renderWith(shadersWith("no_fallback", "indirect_fallback.frag.glsl", kNoFallback), scale, frames);
+    for (const GiMode mode : {GiMode::Fast, GiMode::Accurate}) {
+        SCOPED_TRACE(mode == GiMode::Fast ? "fast mode" : "accurate mode");
+        // Quarter resolution: the most pixels without a neighbour on their surface.
+        const int scale = 4, frames = 3;
+        const std::string name = mode == GiMode::Fast ? "fast" : "accurate";
+        const HdrImage split = renderWith(sourceDir() / "shaders", mode, scale, frames);
+        const HdrImage onePass = renderWith(
+            shadersWith("one_pass_" + name, "indirect_resolve.frag.glsl", onePassResolve(settingsFor(mode))), mode, scale,
+            frames);
+        const HdrImage noFallback =
+            renderWith(shadersWith("no_fallback_" + name, "indirect_fallback.frag.glsl", kNoFallback), mode, scale, frames);
 
-    const double mean = meanLuminance(onePass);
-    ASSERT_GT(mean, 0.0);
-    const std::vector<glm::vec3> a = pixels(split), b = pixels(onePass), c = pixels(noFallback);
-    double worst = 0.0;
-    int fallbackPixels = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        const glm::vec3 d = glm::abs(a[i] - b[i]);
-        worst = std::max(worst, double(std::max(d.r, std::max(d.g, d.b))));
-        // A pixel the fallback wrote: without it the pixel differs from the split passes' image.
-        const glm::vec3 e = glm::abs(a[i] - c[i]);
-        if (std::max(e.r, std::max(e.g, e.b)) > 1e-3 * mean) ++fallbackPixels;
+        const double mean = meanLuminance(onePass);
+        ASSERT_GT(mean, 0.0);
+        const std::vector<glm::vec3> a = pixels(split), b = pixels(onePass), c = pixels(noFallback);
+        double worst = 0.0;
+        int fallbackPixels = 0;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            const glm::vec3 d = glm::abs(a[i] - b[i]);
+            worst = std::max(worst, double(std::max(d.r, std::max(d.g, d.b))));
+            // A pixel the fallback wrote: without it the pixel differs from the split passes' image.
+            const glm::vec3 e = glm::abs(a[i] - c[i]);
+            if (std::max(e.r, std::max(e.g, e.b)) > 1e-3 * mean) ++fallbackPixels;
+        }
+        const double fraction = double(fallbackPixels) / double(a.size());
+        std::printf("%s mode: split vs one-pass resolve: worst channel difference %.3g (%.4f %% of the mean luminance); "
+                    "pixels the fallback wrote: %d (%.2f %%)\n",
+                    name.c_str(), worst, 100.0 * worst / mean, fallbackPixels, 100.0 * fraction);
+        // Same code, same inputs, same order of operations: the images agree to float rounding. The
+        // bound, 0.01 % of the mean, is 50× below a 1/255 step of the tone-mapped image at mid grey
+        // and far below the 2 % RMSE quality target; a wrong mask or missing history write moves
+        // whole edge pixels by tens of per cent (a one-pass shader tracing the other mode's cone
+        // set: 41 % of the mean).
+        EXPECT_LE(worst, 1e-4 * mean);
+        // The fallback pass does the work of the marked pixels: without it they differ. Measured on
+        // llvmpipe: 11-14 pixels (0.12-0.15 %) in this view at 1/4 in the fast mode, 16 (0.17 %) in the
+        // accurate mode (silhouettes of the boxes), so a fallback that never runs, or a resolve that
+        // marks nothing, fails here. Nearly every pixel of this view is reconstructed from its
+        // neighbours: a resolve that leaves much more to the fallback (2 % is 16× the fast mode's
+        // measured share) has lost its upsampling.
+        EXPECT_GE(fallbackPixels, 5);
+        EXPECT_LT(fraction, 0.02);
     }
-    const double fraction = double(fallbackPixels) / double(a.size());
-    std::printf("split vs one-pass resolve: worst channel difference %.3g (%.4f %% of the mean luminance); "
-                "pixels the fallback wrote: %d (%.2f %%)\n",
-                worst, 100.0 * worst / mean, fallbackPixels, 100.0 * fraction);
-    // Same code, same inputs, same order of operations: the images agree to float rounding. The
-    // bound, 0.01 % of the mean, is 50× below a 1/255 step of the tone-mapped image at mid grey
-    // and far below the 2 % RMSE quality target; a wrong mask or missing history write moves
-    // whole edge pixels by tens of per cent.
-    EXPECT_LE(worst, 1e-4 * mean);
-    // The fallback pass does the work of the marked pixels: without it they differ. Measured on
-    // llvmpipe: 11 pixels (0.12 %) in this view at 1/4 (silhouettes of the boxes), so a fallback
-    // that never runs, or a resolve that marks nothing, fails here. Nearly every pixel of this
-    // view is reconstructed from its neighbours: a resolve that leaves much more to the fallback
-    // (2 % is 16× the measured share) has lost its upsampling.
-    EXPECT_GE(fallbackPixels, 5);
-    EXPECT_LT(fraction, 0.02);
 }
 
 }  // namespace
