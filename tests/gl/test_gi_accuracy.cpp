@@ -23,6 +23,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace lit::test {
 namespace {
@@ -68,6 +69,21 @@ protected:
         s.anisotropicVoxels = true;
         s.coneFootprintPerHeight = kAccurateGiFootprint;
         return s;
+    }
+    // The end of the sealed-room tests: the same view without GI, then the GI image's mean (the
+    // leak) and the GI-off image's as shares of the outside radiance `outside`. The GI-off image
+    // must be dark, else the shadow maps let the sun in and the leak is not GI's; the bar on the
+    // GI image is issue #11's 1 %.
+    void expectNoLeak(const Scene& scene, const CameraView& inside, RenderSettings settings, const HdrImage& gi,
+                      float outside, const std::string& label) {
+        settings.gi = false;
+        const HdrImage noGi = renderFrom(scene, inside, settings);
+        const float leak = luminance(meanOf(gi, 0.0f, 0.0f, 1.0f, 1.0f));
+        const float directLeak = luminance(meanOf(noGi, 0.0f, 0.0f, 1.0f, 1.0f));
+        std::printf("%s: outside %.3f, inside with GI %.5f (%.2f %%), without GI %.5f\n", label.c_str(), outside, leak,
+                    100.0f * leak / outside, directLeak);
+        EXPECT_LT(directLeak, 0.001f * outside) << "the shadow maps must keep the sun out (else the test is not GI's)";
+        EXPECT_LT(leak, 0.01f * outside) << "light leaking through the walls";
     }
 };
 
@@ -125,14 +141,7 @@ TEST_F(GiAccuracy, SealedRoomDoesNotLeakLightIn) {
     const HdrImage gi = renderFrom(scene, inside, settings);
     ASSERT_NE(renderer_->voxels(), nullptr);
     ASSERT_NEAR(renderer_->voxels()->voxelSize(), voxel, 1e-4f) << "walls must be two voxels thick";
-    settings.gi = false;
-    const HdrImage noGi = renderFrom(scene, inside, settings);
-    const float leak = luminance(meanOf(gi, 0.0f, 0.0f, 1.0f, 1.0f));
-    const float directLeak = luminance(meanOf(noGi, 0.0f, 0.0f, 1.0f, 1.0f));
-    std::printf("sealed room at %d³: outside %.3f, inside with GI %.5f (%.2f %%), without GI %.5f\n", kVoxels, outside,
-                leak, 100.0f * leak / outside, directLeak);
-    EXPECT_LT(directLeak, 0.001f * outside) << "the shadow maps must keep the sun out (else the test is not GI's)";
-    EXPECT_LT(leak, 0.01f * outside) << "light leaking through the walls";
+    expectNoLeak(scene, inside, settings, gi, outside, "sealed room at " + std::to_string(kVoxels) + "³");
 }
 
 // The benchmark's sealed room (tools/make_gi_suite.cpp: interior 4 × 3 × 4 m, walls 0.2 m, sunlit
@@ -170,14 +179,9 @@ TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
     ASSERT_NE(renderer_->voxels(), nullptr);
     const float voxel = renderer_->voxels()->voxelSize();
     ASSERT_GT(t / voxel, 3.0f) << "walls must be more than two voxels thick";
-    settings.gi = false;
-    const HdrImage noGi = renderFrom(scene, inside, settings);
-    const float leak = luminance(meanOf(gi, 0.0f, 0.0f, 1.0f, 1.0f));
-    const float directLeak = luminance(meanOf(noGi, 0.0f, 0.0f, 1.0f, 1.0f));
-    std::printf("sealed room, walls %.1f voxels at %d³: outside %.3f, inside with GI %.5f (%.2f %%), without GI %.5f\n",
-                t / voxel, kVoxels, outside, leak, 100.0f * leak / outside, directLeak);
-    EXPECT_LT(directLeak, 0.001f * outside) << "the shadow maps must keep the sun out (else the test is not GI's)";
-    EXPECT_LT(leak, 0.01f * outside) << "light leaking through the walls";
+    char label[64];
+    std::snprintf(label, sizeof label, "sealed room, walls %.1f voxels at %d³", t / voxel, kVoxels);
+    expectNoLeak(scene, inside, settings, gi, outside, label);
 }
 
 // A wall one quad thin, lit on one side by the sun; a second, smaller quad behind it faces the
