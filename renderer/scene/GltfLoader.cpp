@@ -1598,13 +1598,14 @@ void Loader::keepFileData(Scene& scene) const {
     }
     for (const tinygltf::BufferView& view : model_.bufferViews) {
         Scene::FileBufferView place{view.buffer, view.byteOffset, view.byteLength, 0};
-        const bool inside = view.buffer >= 0 && static_cast<std::size_t>(view.buffer) < model_.buffers.size() &&
-                            view.byteOffset <= model_.buffers[static_cast<std::size_t>(view.buffer)].data.size() &&
-                            view.byteLength <= model_.buffers[static_cast<std::size_t>(view.buffer)].data.size() - view.byteOffset;
-        if (!inside) place.buffer = -1;  // never matched (the loader reports views it reads past their buffer)
+        const std::vector<unsigned char>* data =
+            view.buffer >= 0 && static_cast<std::size_t>(view.buffer) < model_.buffers.size()
+                ? &model_.buffers[static_cast<std::size_t>(view.buffer)].data
+                : nullptr;
+        if (data && view.byteOffset <= data->size() && view.byteLength <= data->size() - view.byteOffset)
+            place.hash = gltfkeep::hashBytes(data->data() + view.byteOffset, view.byteLength);
         else
-            place.hash = gltfkeep::hashBytes(model_.buffers[static_cast<std::size_t>(view.buffer)].data.data() + view.byteOffset,
-                                             view.byteLength);
+            place.buffer = -1;  // never matched (the loader reports views it reads past their buffer)
         scene.fileBufferViews.push_back(place);
     }
     scene.assetKept = gltfkeep::keep(model_.asset.extras, model_.asset.extensions);

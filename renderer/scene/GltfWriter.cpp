@@ -552,11 +552,12 @@ int typeCode(const std::string& type) {
     return it == codes.end() ? -1 : it->second;
 }
 
+// Bytes of a sparse index of this component type; 0 where glTF allows no sparse indices (signed, float).
 int sparseIndexBytes(int componentType) {
-    return componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
-           : componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
-           : componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
-                                                                     : 0;
+    const bool unsignedType = componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                              componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                              componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    return unsignedType ? gltfkeep::componentBytes(componentType) : 0;
 }
 
 bool isZero(const std::uint8_t* element, std::size_t bytes) {

@@ -98,10 +98,10 @@ constexpr const char* kNoFallback = "#version 450 core\nvoid main() { discard; }
 TEST_F(IndirectFallback, SplitPassesMatchTheOnePassResolve) {
     if (HasFatalFailure()) return;
     for (const GiMode mode : {GiMode::Fast, GiMode::Accurate}) {
-        SCOPED_TRACE(mode == GiMode::Fast ? "fast mode" : "accurate mode");
+        const std::string name(toString(mode));
+        SCOPED_TRACE(name + " mode");
         // Quarter resolution: the most pixels without a neighbour on their surface.
         const int scale = 4, frames = 3;
-        const std::string name = mode == GiMode::Fast ? "fast" : "accurate";
         const HdrImage split = renderWith(sourceDir() / "shaders", mode, scale, frames);
         const HdrImage onePass = renderWith(
             shadersWith("one_pass_" + name, "indirect_resolve.frag.glsl", onePassResolve(settingsFor(mode))), mode, scale,
