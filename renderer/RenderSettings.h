@@ -160,10 +160,11 @@ struct RenderSettings {
     // still (lit-render, tests) is deterministic and equals one frame's trace; the editor turns it on.
     bool temporalAccumulation = false;
     int temporalMaxFrames = 16;  // frames of history at most (the blend weight never drops below 1/N)
-    // With temporal accumulation (default mode only: no footprint-bounded cones), each low-resolution
-    // texel traces the normal cone and two of the five side cones per frame, a different pair per
-    // frame and texel (all five every 5 frames), and the accumulation averages them: half the cone
-    // marching per frame (docs/GI.md, "Cone subsets"). Off: every texel traces all six every frame.
+    // With temporal accumulation (either GI mode; in the accurate mode the cones of the texel's
+    // stratified set), each low-resolution texel traces the normal cone and two of the five side
+    // cones per frame, a different pair per frame and texel (all five every 5 frames), and the
+    // accumulation averages them: half the cone marching per frame (docs/GI.md, "Cone subsets").
+    // Off: every texel traces all six every frame. Stills without accumulation always trace all six.
     bool temporalConeSubsets = true;
     // Editor: while the camera moves or a value is dragged, the viewport lowers its render scale
     // to hold this frame rate (frames per second; 0 = never), and renders at full scale when still.

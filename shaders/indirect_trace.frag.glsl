@@ -27,13 +27,16 @@ uniform int uConeSubset;         // LIT_CONE_SUBSETS: this frame's phase (0..4) 
 //   D = W_0·C_0 + (1 − W_0)·½(C_k + C_{k+2})
 // is exact in a uniform field (the furnace holds every frame) and its mean over the five phases
 // is the full set's W_0·C_0 + Σ W_i·C_i (each side cone is in two of the five pairs, W_i = (1 − W_0)/5);
-// the temporal accumulation averages the phases (docs/GI.md). Not for footprint-bounded cones,
-// which trace the stratified sets of cone_strata.glsl instead, nor for another cone table.
+// the temporal accumulation averages the phases (docs/GI.md). With footprint-bounded cones (the
+// accurate mode) the cones are those of the texel's stratified set (cone_strata.glsl), whose
+// regions have the fixed table's weights, so the same estimate holds per set; the strata filter
+// then averages the texels' sets as without subsets, and since the accurate mode's sets do not
+// turn with the frame, five frames of one texel are exactly its whole set.
 #ifndef LIT_CONE_SUBSETS
 #define LIT_CONE_SUBSETS 0
 #endif
-#if LIT_CONE_SUBSETS && (LIT_CONE_FOOTPRINT || LIT_DIFFUSE_CONE_COUNT != 6)
-#error "cone subsets need the six-cone table and unbounded cones"
+#if LIT_CONE_SUBSETS && LIT_DIFFUSE_CONE_COUNT != 6
+#error "cone subsets need the six-cone table"
 #endif
 
 #if LIT_CONE_SUBSETS
@@ -42,6 +45,15 @@ const int kSideCones = kDiffuseConeCount - 1;
 // The first side cone (1..5) of texel `low`'s pair at phase `phase`; the second is secondSideCone().
 int firstSideCone(ivec2 low, int phase) { return 1 + (phase + low.x + 2 * low.y) % kSideCones; }
 int secondSideCone(int first) { return 1 + (first - 1 + 2) % kSideCones; }
+
+// Diffuse cone i of texel `low`: the fixed table's (unbounded cones) or the texel's stratified set's.
+vec3 traceSubsetCone(vec3 origin, mat3 basis, int i, ivec2 low, float aperture, float maxDistance) {
+#if LIT_CONE_FOOTPRINT
+    return traceStratifiedDiffuseCone(origin, basis, i, coneSetIndex(low), aperture, maxDistance);
+#else
+    return traceDiffuseCone(origin, basis, i, aperture, maxDistance);
+#endif
+}
 
 // radianceFromDiffuseCones (cone.glsl) over the traced cones only: 0, a and b.
 vec3 radianceFromConeSubset(vec3 l, vec3 cones[kDiffuseConeCount], int a, int b) {
@@ -88,7 +100,8 @@ void main() {
             for (int i = 0; i < kDiffuseConeCount; ++i) cones[i] = vec3(0.0);
             int traced[3] = int[](0, a, b);
             for (int j = 0; j < 3; ++j)
-                cones[traced[j]] = traceDiffuseCone(origin, basis, traced[j], voxel.traceParams.w, maxDistance);
+                cones[traced[j]] = traceSubsetCone(origin, basis, traced[j], ivec2(gl_FragCoord.xy),
+                                                   voxel.traceParams.w, maxDistance);
             float w0 = kDiffuseConeWeights[0];
             outDiffuse = vec4(w0 * cones[0] + (1.0 - w0) * 0.5 * (cones[a] + cones[b]), 1.0);
         }

@@ -207,7 +207,7 @@ bool drawGlobalIllumination(RenderSettings& s) {
     changed |= ImGui::Checkbox("Cone subsets", &s.temporalConeSubsets);
     tooltip("With temporal accumulation: each traced pixel marches the normal cone and 2 of the 5 side\n"
             "cones per frame, a different pair each frame, and the accumulation averages them (half\n"
-            "the cone-trace time; not with footprint-bounded cones)");
+            "the cone-trace time; in the accurate mode, pairs of each pixel's stratified set)");
     ImGui::EndDisabled();
     if (s.view == View::Voxels || s.view == View::VoxelSlice) {
         ImGui::Separator();

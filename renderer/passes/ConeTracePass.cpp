@@ -21,8 +21,8 @@ ConeTracePass::ConeTracePass(const std::filesystem::path& shaderRoot)
                       {}, ConeFeatures::of(RenderSettings{})),
       reducedSubsetProgram_(shaderRoot, "indirect trace (reduced, cone subsets)",
                             {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}},
-                            // Cone subsets exist only for the unbounded six-cone table (the fast mode).
-                            "#define LIT_CONE_SUBSETS 1\n", ConeFeatures{}),
+                            // Built for the default settings' features; the other mode's variant on first use.
+                            "#define LIT_CONE_SUBSETS 1\n", ConeFeatures::of(RenderSettings{})),
       strataFilter_(shaderRoot) {
     constexpr int size = LIT_SPECULAR_ALBEDO_SIZE;
     albedoTable_ = gl::Texture("specular albedo table", {GL_TEXTURE_2D, GL_RG16F, size, size, 1, 1});
@@ -97,7 +97,7 @@ bool ConeTracePass::reducedPath(const RenderSettings& settings) {
 }
 
 bool ConeTracePass::coneSubsets(const RenderSettings& settings) {
-    return settings.temporalAccumulation && settings.temporalConeSubsets && !ConeFeatures::of(settings).footprint;
+    return settings.temporalAccumulation && settings.temporalConeSubsets;
 }
 
 ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scale, bool coneSubsets) {
@@ -150,8 +150,7 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     glDisable(GL_BLEND);
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
     if (features.anisotropic) volume.bindDirectional();
-    // The subset program only for unbounded cones (its shader has no footprint variant).
-    const bool subsets = sampling.coneSubset >= 0 && !features.footprint;
+    const bool subsets = sampling.coneSubset >= 0;
     const gl::Program& program = (subsets ? reducedSubsetProgram_ : reducedProgram_).get(features);
     program.use();
     const GLuint id = program.id();

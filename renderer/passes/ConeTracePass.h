@@ -53,8 +53,9 @@ public:
     // through LIT_DIFFUSE_ROTATION_STEPS steps of the side cones' 72° period, and, with
     // `coneSubsets`, the subset phase through frame mod 5.
     static Sampling samplingFor(std::uint64_t frame, int scale, bool coneSubsets = false);
-    // Whether a temporal frame with `settings` traces cone subsets (RenderSettings::temporalConeSubsets,
-    // temporal accumulation on, cones not footprint-bounded).
+    // Whether a temporal frame with `settings` traces cone subsets (RenderSettings::temporalConeSubsets
+    // and temporal accumulation on; in either GI mode: with footprint-bounded cones the subsets are
+    // pairs of the texel's stratified set).
     static bool coneSubsets(const RenderSettings& settings);
     // Whether a frame with `settings` takes the reduced path (executeReduced + IndirectResolvePass).
     // Always with footprint-bounded cones (the accurate mode): their stratified cone sets need

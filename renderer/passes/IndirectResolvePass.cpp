@@ -83,6 +83,7 @@ void IndirectResolvePass::bindInputs(const gl::Program& program) const {
     glProgramUniform1f(id, program.location("uRotation"), last_.sampling.rotation);
     glProgramUniform1i(id, program.location("uHistoryValid"), last_.historyValid ? 1 : 0);
     glProgramUniform1i(id, program.location("uMaxFrames"), last_.maxFrames);
+    glProgramUniform1f(id, program.location("uClampMargin"), last_.clampMargin);
     glProgramUniformMatrix4fv(id, program.location("uPrevViewProjection"), 1, GL_FALSE,
                               &last_.previousViewProjection[0][0]);
 }
@@ -91,6 +92,10 @@ bool IndirectResolvePass::bindForFallback(const gl::Program& program) const {
     if (!last_.ran) return false;
     bindInputs(program);
     return true;
+}
+
+float IndirectResolvePass::clampMargin(const RenderSettings& settings, const ConeTracePass::Sampling& sampling) {
+    return sampling.coneSubset >= 0 && ConeFeatures::of(settings).footprint ? kSubsetClampMargin : kClampMargin;
 }
 
 void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& cone, const VoxelVolume& volume,
@@ -124,6 +129,7 @@ void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& con
     last_.scale = ConeTracePass::indirectScale(settings);
     last_.sampling = sampling;
     last_.maxFrames = std::max(settings.temporalMaxFrames, 1);
+    last_.clampMargin = clampMargin(settings, sampling);
     bindInputs(program_);
     // Every pixel writes the trace mask (gl_FragDepth): the depth test must be on to write it.
     glEnable(GL_DEPTH_TEST);

@@ -50,6 +50,19 @@ public:
 
     std::vector<gl::Program*> programs() override { return {&program_}; }
 
+    // How far the history's clamp box (this frame's low-resolution neighbours) is widened, as a
+    // fraction of its bounds: 10 %, or kSubsetClampMargin when the accurate mode traces cone
+    // subsets (`sampling.coneSubset` ≥ 0 with footprint-bounded cones). There the strata filter
+    // averages each texel with its neighbours, so the neighbours of a pixel all hold the same
+    // frame's pairs of side cones, off the whole sets' value by up to ~2× in places (Cornell box,
+    // 96², 64³): a 10 % box held the history to the current frame's pairs (L_ID after 40 frames
+    // 8.1 % from the whole sets'; 5.4 / 4.0 / 3.3 / 2.1 % with 0.2 / 0.3 / 0.5 / 1 for both, 1.84 %
+    // with 3 for the pairs only, the whole sets' own 10 % box being the rest: 0.56 % with neither
+    // clamped; docs/GI.md, "Side-cone pairs in the accurate mode").
+    static constexpr float kClampMargin = 0.1f;
+    static constexpr float kSubsetClampMargin = 3.0f;
+    static float clampMargin(const RenderSettings& settings, const ConeTracePass::Sampling& sampling);
+
     // For IndirectFallbackPass, after execute() of this frame: binds the framebuffer execute()
     // wrote (its depth attachment is the trace mask), the textures it read, and sets on `program`
     // the uniforms execute() used. Returns false when execute() wrote no terms this frame.
@@ -87,6 +100,7 @@ private:
         ConeTracePass::Sampling sampling;
         bool historyValid = false;
         int maxFrames = 1;
+        float clampMargin = kClampMargin;
         glm::mat4 previousViewProjection{1.0f};
     };
     // The targets of the terms' size, (re)built as needed; with `temporal` the history sets too.

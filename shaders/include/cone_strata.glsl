@@ -68,15 +68,21 @@ vec3 stratifiedDiffuseConeDirection(int i, int setIndex) {
     return vec3(s * cos(phi), s * sin(phi), sqrt(1.0 - sin2));
 }
 
+// The radiance C_i of cone i of set `setIndex` (traceDiffuseCone of cone.glsl for the stratified
+// sets; the cone subsets of indirect_trace.frag.glsl trace three of them).
+vec3 traceStratifiedDiffuseCone(vec3 origin, mat3 basis, int i, int setIndex, float aperture, float maxDistance) {
+    vec3 d = stratifiedDiffuseConeDirection(i, setIndex);
+    return traceConeFromSurface(origin, basis * d, aperture, maxDistance, kConeNormalOffsetVoxels * voxel.voxelInfo.z,
+                                d.z).rgb;
+}
+
 // traceDiffuseInFrame (indirect.glsl) with the cones of set `setIndex`: irradiance/π, and each
 // region's radiance in cones[] (rough specular blends them by the regions' fixed axes).
 vec3 traceDiffuseStratified(vec3 origin, mat3 basis, int setIndex, float aperture, float maxDistance,
                             out vec3 cones[kDiffuseConeCount]) {
     vec3 sum = vec3(0.0);
     for (int i = 0; i < kDiffuseConeCount; ++i) {
-        vec3 d = stratifiedDiffuseConeDirection(i, setIndex);
-        cones[i] = traceConeFromSurface(origin, basis * d, aperture, maxDistance,
-                                        kConeNormalOffsetVoxels * voxel.voxelInfo.z, d.z).rgb;
+        cones[i] = traceStratifiedDiffuseCone(origin, basis, i, setIndex, aperture, maxDistance);
         sum += kDiffuseConeWeights[i] * cones[i];
     }
     return sum;

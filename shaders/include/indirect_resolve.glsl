@@ -25,7 +25,7 @@
 // its view-projection; the history there is used when that pixel saw the same surface (clip w
 // within kHistoryDepthTolerance, normals within kHistoryNormalCos), else it is dropped
 // (disocclusion). The history is clamped to the range of this frame's low-resolution neighbours
-// (widened by kClampMargin) so stale light does not linger, then blended with weight
+// (widened by uClampMargin) so stale light does not linger, then blended with weight
 // 1 / (frames + 1), frames ≤ uMaxFrames: a still camera averages the rotated cone sets.
 #include "frame.glsl"
 #include "gbuffer.glsl"
@@ -67,12 +67,15 @@ const float kSpatialFloor = 0.02;      // added to each bilinear weight
 const float kMinWeight = 1e-3;         // below: no neighbour stands for this pixel → trace it here
 const float kHistoryDepthTolerance = 0.02;  // relative clip-w difference of a reprojected pixel
 const float kHistoryNormalCos = 0.9;        // cos 25.8°
-const float kClampMargin = 0.1;             // the neighbourhood box is widened by 10 % of its bounds
 const float kMarkTrace = 0.0;  // trace-mask depth of a pixel the fallback traces (IndirectFallbackPass)
 const float kMarkDone = 1.0;   // of one the resolve finished
 
+// The neighbourhood box is widened by this fraction of its bounds (IndirectResolvePass::clampMargin:
+// 10 %, wider with the accurate mode's cone subsets, whose neighbours all hold one frame's pairs).
+uniform float uClampMargin;
+
 vec3 clampToBox(vec3 value, vec3 lo, vec3 hi) {
-    return clamp(value, lo * (1.0 - kClampMargin), hi * (1.0 + kClampMargin));
+    return clamp(value, lo * (1.0 - uClampMargin), hi * (1.0 + uClampMargin));
 }
 
 void main() {

@@ -507,6 +507,10 @@ TEST_F(GiAccuracy, AccurateModeIsStableUnderTemporalAccumulation) {
     settings.temporalAccumulation = true;
     settings.indirectScale = 1;
     settings.bounces = 1;
+    // Whole sets: this test is about the sets' rotation. Cone subsets change the traced pair every
+    // frame by design (frame 2 -> 3: 4.7 % with them); their convergence and late frame-to-frame
+    // change are IndirectResolve.AccurateConeSubsetsConvergeToTheWholeSets.
+    settings.temporalConeSubsets = false;
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     renderer_->render(scene, camera, settings);
