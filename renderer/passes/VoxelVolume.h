@@ -42,7 +42,8 @@ public:
     // or format changes and returns true (the caller must re-voxelize).
     bool ensure(int requested, bool radianceRgba8, Log& log);
     // Places the cube around `sceneBounds` (padded by a few voxels so geometry on the bounds is
-    // inside) and returns whether it moved (the caller must re-voxelize).
+    // inside, shifted by ¼ voxel in y and z so that surfaces at round heights do not lie on voxel
+    // faces) and returns whether it moved (the caller must re-voxelize).
     bool fitTo(const Aabb& sceneBounds);
     // Uploads VoxelUniforms from the volume placement and `settings`, binds it to LIT_UBO_VOXEL.
     void updateUniforms(const RenderSettings& settings, int frameIndex);

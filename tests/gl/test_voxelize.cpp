@@ -107,11 +107,13 @@ double msSince(Clock::time_point start) {
 
 TEST_F(Voxelize, BoxBecomesItsSurfaceShell) {
     // A 4 m floor fixes the volume (4 m + padding → 4·64/60 m at 64³, 1/15 m voxels); the 1 m box
-    // floats above it, its faces at fractional voxel positions so the expected shell is unambiguous.
+    // floats above it, its faces at fractional voxel positions so the expected shell is unambiguous
+    // (z −0.10, not −0.12 as before the grid's ¼-voxel shift in y and z, which put its −z face 0.05
+    // voxel from a voxel face).
     Scene scene;
     const int white = addMaterial(scene, glm::vec3(0.8f));
     addMeshNode(scene, makePlaneMesh("floor", 4.0f, white), glm::vec3(0.0f));
-    const glm::vec3 boxCentre{0.21f, 1.13f, -0.12f};
+    const glm::vec3 boxCentre{0.21f, 1.13f, -0.10f};
     addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), white), boxCentre);
     voxelize(scene, 64);
     ASSERT_EQ(n(), 64);
