@@ -100,6 +100,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("coneStepScale", s.coneStepScale);
     visit("anisotropicVoxels", s.anisotropicVoxels);
     visit("coneFootprintPerHeight", s.coneFootprintPerHeight);
+    visit("diffuseFromVoxelIrradiance", s.diffuseFromVoxelIrradiance);
     visit("bounces", s.bounces);
     visit("voxelSlice", s.voxelSlice);
     visit("voxelSliceAxis", s.voxelSliceAxis);

@@ -136,6 +136,11 @@ struct RenderSettings {
     // (footprint) the cone trace, 7-14× together (docs/GI.md, "Landing: cost and defaults");
     // kAccurateGiFootprint with anisotropic voxels is the mode docs/GI.md measures.
     bool anisotropicVoxels = false;
+    // Experiment (docs/GI.md, "Irradiance cached in the voxels (eighth session)"): after each
+    // light or geometry edit, every occupied voxel traces the accurate mode's stratified cones
+    // once (bounce.comp.glsl, LIT_BOUNCE_IRRADIANCE) and stores its irradiance/π per side; the
+    // per-pixel L_ID gathers it from the voxels around the surface point instead of tracing cones.
+    bool diffuseFromVoxelIrradiance = false;
     float coneFootprintPerHeight = 0.0f;  // × height above the surface (0 = off; accurate: kAccurateGiFootprint)
     // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
     // occupied voxel, 2-20 s per light or geometry edit on llvmpipe (docs/GI.md, "Bounces").

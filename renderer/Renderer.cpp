@@ -189,7 +189,8 @@ struct Renderer::Impl {
     float injectedRadianceRange = 0.0f;
     // What the last injection's bounces were traced with (bounces > 1 depend on the cone settings).
     int injectedBounces = 0;
-    int pendingBounces = 1;  // bounces of the GI update waiting to be logged
+    int pendingBounces = 1;
+    bool injectedIrradiance = false;  // the voxel irradiance volumes hold this light (diffuseFromVoxelIrradiance)  // bounces of the GI update waiting to be logged
     bool injectedAnisotropic = true;
     float injectedFootprint = 0.0f, injectedAperture = 0.0f, injectedStepScale = 0.0f, injectedTraceDistance = 0.0f,
           injectedIntensity = 0.0f;
@@ -225,6 +226,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     // Bounces trace cones through the volume: their settings change what is injected.
     const bool bounceSettingsChanged =
         std::clamp(settings.bounces, 1, kMaxBounces) != injectedBounces ||
+        settings.diffuseFromVoxelIrradiance != injectedIrradiance ||
         (injectedBounces > 1 && (settings.anisotropicVoxels != injectedAnisotropic ||
                                  settings.coneFootprintPerHeight != injectedFootprint ||
                                  settings.diffuseConeAperture != injectedAperture ||
@@ -291,6 +293,11 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
                 mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
             }
         }
+        if (settings.diffuseFromVoxelIrradiance) {
+            Profiler::Scope scope(profiler, "voxel irradiance");
+            inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete);
+        }
+        injectedIrradiance = settings.diffuseFromVoxelIrradiance;
         injectedBounces = bounces;
         pendingBounces = bounces;
         injectedAnisotropic = settings.anisotropicVoxels;
@@ -365,6 +372,9 @@ void Renderer::Impl::reportGiUpdate() {
     if (bounceTiming && bounceTiming->frame >= pendingGiFrame)
         text += ", " + std::to_string(pendingBounces - 1) + " more bounce" + (pendingBounces > 2 ? "s " : " ") +
                 formatMs(bounceTiming->gpuMs);
+    const PassTiming* irradianceTiming = profiler.lastRun("voxel irradiance");
+    if (irradianceTiming && irradianceTiming->frame >= pendingGiFrame)
+        text += ", voxel irradiance " + formatMs(irradianceTiming->gpuMs);
     // Every frame of a gizmo drag re-voxelizes: one folded line with a count, not one per frame.
     log.info(text, Fold::IgnoringNumbers);
     pendingGiFrame = 0;
@@ -493,6 +503,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
                     : ConeTracePass::Sampling{};
             {
                 Profiler::Scope scope(r.profiler, "cone trace");
+                if (settings.diffuseFromVoxelIrradiance) r.inject.bindIrradiance(r.voxels);
                 r.coneTrace.executeReduced(r.voxels, settings, sampling);
             }
             r.waitForQueuedPasses();  // the resolve samples the low-resolution trace

@@ -23,7 +23,11 @@
 // cone-direction view and the bounces with the stratified sets"). The fixed set's pencils would otherwise give every voxel the same
 // few directions (what they happen to hit), as they did to the pixels before the sets.
 //
-// Defines set by InjectPass: LIT_BOUNCE_RGBA8 (1: rgba8 direct volume, 0: rgba16f).
+// Defines set by InjectPass: LIT_BOUNCE_RGBA8 (1: rgba8 direct volume, 0: rgba16f);
+// LIT_BOUNCE_IRRADIANCE 1 (experiment, InjectPass::executeIrradiance, voxel_irradiance.glsl):
+// store each voxel's irradiance/π instead, for the side of its averaged normal and the other side,
+// in two RGBA16F volumes, and leave the radiance as it is; LIT_IRRADIANCE_ALL_SETS 1: average all
+// kConeSetCount stratified sets per voxel instead of its one set (kConeSetCount × the cones).
 #include "cone.glsl"
 #include "cone_strata.glsl"
 
@@ -39,15 +43,33 @@ LIT_VOXEL_LIST_READER
 
 layout(binding = LIT_IMG_VOXEL_ALBEDO, r32ui) uniform readonly uimage3D voxelAlbedo;
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNormal;
+#ifndef LIT_BOUNCE_IRRADIANCE
+#define LIT_BOUNCE_IRRADIANCE 0
+#endif
+#ifndef LIT_IRRADIANCE_ALL_SETS
+#define LIT_IRRADIANCE_ALL_SETS 0
+#endif
+#if LIT_BOUNCE_IRRADIANCE
+layout(binding = LIT_IMG_VOXEL_DIRECT, rgba16f) uniform writeonly image3D voxelIrradiancePosOut;
+layout(binding = LIT_IMG_VOXEL_BOUNCE, rgba16f) uniform writeonly image3D voxelIrradianceNegOut;
+#else
 layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform readonly image3D voxelDirect;
 layout(binding = LIT_IMG_VOXEL_BOUNCE) uniform writeonly image3D voxelBounce;
+#endif
 
 const float kOneSidedMinLength = 0.5;    // as inject.comp.glsl
 const float kDirectionMinLength = 0.05;  // as inject.comp.glsl
 
 // Irradiance/π of voxel v's surface seen from the cone origin `origin` with normal `normal`.
 vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float maxDistance) {
-#if LIT_CONE_FOOTPRINT
+#if LIT_CONE_FOOTPRINT && LIT_IRRADIANCE_ALL_SETS
+    vec3 cones[kDiffuseConeCount];
+    vec3 sum = vec3(0.0);
+    mat3 frame = tangentFrame(normal);
+    for (int set = 0; set < kConeSetCount; ++set)
+        sum += traceDiffuseStratified(origin, frame, set, aperture, maxDistance, cones);
+    return sum / float(kConeSetCount);
+#elif LIT_CONE_FOOTPRINT
     vec3 cones[kDiffuseConeCount];
     return traceDiffuseStratified(origin, tangentFrame(normal), voxelConeSetIndex(v, normal), aperture, maxDistance, cones);
 #else
@@ -65,6 +87,22 @@ void main() {
     int n = int(voxel.voxelInfo.x);
     if (any(greaterThanEqual(v, ivec3(n)))) return;
     vec4 albedo = unpackVoxel(imageLoad(voxelAlbedo, v).r);
+#if LIT_BOUNCE_IRRADIANCE
+    if (albedo.a == 0.0) return;  // empty: the volumes were cleared
+    {
+        vec3 averaged = unpackVoxel(imageLoad(voxelNormal, v).r).xyz * 2.0 - 1.0;
+        float agreement = length(averaged);
+        vec3 normal = agreement >= kDirectionMinLength ? averaged / agreement : vec3(0.0, 1.0, 0.0);
+        vec3 centre = voxelCenter(v);
+        float aperture = voxel.traceParams.w, maxDistance = voxel.traceParams.y;
+        vec3 front = bounceIrradiance(v, coneOrigin(centre, normal), normal, aperture, maxDistance);
+        vec3 back = agreement < kOneSidedMinLength
+                        ? bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance)
+                        : front;
+        imageStore(voxelIrradiancePosOut, v, vec4(front, 1.0));
+        imageStore(voxelIrradianceNegOut, v, vec4(back, 1.0));
+    }
+#else
     vec4 direct = imageLoad(voxelDirect, v);
     if (albedo.a == 0.0 || direct.a == 0.0) {
         imageStore(voxelBounce, v, direct);
@@ -80,4 +118,5 @@ void main() {
         irradiance = 0.5 * (irradiance + bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance));
     vec3 radiance = decodeRadiance(direct.rgb) + albedo.rgb * irradiance * voxel.traceParams.x;
     imageStore(voxelBounce, v, vec4(encodeRadiance(radiance), 1.0));
+#endif
 }

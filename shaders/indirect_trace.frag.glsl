@@ -11,6 +11,7 @@
 #include "cone.glsl"
 #include "indirect.glsl"
 #include "cone_strata.glsl"
+#include "voxel_irradiance.glsl"
 
 layout(location = 0) out uvec4 outPacked;
 layout(location = 1) out uvec4 outGuide;
@@ -91,6 +92,9 @@ void main() {
     // As cone_trace.frag.glsl: rough specular on a diffuse surface reuses the diffuse cones.
     bool reuse = specular && diffuseSurface &&
                  specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
+#if LIT_VOXEL_IRRADIANCE
+    reuse = false;  // no diffuse cones to reuse: the specular lobe traces its own
+#endif
     vec3 cones[kDiffuseConeCount];
     bool diffuseWanted = (uTraceTerms.x != 0 || reuse) && diffuseSurface;
 #if LIT_CONE_SUBSETS
@@ -131,7 +135,9 @@ void main() {
     }
 #else
     if (diffuseWanted)
-#if LIT_CONE_FOOTPRINT
+#if LIT_VOXEL_IRRADIANCE
+        outDiffuse = vec4(gatherVoxelIrradiance(s.position, n), 1.0);
+#elif LIT_CONE_FOOTPRINT
         // Bounded cones: this texel's stratified set (cone_strata.glsl; ConeStrataFilterPass averages the sets).
         outDiffuse = vec4(traceDiffuseStratified(origin, basis, coneSetIndex(ivec2(gl_FragCoord.xy)), voxel.traceParams.w,
                                                  maxDistance, cones), 1.0);

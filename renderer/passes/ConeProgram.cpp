@@ -7,12 +7,12 @@
 namespace lit {
 
 ConeFeatures ConeFeatures::of(const RenderSettings& settings) {
-    return {settings.anisotropicVoxels, settings.coneFootprintPerHeight > 0.0f};
+    return {settings.anisotropicVoxels, settings.coneFootprintPerHeight > 0.0f, settings.diffuseFromVoxelIrradiance};
 }
 
 std::string ConeFeatures::defines() const {
     return std::string("#define LIT_CONE_ANISOTROPIC ") + (anisotropic ? "1" : "0") + "\n#define LIT_CONE_FOOTPRINT " +
-           (footprint ? "1" : "0") + "\n";
+           (footprint ? "1" : "0") + "\n#define LIT_VOXEL_IRRADIANCE " + (voxelIrradiance ? "1" : "0") + "\n";
 }
 
 ConeProgram::ConeProgram(std::filesystem::path root, std::string label, std::vector<gl::ShaderStageSource> stages,

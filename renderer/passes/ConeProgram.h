@@ -21,10 +21,13 @@ struct RenderSettings;
 struct ConeFeatures {
     bool anisotropic = false;  // directional voxels for levels ≥ 1 (RenderSettings::anisotropicVoxels)
     bool footprint = false;    // footprint-bounded diffuse cones (RenderSettings::coneFootprintPerHeight > 0)
+    // Experiment (docs/GI.md, eighth session): L_ID gathered from the voxels' cached irradiance
+    // (RenderSettings::diffuseFromVoxelIrradiance) instead of per-pixel diffuse cones.
+    bool voxelIrradiance = false;
 
     static ConeFeatures of(const RenderSettings& settings);
     std::string defines() const;
-    int index() const { return (anisotropic ? 1 : 0) + (footprint ? 2 : 0); }
+    int index() const { return (anisotropic ? 1 : 0) + (footprint ? 2 : 0) + (voxelIrradiance ? 4 : 0); }
     bool operator==(const ConeFeatures&) const = default;
 };
 
@@ -47,7 +50,7 @@ private:
     std::string label_;
     std::vector<gl::ShaderStageSource> stages_;
     std::string defines_;
-    std::array<gl::Program, 4> variants_;  // by ConeFeatures::index()
+    std::array<gl::Program, 8> variants_;  // by ConeFeatures::index()
 };
 
 }  // namespace lit

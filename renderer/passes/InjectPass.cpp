@@ -39,6 +39,7 @@ std::vector<gl::Program*> InjectPass::programs() {
     std::vector<gl::Program*> programs{&program_};
     bounce8_.appendBuilt(programs);
     bounce16f_.appendBuilt(programs);
+    irradianceProgram_.appendBuilt(programs);
     return programs;
 }
 
@@ -73,6 +74,50 @@ void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features,
     // The bounce replaces level 0; the caller rebuilds the mips from it.
     glCopyImageSubData(volume.bounce().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0,
                        0, n, n, n);
+}
+
+void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList) {
+    const int n = volume.resolution();
+    if (n <= 0) return;
+    if (irradianceResolution_ != n) {
+        irradiancePos_ = gl::Texture("voxel irradiance +normal", {GL_TEXTURE_3D, GL_RGBA16F, n, n, n, 1});
+        irradianceNeg_ = gl::Texture("voxel irradiance -normal", {GL_TEXTURE_3D, GL_RGBA16F, n, n, n, 1});
+        irradianceResolution_ = n;
+    }
+    if (irradianceProgram_.empty())
+        irradianceProgram_ = ConeProgram(shaderRoot_, "voxel irradiance", {{GL_COMPUTE_SHADER, "bounce.comp.glsl"}},
+                                         "#define LIT_BOUNCE_RGBA8 0\n#define LIT_BOUNCE_IRRADIANCE 1\n", features);
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(irradiancePos_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    glClearTexImage(irradianceNeg_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    const gl::Program& program = irradianceProgram_.get(features);
+    program.use();
+    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
+    volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
+    if (features.anisotropic) volume.bindDirectional();
+    glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiancePos_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, irradianceNeg_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    dispatchOverVoxels(volume, program, fromList);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void InjectPass::bindIrradiance(const VoxelVolume& volume) const {
+    if (!irradiancePos_) return;
+    // texelFetch only, but a texture must be complete to be read: one level, no filtering (the
+    // normal volume is integer, which linear filtering would make incomplete).
+    for (const gl::Texture* t : {&irradiancePos_, &irradianceNeg_, &volume.normal()}) {
+        glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTextureParameteri(t->id(), GL_TEXTURE_MAX_LEVEL, 0);
+    }
+    for (const GLuint unit : {LIT_TEX_VOXEL_IRRADIANCE_POS, LIT_TEX_VOXEL_IRRADIANCE_NEG, LIT_TEX_VOXEL_NORMAL})
+        glBindSampler(unit, 0);
+    irradiancePos_.bind(LIT_TEX_VOXEL_IRRADIANCE_POS);
+    irradianceNeg_.bind(LIT_TEX_VOXEL_IRRADIANCE_NEG);
+    volume.normal().bind(LIT_TEX_VOXEL_NORMAL);
 }
 
 void InjectPass::execute(const VoxelVolume& volume, bool fromList) {

@@ -40,9 +40,22 @@ public:
     // `features`: the cone features to trace with (ConeFeatures::of the settings).
     void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList = true);
 
+    // Experiment (RenderSettings::diffuseFromVoxelIrradiance): after execute() and a full mip
+    // build, every occupied voxel traces diffuse cones once (bounce.comp.glsl with
+    // LIT_BOUNCE_IRRADIANCE) and its irradiance/π per side goes to two RGBA16F volumes that
+    // bindIrradiance() binds for the per-pixel gather (voxel_irradiance.glsl). The radiance
+    // volume is left as it is.
+    void executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList = true);
+    // Binds the two irradiance volumes and the voxel normals (LIT_TEX_VOXEL_IRRADIANCE_POS/NEG,
+    // LIT_TEX_VOXEL_NORMAL) for the cone passes.
+    void bindIrradiance(const VoxelVolume& volume) const;
+
     std::vector<gl::Program*> programs() override;
 
 private:
+    ConeProgram irradianceProgram_;
+    gl::Texture irradiancePos_, irradianceNeg_;
+    int irradianceResolution_ = 0;
     gl::Program program_;
     // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce (most frames have one).
     ConeProgram bounce8_, bounce16f_;

@@ -32,6 +32,7 @@
 #include "cone.glsl"
 #include "indirect.glsl"
 #include "cone_strata.glsl"
+#include "voxel_irradiance.glsl"
 
 #ifdef LIT_INDIRECT_FALLBACK
 layout(early_fragment_tests) in;  // the trace mask's depth test decides before the shader runs
@@ -166,9 +167,14 @@ void main() {
         int count = clamp(voxel.traceOptions.x, 1, 8);
         bool reuse = traceSpecularHere && diffuseSurface &&
                      specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
+#if LIT_VOXEL_IRRADIANCE
+        reuse = false;
+#endif
         vec3 cones[kDiffuseConeCount];
         if (traceDiffuseHere || reuse) {
-#if LIT_CONE_FOOTPRINT
+#if LIT_VOXEL_IRRADIANCE
+            vec3 traced = gatherVoxelIrradiance(s.position, n);
+#elif LIT_CONE_FOOTPRINT
             // The stratified set of the low-resolution texel this pixel falls in (cone_strata.glsl).
             vec3 traced = traceDiffuseStratified(origin, basis, coneSetIndex((pixel - uJitter) / uScale),
                                                  voxel.traceParams.w, maxDistance, cones);

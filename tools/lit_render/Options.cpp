@@ -221,6 +221,14 @@ Options parseOptions(const std::vector<std::string>& args) {
                 options.anisotropic = false;
             else
                 throw UsageError("--anisotropic expects on or off, got '" + text + "'");
+        } else if (flag == "--voxel-irradiance") {
+            const std::string text = value("on or off");
+            if (text == "on")
+                options.voxelIrradiance = true;
+            else if (text == "off")
+                options.voxelIrradiance = false;
+            else
+                throw UsageError("--voxel-irradiance expects on or off, got '" + text + "'");
         } else if (flag == "--footprint") {
             const std::string text = value("a number");
             const auto x = parseFloat(text);
@@ -360,6 +368,7 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
         base.bounces = *options.bounces == kAllReferenceBounces ? kMaxBounces : std::clamp(*options.bounces, 1, kMaxBounces);
     if (options.giMode) setGiMode(base, *options.giMode);
     if (options.anisotropic) base.anisotropicVoxels = *options.anisotropic;
+    if (options.voxelIrradiance) base.diffuseFromVoxelIrradiance = *options.voxelIrradiance;
     if (options.footprint) base.coneFootprintPerHeight = *options.footprint;
     if (options.culling) base.frustumCulling = *options.culling;
     if (options.indirectScale) base.indirectScale = *options.indirectScale;
@@ -442,6 +451,8 @@ std::string usageText() {
            "                       (docs/GI.md; several times the cone-trace time); the two flags below override it\n"
            "  --anisotropic on|off directional voxels for the mip levels cones read (default " +
            std::string(defaults.anisotropicVoxels ? "on" : "off") + ")\n"
+           "  --voxel-irradiance on|off  experiment (docs/GI.md, eighth session): indirect diffuse gathered from\n"
+           "                       irradiance cached in the voxels instead of per-pixel cones (default off)\n"
            "  --footprint X        largest voxel a cone leaving a surface samples, × its height above the\n"
            "                       surface (default " + formatNumber(defaults.coneFootprintPerHeight) + "; 0 = unbounded)\n"
            "  --frames N           frames rendered before the image is read (default 1)\n"

@@ -1,0 +1,47 @@
+// Indirect diffuse from irradiance cached in the voxels (experiment, LIT_VOXEL_IRRADIANCE 1,
+// RenderSettings::diffuseFromVoxelIrradiance; docs/GI.md, "Irradiance cached in the voxels
+// (eighth session)"). After each light or geometry edit every occupied voxel traces the accurate
+// mode's stratified cones once (bounce.comp.glsl, LIT_BOUNCE_IRRADIANCE) and stores irradiance/π
+// for the side its averaged normal points to (POS) and, for voxels whose normals disagree (both
+// sides of a thin wall), the other side (NEG). A pixel then gathers, instead of tracing cones, the
+// 3 × 3 × 3 voxels around its surface point pushed half a voxel along its normal, weighted by a
+// tent of radius 1.5 voxels around that point × (normal agreement)² × occupancy.
+// Needs voxel.glsl (included by cone.glsl).
+#ifndef LIT_VOXEL_IRRADIANCE
+#define LIT_VOXEL_IRRADIANCE 0
+#endif
+#if LIT_VOXEL_IRRADIANCE
+layout(binding = LIT_TEX_VOXEL_IRRADIANCE_POS) uniform sampler3D voxelIrradiancePos;
+layout(binding = LIT_TEX_VOXEL_IRRADIANCE_NEG) uniform sampler3D voxelIrradianceNeg;
+layout(binding = LIT_TEX_VOXEL_NORMAL) uniform usampler3D voxelNormalTexture;
+
+vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
+    int res = int(voxel.voxelInfo.x);
+    // Continuous voxel coordinates with voxel centres on integers.
+    vec3 g = (position - voxel.volumeMin.xyz) / voxel.voxelInfo.z + 0.5 * n - 0.5;
+    ivec3 c = ivec3(round(g));
+    vec3 sum = vec3(0.0);
+    float weightSum = 0.0;
+    for (int z = -1; z <= 1; ++z)
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x) {
+                ivec3 v = c + ivec3(x, y, z);
+                if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(res)))) continue;
+                vec4 packedNormal = unpackVoxel(texelFetch(voxelNormalTexture, v, 0).r);
+                if (packedNormal.a == 0.0) continue;  // empty
+                vec3 averaged = packedNormal.xyz * 2.0 - 1.0;
+                float agreement = length(averaged);
+                vec3 vn = agreement >= 0.05 ? averaged / agreement : vec3(0.0, 1.0, 0.0);
+                float d = dot(n, vn);
+                bool otherSide = agreement < 0.5 && d < 0.0;  // as bounce.comp.glsl's kOneSidedMinLength
+                float facing = otherSide ? -d : d;
+                if (facing <= 0.0) continue;
+                vec3 tent = max(1.0 - abs(vec3(v) - g) / 1.5, 0.0);
+                float w = tent.x * tent.y * tent.z * facing * facing;
+                vec3 e = otherSide ? texelFetch(voxelIrradianceNeg, v, 0).rgb : texelFetch(voxelIrradiancePos, v, 0).rgb;
+                sum += w * e;
+                weightSum += w;
+            }
+    return weightSum > 0.0 ? sum / weightSum : vec3(0.0);
+}
+#endif
