@@ -189,8 +189,8 @@ struct Renderer::Impl {
     float injectedRadianceRange = 0.0f;
     // What the last injection's bounces were traced with (bounces > 1 depend on the cone settings).
     int injectedBounces = 0;
-    int pendingBounces = 1;
-    bool injectedIrradiance = false;  // the voxel irradiance volumes hold this light (diffuseFromVoxelIrradiance)  // bounces of the GI update waiting to be logged
+    int pendingBounces = 1;  // bounces of the GI update waiting to be logged
+    bool injectedIrradiance = false;  // the voxel irradiance volumes hold this light (diffuseFromVoxelIrradiance)
     bool injectedAnisotropic = true;
     float injectedFootprint = 0.0f, injectedAperture = 0.0f, injectedStepScale = 0.0f, injectedTraceDistance = 0.0f,
           injectedIntensity = 0.0f;

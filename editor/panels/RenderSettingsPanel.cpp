@@ -196,6 +196,11 @@ bool drawGlobalIllumination(RenderSettings& s) {
             "surface (ratio; 0 = unbounded). Smaller keeps cones out of their own surface's voxels\n"
             "(no self-illumination) at the cost of more steps (3-5x the cone-trace time). Off (0) by\n"
             "default; 0.25 with anisotropic voxels is the accurate GI mode");
+    changed |= ImGui::Checkbox("Diffuse from voxel irradiance (experiment)", &s.diffuseFromVoxelIrradiance);
+    tooltip("Indirect diffuse gathered from irradiance cached in the voxels (traced once per light or\n"
+            "geometry edit with the accurate mode's cone sets) instead of cones per pixel: ~10-30x\n"
+            "cheaper per frame, seconds per light edit on llvmpipe; colour bleeding overshoots\n"
+            "(docs/GI.md, \"Irradiance cached in the voxels\")");
     changed |= comboInt("Indirect scale", s.indirectScale, std::array{1, 2, 4});
     tooltip("Trace indirect light for one pixel in N x N and upsample edge-aware (1 = every pixel)");
     changed |= ImGui::SliderFloat("Full-res specular below", &s.specularFullResRoughness, 0.0f, 1.0f, "roughness %.2f");

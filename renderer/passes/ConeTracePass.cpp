@@ -93,11 +93,14 @@ int ConeTracePass::indirectScale(const RenderSettings& settings) {
 }
 
 bool ConeTracePass::reducedPath(const RenderSettings& settings) {
-    return indirectScale(settings) > 1 || settings.temporalAccumulation || ConeFeatures::of(settings).footprint;
+    // The voxel-irradiance gather (an experiment) exists only in the reduced path's shaders.
+    return indirectScale(settings) > 1 || settings.temporalAccumulation || ConeFeatures::of(settings).footprint ||
+           settings.diffuseFromVoxelIrradiance;
 }
 
 bool ConeTracePass::coneSubsets(const RenderSettings& settings) {
-    return settings.temporalAccumulation && settings.temporalConeSubsets;
+    // With the voxel-irradiance gather there are no diffuse cones to split into subsets.
+    return settings.temporalAccumulation && settings.temporalConeSubsets && !settings.diffuseFromVoxelIrradiance;
 }
 
 ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scale, bool coneSubsets) {
