@@ -10,6 +10,18 @@ namespace lit {
 
 namespace {
 
+// Makes `program` current with what the cone-tracing voxel passes (bounce, voxel irradiance) read:
+// the voxel uniforms, the radiance volume and its directional chains, and the voxels' albedo and
+// normal images.
+void useWithVoxelSurfaces(const gl::Program& program, const VoxelVolume& volume, ConeFeatures features) {
+    program.use();
+    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
+    volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
+    if (features.anisotropic) volume.bindDirectional();
+    glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+}
+
 // Runs a voxel program (inject.comp.glsl, bounce.comp.glsl) over the occupied-voxel list when
 // there is one and fromList asks for it (indirect dispatch: the voxelization wrote the list and
 // its dispatch size), otherwise over the whole N³ grid.
@@ -61,12 +73,7 @@ void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features,
                            0, 0, n, n, n);
     }
     const gl::Program& program = programs.get(features);
-    program.use();
-    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
-    volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-    if (features.anisotropic) volume.bindDirectional();
-    glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    useWithVoxelSurfaces(program, volume, features);
     glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY, volume.radianceFormat());
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, volume.radianceFormat());
     dispatchOverVoxels(volume, program, fromList);
@@ -92,12 +99,7 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
     glClearTexImage(irradianceNeg_.id(), 0, GL_RGBA, GL_FLOAT, zero);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     const gl::Program& program = irradianceProgram_.get(features);
-    program.use();
-    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
-    volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-    if (features.anisotropic) volume.bindDirectional();
-    glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    useWithVoxelSurfaces(program, volume, features);
     glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiancePos_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, irradianceNeg_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     dispatchOverVoxels(volume, program, fromList);

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 namespace lit::test {
 namespace {
@@ -35,6 +36,33 @@ protected:
     HdrImage renderFrames(const Scene& scene, const CameraView& camera, const RenderSettings& settings, int frames) {
         for (int i = 0; i < frames; ++i) renderer_->render(scene, camera, settings);
         return HdrImage{settings.width, settings.height, renderer_->readHdrRgb()};
+    }
+
+    // Cone subsets against the whole sets (temporalConeSubsets off), L_ID of the Cornell box seen
+    // from inside, 96², scale 2, temporal accumulation, in `mode`: one frame and a sampling period
+    // of each, each on a fresh renderer. `moreSubsetFrames` renders on after the subsets' period,
+    // before the renderer is replaced.
+    struct SubsetRuns {
+        HdrImage subsetFirst, subsetConverged, wholeFirst, wholeConverged;
+    };
+    SubsetRuns renderSubsetsAndWholeSets(const Scene& scene, const CameraView& camera, GiMode mode,
+                                         const std::function<void(RenderSettings)>& moreSubsetFrames) {
+        RenderSettings subsets = giSettings(96, 2, true);
+        setGiMode(subsets, mode);
+        subsets.view = View::IndirectDiffuse;
+        EXPECT_TRUE(subsets.temporalConeSubsets) << "the default";
+        RenderSettings whole = subsets;
+        whole.temporalConeSubsets = false;
+        SubsetRuns runs;
+        renderer_->setScene(scene);
+        runs.subsetFirst = renderFrames(scene, camera, subsets, 1);
+        runs.subsetConverged = renderFrames(scene, camera, subsets, kSamplingPeriod - 1);
+        moreSubsetFrames(subsets);
+        renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
+        renderer_->setScene(scene);
+        runs.wholeFirst = renderFrames(scene, camera, whole, 1);
+        runs.wholeConverged = renderFrames(scene, camera, whole, kSamplingPeriod - 1);
+        return runs;
     }
 
     static double meanLuminance(const HdrImage& image) {
@@ -175,27 +203,20 @@ TEST_F(IndirectResolve, StillCameraConverges) {
 TEST_F(IndirectResolve, ConeSubsetsConvergeToTheWholeConeSet) {
     const Scene scene = loadCornellBox();
     const CameraView camera = insideCamera(1.0f);
-    RenderSettings subsets = giSettings(96, 2, true);
     // The fast mode's fixed cone set: the accurate mode's subsets (pairs of the stratified sets) are
     // AccurateConeSubsetsConvergeToTheWholeSets, without this test's final-image check, which the
     // accurate mode's reduced-resolution gap would fail with or without subsets (docs/GI.md, "The
     // accurate mode at reduced resolution").
-    setGiMode(subsets, GiMode::Fast);
-    subsets.view = View::IndirectDiffuse;
-    ASSERT_TRUE(subsets.temporalConeSubsets) << "the default";
-    RenderSettings whole = subsets;
-    whole.temporalConeSubsets = false;
-
-    renderer_->setScene(scene);
-    const HdrImage subsetFirst = renderFrames(scene, camera, subsets, 1);
-    const HdrImage subsetConverged = renderFrames(scene, camera, subsets, kSamplingPeriod - 1);
-    subsets.view = View::Final;
-    const HdrImage subsetFinal = renderFrames(scene, camera, subsets, kSamplingPeriod);
-    renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
-    renderer_->setScene(scene);
-    const HdrImage wholeFirst = renderFrames(scene, camera, whole, 1);
-    const HdrImage wholeConverged = renderFrames(scene, camera, whole, kSamplingPeriod - 1);
+    HdrImage subsetFinal;
+    RenderSettings whole;
+    const SubsetRuns runs = renderSubsetsAndWholeSets(scene, camera, GiMode::Fast, [&](RenderSettings subsets) {
+        subsets.view = View::Final;
+        subsetFinal = renderFrames(scene, camera, subsets, kSamplingPeriod);
+        whole = subsets;
+    });
+    const auto& [subsetFirst, subsetConverged, wholeFirst, wholeConverged] = runs;
     RenderSettings reference = whole;
+    reference.temporalConeSubsets = false;
     reference.indirectScale = 1;
     reference.temporalAccumulation = false;
     reference.view = View::Final;
@@ -227,21 +248,11 @@ TEST_F(IndirectResolve, ConeSubsetsConvergeToTheWholeConeSet) {
 TEST_F(IndirectResolve, AccurateConeSubsetsConvergeToTheWholeSets) {
     const Scene scene = loadCornellBox();
     const CameraView camera = insideCamera(1.0f);
-    RenderSettings subsets = giSettings(96, 2, true);
-    setGiMode(subsets, GiMode::Accurate);
-    subsets.view = View::IndirectDiffuse;
-    ASSERT_TRUE(subsets.temporalConeSubsets) << "the default";
-    RenderSettings whole = subsets;
-    whole.temporalConeSubsets = false;
-
-    renderer_->setScene(scene);
-    const HdrImage subsetFirst = renderFrames(scene, camera, subsets, 1);
-    const HdrImage subsetConverged = renderFrames(scene, camera, subsets, kSamplingPeriod - 1);
-    const HdrImage subsetNext = renderFrames(scene, camera, subsets, 1);
-    renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
-    renderer_->setScene(scene);
-    const HdrImage wholeFirst = renderFrames(scene, camera, whole, 1);
-    const HdrImage wholeConverged = renderFrames(scene, camera, whole, kSamplingPeriod - 1);
+    HdrImage subsetNext;
+    const SubsetRuns runs = renderSubsetsAndWholeSets(scene, camera, GiMode::Accurate, [&](RenderSettings subsets) {
+        subsetNext = renderFrames(scene, camera, subsets, 1);
+    });
+    const auto& [subsetFirst, subsetConverged, wholeFirst, wholeConverged] = runs;
 
     const double first = relativeRmse(subsetFirst, wholeFirst);
     const double converged = relativeRmse(subsetConverged, wholeConverged);
