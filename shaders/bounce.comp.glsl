@@ -57,9 +57,6 @@ layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform readonly image3D v
 layout(binding = LIT_IMG_VOXEL_BOUNCE) uniform writeonly image3D voxelBounce;
 #endif
 
-const float kOneSidedMinLength = 0.5;    // as inject.comp.glsl
-const float kDirectionMinLength = 0.05;  // as inject.comp.glsl
-
 // Irradiance/π of voxel v's surface seen from the cone origin `origin` with normal `normal`.
 vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float maxDistance) {
 #if LIT_CONE_FOOTPRINT && LIT_IRRADIANCE_ALL_SETS
@@ -89,33 +86,28 @@ void main() {
     vec4 albedo = unpackVoxel(imageLoad(voxelAlbedo, v).r);
 #if LIT_BOUNCE_IRRADIANCE
     if (albedo.a == 0.0) return;  // empty: the volumes were cleared
-    {
-        vec3 averaged = unpackVoxel(imageLoad(voxelNormal, v).r).xyz * 2.0 - 1.0;
-        float agreement = length(averaged);
-        vec3 normal = agreement >= kDirectionMinLength ? averaged / agreement : vec3(0.0, 1.0, 0.0);
-        vec3 centre = voxelCenter(v);
-        float aperture = voxel.traceParams.w, maxDistance = voxel.traceParams.y;
-        vec3 front = bounceIrradiance(v, coneOrigin(centre, normal), normal, aperture, maxDistance);
-        vec3 back = agreement < kOneSidedMinLength
-                        ? bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance)
-                        : front;
-        imageStore(voxelIrradiancePosOut, v, vec4(front, 1.0));
-        imageStore(voxelIrradianceNegOut, v, vec4(back, 1.0));
-    }
 #else
     vec4 direct = imageLoad(voxelDirect, v);
     if (albedo.a == 0.0 || direct.a == 0.0) {
         imageStore(voxelBounce, v, direct);
         return;
     }
-    vec3 averaged = unpackVoxel(imageLoad(voxelNormal, v).r).xyz * 2.0 - 1.0;
+#endif
+    vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, v).r);
     float agreement = length(averaged);
     vec3 normal = agreement >= kDirectionMinLength ? averaged / agreement : vec3(0.0, 1.0, 0.0);
     vec3 centre = voxelCenter(v);
     float aperture = voxel.traceParams.w, maxDistance = voxel.traceParams.y;
-    vec3 irradiance = bounceIrradiance(v, coneOrigin(centre, normal), normal, aperture, maxDistance);
-    if (agreement < kOneSidedMinLength)
-        irradiance = 0.5 * (irradiance + bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance));
+    // Voxels whose normals disagree (both sides of a thin wall) gather over both hemispheres.
+    vec3 front = bounceIrradiance(v, coneOrigin(centre, normal), normal, aperture, maxDistance);
+    vec3 back = agreement < kOneSidedMinLength
+                    ? bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance)
+                    : front;
+#if LIT_BOUNCE_IRRADIANCE
+    imageStore(voxelIrradiancePosOut, v, vec4(front, 1.0));
+    imageStore(voxelIrradianceNegOut, v, vec4(back, 1.0));
+#else
+    vec3 irradiance = 0.5 * (front + back);  // = front for a one-sided voxel
     vec3 radiance = decodeRadiance(direct.rgb) + albedo.rgb * irradiance * voxel.traceParams.x;
     imageStore(voxelBounce, v, vec4(encodeRadiance(radiance), 1.0));
 #endif

@@ -24,8 +24,6 @@ layout(binding = LIT_IMG_VOXEL_EMISSION, r32ui) uniform readonly uimage3D voxelE
 layout(binding = LIT_IMG_VOXEL_RADIANCE) uniform writeonly image3D voxelRadiance;
 
 const float kPi = 3.14159265358979;
-const float kOneSidedMinLength = 0.5;     // averaged-normal length above which lighting is one-sided
-const float kDirectionMinLength = 0.05;   // below: 8-bit rounding noise (±1/255 per component) dominates
 // The voxel centre may lie up to half a voxel behind the surface it holds: shadow lookups start
 // one voxel out along the normal, plus this many shadow texels (lights.glsl's normal offset).
 const float kShadowNormalOffsetTexels = 2.0;
@@ -65,7 +63,7 @@ void main() {
         imageStore(voxelRadiance, v, vec4(0.0));
         return;
     }
-    vec3 averaged = unpackVoxel(imageLoad(voxelNormal, v).r).xyz * 2.0 - 1.0;
+    vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, v).r);
     float agreement = length(averaged);
     bool oneSided = agreement >= kOneSidedMinLength;
     bool hasDirection = agreement >= kDirectionMinLength;

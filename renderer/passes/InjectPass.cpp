@@ -89,6 +89,8 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
     if (irradianceResolution_ != n) {
         irradiancePos_ = gl::Texture("voxel irradiance +normal", {GL_TEXTURE_3D, GL_RGBA16F, n, n, n, 1});
         irradianceNeg_ = gl::Texture("voxel irradiance -normal", {GL_TEXTURE_3D, GL_RGBA16F, n, n, n, 1});
+        // Read with texelFetch only; nearest keeps the one-level volumes complete for any sampler state.
+        for (const gl::Texture* t : {&irradiancePos_, &irradianceNeg_}) t->setFilter(GL_NEAREST, GL_NEAREST);
         irradianceResolution_ = n;
     }
     if (irradianceProgram_.empty())
@@ -108,13 +110,8 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
 
 void InjectPass::bindIrradiance(const VoxelVolume& volume) const {
     if (!irradiancePos_) return;
-    // texelFetch only, but a texture must be complete to be read: one level, no filtering (the
-    // normal volume is integer, which linear filtering would make incomplete).
-    for (const gl::Texture* t : {&irradiancePos_, &irradianceNeg_, &volume.normal()}) {
-        glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTextureParameteri(t->id(), GL_TEXTURE_MAX_LEVEL, 0);
-    }
+    // The three are one-level volumes with nearest filtering (set where they are made); a sampler
+    // object left on these units by another pass would override that.
     for (const GLuint unit : {LIT_TEX_VOXEL_IRRADIANCE_POS, LIT_TEX_VOXEL_IRRADIANCE_NEG, LIT_TEX_VOXEL_NORMAL})
         glBindSampler(unit, 0);
     irradiancePos_.bind(LIT_TEX_VOXEL_IRRADIANCE_POS);

@@ -124,11 +124,14 @@ bool VoxelVolume::fitTo(const Aabb& sceneBounds) {
     const float side = extent * static_cast<float>(resolution_) / static_cast<float>(std::max(resolution_ - 4, 1));
     // The grid is shifted by a quarter voxel along y and z (padding 2¼ voxels below, 1¾ above), so
     // that surfaces at whole-voxel distances from the bounds do not lie on the faces between two
-    // voxels, where voxelize.frag.glsl's depth rounding puts them into the voxel on their +axis
-    // side: at 64³ the Cornell box's lit block tops (18 and 36 voxels above its floor) went into the
-    // voxel above them, and the accurate mode read the ceiling and the back wall 8-11 % brighter
-    // than with the tops inside their voxel (VCT ÷ reference, 64³ → 128³: ceiling 1.14 → 1.00, back
-    // wall 1.09 → 0.91; shifted 1.06 → 0.99, 0.98 → 0.91). A quarter, not a half: a half puts
+    // voxels. There the voxelization depends on sub-pixel rounding: at 64³ the Cornell box's block
+    // tops (18 and 36 voxels above its floor) lie on voxel faces, and the conservative rasterization
+    // of the blocks' vertical sides writes or skips the voxel row their top edges only touch; the
+    // accurate mode read the ceiling and the back wall 8-11 % brighter than at 128³ (VCT ÷
+    // reference, 64³ → 128³: ceiling 1.14 → 1.00, back wall 1.09 → 0.91; shifted 1.06 → 0.99,
+    // 0.98 → 0.91). A workaround: surfaces ¾ voxel off a face in y or z, or on one in x, meet it
+    // again (docs/GI.md, "Rules for surfaces on voxel faces that do not depend on the grid's
+    // alignment": widening the conservative rasterization fixes it at every offset, not landed). A quarter, not a half: a half puts
     // surfaces at half-voxel distances from the bounds on voxel faces instead (the benchmark's
     // sealed room at 128³ leaked 1.37 % of the outside light with ½, 0.48 % with ¼). x is not
     // shifted, so that the grid stays mirror-symmetric about the scene's centre in x, the axis the

@@ -87,11 +87,11 @@ using mat4 = glm::mat4;
 // have to stay below GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (Capabilities.cpp asks for 35).
 #define LIT_TEX_VOXEL_DIRECTIONAL_FIRST 29
 #define LIT_VOXEL_FACE_COUNT 6
-#define LIT_VOXEL_AXIS_COUNT 3
+#define LIT_VOXEL_AXIS_COUNT 3  // directional volumes: one per axis, holding its two faces
 // Voxel irradiance (experiment, RenderSettings::diffuseFromVoxelIrradiance): RGBA16F N³, the
 // occupied voxels' irradiance/π on the side of their averaged normal (POS) and the other (NEG).
 #define LIT_TEX_VOXEL_IRRADIANCE_POS 32
-#define LIT_TEX_VOXEL_IRRADIANCE_NEG 33  // directional volumes: one per axis, holding its two faces
+#define LIT_TEX_VOXEL_IRRADIANCE_NEG 33
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0

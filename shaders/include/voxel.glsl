@@ -21,6 +21,15 @@ vec3 decodeRadiance(vec3 stored) { return stored * voxel.radianceScale.y; }
 // RGBA8 packed in a uint, as unpackUnorm4x8 expects (x in the low byte).
 vec4 unpackVoxel(uint bits) { return unpackUnorm4x8(bits); }
 
+// A voxel's averaged normal: the normal volume holds the mean of n·0.5+0.5 over the voxel's
+// fragments, so the vector returned here is the mean of their normals. Its length says how far
+// they agreed (~1 flat, ~0.7 at a box edge, ~0 for the two faces of a wall thinner than a voxel):
+// below kOneSidedMinLength a voxel is taken to hold surfaces facing both ways, below
+// kDirectionMinLength its direction is 8-bit rounding noise (±1/255 per component).
+const float kOneSidedMinLength = 0.5;
+const float kDirectionMinLength = 0.05;
+vec3 unpackAveragedNormal(uint bits) { return unpackVoxel(bits).xyz * 2.0 - 1.0; }
+
 // The packed running average `current` with `value` (rgb in [0,1]) added. The alpha byte counts
 // the samples averaged so far (saturating at 255, after which it is a moving average).
 uint averageRgbAdd(uint current, vec3 value) {

@@ -27,13 +27,14 @@ vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
             for (int x = -1; x <= 1; ++x) {
                 ivec3 v = c + ivec3(x, y, z);
                 if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(res)))) continue;
-                vec4 packedNormal = unpackVoxel(texelFetch(voxelNormalTexture, v, 0).r);
-                if (packedNormal.a == 0.0) continue;  // empty
-                vec3 averaged = packedNormal.xyz * 2.0 - 1.0;
+                uint packedNormal = texelFetch(voxelNormalTexture, v, 0).r;
+                if (unpackVoxel(packedNormal).a == 0.0) continue;  // empty
+                vec3 averaged = unpackAveragedNormal(packedNormal);
                 float agreement = length(averaged);
-                vec3 vn = agreement >= 0.05 ? averaged / agreement : vec3(0.0, 1.0, 0.0);
+                // The normal and the two sides as bounce.comp.glsl traced them.
+                vec3 vn = agreement >= kDirectionMinLength ? averaged / agreement : vec3(0.0, 1.0, 0.0);
                 float d = dot(n, vn);
-                bool otherSide = agreement < 0.5 && d < 0.0;  // as bounce.comp.glsl's kOneSidedMinLength
+                bool otherSide = agreement < kOneSidedMinLength && d < 0.0;
                 float facing = otherSide ? -d : d;
                 if (facing <= 0.0) continue;
                 vec3 tent = max(1.0 - abs(vec3(v) - g) / 1.5, 0.0);

@@ -44,6 +44,10 @@ protected:
     // before the renderer is replaced.
     struct SubsetRuns {
         HdrImage subsetFirst, subsetConverged, wholeFirst, wholeConverged;
+        // After the sampling period: the subsets' L_ID against the whole sets' (RMSE relative to the
+        // mean), and their mean's relative offset.
+        double convergedRmse() const { return relativeRmse(subsetConverged, wholeConverged); }
+        double convergedBias() const { return meanLuminance(subsetConverged) / meanLuminance(wholeConverged) - 1.0; }
     };
     SubsetRuns renderSubsetsAndWholeSets(const Scene& scene, const CameraView& camera, GiMode mode,
                                          const std::function<void(RenderSettings)>& moreSubsetFrames) {
@@ -208,23 +212,21 @@ TEST_F(IndirectResolve, ConeSubsetsConvergeToTheWholeConeSet) {
     // accurate mode's reduced-resolution gap would fail with or without subsets (docs/GI.md, "The
     // accurate mode at reduced resolution").
     HdrImage subsetFinal;
-    RenderSettings whole;
+    RenderSettings reference;  // the per-pixel trace of the same settings, without accumulation
     const SubsetRuns runs = renderSubsetsAndWholeSets(scene, camera, GiMode::Fast, [&](RenderSettings subsets) {
         subsets.view = View::Final;
         subsetFinal = renderFrames(scene, camera, subsets, kSamplingPeriod);
-        whole = subsets;
+        reference = subsets;
     });
-    const auto& [subsetFirst, subsetConverged, wholeFirst, wholeConverged] = runs;
-    RenderSettings reference = whole;
     reference.temporalConeSubsets = false;
     reference.indirectScale = 1;
     reference.temporalAccumulation = false;
     reference.view = View::Final;
     const HdrImage perPixel = renderFrames(scene, camera, reference, 1);
 
-    const double first = relativeMeanChange(subsetFirst, wholeFirst);
-    const double converged = relativeRmse(subsetConverged, wholeConverged);
-    const double bias = meanLuminance(subsetConverged) / meanLuminance(wholeConverged) - 1.0;
+    const double first = relativeMeanChange(runs.subsetFirst, runs.wholeFirst);
+    const double converged = runs.convergedRmse();
+    const double bias = runs.convergedBias();
     const double final = relativeRmse(subsetFinal, perPixel);
     std::printf("cone subsets vs the whole set, L_ID: first frame mean change %.3f %%, after %d frames RMSE %.3f %%, "
                 "mean %+.3f %%; final image vs per-pixel trace RMSE %.3f %%\n",
@@ -252,12 +254,11 @@ TEST_F(IndirectResolve, AccurateConeSubsetsConvergeToTheWholeSets) {
     const SubsetRuns runs = renderSubsetsAndWholeSets(scene, camera, GiMode::Accurate, [&](RenderSettings subsets) {
         subsetNext = renderFrames(scene, camera, subsets, 1);
     });
-    const auto& [subsetFirst, subsetConverged, wholeFirst, wholeConverged] = runs;
 
-    const double first = relativeRmse(subsetFirst, wholeFirst);
-    const double converged = relativeRmse(subsetConverged, wholeConverged);
-    const double bias = meanLuminance(subsetConverged) / meanLuminance(wholeConverged) - 1.0;
-    const double late = relativeMeanChange(subsetNext, subsetConverged);
+    const double first = relativeRmse(runs.subsetFirst, runs.wholeFirst);
+    const double converged = runs.convergedRmse();
+    const double bias = runs.convergedBias();
+    const double late = relativeMeanChange(subsetNext, runs.subsetConverged);
     std::printf("accurate mode, cone subsets vs the whole sets, L_ID: first frame RMSE %.3f %%, after %d frames RMSE "
                 "%.3f %%, mean %+.3f %%; frame-to-frame change after them %.3f %%\n",
                 100 * first, kSamplingPeriod, 100 * converged, 100 * bias, 100 * late);

@@ -89,6 +89,13 @@ Options parseOptions(const std::vector<std::string>& args) {
                 throw UsageError("missing value for " + flag + " (expects " + expects + ")");
             return args[++i];
         };
+        // An on|off flag's value; anything else is a usage error naming the flag.
+        const auto onOff = [&]() -> bool {
+            const std::string text = value("on or off");
+            if (text == "on") return true;
+            if (text == "off") return false;
+            throw UsageError(flag + " expects on or off, got '" + text + "'");
+        };
         const auto noValue = [&] {
             if (inlineValue) throw UsageError(flag + " takes no value, got '" + arg + "'");
         };
@@ -140,13 +147,7 @@ Options parseOptions(const std::vector<std::string>& args) {
             if (!ev || *ev < -10.0f || *ev > 20.0f) throw UsageError("--ev expects stops from -10 to 20, got '" + text + "'");
             options.ev = *ev;
         } else if (flag == "--auto-exposure") {
-            const std::string text = value("on or off");
-            if (text == "on")
-                options.autoExposure = true;
-            else if (text == "off")
-                options.autoExposure = false;
-            else
-                throw UsageError("--auto-exposure expects on or off, got '" + text + "'");
+            options.autoExposure = onOff();
         } else if (flag == "--sky") {
             const std::string text = value("auto, none, uniform, gradient or hdr");
             const auto mode = parseSkyMode(text);
@@ -167,42 +168,18 @@ Options parseOptions(const std::vector<std::string>& args) {
             if (!view) throw UsageError("unknown view '" + text + "'; views are: " + viewNames());
             options.view = *view;
         } else if (flag == "--gi") {
-            const std::string text = value("on or off");
-            if (text == "on")
-                options.gi = true;
-            else if (text == "off")
-                options.gi = false;
-            else
-                throw UsageError("--gi expects on or off, got '" + text + "'");
+            options.gi = onOff();
         } else if (flag == "--culling") {
-            const std::string text = value("on or off");
-            if (text == "on")
-                options.culling = true;
-            else if (text == "off")
-                options.culling = false;
-            else
-                throw UsageError("--culling expects on or off, got '" + text + "'");
+            options.culling = onOff();
         } else if (flag == "--indirect-scale") {
             const std::string text = value("1, 2 or 4");
             const auto n = parseInt(text, 1, 4);
             if (!n || *n == 3) throw UsageError("--indirect-scale expects 1, 2 or 4, got '" + text + "'");
             options.indirectScale = *n;
         } else if (flag == "--temporal") {
-            const std::string text = value("on or off");
-            if (text == "on")
-                options.temporal = true;
-            else if (text == "off")
-                options.temporal = false;
-            else
-                throw UsageError("--temporal expects on or off, got '" + text + "'");
+            options.temporal = onOff();
         } else if (flag == "--cone-subsets") {
-            const std::string text = value("on or off");
-            if (text == "on")
-                options.coneSubsets = true;
-            else if (text == "off")
-                options.coneSubsets = false;
-            else
-                throw UsageError("--cone-subsets expects on or off, got '" + text + "'");
+            options.coneSubsets = onOff();
         } else if (flag == "--voxels") {
             const std::string text = value("64, 128, 256 or 512");
             const auto n = parseInt(text, 64, 512);
@@ -214,21 +191,9 @@ Options parseOptions(const std::vector<std::string>& args) {
             options.giMode = parseGiMode(text);
             if (!options.giMode) throw UsageError("--gi-mode expects fast or accurate, got '" + text + "'");
         } else if (flag == "--anisotropic") {
-            const std::string text = value("on or off");
-            if (text == "on")
-                options.anisotropic = true;
-            else if (text == "off")
-                options.anisotropic = false;
-            else
-                throw UsageError("--anisotropic expects on or off, got '" + text + "'");
+            options.anisotropic = onOff();
         } else if (flag == "--voxel-irradiance") {
-            const std::string text = value("on or off");
-            if (text == "on")
-                options.voxelIrradiance = true;
-            else if (text == "off")
-                options.voxelIrradiance = false;
-            else
-                throw UsageError("--voxel-irradiance expects on or off, got '" + text + "'");
+            options.voxelIrradiance = onOff();
         } else if (flag == "--footprint") {
             const std::string text = value("a number");
             const auto x = parseFloat(text);
