@@ -33,6 +33,15 @@ out VoxelFragment {
 
 float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
 
+// Extra enlargement (pixels) beyond the half pixel, on the edges and the bounding box: a row or
+// column that a triangle only touches (its edge lies exactly on the face between two voxels, as
+// the Cornell box's block sides' top edges do at 64³) sits on the enlarged edge itself, and whether
+// the rasterizer covers it then depends on sub-pixel snapping. Without the margin such rows were
+// written or skipped by the grid's alignment (ceiling and back wall 1.03-1.14 of the reference over
+// grid offsets, 1.03-1.08 with it: docs/GI.md, "Rules for surfaces on voxel faces"). 10⁻³ pixel
+// is below llvmpipe's snapping (8 sub-pixel bits, 1/256 pixel) and changed nothing; 0.01 is above.
+const float kTouchMargin = 0.01;
+
 // Voxel-space point → (u, v, depth) of the projection along `axis`; voxelize.frag.glsl undoes it.
 vec3 swizzleForAxis(vec3 p, int axis) {
     if (axis == 0) return p.yzx;
@@ -60,13 +69,13 @@ void main() {
     float orientation = sign(area);
     for (int i = 0; i < 3; ++i) {
         edge[i] = cross(vec3(s[i].xy, 1.0), vec3(s[(i + 1) % 3].xy, 1.0)) * orientation;
-        // Move outwards by the pixel half-diagonal: (0.5, 0.5) · |edge normal|.
-        edge[i].z += 0.5 * (abs(edge[i].x) + abs(edge[i].y));
+        // Move outwards by the pixel half-diagonal, (0.5, 0.5) · |edge normal|, and the margin.
+        edge[i].z += (0.5 + kTouchMargin) * (abs(edge[i].x) + abs(edge[i].y));
     }
 
     vec2 lo = min(s[0].xy, min(s[1].xy, s[2].xy));
     vec2 hi = max(s[0].xy, max(s[1].xy, s[2].xy));
-    vec4 bounds = vec4(lo - 0.5, hi + 0.5);
+    vec4 bounds = vec4(lo - (0.5 + kTouchMargin), hi + (0.5 + kTouchMargin));
 
     for (int i = 0; i < 3; ++i) {
         // The enlarged vertex i is where the moved edges i-1 and i meet.

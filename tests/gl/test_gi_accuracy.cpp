@@ -452,6 +452,59 @@ TEST_F(CornellAccuracy, IndirectRegionsChangeLittleFrom64To128Voxels) {
     EXPECT_EQ(checked, 4) << "ceiling, back wall, shadowed floor by the green wall and by the red wall";
 }
 
+// Issue #11, the grid's alignment: the Cornell box's indirect light must not depend on where the
+// voxel faces fall. Two tiny planes outside the box (one under the floor, one over the ceiling,
+// where no light reaches) stretch the scene's bounds in y to 2.4 m, so a voxel is 4 cm (64³; the
+// box is 50 voxels tall, the block tops 15 and 30 voxels above the floor) and the floor lies
+// 2¼ voxels + (the lower plane's depth) above the grid's bottom (VoxelVolume::fitTo: two voxels of
+// padding, shifted ¼ voxel in y). 0.19 m under the floor puts the floor, both block tops (the block
+// sides' top edges) and the ceiling on voxel faces; 0.21 m puts them half a voxel off. Same voxel
+// size, same scene, only the alignment differs. With the edges on faces the conservative
+// rasterization wrote or skipped the rows the block sides only touch by sub-pixel snapping
+// (voxelize.geom.glsl kTouchMargin): in the benchmark at 64³, ceiling and back wall read 1.14 and
+// 1.09 of the reference on faces against 1.03-1.06 and 0.97-0.98 off them (8-12 % apart); with
+// the margin 1.03-1.08 and 0.98-0.99 over four offsets (at most 5 % apart). Measured here (96²,
+// on faces ÷ half a voxel off): with the margin ceiling 1.053, back wall 1.014; without it 1.131
+// and 1.137. Bar ±8 %: above the margin's spread (5 % in the benchmark, 5.3 % here) by a third,
+// so that another rasterizer's rounding does not trip it, and 5 points below the failure it
+// catches. The two floor regions are printed, not asserted (25-33 px; the floor by the green wall
+// reads 1.075 with the margin and 1.048 without, the nook 1.014 and 1.036: neither is the edges').
+// docs/GI.md, "(ninth session)".
+TEST_F(CornellAccuracy, IndirectRegionsDoNotDependOnTheGridAlignment) {
+    const Scene original = loadCornellBox();
+    const auto alignedAt = [&](float below) {
+        Scene scene = loadCornellBox();
+        const float span = 0.4f;  // the bounds grow from 2 m to 2.4 m in y: 60 → 50 voxels over the box
+        addMeshNode(scene, makePlaneMesh("grid marker below", 1e-3f, 0), {0.0f, -below, -0.99f});
+        addMeshNode(scene, makePlaneMesh("grid marker above", 1e-3f, 0), {0.0f, 2.0f + span - below, -0.99f});
+        scene.updateWorldTransforms();
+        std::vector<float> image = vctIndirect(scene, 64);
+        const VoxelVolume& volume = *renderer_->voxels();
+        const float floorInVoxels = (0.0f - volume.minCorner().y) / volume.voxelSize();
+        std::printf("grid alignment: voxel %.4f m, floor at %.3f voxels, block tops at %.3f and %.3f\n",
+                    volume.voxelSize(), floorInVoxels, floorInVoxels + 0.6f / volume.voxelSize(),
+                    floorInVoxels + 1.2f / volume.voxelSize());
+        return image;
+    };
+    const std::vector<float> onFaces = alignedAt(0.19f), offFaces = alignedAt(0.21f);
+    Log quiet;
+    quiet.setSink(nullptr);
+    const reference::ReferenceScene rs(original, quiet);
+    const CameraView camera = cameraFor(original, giSettings(64, View::Final, kSize));
+    const std::vector<reference::FirstHit> hits = reference::traceFirstHits(rs, camera, kSize, kSize);
+    int checked = 0;
+    for (const reference::NamedRegion& region : reference::cornellBoxRegions(original, hits, kSize, kSize)) {
+        if (region.pixels() < 10) continue;
+        const double a = lum(reference::maskedMean(onFaces, region.mask)), b = lum(reference::maskedMean(offFaces, region.mask));
+        std::printf("%s (%zu px): on faces %.4f, half a voxel off %.4f (%.3f)\n", region.name.c_str(), region.pixels(), a,
+                    b, a / b);
+        if (region.name != "ceiling" && region.name != "back wall above blocks") continue;
+        EXPECT_NEAR(a / b, 1.0, 0.08) << region.name << ": on voxel faces ÷ half a voxel off";
+        ++checked;
+    }
+    EXPECT_EQ(checked, 2) << "ceiling, back wall";
+}
+
 // Not met yet (run with --gtest_also_run_disabled_tests; a known gap in docs/GI.md). With the
 // fixed six-cone set: the red-wall nook at 0.25-0.33 of the reference, R/G there 5.3-5.5 (ref.
 // 2.64), G/R by the green wall 3.19 (ref. 2.46), the regions 13-16 % lower at 128³ than at 64³.
@@ -559,7 +612,13 @@ TEST_F(GiAccuracy, AccurateModeIsStableUnderTemporalAccumulation) {
 
 // A closed box whose six inner faces emit E and reflect albedo a, no lights. After b bounces the
 // volume holds E·(1 + a + … + a^(b−1)): each bounce's cones see a uniform field (the furnace),
-// so a bounce adds exactly a × the previous radiance.
+// so a bounce adds exactly a × the previous radiance. That holds for the voxels of the closed box,
+// so the means are over the voxels that overlap the box's inside, not over every opaque voxel:
+// the planes end on voxel faces in x (the grid is not shifted in x), and the conservative
+// rasterization covers the rows a triangle only touches, so each plane's edge row reaches one
+// voxel past the box's corners. Those voxels lie outside the box, their cones see the dark outside,
+// and they lowered the 3-bounce ratio by 1.7 % once the touched rows were always covered
+// (voxelize.geom.glsl kTouchMargin; docs/GI.md, "(ninth session)").
 TEST_F(GiAccuracy, BouncesAddUpInAClosedEmissiveBox) {
     Scene scene;
     const float albedo = 0.5f;
@@ -576,20 +635,44 @@ TEST_F(GiAccuracy, BouncesAddUpInAClosedEmissiveBox) {
         }
     scene.updateWorldTransforms();
     const CameraView camera = lookAt({0.0f, 0.0f, 0.5f}, {0.0f, 0.0f, -1.0f});
-    std::vector<float> means;
+    std::vector<float> means, opaqueMeans;  // the furnace's voxels; every opaque voxel (printed)
     for (const int bounces : {1, 2, 3}) {
         RenderSettings settings = giSettings(64, View::Final, 32);
         settings.bounces = bounces;
         renderFrom(scene, camera, settings);
         ASSERT_NE(renderer_->voxels(), nullptr);
-        const std::vector<glm::vec4> voxels = readRadianceVoxels(*renderer_->voxels(), 0);
-        double sum = 0.0;
-        int count = 0;
-        for (const glm::vec4& v : voxels)
-            if (v.a > 0.5f) sum += v.g, ++count;
+        const VoxelVolume& volume = *renderer_->voxels();
+        const std::vector<glm::vec4> voxels = readRadianceVoxels(volume, 0);
+        const int n = volume.resolution();
+        // The box [−half, half]³ in voxel coordinates (voxel i spans [i, i + 1)). A voxel belongs to
+        // the furnace when it overlaps the box's inside by more than a hair in every axis: one that
+        // only touches the box from outside (an edge row) does not, whichever way the face rounds.
+        const glm::vec3 lo = (glm::vec3(-half) - volume.minCorner()) / volume.voxelSize();
+        const glm::vec3 hi = (glm::vec3(half) - volume.minCorner()) / volume.voxelSize();
+        constexpr float kHair = 0.01f;  // voxels
+        double sum = 0.0, opaqueSum = 0.0;
+        int count = 0, outside = 0;
+        for (int z = 0; z < n; ++z)
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    const glm::vec4& v = voxels[static_cast<std::size_t>(x) +
+                                                static_cast<std::size_t>(n) * (y + static_cast<std::size_t>(n) * z)];
+                    if (v.a <= 0.5f) continue;
+                    opaqueSum += v.g;
+                    const glm::vec3 i(x, y, z);
+                    if (glm::all(glm::greaterThan(i + 1.0f, lo + kHair)) && glm::all(glm::lessThan(i, hi - kHair)))
+                        sum += v.g, ++count;
+                    else
+                        ++outside;
+                }
         means.push_back(float(sum / std::max(count, 1)));
+        opaqueMeans.push_back(float(opaqueSum / std::max(count + outside, 1)));
+        if (bounces == 1) std::printf("closed box: %d voxels inside, %d opaque voxels outside\n", count, outside);
     }
-    std::printf("closed box: mean voxel radiance after 1, 2, 3 bounces: %.4f %.4f %.4f\n", means[0], means[1], means[2]);
+    std::printf("closed box: mean voxel radiance after 1, 2, 3 bounces: %.4f %.4f %.4f (ratios %.4f, %.4f)\n", means[0],
+                means[1], means[2], means[1] / means[0], means[2] / means[0]);
+    std::printf("closed box, every opaque voxel: %.4f %.4f %.4f (ratios %.4f, %.4f)\n", opaqueMeans[0], opaqueMeans[1],
+                opaqueMeans[2], opaqueMeans[1] / opaqueMeans[0], opaqueMeans[2] / opaqueMeans[0]);
     ASSERT_GT(means[0], 0.5f);
     // 3 %: the 8-bit albedo (0.502) and the cones' 5 % stop opacity, which the tracer renormalizes.
     EXPECT_NEAR(means[1] / means[0], 1.0f + albedo, 0.03f * (1.0f + albedo));
