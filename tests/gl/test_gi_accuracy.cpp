@@ -455,11 +455,12 @@ TEST_F(CornellAccuracy, IndirectRegionsChangeLittleFrom64To128Voxels) {
 // Issue #11, the grid's alignment: the Cornell box's indirect light must not depend on where the
 // voxel faces fall. Two tiny planes outside the box (one under the floor, one over the ceiling,
 // where no light reaches) stretch the scene's bounds in y to 2.4 m, so a voxel is 4 cm (64³; the
-// box is 50 voxels tall, the block tops 15 and 30 voxels above the floor) and the floor lies
-// 2¼ voxels + (the lower plane's depth) above the grid's bottom (VoxelVolume::fitTo: two voxels of
-// padding, shifted ¼ voxel in y). 0.19 m under the floor puts the floor, both block tops (the block
-// sides' top edges) and the ceiling on voxel faces; 0.21 m puts them half a voxel off. Same voxel
-// size, same scene, only the alignment differs. With the edges on faces the conservative
+// box is 50 voxels tall, the block tops 15 and 30 voxels above the floor). Moving both planes
+// down together moves the grid against the box and keeps the voxel size: with today's fitTo
+// (2¼ voxels below the bounds) 0.19 m under the floor puts the floor, both block tops (the block
+// sides' top edges) and the ceiling on voxel faces, 0.21 m half a voxel off them; the depths are
+// found from the grid's placement, so the test holds if fitTo's padding or shift changes. Same
+// voxel size, same scene, only the alignment differs. With the edges on faces the conservative
 // rasterization wrote or skipped the rows the block sides only touch by sub-pixel snapping
 // (voxelize.geom.glsl kTouchMargin): in the benchmark at 64³, ceiling and back wall read 1.14 and
 // 1.09 of the reference on faces against 1.03-1.06 and 0.97-0.98 off them (8-12 % apart); with
@@ -468,25 +469,39 @@ TEST_F(CornellAccuracy, IndirectRegionsChangeLittleFrom64To128Voxels) {
 // and 1.137. Bar ±8 %: above the margin's spread (5 % in the benchmark, 5.3 % here) by a third,
 // so that another rasterizer's rounding does not trip it, and 5 points below the failure it
 // catches. The two floor regions are printed, not asserted (25-33 px; the floor by the green wall
-// reads 1.075 with the margin and 1.048 without, the nook 1.014 and 1.036: neither is the edges').
+// reads 1.07 with the margin and 1.01 without, the nook 1.014 and 1.036: neither is the edges').
 // docs/GI.md, "(ninth session)".
 TEST_F(CornellAccuracy, IndirectRegionsDoNotDependOnTheGridAlignment) {
     const Scene original = loadCornellBox();
-    const auto alignedAt = [&](float below) {
+    const float span = 0.4f;  // the bounds grow from 2 m to 2.4 m in y: 60 → 50 voxels over the box
+    const auto withMarkers = [&](float below) {
         Scene scene = loadCornellBox();
-        const float span = 0.4f;  // the bounds grow from 2 m to 2.4 m in y: 60 → 50 voxels over the box
         addMeshNode(scene, makePlaneMesh("grid marker below", 1e-3f, 0), {0.0f, -below, -0.99f});
         addMeshNode(scene, makePlaneMesh("grid marker above", 1e-3f, 0), {0.0f, 2.0f + span - below, -0.99f});
         scene.updateWorldTransforms();
-        std::vector<float> image = vctIndirect(scene, 64);
+        return scene;
+    };
+    // Where the floor falls with the markers 0.2 m under it: the depths below move it by whole
+    // metres ÷ voxel size from there (the voxel size does not change), whatever fitTo's padding and shift.
+    VoxelVolume probe;
+    probe.ensure(64, false, log_);
+    ASSERT_EQ(probe.resolution(), 64);
+    probe.fitTo(withMarkers(0.2f).worldBounds());
+    const float voxel = probe.voxelSize(), floorAt = -probe.minCorner().y / voxel;
+    const float fraction = floorAt - std::floor(floorAt);
+    const auto renderAt = [&](float below, float expectedFraction) {
+        std::vector<float> image = vctIndirect(withMarkers(below), 64);
         const VoxelVolume& volume = *renderer_->voxels();
-        const float floorInVoxels = (0.0f - volume.minCorner().y) / volume.voxelSize();
+        const float floorInVoxels = -volume.minCorner().y / volume.voxelSize();
         std::printf("grid alignment: voxel %.4f m, floor at %.3f voxels, block tops at %.3f and %.3f\n",
                     volume.voxelSize(), floorInVoxels, floorInVoxels + 0.6f / volume.voxelSize(),
                     floorInVoxels + 1.2f / volume.voxelSize());
+        const float off = floorInVoxels - std::round(floorInVoxels - expectedFraction);
+        EXPECT_NEAR(off, expectedFraction, 1e-3f) << "the floor's place in its voxel";
         return image;
     };
-    const std::vector<float> onFaces = alignedAt(0.19f), offFaces = alignedAt(0.21f);
+    const std::vector<float> onFaces = renderAt(0.2f - fraction * voxel, 0.0f),
+                             offFaces = renderAt(0.2f + (0.5f - fraction) * voxel, 0.5f);
     Log quiet;
     quiet.setSink(nullptr);
     const reference::ReferenceScene rs(original, quiet);
