@@ -130,8 +130,10 @@ bool VoxelVolume::fitTo(const Aabb& sceneBounds) {
     // accurate mode read the ceiling and the back wall 8-11 % brighter than at 128³ (VCT ÷
     // reference, 64³ → 128³: ceiling 1.14 → 1.00, back wall 1.09 → 0.91; shifted 1.06 → 0.99,
     // 0.98 → 0.91). A workaround: surfaces ¾ voxel off a face in y or z, or on one in x, meet it
-    // again (docs/GI.md, "Rules for surfaces on voxel faces that do not depend on the grid's
-    // alignment": widening the conservative rasterization fixes it at every offset, not landed). A quarter, not a half: a half puts
+    // again. voxelize.geom.glsl's kTouchMargin now covers the rows an edge only touches, which
+    // removes most of that (shift 0: ceiling 1.08, back wall 0.99), but the shift stays: without it
+    // the nook reads 0.89 at 64³ (0.95 with it), and with every axis on faces the margin's extra
+    // rows darken the ceiling instead (docs/GI.md, "(ninth session)"). A quarter, not a half: a half puts
     // surfaces at half-voxel distances from the bounds on voxel faces instead (the benchmark's
     // sealed room at 128³ leaked 1.37 % of the outside light with ½, 0.48 % with ¼). x is not
     // shifted, so that the grid stays mirror-symmetric about the scene's centre in x, the axis the
