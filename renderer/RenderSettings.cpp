@@ -101,6 +101,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("anisotropicVoxels", s.anisotropicVoxels);
     visit("coneFootprintPerHeight", s.coneFootprintPerHeight);
     visit("diffuseFromVoxelIrradiance", s.diffuseFromVoxelIrradiance);
+    visit("voxelIrradianceVoxelsPerFrame", s.voxelIrradianceVoxelsPerFrame);
     visit("bounces", s.bounces);
     visit("voxelSlice", s.voxelSlice);
     visit("voxelSliceAxis", s.voxelSliceAxis);

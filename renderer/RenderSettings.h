@@ -141,6 +141,12 @@ struct RenderSettings {
     // once (bounce.comp.glsl, LIT_BOUNCE_IRRADIANCE) and stores its irradiance/π per side; the
     // per-pixel L_ID gathers it from the voxels around the surface point instead of tracing cones.
     bool diffuseFromVoxelIrradiance = false;
+    // With it: occupied voxels whose irradiance is traced per frame after an edit, round robin (0 =
+    // all in the edit's frame). A light edit then takes ⌈occupied / this⌉ frames, each tracing this
+    // many voxels (96 316 at 128³ in the Cornell box, 20-90 µs each on llvmpipe by its load), and
+    // the others keep the old light until their turn; after a voxelization untraced voxels are left
+    // out of the gather. Stills rendered in one frame need 0 (docs/PERFORMANCE.md, ninth session).
+    int voxelIrradianceVoxelsPerFrame = 0;
     float coneFootprintPerHeight = 0.0f;  // × height above the surface (0 = off; accurate: kAccurateGiFootprint)
     // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
     // occupied voxel, 2-20 s per light or geometry edit on llvmpipe (docs/GI.md, "Bounces").

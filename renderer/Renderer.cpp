@@ -191,6 +191,11 @@ struct Renderer::Impl {
     int injectedBounces = 0;
     int pendingBounces = 1;  // bounces of the GI update waiting to be logged
     bool injectedIrradiance = false;  // the voxel irradiance volumes hold this light (diffuseFromVoxelIrradiance)
+    // The voxel irradiance update under way (voxelIrradianceVoxelsPerFrame > 0), round robin over
+    // the occupied-voxel list: the next entry to trace, and how many entries are still to be traced
+    // since the last edit (0: every voxel holds the current light).
+    std::uint32_t irradianceNext = 0;
+    std::uint32_t irradianceRemaining = 0;
     bool injectedAnisotropic = true;
     float injectedFootprint = 0.0f, injectedAperture = 0.0f, injectedStepScale = 0.0f, injectedTraceDistance = 0.0f,
           injectedIntensity = 0.0f;
@@ -294,8 +299,13 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             }
         }
         if (settings.diffuseFromVoxelIrradiance) {
-            Profiler::Scope scope(profiler, "voxel irradiance");
-            inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete);
+            // A new edit asks for the whole list again, from where the update stands (a new list
+            // after a voxelization: from its start), so that a light dragged over many frames keeps
+            // refreshing every voxel in turn, and once the update has gone round the list every
+            // voxel was traced after the last edit (no trace of the old light).
+            inject.prepareIrradiance(voxels, voxelDirty);
+            if (voxelDirty || irradianceNext >= occupiedCount) irradianceNext = 0;
+            irradianceRemaining = std::max(occupiedCount, 1u);
         }
         injectedIrradiance = settings.diffuseFromVoxelIrradiance;
         injectedBounces = bounces;
@@ -312,6 +322,30 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         pendingVoxelize = voxelDirty;
         resolve.resetHistory();  // the scene's light changed: accumulated indirect light is stale
     }
+    // The voxel irradiance (diffuseFromVoxelIrradiance): all of the list in the edit's frame, or
+    // voxelIrradianceVoxelsPerFrame entries per frame, wrapping round the list, until every entry
+    // has been traced since the last edit. An overflowed list (whole-grid dispatch) is done at once.
+    if (settings.diffuseFromVoxelIrradiance && irradianceRemaining > 0) {
+        Profiler::Scope scope(profiler, "voxel irradiance");
+        const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+        if (perFrame == 0 || perFrame >= occupiedCount || !occupiedListComplete) {
+            inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete);
+            irradianceRemaining = 0;
+        } else {
+            std::uint32_t budget = std::min(perFrame, irradianceRemaining);
+            irradianceRemaining -= budget;
+            while (budget > 0) {  // at most twice: up to the list's end, then from its start
+                const std::uint32_t count = std::min(budget, occupiedCount - irradianceNext);
+                inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceNext, count);
+                irradianceNext = (irradianceNext + count) % occupiedCount;
+                budget -= count;
+            }
+            // The accumulated indirect light holds the frames of the update (old light in the
+            // voxels not reached yet): the first frame after it starts the history afresh.
+            if (irradianceRemaining == 0) resolve.resetHistory();
+        }
+    }
+
     stats.voxelized = voxelDirty;
     stats.injected = injectDirty;
     stats.occupiedVoxels = occupiedCount;

@@ -52,6 +52,17 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNor
 #if LIT_BOUNCE_IRRADIANCE
 layout(binding = LIT_IMG_VOXEL_DIRECT, rgba16f) uniform writeonly image3D voxelIrradiancePosOut;
 layout(binding = LIT_IMG_VOXEL_BOUNCE, rgba16f) uniform writeonly image3D voxelIrradianceNegOut;
+// The amortised update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces the list entries
+// [uListFirst, uListEnd) in one dispatch (glDispatchCompute sized for them); everything at once is
+// uListFirst 0 and uListEnd the capacity, as the indirect dispatch of the whole list.
+uniform uint uListFirst;
+uniform uint uListEnd;
+bool listedVoxelInRange(out ivec3 v) {
+    uint index = uListFirst + gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex;
+    if (index >= min(min(occupiedCount, uOccupiedCapacity), uListEnd)) return false;
+    v = unpackVoxelCoord(occupiedVoxels[index]);
+    return true;
+}
 #else
 layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform readonly image3D voxelDirect;
 layout(binding = LIT_IMG_VOXEL_BOUNCE) uniform writeonly image3D voxelBounce;
@@ -77,7 +88,11 @@ vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float m
 void main() {
     ivec3 v;
     if (uFromList != 0) {
+#if LIT_BOUNCE_IRRADIANCE
+        if (!listedVoxelInRange(v)) return;
+#else
         if (!listedVoxel(v)) return;
+#endif
     } else {
         v = ivec3(gl_GlobalInvocationID);
     }
@@ -85,7 +100,7 @@ void main() {
     if (any(greaterThanEqual(v, ivec3(n)))) return;
     vec4 albedo = unpackVoxel(imageLoad(voxelAlbedo, v).r);
 #if LIT_BOUNCE_IRRADIANCE
-    if (albedo.a == 0.0) return;  // empty: the volumes were cleared
+    if (albedo.a == 0.0) return;  // empty: the gather skips it (voxel_irradiance.glsl)
 #else
     vec4 direct = imageLoad(voxelDirect, v);
     if (albedo.a == 0.0 || direct.a == 0.0) {

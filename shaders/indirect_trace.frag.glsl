@@ -93,10 +93,19 @@ void main() {
     bool reuse = specular && diffuseSurface &&
                  specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
 #if LIT_VOXEL_IRRADIANCE
-    reuse = false;  // no diffuse cones to reuse: the specular lobe traces its own
+    // No diffuse cones to reuse: a lobe wide enough to have reused them (a rough lobe on a diffuse
+    // surface) takes the gathered irradiance/π, the cosine-weighted mean radiance over the
+    // hemisphere, in their place; it loses the lobe's direction, which the six cones' weighting
+    // kept. Measured (docs/GI.md, ninth session): Cornell regions +2-5 %, the frame 0.70-0.76× of
+    // tracing the lobes. Narrower lobes trace their own cones.
+    bool lobeFromIrradiance = reuse;
+    reuse = false;
 #endif
     vec3 cones[kDiffuseConeCount];
     bool diffuseWanted = (uTraceTerms.x != 0 || reuse) && diffuseSurface;
+#if LIT_VOXEL_IRRADIANCE
+    vec3 gathered = diffuseWanted || (specular && lobeFromIrradiance) ? gatherVoxelIrradiance(s.position, n) : vec3(0.0);
+#endif
 #if LIT_CONE_SUBSETS
     {
         int a = firstSideCone(ivec2(gl_FragCoord.xy), uConeSubset), b = secondSideCone(a);
@@ -136,7 +145,7 @@ void main() {
 #else
     if (diffuseWanted)
 #if LIT_VOXEL_IRRADIANCE
-        outDiffuse = vec4(gatherVoxelIrradiance(s.position, n), 1.0);
+        outDiffuse = vec4(gathered, 1.0);
 #elif LIT_CONE_FOOTPRINT
         // Bounded cones: this texel's stratified set (cone_strata.glsl; ConeStrataFilterPass averages the sets).
         outDiffuse = vec4(traceDiffuseStratified(origin, basis, coneSetIndex(ivec2(gl_FragCoord.xy)), voxel.traceParams.w,
@@ -145,8 +154,14 @@ void main() {
         outDiffuse = vec4(traceDiffuseInFrame(origin, basis, voxel.traceParams.w, maxDistance, cones), 1.0);
 #endif
     if (specular) {
+#if LIT_VOXEL_IRRADIANCE
+        vec3 lobe = lobeFromIrradiance ? gathered
+                                       : traceSpecularLobe(origin, n, basis, v, s.roughness, count, vec2(pixel),
+                                                           voxel.traceOptions.y, maxDistance, false, cones);
+#else
         vec3 lobe = traceSpecularLobe(origin, n, basis, v, s.roughness, count, vec2(pixel), voxel.traceOptions.y,
                                       maxDistance, reuse, cones);
+#endif
         outSpecular = vec4(lobe, 1.0 + s.roughness);
     }
 #endif

@@ -83,7 +83,7 @@ void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features,
                        0, n, n, n);
 }
 
-void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList) {
+void InjectPass::prepareIrradiance(const VoxelVolume& volume, bool clear) {
     const int n = volume.resolution();
     if (n <= 0) return;
     if (irradianceResolution_ != n) {
@@ -92,19 +92,38 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
         // Read with texelFetch only; nearest keeps the one-level volumes complete for any sampler state.
         for (const gl::Texture* t : {&irradiancePos_, &irradianceNeg_}) t->setFilter(GL_NEAREST, GL_NEAREST);
         irradianceResolution_ = n;
+        clear = true;  // new storage holds anything
     }
-    if (irradianceProgram_.empty())
-        irradianceProgram_ = ConeProgram(shaderRoot_, "voxel irradiance", {{GL_COMPUTE_SHADER, "bounce.comp.glsl"}},
-                                         "#define LIT_BOUNCE_RGBA8 0\n#define LIT_BOUNCE_IRRADIANCE 1\n", features);
+    if (!clear) return;
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearTexImage(irradiancePos_.id(), 0, GL_RGBA, GL_FLOAT, zero);
     glClearTexImage(irradianceNeg_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+}
+
+void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
+                                   std::uint32_t count) {
+    if (volume.resolution() <= 0 || irradianceResolution_ != volume.resolution()) return;  // prepareIrradiance first
+    if (irradianceProgram_.empty())
+        irradianceProgram_ = ConeProgram(shaderRoot_, "voxel irradiance", {{GL_COMPUTE_SHADER, "bounce.comp.glsl"}},
+                                         "#define LIT_BOUNCE_RGBA8 0\n#define LIT_BOUNCE_IRRADIANCE 1\n", features);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     const gl::Program& program = irradianceProgram_.get(features);
     useWithVoxelSurfaces(program, volume, features);
     glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiancePos_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, irradianceNeg_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    dispatchOverVoxels(volume, program, fromList);
+    const bool range = fromList && count > 0 && volume.occupiedList();
+    glProgramUniform1ui(program.id(), program.location("uListFirst"), range ? first : 0u);
+    glProgramUniform1ui(program.id(), program.location("uListEnd"), range ? first + count : volume.occupiedCapacity());
+    if (range) {
+        // A direct dispatch sized for the range (the list's indirect command covers all of it).
+        glProgramUniform1i(program.id(), program.location("uFromList"), 1);
+        glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
+        glDispatchCompute((count + LIT_INJECT_LIST_GROUP_SIZE - 1) / LIT_INJECT_LIST_GROUP_SIZE, 1, 1);
+    } else {
+        dispatchOverVoxels(volume, program, fromList);
+    }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <vector>
 
 namespace lit {
@@ -41,11 +42,19 @@ public:
     void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList = true);
 
     // Experiment (RenderSettings::diffuseFromVoxelIrradiance): after execute() and a full mip
-    // build, every occupied voxel traces diffuse cones once (bounce.comp.glsl with
-    // LIT_BOUNCE_IRRADIANCE) and its irradiance/π per side goes to two RGBA16F volumes that
-    // bindIrradiance() binds for the per-pixel gather (voxel_irradiance.glsl). The radiance
-    // volume is left as it is.
-    void executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList = true);
+    // build, occupied voxels trace diffuse cones (bounce.comp.glsl with LIT_BOUNCE_IRRADIANCE) and
+    // their irradiance/π per side goes to two RGBA16F volumes (alpha 1 where traced) that
+    // bindIrradiance() binds for the per-pixel gather (voxel_irradiance.glsl). The radiance volume
+    // is left as it is.
+    // prepareIrradiance makes the volumes for the volume's resolution; `clear` (after a
+    // voxelization: old values sit at old geometry) marks every voxel not traced (alpha 0, which
+    // the gather skips). A light edit keeps the old values until they are traced again.
+    void prepareIrradiance(const VoxelVolume& volume, bool clear);
+    // Traces the occupied-voxel list's entries [first, first + count) (RenderSettings::
+    // voxelIrradianceVoxelsPerFrame: a light edit's voxels spread over frames); `count` 0 = the
+    // whole list. `fromList` false (the list overflowed): the whole N³ grid, first/count ignored.
+    void executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first = 0,
+                           std::uint32_t count = 0);
     // Binds the two irradiance volumes and the voxel normals (LIT_TEX_VOXEL_IRRADIANCE_POS/NEG,
     // LIT_TEX_VOXEL_NORMAL) for the cone passes.
     void bindIrradiance(const VoxelVolume& volume) const;

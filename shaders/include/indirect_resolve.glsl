@@ -167,14 +167,19 @@ void main() {
         int count = clamp(voxel.traceOptions.x, 1, 8);
         bool reuse = traceSpecularHere && diffuseSurface &&
                      specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
-#if LIT_VOXEL_IRRADIANCE
-        reuse = false;
-#endif
         vec3 cones[kDiffuseConeCount];
-        if (traceDiffuseHere || reuse) {
 #if LIT_VOXEL_IRRADIANCE
-            vec3 traced = gatherVoxelIrradiance(s.position, n);
-#elif LIT_CONE_FOOTPRINT
+        // As indirect_trace.frag.glsl: a lobe wide enough to reuse diffuse cones takes the gathered
+        // irradiance instead.
+        vec3 gathered = traceDiffuseHere || (traceSpecularHere && reuse) ? gatherVoxelIrradiance(s.position, n) : vec3(0.0);
+        if (traceDiffuseHere) diffuse = gathered;
+        if (traceSpecularHere)
+            specular = reuse ? gathered
+                             : traceSpecularLobe(origin, n, basis, v, s.roughness, count, gl_FragCoord.xy,
+                                                 voxel.traceOptions.y, maxDistance, false, cones);
+#else
+        if (traceDiffuseHere || reuse) {
+#if LIT_CONE_FOOTPRINT
             // The stratified set of the low-resolution texel this pixel falls in (cone_strata.glsl).
             vec3 traced = traceDiffuseStratified(origin, basis, coneSetIndex((pixel - uJitter) / uScale),
                                                  voxel.traceParams.w, maxDistance, cones);
@@ -186,7 +191,8 @@ void main() {
         if (traceSpecularHere)
             specular = traceSpecularLobe(origin, n, basis, v, s.roughness, count, gl_FragCoord.xy, voxel.traceOptions.y,
                                          maxDistance, reuse, cones);
-#endif
+#endif  // LIT_VOXEL_IRRADIANCE
+#endif  // LIT_INDIRECT_FALLBACK
     }
 
     // ---- Temporal accumulation.

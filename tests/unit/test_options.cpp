@@ -352,6 +352,18 @@ TEST(Options, FastGiFlags) {
               "--bench-gi-updates needs --bench (the steady frames come first)");
 }
 
+TEST(Options, VoxelIrradianceFlags) {
+    const lit::RenderSettings s = lit::cli::applyOptions(
+        parseOptions({"x.gltf", "--out", "a.png", "--voxel-irradiance", "on", "--voxel-irradiance-per-frame", "20000"}),
+        lit::RenderSettings{});
+    EXPECT_TRUE(s.diffuseFromVoxelIrradiance);
+    EXPECT_EQ(s.voxelIrradianceVoxelsPerFrame, 20000);
+    EXPECT_EQ(lit::RenderSettings{}.voxelIrradianceVoxelsPerFrame, 0);  // all at once: stills stay right
+    EXPECT_EQ(lit::renderSettingsFromJson(lit::toJson(s)), s);          // saved and read back
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--voxel-irradiance-per-frame", "-1"}),
+              "--voxel-irradiance-per-frame expects a voxel count from 0, got '-1'");
+}
+
 TEST(Options, GiModePresetAndTheFlagsThatOverrideIt) {
     using lit::GiMode;
     const lit::RenderSettings defaults;

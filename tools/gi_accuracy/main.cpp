@@ -5,9 +5,12 @@
 //
 //   lit-gi-accuracy [--voxels 64,128,256] [--spp 256] [--size 128] [--scenes a,b,...]
 //                   [--shared DIR] [--out FILE.md] [--bounces N] [--settings FILE.json] [--cone-split]
+//                   [--frames N]
 // --bounces N: light bounces of both the VCT (RenderSettings::bounces) and the reference (default 1);
 // --settings: RenderSettings JSON the VCT starts from (size, view, GI switch, resolution and
 // bounces are set by the tool), to compare GI variants (e.g. anisotropicVoxels off).
+// --frames N: render each VCT view N times and measure the last (default 1), for settings with
+// temporalAccumulation (the still camera's history then averages the jitter and the cone sets).
 // --cone-split: also a table of the indirect diffuse of each Cornell region split by the six
 // diffuse cones' regions of the hemisphere (see coneSplit below), the truth's and the VCT's.
 // cornell_room, cornell_mirrored and cornell_swapped (assets/gi, the Cornell box rebuilt, mirrored
@@ -85,6 +88,7 @@ struct Args {
     int bounces = 1;
     RenderSettings vct;  // what the VCT runs start from (--settings)
     bool coneSplit = false;
+    int frames = 1;  // renders per VCT view (--frames), the last one measured
 };
 
 std::string readTextFile(const fs::path& path) {
@@ -134,6 +138,9 @@ Args parseArgs(int argc, char** argv) {
         } else if (flag == "--bounces") {
             args.bounces = std::stoi(value);
             if (args.bounces < 1 || args.bounces > kMaxBounces) throw std::invalid_argument("--bounces: 1.." + std::to_string(kMaxBounces));
+        } else if (flag == "--frames") {
+            args.frames = std::stoi(value);
+            if (args.frames < 1 || args.frames > 1000) throw std::invalid_argument("--frames: 1..1000");
         } else if (flag == "--settings") {
             args.vct = renderSettingsFromJson(readTextFile(value));
         } else {
@@ -372,7 +379,7 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
         const auto frame = [&](View view) {
             settings.view = view;
             const Clock::time_point start = Clock::now();
-            renderer.render(scene, camera, settings);
+            for (int f = 0; f < args.frames; ++f) renderer.render(scene, camera, settings);
             glFinish();
             const double seconds = secondsSince(start);
             return std::pair{renderer.readHdrRgb(), seconds};

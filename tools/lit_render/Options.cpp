@@ -194,6 +194,11 @@ Options parseOptions(const std::vector<std::string>& args) {
             options.anisotropic = onOff();
         } else if (flag == "--voxel-irradiance") {
             options.voxelIrradiance = onOff();
+        } else if (flag == "--voxel-irradiance-per-frame") {
+            const std::string text = value("a voxel count");
+            const auto n = parseInt(text, 0, 1 << 30);
+            if (!n) throw UsageError("--voxel-irradiance-per-frame expects a voxel count from 0, got '" + text + "'");
+            options.voxelIrradiancePerFrame = *n;
         } else if (flag == "--footprint") {
             const std::string text = value("a number");
             const auto x = parseFloat(text);
@@ -334,6 +339,7 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.giMode) setGiMode(base, *options.giMode);
     if (options.anisotropic) base.anisotropicVoxels = *options.anisotropic;
     if (options.voxelIrradiance) base.diffuseFromVoxelIrradiance = *options.voxelIrradiance;
+    if (options.voxelIrradiancePerFrame) base.voxelIrradianceVoxelsPerFrame = *options.voxelIrradiancePerFrame;
     if (options.footprint) base.coneFootprintPerHeight = *options.footprint;
     if (options.culling) base.frustumCulling = *options.culling;
     if (options.indirectScale) base.indirectScale = *options.indirectScale;
@@ -418,6 +424,9 @@ std::string usageText() {
            std::string(defaults.anisotropicVoxels ? "on" : "off") + ")\n"
            "  --voxel-irradiance on|off  experiment (docs/GI.md, eighth session): indirect diffuse gathered from\n"
            "                       irradiance cached in the voxels instead of per-pixel cones (default off)\n"
+           "  --voxel-irradiance-per-frame N  with it: voxels whose irradiance is traced per frame after an\n"
+           "                       edit, the rest keep the old light until their turn (default " +
+           std::to_string(defaults.voxelIrradianceVoxelsPerFrame) + " = all at once)\n"
            "  --footprint X        largest voxel a cone leaving a surface samples, × its height above the\n"
            "                       surface (default " + formatNumber(defaults.coneFootprintPerHeight) + "; 0 = unbounded)\n"
            "  --frames N           frames rendered before the image is read (default 1)\n"
