@@ -263,6 +263,14 @@ protected:
         return sum;
     }
     static double lum(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+    // The Cornell box's named regions in the fixture's view of `scene` (traced first hits).
+    std::vector<reference::NamedRegion> regionsOf(const Scene& scene) {
+        Log quiet;
+        quiet.setSink(nullptr);
+        const reference::ReferenceScene rs(scene, quiet);
+        const CameraView camera = cameraFor(scene, giSettings(64, View::Final, kSize));
+        return reference::cornellBoxRegions(scene, reference::traceFirstHits(rs, camera, kSize, kSize), kSize, kSize);
+    }
 
     // Renders L_ID of the Cornell box and of its mirror image in x (assets/gi/cornell_mirrored.gltf)
     // with `settings`, expects every region's mean within ±20 % of its mirror image's, and returns
@@ -438,13 +446,8 @@ TEST_F(CornellAccuracy, FinalImageErrorIsLessThanHalfOfGiOff) {
 TEST_F(CornellAccuracy, IndirectRegionsChangeLittleFrom64To128Voxels) {
     const Scene scene = loadCornellBox();
     const std::vector<float> low = vctIndirect(scene, 64), high = vctIndirect(scene, 128);
-    Log quiet;
-    quiet.setSink(nullptr);
-    const reference::ReferenceScene rs(scene, quiet);
-    const CameraView camera = cameraFor(scene, giSettings(64, View::Final, kSize));
-    const std::vector<reference::FirstHit> hits = reference::traceFirstHits(rs, camera, kSize, kSize);
     int checked = 0;
-    for (const reference::NamedRegion& region : reference::cornellBoxRegions(scene, hits, kSize, kSize)) {
+    for (const reference::NamedRegion& region : regionsOf(scene)) {
         if (region.pixels() < 10) continue;
         const double a = lum(reference::maskedMean(low, region.mask)), b = lum(reference::maskedMean(high, region.mask));
         std::printf("%s (%zu px): 64³ %.4f, 128³ %.4f (%.3f)\n", region.name.c_str(), region.pixels(), a, b, b / a);
@@ -505,13 +508,8 @@ TEST_F(CornellAccuracy, IndirectRegionsDoNotDependOnTheGridAlignment) {
     };
     const std::vector<float> onFaces = renderAt(0.2f - fraction * voxel, 0.0f),
                              offFaces = renderAt(0.2f + (0.5f - fraction) * voxel, 0.5f);
-    Log quiet;
-    quiet.setSink(nullptr);
-    const reference::ReferenceScene rs(original, quiet);
-    const CameraView camera = cameraFor(original, giSettings(64, View::Final, kSize));
-    const std::vector<reference::FirstHit> hits = reference::traceFirstHits(rs, camera, kSize, kSize);
     int checked = 0;
-    for (const reference::NamedRegion& region : reference::cornellBoxRegions(original, hits, kSize, kSize)) {
+    for (const reference::NamedRegion& region : regionsOf(original)) {
         if (region.pixels() < 10) continue;
         const double a = lum(reference::maskedMean(onFaces, region.mask)), b = lum(reference::maskedMean(offFaces, region.mask));
         std::printf("%s (%zu px): on faces %.4f, half a voxel off %.4f (%.3f)\n", region.name.c_str(), region.pixels(), a,
