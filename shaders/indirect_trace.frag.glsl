@@ -102,6 +102,11 @@ void main() {
     reuse = false;
 #endif
     vec3 cones[kDiffuseConeCount];
+#if LIT_VOXEL_IRRADIANCE
+    // Never read (reuse is false here), but passed to traceSpecularLobe: defined, so the shader
+    // compiler has no uninitialized use to warn about in the editor's log.
+    for (int i = 0; i < kDiffuseConeCount; ++i) cones[i] = vec3(0.0);
+#endif
     bool diffuseWanted = (uTraceTerms.x != 0 || reuse) && diffuseSurface;
 #if LIT_VOXEL_IRRADIANCE
     vec3 gathered = diffuseWanted || (specular && lobeFromIrradiance) ? gatherVoxelIrradiance(s.position, n) : vec3(0.0);

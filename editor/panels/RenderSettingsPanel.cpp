@@ -201,6 +201,13 @@ bool drawGlobalIllumination(RenderSettings& s) {
             "geometry edit with the accurate mode's cone sets) instead of cones per pixel: ~10-30x\n"
             "cheaper per frame, seconds per light edit on llvmpipe; colour bleeding overshoots\n"
             "(docs/GI.md, \"Irradiance cached in the voxels\")");
+    if (s.diffuseFromVoxelIrradiance) {
+        changed |= ImGui::DragInt("Irradiance voxels / frame", &s.voxelIrradianceVoxelsPerFrame, 256.0f, 0, 1 << 24,
+                                  s.voxelIrradianceVoxelsPerFrame == 0 ? "all at once" : "%d voxels");
+        tooltip("Occupied voxels whose irradiance is re-traced per frame after an edit (count; 0 = all in\n"
+                "the edit's frame). A light edit then takes occupied / this frames, each costing a share of\n"
+                "the pass (~20 us per voxel on llvmpipe); voxels not reached yet keep the old light");
+    }
     changed |= comboInt("Indirect scale", s.indirectScale, std::array{1, 2, 4});
     tooltip("Trace indirect light for one pixel in N x N and upsample edge-aware (1 = every pixel)");
     changed |= ImGui::SliderFloat("Full-res specular below", &s.specularFullResRoughness, 0.0f, 1.0f, "roughness %.2f");

@@ -169,6 +169,7 @@ void main() {
                      specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
         vec3 cones[kDiffuseConeCount];
 #if LIT_VOXEL_IRRADIANCE
+        for (int i = 0; i < kDiffuseConeCount; ++i) cones[i] = vec3(0.0);  // never read (as in indirect_trace)
         // As indirect_trace.frag.glsl: a lobe wide enough to reuse diffuse cones takes the gathered
         // irradiance instead.
         vec3 gathered = traceDiffuseHere || (traceSpecularHere && reuse) ? gatherVoxelIrradiance(s.position, n) : vec3(0.0);
