@@ -12,11 +12,11 @@ std::string applySetting(RenderSettings& settings, std::string_view key, std::st
     const std::string name(key);
     if (name == "width" || name == "height")
         return "setting " + name + ": the editor sizes its render from the window (use --size WxH)";
-    // The GI preset is not a field of its own: it names values of anisotropicVoxels and
-    // coneFootprintPerHeight (RenderSettings.h, GiMode).
+    // The GI preset is not a field of its own: it names values of anisotropicVoxels,
+    // coneFootprintPerHeight and diffuseFromVoxelIrradiance (RenderSettings.h, GiMode).
     if (name == "giMode") {
         const std::optional<GiMode> mode = parseGiMode(value);
-        if (!mode) return "setting giMode: expected fast or accurate (got '" + std::string(value) + "')";
+        if (!mode) return "setting giMode: expected fast, accurate or cached (got '" + std::string(value) + "')";
         setGiMode(settings, *mode);
         return "";
     }

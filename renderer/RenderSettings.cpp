@@ -43,9 +43,10 @@ constexpr std::array<std::pair<SkyMode, std::string_view>, 5> kSkyModeNames{{
 }};
 
 // Custom is written but not parsed: it names "neither preset", not settings one could ask for.
-constexpr std::array<std::pair<GiMode, std::string_view>, 3> kGiModeNames{{
+constexpr std::array<std::pair<GiMode, std::string_view>, 4> kGiModeNames{{
     {GiMode::Fast, "fast"},
     {GiMode::Accurate, "accurate"},
+    {GiMode::Cached, "cached"},
     {GiMode::Custom, "custom"},
 }};
 
@@ -166,15 +167,19 @@ std::optional<GiMode> parseGiMode(std::string_view text) {
 }
 
 GiMode giModeOf(const RenderSettings& settings) {
-    if (!settings.anisotropicVoxels && settings.coneFootprintPerHeight == 0.0f) return GiMode::Fast;
-    if (settings.anisotropicVoxels && settings.coneFootprintPerHeight == kAccurateGiFootprint) return GiMode::Accurate;
+    if (!settings.anisotropicVoxels && settings.coneFootprintPerHeight == 0.0f && !settings.diffuseFromVoxelIrradiance)
+        return GiMode::Fast;
+    if (settings.anisotropicVoxels && settings.coneFootprintPerHeight == kAccurateGiFootprint)
+        return settings.diffuseFromVoxelIrradiance ? GiMode::Cached : GiMode::Accurate;
     return GiMode::Custom;
 }
 
 void setGiMode(RenderSettings& settings, GiMode mode) {
     if (mode == GiMode::Custom) return;
-    settings.anisotropicVoxels = mode == GiMode::Accurate;
-    settings.coneFootprintPerHeight = mode == GiMode::Accurate ? kAccurateGiFootprint : 0.0f;
+    const bool accurateCones = mode == GiMode::Accurate || mode == GiMode::Cached;
+    settings.anisotropicVoxels = accurateCones;
+    settings.coneFootprintPerHeight = accurateCones ? kAccurateGiFootprint : 0.0f;
+    settings.diffuseFromVoxelIrradiance = mode == GiMode::Cached;
 }
 
 std::string toJson(const RenderSettings& settings) {

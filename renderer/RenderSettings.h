@@ -53,13 +53,19 @@ inline constexpr int kMaxBounces = 8;
 // drops the 64³ nook of CornellAccuracy.IndirectOnlyRegionsMatchTheReference below its bar.
 inline constexpr float kAccurateGiFootprint = 0.25f;
 
-// The GI presets a user picks by name (lit-render --gi-mode, the editor's settings panel). Fast:
-// isotropic voxels, unbounded cones (the default; wrong in places, docs/GI.md). Accurate: the mode
-// docs/GI.md measures against the reference (anisotropic voxels + kAccurateGiFootprint). Custom:
-// any other combination of the two fields.
-enum class GiMode { Fast, Accurate, Custom };
+// The GI presets a user picks by name (lit-render --gi-mode, the editor's settings panel), over
+// anisotropicVoxels, coneFootprintPerHeight and diffuseFromVoxelIrradiance:
+//   Fast: isotropic voxels, unbounded cones traced per pixel (wrong in places: docs/GI.md);
+//   Accurate: anisotropic voxels + kAccurateGiFootprint, cones traced per pixel: the mode docs/GI.md
+//     measures against the reference, 5-13× the fast mode's frame on llvmpipe;
+//   Cached (the default): the accurate mode's cones traced once per voxel after each light or
+//     geometry edit and their irradiance gathered per pixel (docs/GI.md, "Irradiance cached in the
+//     voxels"): the accurate mode's light within a few per cent, at about the fast mode's frame
+//     cost, but each light edit re-traces every occupied voxel;
+//   Custom: any other combination of the three fields.
+enum class GiMode { Fast, Accurate, Cached, Custom };
 std::string_view toString(GiMode mode);
-std::optional<GiMode> parseGiMode(std::string_view text);  // "fast", "accurate" (not "custom")
+std::optional<GiMode> parseGiMode(std::string_view text);  // "fast", "accurate", "cached" (not "custom")
 
 // What the background and the cones that leave the scene see (scene/Sky.h evaluates it).
 enum class SkyMode {
@@ -132,22 +138,25 @@ struct RenderSettings {
     // voxel a cone leaving a surface may sample, as a multiple of its height above that surface
     // (keeps cones out of their own surface's voxels; 0 = unbounded); light bounces (1 = direct
     // light only is injected, each more re-injects the voxels' own cone-traced indirect light).
-    // Both accuracy features are off by default: on llvmpipe they cost 2-3× (anisotropic) and 3-5×
-    // (footprint) the cone trace, 7-14× together (docs/GI.md, "Landing: cost and defaults");
-    // kAccurateGiFootprint with anisotropic voxels is the mode docs/GI.md measures.
-    bool anisotropicVoxels = false;
-    // Experiment (docs/GI.md, "Irradiance cached in the voxels (eighth session)"): after each
+    // Both accuracy features are on by default (the Cached GI mode, with diffuseFromVoxelIrradiance):
+    // traced per pixel they cost 2-3× (anisotropic) and 3-5× (footprint) the cone trace on llvmpipe,
+    // 7-14× together (docs/GI.md, "Landing: cost and defaults"); traced per voxel once per edit
+    // they cost the light edit instead. kAccurateGiFootprint with anisotropic voxels is the mode
+    // docs/GI.md measures.
+    bool anisotropicVoxels = true;
+    // The Cached GI mode (docs/GI.md, "Irradiance cached in the voxels"): after each
     // light or geometry edit, every occupied voxel traces the accurate mode's stratified cones
     // once (bounce.comp.glsl, LIT_BOUNCE_IRRADIANCE) and stores its irradiance/π per side; the
     // per-pixel L_ID gathers it from the voxels around the surface point instead of tracing cones.
-    bool diffuseFromVoxelIrradiance = false;
+    // On by default (with the two accuracy fields: GiMode::Cached).
+    bool diffuseFromVoxelIrradiance = true;
     // With it: occupied voxels whose irradiance is traced per frame after an edit, round robin (0 =
     // all in the edit's frame). A light edit then takes ⌈occupied / this⌉ frames, each tracing this
     // many voxels (96 316 at 128³ in the Cornell box, 20-90 µs each on llvmpipe by its load), and
     // the others keep the old light until their turn; after a voxelization untraced voxels are left
     // out of the gather. Stills rendered in one frame need 0 (docs/PERFORMANCE.md, ninth session).
     int voxelIrradianceVoxelsPerFrame = 0;
-    float coneFootprintPerHeight = 0.0f;  // × height above the surface (0 = off; accurate: kAccurateGiFootprint)
+    float coneFootprintPerHeight = kAccurateGiFootprint;  // × height above the surface (0 = off, the fast mode)
     // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
     // occupied voxel, 2-20 s per light or geometry edit on llvmpipe (docs/GI.md, "Bounces").
     int bounces = 1;                      // 1..8
@@ -184,8 +193,8 @@ struct RenderSettings {
     bool operator==(const RenderSettings&) const = default;
 };
 
-// Which preset the two GI accuracy fields (anisotropicVoxels, coneFootprintPerHeight) match, and
-// setting them to a preset (Custom leaves them as they are).
+// Which preset the three GI fields (anisotropicVoxels, coneFootprintPerHeight,
+// diffuseFromVoxelIrradiance) match, and setting them to a preset (Custom leaves them as they are).
 GiMode giModeOf(const RenderSettings& settings);
 void setGiMode(RenderSettings& settings, GiMode mode);
 

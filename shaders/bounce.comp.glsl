@@ -24,9 +24,10 @@
 // few directions (what they happen to hit), as they did to the pixels before the sets.
 //
 // Defines set by InjectPass: LIT_BOUNCE_RGBA8 (1: rgba8 direct volume, 0: rgba16f);
-// LIT_BOUNCE_IRRADIANCE 1 (experiment, InjectPass::executeIrradiance, voxel_irradiance.glsl):
+// LIT_BOUNCE_IRRADIANCE 1 (the cached GI mode, InjectPass::executeIrradiance, voxel_irradiance.glsl):
 // store each voxel's irradiance/π instead, for the side of its averaged normal and the other side,
-// in two RGBA16F volumes, and leave the radiance as it is; LIT_IRRADIANCE_ALL_SETS 1: average all
+// in two volumes of the radiance volume's format (voxel_irradiance_filter.comp.glsl then averages
+// them over the cone sets), and leave the radiance as it is; LIT_IRRADIANCE_ALL_SETS 1: average all
 // kConeSetCount stratified sets per voxel instead of its one set (kConeSetCount × the cones).
 #include "cone.glsl"
 #include "cone_strata.glsl"
@@ -50,8 +51,9 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNor
 #define LIT_IRRADIANCE_ALL_SETS 0
 #endif
 #if LIT_BOUNCE_IRRADIANCE
-layout(binding = LIT_IMG_VOXEL_DIRECT, rgba16f) uniform writeonly image3D voxelIrradiancePosOut;
-layout(binding = LIT_IMG_VOXEL_BOUNCE, rgba16f) uniform writeonly image3D voxelIrradianceNegOut;
+// In the radiance volume's format and encoding (encodeRadiance): RGBA8 halves their memory.
+layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform writeonly image3D voxelIrradiancePosOut;
+layout(binding = LIT_IMG_VOXEL_BOUNCE, BOUNCE_FORMAT) uniform writeonly image3D voxelIrradianceNegOut;
 // The amortised update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces the list entries
 // [uListFirst, uListEnd) in one dispatch (glDispatchCompute sized for them); everything at once is
 // uListFirst 0 and uListEnd the capacity, as the indirect dispatch of the whole list.
@@ -119,8 +121,8 @@ void main() {
                     ? bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance)
                     : front;
 #if LIT_BOUNCE_IRRADIANCE
-    imageStore(voxelIrradiancePosOut, v, vec4(front, 1.0));
-    imageStore(voxelIrradianceNegOut, v, vec4(back, 1.0));
+    imageStore(voxelIrradiancePosOut, v, vec4(encodeRadiance(front), 1.0));
+    imageStore(voxelIrradianceNegOut, v, vec4(encodeRadiance(back), 1.0));
 #else
     vec3 irradiance = 0.5 * (front + back);  // = front for a one-sided voxel
     vec3 radiance = decodeRadiance(direct.rgb) + albedo.rgb * irradiance * voxel.traceParams.x;

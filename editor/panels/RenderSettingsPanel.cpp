@@ -162,18 +162,22 @@ bool drawGlobalIllumination(RenderSettings& s) {
     bool changed = ImGui::Checkbox("Cone-traced GI", &s.gi);
     ImGui::BeginDisabled(!s.gi);
     changed |= comboInt("Voxels per side", s.voxelResolution, std::array{64, 128, 256, 512});
-    // The preset over the two accuracy fields below; it reads "custom" when they match neither.
+    // The preset over the three GI fields below; it reads "custom" when they match none.
     GiMode mode = giModeOf(s);
-    if (combo("GI mode", mode, std::array{GiMode::Fast, GiMode::Accurate, GiMode::Custom},
+    if (combo("GI mode", mode, std::array{GiMode::Fast, GiMode::Accurate, GiMode::Cached, GiMode::Custom},
               [](GiMode m) { return toString(m); }) &&
         mode != GiMode::Custom) {
         setGiMode(s, mode);
         changed = true;
     }
-    tooltip("fast: isotropic voxels, unbounded cones (the default; too dark far from lit surfaces and\n"
-            "too bright near them, docs/GI.md). accurate: anisotropic voxels + footprint / height 0.25, the\n"
-            "mode measured against the path-traced reference (within 20 % on the Cornell box), several times\n"
-            "the cone-trace time on a software rasterizer. custom: the two fields below set by hand");
+    tooltip("cached (the default): the accurate mode's cones traced once per voxel after each light or\n"
+            "geometry edit, their irradiance gathered per pixel: the accurate light at about the fast mode's\n"
+            "frame cost, but a light edit re-traces every occupied voxel (seconds at 128^3 on a software\n"
+            "rasterizer; spread it with 'Irradiance voxels / frame').\n"
+            "accurate: anisotropic voxels + footprint / height 0.25, cones traced per pixel: the mode measured\n"
+            "against the path-traced reference (within 20 % on the Cornell box), 5-13x the fast mode's frame.\n"
+            "fast: isotropic voxels, unbounded cones per pixel (too dark far from lit surfaces and too bright\n"
+            "near them, docs/GI.md). custom: the three fields below set by hand");
     changed |= ImGui::SliderFloat("Indirect intensity", &s.indirectIntensity, 0.0f, 4.0f, "%.2f");
     changed |= ImGui::SliderInt("Specular cones", &s.specularSamples, 1, 8);
     changed |= sliderDegrees("Diffuse aperture", s.diffuseConeAperture, 10.0f, 90.0f);
@@ -189,18 +193,18 @@ bool drawGlobalIllumination(RenderSettings& s) {
     changed |= ImGui::Checkbox("Anisotropic voxels", &s.anisotropicVoxels);
     tooltip("Six directional volumes per mip level (x6/7 more voxel memory): walls block and emit light\n"
             "only on the side a cone looks at, so no light leaks or self-illumination through them.\n"
-            "Off by default: 2-3x the cone-trace time and a slower mipmap pass on a software rasterizer.\n"
-            "With Footprint / height 0.25: the accurate GI mode measured in docs/GI.md");
+            "Per pixel 2-3x the cone-trace time and a slower mipmap pass on a software rasterizer.\n"
+            "With Footprint / height 0.25: the accurate and cached GI modes measured in docs/GI.md");
     changed |= ImGui::SliderFloat("Footprint / height", &s.coneFootprintPerHeight, 0.0f, 2.0f, "%.2f");
     tooltip("Largest voxel a cone leaving a surface samples, as a multiple of its height above that\n"
             "surface (ratio; 0 = unbounded). Smaller keeps cones out of their own surface's voxels\n"
-            "(no self-illumination) at the cost of more steps (3-5x the cone-trace time). Off (0) by\n"
-            "default; 0.25 with anisotropic voxels is the accurate GI mode");
-    changed |= ImGui::Checkbox("Diffuse from voxel irradiance (experiment)", &s.diffuseFromVoxelIrradiance);
+            "(no self-illumination) at the cost of more steps (3-5x the cone-trace time per pixel).\n"
+            "0.25 with anisotropic voxels: the accurate and cached GI modes; 0: the fast mode");
+    changed |= ImGui::Checkbox("Diffuse from voxel irradiance", &s.diffuseFromVoxelIrradiance);
     tooltip("Indirect diffuse gathered from irradiance cached in the voxels (traced once per light or\n"
             "geometry edit with the accurate mode's cone sets) instead of cones per pixel: ~10-30x\n"
-            "cheaper per frame, seconds per light edit on llvmpipe; colour bleeding overshoots\n"
-            "(docs/GI.md, \"Irradiance cached in the voxels\")");
+            "cheaper per frame, seconds per light edit on llvmpipe (docs/GI.md, \"Irradiance cached in\n"
+            "the voxels\"). On in the cached GI mode");
     if (s.diffuseFromVoxelIrradiance) {
         changed |= ImGui::DragInt("Irradiance voxels / frame", &s.voxelIrradianceVoxelsPerFrame, 256.0f, 0, 1 << 24,
                                   s.voxelIrradianceVoxelsPerFrame == 0 ? "all at once" : "%d voxels");

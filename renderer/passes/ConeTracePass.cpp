@@ -133,7 +133,13 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     }
     LowTargets& t = low_.current();
     const ConeFeatures features = ConeFeatures::of(settings);
-    if (features.footprint && !t.tracedPacked) {
+    // The strata filter averages the texels' stratified cone sets (the accurate mode). The
+    // voxel-irradiance gather traces no sets per texel (the voxels averaged them) and is already a
+    // 27-voxel average; rough lobes read the same gather. Filtering it would only blur it, and
+    // differently in the term views (a lobe is filtered with its texel's L_ID, which L_IS alone has
+    // not), so that the terms would no longer sum to the final image.
+    const bool strataFilter = features.footprint && !features.voxelIrradiance;
+    if (strataFilter && !t.tracedPacked) {
         t.tracedPacked = gl::Texture("indirect terms (reduced, stratified)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
         t.tracedPacked.setFilter(GL_NEAREST, GL_NEAREST);
         t.tracedTarget = gl::Framebuffer::withColours("indirect (reduced, stratified)", {&t.tracedPacked, &t.guide});
@@ -147,7 +153,7 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         return;
     }
     bindAlbedoTable();
-    (features.footprint ? t.tracedTarget : t.target).bind();
+    (strataFilter ? t.tracedTarget : t.target).bind();
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
@@ -164,7 +170,7 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     glProgramUniform1f(id, program.location("uRotation"), sampling.rotation);
     if (subsets) glProgramUniform1i(id, program.location("uConeSubset"), sampling.coneSubset);
     triangle_.draw();
-    if (features.footprint) strataFilter_.execute(t.tracedPacked, t.guide, t.filteredTarget, w, h);
+    if (strataFilter) strataFilter_.execute(t.tracedPacked, t.guide, t.filteredTarget, w, h);
 }
 
 }  // namespace lit

@@ -51,7 +51,10 @@ std::vector<gl::Program*> InjectPass::programs() {
     std::vector<gl::Program*> programs{&program_};
     bounce8_.appendBuilt(programs);
     bounce16f_.appendBuilt(programs);
-    irradianceProgram_.appendBuilt(programs);
+    irradiance8_.appendBuilt(programs);
+    irradiance16f_.appendBuilt(programs);
+    for (gl::Program* filter : {&filter8_, &filter16f_})
+        if (*filter) programs.push_back(filter);
     return programs;
 }
 
@@ -83,34 +86,56 @@ void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features,
                        0, n, n, n);
 }
 
+std::size_t InjectPass::irradianceBytes(int n, bool radianceRgba8) {
+    return 4 * static_cast<std::size_t>(n) * n * n * (radianceRgba8 ? 4 : 8);
+}
+
 void InjectPass::prepareIrradiance(const VoxelVolume& volume, bool clear) {
     const int n = volume.resolution();
     if (n <= 0) return;
-    if (irradianceResolution_ != n) {
-        irradiancePos_ = gl::Texture("voxel irradiance +normal", {GL_TEXTURE_3D, GL_RGBA16F, n, n, n, 1});
-        irradianceNeg_ = gl::Texture("voxel irradiance -normal", {GL_TEXTURE_3D, GL_RGBA16F, n, n, n, 1});
+    const bool rgba8 = volume.radianceRgba8();
+    if (irradianceResolution_ != n || irradianceRgba8_ != rgba8) {
+        const GLenum format = volume.radianceFormat();
+        rawPos_ = gl::Texture("voxel irradiance +normal (traced)", {GL_TEXTURE_3D, format, n, n, n, 1});
+        rawNeg_ = gl::Texture("voxel irradiance -normal (traced)", {GL_TEXTURE_3D, format, n, n, n, 1});
+        irradiancePos_ = gl::Texture("voxel irradiance +normal", {GL_TEXTURE_3D, format, n, n, n, 1});
+        irradianceNeg_ = gl::Texture("voxel irradiance -normal", {GL_TEXTURE_3D, format, n, n, n, 1});
         // Read with texelFetch only; nearest keeps the one-level volumes complete for any sampler state.
-        for (const gl::Texture* t : {&irradiancePos_, &irradianceNeg_}) t->setFilter(GL_NEAREST, GL_NEAREST);
+        for (const gl::Texture* t : {&rawPos_, &rawNeg_, &irradiancePos_, &irradianceNeg_})
+            t->setFilter(GL_NEAREST, GL_NEAREST);
         irradianceResolution_ = n;
+        irradianceRgba8_ = rgba8;
         clear = true;  // new storage holds anything
     }
     if (!clear) return;
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearTexImage(irradiancePos_.id(), 0, GL_RGBA, GL_FLOAT, zero);
-    glClearTexImage(irradianceNeg_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    for (const gl::Texture* t : {&rawPos_, &rawNeg_, &irradiancePos_, &irradianceNeg_})
+        glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, zero);
 }
 
 void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
                                    std::uint32_t count) {
-    if (volume.resolution() <= 0 || irradianceResolution_ != volume.resolution()) return;  // prepareIrradiance first
-    if (irradianceProgram_.empty())
-        irradianceProgram_ = ConeProgram(shaderRoot_, "voxel irradiance", {{GL_COMPUTE_SHADER, "bounce.comp.glsl"}},
-                                         "#define LIT_BOUNCE_RGBA8 0\n#define LIT_BOUNCE_IRRADIANCE 1\n", features);
+    // prepareIrradiance first (it also follows a change of the radiance format).
+    if (volume.resolution() <= 0 || irradianceResolution_ != volume.resolution() ||
+        irradianceRgba8_ != volume.radianceRgba8())
+        return;
+    const bool rgba8 = irradianceRgba8_;
+    const GLenum format = volume.radianceFormat();
+    ConeProgram& tracePrograms = rgba8 ? irradiance8_ : irradiance16f_;
+    const std::string formatDefine = rgba8 ? "#define LIT_BOUNCE_RGBA8 1\n" : "#define LIT_BOUNCE_RGBA8 0\n";
+    if (tracePrograms.empty())
+        tracePrograms = ConeProgram(shaderRoot_, rgba8 ? "voxel irradiance rgba8" : "voxel irradiance rgba16f",
+                                    {{GL_COMPUTE_SHADER, "bounce.comp.glsl"}},
+                                    formatDefine + "#define LIT_BOUNCE_IRRADIANCE 1\n", features);
+    gl::Program& filter = rgba8 ? filter8_ : filter16f_;
+    if (!filter)
+        filter = gl::Program(shaderRoot_, rgba8 ? "voxel irradiance filter rgba8" : "voxel irradiance filter rgba16f",
+                             {{GL_COMPUTE_SHADER, "voxel_irradiance_filter.comp.glsl"}}, formatDefine);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    const gl::Program& program = irradianceProgram_.get(features);
+    const gl::Program& program = tracePrograms.get(features);
     useWithVoxelSurfaces(program, volume, features);
-    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiancePos_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, irradianceNeg_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, rawPos_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, rawNeg_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
     const bool range = fromList && count > 0 && volume.occupiedList();
     glProgramUniform1ui(program.id(), program.location("uListFirst"), range ? first : 0u);
     glProgramUniform1ui(program.id(), program.location("uListEnd"), range ? first + count : volume.occupiedCapacity());
@@ -124,6 +149,19 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
     } else {
         dispatchOverVoxels(volume, program, fromList);
     }
+
+    // The filter over every occupied voxel: a voxel's filtered value reads its neighbours', which
+    // a range of the list may have traced though the voxel itself is elsewhere in the list.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    filter.use();
+    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
+    for (const GLuint unit : {LIT_TEX_VOXEL_IRRADIANCE_POS, LIT_TEX_VOXEL_IRRADIANCE_NEG}) glBindSampler(unit, 0);
+    rawPos_.bind(LIT_TEX_VOXEL_IRRADIANCE_POS);
+    rawNeg_.bind(LIT_TEX_VOXEL_IRRADIANCE_NEG);
+    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiancePos_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, irradianceNeg_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    dispatchOverVoxels(volume, filter, fromList);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

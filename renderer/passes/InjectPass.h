@@ -41,30 +41,40 @@ public:
     // `features`: the cone features to trace with (ConeFeatures::of the settings).
     void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList = true);
 
-    // Experiment (RenderSettings::diffuseFromVoxelIrradiance): after execute() and a full mip
-    // build, occupied voxels trace diffuse cones (bounce.comp.glsl with LIT_BOUNCE_IRRADIANCE) and
-    // their irradiance/π per side goes to two RGBA16F volumes (alpha 1 where traced) that
-    // bindIrradiance() binds for the per-pixel gather (voxel_irradiance.glsl). The radiance volume
-    // is left as it is.
-    // prepareIrradiance makes the volumes for the volume's resolution; `clear` (after a
+    // The cached GI mode (RenderSettings::diffuseFromVoxelIrradiance): after execute() and a full
+    // mip build, occupied voxels trace diffuse cones (bounce.comp.glsl with LIT_BOUNCE_IRRADIANCE)
+    // and their irradiance/π per side goes to two "raw" volumes (alpha 1 where traced); then every
+    // occupied voxel averages the raw values over one period of the cone sets' pattern along its
+    // surface (voxel_irradiance_filter.comp.glsl) into the two volumes bindIrradiance() binds for
+    // the per-pixel gather (voxel_irradiance.glsl). The radiance volume is left as it is. All four
+    // are in the radiance volume's format and encoding (RGBA8 or RGBA16F).
+    // prepareIrradiance makes the volumes for the volume's resolution and format; `clear` (after a
     // voxelization: old values sit at old geometry) marks every voxel not traced (alpha 0, which
-    // the gather skips). A light edit keeps the old values until they are traced again.
+    // the filter and the gather skip). A light edit keeps the old values until they are traced again.
     void prepareIrradiance(const VoxelVolume& volume, bool clear);
     // Traces the occupied-voxel list's entries [first, first + count) (RenderSettings::
     // voxelIrradianceVoxelsPerFrame: a light edit's voxels spread over frames); `count` 0 = the
     // whole list. `fromList` false (the list overflowed): the whole N³ grid, first/count ignored.
+    // Then filters every occupied voxel (the list, or the grid when `fromList` is false), so the
+    // voxels next to those traced see their new values.
     void executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first = 0,
                            std::uint32_t count = 0);
-    // Binds the two irradiance volumes and the voxel normals (LIT_TEX_VOXEL_IRRADIANCE_POS/NEG,
+    // Binds the two filtered irradiance volumes and the voxel normals (LIT_TEX_VOXEL_IRRADIANCE_POS/NEG,
     // LIT_TEX_VOXEL_NORMAL) for the cone passes.
     void bindIrradiance(const VoxelVolume& volume) const;
+    // Bytes of the four irradiance volumes of an N³ volume (memory budget, VoxelVolume.h).
+    static std::size_t irradianceBytes(int n, bool radianceRgba8);
 
     std::vector<gl::Program*> programs() override;
 
 private:
-    ConeProgram irradianceProgram_;
-    gl::Texture irradiancePos_, irradianceNeg_;
+    // bounce.comp.glsl (LIT_BOUNCE_IRRADIANCE) and the filter, for RGBA8 and RGBA16F volumes.
+    ConeProgram irradiance8_, irradiance16f_;
+    gl::Program filter8_, filter16f_;
+    gl::Texture rawPos_, rawNeg_;                // as traced, one cone set per voxel
+    gl::Texture irradiancePos_, irradianceNeg_;  // filtered over the sets: what the gather reads
     int irradianceResolution_ = 0;
+    bool irradianceRgba8_ = false;
     gl::Program program_;
     // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce (most frames have one).
     ConeProgram bounce8_, bounce16f_;

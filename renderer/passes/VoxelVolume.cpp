@@ -14,7 +14,10 @@ constexpr const char* kAxisNames[LIT_VOXEL_AXIS_COUNT] = {"±X", "±Y", "±Z"};
 constexpr int kMinResolution = 64;
 constexpr int kMaxResolution = 512;
 
-std::size_t bytesFor(int n, bool rgba8) { return voxelVolumeBytes(n, rgba8, true); }
+// What the default settings allocate (one bounce, the cached GI mode's irradiance volumes): at 512³
+// RGBA8 4.7 GiB, 5.7 GiB with the bounce volumes (bounces > 1), so an 8 GB GPU keeps 512³ with the
+// quarter of its free memory this leaves to everything else.
+std::size_t bytesFor(int n, bool rgba8) { return voxelVolumeBytes(n, rgba8, false); }
 
 std::string mib(std::size_t bytes) {
     char text[32];
@@ -31,7 +34,10 @@ std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     // (one per axis, its two faces and a gap between them side by side) starts at 3·(N/2)³, 3/8 of
     // the base, so the three add 9/7 of it.
     const std::size_t radiance = voxels * texel * 8 / 7 + 9 * (voxels / 8) * texel * 8 / 7;
-    return material + radiance + (bounces ? 2 * voxels * texel : 0);
+    // The cached GI mode's four irradiance volumes (InjectPass::irradianceBytes: traced and
+    // filtered, two sides each) in the radiance format; counted in every mode.
+    const std::size_t irradiance = 4 * voxels * texel;
+    return material + radiance + (bounces ? 2 * voxels * texel : 0) + irradiance;
 }
 
 std::size_t queryFreeGpuMemory() {

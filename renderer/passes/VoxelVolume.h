@@ -157,7 +157,8 @@ private:
 };
 
 // Bytes the volumes of an N³ volume take: materials, radiance with mips, the six directional
-// chains and (with `bounces` > 1) the direct and bounce volumes.
+// chains, (with `bounces` > 1) the direct and bounce volumes and the cached GI mode's four
+// irradiance volumes (allocated only in that mode, counted always).
 std::size_t voxelVolumeBytes(int n, bool radianceRgba8, bool bounces);
 // Largest N the volumes may use given `availableBytes` of GPU memory (0 = unknown → 512).
 int largestVoxelResolutionFor(std::size_t availableBytes, bool radianceRgba8);

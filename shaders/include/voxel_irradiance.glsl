@@ -1,9 +1,11 @@
-// Indirect diffuse from irradiance cached in the voxels (experiment, LIT_VOXEL_IRRADIANCE 1,
+// Indirect diffuse from irradiance cached in the voxels (the cached GI mode, LIT_VOXEL_IRRADIANCE 1,
 // RenderSettings::diffuseFromVoxelIrradiance; docs/GI.md, "Irradiance cached in the voxels
 // (eighth session)"). After each light or geometry edit every occupied voxel traces the accurate
 // mode's stratified cones once (bounce.comp.glsl, LIT_BOUNCE_IRRADIANCE) and stores irradiance/π
 // for the side its averaged normal points to (POS) and, for voxels whose normals disagree (both
-// sides of a thin wall), the other side (NEG). A pixel then gathers, instead of tracing cones, the
+// sides of a thin wall), the other side (NEG), averaged over the cone sets along the surface by
+// voxel_irradiance_filter.comp.glsl, encoded as the radiance volume (encodeRadiance). A pixel then
+// gathers, instead of tracing cones, the
 // 3 × 3 × 3 voxels around its surface point pushed half a voxel along its normal, weighted by a
 // tent of radius 1.5 voxels around that point × (normal agreement)^16 × occupancy. The 16th
 // power keeps the gather to voxels facing as the pixel does (weight 0.5 at 17°, 0.1 at 30°): with
@@ -47,7 +49,7 @@ vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
                 vec3 tent = max(1.0 - abs(vec3(v) - g) / 1.5, 0.0);
                 float f2 = facing * facing, f4 = f2 * f2, f8 = f4 * f4;
                 float w = tent.x * tent.y * tent.z * f8 * f8;
-                sum += w * e.rgb;
+                sum += w * decodeRadiance(e.rgb);
                 weightSum += w;
             }
     return weightSum > 0.0 ? sum / weightSum : vec3(0.0);

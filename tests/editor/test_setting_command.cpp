@@ -40,17 +40,26 @@ TEST(EditorSettingCommand, RejectsUnknownKeysBadValuesAndTheWindowSize) {
     EXPECT_EQ(settings, before);  // nothing changed by any of them
 }
 
-// "setting giMode accurate|fast" sets the two fields the preset names (the panel's GI mode combo).
-TEST(EditorSettingCommand, GiModeSetsBothAccuracyFields) {
+// "setting giMode fast|accurate|cached" sets the three fields the preset names (the panel's GI mode combo).
+TEST(EditorSettingCommand, GiModeSetsTheThreeGiFields) {
     RenderSettings settings;
+    EXPECT_EQ(lit::giModeOf(settings), lit::GiMode::Cached);  // the default
     EXPECT_EQ(applySetting(settings, "giMode", "accurate"), "");
     EXPECT_TRUE(settings.anisotropicVoxels);
     EXPECT_EQ(settings.coneFootprintPerHeight, lit::kAccurateGiFootprint);
+    EXPECT_FALSE(settings.diffuseFromVoxelIrradiance);
+    EXPECT_EQ(lit::giModeOf(settings), lit::GiMode::Accurate);
     EXPECT_EQ(applySetting(settings, "coneFootprintPerHeight", "0.5"), "");
     EXPECT_EQ(lit::giModeOf(settings), lit::GiMode::Custom);
     EXPECT_EQ(applySetting(settings, "giMode", "fast"), "");
+    EXPECT_FALSE(settings.anisotropicVoxels);
+    EXPECT_EQ(settings.coneFootprintPerHeight, 0.0f);
+    EXPECT_FALSE(settings.diffuseFromVoxelIrradiance);
+    EXPECT_EQ(lit::giModeOf(settings), lit::GiMode::Fast);
+    EXPECT_EQ(applySetting(settings, "giMode", "cached"), "");
     EXPECT_EQ(settings, RenderSettings{});
-    EXPECT_EQ(applySetting(settings, "giMode", "custom"), "setting giMode: expected fast or accurate (got 'custom')");
+    EXPECT_EQ(applySetting(settings, "giMode", "custom"),
+              "setting giMode: expected fast, accurate or cached (got 'custom')");
     EXPECT_EQ(settings, RenderSettings{});
 }
 

@@ -91,6 +91,7 @@ TEST(ViewportOverlay, TheCameraPathIsACurveThroughItsKeys) {
 TEST(ViewportOverlay, ConeDirectionsViewDrawsSixDiffuseConesAndTheSpecularOnes) {
     Document doc = sceneWithLightAndCamera();
     doc.settings.specularSamples = 2;
+    setGiMode(doc.settings, GiMode::Fast);  // the fixed six-cone set's wireframe cones
     OverlayOptions options;
     options.markers = false;
     SurfaceSample surface;

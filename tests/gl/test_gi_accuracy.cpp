@@ -68,8 +68,9 @@ protected:
         s.gi = true;
         s.voxelResolution = voxels;
         s.view = view;
-        s.anisotropicVoxels = true;
-        s.coneFootprintPerHeight = kAccurateGiFootprint;
+        // The accurate mode (cones traced per pixel), whatever the default: the measurements in
+        // the comments below are its. Tests of the cached mode (the default) say so.
+        setGiMode(s, GiMode::Accurate);
         return s;
     }
     // The end of the sealed-room tests: the same view without GI, then the GI image's mean (the
@@ -251,9 +252,10 @@ protected:
         m.directlyLit = reference::directlyLitMask(hits);
         return m;
     }
-    // L_ID + L_IS of the VCT with `bounces` bounces.
-    std::vector<float> vctIndirect(const Scene& scene, int voxels, int bounces = 1) {
+    // L_ID + L_IS of the VCT with `bounces` bounces, in GI mode `mode`.
+    std::vector<float> vctIndirect(const Scene& scene, int voxels, int bounces = 1, GiMode mode = GiMode::Accurate) {
         RenderSettings settings = giSettings(voxels, View::IndirectDiffuse, kSize);
+        setGiMode(settings, mode);
         settings.bounces = bounces;
         const HdrImage id = render(scene, settings);
         settings.view = View::IndirectSpecular;
@@ -263,6 +265,19 @@ protected:
         return sum;
     }
     static double lum(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+    // Issue #11's bar: each of the four regions lit only indirectly within ±20 % of the reference.
+    static void expectRegionsMatchTheReference(const CornellMeasurement& truth, const std::vector<float>& vct) {
+        int checked = 0;
+        for (const reference::NamedRegion& region : truth.regions) {
+            if (region.pixels() < 10) continue;
+            const double t = lum(reference::maskedMean(truth.truthIndirect, region.mask));
+            const double v = lum(reference::maskedMean(vct, region.mask));
+            std::printf("%s (%zu px): reference %.4f, VCT %.4f (%.2f)\n", region.name.c_str(), region.pixels(), t, v, v / t);
+            EXPECT_NEAR(v / t, 1.0, 0.20) << region.name;
+            ++checked;
+        }
+        EXPECT_EQ(checked, 4) << "ceiling, back wall, shadowed floor by the green wall and by the red wall";
+    }
     // The Cornell box's named regions in the fixture's view of `scene` (traced first hits).
     std::vector<reference::NamedRegion> regionsOf(const Scene& scene) {
         Log quiet;
@@ -364,18 +379,18 @@ TEST_F(CornellAccuracy, AccurateModeIsMirrorSymmetric) {
 // session), since it 1.05, 0.99, 1.02, 0.86.
 TEST_F(CornellAccuracy, IndirectOnlyRegionsMatchTheReference) {
     const Scene scene = loadCornellBox();
-    const CornellMeasurement truth = measureReference(scene);
-    const std::vector<float> vct = vctIndirect(scene, 64);
-    int checked = 0;
-    for (const reference::NamedRegion& region : truth.regions) {
-        if (region.pixels() < 10) continue;
-        const double t = lum(reference::maskedMean(truth.truthIndirect, region.mask));
-        const double v = lum(reference::maskedMean(vct, region.mask));
-        std::printf("%s (%zu px): reference %.4f, VCT %.4f (%.2f)\n", region.name.c_str(), region.pixels(), t, v, v / t);
-        EXPECT_NEAR(v / t, 1.0, 0.20) << region.name;
-        ++checked;
-    }
-    EXPECT_EQ(checked, 4) << "ceiling, back wall, shadowed floor by the green wall and by the red wall";
+    expectRegionsMatchTheReference(measureReference(scene), vctIndirect(scene, 64));
+}
+
+// The same bars for the cached mode (the default: the accurate cones traced per voxel, filtered
+// over the cone sets, gathered per pixel), at issue #11's own resolution, 128³. Measured (this
+// test, 96²): ceiling 1.04, back wall 0.93, floor by the green wall 0.95, nook 0.81 (the
+// weakest). At 64³ its nook is 0.75 (benchmark 0.77; with all 16 sets traced per voxel and no
+// filter 0.81): below the bar there, so 64³ is not claimed (docs/GI.md, "The cached mode", tenth
+// session).
+TEST_F(CornellAccuracy, CachedModeRegionsMatchTheReferenceAt128) {
+    const Scene scene = loadCornellBox();
+    expectRegionsMatchTheReference(measureReference(scene), vctIndirect(scene, 128, 1, GiMode::Cached));
 }
 
 // Issue #11, multiple bounces: with two bounces against the two-bounce reference, the same ±20 %

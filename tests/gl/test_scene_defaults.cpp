@@ -56,17 +56,10 @@ TEST_P(BlenderScenes, MeanBrightnessWithin25PercentOfCycles) {
                 cycles.at("directMeanLuminance").get<double>(), directRatio);
     EXPECT_GT(directRatio, 0.9);
     EXPECT_LT(directRatio, 1.1);
-    // Known gap (issue #11, docs/UNITS.md "Brightness against Blender's Cycles"): the point scene
-    // is 1.28x Cycles. Measured by term (128², 128 spp reference): the direct light matches
-    // (Lit 0.417, reference 0.418, Cycles 0.423), and the reference with every bounce matches
-    // Cycles (0.533 against 0.540; ReferenceAgainstCycles in tests/unit/test_reference.cpp checks
-    // it), so the light units and falloff are right. The excess is Lit's cone-traced indirect
-    // diffuse: 0.262 where the reference's one bounce gives 0.069 and every bounce 0.104. The
-    // 25 % bound must not be widened to hide that; until the GI fix lands this case is reported,
-    // not asserted (spot and sun are asserted: the same GI excess is a smaller share of them).
-    if (std::string(GetParam()) == "point")
-        GTEST_SKIP() << "point scene: whole-image ratio " << ratio
-                     << " (cone-traced GI 2.5x the reference's indirect light, issue #11); direct ratio checked";
+    // The point scene was 1.28x Cycles in the fast GI mode (its cone-traced indirect diffuse 0.262
+    // where the reference's one bounce gives 0.069: docs/UNITS.md, "Brightness against Blender's
+    // Cycles"); in the cached mode, the default since the tenth session, it is 0.91 (spot 0.86,
+    // sun 0.88), so all three are asserted.
     EXPECT_GT(ratio, 0.75);
     EXPECT_LT(ratio, 1.25);
 }

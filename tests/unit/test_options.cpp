@@ -367,27 +367,36 @@ TEST(Options, VoxelIrradianceFlags) {
 TEST(Options, GiModePresetAndTheFlagsThatOverrideIt) {
     using lit::GiMode;
     const lit::RenderSettings defaults;
-    EXPECT_EQ(lit::giModeOf(defaults), GiMode::Fast);
+    EXPECT_EQ(lit::giModeOf(defaults), GiMode::Cached);
     const auto settingsFor = [](const std::vector<std::string>& args) {
         return lit::cli::applyOptions(parseOptions(args), lit::RenderSettings{});
     };
     const lit::RenderSettings accurate = settingsFor({"x.gltf", "--out", "a.png", "--gi-mode", "accurate"});
     EXPECT_TRUE(accurate.anisotropicVoxels);
     EXPECT_EQ(accurate.coneFootprintPerHeight, lit::kAccurateGiFootprint);
+    EXPECT_FALSE(accurate.diffuseFromVoxelIrradiance);
     EXPECT_EQ(lit::giModeOf(accurate), GiMode::Accurate);
     // The two fields' own flags win over the preset, whatever their order: the result is Custom.
     const lit::RenderSettings custom = settingsFor({"x.gltf", "--footprint", "0.5", "--out", "a.png", "--gi-mode", "accurate"});
     EXPECT_EQ(custom.coneFootprintPerHeight, 0.5f);
     EXPECT_TRUE(custom.anisotropicVoxels);
     EXPECT_EQ(lit::giModeOf(custom), GiMode::Custom);
-    // fast puts back what a settings file switched on.
+    // fast switches off what a settings file switched on; cached puts back the defaults.
     lit::RenderSettings fromFile = accurate;
     const lit::RenderSettings fast = lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "a.png", "--gi-mode", "fast"}), fromFile);
     EXPECT_EQ(lit::giModeOf(fast), GiMode::Fast);
-    EXPECT_EQ(fast, defaults);
-    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--gi-mode", "custom"}), "--gi-mode expects fast or accurate, got 'custom'");
+    EXPECT_FALSE(fast.anisotropicVoxels);
+    EXPECT_EQ(fast.coneFootprintPerHeight, 0.0f);
+    EXPECT_FALSE(fast.diffuseFromVoxelIrradiance);
+    const lit::RenderSettings cached = lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "a.png", "--gi-mode", "cached"}), fast);
+    EXPECT_EQ(cached, defaults);
+    // --voxel-irradiance off after the preset: the accurate mode.
+    EXPECT_EQ(lit::giModeOf(settingsFor({"x.gltf", "--voxel-irradiance", "off", "--out", "a.png"})), GiMode::Accurate);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--gi-mode", "custom"}),
+              "--gi-mode expects fast, accurate or cached, got 'custom'");
     EXPECT_EQ(lit::toString(GiMode::Accurate), "accurate");
-    EXPECT_NE(lit::cli::usageText().find("--gi-mode MODE       fast or accurate (default fast)"), std::string::npos);
+    EXPECT_EQ(lit::toString(GiMode::Cached), "cached");
+    EXPECT_NE(lit::cli::usageText().find("--gi-mode MODE       fast, accurate or cached (default cached)"), std::string::npos);
 }
 
 }  // namespace

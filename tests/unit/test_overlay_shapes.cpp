@@ -267,6 +267,7 @@ SurfaceSample floorSample() {
 TEST(OverlayShapes, TracedDiffuseConesFillTheHemisphere) {
     const SurfaceSample s = floorSample();
     RenderSettings settings;
+    setGiMode(settings, GiMode::Fast);  // the fixed six-cone set (the other modes: the stratified sets' tests)
     settings.diffuseConeAperture = 0.9f;
     settings.maxTraceDistance = 0.75f;
     const glm::vec3 camera(1.0f, 2.0f, 2.0f);

@@ -187,9 +187,9 @@ Options parseOptions(const std::vector<std::string>& args) {
                 throw UsageError("--voxels expects a power of two from 64 to 512, got '" + text + "'");
             options.voxels = *n;
         } else if (flag == "--gi-mode") {
-            const std::string text = value("fast or accurate");
+            const std::string text = value("fast, accurate or cached");
             options.giMode = parseGiMode(text);
-            if (!options.giMode) throw UsageError("--gi-mode expects fast or accurate, got '" + text + "'");
+            if (!options.giMode) throw UsageError("--gi-mode expects fast, accurate or cached, got '" + text + "'");
         } else if (flag == "--anisotropic") {
             options.anisotropic = onOff();
         } else if (flag == "--voxel-irradiance") {
@@ -372,7 +372,7 @@ std::string shortUsage() {
     return "usage: lit-render SCENE.gltf --out image.png [--hdr image.hdr] [--size WxH] [--camera NAME|INDEX]\n"
            "                  [--ev STOPS|--exposure X] [--auto-exposure on|off] [--sky MODE] [--sky-hdr FILE.hdr]\n"
            "                  [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
-           "                  [--bounces N] [--gi-mode fast|accurate] [--anisotropic on|off] [--footprint X]\n"
+           "                  [--bounces N] [--gi-mode fast|accurate|cached] [--anisotropic on|off] [--footprint X]\n"
            "                  [--culling on|off] [--indirect-scale 1|2|4] [--temporal on|off]\n"
            "                  [--cone-subsets on|off]\n"
            "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
@@ -417,13 +417,16 @@ std::string usageText() {
            "  --bounces N|all      light bounces of the voxel GI, 1.." + std::to_string(kMaxBounces) + " (default " +
            std::to_string(defaults.bounces) + "; 1 = one bounce, only direct light is injected; all = " +
            std::to_string(kMaxBounces) + "); with --reference see below\n"
-           "  --gi-mode MODE       fast or accurate (default " + std::string(toString(giModeOf(defaults))) + "): accurate = --anisotropic on\n"
-           "                       --footprint " + formatNumber(kAccurateGiFootprint) + ", the mode measured against the reference\n"
-           "                       (docs/GI.md; several times the cone-trace time); the two flags below override it\n"
+           "  --gi-mode MODE       fast, accurate or cached (default " + std::string(toString(giModeOf(defaults))) + "):\n"
+           "                       accurate = --anisotropic on --footprint " + formatNumber(kAccurateGiFootprint) + " --voxel-irradiance off, the mode\n"
+           "                       measured against the reference, cones traced per pixel (several times the fast\n"
+           "                       mode's frame); cached = the same cones traced per voxel after each light or\n"
+           "                       geometry edit, gathered per pixel (--voxel-irradiance on; docs/GI.md); fast =\n"
+           "                       isotropic voxels, unbounded cones per pixel; the three flags below override it\n"
            "  --anisotropic on|off directional voxels for the mip levels cones read (default " +
            std::string(defaults.anisotropicVoxels ? "on" : "off") + ")\n"
-           "  --voxel-irradiance on|off  experiment (docs/GI.md, eighth session): indirect diffuse gathered from\n"
-           "                       irradiance cached in the voxels instead of per-pixel cones (default off)\n"
+           "  --voxel-irradiance on|off  indirect diffuse gathered from irradiance cached in the voxels\n"
+           "                       instead of per-pixel cones (default " + std::string(defaults.diffuseFromVoxelIrradiance ? "on" : "off") + ")\n"
            "  --voxel-irradiance-per-frame N  with it: voxels whose irradiance is traced per frame after an\n"
            "                       edit, the rest keep the old light until their turn (default " +
            std::to_string(defaults.voxelIrradianceVoxelsPerFrame) + " = all at once)\n"
