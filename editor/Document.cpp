@@ -27,6 +27,12 @@ bool sameHierarchy(const std::vector<Node>& a, const std::vector<Node>& b) {
 
 }  // namespace
 
+RenderSettings editorRenderSettings() {
+    RenderSettings settings;
+    settings.voxelIrradianceVoxelsPerFrame = 16384;
+    return settings;
+}
+
 std::vector<std::vector<int>> primitiveMaterialsOf(const Scene& scene) {
     std::vector<std::vector<int>> materials(scene.meshes.size());
     for (std::size_t m = 0; m < scene.meshes.size(); ++m)

@@ -138,7 +138,7 @@ Document openDocument(const fs::path& file, Log& log, const std::function<void(c
             log.info("render settings from " + sidecar.filename().string());
         } catch (const std::exception& e) {
             log.warning(sidecar.string() + ": " + e.what() + "; using the default render settings");
-            doc.settings = RenderSettings{};
+            doc.settings = editorRenderSettings();
         }
     }
     doc.markSaved();  // the settings just read are the saved ones

@@ -326,24 +326,29 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     // voxelIrradianceVoxelsPerFrame entries per frame, wrapping round the list, until every entry
     // has been traced since the last edit. An overflowed list (whole-grid dispatch) is done at once.
     if (settings.diffuseFromVoxelIrradiance && irradianceRemaining > 0) {
-        Profiler::Scope scope(profiler, "voxel irradiance");
-        const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
-        if (perFrame == 0 || perFrame >= occupiedCount || !occupiedListComplete) {
-            inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete);
-            irradianceRemaining = 0;
-        } else {
-            std::uint32_t budget = std::min(perFrame, irradianceRemaining);
-            irradianceRemaining -= budget;
-            while (budget > 0) {  // at most twice: up to the list's end, then from its start
-                const std::uint32_t count = std::min(budget, occupiedCount - irradianceNext);
-                inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceNext, count);
-                irradianceNext = (irradianceNext + count) % occupiedCount;
-                budget -= count;
+        {
+            Profiler::Scope scope(profiler, "voxel irradiance");
+            const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+            if (perFrame == 0 || perFrame >= occupiedCount || !occupiedListComplete) {
+                inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete);
+                irradianceRemaining = 0;
+            } else {
+                std::uint32_t budget = std::min(perFrame, irradianceRemaining);
+                irradianceRemaining -= budget;
+                while (budget > 0) {  // at most twice: up to the list's end, then from its start
+                    const std::uint32_t count = std::min(budget, occupiedCount - irradianceNext);
+                    inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceNext, count);
+                    irradianceNext = (irradianceNext + count) % occupiedCount;
+                    budget -= count;
+                }
+                // The accumulated indirect light holds the frames of the update (old light in the
+                // voxels not reached yet): the first frame after it starts the history afresh.
+                if (irradianceRemaining == 0) resolve.resetHistory();
             }
-            // The accumulated indirect light holds the frames of the update (old light in the
-            // voxels not reached yet): the first frame after it starts the history afresh.
-            if (irradianceRemaining == 0) resolve.resetHistory();
         }
+        // Every frame that traced: the voxels next to those traced see their new values.
+        Profiler::Scope filterScope(profiler, "voxel irradiance filter");
+        inject.filterIrradiance(voxels, occupiedListComplete);
     }
 
     stats.voxelized = voxelDirty;
@@ -409,6 +414,8 @@ void Renderer::Impl::reportGiUpdate() {
     const PassTiming* irradianceTiming = profiler.lastRun("voxel irradiance");
     if (irradianceTiming && irradianceTiming->frame >= pendingGiFrame)
         text += ", voxel irradiance " + formatMs(irradianceTiming->gpuMs);
+    const PassTiming* filterTiming = profiler.lastRun("voxel irradiance filter");
+    if (filterTiming && filterTiming->frame >= pendingGiFrame) text += " + filter " + formatMs(filterTiming->gpuMs);
     // Every frame of a gizmo drag re-voxelizes: one folded line with a count, not one per frame.
     log.info(text, Fold::IgnoringNumbers);
     pendingGiFrame = 0;

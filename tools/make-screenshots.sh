@@ -2,7 +2,7 @@
 # Regenerates the images under screenshots/ that the README shows, from the current build:
 # the Cornell box with GI off and on, each lighting term alone, the voxel view, and the editor
 # (its panels with a selection and a camera path, the voxel slice view, the cone directions view
-# in the default and in the accurate GI mode,
+# in the fast and in the accurate GI mode,
 # and the performance overlay), the editor ones driven by a --script run, and Sponza lit by the
 # default sun and sky when the shared scenes are there.
 # Usage: tools/make-screenshots.sh [SIZE] (default 512x512; the editor is captured at 1280x720)
@@ -23,7 +23,7 @@ done
 # The same view path-traced by Lit's reference (docs/REFERENCE.md): one bounce (the light paths
 # of the one-bounce GI above) and every bounce; then the Difference view of the GI image against
 # the one-bounce reference (blue too dark, white right, red too bright; ±50 % at the ends), for the
-# default mode and the accurate mode (docs/GI.md).
+# default (cached) mode, the accurate mode and the fast mode (docs/GI.md).
 tmpdir="$(mktemp -d)"
 trap 'rm -rf "$tmpdir"' EXIT
 spp="${LIT_SCREENSHOT_SPP:-512}"
@@ -35,6 +35,9 @@ spp="${LIT_SCREENSHOT_SPP:-512}"
 "$render" "$scene" --size "$size" --gi on --voxels 128 --gi-mode accurate \
     --out "$out/cornell_gi_accurate.png" --compare "$tmpdir/reference_1bounce.hdr" \
     --difference "$out/cornell_gi_accurate_difference.png"
+"$render" "$scene" --size "$size" --gi on --voxels 128 --gi-mode fast \
+    --out "$out/cornell_gi_fast.png" --compare "$tmpdir/reference_1bounce.hdr" \
+    --difference "$out/cornell_gi_fast_difference.png"
 
 # The editor. Keys of a camera path in front of the box, seen from further back and to the side
 # so the curve and its key frusta show; the tall box selected (outline, gizmo) in the inspector.
@@ -71,18 +74,17 @@ screenshot $out/editor_voxel_slice.png ui
 panel stats on
 setting voxelMip 0
 view cone-directions
-wait 1
+setting giMode fast
+wait 2
 pick 520 560
 wait 1
 screenshot $out/editor_cone_directions.png ui
-setting anisotropicVoxels true
-setting coneFootprintPerHeight 0.33
+setting giMode accurate
 wait 2
 pick 520 560
 wait 1
 screenshot $out/editor_cone_directions_accurate.png ui
-setting anisotropicVoxels false
-setting coneFootprintPerHeight 0
+setting giMode cached
 view final
 panel settings off
 panel camera off

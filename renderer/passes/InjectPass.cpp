@@ -127,10 +127,6 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
         tracePrograms = ConeProgram(shaderRoot_, rgba8 ? "voxel irradiance rgba8" : "voxel irradiance rgba16f",
                                     {{GL_COMPUTE_SHADER, "bounce.comp.glsl"}},
                                     formatDefine + "#define LIT_BOUNCE_IRRADIANCE 1\n", features);
-    gl::Program& filter = rgba8 ? filter8_ : filter16f_;
-    if (!filter)
-        filter = gl::Program(shaderRoot_, rgba8 ? "voxel irradiance filter rgba8" : "voxel irradiance filter rgba16f",
-                             {{GL_COMPUTE_SHADER, "voxel_irradiance_filter.comp.glsl"}}, formatDefine);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     const gl::Program& program = tracePrograms.get(features);
     useWithVoxelSurfaces(program, volume, features);
@@ -150,8 +146,20 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
         dispatchOverVoxels(volume, program, fromList);
     }
 
-    // The filter over every occupied voxel: a voxel's filtered value reads its neighbours', which
-    // a range of the list may have traced though the voxel itself is elsewhere in the list.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void InjectPass::filterIrradiance(const VoxelVolume& volume, bool fromList) {
+    if (volume.resolution() <= 0 || irradianceResolution_ != volume.resolution() ||
+        irradianceRgba8_ != volume.radianceRgba8())
+        return;
+    const bool rgba8 = irradianceRgba8_;
+    const GLenum format = volume.radianceFormat();
+    gl::Program& filter = rgba8 ? filter8_ : filter16f_;
+    if (!filter)
+        filter = gl::Program(shaderRoot_, rgba8 ? "voxel irradiance filter rgba8" : "voxel irradiance filter rgba16f",
+                             {{GL_COMPUTE_SHADER, "voxel_irradiance_filter.comp.glsl"}},
+                             rgba8 ? "#define LIT_BOUNCE_RGBA8 1\n" : "#define LIT_BOUNCE_RGBA8 0\n");
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     filter.use();
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);

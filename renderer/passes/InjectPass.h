@@ -55,10 +55,13 @@ public:
     // Traces the occupied-voxel list's entries [first, first + count) (RenderSettings::
     // voxelIrradianceVoxelsPerFrame: a light edit's voxels spread over frames); `count` 0 = the
     // whole list. `fromList` false (the list overflowed): the whole N³ grid, first/count ignored.
-    // Then filters every occupied voxel (the list, or the grid when `fromList` is false), so the
-    // voxels next to those traced see their new values.
+    // Writes the raw volumes only: filterIrradiance() must follow before the gather reads them.
     void executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first = 0,
                            std::uint32_t count = 0);
+    // The filter over every occupied voxel (the list, or the grid when `fromList` is false): a
+    // voxel's filtered value reads its neighbours', which a range of the list may have traced
+    // though the voxel itself lies elsewhere in the list. Once per frame that traced any voxels.
+    void filterIrradiance(const VoxelVolume& volume, bool fromList);
     // Binds the two filtered irradiance volumes and the voxel normals (LIT_TEX_VOXEL_IRRADIANCE_POS/NEG,
     // LIT_TEX_VOXEL_NORMAL) for the cone passes.
     void bindIrradiance(const VoxelVolume& volume) const;
