@@ -702,8 +702,11 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
 }
 
 // --bench-gi-updates: a light edit (re-inject + mipmaps; the voxels stay) against a full
-// re-voxelization (voxelize + inject + mipmaps), interleaved, GPU times from the profiler. Both
-// also re-render the shadow maps (the light or geometry changed); that is printed separately.
+// re-voxelization (voxelize + inject + mipmaps), interleaved, GPU times from the profiler; both
+// with the bounce passes and the cached GI mode's voxel irradiance pass and filter that follow
+// every edit (the whole list in the edit's frame with voxelIrradianceVoxelsPerFrame 0; else only
+// that frame's share). Both also re-render the shadow maps (the light or geometry changed); that
+// is printed separately.
 void benchGiUpdates(int rounds, lit::Scene& scene, const lit::CameraView& camera, lit::Renderer& renderer,
                     const lit::RenderSettings& settings) {
     const auto passMs = [&](const char* name) {
@@ -722,19 +725,27 @@ void benchGiUpdates(int rounds, lit::Scene& scene, const lit::CameraView& camera
         ++scene.lightRevision;
         renderer.render(scene, camera, settings);
         renderer.profiler().flush();
-        const double editInject = passMs("inject"), editMipmap = passMs("mipmap");
-        const double edit = editInject + editMipmap, editShadow = passMs("shadow");
+        // The cached GI mode's irradiance pass and filter (and any bounces) follow every edit: they
+        // belong to its cost (0 in the modes without them).
+        const auto cachedMs = [&] {
+            return passMs("bounces") + passMs("voxel irradiance") + passMs("voxel irradiance filter");
+        };
+        const double editInject = passMs("inject"), editMipmap = passMs("mipmap"), editCached = cachedMs();
+        const double edit = editInject + editMipmap + editCached, editShadow = passMs("shadow");
         // B: geometry edit without moving anything: the volume is voxelized again.
         ++scene.geometryRevision;
         renderer.render(scene, camera, settings);
         renderer.profiler().flush();
-        const double lists = passMs("mip lists");
-        const double revoxelize = passMs("voxelize") + lists + passMs("inject") + passMs("mipmap"),
+        const double lists = passMs("mip lists"), revoxelizeCached = cachedMs();
+        const double revoxelize =
+                         passMs("voxelize") + lists + passMs("inject") + passMs("mipmap") + revoxelizeCached,
                      fullShadow = passMs("shadow");
         ratios.push_back(edit / revoxelize);
-        std::printf("gi-update round %d: light edit %.1f ms (inject %.1f + mipmap %.1f) | re-voxelize %.1f ms (voxelize + "
-                    "mip lists %.1f + inject + mipmap) | ratio %.3f | shadow maps %.1f / %.1f ms\n",
-                    round, edit, editInject, editMipmap, revoxelize, lists, edit / revoxelize, editShadow, fullShadow);
+        std::printf("gi-update round %d: light edit %.1f ms (inject %.1f + mipmap %.1f + bounces/voxel irradiance %.1f) | "
+                    "re-voxelize %.1f ms (voxelize + mip lists %.1f + inject + mipmap + bounces/voxel irradiance %.1f) | "
+                    "ratio %.3f | shadow maps %.1f / %.1f ms\n",
+                    round, edit, editInject, editMipmap, editCached, revoxelize, lists, revoxelizeCached,
+                    edit / revoxelize, editShadow, fullShadow);
     }
     std::sort(ratios.begin(), ratios.end());
     std::printf("gi-update median ratio (light edit / re-voxelize): %.3f\n", ratios[ratios.size() / 2]);
