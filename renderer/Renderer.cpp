@@ -228,11 +228,13 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     else if (reallocated) reason = "voxel resolution or format changed";
     else if (moved || key.geometry != voxelKey.geometry || key.scene != voxelKey.scene) reason = "geometry changed";
     else if (key.materials != voxelKey.materials) reason = "materials changed";
-    // Bounces trace cones through the volume: their settings change what is injected.
+    // Bounces and the voxel irradiance trace cones through the volume: their settings change what
+    // is injected.
     const bool bounceSettingsChanged =
         std::clamp(settings.bounces, 1, kMaxBounces) != injectedBounces ||
         settings.diffuseFromVoxelIrradiance != injectedIrradiance ||
-        (injectedBounces > 1 && (settings.anisotropicVoxels != injectedAnisotropic ||
+        // The cached mode's voxel irradiance is traced with the same cone settings as the bounces.
+        ((injectedBounces > 1 || injectedIrradiance) && (settings.anisotropicVoxels != injectedAnisotropic ||
                                  settings.coneFootprintPerHeight != injectedFootprint ||
                                  settings.diffuseConeAperture != injectedAperture ||
                                  settings.coneStepScale != injectedStepScale ||
