@@ -30,6 +30,7 @@ bool sameHierarchy(const std::vector<Node>& a, const std::vector<Node>& b) {
 RenderSettings editorRenderSettings() {
     RenderSettings settings;
     settings.voxelIrradianceVoxelsPerFrame = 16384;
+    settings.voxelIrradianceRefineVoxelsPerFrame = 8192;
     return settings;
 }
 

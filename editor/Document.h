@@ -60,8 +60,9 @@ enum class Change : std::uint8_t {
 // The render settings of a document with no settings file: the renderer's defaults, except that
 // the cached GI mode's irradiance update after a light or geometry edit is spread over frames
 // (16 384 voxels a frame: ~0.35 s a frame at 128³ on llvmpipe, a few frames for the Cornell box)
-// so that dragging a light keeps the viewport moving; the renderer's own default (all voxels in
-// the edit's frame) suits stills, which render one frame (docs/EDITOR.md).
+// so that dragging a light keeps the viewport moving, and then refined with the other cone sets
+// (8 192 voxels a frame) while the view is left alone; the renderer's own defaults (all voxels in
+// the edit's frame, no refinement) suit stills, which render one frame (docs/EDITOR.md).
 RenderSettings editorRenderSettings();
 
 class Document {

@@ -103,6 +103,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("coneFootprintPerHeight", s.coneFootprintPerHeight);
     visit("diffuseFromVoxelIrradiance", s.diffuseFromVoxelIrradiance);
     visit("voxelIrradianceVoxelsPerFrame", s.voxelIrradianceVoxelsPerFrame);
+    visit("voxelIrradianceRefineVoxelsPerFrame", s.voxelIrradianceRefineVoxelsPerFrame);
     visit("bounces", s.bounces);
     visit("voxelSlice", s.voxelSlice);
     visit("voxelSliceAxis", s.voxelSliceAxis);

@@ -156,6 +156,12 @@ struct RenderSettings {
     // the others keep the old light until their turn; after a voxelization untraced voxels are left
     // out of the gather. Stills rendered in one frame need 0 (docs/PERFORMANCE.md, ninth session).
     int voxelIrradianceVoxelsPerFrame = 0;
+    // With it: once every voxel holds the current light (each traced with its one cone set),
+    // occupied voxels traced again per frame with the other sets in turn, round robin, each voxel
+    // averaging the sets it has traced (0 = off). After 15 more rounds over the list every voxel
+    // holds all 16 sets, and the bands a few voxels wide that the voxel filter leaves (docs/GI.md,
+    // "The cached mode") are gone. Off by default (stills render one frame); the editor: 8192.
+    int voxelIrradianceRefineVoxelsPerFrame = 0;
     float coneFootprintPerHeight = kAccurateGiFootprint;  // × height above the surface (0 = off, the fast mode)
     // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
     // occupied voxel, 2-20 s per light or geometry edit on llvmpipe (docs/GI.md, "Bounces").

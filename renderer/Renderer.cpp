@@ -196,6 +196,10 @@ struct Renderer::Impl {
     // since the last edit (0: every voxel holds the current light).
     std::uint32_t irradianceNext = 0;
     std::uint32_t irradianceRemaining = 0;
+    // The refinement after it (voxelIrradianceRefineVoxelsPerFrame > 0): the set offset of the
+    // round under way (1..kConeSets − 1; kConeSets: done) and its next list entry.
+    int irradianceRefineRound = 0;
+    std::uint32_t irradianceRefineNext = 0;
     bool injectedAnisotropic = true;
     float injectedFootprint = 0.0f, injectedAperture = 0.0f, injectedStepScale = 0.0f, injectedTraceDistance = 0.0f,
           injectedIntensity = 0.0f;
@@ -308,6 +312,8 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             inject.prepareIrradiance(voxels, voxelDirty);
             if (voxelDirty || irradianceNext >= occupiedCount) irradianceNext = 0;
             irradianceRemaining = std::max(occupiedCount, 1u);
+            irradianceRefineRound = 1;
+            irradianceRefineNext = 0;
         }
         injectedIrradiance = settings.diffuseFromVoxelIrradiance;
         injectedBounces = bounces;
@@ -327,7 +333,31 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     // The voxel irradiance (diffuseFromVoxelIrradiance): all of the list in the edit's frame, or
     // voxelIrradianceVoxelsPerFrame entries per frame, wrapping round the list, until every entry
     // has been traced since the last edit. An overflowed list (whole-grid dispatch) is done at once.
-    if (settings.diffuseFromVoxelIrradiance && irradianceRemaining > 0) {
+    constexpr int kConeSets = LIT_CONE_STRATA * LIT_CONE_STRATA;
+    const bool refine = settings.diffuseFromVoxelIrradiance && irradianceRemaining == 0 &&
+                        settings.voxelIrradianceRefineVoxelsPerFrame > 0 && irradianceRefineRound < kConeSets &&
+                        occupiedListComplete && occupiedCount > 0;
+    if (refine) {
+        // Round k traces every voxel's set + k once over the list, budget entries a frame; each
+        // voxel then averages k + 1 sets. The light is right throughout: only its sampling improves.
+        {
+            Profiler::Scope scope(profiler, "voxel irradiance");
+            std::uint32_t budget = static_cast<std::uint32_t>(settings.voxelIrradianceRefineVoxelsPerFrame);
+            while (budget > 0 && irradianceRefineRound < kConeSets) {
+                const std::uint32_t count = std::min(budget, occupiedCount - irradianceRefineNext);
+                inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceRefineNext, count,
+                                         irradianceRefineRound);
+                budget -= count;
+                irradianceRefineNext += count;
+                if (irradianceRefineNext >= occupiedCount) {
+                    irradianceRefineNext = 0;
+                    ++irradianceRefineRound;
+                }
+            }
+        }
+        Profiler::Scope filterScope(profiler, "voxel irradiance filter");
+        inject.filterIrradiance(voxels, occupiedListComplete);
+    } else if (settings.diffuseFromVoxelIrradiance && irradianceRemaining > 0) {
         {
             Profiler::Scope scope(profiler, "voxel irradiance");
             const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));

@@ -52,8 +52,13 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNor
 #endif
 #if LIT_BOUNCE_IRRADIANCE
 // In the radiance volume's format and encoding (encodeRadiance): RGBA8 halves their memory.
-layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform writeonly image3D voxelIrradiancePosOut;
-layout(binding = LIT_IMG_VOXEL_BOUNCE, BOUNCE_FORMAT) uniform writeonly image3D voxelIrradianceNegOut;
+layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform image3D voxelIrradiancePosOut;
+layout(binding = LIT_IMG_VOXEL_BOUNCE, BOUNCE_FORMAT) uniform image3D voxelIrradianceNegOut;
+// The refinement (RenderSettings::voxelIrradianceRefineVoxelsPerFrame): round k = uSetOffset
+// (1..15) traces the set voxelConeSetIndex + k and averages it into what rounds 0..k − 1 left,
+// weight uBlend = 1 / (k + 1); round 0 (the edit's trace) writes with weight 1.
+uniform int uSetOffset;
+uniform float uBlend;
 // The amortised update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces the list entries
 // [uListFirst, uListEnd) in one dispatch (glDispatchCompute sized for them); everything at once is
 // uListFirst 0 and uListEnd the capacity, as the indirect dispatch of the whole list.
@@ -81,7 +86,12 @@ vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float m
     return sum / float(kConeSetCount);
 #elif LIT_CONE_FOOTPRINT
     vec3 cones[kDiffuseConeCount];
-    return traceDiffuseStratified(origin, tangentFrame(normal), voxelConeSetIndex(v, normal), aperture, maxDistance, cones);
+#if LIT_BOUNCE_IRRADIANCE
+    int set = (voxelConeSetIndex(v, normal) + uSetOffset) % kConeSetCount;
+#else
+    int set = voxelConeSetIndex(v, normal);
+#endif
+    return traceDiffuseStratified(origin, tangentFrame(normal), set, aperture, maxDistance, cones);
 #else
     return traceDiffuse(origin, normal, aperture, maxDistance);
 #endif
@@ -121,6 +131,12 @@ void main() {
                     ? bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance)
                     : front;
 #if LIT_BOUNCE_IRRADIANCE
+    if (uBlend < 1.0) {
+        vec4 oldFront = imageLoad(voxelIrradiancePosOut, v), oldBack = imageLoad(voxelIrradianceNegOut, v);
+        // A voxel not traced yet (alpha 0) takes the new value alone.
+        if (oldFront.a > 0.0) front = mix(decodeRadiance(oldFront.rgb), front, uBlend);
+        if (oldBack.a > 0.0) back = mix(decodeRadiance(oldBack.rgb), back, uBlend);
+    }
     imageStore(voxelIrradiancePosOut, v, vec4(encodeRadiance(front), 1.0));
     imageStore(voxelIrradianceNegOut, v, vec4(encodeRadiance(back), 1.0));
 #else

@@ -211,6 +211,11 @@ bool drawGlobalIllumination(RenderSettings& s) {
         tooltip("Occupied voxels whose irradiance is re-traced per frame after an edit (count; 0 = all in\n"
                 "the edit's frame). A light edit then takes occupied / this frames, each costing a share of\n"
                 "the pass (~20 us per voxel on llvmpipe); voxels not reached yet keep the old light");
+        changed |= ImGui::DragInt("Refine voxels / frame", &s.voxelIrradianceRefineVoxelsPerFrame, 256.0f, 0, 1 << 24,
+                                  s.voxelIrradianceRefineVoxelsPerFrame == 0 ? "off" : "%d voxels");
+        tooltip("Once the light is traced, occupied voxels traced again per frame with the other cone sets\n"
+                "(count; 0 = off) until each holds all 16: 15 more passes over the voxels, spread over frames.\n"
+                "Removes the bands a few voxels wide that one set per voxel leaves");
     }
     changed |= comboInt("Indirect scale", s.indirectScale, std::array{1, 2, 4});
     tooltip("Trace indirect light for one pixel in N x N and upsample edge-aware (1 = every pixel)");

@@ -114,7 +114,7 @@ void InjectPass::prepareIrradiance(const VoxelVolume& volume, bool clear) {
 }
 
 void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
-                                   std::uint32_t count) {
+                                   std::uint32_t count, int setOffset) {
     // prepareIrradiance first (it also follows a change of the radiance format).
     if (volume.resolution() <= 0 || irradianceResolution_ != volume.resolution() ||
         irradianceRgba8_ != volume.radianceRgba8())
@@ -130,8 +130,11 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     const gl::Program& program = tracePrograms.get(features);
     useWithVoxelSurfaces(program, volume, features);
-    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, rawPos_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, rawNeg_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    // Read and written: the refinement averages into what is there.
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, rawPos_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
+    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, rawNeg_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
+    glProgramUniform1i(program.id(), program.location("uSetOffset"), std::max(setOffset, 0));
+    glProgramUniform1f(program.id(), program.location("uBlend"), 1.0f / static_cast<float>(std::max(setOffset, 0) + 1));
     const bool range = fromList && count > 0 && volume.occupiedList();
     glProgramUniform1ui(program.id(), program.location("uListFirst"), range ? first : 0u);
     glProgramUniform1ui(program.id(), program.location("uListEnd"), range ? first + count : volume.occupiedCapacity());

@@ -56,8 +56,10 @@ public:
     // voxelIrradianceVoxelsPerFrame: a light edit's voxels spread over frames); `count` 0 = the
     // whole list. `fromList` false (the list overflowed): the whole N³ grid, first/count ignored.
     // Writes the raw volumes only: filterIrradiance() must follow before the gather reads them.
+    // `setOffset` k > 0 (the refinement, RenderSettings::voxelIrradianceRefineVoxelsPerFrame): each
+    // voxel traces the set k after its own and averages it into its value with weight 1 / (k + 1).
     void executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first = 0,
-                           std::uint32_t count = 0);
+                           std::uint32_t count = 0, int setOffset = 0);
     // The filter over every occupied voxel (the list, or the grid when `fromList` is false): a
     // voxel's filtered value reads its neighbours', which a range of the list may have traced
     // though the voxel itself lies elsewhere in the list. Once per frame that traced any voxels.

@@ -157,6 +157,7 @@ TEST(DocumentIO, OpenGivesASceneWithoutLightsAndCamerasDefaults) {
     // The renderer's defaults, but the cached GI mode's light-edit update spread over frames.
     RenderSettings expected;
     expected.voxelIrradianceVoxelsPerFrame = 16384;
+    expected.voxelIrradianceRefineVoxelsPerFrame = 8192;
     EXPECT_EQ(doc.settings, expected);
     EXPECT_EQ(doc.settings, editorRenderSettings());
     EXPECT_EQ(doc.file, folder / "bare.gltf");

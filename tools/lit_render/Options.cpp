@@ -199,6 +199,11 @@ Options parseOptions(const std::vector<std::string>& args) {
             const auto n = parseInt(text, 0, 1 << 30);
             if (!n) throw UsageError("--voxel-irradiance-per-frame expects a voxel count from 0, got '" + text + "'");
             options.voxelIrradiancePerFrame = *n;
+        } else if (flag == "--voxel-irradiance-refine") {
+            const std::string text = value("a voxel count");
+            const auto n = parseInt(text, 0, 1 << 30);
+            if (!n) throw UsageError("--voxel-irradiance-refine expects a voxel count from 0, got '" + text + "'");
+            options.voxelIrradianceRefine = *n;
         } else if (flag == "--footprint") {
             const std::string text = value("a number");
             const auto x = parseFloat(text);
@@ -340,6 +345,7 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.anisotropic) base.anisotropicVoxels = *options.anisotropic;
     if (options.voxelIrradiance) base.diffuseFromVoxelIrradiance = *options.voxelIrradiance;
     if (options.voxelIrradiancePerFrame) base.voxelIrradianceVoxelsPerFrame = *options.voxelIrradiancePerFrame;
+    if (options.voxelIrradianceRefine) base.voxelIrradianceRefineVoxelsPerFrame = *options.voxelIrradianceRefine;
     if (options.footprint) base.coneFootprintPerHeight = *options.footprint;
     if (options.culling) base.frustumCulling = *options.culling;
     if (options.indirectScale) base.indirectScale = *options.indirectScale;
@@ -430,6 +436,9 @@ std::string usageText() {
            "  --voxel-irradiance-per-frame N  with it: voxels whose irradiance is traced per frame after an\n"
            "                       edit, the rest keep the old light until their turn (default " +
            std::to_string(defaults.voxelIrradianceVoxelsPerFrame) + " = all at once)\n"
+           "  --voxel-irradiance-refine N  then: voxels traced again per frame with the other cone sets\n"
+           "                       until each holds all 16 (default " +
+           std::to_string(defaults.voxelIrradianceRefineVoxelsPerFrame) + " = off; with --frames)\n"
            "  --footprint X        largest voxel a cone leaving a surface samples, × its height above the\n"
            "                       surface (default " + formatNumber(defaults.coneFootprintPerHeight) + "; 0 = unbounded)\n"
            "  --frames N           frames rendered before the image is read (default 1)\n"
