@@ -16,8 +16,12 @@ render="$build/tools/lit-render"
 mkdir -p "$out"
 
 "$render" "$scene" --out "$out/cornell_gi_off.png" --size "$size" --gi off
+# The default (cached) GI mode as the editor shows it once the view is left alone: the voxels'
+# irradiance refined with all 16 cone sets over 16 more frames (docs/GI.md, "The cached mode").
+refined=(--frames 17 --voxel-irradiance-refine 1000000)
 for view in final direct-diffuse indirect-diffuse direct-specular indirect-specular voxels; do
-    "$render" "$scene" --out "$out/cornell_gi_${view}.png" --size "$size" --gi on --voxels 128 --view "$view"
+    "$render" "$scene" --out "$out/cornell_gi_${view}.png" --size "$size" --gi on --voxels 128 --view "$view" \
+        "${refined[@]}"
 done
 
 # The same view path-traced by Lit's reference (docs/REFERENCE.md): one bounce (the light paths
@@ -30,7 +34,7 @@ spp="${LIT_SCREENSHOT_SPP:-512}"
 "$render" "$scene" --reference --bounces 1 --spp "$spp" --size "$size" --out "$out/cornell_reference_1bounce.png" \
     --hdr "$tmpdir/reference_1bounce.hdr"
 "$render" "$scene" --reference --bounces all --spp "$spp" --size "$size" --out "$out/cornell_reference_all.png"
-"$render" "$scene" --size "$size" --gi on --voxels 128 --compare "$tmpdir/reference_1bounce.hdr" \
+"$render" "$scene" --size "$size" --gi on --voxels 128 "${refined[@]}" --compare "$tmpdir/reference_1bounce.hdr" \
     --difference "$out/cornell_gi_difference.png"
 "$render" "$scene" --size "$size" --gi on --voxels 128 --gi-mode accurate \
     --out "$out/cornell_gi_accurate.png" --compare "$tmpdir/reference_1bounce.hdr" \
