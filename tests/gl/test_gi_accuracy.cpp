@@ -60,6 +60,15 @@ glm::vec3 meanOf(const HdrImage& image, float u0, float v0, float u1, float v1) 
 
 class GiAccuracy : public GlFixture {
 protected:
+    // Mean absolute per-channel difference between a and b, relative to b's mean.
+    static double relativeDifference(const HdrImage& a, const HdrImage& b) {
+        double difference = 0.0, total = 0.0;
+        for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+            difference += std::abs(double(a.rgb[i]) - b.rgb[i]);
+            total += b.rgb[i];
+        }
+        return difference / total;
+    }
     HdrImage renderFrom(const Scene& scene, const CameraView& camera, const RenderSettings& settings) {
         renderer_->setScene(scene);
         renderer_->render(scene, camera, settings);
@@ -773,15 +782,7 @@ TEST_F(GiAccuracy, VoxelIrradianceSpreadOverFramesLeavesNoTraceOfTheOldLight) {
     RenderSettings atOnce = settings;
     atOnce.voxelIrradianceVoxelsPerFrame = 0;
     const HdrImage fresh = renderFrom(scene, camera, atOnce);
-    const auto relativeDifference = [&](const HdrImage& a) {
-        double difference = 0.0, total = 0.0;
-        for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-            difference += std::abs(double(a.rgb[i]) - fresh.rgb[i]);
-            total += fresh.rgb[i];
-        }
-        return difference / total;
-    };
-    const double before = relativeDifference(early), after = relativeDifference(converged);
+    const double before = relativeDifference(early, fresh), after = relativeDifference(converged, fresh);
     std::printf("voxel irradiance over %d frames (%d of %u voxels each): L_ID vs all at once after %d frames %.3f %%, "
                 "after %d %.5f %%\n",
                 kFrames, settings.voxelIrradianceVoxelsPerFrame, occupied, kFrames - 1, 100.0 * before, kFrames,
@@ -808,14 +809,6 @@ TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheConeSettingsCha
     const HdrImage changed{settings.width, settings.height, renderer_->readHdrRgb()};
     renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
     const HdrImage fresh = renderFrom(scene, camera, settings);
-    const auto relativeDifference = [&](const HdrImage& a, const HdrImage& b) {
-        double difference = 0.0, total = 0.0;
-        for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-            difference += std::abs(double(a.rgb[i]) - b.rgb[i]);
-            total += b.rgb[i];
-        }
-        return difference / total;
-    };
     const double settingEffect = relativeDifference(before, fresh), stale = relativeDifference(changed, fresh);
     std::printf("cached mode, footprint 0.25 -> 0.5 and trace distance 1 -> 0.5: L_ID before vs fresh %.3f %%, "
                 "after the change vs fresh %.5f %%\n",
@@ -867,14 +860,6 @@ TEST_F(GiAccuracy, CachedModeRefinementConvergesToAllConeSetsPerVoxel) {
     std::error_code ignored;
     fs::remove_all(root, ignored);
 
-    const auto relativeDifference = [&](const HdrImage& a, const HdrImage& b) {
-        double difference = 0.0, total = 0.0;
-        for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-            difference += std::abs(double(a.rgb[i]) - b.rgb[i]);
-            total += b.rgb[i];
-        }
-        return difference / total;
-    };
     const double before = relativeDifference(oneSet, allSets), converged = relativeDifference(refined, allSets);
     std::printf("cached mode against all 16 sets per voxel: one set %.3f %%, after 15 refinement rounds %.3f %%, "
                 "a frame later %.5f %% from the refined image\n",
