@@ -21,8 +21,8 @@ struct RenderSettings;
 struct ConeFeatures {
     bool anisotropic = false;  // directional voxels for levels ≥ 1 (RenderSettings::anisotropicVoxels)
     bool footprint = false;    // footprint-bounded diffuse cones (RenderSettings::coneFootprintPerHeight > 0)
-    // Experiment (docs/GI.md, eighth session): L_ID gathered from the voxels' cached irradiance
-    // (RenderSettings::diffuseFromVoxelIrradiance) instead of per-pixel diffuse cones.
+    // The cached GI mode (docs/GI.md, "The cached mode"): L_ID gathered from the voxels' cached
+    // irradiance (RenderSettings::diffuseFromVoxelIrradiance) instead of per-pixel diffuse cones.
     bool voxelIrradiance = false;
 
     static ConeFeatures of(const RenderSettings& settings);

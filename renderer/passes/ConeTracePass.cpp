@@ -93,7 +93,7 @@ int ConeTracePass::indirectScale(const RenderSettings& settings) {
 }
 
 bool ConeTracePass::reducedPath(const RenderSettings& settings) {
-    // The voxel-irradiance gather (an experiment) exists only in the reduced path's shaders.
+    // The voxel-irradiance gather (the cached GI mode) exists only in the reduced path's shaders.
     return indirectScale(settings) > 1 || settings.temporalAccumulation || ConeFeatures::of(settings).footprint ||
            settings.diffuseFromVoxelIrradiance;
 }

@@ -88,8 +88,9 @@ using mat4 = glm::mat4;
 #define LIT_TEX_VOXEL_DIRECTIONAL_FIRST 29
 #define LIT_VOXEL_FACE_COUNT 6
 #define LIT_VOXEL_AXIS_COUNT 3  // directional volumes: one per axis, holding its two faces
-// Voxel irradiance (experiment, RenderSettings::diffuseFromVoxelIrradiance): RGBA16F N³, the
-// occupied voxels' irradiance/π on the side of their averaged normal (POS) and the other (NEG).
+// Voxel irradiance (the cached GI mode, RenderSettings::diffuseFromVoxelIrradiance): N³ in the
+// radiance volume's format, the occupied voxels' irradiance/π on the side of their averaged normal
+// (POS) and the other (NEG); the cone passes read the filtered ones, the filter the traced ones.
 #define LIT_TEX_VOXEL_IRRADIANCE_POS 32
 #define LIT_TEX_VOXEL_IRRADIANCE_NEG 33
 
