@@ -59,17 +59,9 @@ layout(binding = LIT_IMG_VOXEL_BOUNCE, BOUNCE_FORMAT) uniform image3D voxelIrrad
 // weight uBlend = 1 / (k + 1); round 0 (the edit's trace) writes with weight 1.
 uniform int uSetOffset;
 uniform float uBlend;
-// The amortised update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces the list entries
-// [uListFirst, uListEnd) in one dispatch (glDispatchCompute sized for them); everything at once is
-// uListFirst 0 and uListEnd the capacity, as the indirect dispatch of the whole list.
-uniform uint uListFirst;
-uniform uint uListEnd;
-bool listedVoxelInRange(out ivec3 v) {
-    uint index = uListFirst + gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex;
-    if (index >= min(min(occupiedCount, uOccupiedCapacity), uListEnd)) return false;
-    v = unpackVoxelCoord(occupiedVoxels[index]);
-    return true;
-}
+// The amortised update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces a part of the list
+// at a time (listedVoxelInRange).
+LIT_VOXEL_LIST_RANGE_READER
 #else
 layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform readonly image3D voxelDirect;
 layout(binding = LIT_IMG_VOXEL_BOUNCE) uniform writeonly image3D voxelBounce;

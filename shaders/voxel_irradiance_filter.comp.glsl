@@ -17,13 +17,16 @@
 // neighbour stays untraced (alpha 0), which the gather skips.
 //
 // Reads the traced ("raw") volumes, writes the filtered ones the gather reads; over the occupied
-// list (uFromList 1, as inject.comp.glsl) or the whole grid. Values are stored as the radiance
+// list (uFromList 1, as inject.comp.glsl), a part of it, or the whole grid. Values are stored as the radiance
 // volume stores radiance (encodeRadiance: RGBA8 scaled by voxelRadianceRange, or RGBA16F).
 #include "voxel.glsl"
 
 layout(local_size_x = LIT_INJECT_GROUP_SIZE, local_size_y = LIT_INJECT_GROUP_SIZE, local_size_z = LIT_INJECT_GROUP_SIZE) in;
 
 LIT_VOXEL_LIST_READER
+// Between the edit and the end of an amortised update only the entries traced in the frame are
+// filtered (listedVoxelInRange); the frame that completes the update filters the whole list.
+LIT_VOXEL_LIST_RANGE_READER
 
 #if LIT_BOUNCE_RGBA8
 #define IRRADIANCE_FORMAT rgba8
@@ -82,7 +85,7 @@ vec4 filteredSide(ivec3 c, vec3 n, int res) {
 void main() {
     ivec3 v;
     if (uFromList != 0) {
-        if (!listedVoxel(v)) return;
+        if (!listedVoxelInRange(v)) return;
     } else {
         v = ivec3(gl_GlobalInvocationID);
     }

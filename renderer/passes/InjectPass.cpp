@@ -42,6 +42,25 @@ void dispatchOverVoxels(const VoxelVolume& volume, const gl::Program& program, b
     }
 }
 
+// The list entries [first, first + count) when `fromList` and count > 0 (a direct dispatch sized
+// for them: the list's indirect command covers all of it), else the whole list or grid as
+// dispatchOverVoxels; for programs with LIT_VOXEL_LIST_RANGE_READER.
+void dispatchListRange(const VoxelVolume& volume, const gl::Program& program, bool fromList, std::uint32_t first,
+                       std::uint32_t count) {
+    const bool range = fromList && count > 0 && volume.occupiedList();
+    glProgramUniform1ui(program.id(), program.location("uListFirst"), range ? first : 0u);
+    glProgramUniform1ui(program.id(), program.location("uListEnd"), range ? first + count : volume.occupiedCapacity());
+    if (!range) {
+        dispatchOverVoxels(volume, program, fromList);
+        return;
+    }
+    glProgramUniform1i(program.id(), program.location("uFromList"), 1);
+    glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
+    glDispatchCompute((count + LIT_INJECT_LIST_GROUP_SIZE - 1) / LIT_INJECT_LIST_GROUP_SIZE, 1, 1);
+}
+
 }  // namespace
 
 InjectPass::InjectPass(const std::filesystem::path& shaderRoot)
@@ -135,24 +154,12 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, rawNeg_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
     glProgramUniform1i(program.id(), program.location("uSetOffset"), std::max(setOffset, 0));
     glProgramUniform1f(program.id(), program.location("uBlend"), 1.0f / static_cast<float>(std::max(setOffset, 0) + 1));
-    const bool range = fromList && count > 0 && volume.occupiedList();
-    glProgramUniform1ui(program.id(), program.location("uListFirst"), range ? first : 0u);
-    glProgramUniform1ui(program.id(), program.location("uListEnd"), range ? first + count : volume.occupiedCapacity());
-    if (range) {
-        // A direct dispatch sized for the range (the list's indirect command covers all of it).
-        glProgramUniform1i(program.id(), program.location("uFromList"), 1);
-        glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
-        glDispatchCompute((count + LIT_INJECT_LIST_GROUP_SIZE - 1) / LIT_INJECT_LIST_GROUP_SIZE, 1, 1);
-    } else {
-        dispatchOverVoxels(volume, program, fromList);
-    }
+    dispatchListRange(volume, program, fromList, first, count);
 
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-void InjectPass::filterIrradiance(const VoxelVolume& volume, bool fromList) {
+void InjectPass::filterIrradiance(const VoxelVolume& volume, bool fromList, std::uint32_t first, std::uint32_t count) {
     if (volume.resolution() <= 0 || irradianceResolution_ != volume.resolution() ||
         irradianceRgba8_ != volume.radianceRgba8())
         return;
@@ -172,7 +179,7 @@ void InjectPass::filterIrradiance(const VoxelVolume& volume, bool fromList) {
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiancePos_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, irradianceNeg_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-    dispatchOverVoxels(volume, filter, fromList);
+    dispatchListRange(volume, filter, fromList, first, count);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

@@ -60,10 +60,12 @@ public:
     // voxel traces the set k after its own and averages it into its value with weight 1 / (k + 1).
     void executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first = 0,
                            std::uint32_t count = 0, int setOffset = 0);
-    // The filter over every occupied voxel (the list, or the grid when `fromList` is false): a
-    // voxel's filtered value reads its neighbours', which a range of the list may have traced
-    // though the voxel itself lies elsewhere in the list. Once per frame that traced any voxels.
-    void filterIrradiance(const VoxelVolume& volume, bool fromList);
+    // The filter over the list's entries [first, first + count) (`count` 0 = every occupied voxel:
+    // the list, or the grid when `fromList` is false). A voxel's filtered value reads its
+    // neighbours', which a range of the list may have traced though the voxel itself lies elsewhere
+    // in the list: filtering only the traced range leaves those neighbours' values stale until
+    // their own range is traced, so the frame that completes an update filters the whole list.
+    void filterIrradiance(const VoxelVolume& volume, bool fromList, std::uint32_t first = 0, std::uint32_t count = 0);
     // Binds the two filtered irradiance volumes and the voxel normals (LIT_TEX_VOXEL_IRRADIANCE_POS/NEG,
     // LIT_TEX_VOXEL_NORMAL) for the cone passes.
     void bindIrradiance(const VoxelVolume& volume) const;

@@ -529,7 +529,9 @@ int main(int argc, char** argv) {
 
         std::string md;
         md += "Measured by `tools/gi-accuracy.sh` (" + std::to_string(args.size) + "×" + std::to_string(args.size) +
-              " pixels, reference " + std::to_string(args.spp) + " spp with one bounce, " + context.description() + "):\n\n";
+              " pixels, reference " + std::to_string(args.spp) + " spp with " +
+              (args.bounces == 1 ? std::string("one bounce") : std::to_string(args.bounces) + " bounces") + ", " +
+              context.description() + "):\n\n";
         md += "| scene | voxels | indirect-only VCT/ref | final RMSE, exposure-matched (reference noise) | indirect energy VCT/ref | VCT first "
               "frame s | VCT frame s | reference s |\n|---|---:|---:|---:|---:|---:|---:|---:|\n" + summary;
         if (!regions.empty())
