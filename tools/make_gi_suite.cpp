@@ -21,6 +21,7 @@
 #include <exception>
 #include <filesystem>
 #include <stdexcept>
+#include <string_view>
 
 namespace {
 
@@ -57,7 +58,7 @@ void name(Scene& scene, int node, const char* text) { scene.nodes[static_cast<st
 // The Cornell room: interior x ∈ [−1, 1], y ∈ [0, 2], z ∈ [−1, 1], open at z = +1, with the node
 // names of assets/cornell_box.gltf (the accuracy regions find walls by name). thickness 0: single-
 // sided walls (planes facing in); otherwise closed slabs of that thickness (metres) outside the
-// interior. Two blocks and the down-pointing 20 cd spot of the Cornell box.
+// interior. Two blocks and the down-pointing spot of the Cornell box (20 W/sr = 13 660 cd).
 void addCornellRoom(Scene& scene, const RoomMaterials& m, float thickness, RoomVariant variant = {}) {
     const float t = thickness;
     // x of the mirrored room; the blocks' turns about y change sign with it.
@@ -132,7 +133,7 @@ Scene thinWalls() {
     Light sun;
     sun.name = "sun";
     sun.type = LightType::Directional;
-    sun.intensity = 20.0f;  // lux: ~3.6× the spot's illuminance on the floor; all of it must stay outside
+    sun.intensity = 20.0f;  // W/m² (13 660 lx; Light::intensity is radiometric): ~3.6× the spot's illuminance on the floor; all of it must stay outside
     // Down and slightly towards +z: it falls on the roof and never through the open front.
     name(scene, addLightNode(scene, sun, {0, 4, 0}, glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f))), "sun");
     return scene;
@@ -168,7 +169,7 @@ Scene sealedRoom() {
     Light sun;
     sun.name = "sun";
     sun.type = LightType::Directional;
-    sun.intensity = 50.0f;  // lux, from high up and to the side: it lights the roof, two walls and the ground
+    sun.intensity = 50.0f;  // W/m² (34 150 lx), from high up and to the side: it lights the roof, two walls and the ground
     name(scene, addLightNode(scene, sun, {0, 8, 0}, glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f))), "sun");
     Camera camera;
     camera.name = "inside";
@@ -183,9 +184,12 @@ Scene sealedRoom() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: make-gi-suite OUTDIR\n");
-        return 2;
+    // An option is never taken for the output folder (`make-gi-suite --help` made a folder "--help").
+    const bool help = argc == 2 && (std::string_view(argv[1]) == "--help" || std::string_view(argv[1]) == "-h");
+    if (argc != 2 || help || std::string_view(argv[1]).starts_with("-")) {
+        std::fprintf(stderr, "usage: make-gi-suite OUTDIR\n  writes the GI accuracy suite's scenes (OUTDIR/*.gltf and .bin; "
+                             "the committed copies are assets/gi)\n");
+        return help ? 0 : 2;
     }
     try {
         const fs::path out = argv[1];

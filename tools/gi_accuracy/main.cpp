@@ -154,11 +154,11 @@ Args parseArgs(int argc, char** argv) {
 std::vector<SuiteScene> suite(const Args& args) {
     const fs::path assets = fs::path(LIT_SOURCE_DIR) / "assets";
     std::vector<SuiteScene> scenes = {
-        {"cornell_box", assets / "cornell_box.gltf", "Cornell box, 20 cd spot pointing down (ceiling lit only indirectly)"},
-        {"sealed_room", assets / "gi" / "sealed_room.gltf", "closed room (0.2 m walls) on a ground under a 50 lx sun", true},
-        {"thin_walls", assets / "gi" / "thin_walls.gltf", "Cornell room with walls 1 voxel thick at 128³, 20 lx sun on the roof"},
+        {"cornell_box", assets / "cornell_box.gltf", "Cornell box, 13 660 cd (20 W/sr) spot pointing down (ceiling lit only indirectly)"},
+        {"sealed_room", assets / "gi" / "sealed_room.gltf", "closed room (0.2 m walls) on a ground under a 50 W/m² sun", true},
+        {"thin_walls", assets / "gi" / "thin_walls.gltf", "Cornell room with walls 1 voxel thick at 128³, 20 W/m² sun on the roof"},
         {"glossy_floor", assets / "gi" / "glossy_floor.gltf", "Cornell room with a glossy metal floor (roughness 0.2)"},
-        {"sponza", args.shared / "sponza" / "Sponza.gltf", "Sponza (textured, ../shared/scenes), default 3 lx sun", false, true},
+        {"sponza", args.shared / "sponza" / "Sponza.gltf", "Sponza (textured, ../shared/scenes), the default sun (4 W/m²)", false, true},
         {"cornell_room", assets / "gi" / "cornell_room.gltf", "the Cornell box rebuilt by make-gi-suite", false, false, true},
         {"cornell_mirrored", assets / "gi" / "cornell_mirrored.gltf", "the Cornell box mirrored in x", false, false, true},
         {"cornell_swapped", assets / "gi" / "cornell_swapped.gltf", "the Cornell box, wall colours swapped", false, false, true},
