@@ -133,7 +133,9 @@ Scene thinWalls() {
     Light sun;
     sun.name = "sun";
     sun.type = LightType::Directional;
-    sun.intensity = 20.0f;  // W/m² (13 660 lx; Light::intensity is radiometric): ~3.6× the spot's illuminance on the floor; all of it must stay outside
+    // W/m² (13 660 lx; Light::intensity is radiometric): ~3.6× the spot's illuminance on the floor;
+    // all of it must stay outside.
+    sun.intensity = 20.0f;
     // Down and slightly towards +z: it falls on the roof and never through the open front.
     name(scene, addLightNode(scene, sun, {0, 4, 0}, glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f))), "sun");
     return scene;
@@ -169,7 +171,8 @@ Scene sealedRoom() {
     Light sun;
     sun.name = "sun";
     sun.type = LightType::Directional;
-    sun.intensity = 50.0f;  // W/m² (34 150 lx), from high up and to the side: it lights the roof, two walls and the ground
+    // W/m² (34 150 lx), from high up and to the side: it lights the roof, two walls and the ground.
+    sun.intensity = 50.0f;
     name(scene, addLightNode(scene, sun, {0, 8, 0}, glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f))), "sun");
     Camera camera;
     camera.name = "inside";
