@@ -5,12 +5,18 @@
 //
 //   lit-gi-accuracy [--voxels 64,128,256] [--spp 256] [--size 128] [--scenes a,b,...]
 //                   [--shared DIR] [--out FILE.md] [--bounces N] [--settings FILE.json] [--cone-split]
-//                   [--frames N]
+//                   [--frames N] [--images DIR] [--scene FILE.gltf]...
 // --bounces N: light bounces of both the VCT (RenderSettings::bounces) and the reference (default 1);
 // --settings: RenderSettings JSON the VCT starts from (size, view, GI switch, resolution and
 // bounces are set by the tool), to compare GI variants (e.g. anisotropicVoxels off).
 // --frames N: render each VCT view N times and measure the last (default 1), for settings with
 // temporalAccumulation (the still camera's history then averages the jitter and the cone sets).
+// --scene FILE.gltf: measure this scene too (its first camera; named by its file's stem), e.g. an
+// edited copy of the Cornell box (the region tables need its node names); only the --scene files
+// run when --scenes is not given.
+// --images DIR: also write, per scene, the reference's and each VCT run's indirect radiance (L_ID +
+// L_IS) as linear .hdr, the Difference view of each run against the reference (.png) and a map of
+// the named regions (.png, one colour per region), to see where in a region the light is wrong.
 // --cone-split: also a table of the indirect diffuse of each Cornell region split by the six
 // diffuse cones' regions of the hemisphere (see coneSplit below), the truth's and the VCT's.
 // cornell_room, cornell_mirrored and cornell_swapped (assets/gi, the Cornell box rebuilt, mirrored
@@ -42,11 +48,14 @@
 #include "scene/Sky.h"
 #include "scene/Scene.h"
 #include "io/AtomicFile.h"
+#include "image/ImageIO.h"
+#include "reference/DifferenceImage.h"
 
 #include <epoxy/gl.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -89,6 +98,8 @@ struct Args {
     RenderSettings vct;  // what the VCT runs start from (--settings)
     bool coneSplit = false;
     int frames = 1;  // renders per VCT view (--frames), the last one measured
+    fs::path images;  // --images: where the per-scene images go (empty: none)
+    std::vector<fs::path> extraScenes;  // --scene
 };
 
 std::string readTextFile(const fs::path& path) {
@@ -107,11 +118,22 @@ std::vector<std::string> split(const std::string& text) {
     return parts;
 }
 
+const char* const kUsage =
+    "usage: lit-gi-accuracy [--voxels 64,128,256] [--spp 256] [--size 128] [--scenes a,b,...]\n"
+    "                       [--shared DIR] [--out FILE.md] [--bounces N] [--settings FILE.json] [--cone-split]\n"
+    "                       [--frames N] [--images DIR] [--scene FILE.gltf]...\n"
+    "The GI accuracy benchmark: the VCT against the reference path tracer (docs/GI.md; the options are\n"
+    "described at the top of tools/gi_accuracy/main.cpp).\n";
+
 Args parseArgs(int argc, char** argv) {
     Args args;
     args.shared = fs::path(LIT_SOURCE_DIR) / ".." / "shared" / "scenes";
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
+        if (flag == "--help" || flag == "-h") {
+            std::fputs(kUsage, stdout);
+            std::exit(0);
+        }
         if (flag == "--cone-split") {
             args.coneSplit = true;
             continue;
@@ -141,6 +163,12 @@ Args parseArgs(int argc, char** argv) {
         } else if (flag == "--frames") {
             args.frames = std::stoi(value);
             if (args.frames < 1 || args.frames > 1000) throw std::invalid_argument("--frames: 1..1000");
+        } else if (flag == "--scene") {
+            if (!fs::is_regular_file(value)) throw std::invalid_argument("--scene: no such file " + value);
+            args.extraScenes.emplace_back(value);
+        } else if (flag == "--images") {
+            args.images = value;
+            if (args.images.empty()) throw std::invalid_argument("--images: a folder");
         } else if (flag == "--settings") {
             args.vct = renderSettingsFromJson(readTextFile(value));
         } else {
@@ -149,6 +177,16 @@ Args parseArgs(int argc, char** argv) {
     }
     if (args.spp < 1 || args.size < 16 || args.voxels.empty()) throw std::invalid_argument("bad --spp, --size or --voxels");
     return args;
+}
+
+// Every name --scenes gives must be one of the suite's (a typo would otherwise measure nothing).
+void checkSceneNames(const Args& args, const std::vector<SuiteScene>& all) {
+    for (const std::string& name : args.only)
+        if (std::none_of(all.begin(), all.end(), [&](const SuiteScene& s) { return s.name == name; })) {
+            std::string known;
+            for (const SuiteScene& s : all) known += (known.empty() ? "" : ", ") + s.name;
+            throw std::invalid_argument("--scenes: no scene called " + name + " (known: " + known + ")");
+        }
 }
 
 std::vector<SuiteScene> suite(const Args& args) {
@@ -163,13 +201,16 @@ std::vector<SuiteScene> suite(const Args& args) {
         {"cornell_mirrored", assets / "gi" / "cornell_mirrored.gltf", "the Cornell box mirrored in x", false, false, true},
         {"cornell_swapped", assets / "gi" / "cornell_swapped.gltf", "the Cornell box, wall colours swapped", false, false, true},
     };
-    if (args.only.empty()) {
-        std::erase_if(scenes, [](const SuiteScene& s) { return s.onlyWhenNamed; });
-        return scenes;
-    }
+    checkSceneNames(args, scenes);
     std::vector<SuiteScene> chosen;
-    for (const SuiteScene& s : scenes)
-        if (std::find(args.only.begin(), args.only.end(), s.name) != args.only.end()) chosen.push_back(s);
+    if (args.only.empty() && args.extraScenes.empty()) {
+        std::erase_if(scenes, [](const SuiteScene& s) { return s.onlyWhenNamed; });
+        chosen = std::move(scenes);
+    } else {
+        for (const SuiteScene& s : scenes)
+            if (std::find(args.only.begin(), args.only.end(), s.name) != args.only.end()) chosen.push_back(s);
+    }
+    for (const fs::path& file : args.extraScenes) chosen.push_back({file.stem().string(), file, "--scene " + file.string()});
     return chosen;
 }
 
@@ -222,6 +263,42 @@ std::string format(const char* fmt, double value) {
 }
 
 std::string ratioCell(double vct, double truth) { return truth > 0.0 ? format("%.2f", vct / truth) : "–"; }
+
+// --images: DIR/<scene>_reference_indirect.hdr, <scene>_vct<N>_indirect.hdr and
+// <scene>_vct<N>_difference.png (the editor's Difference view, ramp ends ±50 %), and
+// <scene>_regions.png: the named regions in colour (in the order of the region table: red, green,
+// blue, yellow, ...), other surfaces dark grey.
+void writeImages(const fs::path& folder, const std::string& scene, int size, const std::vector<float>& truthIndirect,
+                 const std::vector<VctRun>& runs, const std::vector<NamedRegion>& regions, const PixelMask& surfaces) {
+    fs::create_directories(folder);
+    const auto toSrgb8 = [](float v) {
+        v = std::clamp(v, 0.0f, 1.0f);
+        const float encoded = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+        return static_cast<std::uint8_t>(std::lround(encoded * 255.0f));
+    };
+    const auto prefix = [&](const std::string& what) { return folder / (scene + "_" + what); };
+    writeHdr(prefix("reference_indirect.hdr"), size, size, truthIndirect);
+    for (const VctRun& run : runs) {
+        const std::vector<float> indirect = run.images.indirect();
+        const std::string name = "vct" + std::to_string(run.voxels);
+        writeHdr(prefix(name + "_indirect.hdr"), size, size, indirect);
+        const std::vector<float> colours = relativeErrorColours(indirect, truthIndirect, 0.5f);
+        std::vector<std::uint8_t> rgba(colours.size() / 3 * 4, 255);
+        for (std::size_t p = 0; p < colours.size() / 3; ++p)
+            for (std::size_t c = 0; c < 3; ++c) rgba[4 * p + c] = toSrgb8(colours[3 * p + c]);
+        writePng(prefix(name + "_difference.png"), size, size, rgba);
+    }
+    if (regions.empty()) return;
+    const glm::vec3 palette[] = {{1, 0.2f, 0.2f}, {0.2f, 1, 0.2f}, {0.3f, 0.4f, 1}, {1, 1, 0.2f}, {1, 0.3f, 1}, {0.2f, 1, 1}};
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * 4, 255);
+    for (std::size_t p = 0; p < surfaces.size(); ++p) {
+        glm::vec3 colour = surfaces[p] ? glm::vec3(0.08f) : glm::vec3(0.0f);
+        for (std::size_t r = 0; r < regions.size(); ++r)
+            if (regions[r].mask[p]) colour = palette[r % std::size(palette)];
+        for (int c = 0; c < 3; ++c) rgba[4 * p + static_cast<std::size_t>(c)] = toSrgb8(colour[c]);
+    }
+    writePng(prefix("regions.png"), size, size, rgba);
+}
 
 struct SceneReport {
     std::string summaryRows, regionRows, bleedingRows, leakRows, coneRows;
@@ -415,6 +492,8 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     };
     const double referenceNoise = finalRmse(secondFinal, 1.0) / std::sqrt(2.0);
 
+    if (!args.images.empty()) writeImages(args.images, entry.name, size, truthIndirect, runs, cornellBoxRegions(scene, hits, size, size), surfaces);
+
     for (const VctRun& run : runs) {
         const std::vector<float> indirect = run.images.indirect();
         const double vctIndirectOnly = maskedLuminance(indirect, indirectOnly);
@@ -492,8 +571,10 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
 
 int main(int argc, char** argv) {
     Args args;
+    std::vector<SuiteScene> scenes;
     try {
         args = parseArgs(argc, argv);
+        scenes = suite(args);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "lit-gi-accuracy: %s\n", e.what());
         return 2;
@@ -513,7 +594,7 @@ int main(int argc, char** argv) {
             voxelRule += "|---:";
         }
         std::string summary, regions, bleeding, leaks, cones, skipped;
-        for (const SuiteScene& entry : suite(args)) {
+        for (const SuiteScene& entry : scenes) {
             if (!fs::exists(entry.file)) {
                 skipped += "- " + entry.name + ": skipped, " + entry.file.lexically_normal().string() + " is not there\n";
                 std::fprintf(stderr, "%s: skipped (%s not found)\n", entry.name.c_str(), entry.file.string().c_str());
