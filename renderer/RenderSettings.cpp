@@ -104,6 +104,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("diffuseFromVoxelIrradiance", s.diffuseFromVoxelIrradiance);
     visit("voxelIrradianceVoxelsPerFrame", s.voxelIrradianceVoxelsPerFrame);
     visit("voxelIrradianceRefineVoxelsPerFrame", s.voxelIrradianceRefineVoxelsPerFrame);
+    visit("voxelRays", s.voxelRays);
     visit("bounces", s.bounces);
     visit("voxelSlice", s.voxelSlice);
     visit("voxelSliceAxis", s.voxelSliceAxis);

@@ -44,6 +44,8 @@ std::optional<VoxelChannel> parseVoxelChannel(std::string_view text);  // "radia
 
 // Most light bounces RenderSettings::bounces may ask for (each costs one cone-traced pass over the voxels).
 inline constexpr int kMaxBounces = 8;
+// The most rays per voxel RenderSettings::voxelRays asks for (more are clamped to it).
+inline constexpr int kMaxVoxelRays = 256;
 // The footprint bound of the accurate GI mode (RenderSettings::coneFootprintPerHeight, with
 // anisotropicVoxels on): the largest voxel a cone leaving a surface samples is a quarter of its
 // height above it. 0.33 was chosen with the fixed six-cone set; with the stratified cone sets
@@ -162,6 +164,16 @@ struct RenderSettings {
     // holds all 16 sets, and the bands a few voxels wide that the voxel filter leaves (docs/GI.md,
     // "The cached mode") are gone. Off by default (stills render one frame); the editor: 8192.
     int voxelIrradianceRefineVoxelsPerFrame = 0;
+    // Rays per voxel for the light the voxels gather themselves: the cached mode's irradiance and
+    // bounces 2..N. Each ray marches the voxel grid (level 0, empty 4³ blocks skipped) to the first
+    // occupied voxel and takes its radiance; rays are cosine-distributed, and each voxel of a 4 × 4
+    // patch of a surface takes every 16th of a 16 × voxelRays point set, which the voxel filter
+    // averages. 0 = the stratified cones of the accurate mode. Rays see what cones blur: light
+    // reaching a surface past an edge or through a gap, along a wall, at grazing angles (docs/GI.md,
+    // "Voxel rays": with two bounces every Cornell bar is met, which the cones miss). 32 cost about
+    // what the cones cost at 128³ on llvmpipe, more at 256³ and up (a ray crosses N voxels). 0 by
+    // default until the one-bounce nook's deficit with rays is understood (docs/GI.md).
+    int voxelRays = 0;  // 0..kMaxVoxelRays
     float coneFootprintPerHeight = kAccurateGiFootprint;  // × height above the surface (0 = off, the fast mode)
     // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
     // occupied voxel, 2-20 s per light or geometry edit on llvmpipe (docs/GI.md, "Bounces").

@@ -201,6 +201,7 @@ struct Renderer::Impl {
     int irradianceRefineRound = 0;
     std::uint32_t irradianceRefineNext = 0;
     bool injectedAnisotropic = true;
+    int injectedVoxelRays = 0;
     float injectedFootprint = 0.0f, injectedAperture = 0.0f, injectedStepScale = 0.0f, injectedTraceDistance = 0.0f,
           injectedIntensity = 0.0f;
     bool voxelsValid = false;
@@ -239,6 +240,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         settings.diffuseFromVoxelIrradiance != injectedIrradiance ||
         // The cached mode's voxel irradiance is traced with the same cone settings as the bounces.
         ((injectedBounces > 1 || injectedIrradiance) && (settings.anisotropicVoxels != injectedAnisotropic ||
+                                 ConeFeatures::of(settings).voxelRays != injectedVoxelRays ||
                                  settings.coneFootprintPerHeight != injectedFootprint ||
                                  settings.diffuseConeAperture != injectedAperture ||
                                  settings.coneStepScale != injectedStepScale ||
@@ -319,6 +321,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         injectedBounces = bounces;
         pendingBounces = bounces;
         injectedAnisotropic = settings.anisotropicVoxels;
+        injectedVoxelRays = ConeFeatures::of(settings).voxelRays;
         injectedFootprint = settings.coneFootprintPerHeight;
         injectedAperture = settings.diffuseConeAperture;
         injectedStepScale = settings.coneStepScale;

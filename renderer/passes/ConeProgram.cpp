@@ -2,17 +2,19 @@
 
 #include "RenderSettings.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace lit {
 
 ConeFeatures ConeFeatures::of(const RenderSettings& settings) {
-    return {settings.anisotropicVoxels, settings.coneFootprintPerHeight > 0.0f, settings.diffuseFromVoxelIrradiance};
+    return {settings.anisotropicVoxels, settings.coneFootprintPerHeight > 0.0f, settings.diffuseFromVoxelIrradiance,
+            std::clamp(settings.voxelRays, 0, kMaxVoxelRays)};
 }
 
 std::string ConeFeatures::defines() const {
     return std::string("#define LIT_CONE_ANISOTROPIC ") + (anisotropic ? "1" : "0") + "\n#define LIT_CONE_FOOTPRINT " +
-           (footprint ? "1" : "0") + "\n#define LIT_VOXEL_IRRADIANCE " + (voxelIrradiance ? "1" : "0") + "\n";
+           (footprint ? "1" : "0") + "\n#define LIT_VOXEL_IRRADIANCE " + (voxelIrradiance ? "1" : "0") + "\n#define LIT_VOXEL_RAYS " + (voxelRays > 0 ? "1" : "0") + "\n";
 }
 
 ConeProgram::ConeProgram(std::filesystem::path root, std::string label, std::vector<gl::ShaderStageSource> stages,
@@ -27,6 +29,7 @@ const gl::Program& ConeProgram::get(ConeFeatures features) {
         std::string label = label_;
         if (features.anisotropic) label += " (anisotropic)";
         if (features.footprint) label += " (footprint)";
+        if (features.voxelRays > 0) label += " (voxel rays)";
         program = gl::Program(root_, label, stages_, defines_ + features.defines());
     }
     return program;

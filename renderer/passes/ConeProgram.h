@@ -24,10 +24,16 @@ struct ConeFeatures {
     // The cached GI mode (docs/GI.md, "The cached mode"): L_ID gathered from the voxels' cached
     // irradiance (RenderSettings::diffuseFromVoxelIrradiance) instead of per-pixel diffuse cones.
     bool voxelIrradiance = false;
+    // Rays per voxel for the light the voxels gather themselves (the cached mode's irradiance and
+    // bounces 2..N; RenderSettings::voxelRays): > 0 compiles the per-voxel passes with rays marched
+    // through the voxel grid (LIT_VOXEL_RAYS) instead of cones; the count itself is a uniform.
+    int voxelRays = 0;
 
     static ConeFeatures of(const RenderSettings& settings);
     std::string defines() const;
-    int index() const { return (anisotropic ? 1 : 0) + (footprint ? 2 : 0) + (voxelIrradiance ? 4 : 0); }
+    int index() const {
+        return (anisotropic ? 1 : 0) + (footprint ? 2 : 0) + (voxelIrradiance ? 4 : 0) + (voxelRays > 0 ? 8 : 0);
+    }
     bool operator==(const ConeFeatures&) const = default;
 };
 
@@ -50,7 +56,7 @@ private:
     std::string label_;
     std::vector<gl::ShaderStageSource> stages_;
     std::string defines_;
-    std::array<gl::Program, 8> variants_;  // by ConeFeatures::index()
+    std::array<gl::Program, 16> variants_;  // by ConeFeatures::index()
 };
 
 }  // namespace lit

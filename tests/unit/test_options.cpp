@@ -188,6 +188,17 @@ TEST(Options, StructuralMessages) {
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--camera", ""}), "--camera expects a camera name or index, got ''");
 }
 
+// --voxel-rays sets RenderSettings::voxelRays (0 = cones); counts outside 0..kMaxVoxelRays are refused.
+TEST(Options, VoxelRays) {
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--voxel-rays", "64"}), {}).voxelRays, 64);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--voxel-rays", "0"}), {}).voxelRays, 0);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png"}), {}).voxelRays, lit::RenderSettings{}.voxelRays);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--voxel-rays", "257"}),
+              "--voxel-rays expects a ray count from 0 to 256, got '257'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--voxel-rays", "many"}),
+              "--voxel-rays expects a ray count from 0 to 256, got 'many'");
+}
+
 TEST(Options, ReferenceFlags) {
     const Options o = parseOptions({"x.gltf", "--reference", "--spp", "32", "--bounces", "all", "--seed", "7", "--out", "r.png",
                                     "--view", "indirect-diffuse"});

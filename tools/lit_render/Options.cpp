@@ -199,6 +199,13 @@ Options parseOptions(const std::vector<std::string>& args) {
             const auto n = parseInt(text, 0, 1 << 30);
             if (!n) throw UsageError("--voxel-irradiance-per-frame expects a voxel count from 0, got '" + text + "'");
             options.voxelIrradiancePerFrame = *n;
+        } else if (flag == "--voxel-rays") {
+            const std::string text = value("a ray count");
+            const auto n = parseInt(text, 0, kMaxVoxelRays);
+            if (!n)
+                throw UsageError("--voxel-rays expects a ray count from 0 to " + std::to_string(kMaxVoxelRays) + ", got '" +
+                                 text + "'");
+            options.voxelRays = *n;
         } else if (flag == "--voxel-irradiance-refine") {
             const std::string text = value("a voxel count");
             const auto n = parseInt(text, 0, 1 << 30);
@@ -346,6 +353,7 @@ RenderSettings applyOptions(const Options& options, RenderSettings base) {
     if (options.voxelIrradiance) base.diffuseFromVoxelIrradiance = *options.voxelIrradiance;
     if (options.voxelIrradiancePerFrame) base.voxelIrradianceVoxelsPerFrame = *options.voxelIrradiancePerFrame;
     if (options.voxelIrradianceRefine) base.voxelIrradianceRefineVoxelsPerFrame = *options.voxelIrradianceRefine;
+    if (options.voxelRays) base.voxelRays = *options.voxelRays;
     if (options.footprint) base.coneFootprintPerHeight = *options.footprint;
     if (options.culling) base.frustumCulling = *options.culling;
     if (options.indirectScale) base.indirectScale = *options.indirectScale;
@@ -439,6 +447,10 @@ std::string usageText() {
            "  --voxel-irradiance-refine N  then: voxels traced again per frame with the other cone sets\n"
            "                       until each holds all 16 (default " +
            std::to_string(defaults.voxelIrradianceRefineVoxelsPerFrame) + " = off; with --frames)\n"
+           "  --voxel-rays N       rays per voxel for the voxels' own gathered light (the cached mode's\n"
+           "                       irradiance, bounces 2..N), marched through the voxel grid (default " +
+           std::to_string(defaults.voxelRays) + ";\n"
+           "                       0 = the accurate mode's cones; at most " + std::to_string(kMaxVoxelRays) + ")\n"
            "  --footprint X        largest voxel a cone leaving a surface samples, × its height above the\n"
            "                       surface (default " + formatNumber(defaults.coneFootprintPerHeight) + "; 0 = unbounded)\n"
            "  --frames N           frames rendered before the image is read (default 1)\n"

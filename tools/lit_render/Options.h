@@ -57,6 +57,7 @@ struct Options {
     std::optional<GiMode> giMode;      // --gi-mode fast|accurate: both fields below at once (they override it)
     std::optional<bool> voxelIrradiance;  // --voxel-irradiance on|off (RenderSettings::diffuseFromVoxelIrradiance)
     std::optional<int> voxelIrradiancePerFrame;  // --voxel-irradiance-per-frame N (RenderSettings::voxelIrradianceVoxelsPerFrame)
+    std::optional<int> voxelRays;                // --voxel-rays N (RenderSettings::voxelRays)
     std::optional<int> voxelIrradianceRefine;    // --voxel-irradiance-refine N (RenderSettings::voxelIrradianceRefineVoxelsPerFrame)
     std::optional<bool> anisotropic;   // --anisotropic on|off: directional voxels for mip levels ≥ 1
     std::optional<float> footprint;    // --footprint X: RenderSettings::coneFootprintPerHeight (0 = off)
