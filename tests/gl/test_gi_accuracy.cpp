@@ -60,6 +60,20 @@ glm::vec3 meanOf(const HdrImage& image, float u0, float v0, float u1, float v1) 
 
 class GiAccuracy : public GlFixture {
 protected:
+    // Renders `settings` on the running renderer (whose scene is `scene`: only the settings changed) and
+    // on a fresh one; returns the fresh image and the running one's difference from it (0: the change
+    // was picked up).
+    std::pair<HdrImage, double> againstFreshRenderer(const Scene& scene, const CameraView& camera,
+                                                     const RenderSettings& settings) {
+        renderer_->render(scene, camera, settings);
+        const HdrImage changed{settings.width, settings.height, renderer_->readHdrRgb()};
+        Renderer fresh(sourceDir() / "shaders", log_);
+        fresh.setScene(scene);
+        fresh.render(scene, camera, settings);
+        HdrImage freshImage{settings.width, settings.height, fresh.readHdrRgb()};
+        const double stale = relativeDifference(changed, freshImage);
+        return {std::move(freshImage), stale};
+    }
     // Mean absolute per-channel difference between a and b, relative to b's mean.
     static double relativeDifference(const HdrImage& a, const HdrImage& b) {
         double difference = 0.0, total = 0.0;
@@ -832,11 +846,8 @@ TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheConeSettingsCha
     const HdrImage before = renderFrom(scene, camera, settings);
     settings.coneFootprintPerHeight = 0.5f;
     settings.maxTraceDistance = 0.5f;
-    renderer_->render(scene, camera, settings);  // the same renderer and scene: only the settings changed
-    const HdrImage changed{settings.width, settings.height, renderer_->readHdrRgb()};
-    renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
-    const HdrImage fresh = renderFrom(scene, camera, settings);
-    const double settingEffect = relativeDifference(before, fresh), stale = relativeDifference(changed, fresh);
+    const auto [fresh, stale] = againstFreshRenderer(scene, camera, settings);
+    const double settingEffect = relativeDifference(before, fresh);
     std::printf("cached mode, footprint 0.25 -> 0.5 and trace distance 1 -> 0.5: L_ID before vs fresh %.3f %%, "
                 "after the change vs fresh %.5f %%\n",
                 100.0 * settingEffect, 100.0 * stale);
@@ -856,13 +867,8 @@ TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheVoxelRaysChange
     const HdrImage cones = renderFrom(scene, camera, settings);
     for (const int rays : {32, 8}) {
         settings.voxelRays = rays;
-        renderer_->render(scene, camera, settings);  // the same renderer and scene: only the setting changed
-        const HdrImage changed{settings.width, settings.height, renderer_->readHdrRgb()};
-        Renderer fresh(sourceDir() / "shaders", log_);
-        fresh.setScene(scene);
-        fresh.render(scene, camera, settings);
-        const HdrImage freshImage{settings.width, settings.height, fresh.readHdrRgb()};
-        const double settingEffect = relativeDifference(cones, freshImage), stale = relativeDifference(changed, freshImage);
+        const auto [fresh, stale] = againstFreshRenderer(scene, camera, settings);
+        const double settingEffect = relativeDifference(cones, fresh);
         std::printf("cached mode, %d voxel rays: L_ID against the cones' %.3f %%, after the change vs fresh %.5f %%\n", rays,
                     100.0 * settingEffect, 100.0 * stale);
         ASSERT_GT(settingEffect, 0.01) << "rays must change the light, else the test sees nothing";
