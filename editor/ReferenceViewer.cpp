@@ -55,15 +55,8 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
         // so the two views compare at the same brightness.
         bytes = reference::toneMapToRgba8(rgb, std::exp2(renderer.exposureEv(settings)));
     } else {
-        const std::vector<float> colours = reference::relativeErrorColours(renderer.readHdrRgb(), rgb, maxError_);
-        bytes.assign(colours.size() / 3 * 4, 255);
-        for (std::size_t p = 0; p < colours.size() / 3; ++p)
-            for (int c = 0; c < 3; ++c) {
-                // The ramp is meant as display colour: encode it for the sRGB blit.
-                const float v = colours[3 * p + static_cast<std::size_t>(c)];
-                const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-                bytes[4 * p + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255.0f));
-            }
+        // The ramp is meant as display colour: encoded for the sRGB blit.
+        bytes = reference::displayColoursToRgba8(reference::relativeErrorColours(renderer.readHdrRgb(), rgb, maxError_));
     }
     if (!texture_ || texture_.desc().width != width || texture_.desc().height != height)
         texture_ = gl::Texture("reference view", {GL_TEXTURE_2D, GL_SRGB8_ALPHA8, width, height, 1, 1});

@@ -165,10 +165,10 @@ struct RenderSettings {
     // "The cached mode") are gone. Off by default (stills render one frame); the editor: 8192.
     int voxelIrradianceRefineVoxelsPerFrame = 0;
     // Rays per voxel for the light the voxels gather themselves: the cached mode's irradiance and
-    // bounces 2..N. Each ray marches the voxel grid (level 0, empty 4³ blocks skipped) to the first
-    // occupied voxel and takes its radiance; rays are cosine-distributed, and each voxel of a 4 × 4
-    // patch of a surface takes every 16th of a 16 × voxelRays point set, which the voxel filter
-    // averages. 0 = the stratified cones of the accurate mode. Rays see what cones blur: light
+    // bounces 2..N. Each ray marches the voxel grid (level 0, empty 16³ and 4³ blocks skipped) to the
+    // first occupied voxel and takes its radiance; a voxel's rays are cosine-distributed over its
+    // hemisphere, offset 16 ways over a 4 × 4 patch of a surface, which the voxel filter averages
+    // (16 × voxelRays directions). 0 = the stratified cones of the accurate mode. Rays see what cones blur: light
     // reaching a surface past an edge or through a gap, along a wall, at grazing angles (docs/GI.md,
     // "Voxel rays": with two bounces every Cornell bar is met, which the cones miss). 32 cost about
     // what the cones cost at 128³ on llvmpipe, more at 256³ and up (a ray crosses N voxels). 0 by

@@ -27,9 +27,9 @@
 // of cones, uVoxelRays cosine-distributed rays per voxel, each marched through the voxel grid to
 // the first occupied voxel, whose radiance it takes. A cone's opacity is a coverage fraction
 // composited along it as if independent from sample to sample, so a wall the cone runs beside, or
-// a floor it skims, counts whole; a ray is blocked or not. The rays of a voxel are every 16th point
-// of a 16 × uVoxelRays point set (the voxel's cone-set index picks which), so the filter's 4 × 4
-// patch averages the whole set, as it averages the 16 cone sets.
+// a floor it skims, counts whole; a ray is blocked or not. A voxel's rays cover its whole hemisphere,
+// offset by its set (voxelSet), so the filter's 4 × 4 patch averages 16 × uVoxelRays directions, as
+// it averages the 16 cone sets (rayIrradiance).
 //
 // Defines set by InjectPass: LIT_BOUNCE_RGBA8 (1: rgba8 direct volume, 0: rgba16f);
 // LIT_BOUNCE_IRRADIANCE 1 (the cached GI mode, InjectPass::executeIrradiance, voxel_irradiance.glsl):
@@ -115,12 +115,13 @@ vec3 traceVoxelRay(vec3 origin, vec3 dir) {
             if (s.a > 0.0) {
                 vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, cell).r);
                 float agreement = length(averaged);
-                if (agreement >= kOneSidedMinLength && dot(averaged, dir) > kRayBackFaceCosine * agreement) return vec3(0.0);
-                return decodeRadiance(s.rgb / s.a);
+                bool fromBehind = agreement >= kOneSidedMinLength && dot(averaged, dir) > kRayBackFaceCosine * agreement;
+                return fromBehind ? vec3(0.0) : decodeRadiance(s.rgb / s.a);
             }
         }
+        // The cell to leave: the empty 16³ or 4³ block around the ray, else its voxel.
         float size = coarseEmpty ? float(1 << kRaySkipLevelCoarse) : (blockEmpty ? float(1 << kRaySkipLevel) : 1.0);
-        vec3 corner = coarseEmpty ? vec3(coarse << kRaySkipLevelCoarse) : (blockEmpty ? vec3(block << kRaySkipLevel) : vec3(cell));
+        vec3 corner = floor(vec3(cell) / size) * size;
         vec3 tExit = (corner + exitSide * size - g0) * inv;
         t = min(tExit.x, min(tExit.y, tExit.z)) + 1e-3;
     }
@@ -147,14 +148,20 @@ vec3 rayIrradiance(vec3 origin, vec3 normal, int set) {
 }
 #endif
 
+// The cone set (or ray set) voxel v traces: its place in the 4 × 4 pattern along its surface, turned
+// by the refinement round (uSetOffset) in the cached mode's irradiance pass.
+int voxelSet(ivec3 v, vec3 normal) {
+#if LIT_BOUNCE_IRRADIANCE
+    return (voxelConeSetIndex(v, normal) + uSetOffset) % kConeSetCount;
+#else
+    return voxelConeSetIndex(v, normal);
+#endif
+}
+
 // Irradiance/π of voxel v's surface seen from the cone origin `origin` with normal `normal`.
 vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float maxDistance) {
 #if LIT_VOXEL_RAYS
-#if LIT_BOUNCE_IRRADIANCE
-    return rayIrradiance(origin, normal, (voxelConeSetIndex(v, normal) + uSetOffset) % kConeSetCount);
-#else
-    return rayIrradiance(origin, normal, voxelConeSetIndex(v, normal));
-#endif
+    return rayIrradiance(origin, normal, voxelSet(v, normal));
 #elif LIT_CONE_FOOTPRINT && LIT_IRRADIANCE_ALL_SETS
     vec3 cones[kDiffuseConeCount];
     vec3 sum = vec3(0.0);
@@ -164,12 +171,7 @@ vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float m
     return sum / float(kConeSetCount);
 #elif LIT_CONE_FOOTPRINT
     vec3 cones[kDiffuseConeCount];
-#if LIT_BOUNCE_IRRADIANCE
-    int set = (voxelConeSetIndex(v, normal) + uSetOffset) % kConeSetCount;
-#else
-    int set = voxelConeSetIndex(v, normal);
-#endif
-    return traceDiffuseStratified(origin, tangentFrame(normal), set, aperture, maxDistance, cones);
+    return traceDiffuseStratified(origin, tangentFrame(normal), voxelSet(v, normal), aperture, maxDistance, cones);
 #else
     return traceDiffuse(origin, normal, aperture, maxDistance);
 #endif

@@ -13,8 +13,9 @@ ConeFeatures ConeFeatures::of(const RenderSettings& settings) {
 }
 
 std::string ConeFeatures::defines() const {
-    return std::string("#define LIT_CONE_ANISOTROPIC ") + (anisotropic ? "1" : "0") + "\n#define LIT_CONE_FOOTPRINT " +
-           (footprint ? "1" : "0") + "\n#define LIT_VOXEL_IRRADIANCE " + (voxelIrradiance ? "1" : "0") + "\n#define LIT_VOXEL_RAYS " + (voxelRays > 0 ? "1" : "0") + "\n";
+    const auto define = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
+    return define("LIT_CONE_ANISOTROPIC", anisotropic) + define("LIT_CONE_FOOTPRINT", footprint) +
+           define("LIT_VOXEL_IRRADIANCE", voxelIrradiance) + define("LIT_VOXEL_RAYS", voxelRays > 0);
 }
 
 ConeProgram::ConeProgram(std::filesystem::path root, std::string label, std::vector<gl::ShaderStageSource> stages,

@@ -8,9 +8,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace lit::reference {
+
+// A linear value in [0, 1] (clamped) as an 8-bit sRGB code: the sRGB transfer function (IEC 61966-2-1).
+inline std::uint8_t encodeSrgb8(float linear) {
+    const float v = std::clamp(linear, 0.0f, 1.0f);
+    const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+    return static_cast<std::uint8_t>(std::lround(s * 255.0f));
+}
+
+// Display colours (3 floats per pixel in [0, 1], as relativeErrorColours gives them) as sRGB-encoded
+// RGBA8, alpha 255: what a PNG or an sRGB texture of the Difference view holds.
+inline std::vector<std::uint8_t> displayColoursToRgba8(const std::vector<float>& colours) {
+    std::vector<std::uint8_t> rgba(colours.size() / 3 * 4, 255);
+    for (std::size_t p = 0; p < colours.size() / 3; ++p)
+        for (std::size_t c = 0; c < 3; ++c) rgba[4 * p + c] = encodeSrgb8(colours[3 * p + c]);
+    return rgba;
+}
 
 // The ramp at t ∈ [−1, 1] (t = e / max): blue (0.10, 0.25, 0.95) → white → red (0.95, 0.15, 0.10).
 inline glm::vec3 differenceRampColour(float t) {

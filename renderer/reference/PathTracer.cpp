@@ -1,5 +1,6 @@
 #include "reference/PathTracer.h"
 
+#include "reference/DifferenceImage.h"
 #include "reference/MicrofacetBrdf.h"
 #include "reference/PunctualLights.h"
 
@@ -435,12 +436,8 @@ std::vector<std::uint8_t> toneMapToRgba8(const std::vector<float>& rgb, float ex
         const float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;
         return std::clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0f, 1.0f);
     };
-    const auto encode = [](float c) {  // the sRGB transfer function (IEC 61966-2-1)
-        const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-        return static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255.0f));
-    };
     for (std::size_t p = 0; p < rgb.size() / 3; ++p)
-        for (int c = 0; c < 3; ++c) rgba[4 * p + static_cast<std::size_t>(c)] = encode(aces(std::max(rgb[3 * p + static_cast<std::size_t>(c)], 0.0f) * exposure));
+        for (int c = 0; c < 3; ++c) rgba[4 * p + static_cast<std::size_t>(c)] = encodeSrgb8(aces(std::max(rgb[3 * p + static_cast<std::size_t>(c)], 0.0f) * exposure));
     return rgba;
 }
 

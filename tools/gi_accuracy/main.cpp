@@ -271,22 +271,14 @@ std::string ratioCell(double vct, double truth) { return truth > 0.0 ? format("%
 void writeImages(const fs::path& folder, const std::string& scene, int size, const std::vector<float>& truthIndirect,
                  const std::vector<VctRun>& runs, const std::vector<NamedRegion>& regions, const PixelMask& surfaces) {
     fs::create_directories(folder);
-    const auto toSrgb8 = [](float v) {
-        v = std::clamp(v, 0.0f, 1.0f);
-        const float encoded = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-        return static_cast<std::uint8_t>(std::lround(encoded * 255.0f));
-    };
     const auto prefix = [&](const std::string& what) { return folder / (scene + "_" + what); };
     writeHdr(prefix("reference_indirect.hdr"), size, size, truthIndirect);
     for (const VctRun& run : runs) {
         const std::vector<float> indirect = run.images.indirect();
         const std::string name = "vct" + std::to_string(run.voxels);
         writeHdr(prefix(name + "_indirect.hdr"), size, size, indirect);
-        const std::vector<float> colours = relativeErrorColours(indirect, truthIndirect, 0.5f);
-        std::vector<std::uint8_t> rgba(colours.size() / 3 * 4, 255);
-        for (std::size_t p = 0; p < colours.size() / 3; ++p)
-            for (std::size_t c = 0; c < 3; ++c) rgba[4 * p + c] = toSrgb8(colours[3 * p + c]);
-        writePng(prefix(name + "_difference.png"), size, size, rgba);
+        writePng(prefix(name + "_difference.png"), size, size,
+                 displayColoursToRgba8(relativeErrorColours(indirect, truthIndirect, 0.5f)));
     }
     if (regions.empty()) return;
     const glm::vec3 palette[] = {{1, 0.2f, 0.2f}, {0.2f, 1, 0.2f}, {0.3f, 0.4f, 1}, {1, 1, 0.2f}, {1, 0.3f, 1}, {0.2f, 1, 1}};
@@ -295,7 +287,7 @@ void writeImages(const fs::path& folder, const std::string& scene, int size, con
         glm::vec3 colour = surfaces[p] ? glm::vec3(0.08f) : glm::vec3(0.0f);
         for (std::size_t r = 0; r < regions.size(); ++r)
             if (regions[r].mask[p]) colour = palette[r % std::size(palette)];
-        for (int c = 0; c < 3; ++c) rgba[4 * p + static_cast<std::size_t>(c)] = toSrgb8(colour[c]);
+        for (int c = 0; c < 3; ++c) rgba[4 * p + static_cast<std::size_t>(c)] = encodeSrgb8(colour[c]);
     }
     writePng(prefix("regions.png"), size, size, rgba);
 }
@@ -492,7 +484,8 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     };
     const double referenceNoise = finalRmse(secondFinal, 1.0) / std::sqrt(2.0);
 
-    if (!args.images.empty()) writeImages(args.images, entry.name, size, truthIndirect, runs, cornellBoxRegions(scene, hits, size, size), surfaces);
+    if (!args.images.empty())
+        writeImages(args.images, entry.name, size, truthIndirect, runs, cornellBoxRegions(scene, hits, size, size), surfaces);
 
     for (const VctRun& run : runs) {
         const std::vector<float> indirect = run.images.indirect();

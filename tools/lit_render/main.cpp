@@ -597,16 +597,9 @@ void compareWithReference(const Options& options, const lit::HdrImage& truth, co
                 100.0 * figures.relativeRmse);
     if (options.difference.empty()) return;
     const float maxError = options.maxError.value_or(lit::cli::kDefaultMaxError);
-    const std::vector<float> colours = lit::reference::relativeErrorColours(rgb, truth.rgb, maxError);
-    std::vector<std::uint8_t> rgba(colours.size() / 3 * 4, 255);
-    for (std::size_t p = 0; p < colours.size() / 3; ++p)
-        for (std::size_t c = 0; c < 3; ++c) {
-            // The ramp is display colour: encode it as sRGB, as the editor's blit does.
-            const float v = std::clamp(colours[3 * p + c], 0.0f, 1.0f);
-            const float encoded = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-            rgba[4 * p + c] = static_cast<std::uint8_t>(std::lround(encoded * 255.0f));
-        }
-    lit::writePng(options.difference, truth.width, truth.height, rgba);
+    // The ramp is display colour: encoded as sRGB, as the editor's blit does.
+    lit::writePng(options.difference, truth.width, truth.height,
+                  lit::reference::displayColoursToRgba8(lit::reference::relativeErrorColours(rgb, truth.rgb, maxError)));
     std::printf("wrote %s (relative error, ramp ends at ±%.0f %%)\n", options.difference.string().c_str(), 100.0 * maxError);
 }
 
