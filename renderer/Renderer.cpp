@@ -125,6 +125,12 @@ struct Renderer::Impl {
 
     // Voxelize / inject / mipmaps when what they depend on changed. Returns whether it ran.
     void updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty, DrawCounters& counters);
+    // Whether the cached mode's update runs over several frames (voxelIrradianceVoxelsPerFrame
+    // entries each) rather than all in the edit's frame: only over a complete list longer than that.
+    bool spreadOverFrames(const RenderSettings& settings) const {
+        const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+        return settings.diffuseFromVoxelIrradiance && perFrame > 0 && perFrame < occupiedCount && occupiedListComplete;
+    }
     // Logs what the last GI update did and what it cost, once its GPU timings are in.
     void reportGiUpdate();
 
@@ -200,6 +206,11 @@ struct Renderer::Impl {
     // round under way (1..kConeSets − 1; kConeSets: done) and its next list entry.
     int irradianceRefineRound = 0;
     std::uint32_t irradianceRefineNext = 0;
+    // Bounces 2..N spread over frames as the irradiance update is (the cached mode with
+    // voxelIrradianceVoxelsPerFrame > 0): the bounce under way (0: none; the irradiance update waits
+    // for the last one) and its next list entry.
+    int bounceUnderWay = 0;
+    std::uint32_t bounceNext = 0;
     bool injectedAnisotropic = true;
     int injectedVoxelRays = 0;
     float injectedFootprint = 0.0f, injectedAperture = 0.0f, injectedStepScale = 0.0f, injectedTraceDistance = 0.0f,
@@ -296,14 +307,23 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             Profiler::Scope scope(profiler, "mipmap");
             mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
         }
-        // Bounces 2..N: each re-injects the voxels' cone-traced indirect light (docs/GI.md).
+        // Bounces 2..N: each re-injects the voxels' traced indirect light (docs/GI.md). In the
+        // cached mode with the update spread over frames, they are spread too (below): a light
+        // dragged in the editor would otherwise stall every frame of the drag for whole bounces.
         const int bounces = std::clamp(settings.bounces, 1, kMaxBounces);
+        bounceUnderWay = 0;
         if (bounces > 1) {
             voxels.ensureBounceVolumes();
             Profiler::Scope scope(profiler, "bounces");
-            for (int b = 2; b <= bounces; ++b) {
-                inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete);
-                mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
+            if (spreadOverFrames(settings)) {
+                inject.beginBounces(voxels);
+                bounceUnderWay = 2;
+                bounceNext = 0;
+            } else {
+                for (int b = 2; b <= bounces; ++b) {
+                    inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete);
+                    mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
+                }
             }
         }
         if (settings.diffuseFromVoxelIrradiance) {
@@ -346,7 +366,23 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     // Sponza here, as much as a third of the trace it follows; docs/PERFORMANCE.md).
     std::vector<std::pair<std::uint32_t, std::uint32_t>> tracedRanges;
     bool filterAll = false;
-    if (refine) {
+    if (bounceUnderWay > 0) {
+        // A spread bounce: voxelIrradianceVoxelsPerFrame entries a frame (all that is left if the
+        // setting went to 0 meanwhile); the last entry ends the bounce (level 0 and its mips), and
+        // the last bounce lets the irradiance update start in the next frame.
+        Profiler::Scope scope(profiler, "bounces");
+        const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+        const std::uint32_t left = occupiedCount - std::min(bounceNext, occupiedCount);
+        const std::uint32_t count = perFrame == 0 ? left : std::min(perFrame, left);
+        inject.traceBounce(voxels, ConeFeatures::of(settings), true, bounceNext, count);
+        bounceNext += count;
+        if (bounceNext >= occupiedCount) {
+            inject.endBounce(voxels);
+            mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
+            bounceNext = 0;
+            bounceUnderWay = bounceUnderWay < injectedBounces ? bounceUnderWay + 1 : 0;
+        }
+    } else if (refine) {
         // Round k traces every voxel's set + k once over the list, budget entries a frame; each
         // voxel then averages k + 1 sets. The light is right throughout: only its sampling improves.
         Profiler::Scope scope(profiler, "voxel irradiance");
@@ -367,7 +403,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     } else if (settings.diffuseFromVoxelIrradiance && irradianceRemaining > 0) {
         Profiler::Scope scope(profiler, "voxel irradiance");
         const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
-        if (perFrame == 0 || perFrame >= occupiedCount || !occupiedListComplete) {
+        if (!spreadOverFrames(settings)) {
             inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete);
             irradianceRemaining = 0;
         } else {

@@ -43,6 +43,9 @@
 layout(local_size_x = LIT_INJECT_GROUP_SIZE, local_size_y = LIT_INJECT_GROUP_SIZE, local_size_z = LIT_INJECT_GROUP_SIZE) in;
 
 LIT_VOXEL_LIST_READER
+// The amortised update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces a part of the list
+// at a time (listedVoxelInRange): the irradiance, and the bounces before it.
+LIT_VOXEL_LIST_RANGE_READER
 
 #if LIT_BOUNCE_RGBA8
 #define BOUNCE_FORMAT rgba8
@@ -67,9 +70,6 @@ layout(binding = LIT_IMG_VOXEL_BOUNCE, BOUNCE_FORMAT) uniform image3D voxelIrrad
 // weight uBlend = 1 / (k + 1); round 0 (the edit's trace) writes with weight 1.
 uniform int uSetOffset;
 uniform float uBlend;
-// The amortised update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces a part of the list
-// at a time (listedVoxelInRange).
-LIT_VOXEL_LIST_RANGE_READER
 #else
 layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform readonly image3D voxelDirect;
 layout(binding = LIT_IMG_VOXEL_BOUNCE) uniform writeonly image3D voxelBounce;
@@ -180,11 +180,7 @@ vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float m
 void main() {
     ivec3 v;
     if (uFromList != 0) {
-#if LIT_BOUNCE_IRRADIANCE
         if (!listedVoxelInRange(v)) return;
-#else
-        if (!listedVoxel(v)) return;
-#endif
     } else {
         v = ivec3(gl_GlobalInvocationID);
     }

@@ -78,32 +78,48 @@ std::vector<gl::Program*> InjectPass::programs() {
     return programs;
 }
 
-void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList) {
+void InjectPass::beginBounces(const VoxelVolume& volume) {
     const int n = volume.resolution();
     if (n <= 0 || !volume.direct()) return;
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    // direct = the injected radiance; bounce starts as it too, so the voxels the list skips (empty
+    // ones: radiance 0) hold the right value when bounce is copied back.
+    glCopyImageSubData(volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.direct().id(), GL_TEXTURE_3D, 0, 0, 0,
+                       0, n, n, n);
+    glCopyImageSubData(volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.bounce().id(), GL_TEXTURE_3D, 0, 0, 0,
+                       0, n, n, n);
+}
+
+void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
+                             std::uint32_t count) {
+    if (volume.resolution() <= 0 || !volume.direct()) return;
     const bool rgba8 = volume.radianceRgba8();
     ConeProgram& programs = rgba8 ? bounce8_ : bounce16f_;
     if (programs.empty())
         programs = ConeProgram(shaderRoot_, rgba8 ? "bounce rgba8" : "bounce rgba16f", {{GL_COMPUTE_SHADER, "bounce.comp.glsl"}},
                                rgba8 ? "#define LIT_BOUNCE_RGBA8 1\n" : "#define LIT_BOUNCE_RGBA8 0\n", features);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    if (first) {
-        // direct = the injected radiance; bounce starts as it too, so the voxels the list skips
-        // (empty ones: radiance 0) hold the right value when bounce is copied back.
-        glCopyImageSubData(volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.direct().id(), GL_TEXTURE_3D, 0, 0,
-                           0, 0, n, n, n);
-        glCopyImageSubData(volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.bounce().id(), GL_TEXTURE_3D, 0, 0,
-                           0, 0, n, n, n);
-    }
     const gl::Program& program = programs.get(features);
     useWithVoxelSurfaces(program, volume, features);
     glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY, volume.radianceFormat());
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, volume.radianceFormat());
-    dispatchOverVoxels(volume, program, fromList);
+    dispatchListRange(volume, program, fromList, first, count);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void InjectPass::endBounce(const VoxelVolume& volume) {
+    const int n = volume.resolution();
+    if (n <= 0 || !volume.direct()) return;
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     // The bounce replaces level 0; the caller rebuilds the mips from it.
     glCopyImageSubData(volume.bounce().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0,
                        0, n, n, n);
+}
+
+void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList) {
+    if (first) beginBounces(volume);
+    traceBounce(volume, features, fromList);
+    endBounce(volume);
 }
 
 std::size_t InjectPass::irradianceBytes(int n, bool radianceRgba8) {

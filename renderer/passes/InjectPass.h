@@ -32,13 +32,20 @@ public:
     // every voxel of the grid, empty ones written as 0.
     void execute(const VoxelVolume& volume, bool fromList = true);
 
-    // Light bounces: after execute() and a full mip build (MipmapPass::execute), each call adds one
-    // bounce: level 0 becomes direct radiance + albedo × the voxel's cone-traced indirect diffuse
-    // (shaders/bounce.comp.glsl). The caller rebuilds the mips after each call. The first call
-    // keeps a copy of the direct radiance in volume.direct() (allocated by ensureBounceVolumes,
-    // which the caller must have called); `first` says whether this is it. `fromList`: only the
-    // occupied-voxel list's voxels trace cones (as execute); false when the list overflowed.
-    // `features`: the cone features to trace with (ConeFeatures::of the settings).
+    // Light bounces: after execute() and a full mip build (MipmapPass::execute), each bounce makes
+    // level 0 direct radiance + albedo × the voxel's traced indirect diffuse (shaders/bounce.comp.glsl),
+    // and the caller rebuilds the mips after it. beginBounces, once before the first bounce, keeps a
+    // copy of the direct radiance in volume.direct() (allocated by ensureBounceVolumes, which the
+    // caller must have called); traceBounce traces the list entries [first, first + count) (count 0:
+    // all of them; the cached mode spreads a bounce over frames, Renderer) into volume.bounce(),
+    // reading the radiance volume as it stands; endBounce, once every voxel was traced, copies the
+    // bounce into level 0. `fromList`: only the occupied-voxel list's voxels trace (as execute);
+    // false when the list overflowed. `features`: the cone features to trace with
+    // (ConeFeatures::of the settings). executeBounce is one whole bounce (begin when `first`).
+    void beginBounces(const VoxelVolume& volume);
+    void traceBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList = true, std::uint32_t first = 0,
+                     std::uint32_t count = 0);
+    void endBounce(const VoxelVolume& volume);
     void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList = true);
 
     // The cached GI mode (RenderSettings::diffuseFromVoxelIrradiance): after execute() and a full
