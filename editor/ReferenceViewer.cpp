@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -35,7 +36,9 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
         return;
     }
     reference::ReferenceSettings referenceSettings;
-    referenceSettings.bounces = settings.gi ? 1 : 0;  // the VCT's light paths
+    // The VCT's light paths: its bounces with GI on, direct light only with GI off.
+    referenceBounces_ = settings.gi ? std::clamp(settings.bounces, 1, kMaxBounces) : 0;
+    referenceSettings.bounces = referenceBounces_;
     // The same sky and default sun as the rasterizer (docs/REFERENCE.md).
     tracer_.update(scene, camera, settings.width, settings.height, referenceSettings, &settings);
 
@@ -96,7 +99,11 @@ void ReferenceViewer::drawWindow(ImVec2 topRight, ImGuiCond placeCondition) {
             const reference::ProgressiveStatus s = tracer_.status();
             ImGui::Text("%d spp, %.0f samples/s, %.2f Mrays/s%s", s.samplesPerPixel, s.samplesPerSecond,
                         s.raysPerSecond * 1e-6, s.running ? "" : " (done)");
-            ImGui::TextDisabled("One bounce with GI on, direct light only with GI off; restarts on any edit");
+            if (referenceBounces_ > 0)
+                ImGui::TextDisabled("%d bounce%s, as the GI's; restarts on any edit", referenceBounces_,
+                                    referenceBounces_ > 1 ? "s" : "");
+            else
+                ImGui::TextDisabled("Direct light only (GI off); restarts on any edit");
         }
     }
     if (mode_ == ReferenceMode::Difference) {

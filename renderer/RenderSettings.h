@@ -171,13 +171,15 @@ struct RenderSettings {
     // (16 × voxelRays directions). 0 = the stratified cones of the accurate mode. Rays see what cones blur: light
     // reaching a surface past an edge or through a gap, along a wall, at grazing angles (docs/GI.md,
     // "Voxel rays": with two bounces every Cornell bar is met, which the cones miss). 32 cost about
-    // what the cones cost at 128³ on llvmpipe, more at 256³ and up (a ray crosses N voxels). 0 by
-    // default until the one-bounce nook's deficit with rays is understood (docs/GI.md).
-    int voxelRays = 0;  // 0..kMaxVoxelRays
+    // what the cones cost at 128³ on llvmpipe, more at 256³ and up (a ray crosses N voxels).
+    int voxelRays = 32;  // 0..kMaxVoxelRays
     float coneFootprintPerHeight = kAccurateGiFootprint;  // × height above the surface (0 = off, the fast mode)
-    // 1 by default: a 2nd bounce traces six cones (five sub-cones each near the surface) from every
-    // occupied voxel, 2-20 s per light or geometry edit on llvmpipe (docs/GI.md, "Bounces").
-    int bounces = 1;                      // 1..8
+    // Light bounces: 1 = direct light only is injected (one bounce reaches the pixels), 2 = the
+    // voxels also reflect the light they gather (issue #11's default: with 32 voxel rays every
+    // Cornell region and bleeding ratio within ±20 % of the two-bounce reference, docs/GI.md "Two
+    // bounces with voxel rays by default"). Each further bounce is one more trace of every occupied
+    // voxel per light or geometry edit (Cornell 128³ on llvmpipe: ≈ 1.5 s; spread over frames in the editor).
+    int bounces = 2;                      // 1..8
     float voxelSlice = 0.5f;          // slice view: slice position along the axis (0..1)
     int voxelSliceAxis = 2;           // slice view: 0 X, 1 Y, 2 Z
     int voxelMip = 0;                 // voxel views: mip level (clamped to the volume's levels)

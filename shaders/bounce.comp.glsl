@@ -159,10 +159,15 @@ int voxelSet(ivec3 v, vec3 normal) {
 }
 
 // Irradiance/π of voxel v's surface seen from the cone origin `origin` with normal `normal`.
+// LIT_IRRADIANCE_ALL_SETS (the irradiance pass only): every set, averaged, instead of the voxel's one.
 vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float maxDistance) {
-#if LIT_VOXEL_RAYS
+#if LIT_VOXEL_RAYS && LIT_BOUNCE_IRRADIANCE && LIT_IRRADIANCE_ALL_SETS
+    vec3 sum = vec3(0.0);
+    for (int set = 0; set < kConeSetCount; ++set) sum += rayIrradiance(origin, normal, set);
+    return sum / float(kConeSetCount);
+#elif LIT_VOXEL_RAYS
     return rayIrradiance(origin, normal, voxelSet(v, normal));
-#elif LIT_CONE_FOOTPRINT && LIT_IRRADIANCE_ALL_SETS
+#elif LIT_CONE_FOOTPRINT && LIT_BOUNCE_IRRADIANCE && LIT_IRRADIANCE_ALL_SETS
     vec3 cones[kDiffuseConeCount];
     vec3 sum = vec3(0.0);
     mat3 frame = tangentFrame(normal);
