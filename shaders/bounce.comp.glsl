@@ -129,18 +129,23 @@ vec3 traceVoxelRay(vec3 origin, vec3 dir) {
 }
 
 // Irradiance/π at `origin` over the hemisphere of `normal`: the mean radiance of uVoxelRays
-// cosine-distributed rays (the estimator of (1/π)∫L cosθ dω). Ray i of set s: u₁ = (i + (s + ½)/16)
-// / rays (sin²θ, uniform in projected solid angle), u₂ = radical inverse of i + s/16 (azimuth), mapped
-// to the disk and lifted to the hemisphere (Malley). Each voxel's rays are a Hammersley set over the
-// whole hemisphere, and the 16 sets of a 4 × 4 patch fill its strata with 16 different offsets: a
-// voxel whose filter window is cut short (by an edge) still sees every direction.
-vec3 rayIrradiance(vec3 origin, vec3 normal, int set) {
+// cosine-distributed rays (the estimator of (1/π)∫L cosθ dω). Ray i of set s: u₁ = (i + (s + j₁)/16)
+// / rays (sin²θ, uniform in projected solid angle), u₂ = radical inverse of i + s/16 + j₂ (azimuth),
+// mapped to the disk and lifted to the hemisphere (Malley). Each voxel's rays are a Hammersley set
+// over the whole hemisphere, and the 16 sets of a 4 × 4 patch fill its strata with 16 different
+// offsets: a voxel whose filter window is cut short (by an edge) still sees every direction. (j₁,
+// j₂) is voxel v's own shift of the pattern (a hash of its coordinates): with one pattern for all
+// voxels, neighbours saw a light source's edge through the same directions, and the ceiling and
+// walls showed streaks radiating from the lit patch that the filter and the refinement kept.
+vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set) {
     mat3 frame = tangentFrame(normal);
     int rays = max(uVoxelRays, 1);
+    uint hash = pcgHash(uint(v.x) + pcgHash(uint(v.y) + pcgHash(uint(v.z))));
+    vec2 shift = vec2(float(hash & 0xffffu), float(hash >> 16u)) / 65536.0;
     vec3 sum = vec3(0.0);
     for (int i = 0; i < rays; ++i) {
-        float u1 = (float(i) + (float(set) + 0.5) / float(kConeSetCount)) / float(rays);
-        float phi = 6.28318530718 * fract(radicalInverse(uint(i)) + float(set) / float(kConeSetCount));
+        float u1 = (float(i) + (float(set) + shift.x) / float(kConeSetCount)) / float(rays);
+        float phi = 6.28318530718 * fract(radicalInverse(uint(i)) + float(set) / float(kConeSetCount) + shift.y);
         float r = sqrt(u1);
         sum += traceVoxelRay(origin, frame * vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u1, 0.0))));
     }
@@ -163,10 +168,10 @@ int voxelSet(ivec3 v, vec3 normal) {
 vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float maxDistance) {
 #if LIT_VOXEL_RAYS && LIT_BOUNCE_IRRADIANCE && LIT_IRRADIANCE_ALL_SETS
     vec3 sum = vec3(0.0);
-    for (int set = 0; set < kConeSetCount; ++set) sum += rayIrradiance(origin, normal, set);
+    for (int set = 0; set < kConeSetCount; ++set) sum += rayIrradiance(v, origin, normal, set);
     return sum / float(kConeSetCount);
 #elif LIT_VOXEL_RAYS
-    return rayIrradiance(origin, normal, voxelSet(v, normal));
+    return rayIrradiance(v, origin, normal, voxelSet(v, normal));
 #elif LIT_CONE_FOOTPRINT && LIT_BOUNCE_IRRADIANCE && LIT_IRRADIANCE_ALL_SETS
     vec3 cones[kDiffuseConeCount];
     vec3 sum = vec3(0.0);
