@@ -920,6 +920,17 @@ void App::runScriptStep() {
         --scriptWaitFrames_;
         return;
     }
+    if (scriptWaitForGi_ > 0) {
+        // The frame just rendered tells how far the update is (renderer stats of the last frame).
+        if (renderer_ && renderer_->stats().giUpdateDone < 1.0f) {
+            if (--scriptWaitForGi_ == 0) {
+                failScript(script_[scriptNext_ - 1], "wait gi: the GI update did not finish in " +
+                                                         std::to_string(kScriptGiWaitFrames) + " frames");
+            }
+            return;
+        }
+        scriptWaitForGi_ = 0;
+    }
     if (scriptNext_ >= script_.size()) {
         exitCode_ = 0;  // the end of the script: like quit
         return;
@@ -1085,6 +1096,10 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
     if (name == "redo") return doc_.redo() ? "" : "nothing to redo";
     if (name == "interactive") {
         scriptInteractive_ = arg(0) == "on";
+        return "";
+    }
+    if (name == "wait" && arg(0) == "gi") {
+        scriptWaitForGi_ = kScriptGiWaitFrames;
         return "";
     }
     if (name == "wait") {

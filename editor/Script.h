@@ -31,6 +31,9 @@
 //   camera X Y Z TX TY TZ        put the fly camera at (X, Y, Z) looking at (TX, TY, TZ), metres
 //   undo | redo
 //   wait N                       let N frames render
+//   wait gi                      let frames render until the GI update after the last edit is
+//                                complete (FrameStats::giUpdateDone; refinement rounds do not count),
+//                                at most 2000 frames
 //   interactive on|off           the interactive render scale (RenderSettings::interactiveFpsTarget)
 //                                also in the script (off by default: scripts render at the
 //                                chosen scale, reproducibly)

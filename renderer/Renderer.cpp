@@ -436,6 +436,19 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     stats.voxelized = voxelDirty;
     stats.injected = injectDirty;
     stats.occupiedVoxels = occupiedCount;
+    // Progress of the spread update: passes over the list (bounces 2..N, then the irradiance).
+    const double listLength = std::max(occupiedCount, 1u);
+    const int passes = (injectedBounces - 1) + (injectedIrradiance ? 1 : 0);
+    if (bounceUnderWay > 0) {
+        stats.giUpdateDone = static_cast<float>(((bounceUnderWay - 2) * listLength + bounceNext) / (passes * listLength));
+        stats.giUpdateStage = "bounce " + std::to_string(bounceUnderWay);
+    } else if (injectedIrradiance && irradianceRemaining > 0) {
+        stats.giUpdateDone = static_cast<float>(((passes - 1) * listLength + (listLength - irradianceRemaining)) /
+                                                (passes * listLength));
+        stats.giUpdateStage = "irradiance";
+    } else if (refine && irradianceRefineRound < kConeSets) {
+        stats.giUpdateStage = "refining " + std::to_string(irradianceRefineRound) + "/" + std::to_string(kConeSets - 1);
+    }
 }
 
 const SkyImage* Renderer::Impl::updateSkyImage(const RenderSettings& settings) {

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace lit {
@@ -35,6 +36,12 @@ struct FrameStats {
     bool injected = false;      // radiance was re-injected this frame
     std::size_t voxelBytes = 0; // GPU memory of the voxel volumes
     std::uint32_t occupiedVoxels = 0;  // voxels the last voxelization occupied (inject runs over these)
+    // The GI update after the last light or geometry edit, which the cached mode spreads over
+    // frames (voxelIrradianceVoxelsPerFrame): the share of it done after this frame (1: every voxel
+    // holds the current light) and what it is at ("bounce 2".."bounce N", "irradiance"; "refining"
+    // while the refinement rounds run with the light already right; "" when nothing is left).
+    float giUpdateDone = 1.0f;
+    std::string giUpdateStage;
     // Frustum culling, over the views rendered this frame: the camera's G-buffer pass and the
     // shadow views when shadow maps were re-rendered (voxelization draws everything, uncounted).
     int drawsSubmitted = 0;     // scene draws those views issued

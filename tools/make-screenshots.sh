@@ -47,6 +47,8 @@ spp="${LIT_SCREENSHOT_SPP:-512}"
 
 # The editor. Keys of a camera path in front of the box, seen from further back and to the side
 # so the curve and its key frusta show; the tall box selected (outline, gizmo) in the inspector.
+# "wait gi" lets the cached mode's update finish (spread over frames: at 128³ about 6 frames for
+# the bounce and 6 for the irradiance) before the GI and the overlay are captured.
 script="$tmpdir/script.txt"
 cat >"$script" <<SCRIPT
 camera 0.9 1.0 4.1 0 1 0
@@ -61,6 +63,7 @@ key add
 key select 1
 camera 2.6 2.4 6.8 0 1 1.5
 select tall_box
+wait gi
 wait 3
 screenshot $out/editor.png ui
 select -
@@ -94,7 +97,8 @@ setting giMode cached
 view final
 panel settings off
 panel camera off
-wait 4
+wait gi
+wait 3
 screenshot $out/editor_performance.png ui
 quit
 SCRIPT
@@ -132,6 +136,7 @@ panel timeline off
 panel log off
 panel stats off
 camera 5.47 1.7 -0.31 -12.4 7.5 -0.31
+wait gi
 wait 8
 screenshot $out/sponza_sun_sky.png noui
 quit

@@ -213,9 +213,10 @@ bool drawGlobalIllumination(RenderSettings& s) {
     if (s.diffuseFromVoxelIrradiance) {
         changed |= ImGui::DragInt("Irradiance voxels / frame", &s.voxelIrradianceVoxelsPerFrame, 256.0f, 0, 1 << 24,
                                   s.voxelIrradianceVoxelsPerFrame == 0 ? "all at once" : "%d voxels");
-        tooltip("Occupied voxels whose irradiance is re-traced per frame after an edit (count; 0 = all in\n"
-                "the edit's frame). A light edit then takes occupied / this frames, each costing a share of\n"
-                "the pass (~20 us per voxel on llvmpipe); voxels not reached yet keep the old light");
+        tooltip("Occupied voxels traced per frame after an edit, for each bounce past the first and then\n"
+                "the irradiance (count; 0 = all in the edit's frame). A light edit then takes bounces x\n"
+                "occupied / this frames, each costing a share of the pass (~20 us per voxel on llvmpipe);\n"
+                "voxels not reached yet keep the old light. The performance overlay shows the progress");
         changed |= ImGui::DragInt("Refine voxels / frame", &s.voxelIrradianceRefineVoxelsPerFrame, 256.0f, 0, 1 << 24,
                                   s.voxelIrradianceRefineVoxelsPerFrame == 0 ? "off" : "%d voxels");
         tooltip("Once the light is traced, occupied voxels traced again per frame with the other cone sets\n"

@@ -127,6 +127,19 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
                 stats.injected ? " [injected]" : "");
     // The report is formatted only while someone reads it, not every frame.
     if (voxels && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", voxels->memoryReport().c_str());
+    // The cached mode's update after an edit runs over frames: how far it is, so that nobody
+    // judges the light before it is right.
+    if (stats.giUpdateDone < 1.0f) {
+        ImGui::Text("GI update %3.0f %% (%s)", 100.0 * static_cast<double>(stats.giUpdateDone), stats.giUpdateStage.c_str());
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The light of the last edit is traced a part of the voxels a frame (Render settings, "
+                              "Irradiance voxels / frame); until 100 %% some voxels hold the light from before the edit");
+    } else if (!stats.giUpdateStage.empty()) {
+        ImGui::TextDisabled("GI %s", stats.giUpdateStage.c_str());
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The light is right; each round traces every voxel again with other directions, "
+                              "averaging out the faint bands of a one-frame trace");
+    }
 
     const auto& timings = profiler.timings();
     if (timings.empty()) {

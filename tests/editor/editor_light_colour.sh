@@ -2,6 +2,8 @@
 # editor_light_colour.sh EDITOR IMAGE_STATS SCENE OUTDIR
 # Makes the Cornell box's white light red through a --script run and checks that the viewport
 # (screenshots without UI) changed the right way: green and blue fall, red stays and dominates.
+# Each capture waits for the GI update to finish (wait gi: the cached mode spreads the bounce and
+# the voxel irradiance over frames), so the indirect light is the edited light's too.
 # Exit 77 (skipped) without xvfb-run.
 set -u
 editor=$1
@@ -21,10 +23,10 @@ rm -f "$before" "$after"
 cat >"$out/light_colour.txt" <<SCRIPT
 setting voxelResolution 64
 select ceiling_spot
-wait 2
+wait gi
 screenshot $before noui
 set light.color 1 0 0
-wait 2
+wait gi
 screenshot $after noui
 SCRIPT
 

@@ -40,6 +40,7 @@ TEST(Script, ParsesEveryCommand) {
         "undo\n"
         "redo\n"
         "wait 3\n"
+        "wait gi\n"
         "key add\n"
         "key delete 0\n"
         "key select 1\n"
@@ -50,7 +51,7 @@ TEST(Script, ParsesEveryCommand) {
         "time 1.25\n"
         "quit";
     const std::vector<ScriptCommand> commands = parseScript(text, "s.txt");
-    ASSERT_EQ(commands.size(), 27u);
+    ASSERT_EQ(commands.size(), 28u);
     EXPECT_EQ(commands[0].line, 3);
     EXPECT_EQ(commands[0].name, "select");
     EXPECT_EQ(commands[0].args, std::vector<std::string>{"Big Box"});
@@ -60,10 +61,11 @@ TEST(Script, ParsesEveryCommand) {
     EXPECT_EQ(commands[4].args, (std::vector<std::string>{"gi", "false"}));
     EXPECT_EQ(commands[11].args, (std::vector<std::string>{"out/b.png", "noui"}));  // \r dropped
     EXPECT_TRUE(commands[12].args.empty());
-    EXPECT_EQ(commands[21].name, "key");
-    EXPECT_EQ(commands[21].args, (std::vector<std::string>{"time", "1", "2.5"}));
-    EXPECT_EQ(commands[26].name, "quit");
-    EXPECT_EQ(commands[26].line, 29);
+    EXPECT_EQ(commands[18].args, std::vector<std::string>{"gi"});
+    EXPECT_EQ(commands[22].name, "key");
+    EXPECT_EQ(commands[22].args, (std::vector<std::string>{"time", "1", "2.5"}));
+    EXPECT_EQ(commands[27].name, "quit");
+    EXPECT_EQ(commands[27].line, 30);
 }
 
 TEST(Script, EmptyAndCommentOnlyScriptsHaveNoCommands) {
@@ -75,9 +77,10 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(errorOf("wait 1\n\nselec Box\n"), "s.txt:3: unknown command 'selec'");
     EXPECT_EQ(errorOf("select\n"), "s.txt:1: select: expected a node name (or - for none), got 0 arguments");
     EXPECT_EQ(errorOf("undo now\n"), "s.txt:1: undo: expected no arguments, got 1 argument");
-    EXPECT_EQ(errorOf("\nwait\n"), "s.txt:2: wait: expected a number of frames, got 0 arguments");
-    EXPECT_EQ(errorOf("wait 1.5x\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), got '1.5x'");
-    EXPECT_EQ(errorOf("wait 0\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), got '0'");
+    EXPECT_EQ(errorOf("\nwait\n"), "s.txt:2: wait: expected a number of frames or gi, got 0 arguments");
+    EXPECT_EQ(errorOf("wait 1.5x\n"), "s.txt:1: wait: expected a whole number of frames (1 or more) or gi, got '1.5x'");
+    EXPECT_EQ(errorOf("wait 0\n"), "s.txt:1: wait: expected a whole number of frames (1 or more) or gi, got '0'");
+    EXPECT_EQ(errorOf("wait GI\n"), "s.txt:1: wait: expected a whole number of frames (1 or more) or gi, got 'GI'");
     EXPECT_EQ(errorOf("set light.intensity\n"), "s.txt:1: set: expected a property and a value");
     EXPECT_EQ(errorOf("set light.intensity 1.5x\n"), "s.txt:1: light.intensity: expected 1 number, got '1.5x'");
     EXPECT_EQ(errorOf("set light.colour 1 1 1\n"), "s.txt:1: unknown property 'light.colour'");

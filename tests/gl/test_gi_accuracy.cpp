@@ -891,9 +891,21 @@ TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     scene.lights[0].intensity *= 4.0f;
     scene.lights[0].color = glm::vec3(1.0f, 0.5f, 0.25f);
     ++scene.lightRevision;
-    for (int i = 0; i < 2 * kFrames - 1; ++i) renderer_->render(scene, camera, settings);
+    // The progress the editor's overlay shows (FrameStats::giUpdateDone, giUpdateStage) rises
+    // through the bounce and then the irradiance and reaches 1 with the last frame.
+    float progress = 0.0f;
+    for (int i = 0; i < 2 * kFrames - 1; ++i) {
+        renderer_->render(scene, camera, settings);
+        const FrameStats& stats = renderer_->stats();
+        EXPECT_GT(stats.giUpdateDone, progress) << "frame " << i;
+        EXPECT_LT(stats.giUpdateDone, 1.0f) << "frame " << i;
+        EXPECT_EQ(stats.giUpdateStage, i < kFrames - 1 ? "bounce 2" : "irradiance") << "frame " << i;
+        progress = stats.giUpdateDone;
+    }
     const HdrImage early{settings.width, settings.height, renderer_->readHdrRgb()};
     renderer_->render(scene, camera, settings);
+    EXPECT_EQ(renderer_->stats().giUpdateDone, 1.0f);
+    EXPECT_EQ(renderer_->stats().giUpdateStage, "") << "no refinement asked for";
     const HdrImage done{settings.width, settings.height, renderer_->readHdrRgb()};
     renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
     RenderSettings atOnce = settings;
