@@ -83,6 +83,13 @@ protected:
         }
         return difference / total;
     }
+    // What an update spread over frames must end on: a fresh renderer's image with the whole update
+    // in one frame (voxelIrradianceVoxelsPerFrame 0). Replaces the fixture's renderer.
+    HdrImage allAtOnceInAFreshRenderer(const Scene& scene, const CameraView& camera, RenderSettings settings) {
+        renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
+        settings.voxelIrradianceVoxelsPerFrame = 0;
+        return renderFrom(scene, camera, settings);
+    }
     HdrImage renderFrom(const Scene& scene, const CameraView& camera, const RenderSettings& settings) {
         renderer_->setScene(scene);
         renderer_->render(scene, camera, settings);
@@ -854,10 +861,7 @@ TEST_F(GiAccuracy, VoxelIrradianceSpreadOverFramesLeavesNoTraceOfTheOldLight) {
     const HdrImage early{settings.width, settings.height, renderer_->readHdrRgb()};
     renderer_->render(scene, camera, settings);
     const HdrImage converged{settings.width, settings.height, renderer_->readHdrRgb()};
-    renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
-    RenderSettings atOnce = settings;
-    atOnce.voxelIrradianceVoxelsPerFrame = 0;
-    const HdrImage fresh = renderFrom(scene, camera, atOnce);
+    const HdrImage fresh = allAtOnceInAFreshRenderer(scene, camera, settings);
     const double before = relativeDifference(early, fresh), after = relativeDifference(converged, fresh);
     std::printf("voxel irradiance over %d frames (%d of %u voxels each): L_ID vs all at once after %d frames %.3f %%, "
                 "after %d %.5f %%\n",
@@ -907,10 +911,7 @@ TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     EXPECT_EQ(renderer_->stats().giUpdateDone, 1.0f);
     EXPECT_EQ(renderer_->stats().giUpdateStage, "") << "no refinement asked for";
     const HdrImage done{settings.width, settings.height, renderer_->readHdrRgb()};
-    renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
-    RenderSettings atOnce = settings;
-    atOnce.voxelIrradianceVoxelsPerFrame = 0;
-    const HdrImage fresh = renderFrom(scene, camera, atOnce);
+    const HdrImage fresh = allAtOnceInAFreshRenderer(scene, camera, settings);
     const double before = relativeDifference(early, fresh), after = relativeDifference(done, fresh);
     std::printf("two bounces over %d + %d frames (%d of %u voxels each): L_ID vs all at once after %d frames %.3f %%, "
                 "after %d %.5f %%\n",
