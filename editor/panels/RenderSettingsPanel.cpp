@@ -187,14 +187,16 @@ bool drawGlobalIllumination(RenderSettings& s) {
     changed |= ImGui::SliderFloat("Step scale", &s.coneStepScale, 0.1f, 2.0f, "%.2f");
     tooltip("Step along a cone = scale x cone diameter (smaller is slower and smoother)");
     changed |= ImGui::SliderInt("Bounces", &s.bounces, 1, kMaxBounces);
-    tooltip("Light bounces (count). 1: only direct light is injected into the voxels; each more re-injects\n"
-            "the voxels' own cone-traced indirect light (one extra pass over the occupied voxels per bounce,\n"
-            "run after each light or geometry edit: seconds per bounce on a software rasterizer)");
+    tooltip("Light bounces (count; default 2). 1: only direct light is injected into the voxels; each more\n"
+            "re-injects the voxels' own traced indirect light (one extra pass over the occupied voxels per\n"
+            "bounce after each light or geometry edit, spread over frames in the cached mode: seconds per\n"
+            "bounce on a software rasterizer)");
     changed |= ImGui::SliderInt("Voxel rays", &s.voxelRays, 0, kMaxVoxelRays, s.voxelRays == 0 ? "cones" : "%d rays");
     tooltip("Rays per voxel (count) for the light the voxels gather themselves: the cached mode's irradiance\n"
             "and bounces 2..N. Each ray marches the voxel grid to the first occupied voxel: light past edges,\n"
             "through gaps and at grazing angles comes out right where cones blur it (docs/GI.md, \"Voxel rays\").\n"
-            "0 = the accurate mode's cones. 32 cost about what the cones cost; more are smoother and slower");
+            "0 = the accurate mode's cones. 32 (the default) cost about what the cones cost; more are smoother\n"
+            "and slower");
     changed |= ImGui::Checkbox("Anisotropic voxels", &s.anisotropicVoxels);
     tooltip("Six directional volumes per mip level (x6/7 more voxel memory): walls block and emit light\n"
             "only on the side a cone looks at, so no light leaks or self-illumination through them.\n"
