@@ -211,6 +211,30 @@ struct Renderer::Impl {
     // for the last one) and its next list entry.
     int bounceUnderWay = 0;
     std::uint32_t bounceNext = 0;
+    // The voxel rays' hit cache (InjectPass::ensureRayHits): valid once a trace over the whole
+    // list recorded every hit since the last voxelization, for rayHitsRays rays per voxel.
+    bool rayHitsValid = false;
+    int rayHitsRays = 0;
+    // What a voxel-ray trace of the list does with the cache now: replay when valid, else record.
+    RayHits rayHitsFor(const RenderSettings& settings) {
+        const int rays = ConeFeatures::of(settings).voxelRays;
+        if (rays <= 0 || !occupiedListComplete) return RayHits::Off;
+        const std::size_t before = inject.rayHitBytes();
+        if (!inject.ensureRayHits(rays, occupiedCount)) {
+            rayHitsValid = false;
+            return RayHits::Off;
+        }
+        if (inject.rayHitBytes() != before) {
+            rayHitsValid = false;
+            char text[160];
+            std::snprintf(text, sizeof text, "voxel ray hits: %.1f MiB (%u occupied voxels × 2 sides × %d rays)",
+                          static_cast<double>(inject.rayHitBytes()) / (1024.0 * 1024.0), occupiedCount, rays);
+            log.info(text);
+        }
+        if (rays != rayHitsRays) rayHitsValid = false;
+        rayHitsRays = rays;
+        return rayHitsValid ? RayHits::Replay : RayHits::Record;
+    }
     bool injectedAnisotropic = true;
     int injectedVoxelRays = 0;
     float injectedFootprint = 0.0f, injectedAperture = 0.0f, injectedStepScale = 0.0f, injectedTraceDistance = 0.0f,
@@ -285,6 +309,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         voxelKey = key;
         voxelsValid = true;
         ++voxelGeneration;
+        rayHitsValid = false;  // other voxels: other hits
         // One uint read back per voxelization (which is rare and slow anyway): the count is
         // reported, and a list that overflowed is grown for the next voxelization while this
         // one injects the whole grid.
@@ -321,7 +346,9 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
                 bounceNext = 0;
             } else {
                 for (int b = 2; b <= bounces; ++b) {
-                    inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete);
+                    const RayHits hits = rayHitsFor(settings);
+                    inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete, hits);
+                    if (hits == RayHits::Record) rayHitsValid = true;
                     mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
                 }
             }
@@ -374,9 +401,11 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
         const std::uint32_t left = occupiedCount - std::min(bounceNext, occupiedCount);
         const std::uint32_t count = perFrame == 0 ? left : std::min(perFrame, left);
-        inject.traceBounce(voxels, ConeFeatures::of(settings), true, bounceNext, count);
+        const RayHits hits = rayHitsFor(settings);
+        inject.traceBounce(voxels, ConeFeatures::of(settings), true, bounceNext, count, hits);
         bounceNext += count;
         if (bounceNext >= occupiedCount) {
+            if (hits == RayHits::Record) rayHitsValid = true;  // the pass ran over the whole list from 0
             inject.endBounce(voxels);
             mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
             bounceNext = 0;
@@ -404,21 +433,28 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         Profiler::Scope scope(profiler, "voxel irradiance");
         const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
         if (!spreadOverFrames(settings)) {
-            inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete);
+            const RayHits hits = rayHitsFor(settings);
+            inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete, 0, 0, 0, hits);
+            if (hits == RayHits::Record) rayHitsValid = true;
             irradianceRemaining = 0;
         } else {
             std::uint32_t budget = std::min(perFrame, irradianceRemaining);
             irradianceRemaining -= budget;
+            const RayHits hits = rayHitsFor(settings);
             while (budget > 0) {  // at most twice: up to the list's end, then from its start
                 const std::uint32_t count = std::min(budget, occupiedCount - irradianceNext);
-                inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceNext, count);
+                inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceNext, count, 0, hits);
                 tracedRanges.emplace_back(irradianceNext, count);
                 irradianceNext = (irradianceNext + count) % occupiedCount;
                 budget -= count;
             }
             // The accumulated indirect light holds the frames of the update (old light in the
-            // voxels not reached yet): the first frame after it starts the history afresh.
-            if (irradianceRemaining == 0) resolve.resetHistory();
+            // voxels not reached yet): the first frame after it starts the history afresh. Every
+            // entry was traced once since the edit: recorded, if that is what the update did.
+            if (irradianceRemaining == 0) {
+                resolve.resetHistory();
+                if (hits == RayHits::Record) rayHitsValid = true;
+            }
         }
         filterAll = irradianceRemaining == 0;
     }

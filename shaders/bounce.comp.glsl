@@ -46,6 +46,7 @@ LIT_VOXEL_LIST_READER
 // The amortised update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces a part of the list
 // at a time (listedVoxelInRange): the irradiance, and the bounces before it.
 LIT_VOXEL_LIST_RANGE_READER
+uint gListIndex = 0u;  // this invocation's occupied-list entry (main; the ray-hit cache's index)
 
 #if LIT_BOUNCE_RGBA8
 #define BOUNCE_FORMAT rgba8
@@ -91,11 +92,26 @@ const int kRayMaxSteps = 2048;
 // reference with the test at 90°, 0.98 at 60°, 1.02 without any; docs/GI.md, "Voxel rays").
 const float kRayBackFaceCosine = 0.5;
 
-// What a ray from `origin` along `dir` (world space, unit) sees: the radiance of the first occupied
-// level-0 voxel it enters, black when that voxel holds a one-sided surface facing away from the
-// ray (its back), the sky past the volume. The march visits every voxel the ray passes through
-// (cell by cell, from each cell's exit to the next), so a wall of face-connected voxels stops it.
-vec3 traceVoxelRay(vec3 origin, vec3 dir) {
+// The ray-hit cache (InjectPass::ensureRayHits, LIT_SSBO_VOXEL_RAY_HITS): a ray's first hit depends
+// on the voxels' occupancy and normals only, not on their light, so a trace over the list records
+// each ray's hit (uRayHits 1) and later traces of the same rays replay them (2) with the radiance
+// the volume holds then: a light edit's bounce and irradiance march no ray. 0: march, record nothing
+// (the refinement's other sets, the all-sets variant). Entry (list index × 2 + side) × rays + ray.
+layout(std430, binding = LIT_SSBO_VOXEL_RAY_HITS) buffer VoxelRayHits { uint rayHits[]; };
+uniform int uRayHits;
+#ifndef LIT_RAY_HIT_CACHE
+#define LIT_RAY_HIT_CACHE 1  // 0: always march (the GL test's yardstick for the cache)
+#endif
+int rayHitMode() { return LIT_RAY_HIT_CACHE != 0 ? uRayHits : 0; }
+const uint kRayHitSky = 0xffffffffu;   // left the volume: the sky
+const uint kRayHitBack = 0x40000000u;  // flag: met a one-sided surface from behind (black)
+
+// Where a ray from `origin` along `dir` (world space, unit) ends: the first occupied level-0 voxel
+// it enters (packed as the occupied list packs it, kRayHitBack added when that voxel holds a
+// one-sided surface facing away from the ray: its back), or kRayHitSky past the volume. The march
+// visits every voxel the ray passes through (cell by cell, from each cell's exit to the next), so
+// a wall of face-connected voxels stops it.
+uint marchVoxelRay(vec3 origin, vec3 dir) {
     int n = int(voxel.voxelInfo.x);
     vec3 g0 = (origin - voxel.volumeMin.xyz) / voxel.voxelInfo.z;  // in voxels from the volume's corner
     vec3 d = mix(dir, vec3(1e-7), lessThan(abs(dir), vec3(1e-7)));
@@ -110,14 +126,11 @@ vec3 traceVoxelRay(vec3 origin, vec3 dir) {
         bool coarseEmpty = texelFetch(voxelRadianceTexture, coarse, kRaySkipLevelCoarse).a == 0.0;
         ivec3 block = cell >> kRaySkipLevel;
         bool blockEmpty = coarseEmpty || texelFetch(voxelRadianceTexture, block, kRaySkipLevel).a == 0.0;
-        if (!blockEmpty) {
-            vec4 s = texelFetch(voxelRadianceTexture, cell, 0);
-            if (s.a > 0.0) {
-                vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, cell).r);
-                float agreement = length(averaged);
-                bool fromBehind = agreement >= kOneSidedMinLength && dot(averaged, dir) > kRayBackFaceCosine * agreement;
-                return fromBehind ? vec3(0.0) : decodeRadiance(s.rgb / s.a);
-            }
+        if (!blockEmpty && texelFetch(voxelRadianceTexture, cell, 0).a > 0.0) {
+            vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, cell).r);
+            float agreement = length(averaged);
+            bool fromBehind = agreement >= kOneSidedMinLength && dot(averaged, dir) > kRayBackFaceCosine * agreement;
+            return uint(cell.x) | (uint(cell.y) << 10u) | (uint(cell.z) << 20u) | (fromBehind ? kRayHitBack : 0u);
         }
         // The cell to leave: the empty 16³ or 4³ block around the ray, else its voxel.
         float size = coarseEmpty ? float(1 << kRaySkipLevelCoarse) : (blockEmpty ? float(1 << kRaySkipLevel) : 1.0);
@@ -125,7 +138,16 @@ vec3 traceVoxelRay(vec3 origin, vec3 dir) {
         vec3 tExit = (corner + exitSide * size - g0) * inv;
         t = min(tExit.x, min(tExit.y, tExit.z)) + 1e-3;
     }
-    return skyRadiance(dir);
+    return kRayHitSky;
+}
+
+// What a ray along `dir` that ended at `hit` (marchVoxelRay) sees: the radiance the hit voxel holds
+// now, black from behind, the sky past the volume.
+vec3 rayHitRadiance(uint hit, vec3 dir) {
+    if (hit == kRayHitSky) return skyRadiance(dir);
+    if ((hit & kRayHitBack) != 0u) return vec3(0.0);
+    vec4 s = texelFetch(voxelRadianceTexture, ivec3(hit & 1023u, (hit >> 10u) & 1023u, (hit >> 20u) & 1023u), 0);
+    return s.a > 0.0 ? decodeRadiance(s.rgb / s.a) : vec3(0.0);
 }
 
 // Irradiance/π at `origin` over the hemisphere of `normal`: the mean radiance of uVoxelRays
@@ -137,7 +159,7 @@ vec3 traceVoxelRay(vec3 origin, vec3 dir) {
 // j₂) is voxel v's own shift of the pattern (a hash of its coordinates): with one pattern for all
 // voxels, neighbours saw a light source's edge through the same directions, and the ceiling and
 // walls showed streaks radiating from the lit patch that the filter and the refinement kept.
-vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set) {
+vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
     mat3 frame = tangentFrame(normal);
     int rays = max(uVoxelRays, 1);
     uint hash = pcgHash(uint(v.x) + pcgHash(uint(v.y) + pcgHash(uint(v.z))));
@@ -147,7 +169,16 @@ vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set) {
         float u1 = (float(i) + (float(set) + shift.x) / float(kConeSetCount)) / float(rays);
         float phi = 6.28318530718 * fract(radicalInverse(uint(i)) + float(set) / float(kConeSetCount) + shift.y);
         float r = sqrt(u1);
-        sum += traceVoxelRay(origin, frame * vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u1, 0.0))));
+        vec3 dir = frame * vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u1, 0.0)));
+        uint slot = (gListIndex * 2u + uint(side)) * uint(rays) + uint(i);
+        uint hit;
+        if (rayHitMode() == 2) {
+            hit = rayHits[slot];
+        } else {
+            hit = marchVoxelRay(origin, dir);
+            if (rayHitMode() == 1) rayHits[slot] = hit;
+        }
+        sum += rayHitRadiance(hit, dir);
     }
     return sum / float(rays);
 }
@@ -165,13 +196,14 @@ int voxelSet(ivec3 v, vec3 normal) {
 
 // Irradiance/π of voxel v's surface seen from the cone origin `origin` with normal `normal`.
 // LIT_IRRADIANCE_ALL_SETS (the irradiance pass only): every set, averaged, instead of the voxel's one.
-vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float maxDistance) {
+// `side`: 0 the voxel's front hemisphere, 1 its back (two-sided voxels), for the ray-hit cache.
+vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float maxDistance, int side) {
 #if LIT_VOXEL_RAYS && LIT_BOUNCE_IRRADIANCE && LIT_IRRADIANCE_ALL_SETS
     vec3 sum = vec3(0.0);
-    for (int set = 0; set < kConeSetCount; ++set) sum += rayIrradiance(v, origin, normal, set);
+    for (int set = 0; set < kConeSetCount; ++set) sum += rayIrradiance(v, origin, normal, set, side);
     return sum / float(kConeSetCount);
 #elif LIT_VOXEL_RAYS
-    return rayIrradiance(v, origin, normal, voxelSet(v, normal));
+    return rayIrradiance(v, origin, normal, voxelSet(v, normal), side);
 #elif LIT_CONE_FOOTPRINT && LIT_BOUNCE_IRRADIANCE && LIT_IRRADIANCE_ALL_SETS
     vec3 cones[kDiffuseConeCount];
     vec3 sum = vec3(0.0);
@@ -191,6 +223,7 @@ void main() {
     ivec3 v;
     if (uFromList != 0) {
         if (!listedVoxelInRange(v)) return;
+        gListIndex = uListFirst + gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex;
     } else {
         v = ivec3(gl_GlobalInvocationID);
     }
@@ -212,9 +245,9 @@ void main() {
     vec3 centre = voxelCenter(v);
     float aperture = voxel.traceParams.w, maxDistance = voxel.traceParams.y;
     // Voxels whose normals disagree (both sides of a thin wall) gather over both hemispheres.
-    vec3 front = bounceIrradiance(v, coneOrigin(centre, normal), normal, aperture, maxDistance);
+    vec3 front = bounceIrradiance(v, coneOrigin(centre, normal), normal, aperture, maxDistance, 0);
     vec3 back = agreement < kOneSidedMinLength
-                    ? bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance)
+                    ? bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance, 1)
                     : front;
 #if LIT_BOUNCE_IRRADIANCE
     if (uBlend < 1.0) {

@@ -91,7 +91,7 @@ void InjectPass::beginBounces(const VoxelVolume& volume) {
 }
 
 void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
-                             std::uint32_t count) {
+                             std::uint32_t count, RayHits hits) {
     if (volume.resolution() <= 0 || !volume.direct()) return;
     const bool rgba8 = volume.radianceRgba8();
     ConeProgram& programs = rgba8 ? bounce8_ : bounce16f_;
@@ -103,6 +103,7 @@ void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, b
     useWithVoxelSurfaces(program, volume, features);
     glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY, volume.radianceFormat());
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, volume.radianceFormat());
+    bindRayHits(program, features, fromList ? hits : RayHits::Off);
     dispatchListRange(volume, program, fromList, first, count);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
@@ -116,10 +117,34 @@ void InjectPass::endBounce(const VoxelVolume& volume) {
                        0, n, n, n);
 }
 
-void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList) {
+void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList,
+                               RayHits hits) {
     if (first) beginBounces(volume);
-    traceBounce(volume, features, fromList);
+    traceBounce(volume, features, fromList, 0, 0, hits);
     endBounce(volume);
+}
+
+bool InjectPass::ensureRayHits(int rays, std::uint32_t entries) {
+    if (rays <= 0 || entries == 0) return false;
+    const std::size_t bytes = static_cast<std::size_t>(entries) * 2 * static_cast<std::size_t>(rays) * 4;
+    if (bytes > kMaxRayHitBytes) {
+        rayHits_ = {};
+        return false;
+    }
+    // Kept while it fits and is not more than twice what is needed (a voxelization that changes
+    // the count a little reallocates nothing).
+    if (rayHits_.size() < bytes || rayHits_.size() > 2 * bytes) rayHits_ = gl::Buffer("voxel ray hits", bytes, nullptr, 0);
+    return true;
+}
+
+void InjectPass::bindRayHits(const gl::Program& program, ConeFeatures features, RayHits hits) const {
+    if (features.voxelRays <= 0) return;
+    const bool cached = hits != RayHits::Off && static_cast<bool>(rayHits_);
+    glProgramUniform1i(program.id(), program.location("uRayHits"), !cached ? 0 : (hits == RayHits::Record ? 1 : 2));
+    if (cached) {
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        rayHits_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_VOXEL_RAY_HITS);
+    }
 }
 
 std::size_t InjectPass::irradianceBytes(int n, bool radianceRgba8) {
@@ -150,7 +175,7 @@ void InjectPass::prepareIrradiance(const VoxelVolume& volume, bool clear) {
 }
 
 void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
-                                   std::uint32_t count, int setOffset) {
+                                   std::uint32_t count, int setOffset, RayHits hits) {
     // prepareIrradiance first (it also follows a change of the radiance format).
     if (volume.resolution() <= 0 || irradianceResolution_ != volume.resolution() ||
         irradianceRgba8_ != volume.radianceRgba8())
@@ -171,6 +196,8 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, rawNeg_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
     glProgramUniform1i(program.id(), program.location("uSetOffset"), std::max(setOffset, 0));
     glProgramUniform1f(program.id(), program.location("uBlend"), 1.0f / static_cast<float>(std::max(setOffset, 0) + 1));
+    // Only the first set's rays are those the cache holds.
+    bindRayHits(program, features, fromList && setOffset <= 0 ? hits : RayHits::Off);
     dispatchListRange(volume, program, fromList, first, count);
 
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

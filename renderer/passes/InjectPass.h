@@ -15,6 +15,9 @@ namespace lit {
 
 class VoxelVolume;
 
+// What a voxel-ray trace does with the ray-hit cache (InjectPass::ensureRayHits).
+enum class RayHits { Off, Record, Replay };
+
 class InjectPass : public Pass {
 public:
     explicit InjectPass(const std::filesystem::path& shaderRoot);
@@ -44,9 +47,10 @@ public:
     // (ConeFeatures::of the settings). executeBounce is one whole bounce (begin when `first`).
     void beginBounces(const VoxelVolume& volume);
     void traceBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList = true, std::uint32_t first = 0,
-                     std::uint32_t count = 0);
+                     std::uint32_t count = 0, RayHits hits = RayHits::Off);
     void endBounce(const VoxelVolume& volume);
-    void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList = true);
+    void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList = true,
+                       RayHits hits = RayHits::Off);
 
     // The cached GI mode (RenderSettings::diffuseFromVoxelIrradiance): after execute() and a full
     // mip build, occupied voxels trace diffuse cones (bounce.comp.glsl with LIT_BOUNCE_IRRADIANCE)
@@ -66,7 +70,18 @@ public:
     // `setOffset` k > 0 (the refinement, RenderSettings::voxelIrradianceRefineVoxelsPerFrame): each
     // voxel traces the set k after its own and averages it into its value with weight 1 / (k + 1).
     void executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first = 0,
-                           std::uint32_t count = 0, int setOffset = 0);
+                           std::uint32_t count = 0, int setOffset = 0, RayHits hits = RayHits::Off);
+
+    // The voxel rays' first hits (bounce.comp.glsl, LIT_SSBO_VOXEL_RAY_HITS): one uint per entry of
+    // the occupied list, side and ray. A ray's hit depends on the voxels, not on their light, so a
+    // trace over the list with RayHits::Record keeps them and the traces of the same rays after a
+    // light edit replay them (RayHits::Replay: no ray marched) until the voxels change. The bounce
+    // and the irradiance's first set trace the same rays. Makes (or keeps) the buffer for `rays`
+    // rays over `entries` list entries (the occupied count); false when that needs more than
+    // kMaxRayHitBytes (the passes then march every time). A new buffer holds no hits.
+    bool ensureRayHits(int rays, std::uint32_t entries);
+    std::size_t rayHitBytes() const { return rayHits_.size(); }
+    static constexpr std::size_t kMaxRayHitBytes = std::size_t{1} << 30;  // 1 GiB
     // The filter over the list's entries [first, first + count) (`count` 0 = every occupied voxel:
     // the list, or the grid when `fromList` is false). A voxel's filtered value reads its
     // neighbours', which a range of the list may have traced though the voxel itself lies elsewhere
@@ -89,6 +104,9 @@ private:
     gl::Texture irradiancePos_, irradianceNeg_;  // filtered over the sets: what the gather reads
     int irradianceResolution_ = 0;
     bool irradianceRgba8_ = false;
+    // Sets uRayHits (and binds the buffer) for a voxel-ray program; nothing for cones.
+    void bindRayHits(const gl::Program& program, ConeFeatures features, RayHits hits) const;
+    gl::Buffer rayHits_;  // ensureRayHits
     gl::Program program_;
     // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce (most frames have one).
     ConeProgram bounce8_, bounce16f_;

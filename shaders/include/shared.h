@@ -121,6 +121,9 @@ using mat4 = glm::mat4;
 // then the lists and the levels' bitmasks (offsets from MipmapPass). Work groups of
 // LIT_INJECT_LIST_GROUP_SIZE entries, as over the occupied-voxel list.
 #define LIT_SSBO_MIP_PARENTS 5
+// The voxel rays' first hits (InjectPass::ensureRayHits, bounce.comp.glsl): one uint per occupied-
+// list entry, side (front, back) and ray, recorded by a trace and replayed while the voxels stay.
+#define LIT_SSBO_VOXEL_RAY_HITS 6
 #define LIT_MIP_LIST_LEVELS 10  // levels 0..9: a 512³ volume's whole chain
 
 // ---- Cone choice (cone.glsl), mirrored by tracedCones() in renderer/scene/OverlayShapes.cpp ------

@@ -58,6 +58,29 @@ Light directionalLight(float lux) {
 // Mean of an image over the rectangle [u0,u1]×[v0,v1] of picture coordinates (origin top left).
 glm::vec3 meanOf(const HdrImage& image, float u0, float v0, float u1, float v1) { return image.mean(u0, v0, u1, v1); }
 
+// A copy of shaders/ under the temp folder with `define` added after bounce.comp.glsl's #version: a
+// shader variant to render against (removed again with the object).
+struct BounceShaderVariant {
+    std::filesystem::path root;
+    BounceShaderVariant(const std::filesystem::path& shaders, const std::string& name, const std::string& define) {
+        namespace fs = std::filesystem;
+        root = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+        fs::create_directories(root);
+        fs::copy(shaders, root, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+        std::stringstream text;
+        text << std::ifstream(shaders / "bounce.comp.glsl").rdbuf();
+        std::string source = text.str();
+        source.insert(source.find('\n') + 1, define + "\n");
+        std::ofstream(root / "bounce.comp.glsl", std::ios::trunc) << source;
+    }
+    ~BounceShaderVariant() {
+        std::error_code ignored;
+        std::filesystem::remove_all(root, ignored);
+    }
+    BounceShaderVariant(const BounceShaderVariant&) = delete;
+    BounceShaderVariant& operator=(const BounceShaderVariant&) = delete;
+};
+
 class GiAccuracy : public GlFixture {
 protected:
     // Renders `settings` on the running renderer (whose scene is `scene`: only the settings changed) and
@@ -82,6 +105,16 @@ protected:
             total += b.rgb[i];
         }
         return difference / total;
+    }
+    // The defaults' GI (the cached mode, two bounces, 32 voxel rays) at 64³, L_ID, 48², without
+    // temporal accumulation (its history would blur frames together).
+    static RenderSettings twoBouncesWithRays() {
+        RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
+        setGiMode(settings, GiMode::Cached);
+        settings.bounces = 2;
+        settings.voxelRays = 32;
+        settings.temporalAccumulation = false;
+        return settings;
     }
     // What an update spread over frames must end on: a fresh renderer's image with the whole update
     // in one frame (voxelIrradianceVoxelsPerFrame 0). Replaces the fixture's renderer.
@@ -879,11 +912,7 @@ TEST_F(GiAccuracy, VoxelIrradianceSpreadOverFramesLeavesNoTraceOfTheOldLight) {
 // Cornell box, 64³, two bounces, L_ID, no temporal accumulation. ~3 s.
 TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     Scene scene = loadCornellBox();
-    RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
-    setGiMode(settings, GiMode::Cached);
-    settings.bounces = 2;
-    settings.voxelRays = 32;
-    settings.temporalAccumulation = false;
+    RenderSettings settings = twoBouncesWithRays();
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     renderer_->render(scene, camera, settings);  // everything in the first frame (the default, 0)
@@ -991,26 +1020,17 @@ TEST_F(GiAccuracy, CachedModeRefinementConvergesToAllConeSetsPerVoxel) {
         renderer_->render(scene, camera, settings);  // nothing left to refine: the same image
         const HdrImage after{settings.width, settings.height, renderer_->readHdrRgb()};
 
-        // The all-sets variant: a copy of shaders/ with the define after bounce.comp.glsl's #version.
-        const fs::path root = fs::temp_directory_path() / ("lit_all_sets_" + std::to_string(::getpid()));
-        fs::create_directories(root);
-        fs::copy(sourceDir() / "shaders", root, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-        std::stringstream text;
-        text << std::ifstream(sourceDir() / "shaders" / "bounce.comp.glsl").rdbuf();
-        std::string source = text.str();
-        source.insert(source.find('\n') + 1, "#define LIT_IRRADIANCE_ALL_SETS 1\n");
-        std::ofstream(root / "bounce.comp.glsl", std::ios::trunc) << source;
+        // The all-sets variant.
+        const BounceShaderVariant variant(sourceDir() / "shaders", "lit_all_sets", "#define LIT_IRRADIANCE_ALL_SETS 1");
         RenderSettings allSetsSettings = settings;
         allSetsSettings.voxelIrradianceRefineVoxelsPerFrame = 0;
         HdrImage allSets;
         {
-            Renderer allSetsRenderer(root, log_);
+            Renderer allSetsRenderer(variant.root, log_);
             allSetsRenderer.setScene(scene);
             allSetsRenderer.render(scene, camera, allSetsSettings);
             allSets = HdrImage{settings.width, settings.height, allSetsRenderer.readHdrRgb()};
         }
-        std::error_code ignored;
-        fs::remove_all(root, ignored);
 
         const double before = relativeDifference(oneSet, allSets), converged = relativeDifference(refined, allSets);
         std::printf("cached mode (%d voxel rays) against all 16 sets per voxel: one set %.3f %%, after 15 refinement "
@@ -1020,6 +1040,46 @@ TEST_F(GiAccuracy, CachedModeRefinementConvergesToAllConeSetsPerVoxel) {
         EXPECT_LE(converged, 0.2 * before) << rays << " voxel rays";
         EXPECT_LE(relativeDifference(after, refined), 1e-6) << "the refinement must stop after 15 rounds";
     }
+}
+
+// The voxel rays' hit cache (InjectPass::ensureRayHits): the first trace after a voxelization
+// records every ray's hit, and the traces after a light edit replay them instead of marching. The
+// replayed light must be the marched light exactly: after a light edit, and after a geometry edit
+// (which must record afresh: the old hits would be the old geometry's), the image equals that of
+// the variant that always marches (LIT_RAY_HIT_CACHE 0). Before the cache a light edit cost a
+// re-voxelization's trace (Sponza 256³: ratio 0.88-1.02, issue #12's bar ≤ ¼); with it 0.18-0.23
+// (docs/PERFORMANCE.md). Cornell box, 64³, the defaults (two bounces, 32 rays), L_ID. ~4 s.
+TEST_F(GiAccuracy, VoxelRayHitCacheReplaysTheMarchedLight) {
+    Scene scene = loadCornellBox();
+    RenderSettings settings = twoBouncesWithRays();
+    renderer_->setScene(scene);
+    const CameraView camera = cameraFor(scene, settings);
+    const HdrImage before = renderFrom(scene, camera, settings);
+    const BounceShaderVariant marching(sourceDir() / "shaders", "lit_ray_hits_off", "#define LIT_RAY_HIT_CACHE 0");
+    const auto againstMarching = [&](const char* what) {
+        renderer_->render(scene, camera, settings);
+        const HdrImage cached{settings.width, settings.height, renderer_->readHdrRgb()};
+        Renderer reference(marching.root, log_);
+        reference.setScene(scene);
+        reference.render(scene, camera, settings);
+        const HdrImage marched{settings.width, settings.height, reference.readHdrRgb()};
+        const double difference = relativeDifference(cached, marched), change = relativeDifference(cached, before);
+        std::printf("voxel ray hit cache, %s: L_ID against always marching %.6f %%, against before the edits %.2f %%\n", what,
+                    100.0 * difference, 100.0 * change);
+        EXPECT_GT(change, 0.01) << what << ": the edit must change the light, else the test sees nothing";
+        EXPECT_LE(difference, 1e-6) << what;
+    };
+    ASSERT_FALSE(scene.lights.empty());
+    scene.lights[0].intensity *= 2.0f;
+    scene.lights[0].color = glm::vec3(1.0f, 0.6f, 0.3f);
+    ++scene.lightRevision;
+    againstMarching("light edit (hits replayed)");
+    // Move the tall box: the voxels change, so must the hits.
+    for (Node& node : scene.nodes)
+        if (node.name == "tall_box") node.translation += glm::vec3(0.25f, 0.0f, 0.15f);
+    scene.updateWorldTransforms();
+    ++scene.geometryRevision;
+    againstMarching("the tall box moved (hits recorded again)");
 }
 
 }  // namespace
