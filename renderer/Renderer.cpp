@@ -127,8 +127,11 @@ struct Renderer::Impl {
     void updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty, DrawCounters& counters);
     // Whether the cached mode's update runs over several frames (voxelIrradianceVoxelsPerFrame
     // entries each) rather than all in the edit's frame: only over a complete list longer than that.
+    static std::uint32_t voxelsPerFrame(const RenderSettings& settings) {
+        return static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+    }
     bool spreadOverFrames(const RenderSettings& settings) const {
-        const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+        const std::uint32_t perFrame = voxelsPerFrame(settings);
         return settings.diffuseFromVoxelIrradiance && perFrame > 0 && perFrame < occupiedCount && occupiedListComplete;
     }
     // Logs what the last GI update did and what it cost, once its GPU timings are in.
@@ -234,6 +237,10 @@ struct Renderer::Impl {
         if (rays != rayHitsRays) rayHitsValid = false;
         rayHitsRays = rays;
         return rayHitsValid ? RayHits::Replay : RayHits::Record;
+    }
+    // A trace over the whole list ended: what it recorded is the cache now.
+    void listTraced(RayHits hits) {
+        if (hits == RayHits::Record) rayHitsValid = true;
     }
     bool injectedAnisotropic = true;
     int injectedVoxelRays = 0;
@@ -348,7 +355,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
                 for (int b = 2; b <= bounces; ++b) {
                     const RayHits hits = rayHitsFor(settings);
                     inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete, hits);
-                    if (hits == RayHits::Record) rayHitsValid = true;
+                    listTraced(hits);
                     mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
                 }
             }
@@ -398,14 +405,14 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         // setting went to 0 meanwhile); the last entry ends the bounce (level 0 and its mips), and
         // the last bounce lets the irradiance update start in the next frame.
         Profiler::Scope scope(profiler, "bounces");
-        const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+        const std::uint32_t perFrame = voxelsPerFrame(settings);
         const std::uint32_t left = occupiedCount - std::min(bounceNext, occupiedCount);
         const std::uint32_t count = perFrame == 0 ? left : std::min(perFrame, left);
         const RayHits hits = rayHitsFor(settings);
         inject.traceBounce(voxels, ConeFeatures::of(settings), true, bounceNext, count, hits);
         bounceNext += count;
         if (bounceNext >= occupiedCount) {
-            if (hits == RayHits::Record) rayHitsValid = true;  // the pass ran over the whole list from 0
+            listTraced(hits);  // the pass ran over the whole list from 0
             inject.endBounce(voxels);
             mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
             bounceNext = 0;
@@ -431,11 +438,11 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         }
     } else if (settings.diffuseFromVoxelIrradiance && irradianceRemaining > 0) {
         Profiler::Scope scope(profiler, "voxel irradiance");
-        const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+        const std::uint32_t perFrame = voxelsPerFrame(settings);
         if (!spreadOverFrames(settings)) {
             const RayHits hits = rayHitsFor(settings);
             inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete, 0, 0, 0, hits);
-            if (hits == RayHits::Record) rayHitsValid = true;
+            listTraced(hits);
             irradianceRemaining = 0;
         } else {
             std::uint32_t budget = std::min(perFrame, irradianceRemaining);
@@ -453,7 +460,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             // entry was traced once since the edit: recorded, if that is what the update did.
             if (irradianceRemaining == 0) {
                 resolve.resetHistory();
-                if (hits == RayHits::Record) rayHitsValid = true;
+                listTraced(hits);
             }
         }
         filterAll = irradianceRemaining == 0;

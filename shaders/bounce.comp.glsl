@@ -130,7 +130,7 @@ uint marchVoxelRay(vec3 origin, vec3 dir) {
             vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, cell).r);
             float agreement = length(averaged);
             bool fromBehind = agreement >= kOneSidedMinLength && dot(averaged, dir) > kRayBackFaceCosine * agreement;
-            return uint(cell.x) | (uint(cell.y) << 10u) | (uint(cell.z) << 20u) | (fromBehind ? kRayHitBack : 0u);
+            return packVoxelCoord(cell) | (fromBehind ? kRayHitBack : 0u);
         }
         // The cell to leave: the empty 16³ or 4³ block around the ray, else its voxel.
         float size = coarseEmpty ? float(1 << kRaySkipLevelCoarse) : (blockEmpty ? float(1 << kRaySkipLevel) : 1.0);
@@ -146,7 +146,7 @@ uint marchVoxelRay(vec3 origin, vec3 dir) {
 vec3 rayHitRadiance(uint hit, vec3 dir) {
     if (hit == kRayHitSky) return skyRadiance(dir);
     if ((hit & kRayHitBack) != 0u) return vec3(0.0);
-    vec4 s = texelFetch(voxelRadianceTexture, ivec3(hit & 1023u, (hit >> 10u) & 1023u, (hit >> 20u) & 1023u), 0);
+    vec4 s = texelFetch(voxelRadianceTexture, unpackVoxelCoord(hit), 0);
     return s.a > 0.0 ? decodeRadiance(s.rgb / s.a) : vec3(0.0);
 }
 
@@ -222,8 +222,7 @@ vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float m
 void main() {
     ivec3 v;
     if (uFromList != 0) {
-        if (!listedVoxelInRange(v)) return;
-        gListIndex = uListFirst + gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex;
+        if (!listedVoxelInRange(v, gListIndex)) return;
     } else {
         v = ivec3(gl_GlobalInvocationID);
     }

@@ -86,12 +86,17 @@ ivec3 unpackVoxelCoord(uint p) { return ivec3(int(p & 1023u), int((p >> 10) & 10
 // A part of the list, entries [uListFirst, uListEnd), in one dispatch sized for them (the cached GI
 // mode's amortised irradiance trace and its filter, InjectPass::dispatchListRange); the whole list
 // is uListFirst 0 and uListEnd the capacity, as the indirect dispatch. Use with LIT_VOXEL_LIST_READER.
+// `index`: the voxel's entry in the list (per-entry data kept beside it, the voxel rays' hits).
 #define LIT_VOXEL_LIST_RANGE_READER                                                                       \
     uniform uint uListFirst;                                                                              \
     uniform uint uListEnd;                                                                                \
-    bool listedVoxelInRange(out ivec3 v) {                                                                \
-        uint index = uListFirst + gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex; \
+    bool listedVoxelInRange(out ivec3 v, out uint index) {                                                \
+        index = uListFirst + gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex; \
         if (index >= min(min(occupiedCount, uOccupiedCapacity), uListEnd)) return false;                 \
         v = unpackVoxelCoord(occupiedVoxels[index]);                                                      \
         return true;                                                                                      \
+    }                                                                                                     \
+    bool listedVoxelInRange(out ivec3 v) {                                                                \
+        uint index;                                                                                       \
+        return listedVoxelInRange(v, index);                                                              \
     }

@@ -106,11 +106,16 @@ protected:
         }
         return difference / total;
     }
+    // The cached mode at 64³, L_ID, 48², one bounce and cones (giSettings' pins).
+    static RenderSettings cachedAt64() {
+        RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
+        setGiMode(settings, GiMode::Cached);
+        return settings;
+    }
     // The defaults' GI (the cached mode, two bounces, 32 voxel rays) at 64³, L_ID, 48², without
     // temporal accumulation (its history would blur frames together).
     static RenderSettings twoBouncesWithRays() {
-        RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
-        setGiMode(settings, GiMode::Cached);
+        RenderSettings settings = cachedAt64();
         settings.bounces = 2;
         settings.voxelRays = 32;
         settings.temporalAccumulation = false;
@@ -957,8 +962,7 @@ TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
 // mean L_ID away from a fresh renderer's, against 0 once re-traced). Cornell box, 64³, L_ID. ~2 s.
 TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheConeSettingsChange) {
     const Scene scene = loadCornellBox();
-    RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
-    setGiMode(settings, GiMode::Cached);
+    RenderSettings settings = cachedAt64();
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     const HdrImage before = renderFrom(scene, camera, settings);
@@ -978,8 +982,7 @@ TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheConeSettingsCha
 // different ray count again. Cornell box, 64³, L_ID. ~3 s.
 TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheVoxelRaysChange) {
     const Scene scene = loadCornellBox();
-    RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
-    setGiMode(settings, GiMode::Cached);
+    RenderSettings settings = cachedAt64();
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     const HdrImage cones = renderFrom(scene, camera, settings);
