@@ -46,6 +46,12 @@ std::optional<VoxelChannel> parseVoxelChannel(std::string_view text);  // "radia
 inline constexpr int kMaxBounces = 8;
 // The most rays per voxel RenderSettings::voxelRays asks for (more are clamped to it).
 inline constexpr int kMaxVoxelRays = 256;
+// A spread update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces this many times the
+// setting's voxels a frame where they replay their voxel rays' recorded hits (a light edit after
+// the first update since the voxelization): a replayed voxel costs about a fifth of a marched one
+// (Sponza 256³ on llvmpipe: 1.1 µs against 5.4-6.4 µs), so such a frame costs what a marching
+// one did and an edit's light is final in a quarter of the frames (docs/PERFORMANCE.md).
+inline constexpr int kReplayVoxelsPerFrameFactor = 4;
 // The footprint bound of the accurate GI mode (RenderSettings::coneFootprintPerHeight, with
 // anisotropicVoxels on): the largest voxel a cone leaving a surface samples is a quarter of its
 // height above it. 0.33 was chosen with the fixed six-cone set; with the stratified cone sets

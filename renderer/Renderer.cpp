@@ -32,6 +32,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -127,8 +128,13 @@ struct Renderer::Impl {
     void updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty, DrawCounters& counters);
     // Whether the cached mode's update runs over several frames (voxelIrradianceVoxelsPerFrame
     // entries each) rather than all in the edit's frame: only over a complete list longer than that.
-    static std::uint32_t voxelsPerFrame(const RenderSettings& settings) {
-        return static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+    // Voxels that replay their rays' recorded hits take kReplayVoxelsPerFrameFactor times as many.
+    std::uint32_t voxelsPerFrame(const RenderSettings& settings) const {
+        const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+        const bool replay = rayHitsValid && rayHitsRays == ConeFeatures::of(settings).voxelRays && rayHitsRays > 0;
+        return replay ? static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{perFrame} * kReplayVoxelsPerFrameFactor,
+                                                                          std::numeric_limits<std::uint32_t>::max()))
+                      : perFrame;
     }
     bool spreadOverFrames(const RenderSettings& settings) const {
         const std::uint32_t perFrame = voxelsPerFrame(settings);
@@ -331,30 +337,41 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     }
     if (injectDirty) {
         shadow.bindMaps();
+        const int bounces = std::clamp(settings.bounces, 1, kMaxBounces);
+        // Before the injection, which then writes the bounces' direct radiance beside level 0.
+        if (bounces > 1) voxels.ensureBounceVolumes();
         {
             Profiler::Scope scope(profiler, "inject");
             inject.execute(voxels, occupiedListComplete);
         }
-        {
+        // The mips of the direct light alone are not needed when only the light changed and the
+        // bounces gather with voxel rays: a ray reads level 0 where it ends and, while it marches,
+        // only the mips' occupancy (alpha), which the voxels set, not the light; the last bounce
+        // rebuilds the mips from its level 0. (Cones read the mips' light; the mips after a
+        // voxelization hold the new occupancy; one bounce has no later rebuild.) Until then the
+        // per-pixel specular cones see the mips of the light before the edit, as the gathered
+        // diffuse keeps the old light. Saves a mip build in every light edit (Sponza 256³ with
+        // anisotropic voxels: 120-155 ms of the edit's frame; docs/PERFORMANCE.md).
+        const bool onlyLightChanged = !voxelDirty && !bounceSettingsChanged && !directionalMissing &&
+                                      settings.voxelRadianceRange == injectedRadianceRange;
+        const bool mipsAfterLastBounce = onlyLightChanged && bounces > 1 && ConeFeatures::of(settings).voxelRays > 0;
+        if (!mipsAfterLastBounce) {
             Profiler::Scope scope(profiler, "mipmap");
             mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
         }
         // Bounces 2..N: each re-injects the voxels' traced indirect light (docs/GI.md). In the
         // cached mode with the update spread over frames, they are spread too (below): a light
         // dragged in the editor would otherwise stall every frame of the drag for whole bounces.
-        const int bounces = std::clamp(settings.bounces, 1, kMaxBounces);
         bounceUnderWay = 0;
         if (bounces > 1) {
-            voxels.ensureBounceVolumes();
             Profiler::Scope scope(profiler, "bounces");
             if (spreadOverFrames(settings)) {
-                inject.beginBounces(voxels);
                 bounceUnderWay = 2;
                 bounceNext = 0;
             } else {
                 for (int b = 2; b <= bounces; ++b) {
                     const RayHits hits = rayHitsFor(settings);
-                    inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete, hits);
+                    inject.executeBounce(voxels, ConeFeatures::of(settings), occupiedListComplete, hits);
                     listTraced(hits);
                     mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
                 }
@@ -413,7 +430,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         bounceNext += count;
         if (bounceNext >= occupiedCount) {
             listTraced(hits);  // the pass ran over the whole list from 0
-            inject.endBounce(voxels);
+            inject.endBounce(voxels, true);
             mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
             bounceNext = 0;
             bounceUnderWay = bounceUnderWay < injectedBounces ? bounceUnderWay + 1 : 0;

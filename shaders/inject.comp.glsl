@@ -22,6 +22,16 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNor
 layout(binding = LIT_IMG_VOXEL_EMISSION, r32ui) uniform readonly uimage3D voxelEmission;
 // RGBA16F or RGBA8 (VoxelVolume::radianceFormat()): store-only, so no format qualifier needed.
 layout(binding = LIT_IMG_VOXEL_RADIANCE) uniform writeonly image3D voxelRadiance;
+// With light bounces (uWriteDirect 1, VoxelVolume::direct() allocated) the same radiance goes to
+// the direct volume too, which the bounces read (bounce.comp.glsl) while level 0 is replaced: one
+// more store per listed voxel instead of copying the whole N³ volume in the edit's frame.
+layout(binding = LIT_IMG_VOXEL_DIRECT) uniform writeonly image3D voxelDirect;
+uniform int uWriteDirect;
+
+void storeRadiance(ivec3 v, vec4 value) {
+    imageStore(voxelRadiance, v, value);
+    if (uWriteDirect != 0) imageStore(voxelDirect, v, value);
+}
 
 const float kPi = 3.14159265358979;
 // The voxel centre may lie up to half a voxel behind the surface it holds: shadow lookups start
@@ -60,7 +70,7 @@ void main() {
 
     vec4 albedo = unpackVoxel(imageLoad(voxelAlbedo, v).r);
     if (albedo.a == 0.0) {
-        imageStore(voxelRadiance, v, vec4(0.0));
+        storeRadiance(v, vec4(0.0));
         return;
     }
     vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, v).r);
@@ -85,5 +95,5 @@ void main() {
                                             kShadowNormalOffsetTexels);
         radiance += albedo.rgb / kPi * s.radiance * cosine * visibility;
     }
-    imageStore(voxelRadiance, v, vec4(encodeRadiance(radiance), 1.0));
+    storeRadiance(v, vec4(encodeRadiance(radiance), 1.0));
 }

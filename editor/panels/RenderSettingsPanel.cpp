@@ -216,9 +216,11 @@ bool drawGlobalIllumination(RenderSettings& s) {
         changed |= ImGui::DragInt("Irradiance voxels / frame", &s.voxelIrradianceVoxelsPerFrame, 256.0f, 0, 1 << 24,
                                   s.voxelIrradianceVoxelsPerFrame == 0 ? "all at once" : "%d voxels");
         tooltip("Occupied voxels traced per frame after an edit, for each bounce past the first and then\n"
-                "the irradiance (count; 0 = all in the edit's frame). A light edit then takes bounces x\n"
-                "occupied / this frames, each costing a share of the pass (~20 us per voxel on llvmpipe);\n"
-                "voxels not reached yet keep the old light. The performance overlay shows the progress");
+                "the irradiance (count; 0 = all in the edit's frame); voxels not reached yet keep the old\n"
+                "light. After a voxelization the first bounce marches the voxel rays (~5 us per voxel on\n"
+                "llvmpipe) and records their hits; the passes after it replay them, 4x as many voxels a\n"
+                "frame at about the same cost, so a light edit takes bounces x occupied / (4 x this)\n"
+                "frames. The performance overlay shows the progress");
         changed |= ImGui::DragInt("Refine voxels / frame", &s.voxelIrradianceRefineVoxelsPerFrame, 256.0f, 0, 1 << 24,
                                   s.voxelIrradianceRefineVoxelsPerFrame == 0 ? "off" : "%d voxels");
         tooltip("Once the light is traced, occupied voxels traced again per frame with the other cone sets\n"

@@ -73,21 +73,9 @@ std::vector<gl::Program*> InjectPass::programs() {
     bounce16f_.appendBuilt(programs);
     irradiance8_.appendBuilt(programs);
     irradiance16f_.appendBuilt(programs);
-    for (gl::Program* filter : {&filter8_, &filter16f_})
-        if (*filter) programs.push_back(filter);
+    for (gl::Program* built : {&filter8_, &filter16f_, &copy8_, &copy16f_})
+        if (*built) programs.push_back(built);
     return programs;
-}
-
-void InjectPass::beginBounces(const VoxelVolume& volume) {
-    const int n = volume.resolution();
-    if (n <= 0 || !volume.direct()) return;
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    // direct = the injected radiance; bounce starts as it too, so the voxels the list skips (empty
-    // ones: radiance 0) hold the right value when bounce is copied back.
-    glCopyImageSubData(volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.direct().id(), GL_TEXTURE_3D, 0, 0, 0,
-                       0, n, n, n);
-    glCopyImageSubData(volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.bounce().id(), GL_TEXTURE_3D, 0, 0, 0,
-                       0, n, n, n);
 }
 
 void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
@@ -108,20 +96,36 @@ void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, b
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-void InjectPass::endBounce(const VoxelVolume& volume) {
+void InjectPass::endBounce(const VoxelVolume& volume, bool fromList) {
     const int n = volume.resolution();
     if (n <= 0 || !volume.direct()) return;
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     // The bounce replaces level 0; the caller rebuilds the mips from it.
+    if (fromList && volume.occupiedList()) {
+        // Only the listed voxels: the bounce wrote those, and level 0 of the others is 0.
+        const bool rgba8 = volume.radianceRgba8();
+        gl::Program& program = rgba8 ? copy8_ : copy16f_;
+        if (!program)
+            program = gl::Program(shaderRoot_, rgba8 ? "bounce copy rgba8" : "bounce copy rgba16f",
+                                  {{GL_COMPUTE_SHADER, "bounce_copy.comp.glsl"}},
+                                  rgba8 ? "#define LIT_BOUNCE_RGBA8 1\n" : "#define LIT_BOUNCE_RGBA8 0\n");
+        program.use();
+        glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_READ_ONLY,
+                           volume.radianceFormat());
+        glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                           volume.radianceFormat());
+        dispatchOverVoxels(volume, program, true);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        return;
+    }
+    // The whole grid (the list overflowed: the bounce traced every voxel).
     glCopyImageSubData(volume.bounce().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0,
                        0, n, n, n);
 }
 
-void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList,
-                               RayHits hits) {
-    if (first) beginBounces(volume);
+void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList, RayHits hits) {
     traceBounce(volume, features, fromList, 0, 0, hits);
-    endBounce(volume);
+    endBounce(volume, fromList);
 }
 
 bool InjectPass::ensureRayHits(int rays, std::uint32_t entries) {
@@ -248,6 +252,12 @@ void InjectPass::execute(const VoxelVolume& volume, bool fromList) {
     glBindImageTexture(LIT_IMG_VOXEL_EMISSION, volume.emission().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                        volume.radianceFormat());
+    // The bounces' copy of the direct light (inject.comp.glsl), written as level 0 is.
+    const bool writeDirect = static_cast<bool>(volume.direct());
+    glProgramUniform1i(program_.id(), program_.location("uWriteDirect"), writeDirect ? 1 : 0);
+    if (writeDirect)
+        glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                           volume.radianceFormat());
     dispatchOverVoxels(volume, program_, fromList);
     // The mipmap pass reads level 0 as an image; cone tracing and debug views sample it.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -37,19 +37,19 @@ public:
 
     // Light bounces: after execute() and a full mip build (MipmapPass::execute), each bounce makes
     // level 0 direct radiance + albedo × the voxel's traced indirect diffuse (shaders/bounce.comp.glsl),
-    // and the caller rebuilds the mips after it. beginBounces, once before the first bounce, keeps a
-    // copy of the direct radiance in volume.direct() (allocated by ensureBounceVolumes, which the
-    // caller must have called); traceBounce traces the list entries [first, first + count) (count 0:
-    // all of them; the cached mode spreads a bounce over frames, Renderer) into volume.bounce(),
-    // reading the radiance volume as it stands; endBounce, once every voxel was traced, copies the
-    // bounce into level 0. `fromList`: only the occupied-voxel list's voxels trace (as execute);
-    // false when the list overflowed. `features`: the cone features to trace with
-    // (ConeFeatures::of the settings). executeBounce is one whole bounce (begin when `first`).
-    void beginBounces(const VoxelVolume& volume);
+    // and the caller rebuilds the mips after it. The direct radiance is volume.direct(), which
+    // execute() writes beside level 0 when it is allocated (VoxelVolume::ensureBounceVolumes, which
+    // the caller must call before execute()). traceBounce traces the list entries [first, first +
+    // count) (count 0: all of them; the cached mode spreads a bounce over frames, Renderer) into
+    // volume.bounce(), reading the radiance volume as it stands; endBounce, once every voxel was
+    // traced, copies the bounce into level 0: the listed voxels only (bounce_copy.comp.glsl), or
+    // the whole grid when `fromList` is false. `fromList`: only the occupied-voxel list's voxels
+    // trace (as execute); false when the list overflowed. `features`: the cone features to trace
+    // with (ConeFeatures::of the settings). executeBounce is one whole bounce.
     void traceBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList = true, std::uint32_t first = 0,
                      std::uint32_t count = 0, RayHits hits = RayHits::Off);
-    void endBounce(const VoxelVolume& volume);
-    void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool first, bool fromList = true,
+    void endBounce(const VoxelVolume& volume, bool fromList = true);
+    void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList = true,
                        RayHits hits = RayHits::Off);
 
     // The cached GI mode (RenderSettings::diffuseFromVoxelIrradiance): after execute() and a full
@@ -110,6 +110,7 @@ private:
     gl::Program program_;
     // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce (most frames have one).
     ConeProgram bounce8_, bounce16f_;
+    gl::Program copy8_, copy16f_;  // bounce_copy.comp.glsl, built by the first endBounce over the list
     std::filesystem::path shaderRoot_;
 };
 

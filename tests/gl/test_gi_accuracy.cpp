@@ -913,8 +913,10 @@ TEST_F(GiAccuracy, VoxelIrradianceSpreadOverFramesLeavesNoTraceOfTheOldLight) {
 // voxelIrradianceVoxelsPerFrame > 0): after a light edit, each bounce takes ⌈occupied ÷ per frame⌉
 // frames, then the irradiance as many, and the image is then a renderer's that did all of it in one
 // frame; a frame earlier it still differs. Without the spreading every frame of a light drag in the
-// editor paid whole bounces (Cornell 128³ with 32 voxel rays: 1.5 s a bounce on llvmpipe).
-// Cornell box, 64³, two bounces, L_ID, no temporal accumulation. ~3 s.
+// editor paid whole bounces (Cornell 128³ with 32 voxel rays: 1.5 s a bounce on llvmpipe). A light
+// edit replays the voxel rays' recorded hits, kReplayVoxelsPerFrameFactor times the setting's voxels
+// a frame; after a voxelization the bounce records them at the setting's pace, and the irradiance
+// then replays them. Cornell box, 64³, two bounces, L_ID, no temporal accumulation. ~4 s.
 TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     Scene scene = loadCornellBox();
     RenderSettings settings = twoBouncesWithRays();
@@ -924,7 +926,8 @@ TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     const std::uint32_t occupied = renderer_->stats().occupiedVoxels;
     ASSERT_GT(occupied, 1000u);
     constexpr int kFrames = 3;  // per pass over the list: the bounce's, then the irradiance's
-    settings.voxelIrradianceVoxelsPerFrame = static_cast<int>((occupied + kFrames - 1) / kFrames);
+    constexpr std::uint32_t kReplayed = kFrames * kReplayVoxelsPerFrameFactor;
+    settings.voxelIrradianceVoxelsPerFrame = static_cast<int>((occupied + kReplayed - 1) / kReplayed);
     ASSERT_FALSE(scene.lights.empty());
     scene.lights[0].intensity *= 4.0f;
     scene.lights[0].color = glm::vec3(1.0f, 0.5f, 0.25f);
@@ -947,12 +950,30 @@ TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     const HdrImage done{settings.width, settings.height, renderer_->readHdrRgb()};
     const HdrImage fresh = allAtOnceInAFreshRenderer(scene, camera, settings);
     const double before = relativeDifference(early, fresh), after = relativeDifference(done, fresh);
-    std::printf("two bounces over %d + %d frames (%d of %u voxels each): L_ID vs all at once after %d frames %.3f %%, "
-                "after %d %.5f %%\n",
-                kFrames, kFrames, settings.voxelIrradianceVoxelsPerFrame, occupied, 2 * kFrames - 1, 100.0 * before,
-                2 * kFrames, 100.0 * after);
+    std::printf("two bounces over %d + %d frames (%d × %d of %u voxels each, replayed): L_ID vs all at once after %d "
+                "frames %.3f %%, after %d %.5f %%\n",
+                kFrames, kFrames, kReplayVoxelsPerFrameFactor, settings.voxelIrradianceVoxelsPerFrame, occupied,
+                2 * kFrames - 1, 100.0 * before, 2 * kFrames, 100.0 * after);
     EXPECT_GT(before, 0.01) << "a frame early some voxels must still hold the old light";
     EXPECT_LE(after, 1e-5);
+
+    // A voxelization: the bounce marches and records the hits at the setting's pace, the
+    // irradiance replays them at the factor's.
+    ++scene.geometryRevision;
+    const std::uint32_t perFrame = static_cast<std::uint32_t>(settings.voxelIrradianceVoxelsPerFrame);
+    const int bounceFrames = static_cast<int>((occupied + perFrame - 1) / perFrame);
+    int frames = 0;
+    do {
+        renderer_->render(scene, camera, settings);
+        ++frames;
+        if (frames == bounceFrames - 1) {
+            EXPECT_EQ(renderer_->stats().giUpdateStage, "bounce 2");  // its last frame is next
+        }
+    } while (renderer_->stats().giUpdateDone < 1.0f && frames < 100);
+    std::printf("after a voxelization: %d frames (the bounce %d, recording)\n", frames, bounceFrames);
+    EXPECT_EQ(frames, bounceFrames + kFrames);
+    const HdrImage revoxelized{settings.width, settings.height, renderer_->readHdrRgb()};
+    EXPECT_LE(relativeDifference(revoxelized, fresh), 1e-5);
 }
 
 // The cached mode's voxel irradiance is traced with the cone settings (footprint bound, aperture,
