@@ -63,9 +63,9 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNor
 #define LIT_IRRADIANCE_ALL_SETS 0
 #endif
 #if LIT_BOUNCE_IRRADIANCE
-// In the radiance volume's format and encoding (encodeRadiance): RGBA8 halves their memory.
-layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform image3D voxelIrradiancePosOut;
-layout(binding = LIT_IMG_VOXEL_BOUNCE, BOUNCE_FORMAT) uniform image3D voxelIrradianceNegOut;
+// In the radiance volume's format and encoding (encodeRadiance): RGBA8 halves their memory. The
+// side of the averaged normal at z, the other side at z + N (kIrradianceOtherSide, voxel.glsl).
+layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform image3D voxelIrradianceOut;
 // The refinement (RenderSettings::voxelIrradianceRefineVoxelsPerFrame): round k = uSetOffset
 // (1..15) traces the set voxelConeSetIndex + k and averages it into what rounds 0..k − 1 left,
 // weight uBlend = 1 / (k + 1); round 0 (the edit's trace) writes with weight 1.
@@ -250,13 +250,13 @@ void main() {
                     : front;
 #if LIT_BOUNCE_IRRADIANCE
     if (uBlend < 1.0) {
-        vec4 oldFront = imageLoad(voxelIrradiancePosOut, v), oldBack = imageLoad(voxelIrradianceNegOut, v);
+        vec4 oldFront = imageLoad(voxelIrradianceOut, v), oldBack = imageLoad(voxelIrradianceOut, otherSideTexel(v));
         // A voxel not traced yet (alpha 0) takes the new value alone.
         if (oldFront.a > 0.0) front = mix(decodeRadiance(oldFront.rgb), front, uBlend);
         if (oldBack.a > 0.0) back = mix(decodeRadiance(oldBack.rgb), back, uBlend);
     }
-    imageStore(voxelIrradiancePosOut, v, vec4(encodeRadiance(front), 1.0));
-    imageStore(voxelIrradianceNegOut, v, vec4(encodeRadiance(back), 1.0));
+    imageStore(voxelIrradianceOut, v, vec4(encodeRadiance(front), 1.0));
+    imageStore(voxelIrradianceOut, otherSideTexel(v), vec4(encodeRadiance(back), 1.0));
 #else
     vec3 irradiance = 0.5 * (front + back);  // = front for a one-sided voxel
     vec3 radiance = decodeRadiance(direct.rgb) + albedo.rgb * irradiance * voxel.traceParams.x;

@@ -13,6 +13,22 @@
 #include "cone_strata.glsl"
 #include "voxel_irradiance.glsl"
 
+// The cached mode (LIT_VOXEL_IRRADIANCE) in two programs (ConeTracePass::executeReduced): without
+// LIT_TRACE_LOBES the gather, with no cone code, writes every texel and marks in the lobe mask
+// (gl_FragDepth 0) those whose specular lobe needs cones (rougher than uSmoothRoughness, too narrow
+// for the gathered irradiance); with it, early depth tests run the whole texel again, lobe
+// included, on the marked texels only. The same texel results as one program doing both; on
+// llvmpipe the mere presence of the lobe's cone loops, never taken on a rough wall, cost the gather
+// 40 % of its time. The other modes trace cones for L_ID anyway and use one program.
+#ifndef LIT_TRACE_LOBES
+#define LIT_TRACE_LOBES 0
+#endif
+#if LIT_VOXEL_IRRADIANCE && LIT_TRACE_LOBES
+layout(early_fragment_tests) in;  // the lobe mask's depth test decides before the shader runs
+#endif
+const float kLobeTrace = 0.0;  // lobe-mask depth of a texel the lobe pass traces
+const float kLobeDone = 1.0;
+
 layout(location = 0) out uvec4 outPacked;
 layout(location = 1) out uvec4 outGuide;
 
@@ -77,6 +93,9 @@ void main() {
     vec4 outDiffuse = vec4(0.0), outSpecular = vec4(0.0);
     outPacked = uvec4(0u);
     outGuide = uvec4(0u);
+#if LIT_VOXEL_IRRADIANCE && !LIT_TRACE_LOBES
+    gl_FragDepth = kLobeDone;
+#endif
     if (!s.valid) return;
     outGuide = packGuide(s.position, s.normal);
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
@@ -159,10 +178,16 @@ void main() {
         outDiffuse = vec4(traceDiffuseInFrame(origin, basis, voxel.traceParams.w, maxDistance, cones), 1.0);
 #endif
     if (specular) {
-#if LIT_VOXEL_IRRADIANCE
+#if LIT_VOXEL_IRRADIANCE && LIT_TRACE_LOBES
         vec3 lobe = lobeFromIrradiance ? gathered
                                        : traceSpecularLobe(origin, n, basis, v, s.roughness, count, vec2(pixel),
                                                            voxel.traceOptions.y, maxDistance, false, cones);
+#elif LIT_VOXEL_IRRADIANCE
+        if (!lobeFromIrradiance) {
+            gl_FragDepth = kLobeTrace;  // the lobe pass redoes this texel
+            return;
+        }
+        vec3 lobe = gathered;
 #else
         vec3 lobe = traceSpecularLobe(origin, n, basis, v, s.roughness, count, vec2(pixel), voxel.traceOptions.y,
                                       maxDistance, reuse, cones);

@@ -34,11 +34,10 @@ LIT_VOXEL_LIST_RANGE_READER
 #define IRRADIANCE_FORMAT rgba16f
 #endif
 
-layout(binding = LIT_TEX_VOXEL_IRRADIANCE_POS) uniform sampler3D rawIrradiancePos;
-layout(binding = LIT_TEX_VOXEL_IRRADIANCE_NEG) uniform sampler3D rawIrradianceNeg;
+// Both sides in one volume each (otherSideTexel, voxel.glsl).
+layout(binding = LIT_TEX_VOXEL_IRRADIANCE) uniform sampler3D rawIrradiance;
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNormal;
-layout(binding = LIT_IMG_VOXEL_DIRECT, IRRADIANCE_FORMAT) uniform writeonly image3D filteredPos;
-layout(binding = LIT_IMG_VOXEL_BOUNCE, IRRADIANCE_FORMAT) uniform writeonly image3D filteredNeg;
+layout(binding = LIT_IMG_VOXEL_DIRECT, IRRADIANCE_FORMAT) uniform writeonly image3D filtered;
 
 // A voxel's unit normal and whether it is one-sided, as bounce.comp.glsl traced it; false if empty.
 bool voxelSurface(ivec3 v, out vec3 normal, out bool oneSided) {
@@ -72,7 +71,7 @@ vec4 filteredSide(ivec3 c, vec3 n, int res) {
             bool otherSide = !oneSided && d < 0.0;
             float facing = otherSide ? -d : d;
             if (facing <= 0.0) continue;
-            vec4 e = otherSide ? texelFetch(rawIrradianceNeg, v, 0) : texelFetch(rawIrradiancePos, v, 0);
+            vec4 e = texelFetch(rawIrradiance, otherSide ? otherSideTexel(v) : v, 0);
             if (e.a == 0.0) continue;  // not traced yet
             float f2 = facing * facing, f4 = f2 * f2, f8 = f4 * f4;
             float weight = (abs(u) == 2 ? 0.5 : 1.0) * (abs(w) == 2 ? 0.5 : 1.0) * f8 * f8;
@@ -96,6 +95,6 @@ void main() {
     if (!voxelSurface(v, normal, oneSided)) return;  // empty: never read by the gather
     vec4 front = filteredSide(v, normal, res);
     vec4 back = oneSided ? front : filteredSide(v, -normal, res);
-    imageStore(filteredPos, v, vec4(encodeRadiance(front.rgb), front.a > 0.0 ? 1.0 : 0.0));
-    imageStore(filteredNeg, v, vec4(encodeRadiance(back.rgb), back.a > 0.0 ? 1.0 : 0.0));
+    imageStore(filtered, v, vec4(encodeRadiance(front.rgb), front.a > 0.0 ? 1.0 : 0.0));
+    imageStore(filtered, otherSideTexel(v), vec4(encodeRadiance(back.rgb), back.a > 0.0 ? 1.0 : 0.0));
 }

@@ -23,6 +23,9 @@ ConeTracePass::ConeTracePass(const std::filesystem::path& shaderRoot)
                             {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}},
                             // Built for the default settings' features; the other mode's variant on first use.
                             "#define LIT_CONE_SUBSETS 1\n", ConeFeatures::of(RenderSettings{})),
+      reducedLobeProgram_(shaderRoot, "indirect trace (reduced, cone lobes)",
+                          {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_trace.frag.glsl"}},
+                          "#define LIT_TRACE_LOBES 1\n", ConeFeatures::of(RenderSettings{})),
       strataFilter_(shaderRoot) {
     constexpr int size = LIT_SPECULAR_ALBEDO_SIZE;
     albedoTable_ = gl::Texture("specular albedo table", {GL_TEXTURE_2D, GL_RG16F, size, size, 1, 1});
@@ -40,6 +43,7 @@ std::vector<gl::Program*> ConeTracePass::programs() {
     program_.appendBuilt(programs);
     reducedProgram_.appendBuilt(programs);
     reducedSubsetProgram_.appendBuilt(programs);
+    reducedLobeProgram_.appendBuilt(programs);
     for (gl::Program* program : strataFilter_.programs()) programs.push_back(program);
     return programs;
 }
@@ -129,7 +133,10 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         t.guide = gl::Texture("indirect guide (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
         t.packed.setFilter(GL_NEAREST, GL_NEAREST);
         t.guide.setFilter(GL_NEAREST, GL_NEAREST);
+        t.lobeMask = gl::Texture("indirect lobe mask (reduced)", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT16, w, h, 1, 1});
         t.target = gl::Framebuffer::withColours("indirect (reduced)", {&t.packed, &t.guide});
+        t.target.attach(GL_DEPTH_ATTACHMENT, t.lobeMask);
+        t.target.checkComplete("indirect (reduced)");
     }
     LowTargets& t = low_.current();
     const ConeFeatures features = ConeFeatures::of(settings);
@@ -169,7 +176,33 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     glProgramUniform2i(id, program.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
     glProgramUniform1f(id, program.location("uRotation"), sampling.rotation);
     if (subsets) glProgramUniform1i(id, program.location("uConeSubset"), sampling.coneSubset);
+    // The cached mode: the gather writes the lobe mask (gl_FragDepth, so the depth test must be on
+    // to write it), then the lobe pass redoes the marked texels only: the triangle lies at window
+    // depth 0.5 and the mask holds 0 where a lobe needs cones, so GREATER passes those (as
+    // IndirectFallbackPass does with the resolve's trace mask).
+    const bool lobePass = features.voxelIrradiance && !subsets && !strataFilter;
+    if (lobePass) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_ALWAYS);
+        glDepthMask(GL_TRUE);
+    }
     triangle_.draw();
+    if (lobePass) {
+        const gl::Program& lobes = reducedLobeProgram_.get(features);
+        lobes.use();
+        const GLuint lobesId = lobes.id();
+        glProgramUniform2i(lobesId, lobes.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
+        glProgramUniform1f(lobesId, lobes.location("uSmoothRoughness"), settings.specularFullResRoughness);
+        glProgramUniform1i(lobesId, lobes.location("uScale"), scale);
+        glProgramUniform2i(lobesId, lobes.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
+        glProgramUniform1f(lobesId, lobes.location("uRotation"), sampling.rotation);
+        glDepthFunc(GL_GREATER);
+        glDepthMask(GL_FALSE);
+        triangle_.draw();
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
+        glDisable(GL_DEPTH_TEST);
+    }
     if (strataFilter) strataFilter_.execute(t.tracedPacked, t.guide, t.filteredTarget, w, h);
 }
 

@@ -95,11 +95,18 @@ private:
     gl::Program albedoProgram_;
     ConeProgram reducedProgram_;
     ConeProgram reducedSubsetProgram_;  // indirect_trace.frag.glsl with LIT_CONE_SUBSETS 1
+    // The cached GI mode's texels whose specular lobe needs cones (indirect_trace.frag.glsl with
+    // LIT_TRACE_LOBES 1): the main trace has no cone code and marks them in the lobe mask. On
+    // llvmpipe the cone code behind an untaken branch cost the ½-scale trace of the full-frame
+    // Cornell box 40 % of its time (75 against 45 ms; docs/PERFORMANCE.md, fourteenth session).
+    ConeProgram reducedLobeProgram_;
     // The low-resolution targets of one size, kept for two sizes (the editor's interactive render
     // scale switches back and forth; TargetsBySize): RGBA32UI, ⌈width/s⌉ × ⌈height/s⌉.
     struct LowTargets {
         int width = 0, height = 0;
         gl::Texture packed, guide;
+        // Depth: 0 where the cached mode's lobe pass traces the texel, 1 elsewhere (reducedLobeProgram_).
+        gl::Texture lobeMask;
         gl::Framebuffer target;
         // Footprint-bounded cones: the trace goes to tracedPacked (+ guide), the strata filter
         // writes packed from it (allocated on first use).

@@ -161,21 +161,18 @@ void InjectPass::prepareIrradiance(const VoxelVolume& volume, bool clear) {
     const bool rgba8 = volume.radianceRgba8();
     if (irradianceResolution_ != n || irradianceRgba8_ != rgba8) {
         const GLenum format = volume.radianceFormat();
-        rawPos_ = gl::Texture("voxel irradiance +normal (traced)", {GL_TEXTURE_3D, format, n, n, n, 1});
-        rawNeg_ = gl::Texture("voxel irradiance -normal (traced)", {GL_TEXTURE_3D, format, n, n, n, 1});
-        irradiancePos_ = gl::Texture("voxel irradiance +normal", {GL_TEXTURE_3D, format, n, n, n, 1});
-        irradianceNeg_ = gl::Texture("voxel irradiance -normal", {GL_TEXTURE_3D, format, n, n, n, 1});
+        // Both sides stacked in z (otherSideTexel, voxel.glsl).
+        raw_ = gl::Texture("voxel irradiance (traced)", {GL_TEXTURE_3D, format, n, n, 2 * n, 1});
+        irradiance_ = gl::Texture("voxel irradiance", {GL_TEXTURE_3D, format, n, n, 2 * n, 1});
         // Read with texelFetch only; nearest keeps the one-level volumes complete for any sampler state.
-        for (const gl::Texture* t : {&rawPos_, &rawNeg_, &irradiancePos_, &irradianceNeg_})
-            t->setFilter(GL_NEAREST, GL_NEAREST);
+        for (const gl::Texture* t : {&raw_, &irradiance_}) t->setFilter(GL_NEAREST, GL_NEAREST);
         irradianceResolution_ = n;
         irradianceRgba8_ = rgba8;
         clear = true;  // new storage holds anything
     }
     if (!clear) return;
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (const gl::Texture* t : {&rawPos_, &rawNeg_, &irradiancePos_, &irradianceNeg_})
-        glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, zero);
+    for (const gl::Texture* t : {&raw_, &irradiance_}) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, zero);
 }
 
 void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
@@ -196,8 +193,7 @@ void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures featu
     const gl::Program& program = tracePrograms.get(features);
     useWithVoxelSurfaces(program, volume, features);
     // Read and written: the refinement averages into what is there.
-    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, rawPos_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
-    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, rawNeg_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, raw_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
     glProgramUniform1i(program.id(), program.location("uSetOffset"), std::max(setOffset, 0));
     glProgramUniform1f(program.id(), program.location("uBlend"), 1.0f / static_cast<float>(std::max(setOffset, 0) + 1));
     // Only the first set's rays are those the cache holds.
@@ -221,24 +217,20 @@ void InjectPass::filterIrradiance(const VoxelVolume& volume, bool fromList, std:
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     filter.use();
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
-    for (const GLuint unit : {LIT_TEX_VOXEL_IRRADIANCE_POS, LIT_TEX_VOXEL_IRRADIANCE_NEG}) glBindSampler(unit, 0);
-    rawPos_.bind(LIT_TEX_VOXEL_IRRADIANCE_POS);
-    rawNeg_.bind(LIT_TEX_VOXEL_IRRADIANCE_NEG);
+    glBindSampler(LIT_TEX_VOXEL_IRRADIANCE, 0);
+    raw_.bind(LIT_TEX_VOXEL_IRRADIANCE);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiancePos_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
-    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, irradianceNeg_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
     dispatchListRange(volume, filter, fromList, first, count);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void InjectPass::bindIrradiance(const VoxelVolume& volume) const {
-    if (!irradiancePos_) return;
-    // The three are one-level volumes with nearest filtering (set where they are made); a sampler
+    if (!irradiance_) return;
+    // Both are one-level volumes with nearest filtering (set where they are made); a sampler
     // object left on these units by another pass would override that.
-    for (const GLuint unit : {LIT_TEX_VOXEL_IRRADIANCE_POS, LIT_TEX_VOXEL_IRRADIANCE_NEG, LIT_TEX_VOXEL_NORMAL})
-        glBindSampler(unit, 0);
-    irradiancePos_.bind(LIT_TEX_VOXEL_IRRADIANCE_POS);
-    irradianceNeg_.bind(LIT_TEX_VOXEL_IRRADIANCE_NEG);
+    for (const GLuint unit : {LIT_TEX_VOXEL_IRRADIANCE, LIT_TEX_VOXEL_NORMAL}) glBindSampler(unit, 0);
+    irradiance_.bind(LIT_TEX_VOXEL_IRRADIANCE);
     volume.normal().bind(LIT_TEX_VOXEL_NORMAL);
 }
 

@@ -54,11 +54,12 @@ public:
 
     // The cached GI mode (RenderSettings::diffuseFromVoxelIrradiance): after execute() and a full
     // mip build, occupied voxels trace diffuse cones (bounce.comp.glsl with LIT_BOUNCE_IRRADIANCE)
-    // and their irradiance/π per side goes to two "raw" volumes (alpha 1 where traced); then every
+    // and their irradiance/π per side goes to the "raw" volume (alpha 1 where traced); then every
     // occupied voxel averages the raw values over one period of the cone sets' pattern along its
-    // surface (voxel_irradiance_filter.comp.glsl) into the two volumes bindIrradiance() binds for
-    // the per-pixel gather (voxel_irradiance.glsl). The radiance volume is left as it is. All four
-    // are in the radiance volume's format and encoding (RGBA8 or RGBA16F).
+    // surface (voxel_irradiance_filter.comp.glsl) into the volume bindIrradiance() binds for the
+    // per-pixel gather (voxel_irradiance.glsl). The radiance volume is left as it is. Both are
+    // N × N × 2N (the two sides stacked in z) in the radiance volume's format and encoding (RGBA8 or
+    // RGBA16F).
     // prepareIrradiance makes the volumes for the volume's resolution and format; `clear` (after a
     // voxelization: old values sit at old geometry) marks every voxel not traced (alpha 0, which
     // the filter and the gather skip). A light edit keeps the old values until they are traced again.
@@ -66,7 +67,7 @@ public:
     // Traces the occupied-voxel list's entries [first, first + count) (RenderSettings::
     // voxelIrradianceVoxelsPerFrame: a light edit's voxels spread over frames); `count` 0 = the
     // whole list. `fromList` false (the list overflowed): the whole N³ grid, first/count ignored.
-    // Writes the raw volumes only: filterIrradiance() must follow before the gather reads them.
+    // Writes the raw volume only: filterIrradiance() must follow before the gather reads them.
     // `setOffset` k > 0 (the refinement, RenderSettings::voxelIrradianceRefineVoxelsPerFrame): each
     // voxel traces the set k after its own and averages it into its value with weight 1 / (k + 1).
     void executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first = 0,
@@ -88,7 +89,7 @@ public:
     // in the list: filtering only the traced range leaves those neighbours' values stale until
     // their own range is traced, so the frame that completes an update filters the whole list.
     void filterIrradiance(const VoxelVolume& volume, bool fromList, std::uint32_t first = 0, std::uint32_t count = 0);
-    // Binds the two filtered irradiance volumes and the voxel normals (LIT_TEX_VOXEL_IRRADIANCE_POS/NEG,
+    // Binds the filtered irradiance volume (both sides) and the voxel normals (LIT_TEX_VOXEL_IRRADIANCE,
     // LIT_TEX_VOXEL_NORMAL) for the cone passes.
     void bindIrradiance(const VoxelVolume& volume) const;
     // Bytes of the four irradiance volumes of an N³ volume (memory budget, VoxelVolume.h).
@@ -100,8 +101,10 @@ private:
     // bounce.comp.glsl (LIT_BOUNCE_IRRADIANCE) and the filter, for RGBA8 and RGBA16F volumes.
     ConeProgram irradiance8_, irradiance16f_;
     gl::Program filter8_, filter16f_;
-    gl::Texture rawPos_, rawNeg_;                // as traced, one cone set per voxel
-    gl::Texture irradiancePos_, irradianceNeg_;  // filtered over the sets: what the gather reads
+    // N × N × 2N each: the side of the voxel's averaged normal at z < N, the other at z + N (one
+    // sampler for both sides: llvmpipe fetched from both of two samplers a pixel chose between).
+    gl::Texture raw_;         // as traced, one cone set per voxel
+    gl::Texture irradiance_;  // filtered over the sets: what the gather reads
     int irradianceResolution_ = 0;
     bool irradianceRgba8_ = false;
     // Sets uRayHits (and binds the buffer) for a voxel-ray program; nothing for cones.

@@ -35,7 +35,7 @@ std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     // the base, so the three add 9/7 of it.
     const std::size_t radiance = voxels * texel * 8 / 7 + 9 * (voxels / 8) * texel * 8 / 7;
     // The cached GI mode's four irradiance volumes (InjectPass::irradianceBytes: traced and
-    // filtered, two sides each) in the radiance format; counted in every mode.
+    // filtered, each N × N × 2N: two sides) in the radiance format; counted in every mode.
     const std::size_t irradiance = 4 * voxels * texel;
     return material + radiance + (bounces ? 2 * voxels * texel : 0) + irradiance;
 }
@@ -76,10 +76,13 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     }
     GLint max3d = 0;
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
-    if (n > max3d) {
+    // The cached GI mode's irradiance volumes stack a voxel's two sides in z: N × N × 2N
+    // (InjectPass). GL 4.5 guarantees 2048, so this only binds below the spec.
+    const int limit = max3d / 2;
+    if (n > limit) {
         log.warning("voxel resolution " + std::to_string(n) + " exceeds this GPU's 3D texture limit " +
-                    std::to_string(max3d) + "; using " + std::to_string(max3d));
-        n = static_cast<int>(std::bit_floor(static_cast<unsigned>(max3d)));
+                    std::to_string(max3d) + " (2N deep for the voxel irradiance); using " + std::to_string(limit));
+        n = static_cast<int>(std::bit_floor(static_cast<unsigned>(std::max(limit, 1))));
     }
     if (n == resolution_ && radianceRgba8 == rgba8_) return false;
     const std::size_t free = queryFreeGpuMemory();

@@ -88,11 +88,11 @@ using mat4 = glm::mat4;
 #define LIT_TEX_VOXEL_DIRECTIONAL_FIRST 29
 #define LIT_VOXEL_FACE_COUNT 6
 #define LIT_VOXEL_AXIS_COUNT 3  // directional volumes: one per axis, holding its two faces
-// Voxel irradiance (the cached GI mode, RenderSettings::diffuseFromVoxelIrradiance): N³ in the
-// radiance volume's format, the occupied voxels' irradiance/π on the side of their averaged normal
-// (POS) and the other (NEG); the cone passes read the filtered ones, the filter the traced ones.
-#define LIT_TEX_VOXEL_IRRADIANCE_POS 32
-#define LIT_TEX_VOXEL_IRRADIANCE_NEG 33
+// Voxel irradiance (the cached GI mode, RenderSettings::diffuseFromVoxelIrradiance): N × N × 2N in
+// the radiance volume's format, the occupied voxels' irradiance/π on the side of their averaged
+// normal (z < N) and the other (z + N, otherSideTexel in voxel.glsl); the cone passes read the
+// filtered one, the filter the traced one.
+#define LIT_TEX_VOXEL_IRRADIANCE 32
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0

@@ -30,6 +30,10 @@ const float kOneSidedMinLength = 0.5;
 const float kDirectionMinLength = 0.05;
 vec3 unpackAveragedNormal(uint bits) { return unpackVoxel(bits).xyz * 2.0 - 1.0; }
 
+// The cached GI mode's irradiance volumes (InjectPass) hold both sides of a voxel in one N × N × 2N
+// volume: the side its averaged normal points to at v, the other side (thin walls) here.
+ivec3 otherSideTexel(ivec3 v) { return ivec3(v.xy, v.z + int(voxel.voxelInfo.x)); }
+
 // The packed running average `current` with `value` (rgb in [0,1]) added. The alpha byte counts
 // the samples averaged so far (saturating at 255, after which it is a moving average).
 uint averageRgbAdd(uint current, vec3 value) {

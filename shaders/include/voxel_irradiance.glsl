@@ -18,8 +18,11 @@
 #define LIT_VOXEL_IRRADIANCE 0
 #endif
 #if LIT_VOXEL_IRRADIANCE
-layout(binding = LIT_TEX_VOXEL_IRRADIANCE_POS) uniform sampler3D voxelIrradiancePos;
-layout(binding = LIT_TEX_VOXEL_IRRADIANCE_NEG) uniform sampler3D voxelIrradianceNeg;
+// Both sides in one volume: the averaged normal's at z, the other at z + N (otherSideTexel,
+// voxel.glsl). With one sampler per side llvmpipe fetched from both wherever a pixel chose one
+// (a select, not a branch): the ½-scale trace of the full-frame Cornell box took 80 ms against
+// 67 ms with one fetch (docs/PERFORMANCE.md, fourteenth session).
+layout(binding = LIT_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelIrradiance;
 layout(binding = LIT_TEX_VOXEL_NORMAL) uniform usampler3D voxelNormalTexture;
 
 vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
@@ -44,7 +47,7 @@ vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
                 bool otherSide = agreement < kOneSidedMinLength && d < 0.0;
                 float facing = otherSide ? -d : d;
                 if (facing <= 0.0) continue;
-                vec4 e = otherSide ? texelFetch(voxelIrradianceNeg, v, 0) : texelFetch(voxelIrradiancePos, v, 0);
+                vec4 e = texelFetch(voxelIrradiance, otherSide ? otherSideTexel(v) : v, 0);
                 if (e.a == 0.0) continue;  // not traced yet
                 vec3 tent = max(1.0 - abs(vec3(v) - g) / 1.5, 0.0);
                 float f2 = facing * facing, f4 = f2 * f2, f8 = f4 * f4;

@@ -164,9 +164,10 @@ void checkRenderLimits(const lit::RenderSettings& settings) {
     if (settings.width > maxSide || settings.height > maxSide)
         throw UsageError("the size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                          " is larger than this GL can render (" + std::to_string(maxSide) + " per side)");
-    if (settings.gi && settings.voxelResolution > max3d)
+    // The voxel irradiance volumes are N × N × 2N (InjectPass).
+    if (settings.gi && 2 * settings.voxelResolution > max3d)
         throw UsageError(std::to_string(settings.voxelResolution) + "^3 voxels are more than this GL's 3D textures hold (" +
-                         std::to_string(max3d) + " per side)");
+                         std::to_string(max3d) + " per side, 2N needed)");
     const std::uint64_t needed = estimatedRenderBytes(settings);
     std::uint64_t available = availableRenderBytes();
     // $LIT_MAX_RENDER_MB caps it further (a shared machine, a CI runner).
