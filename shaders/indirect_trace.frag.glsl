@@ -26,6 +26,11 @@
 #if LIT_VOXEL_IRRADIANCE && LIT_TRACE_LOBES
 layout(early_fragment_tests) in;  // the lobe mask's depth test decides before the shader runs
 #endif
+// Tests only (GiAccuracy.CachedTraceLobePassEqualsOneProgramForEveryTexel): 1 marks every texel
+// with a specular lobe, so that the lobe pass does all of them.
+#ifndef LIT_LOBES_FOR_EVERY_TEXEL
+#define LIT_LOBES_FOR_EVERY_TEXEL 0
+#endif
 const float kLobeTrace = 0.0;  // lobe-mask depth of a texel the lobe pass traces
 const float kLobeDone = 1.0;
 
@@ -183,7 +188,7 @@ void main() {
                                        : traceSpecularLobe(origin, n, basis, v, s.roughness, count, vec2(pixel),
                                                            voxel.traceOptions.y, maxDistance, false, cones);
 #elif LIT_VOXEL_IRRADIANCE
-        if (!lobeFromIrradiance) {
+        if (!lobeFromIrradiance || LIT_LOBES_FOR_EVERY_TEXEL != 0) {
             gl_FragDepth = kLobeTrace;  // the lobe pass redoes this texel
             return;
         }

@@ -60,25 +60,32 @@ glm::vec3 meanOf(const HdrImage& image, float u0, float v0, float u1, float v1) 
 
 // A copy of shaders/ under the temp folder with `define` added after bounce.comp.glsl's #version: a
 // shader variant to render against (removed again with the object).
-struct BounceShaderVariant {
+struct ShaderVariant {
     std::filesystem::path root;
-    BounceShaderVariant(const std::filesystem::path& shaders, const std::string& name, const std::string& define) {
+    ShaderVariant(const std::filesystem::path& shaders, const std::string& file, const std::string& name,
+                  const std::string& define) {
         namespace fs = std::filesystem;
         root = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
         fs::create_directories(root);
         fs::copy(shaders, root, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
         std::stringstream text;
-        text << std::ifstream(shaders / "bounce.comp.glsl").rdbuf();
+        text << std::ifstream(shaders / file).rdbuf();
         std::string source = text.str();
         source.insert(source.find('\n') + 1, define + "\n");
-        std::ofstream(root / "bounce.comp.glsl", std::ios::trunc) << source;
+        std::ofstream(root / file, std::ios::trunc) << source;
     }
-    ~BounceShaderVariant() {
+    ~ShaderVariant() {
         std::error_code ignored;
         std::filesystem::remove_all(root, ignored);
     }
-    BounceShaderVariant(const BounceShaderVariant&) = delete;
-    BounceShaderVariant& operator=(const BounceShaderVariant&) = delete;
+    ShaderVariant(const ShaderVariant&) = delete;
+    ShaderVariant& operator=(const ShaderVariant&) = delete;
+};
+
+// bounce.comp.glsl (the voxels' bounces and irradiance) with `define`.
+struct BounceShaderVariant : ShaderVariant {
+    BounceShaderVariant(const std::filesystem::path& shaders, const std::string& name, const std::string& define)
+        : ShaderVariant(shaders, "bounce.comp.glsl", name, define) {}
 };
 
 class GiAccuracy : public GlFixture {
@@ -1104,6 +1111,42 @@ TEST_F(GiAccuracy, VoxelRayHitCacheReplaysTheMarchedLight) {
     scene.updateWorldTransforms();
     ++scene.geometryRevision;
     againstMarching("the tall box moved (hits recorded again)");
+}
+
+// The cached mode's low-resolution trace is two programs (ConeTracePass::executeReduced): a gather
+// without cone code that marks the texels whose specular lobe needs cones, and a lobe pass over
+// those (on llvmpipe the untaken cone code cost the gather 40 % of its time). The split must not
+// change the image: against a variant whose gather marks every texel with a specular lobe, so that
+// the lobe pass (one program doing it all) computes them all, L_IS and the final image are the same.
+// A Cornell box whose walls are 0.25-0.5 rough (lobes between the per-pixel fallback's 0.3 and the
+// gathered irradiance's width: the lobe pass's texels), 64³, 96². If the lobe pass did not run, the
+// marked texels would hold no L_IS. ~2 s.
+TEST_F(GiAccuracy, CachedTraceLobePassEqualsOneProgramForEveryTexel) {
+    Scene scene = loadCornellBox();
+    for (Material& material : scene.materials)
+        material.roughness = material.name == "red" ? 0.5f : (material.name == "green" ? 0.25f : 0.35f);
+    RenderSettings settings = cachedAt64();
+    settings.width = settings.height = 96;
+    const ShaderVariant everyTexel(sourceDir() / "shaders", "indirect_trace.frag.glsl", "lit_lobes_every_texel",
+                                   "#define LIT_LOBES_FOR_EVERY_TEXEL 1");
+    for (const View view : {View::IndirectSpecular, View::Final}) {
+        settings.view = view;
+        renderer_->setScene(scene);
+        const CameraView camera = cameraFor(scene, settings);
+        const HdrImage split = renderFrom(scene, camera, settings);
+        Renderer oneProgram(everyTexel.root, log_);
+        oneProgram.setScene(scene);
+        oneProgram.render(scene, camera, settings);
+        const HdrImage all{settings.width, settings.height, oneProgram.readHdrRgb()};
+        double mean = 0.0;
+        for (const float c : all.rgb) mean += c;
+        mean /= static_cast<double>(all.rgb.size());
+        const double difference = relativeDifference(split, all);
+        std::printf("%s: split trace against the lobe pass for every texel %.6f %% (mean %.5f)\n",
+                    std::string(toString(view)).c_str(), 100.0 * difference, mean);
+        EXPECT_GT(mean, 0.0) << toString(view);
+        EXPECT_LE(difference, 1e-6) << toString(view);
+    }
 }
 
 }  // namespace
