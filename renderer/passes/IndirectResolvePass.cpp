@@ -12,7 +12,10 @@ namespace lit {
 
 IndirectResolvePass::IndirectResolvePass(const std::filesystem::path& shaderRoot)
     : program_(shaderRoot, "indirect resolve",
-               {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_resolve.frag.glsl"}}) {}
+               {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_resolve.frag.glsl"}}),
+      plainProgram_(shaderRoot, "indirect resolve (no history)",
+                    {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_resolve.frag.glsl"}},
+                    "#define LIT_RESOLVE_HISTORY 0\n") {}
 
 IndirectResolvePass::Targets& IndirectResolvePass::targetsFor(const LightingTerms& terms, bool temporal) {
     targets_.select(terms.width(), terms.height());
@@ -130,13 +133,14 @@ void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& con
     last_.sampling = sampling;
     last_.maxFrames = std::max(settings.temporalMaxFrames, 1);
     last_.clampMargin = clampMargin(settings, sampling);
-    bindInputs(program_);
+    const gl::Program& program = temporal ? program_ : plainProgram_;
+    bindInputs(program);
     // Every pixel writes the trace mask (gl_FragDepth): the depth test must be on to write it.
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    program_.use();
+    program.use();
     triangle_.draw();
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -48,7 +48,7 @@ public:
     // every size.
     void resetHistory() { ++generation_; }
 
-    std::vector<gl::Program*> programs() override { return {&program_}; }
+    std::vector<gl::Program*> programs() override { return {&program_, &plainProgram_}; }
 
     // How far the history's clamp box (this frame's low-resolution neighbours) is widened, as a
     // fraction of its bounds: 10 %, or kSubsetClampMargin when the accurate mode traces cone
@@ -111,6 +111,7 @@ private:
     void bindInputs(const gl::Program& program) const;
 
     gl::Program program_;
+    gl::Program plainProgram_;  // without temporal accumulation: no history code (LIT_RESOLVE_HISTORY 0)
     FullscreenTriangle triangle_;
     TargetsBySize<Targets> targets_;
     Inputs last_;

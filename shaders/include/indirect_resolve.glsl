@@ -37,6 +37,13 @@
 #ifdef LIT_INDIRECT_FALLBACK
 layout(early_fragment_tests) in;  // the trace mask's depth test decides before the shader runs
 #endif
+// 0: the resolve without temporal accumulation (IndirectResolvePass's plain program), whose
+// history block is then not compiled: llvmpipe runs a uniform branch's body with every lane
+// masked off, and the history's three fetches cost the resolve 6-7 of its 55 ms with temporal
+// accumulation off (full-frame Cornell box, 1280×720; docs/PERFORMANCE.md, fourteenth session).
+#ifndef LIT_RESOLVE_HISTORY
+#define LIT_RESOLVE_HISTORY 1
+#endif
 
 in vec2 vUv;
 
@@ -203,6 +210,7 @@ void main() {
 
     // ---- Temporal accumulation.
     float diffuseFrames = 1.0, specularFrames = 1.0;
+#if LIT_RESOLVE_HISTORY
     if (uHistoryValid != 0) {
         vec4 prevClip = uPrevViewProjection * vec4(s.position, 1.0);
         vec2 prevUv = prevClip.w > 0.0 ? prevClip.xy / prevClip.w * 0.5 + 0.5 : vec2(-1.0);
@@ -227,6 +235,7 @@ void main() {
             }
         }
     }
+#endif
     outHistoryDiffuse = vec4(diffuse, diffuseFrames);
     outHistorySpecular = vec4(specular, specularFrames);
     outHistoryGuide = vec4(s.normal, clipW);
