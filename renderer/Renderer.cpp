@@ -220,6 +220,8 @@ struct Renderer::Impl {
     // for the last one) and its next list entry.
     int bounceUnderWay = 0;
     std::uint32_t bounceNext = 0;
+    // A light edit came while a spread update ran on: one more update follows it (updateVoxels).
+    bool updateAgain = false;
     // The voxel rays' hit cache (InjectPass::ensureRayHits): valid once a trace over the whole
     // list recorded every hit since the last voxelization, for rayHitsRays rays per voxel.
     bool rayHitsValid = false;
@@ -340,53 +342,65 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         const int bounces = std::clamp(settings.bounces, 1, kMaxBounces);
         // Before the injection, which then writes the bounces' direct radiance beside level 0.
         if (bounces > 1) voxels.ensureBounceVolumes();
-        {
-            Profiler::Scope scope(profiler, "inject");
-            inject.execute(voxels, occupiedListComplete);
-        }
-        // The mips of the direct light alone are not needed when only the light changed and the
-        // bounces gather with voxel rays: a ray reads level 0 where it ends and, while it marches,
-        // only the mips' occupancy (alpha), which the voxels set, not the light; the last bounce
-        // rebuilds the mips from its level 0. (Cones read the mips' light; the mips after a
-        // voxelization hold the new occupancy; one bounce has no later rebuild.) Until then the
-        // per-pixel specular cones see the mips of the light before the edit, as the gathered
-        // diffuse keeps the old light. Saves a mip build in every light edit (Sponza 256³ with
-        // anisotropic voxels: 120-155 ms of the edit's frame; docs/PERFORMANCE.md).
+        // When only the light changed and the bounces gather with voxel rays, level 0 and its mips
+        // keep the last update's light until the last bounce replaces them: the second bounce's rays
+        // take the direct volume's light where they end (InjectPass::traceBounce) and, while they
+        // march, only the mips' occupancy (alpha), which the voxels set, not the light. (Cones read
+        // the mips' light; after a voxelization the mips must hold the new occupancy; one bounce
+        // has no later rebuild.) So the direct light's own mip build is saved (Sponza 256³ with
+        // anisotropic voxels: 120-155 ms of the edit's frame; docs/PERFORMANCE.md), the specular
+        // cones and the gathered diffuse show the same (last) update meanwhile, and a spread update
+        // need not start again at each edit: see updateAgain below.
         const bool onlyLightChanged = !voxelDirty && !bounceSettingsChanged && !directionalMissing &&
                                       settings.voxelRadianceRange == injectedRadianceRange;
-        const bool mipsAfterLastBounce = onlyLightChanged && bounces > 1 && ConeFeatures::of(settings).voxelRays > 0;
-        if (!mipsAfterLastBounce) {
+        const bool keepLastUpdate = onlyLightChanged && bounces > 1 && ConeFeatures::of(settings).voxelRays > 0;
+        {
+            Profiler::Scope scope(profiler, "inject");
+            inject.execute(voxels, occupiedListComplete, !keepLastUpdate);
+        }
+        if (!keepLastUpdate) {
             Profiler::Scope scope(profiler, "mipmap");
             mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
         }
-        // Bounces 2..N: each re-injects the voxels' traced indirect light (docs/GI.md). In the
-        // cached mode with the update spread over frames, they are spread too (below): a light
-        // dragged in the editor would otherwise stall every frame of the drag for whole bounces.
-        bounceUnderWay = 0;
-        if (bounces > 1) {
-            Profiler::Scope scope(profiler, "bounces");
-            if (spreadOverFrames(settings)) {
-                bounceUnderWay = 2;
-                bounceNext = 0;
-            } else {
-                for (int b = 2; b <= bounces; ++b) {
-                    const RayHits hits = rayHitsFor(settings);
-                    inject.executeBounce(voxels, ConeFeatures::of(settings), occupiedListComplete, hits);
-                    listTraced(hits);
-                    mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
+        // A light edit while a spread update runs (a light dragged in the editor: an edit every
+        // frame) lets it run on, the voxels not traced yet taking the new direct light, and asks
+        // for another update after it. Starting again at each edit, as other edits do, would keep
+        // a drag's update from ever reaching the irradiance: the indirect light stood still until
+        // the drag ended (with two bounces, the default since the thirteenth session).
+        const bool updateRunning = bounceUnderWay > 0 || (injectedIrradiance && irradianceRemaining > 0);
+        const bool runOn = keepLastUpdate && updateRunning && spreadOverFrames(settings) &&
+                           settings.diffuseFromVoxelIrradiance == injectedIrradiance;
+        updateAgain = runOn;
+        if (!runOn) {
+            // Bounces 2..N: each re-injects the voxels' traced indirect light (docs/GI.md). In the
+            // cached mode with the update spread over frames, they are spread too (below): a light
+            // dragged in the editor would otherwise stall every frame of the drag for whole bounces.
+            bounceUnderWay = 0;
+            if (bounces > 1) {
+                Profiler::Scope scope(profiler, "bounces");
+                if (spreadOverFrames(settings)) {
+                    bounceUnderWay = 2;
+                    bounceNext = 0;
+                } else {
+                    for (int b = 2; b <= bounces; ++b) {
+                        const RayHits hits = rayHitsFor(settings);
+                        inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete, hits);
+                        listTraced(hits);
+                        mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
+                    }
                 }
             }
-        }
-        if (settings.diffuseFromVoxelIrradiance) {
-            // A new edit asks for the whole list again, from where the update stands (a new list
-            // after a voxelization: from its start), so that a light dragged over many frames keeps
-            // refreshing every voxel in turn, and once the update has gone round the list every
-            // voxel was traced after the last edit (no trace of the old light).
-            inject.prepareIrradiance(voxels, voxelDirty);
-            if (voxelDirty || irradianceNext >= occupiedCount) irradianceNext = 0;
-            irradianceRemaining = std::max(occupiedCount, 1u);
-            irradianceRefineRound = 1;
-            irradianceRefineNext = 0;
+            if (settings.diffuseFromVoxelIrradiance) {
+                // A new edit asks for the whole list again, from where the update stands (a new list
+                // after a voxelization: from its start), so that a light dragged over many frames keeps
+                // refreshing every voxel in turn, and once the update has gone round the list every
+                // voxel was traced after the last edit (no trace of the old light).
+                inject.prepareIrradiance(voxels, voxelDirty);
+                if (voxelDirty || irradianceNext >= occupiedCount) irradianceNext = 0;
+                irradianceRemaining = std::max(occupiedCount, 1u);
+                irradianceRefineRound = 1;
+                irradianceRefineNext = 0;
+            }
         }
         injectedIrradiance = settings.diffuseFromVoxelIrradiance;
         injectedBounces = bounces;
@@ -426,7 +440,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         const std::uint32_t left = occupiedCount - std::min(bounceNext, occupiedCount);
         const std::uint32_t count = perFrame == 0 ? left : std::min(perFrame, left);
         const RayHits hits = rayHitsFor(settings);
-        inject.traceBounce(voxels, ConeFeatures::of(settings), true, bounceNext, count, hits);
+        inject.traceBounce(voxels, ConeFeatures::of(settings), bounceUnderWay == 2, true, bounceNext, count, hits);
         bounceNext += count;
         if (bounceNext >= occupiedCount) {
             listTraced(hits);  // the pass ran over the whole list from 0
@@ -478,6 +492,15 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             if (irradianceRemaining == 0) {
                 resolve.resetHistory();
                 listTraced(hits);
+                if (updateAgain) {
+                    // Light edits came while this update ran: another one, with the light as it is now.
+                    updateAgain = false;
+                    bounceUnderWay = injectedBounces > 1 ? 2 : 0;
+                    bounceNext = 0;
+                    irradianceRemaining = std::max(occupiedCount, 1u);
+                    irradianceRefineRound = 1;
+                    irradianceRefineNext = 0;
+                }
             }
         }
         filterAll = irradianceRemaining == 0;

@@ -143,10 +143,21 @@ uint marchVoxelRay(vec3 origin, vec3 dir) {
 
 // What a ray along `dir` that ended at `hit` (marchVoxelRay) sees: the radiance the hit voxel holds
 // now, black from behind, the sky past the volume.
+// The bounces (not the irradiance pass) read it from LIT_IMG_VOXEL_RAY_SOURCE: the direct light for
+// the second bounce, so that level 0 may keep the last update's light while a light edit's update
+// runs (Renderer: the mips and specular cones see a whole update, and a light dragged in the editor
+// does not restart it), the bounce before for later ones.
+#if !LIT_BOUNCE_IRRADIANCE
+layout(binding = LIT_IMG_VOXEL_RAY_SOURCE, BOUNCE_FORMAT) uniform readonly image3D voxelRaySource;
+#endif
 vec3 rayHitRadiance(uint hit, vec3 dir) {
     if (hit == kRayHitSky) return skyRadiance(dir);
     if ((hit & kRayHitBack) != 0u) return vec3(0.0);
+#if LIT_BOUNCE_IRRADIANCE
     vec4 s = texelFetch(voxelRadianceTexture, unpackVoxelCoord(hit), 0);
+#else
+    vec4 s = imageLoad(voxelRaySource, unpackVoxelCoord(hit));
+#endif
     return s.a > 0.0 ? decodeRadiance(s.rgb / s.a) : vec3(0.0);
 }
 

@@ -27,9 +27,12 @@ layout(binding = LIT_IMG_VOXEL_RADIANCE) uniform writeonly image3D voxelRadiance
 // more store per listed voxel instead of copying the whole N³ volume in the edit's frame.
 layout(binding = LIT_IMG_VOXEL_DIRECT) uniform writeonly image3D voxelDirect;
 uniform int uWriteDirect;
+// 0 (with uWriteDirect): level 0 keeps the last update's light, which the bounces replace once
+// they are done (a light edit with voxel rays: Renderer, InjectPass::execute).
+uniform int uWriteLevel0;
 
 void storeRadiance(ivec3 v, vec4 value) {
-    imageStore(voxelRadiance, v, value);
+    if (uWriteLevel0 != 0) imageStore(voxelRadiance, v, value);
     if (uWriteDirect != 0) imageStore(voxelDirect, v, value);
 }
 

@@ -78,8 +78,8 @@ std::vector<gl::Program*> InjectPass::programs() {
     return programs;
 }
 
-void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
-                             std::uint32_t count, RayHits hits) {
+void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, bool secondBounce, bool fromList,
+                             std::uint32_t first, std::uint32_t count, RayHits hits) {
     if (volume.resolution() <= 0 || !volume.direct()) return;
     const bool rgba8 = volume.radianceRgba8();
     ConeProgram& programs = rgba8 ? bounce8_ : bounce16f_;
@@ -91,6 +91,9 @@ void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, b
     useWithVoxelSurfaces(program, volume, features);
     glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY, volume.radianceFormat());
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, volume.radianceFormat());
+    // The light the rays take: the direct light for the second bounce, the bounce before (level 0) after it.
+    glBindImageTexture(LIT_IMG_VOXEL_RAY_SOURCE, secondBounce ? volume.direct().id() : volume.radiance().id(), 0, GL_TRUE,
+                       0, GL_READ_ONLY, volume.radianceFormat());
     bindRayHits(program, features, fromList ? hits : RayHits::Off);
     dispatchListRange(volume, program, fromList, first, count);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -123,8 +126,9 @@ void InjectPass::endBounce(const VoxelVolume& volume, bool fromList) {
                        0, n, n, n);
 }
 
-void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList, RayHits hits) {
-    traceBounce(volume, features, fromList, 0, 0, hits);
+void InjectPass::executeBounce(const VoxelVolume& volume, ConeFeatures features, bool secondBounce, bool fromList,
+                               RayHits hits) {
+    traceBounce(volume, features, secondBounce, fromList, 0, 0, hits);
     endBounce(volume, fromList);
 }
 
@@ -234,7 +238,7 @@ void InjectPass::bindIrradiance(const VoxelVolume& volume) const {
     volume.normal().bind(LIT_TEX_VOXEL_NORMAL);
 }
 
-void InjectPass::execute(const VoxelVolume& volume, bool fromList) {
+void InjectPass::execute(const VoxelVolume& volume, bool fromList, bool writeLevel0) {
     const int n = volume.resolution();
     if (n <= 0) return;
     program_.use();
@@ -246,7 +250,9 @@ void InjectPass::execute(const VoxelVolume& volume, bool fromList) {
                        volume.radianceFormat());
     // The bounces' copy of the direct light (inject.comp.glsl), written as level 0 is.
     const bool writeDirect = static_cast<bool>(volume.direct());
+    writeLevel0 = writeLevel0 || !writeDirect;
     glProgramUniform1i(program_.id(), program_.location("uWriteDirect"), writeDirect ? 1 : 0);
+    glProgramUniform1i(program_.id(), program_.location("uWriteLevel0"), writeLevel0 ? 1 : 0);
     if (writeDirect)
         glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                            volume.radianceFormat());

@@ -33,7 +33,9 @@ public:
     // `fromList`: only the voxels of volume.occupiedList() (complete, not overflowed), with an
     // indirect dispatch; empty voxels are then not written (VoxelizePass zeroed them). Otherwise
     // every voxel of the grid, empty ones written as 0.
-    void execute(const VoxelVolume& volume, bool fromList = true);
+    // `writeLevel0` false (with volume.direct() allocated): only the direct volume is written and
+    // level 0 keeps what it holds (the last update's light, while a light edit's bounces run).
+    void execute(const VoxelVolume& volume, bool fromList = true, bool writeLevel0 = true);
 
     // Light bounces: after execute() and a full mip build (MipmapPass::execute), each bounce makes
     // level 0 direct radiance + albedo × the voxel's traced indirect diffuse (shaders/bounce.comp.glsl),
@@ -45,11 +47,13 @@ public:
     // traced, copies the bounce into level 0: the listed voxels only (bounce_copy.comp.glsl), or
     // the whole grid when `fromList` is false. `fromList`: only the occupied-voxel list's voxels
     // trace (as execute); false when the list overflowed. `features`: the cone features to trace
-    // with (ConeFeatures::of the settings). executeBounce is one whole bounce.
-    void traceBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList = true, std::uint32_t first = 0,
-                     std::uint32_t count = 0, RayHits hits = RayHits::Off);
+    // with (ConeFeatures::of the settings). `secondBounce`: the voxel rays take the direct volume's
+    // light where they end (level 0 may then hold anything), else level 0's (the bounce before);
+    // cones read the mips of level 0 either way. executeBounce is one whole bounce.
+    void traceBounce(const VoxelVolume& volume, ConeFeatures features, bool secondBounce, bool fromList = true,
+                     std::uint32_t first = 0, std::uint32_t count = 0, RayHits hits = RayHits::Off);
     void endBounce(const VoxelVolume& volume, bool fromList = true);
-    void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool fromList = true,
+    void executeBounce(const VoxelVolume& volume, ConeFeatures features, bool secondBounce, bool fromList = true,
                        RayHits hits = RayHits::Off);
 
     // The cached GI mode (RenderSettings::diffuseFromVoxelIrradiance): after execute() and a full

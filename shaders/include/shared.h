@@ -108,6 +108,9 @@ using mat4 = glm::mat4;
 // Multiple bounces (InjectPass::executeBounce): the direct radiance read, the next bounce written.
 #define LIT_IMG_VOXEL_DIRECT 4
 #define LIT_IMG_VOXEL_BOUNCE 5
+// The light a bounce's voxel rays take where they end (bounce.comp.glsl): the direct volume for the
+// second bounce, level 0 of the radiance volume (the bounce before) for later ones.
+#define LIT_IMG_VOXEL_RAY_SOURCE 6
 
 // ---- Voxelization and radiance injection (VoxelizePass, InjectPass) ------------------------
 #define LIT_VOXEL_EMISSION_RANGE 16.0  // radiance (W/(sr·m²)) stored as 1.0 in the emission volume; = VoxelVolume::kEmissionRange
