@@ -167,15 +167,18 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
     if (features.anisotropic) volume.bindDirectional();
     const bool subsets = sampling.coneSubset >= 0;
-    const gl::Program& program = (subsets ? reducedSubsetProgram_ : reducedProgram_).get(features);
-    program.use();
-    const GLuint id = program.id();
-    glProgramUniform2i(id, program.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
-    glProgramUniform1f(id, program.location("uSmoothRoughness"), settings.specularFullResRoughness);
-    glProgramUniform1i(id, program.location("uScale"), scale);
-    glProgramUniform2i(id, program.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
-    glProgramUniform1f(id, program.location("uRotation"), sampling.rotation);
-    if (subsets) glProgramUniform1i(id, program.location("uConeSubset"), sampling.coneSubset);
+    // The uniforms of indirect_trace.frag.glsl, the same for each of its programs.
+    const auto useTraceProgram = [&](const gl::Program& program) {
+        program.use();
+        const GLuint id = program.id();
+        glProgramUniform2i(id, program.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
+        glProgramUniform1f(id, program.location("uSmoothRoughness"), settings.specularFullResRoughness);
+        glProgramUniform1i(id, program.location("uScale"), scale);
+        glProgramUniform2i(id, program.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
+        glProgramUniform1f(id, program.location("uRotation"), sampling.rotation);
+        if (sampling.coneSubset >= 0) glProgramUniform1i(id, program.location("uConeSubset"), sampling.coneSubset);
+    };
+    useTraceProgram((subsets ? reducedSubsetProgram_ : reducedProgram_).get(features));
     // The cached mode: the gather writes the lobe mask (gl_FragDepth, so the depth test must be on
     // to write it), then the lobe pass redoes the marked texels only: the triangle lies at window
     // depth 0.5 and the mask holds 0 where a lobe needs cones, so GREATER passes those (as
@@ -188,14 +191,7 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
     }
     triangle_.draw();
     if (lobePass) {
-        const gl::Program& lobes = reducedLobeProgram_.get(features);
-        lobes.use();
-        const GLuint lobesId = lobes.id();
-        glProgramUniform2i(lobesId, lobes.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
-        glProgramUniform1f(lobesId, lobes.location("uSmoothRoughness"), settings.specularFullResRoughness);
-        glProgramUniform1i(lobesId, lobes.location("uScale"), scale);
-        glProgramUniform2i(lobesId, lobes.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
-        glProgramUniform1f(lobesId, lobes.location("uRotation"), sampling.rotation);
+        useTraceProgram(reducedLobeProgram_.get(features));
         glDepthFunc(GL_GREATER);
         glDepthMask(GL_FALSE);
         triangle_.draw();

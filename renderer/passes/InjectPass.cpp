@@ -99,6 +99,15 @@ void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, b
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
+const gl::Program& InjectPass::formatProgram(gl::Program& rgba8Program, gl::Program& rgba16fProgram, bool rgba8,
+                                             const std::string& label, const char* file) {
+    gl::Program& program = rgba8 ? rgba8Program : rgba16fProgram;
+    if (!program)
+        program = gl::Program(shaderRoot_, label + (rgba8 ? " rgba8" : " rgba16f"), {{GL_COMPUTE_SHADER, file}},
+                              rgba8 ? "#define LIT_BOUNCE_RGBA8 1\n" : "#define LIT_BOUNCE_RGBA8 0\n");
+    return program;
+}
+
 void InjectPass::endBounce(const VoxelVolume& volume, bool fromList) {
     const int n = volume.resolution();
     if (n <= 0 || !volume.direct()) return;
@@ -106,12 +115,8 @@ void InjectPass::endBounce(const VoxelVolume& volume, bool fromList) {
     // The bounce replaces level 0; the caller rebuilds the mips from it.
     if (fromList && volume.occupiedList()) {
         // Only the listed voxels: the bounce wrote those, and level 0 of the others is 0.
-        const bool rgba8 = volume.radianceRgba8();
-        gl::Program& program = rgba8 ? copy8_ : copy16f_;
-        if (!program)
-            program = gl::Program(shaderRoot_, rgba8 ? "bounce copy rgba8" : "bounce copy rgba16f",
-                                  {{GL_COMPUTE_SHADER, "bounce_copy.comp.glsl"}},
-                                  rgba8 ? "#define LIT_BOUNCE_RGBA8 1\n" : "#define LIT_BOUNCE_RGBA8 0\n");
+        const gl::Program& program = formatProgram(copy8_, copy16f_, volume.radianceRgba8(), "bounce copy",
+                                                   "bounce_copy.comp.glsl");
         program.use();
         glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_READ_ONLY,
                            volume.radianceFormat());
@@ -213,11 +218,8 @@ void InjectPass::filterIrradiance(const VoxelVolume& volume, bool fromList, std:
         return;
     const bool rgba8 = irradianceRgba8_;
     const GLenum format = volume.radianceFormat();
-    gl::Program& filter = rgba8 ? filter8_ : filter16f_;
-    if (!filter)
-        filter = gl::Program(shaderRoot_, rgba8 ? "voxel irradiance filter rgba8" : "voxel irradiance filter rgba16f",
-                             {{GL_COMPUTE_SHADER, "voxel_irradiance_filter.comp.glsl"}},
-                             rgba8 ? "#define LIT_BOUNCE_RGBA8 1\n" : "#define LIT_BOUNCE_RGBA8 0\n");
+    const gl::Program& filter =
+        formatProgram(filter8_, filter16f_, rgba8, "voxel irradiance filter", "voxel_irradiance_filter.comp.glsl");
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     filter.use();
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);

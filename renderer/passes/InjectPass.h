@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace lit {
@@ -118,6 +119,9 @@ private:
     // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce (most frames have one).
     ConeProgram bounce8_, bounce16f_;
     gl::Program copy8_, copy16f_;  // bounce_copy.comp.glsl, built by the first endBounce over the list
+    // The compute program `file` for the volumes' format (LIT_BOUNCE_RGBA8), built on first use.
+    const gl::Program& formatProgram(gl::Program& rgba8Program, gl::Program& rgba16fProgram, bool rgba8,
+                                     const std::string& label, const char* file);
     std::filesystem::path shaderRoot_;
 };
 
