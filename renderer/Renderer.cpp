@@ -131,8 +131,7 @@ struct Renderer::Impl {
     // Voxels that replay their rays' recorded hits take kReplayVoxelsPerFrameFactor times as many.
     std::uint32_t voxelsPerFrame(const RenderSettings& settings) const {
         const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
-        const bool replay = rayHitsValid && rayHitsRays == ConeFeatures::of(settings).voxelRays && rayHitsRays > 0;
-        return replay ? static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{perFrame} * kReplayVoxelsPerFrameFactor,
+        return replaysRayHits(settings) ? static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{perFrame} * kReplayVoxelsPerFrameFactor,
                                                                           std::numeric_limits<std::uint32_t>::max()))
                       : perFrame;
     }
@@ -244,7 +243,18 @@ struct Renderer::Impl {
         }
         if (rays != rayHitsRays) rayHitsValid = false;
         rayHitsRays = rays;
-        return rayHitsValid ? RayHits::Replay : RayHits::Record;
+        return replaysRayHits(settings) ? RayHits::Replay : RayHits::Record;
+    }
+    // Whether a trace with `settings` replays the recorded hits (the cache holds its rays' hits).
+    bool replaysRayHits(const RenderSettings& settings) const {
+        return rayHitsValid && rayHitsRays > 0 && rayHitsRays == ConeFeatures::of(settings).voxelRays;
+    }
+    // The irradiance update starts again over the whole list (from where it stands), its
+    // refinement rounds after it.
+    void restartIrradianceUpdate() {
+        irradianceRemaining = std::max(occupiedCount, 1u);
+        irradianceRefineRound = 1;
+        irradianceRefineNext = 0;
     }
     // A trace over the whole list ended: what it recorded is the cache now.
     void listTraced(RayHits hits) {
@@ -356,7 +366,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         const bool keepLastUpdate = onlyLightChanged && bounces > 1 && ConeFeatures::of(settings).voxelRays > 0;
         {
             Profiler::Scope scope(profiler, "inject");
-            inject.execute(voxels, occupiedListComplete, !keepLastUpdate);
+            inject.execute(voxels, occupiedListComplete, !keepLastUpdate, bounces > 1);
         }
         if (!keepLastUpdate) {
             Profiler::Scope scope(profiler, "mipmap");
@@ -397,9 +407,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
                 // voxel was traced after the last edit (no trace of the old light).
                 inject.prepareIrradiance(voxels, voxelDirty);
                 if (voxelDirty || irradianceNext >= occupiedCount) irradianceNext = 0;
-                irradianceRemaining = std::max(occupiedCount, 1u);
-                irradianceRefineRound = 1;
-                irradianceRefineNext = 0;
+                restartIrradianceUpdate();
             }
         }
         injectedIrradiance = settings.diffuseFromVoxelIrradiance;
@@ -497,9 +505,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
                     updateAgain = false;
                     bounceUnderWay = injectedBounces > 1 ? 2 : 0;
                     bounceNext = 0;
-                    irradianceRemaining = std::max(occupiedCount, 1u);
-                    irradianceRefineRound = 1;
-                    irradianceRefineNext = 0;
+                    restartIrradianceUpdate();
                 }
             }
         }

@@ -48,11 +48,6 @@ LIT_VOXEL_LIST_READER
 LIT_VOXEL_LIST_RANGE_READER
 uint gListIndex = 0u;  // this invocation's occupied-list entry (main; the ray-hit cache's index)
 
-#if LIT_BOUNCE_RGBA8
-#define BOUNCE_FORMAT rgba8
-#else
-#define BOUNCE_FORMAT rgba16f
-#endif
 
 layout(binding = LIT_IMG_VOXEL_ALBEDO, r32ui) uniform readonly uimage3D voxelAlbedo;
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNormal;
@@ -64,15 +59,15 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNor
 #endif
 #if LIT_BOUNCE_IRRADIANCE
 // In the radiance volume's format and encoding (encodeRadiance): RGBA8 halves their memory. The
-// side of the averaged normal at z, the other side at z + N (kIrradianceOtherSide, voxel.glsl).
-layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform image3D voxelIrradianceOut;
+// side of the averaged normal at z, the other side at z + N (otherSideTexel, voxel.glsl).
+layout(binding = LIT_IMG_VOXEL_DIRECT, LIT_RADIANCE_IMAGE_FORMAT) uniform image3D voxelIrradianceOut;
 // The refinement (RenderSettings::voxelIrradianceRefineVoxelsPerFrame): round k = uSetOffset
 // (1..15) traces the set voxelConeSetIndex + k and averages it into what rounds 0..k − 1 left,
 // weight uBlend = 1 / (k + 1); round 0 (the edit's trace) writes with weight 1.
 uniform int uSetOffset;
 uniform float uBlend;
 #else
-layout(binding = LIT_IMG_VOXEL_DIRECT, BOUNCE_FORMAT) uniform readonly image3D voxelDirect;
+layout(binding = LIT_IMG_VOXEL_DIRECT, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelDirect;
 layout(binding = LIT_IMG_VOXEL_BOUNCE) uniform writeonly image3D voxelBounce;
 #endif
 
@@ -148,7 +143,7 @@ uint marchVoxelRay(vec3 origin, vec3 dir) {
 // runs (Renderer: the mips and specular cones see a whole update, and a light dragged in the editor
 // does not restart it), the bounce before for later ones.
 #if !LIT_BOUNCE_IRRADIANCE
-layout(binding = LIT_IMG_VOXEL_RAY_SOURCE, BOUNCE_FORMAT) uniform readonly image3D voxelRaySource;
+layout(binding = LIT_IMG_VOXEL_RAY_SOURCE, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelRaySource;
 #endif
 vec3 rayHitRadiance(uint hit, vec3 dir) {
     if (hit == kRayHitSky) return skyRadiance(dir);

@@ -2,20 +2,15 @@
 // The end of a light bounce (InjectPass::endBounce): copies each listed voxel's traced bounce
 // (bounce.comp.glsl wrote it for every entry of the occupied list) into level 0 of the radiance
 // volume. Only the list: empty voxels hold 0 in level 0 since the voxelization, and a copy of the
-// whole N³ volume cost ~75 ms a bounce at 256³ on llvmpipe for the 3 % of voxels that are occupied
-// on Sponza (docs/PERFORMANCE.md). Define set by InjectPass: LIT_BOUNCE_RGBA8 (the volumes' format).
+// whole N³ volume moved 33 times the occupied voxels on Sponza at 256³ (3 % occupied; the
+// whole-volume copies cost 10-14 ms each on llvmpipe there, docs/PERFORMANCE.md). Define set by InjectPass: LIT_BOUNCE_RGBA8 (the volumes' format).
 #include "voxel.glsl"
 
 layout(local_size_x = LIT_INJECT_LIST_GROUP_SIZE) in;
 
 LIT_VOXEL_LIST_READER
 
-#if LIT_BOUNCE_RGBA8
-#define BOUNCE_FORMAT rgba8
-#else
-#define BOUNCE_FORMAT rgba16f
-#endif
-layout(binding = LIT_IMG_VOXEL_BOUNCE, BOUNCE_FORMAT) uniform readonly image3D voxelBounce;
+layout(binding = LIT_IMG_VOXEL_BOUNCE, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelBounce;
 layout(binding = LIT_IMG_VOXEL_RADIANCE) uniform writeonly image3D voxelRadiance;
 
 void main() {

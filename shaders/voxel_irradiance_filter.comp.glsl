@@ -28,16 +28,10 @@ LIT_VOXEL_LIST_READER
 // filtered (listedVoxelInRange); the frame that completes the update filters the whole list.
 LIT_VOXEL_LIST_RANGE_READER
 
-#if LIT_BOUNCE_RGBA8
-#define IRRADIANCE_FORMAT rgba8
-#else
-#define IRRADIANCE_FORMAT rgba16f
-#endif
-
 // Both sides in one volume each (otherSideTexel, voxel.glsl).
 layout(binding = LIT_TEX_VOXEL_IRRADIANCE) uniform sampler3D rawIrradiance;
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNormal;
-layout(binding = LIT_IMG_VOXEL_DIRECT, IRRADIANCE_FORMAT) uniform writeonly image3D filtered;
+layout(binding = LIT_IMG_VOXEL_DIRECT, LIT_RADIANCE_IMAGE_FORMAT) uniform writeonly image3D filtered;
 
 // A voxel's unit normal and whether it is one-sided, as bounce.comp.glsl traced it; false if empty.
 bool voxelSurface(ivec3 v, out vec3 normal, out bool oneSided) {

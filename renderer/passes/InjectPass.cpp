@@ -92,8 +92,9 @@ void InjectPass::traceBounce(const VoxelVolume& volume, ConeFeatures features, b
     glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY, volume.radianceFormat());
     glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, volume.radianceFormat());
     // The light the rays take: the direct light for the second bounce, the bounce before (level 0) after it.
-    glBindImageTexture(LIT_IMG_VOXEL_RAY_SOURCE, secondBounce ? volume.direct().id() : volume.radiance().id(), 0, GL_TRUE,
-                       0, GL_READ_ONLY, volume.radianceFormat());
+    if (features.voxelRays > 0)
+        glBindImageTexture(LIT_IMG_VOXEL_RAY_SOURCE, secondBounce ? volume.direct().id() : volume.radiance().id(), 0,
+                           GL_TRUE, 0, GL_READ_ONLY, volume.radianceFormat());
     bindRayHits(program, features, fromList ? hits : RayHits::Off);
     dispatchListRange(volume, program, fromList, first, count);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -240,7 +241,7 @@ void InjectPass::bindIrradiance(const VoxelVolume& volume) const {
     volume.normal().bind(LIT_TEX_VOXEL_NORMAL);
 }
 
-void InjectPass::execute(const VoxelVolume& volume, bool fromList, bool writeLevel0) {
+void InjectPass::execute(const VoxelVolume& volume, bool fromList, bool writeLevel0, bool writeDirect) {
     const int n = volume.resolution();
     if (n <= 0) return;
     program_.use();
@@ -251,7 +252,7 @@ void InjectPass::execute(const VoxelVolume& volume, bool fromList, bool writeLev
     glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                        volume.radianceFormat());
     // The bounces' copy of the direct light (inject.comp.glsl), written as level 0 is.
-    const bool writeDirect = static_cast<bool>(volume.direct());
+    writeDirect = writeDirect && volume.direct();
     writeLevel0 = writeLevel0 || !writeDirect;
     glProgramUniform1i(program_.id(), program_.location("uWriteDirect"), writeDirect ? 1 : 0);
     glProgramUniform1i(program_.id(), program_.location("uWriteLevel0"), writeLevel0 ? 1 : 0);

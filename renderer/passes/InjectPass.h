@@ -34,9 +34,11 @@ public:
     // `fromList`: only the voxels of volume.occupiedList() (complete, not overflowed), with an
     // indirect dispatch; empty voxels are then not written (VoxelizePass zeroed them). Otherwise
     // every voxel of the grid, empty ones written as 0.
-    // `writeLevel0` false (with volume.direct() allocated): only the direct volume is written and
-    // level 0 keeps what it holds (the last update's light, while a light edit's bounces run).
-    void execute(const VoxelVolume& volume, bool fromList = true, bool writeLevel0 = true);
+    // `writeDirect` (light bounces follow; volume.direct() must be allocated, else it is ignored):
+    // the same radiance goes to the direct volume too. `writeLevel0` false with it: only the
+    // direct volume is written and level 0 keeps what it holds (the last update's light, while a
+    // light edit's bounces run).
+    void execute(const VoxelVolume& volume, bool fromList = true, bool writeLevel0 = true, bool writeDirect = false);
 
     // Light bounces: after execute() and a full mip build (MipmapPass::execute), each bounce makes
     // level 0 direct radiance + albedo × the voxel's traced indirect diffuse (shaders/bounce.comp.glsl),

@@ -30,6 +30,17 @@ const float kOneSidedMinLength = 0.5;
 const float kDirectionMinLength = 0.05;
 vec3 unpackAveragedNormal(uint bits) { return unpackVoxel(bits).xyz * 2.0 - 1.0; }
 
+// The format qualifier of the voxel compute passes' images that hold radiance or irradiance, as the
+// radiance volume stores it (VoxelVolume::radianceFormat): InjectPass defines LIT_BOUNCE_RGBA8 for
+// its bounce, irradiance, filter and copy programs.
+#ifdef LIT_BOUNCE_RGBA8
+#if LIT_BOUNCE_RGBA8
+#define LIT_RADIANCE_IMAGE_FORMAT rgba8
+#else
+#define LIT_RADIANCE_IMAGE_FORMAT rgba16f
+#endif
+#endif
+
 // The cached GI mode's irradiance volumes (InjectPass) hold both sides of a voxel in one N × N × 2N
 // volume: the side its averaged normal points to at v, the other side (thin walls) here.
 ivec3 otherSideTexel(ivec3 v) { return ivec3(v.xy, v.z + int(voxel.voxelInfo.x)); }
