@@ -25,7 +25,7 @@
 //
 // Voxel rays (LIT_VOXEL_RAYS 1, RenderSettings::voxelRays > 0, docs/GI.md "Voxel rays"): instead
 // of cones, uVoxelRays cosine-distributed rays per voxel, each marched through the voxel grid to
-// the first occupied voxel, whose radiance it takes. A cone's opacity is a coverage fraction
+// the first surface it meets (marchVoxelRay), whose voxel's radiance it takes. A cone's opacity is a coverage fraction
 // composited along it as if independent from sample to sample, so a wall the cone runs beside, or
 // a floor it skims, counts whole; a ray is blocked or not. A voxel's rays cover its whole hemisphere,
 // offset by its set (voxelSet), so the filter's 4 × 4 patch averages 16 × uVoxelRays directions, as
@@ -86,9 +86,45 @@ const int kRayMaxSteps = 2048;
 // far edge meets that diagonal normal at under 90° (measured: the lit floor's indirect 0.96 of the
 // reference with the test at 90°, 0.98 at 60°, 1.02 without any; docs/GI.md, "Voxel rays").
 const float kRayBackFaceCosine = 0.5;
+// A one-sided voxel (averaged normal at least kRayPlaneMinLength long: a surface, or an edge or
+// corner of one) is solid only behind its surface: the part of the voxel behind the plane through
+// the point of its surface the voxelization recorded (voxelSurfacePoint), with its averaged normal
+// (at an edge, a bevel across it); docs/GI.md, "Rays that end on the surface, not on the voxel":
+// - a ray ends in such a voxel if it is behind that plane where it enters or leaves the voxel, and
+//   passes on if it stays in front. Behind, not only across: a slanted plane is written to one voxel
+//   per column (voxelize.frag.glsl) but runs on into the column's next voxel, where a ray can cross
+//   it unseen, and then meets the voxels of that surface from behind (the sealed room turned 30°
+//   and 12°, walls 1.5 voxels thick at 128³, let in 4.1 % of the outside light when rays ended only
+//   on a crossing, 2.8 % so; 0.8 % when voxels were cubes: docs/GI.md for why).
+//   A voxel's faces lie up to a voxel off its surface, so rays that ended on them saw every
+//   object up to a voxel larger: a 2 m roof 0.95 m above a floor hid 0.60 / 0.83 of the closed form's
+//   sky at 64³ / 128³ (tests/gl/test_scene_defaults.cpp), and the Cornell floor in the blocks' shadows
+//   read 0.83 of the reference at 64³ against 0.89 at 128³;
+// - its rays start kRayStartVoxels off that plane. A ray that leaves a plane cannot cross it, nor the
+//   coplanar planes of its neighbours, so it need not start clear of its own voxel: rays started √3
+//   voxels off the voxel centre (coneOrigin), 6 cm nearer the lit floor at 64³ and 1 cm at 512³,
+//   and the Cornell ceiling and back wall read 1.10 of the reference at 64³ against 0.99 and 0.97
+//   at 512³.
+// Two-sided voxels (both faces of a wall thinner than a voxel) stay cubes: rays end where they enter
+// them and start at coneOrigin, so that a thin wall stops every ray.
+const float kRayPlaneMinLength = kOneSidedMinLength;
+const float kRayStartVoxels = LIT_RAY_START_VOXELS;
+layout(binding = LIT_IMG_VOXEL_SURFACE, r32ui) uniform readonly uimage3D voxelSurface;
+
+// The point of voxel c's surface the voxelization recorded (in voxels from the volume's corner).
+vec3 voxelSurfacePoint(ivec3 c) {
+    vec4 local = unpackVoxel(imageLoad(voxelSurface, c).r);
+    return vec3(c) + (local.a > 0.0 ? local.xyz : vec3(0.5));
+}
+
+// Where voxel v's rays start for the side `normal` (its averaged normal, unit, or its opposite).
+vec3 rayOrigin(ivec3 v, vec3 normal, float agreement) {
+    if (agreement < kRayPlaneMinLength) return coneOrigin(voxelCenter(v), normal);
+    return voxel.volumeMin.xyz + (voxelSurfacePoint(v) + kRayStartVoxels * normal) * voxel.voxelInfo.z;
+}
 
 // The ray-hit cache (InjectPass::ensureRayHits, LIT_SSBO_VOXEL_RAY_HITS): a ray's first hit depends
-// on the voxels' occupancy and normals only, not on their light, so a trace over the list records
+// on the voxels' occupancy, normals and surface points only, not on their light, so a trace over the list records
 // each ray's hit (uRayHits 1) and later traces of the same rays replay them (2) with the radiance
 // the volume holds then: a light edit's bounce and irradiance march no ray. 0: march, record nothing
 // (the refinement's other sets, the all-sets variant). Entry (list index × 2 + side) × rays + ray.
@@ -102,10 +138,12 @@ const uint kRayHitSky = 0xffffffffu;   // left the volume: the sky
 const uint kRayHitBack = 0x40000000u;  // flag: met a one-sided surface from behind (black)
 
 // Where a ray from `origin` along `dir` (world space, unit) ends: the first occupied level-0 voxel
-// it enters (packed as the occupied list packs it, kRayHitBack added when that voxel holds a
-// one-sided surface facing away from the ray: its back), or kRayHitSky past the volume. The march
-// visits every voxel the ray passes through (cell by cell, from each cell's exit to the next), so
-// a wall of face-connected voxels stops it.
+// whose surface it meets (a one-sided voxel's plane crossed inside it, a two-sided voxel where the
+// ray enters it; kRayPlaneMinLength), packed as the occupied list packs it, kRayHitBack added when
+// that voxel holds a one-sided surface facing away from the ray (its back), or kRayHitSky past the
+// volume. The march visits every voxel the ray passes through (cell by cell, from each cell's exit
+// to the next), so a wall of face-connected voxels stops it: a plane that runs through a row of
+// voxels is crossed in one of them.
 uint marchVoxelRay(vec3 origin, vec3 dir) {
     int n = int(voxel.voxelInfo.x);
     vec3 g0 = (origin - voxel.volumeMin.xyz) / voxel.voxelInfo.z;  // in voxels from the volume's corner
@@ -124,8 +162,21 @@ uint marchVoxelRay(vec3 origin, vec3 dir) {
         if (!blockEmpty && texelFetch(voxelRadianceTexture, cell, 0).a > 0.0) {
             vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, cell).r);
             float agreement = length(averaged);
-            bool fromBehind = agreement >= kOneSidedMinLength && dot(averaged, dir) > kRayBackFaceCosine * agreement;
-            return packVoxelCoord(cell) | (fromBehind ? kRayHitBack : 0u);
+            bool solid = true;  // a cube: where the ray enters
+            if (agreement >= kRayPlaneMinLength) {
+                // The voxel behind its plane: where the ray is behind the plane at its entry or exit
+                // (0.01 voxel of slack: a plane on the face between two voxels belongs to one of them).
+                vec3 planeNormal = averaged / agreement;
+                vec3 cellExit = (vec3(cell) + exitSide - g0) * inv;
+                float tCellExit = min(cellExit.x, min(cellExit.y, cellExit.z));
+                vec3 fromSurface = g0 - voxelSurfacePoint(cell);
+                float heightIn = dot(fromSurface + t * d, planeNormal), heightOut = dot(fromSurface + tCellExit * d, planeNormal);
+                solid = min(heightIn, heightOut) < 0.01;
+            }
+            if (solid) {
+                bool fromBehind = agreement >= kOneSidedMinLength && dot(averaged, dir) > kRayBackFaceCosine * agreement;
+                return packVoxelCoord(cell) | (fromBehind ? kRayHitBack : 0u);
+            }
         }
         // The cell to leave: the empty 16³ or 4³ block around the ray, else its voxel.
         float size = coarseEmpty ? float(1 << kRaySkipLevelCoarse) : (blockEmpty ? float(1 << kRaySkipLevel) : 1.0);
@@ -250,7 +301,12 @@ void main() {
     vec3 centre = voxelCenter(v);
     float aperture = voxel.traceParams.w, maxDistance = voxel.traceParams.y;
     // Voxels whose normals disagree (both sides of a thin wall) gather over both hemispheres.
-    vec3 front = bounceIrradiance(v, coneOrigin(centre, normal), normal, aperture, maxDistance, 0);
+#if LIT_VOXEL_RAYS
+    vec3 frontOrigin = rayOrigin(v, normal, agreement);
+#else
+    vec3 frontOrigin = coneOrigin(centre, normal);
+#endif
+    vec3 front = bounceIrradiance(v, frontOrigin, normal, aperture, maxDistance, 0);
     vec3 back = agreement < kOneSidedMinLength
                     ? bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance, 1)
                     : front;

@@ -10,11 +10,34 @@ in VoxelFragment {
     vec2 uv;
     flat vec4 bounds;
     flat int axis;
+    flat vec3 corner0, corner1, corner2;
 } fs;
+
+// The point of triangle (a, b, c) nearest p (Ericson, Real-Time Collision Detection, 5.1.5).
+vec3 closestPointOnTriangle(vec3 p, vec3 a, vec3 b, vec3 c) {
+    vec3 ab = b - a, ac = c - a, ap = p - a;
+    float d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return a;
+    vec3 bp = p - b;
+    float d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0.0 && d4 <= d3) return b;
+    float vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
+    vec3 cp = p - c;
+    float d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0.0 && d5 <= d6) return c;
+    float vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
+    float va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    float denom = 1.0 / (va + vb + vc);
+    return a + ab * (vb * denom) + ac * (vc * denom);
+}
 
 layout(binding = LIT_IMG_VOXEL_ALBEDO, r32ui) uniform coherent volatile uimage3D voxelAlbedo;
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform coherent volatile uimage3D voxelNormal;
 layout(binding = LIT_IMG_VOXEL_EMISSION, r32ui) uniform coherent volatile uimage3D voxelEmission;
+layout(binding = LIT_IMG_VOXEL_SURFACE, r32ui) uniform coherent volatile uimage3D voxelSurface;
 LIT_OCCUPIED_VOXELS_BLOCK();
 uniform uint uOccupiedCapacity;  // entries the list can hold (VoxelVolume::occupiedCapacity)
 
@@ -50,4 +73,11 @@ void main() {
     }
     atomicAverageRgb(voxelNormal, v, normal * 0.5 + 0.5);
     atomicAverageRgb(voxelEmission, v, clamp(emissive / LIT_VOXEL_EMISSION_RANGE, 0.0, 1.0));
+    // Where in the voxel its surface lies, for the voxel rays (bounce.comp.glsl, voxelSurfacePoint):
+    // the point of the triangle nearest the centre of the voxel's column at the depth the plane has
+    // there, in [0,1]³ of the voxel. The triangle's own point, not its plane's: the conservative
+    // rasterization's fragments beyond an edge (kTouchMargin, the enlarged triangle) record the edge.
+    vec3 onPlane = vec3(vec2(s.xy) + 0.5, gl_FragCoord.z * float(n));
+    vec3 local = clamp(closestPointOnTriangle(onPlane, fs.corner0, fs.corner1, fs.corner2) - vec3(s), 0.0, 1.0);
+    atomicAverageRgb(voxelSurface, v, fs.axis == 0 ? local.zxy : (fs.axis == 1 ? local.yzx : local));
 }

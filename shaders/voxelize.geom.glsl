@@ -29,6 +29,9 @@ out VoxelFragment {
     vec2 uv;
     flat vec4 bounds;  // enlarged 2D bounding box in window pixels: xy min, zw max
     flat int axis;     // projection axis: 0 X, 1 Y, 2 Z
+    // The triangle in voxel space, swizzled for `axis` as (u, v, depth): the fragment shader records
+    // the point of it nearest the voxel column's centre (the surface volume).
+    flat vec3 corner0, corner1, corner2;
 } gs_out;
 
 float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
@@ -91,6 +94,9 @@ void main() {
         gs_out.uv = b0 * gs_in[0].uv + b1 * gs_in[1].uv + b2 * gs_in[2].uv;
         gs_out.bounds = bounds;
         gs_out.axis = axis;
+        gs_out.corner0 = s[0];
+        gs_out.corner1 = s[1];
+        gs_out.corner2 = s[2];
         // Orthographic: voxel units [0, N] → NDC [-1, 1]; window depth = depth / N.
         gl_Position = vec4(vec3(q, depth) / n * 2.0 - 1.0, 1.0);
         EmitVertex();

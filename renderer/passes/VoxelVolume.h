@@ -112,6 +112,8 @@ public:
     const gl::Texture& albedo() const { return albedo_; }
     const gl::Texture& normal() const { return normal_; }
     const gl::Texture& emission() const { return emission_; }
+    // Where in each voxel its surface lies (LIT_IMG_VOXEL_SURFACE, voxelize.frag.glsl).
+    const gl::Texture& surface() const { return surface_; }
     const gl::Texture& radiance() const { return radiance_; }
     // The directional volume of axis 0 X, 1 Y, 2 Z: both faces of the axis side by side along x
     // (see the layout at the top).
@@ -129,7 +131,7 @@ public:
     const gl::Buffer& uniforms() const { return uniforms_; }
 
     // Bytes of GPU memory per volume and in total (radiance counted with its mip chain).
-    std::size_t materialBytes() const;   // albedo + normal + emission
+    std::size_t materialBytes() const;   // albedo + normal + emission + surface
     std::size_t radianceBytes() const;     // isotropic chain + the six directional chains while they exist
     std::size_t bounceBytes() const;       // direct + bounce volumes (0 until allocated)
     std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes(); }
@@ -144,7 +146,7 @@ private:
     bool rgba8_ = false;
     glm::vec3 min_{0.0f};
     float side_ = 1.0f;
-    gl::Texture albedo_, normal_, emission_, radiance_;
+    gl::Texture albedo_, normal_, emission_, surface_, radiance_;
     std::array<gl::Texture, LIT_VOXEL_AXIS_COUNT> directional_;
     gl::Texture direct_, bounce_;
     gl::Buffer uniforms_;

@@ -111,6 +111,10 @@ using mat4 = glm::mat4;
 // The light a bounce's voxel rays take where they end (bounce.comp.glsl): the direct volume for the
 // second bounce, level 0 of the radiance volume (the bounce before) for later ones.
 #define LIT_IMG_VOXEL_RAY_SOURCE 6
+// Where in each voxel its surface lies (VoxelVolume::surface): the voxelization's running average of
+// a point of each fragment's plane in the voxel, in [0,1]³ of the voxel; the voxel rays end on that
+// plane (bounce.comp.glsl). Unit 7 is the mipmap pass's third destination, never bound with it.
+#define LIT_IMG_VOXEL_SURFACE 7
 
 // ---- Voxelization and radiance injection (VoxelizePass, InjectPass) ------------------------
 #define LIT_VOXEL_EMISSION_RANGE 16.0  // radiance (W/(sr·m²)) stored as 1.0 in the emission volume; = VoxelVolume::kEmissionRange
@@ -142,6 +146,7 @@ using mat4 = glm::mat4;
 // trace's texels (cone_strata.glsl) and averaged by ConeStrataFilterPass (docs/GI.md).
 #define LIT_CONE_STRATA 4
 #define LIT_CONE_NORMAL_OFFSET_VOXELS 1.7320508  // cone apex: √3 voxels along the normal off the surface
+#define LIT_RAY_START_VOXELS 0.5  // voxel rays of flat voxels: off their surface's plane (bounce.comp.glsl)
 #define LIT_SPECULAR_LOBE_SHARE 0.75             // share of the GGX lobe specular samples are drawn from
 #define LIT_SPECULAR_APERTURE_MIN 0.02           // rad, narrowest specular cone
 #define LIT_SPECULAR_APERTURE_MAX 1.0471976      // rad (π/3), widest specular cone

@@ -350,6 +350,23 @@ protected:
         for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = id.rgb[i] + is.rgb[i];
         return sum;
     }
+    // L_ID + L_IS with the renderer's defaults (RenderSettings as constructed: the cached mode, two
+    // bounces, 32 voxel rays) but for the size, GI on and the voxel resolution: what a user gets.
+    std::vector<float> defaultsIndirect(const Scene& scene, int voxels) {
+        RenderSettings settings = smallSettings(kSize);
+        settings.gi = true;
+        settings.voxelResolution = voxels;
+        EXPECT_EQ(settings.bounces, 2);
+        EXPECT_EQ(settings.voxelRays, 32);
+        EXPECT_TRUE(settings.diffuseFromVoxelIrradiance) << "the cached mode";
+        settings.view = View::IndirectDiffuse;
+        const HdrImage id = render(scene, settings);
+        settings.view = View::IndirectSpecular;
+        const HdrImage is = render(scene, settings);
+        std::vector<float> sum(id.rgb.size());
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = id.rgb[i] + is.rgb[i];
+        return sum;
+    }
     static double lum(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
     // Issue #11's bar: each of the four regions lit only indirectly within ±20 % of the reference.
     static void expectRegionsMatchTheReference(const CornellMeasurement& truth, const std::vector<float>& vct) {
@@ -545,18 +562,7 @@ TEST_F(CornellAccuracy, VoxelRaysMeetTheTwoBounceBars) {
 TEST_F(CornellAccuracy, DefaultsMeetTheTwoBounceBarsAt128) {
     const Scene scene = loadCornellBox();
     const CornellMeasurement truth = measureReference(scene, 2);
-    RenderSettings settings = smallSettings(kSize);  // the defaults but for size and GI on
-    settings.gi = true;
-    settings.voxelResolution = 128;
-    ASSERT_EQ(settings.bounces, 2);
-    ASSERT_EQ(settings.voxelRays, 32);
-    ASSERT_TRUE(settings.diffuseFromVoxelIrradiance) << "the cached mode";
-    settings.view = View::IndirectDiffuse;
-    const HdrImage id = render(scene, settings);
-    settings.view = View::IndirectSpecular;
-    const HdrImage is = render(scene, settings);
-    std::vector<float> vct(id.rgb.size());
-    for (std::size_t i = 0; i < vct.size(); ++i) vct[i] = id.rgb[i] + is.rgb[i];
+    const std::vector<float> vct = defaultsIndirect(scene, 128);
     expectRegionsMatchTheReference(truth, vct);
     expectBleedingMatchesTheReference(truth, vct);
 }
