@@ -343,12 +343,7 @@ protected:
         setGiMode(settings, mode);
         settings.bounces = bounces;
         settings.voxelRays = voxelRays;
-        const HdrImage id = render(scene, settings);
-        settings.view = View::IndirectSpecular;
-        const HdrImage is = render(scene, settings);
-        std::vector<float> sum(id.rgb.size());
-        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = id.rgb[i] + is.rgb[i];
-        return sum;
+        return indirectSum(scene, settings);
     }
     // L_ID + L_IS with the renderer's defaults (RenderSettings as constructed: the cached mode, two
     // bounces, 32 voxel rays) but for the size, GI on and the voxel resolution: what a user gets.
@@ -359,6 +354,10 @@ protected:
         EXPECT_EQ(settings.bounces, 2);
         EXPECT_EQ(settings.voxelRays, 32);
         EXPECT_TRUE(settings.diffuseFromVoxelIrradiance) << "the cached mode";
+        return indirectSum(scene, settings);
+    }
+    // L_ID + L_IS rendered with `settings` (its view is set here).
+    std::vector<float> indirectSum(const Scene& scene, RenderSettings settings) {
         settings.view = View::IndirectDiffuse;
         const HdrImage id = render(scene, settings);
         settings.view = View::IndirectSpecular;

@@ -71,6 +71,16 @@ class SceneDefaults : public GlFixture {
 protected:
     // A 6 m floor and a 1 m box on it, no lights, seen from `eye`; optionally a 2 m × 2 m roof
     // 1 m above the floor around (2, 0, 2) that shades the floor below it from the sky.
+    // GI on, the sun off and a uniform sky of radiance 1: the indirect diffuse view.
+    static RenderSettings uniformSkySettings() {
+        RenderSettings settings = smallSettings();
+        settings.gi = true;
+        settings.defaultSunIrradiance = 0.0f;
+        settings.skyMode = SkyMode::Uniform;
+        settings.skyZenith = {1.0f, 1.0f, 1.0f};
+        settings.view = View::IndirectDiffuse;
+        return settings;
+    }
     static Scene bareScene(bool roof, glm::vec3 eye, glm::vec3 target) {
         Scene scene;
         const int grey = addMaterial(scene, glm::vec3(0.5f), 1.0f, 0.0f, "grey");
@@ -121,13 +131,8 @@ TEST_F(SceneDefaults, BareSceneGetsASunAtAnAngleAndASky) {
 // 0.42 of ρ·L); the rays that start on the floor (fifteenth session) read 0.320, the open floor in
 // the window with more of the sky that the roof truly leaves.
 TEST_F(SceneDefaults, SkyLightReachesAnOpenFloorThroughTheVoxels) {
-    RenderSettings settings = smallSettings();
-    settings.gi = true;
+    RenderSettings settings = uniformSkySettings();
     settings.voxelResolution = 64;
-    settings.defaultSunIrradiance = 0.0f;
-    settings.skyMode = SkyMode::Uniform;
-    settings.skyZenith = {1.0f, 1.0f, 1.0f};
-    settings.view = View::IndirectDiffuse;
     const glm::vec3 eye(2.0f, 0.4f, 7.0f), target(2.0f, 0.0f, 2.0f);
     const Scene open = bareScene(false, eye, target);
     const float openFloor = luminance(radianceAt(open, settings, render(open, settings), target));
@@ -152,16 +157,13 @@ double parallelRectangleViewFactor(double a, double b, double h) {
 // here, where a voxel is 10 cm), from where the roof covers more of the sky, and ended where they
 // entered a voxel, so the roof looked up to a voxel wider: the floor read 0.60 and 0.83 of the closed
 // form at 64³ and 128³. They start half a voxel off the floor's plane and end on the roof's surface
-// now (bounce.comp.glsl; docs/GI.md, "Rays that end on the surface"): 0.92 and 0.96. Bar ±10 %, the
-// issue's resolution-independence bar, at both.
+// now (bounce.comp.glsl; docs/GI.md, "Rays that end on the surface"): 0.905 and 0.955. Bar ±10 %,
+// the resolution-independence bar, at both. What is left at 64³ is mostly the start, still
+// 5 cm above the floor: from there the roof's view factor is 0.605, the floor's share of the sky 6 %
+// less (0.25 voxel off reads 0.950 and 0.972, but the sealed room leaks 0.84 % at 128³, not 0.73 %).
 TEST_F(SceneDefaults, SkyUnderARoofMatchesTheClosedForm) {
-    RenderSettings settings = smallSettings();
-    settings.gi = true;
+    RenderSettings settings = uniformSkySettings();
     settings.bounces = 1;
-    settings.defaultSunIrradiance = 0.0f;
-    settings.skyMode = SkyMode::Uniform;
-    settings.skyZenith = {1.0f, 1.0f, 1.0f};
-    settings.view = View::IndirectDiffuse;
     // The camera under the roof, looking down at the floor below its centre: from the side, a pixel
     // at grazing incidence spans metres of floor, the open floor beyond the roof's edge too.
     const glm::vec3 eye(2.0f, 0.5f, 2.6f), target(2.0f, 0.0f, 2.0f);
