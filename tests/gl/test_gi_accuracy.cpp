@@ -223,11 +223,18 @@ TEST_F(GiAccuracy, SealedRoomDoesNotLeakLightIn) {
     // Outgoing radiance of the lit ground: albedo/π · E⊥ · cosθ.
     const float outside = 0.8f / glm::pi<float>() * lux * -sunDirection.y;
     const CameraView inside = lookAt({0.3f, 1.2f, 0.8f}, {-0.3f, 0.6f, -1.0f}, 1.0f, 1.4f);
-    RenderSettings settings = giSettings(kVoxels, View::Final, 64);
-    const HdrImage gi = renderFrom(scene, inside, settings);
-    ASSERT_NE(renderer_->voxels(), nullptr);
-    ASSERT_NEAR(renderer_->voxels()->voxelSize(), voxel, 1e-4f) << "walls must be two voxels thick";
-    expectNoLeak(scene, inside, settings, gi, outside, "sealed room at " + std::to_string(kVoxels) + "³");
+    // The accurate mode's cones, and the defaults (the cached mode, two bounces, voxel rays).
+    RenderSettings defaults = smallSettings(64);
+    defaults.gi = true;
+    defaults.voxelResolution = kVoxels;
+    for (const RenderSettings& settings : {giSettings(kVoxels, View::Final, 64), defaults}) {
+        const HdrImage gi = renderFrom(scene, inside, settings);
+        ASSERT_NE(renderer_->voxels(), nullptr);
+        ASSERT_NEAR(renderer_->voxels()->voxelSize(), voxel, 1e-4f) << "walls must be two voxels thick";
+        expectNoLeak(scene, inside, settings, gi, outside,
+                     "sealed room at " + std::to_string(kVoxels) + "³, " +
+                         (settings.voxelRays > 0 ? "the defaults" : "the accurate mode"));
+    }
 }
 
 // The benchmark's sealed room (tools/make_gi_suite.cpp: interior 4 × 3 × 4 m, walls 0.2 m, sunlit
@@ -260,14 +267,23 @@ TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
     scene.updateWorldTransforms();
     const float outside = 0.5f / glm::pi<float>() * lux * -sunDirection.y;
     const CameraView inside = lookAt({1.2f, 1.6f, 1.6f}, {-1.0f, 1.4f, -1.5f}, 1.0f, 1.2f);
-    RenderSettings settings = giSettings(kVoxels, View::Final, 48);
-    const HdrImage gi = renderFrom(scene, inside, settings);
-    ASSERT_NE(renderer_->voxels(), nullptr);
-    const float voxel = renderer_->voxels()->voxelSize();
-    ASSERT_GT(t / voxel, 3.0f) << "walls must be more than two voxels thick";
-    char label[64];
-    std::snprintf(label, sizeof label, "sealed room, walls %.1f voxels at %d³", t / voxel, kVoxels);
-    expectNoLeak(scene, inside, settings, gi, outside, label);
+    // The accurate mode's cones, and the defaults (the cached mode, two bounces, voxel rays): since
+    // the fifteenth session the rays pass in front of one-sided voxels and reach the voxels at the
+    // room's inner edges, lit through the wall before injection looked half a voxel out too (the
+    // benchmark's room at 128³: 0.73 % then, 0.42 % after; docs/GI.md).
+    RenderSettings defaults = smallSettings(48);
+    defaults.gi = true;
+    defaults.voxelResolution = kVoxels;
+    for (const RenderSettings& settings : {giSettings(kVoxels, View::Final, 48), defaults}) {
+        const HdrImage gi = renderFrom(scene, inside, settings);
+        ASSERT_NE(renderer_->voxels(), nullptr);
+        const float voxel = renderer_->voxels()->voxelSize();
+        ASSERT_GT(t / voxel, 3.0f) << "walls must be more than two voxels thick";
+        char label[96];
+        std::snprintf(label, sizeof label, "sealed room, walls %.1f voxels at %d³, %s", t / voxel, kVoxels,
+                      settings.voxelRays > 0 ? "the defaults" : "the accurate mode");
+        expectNoLeak(scene, inside, settings, gi, outside, label);
+    }
 }
 
 // A wall one quad thin, lit on one side by the sun; a second, smaller quad behind it faces the
