@@ -338,8 +338,8 @@ void VoxelVolume::ensureBounceVolumes() {
 std::string VoxelVolume::memoryReport() const {
     const std::size_t each = materialBytes() / 4;
     return "albedo " + mib(each) + ", normal " + mib(each) + ", emission " + mib(each) + ", surface " + mib(each) +
-           ", radiance " +
-           mib(radianceBytes()) + (directional_[0] ? " (with mips and 6 directional chains)" : " (with mips)") +
+           ", radiance " + mib(radianceBytes()) +
+           (directional_[0] ? " (with mips and 6 directional chains)" : " (with mips)") +
            (direct_ ? ", bounce " + mib(bounceBytes()) : std::string()) + ", total " + mib(totalBytes());
 }
 
