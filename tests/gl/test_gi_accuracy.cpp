@@ -156,6 +156,14 @@ protected:
         s.voxelRays = 0;
         return s;
     }
+    // The renderer's defaults (RenderSettings as constructed: the cached mode, two bounces, 32 voxel
+    // rays) but for the size, GI on and the voxel resolution: what a user gets.
+    static RenderSettings defaultSettings(int voxels, int size) {
+        RenderSettings s = smallSettings(size);
+        s.gi = true;
+        s.voxelResolution = voxels;
+        return s;
+    }
     // The end of the sealed-room tests: the same view without GI, then the GI image's mean (the
     // leak) and the GI-off image's as shares of the outside radiance `outside`. The GI-off image
     // must be dark, else the shadow maps let the sun in and the leak is not GI's; the bar on the
@@ -185,10 +193,7 @@ TEST_F(GiAccuracy, LoneLitFloorDoesNotLightItself) {
     const CameraView camera = lookAt({0.0f, 1.2f, 0.6f}, {0.0f, 0.0f, 0.0f});
     // The accurate mode's cones, and the defaults (the cached mode, two bounces, voxel rays, whose
     // rays leave the floor's plane and cannot cross it again).
-    RenderSettings defaults = smallSettings(48);
-    defaults.gi = true;
-    defaults.voxelResolution = 64;
-    for (RenderSettings settings : {giSettings(64, View::DirectDiffuse, 48), defaults}) {
+    for (RenderSettings settings : {giSettings(64, View::DirectDiffuse, 48), defaultSettings(64, 48)}) {
         const char* mode = settings.voxelRays > 0 ? "the defaults" : "the accurate mode";
         settings.view = View::DirectDiffuse;
         const HdrImage direct = renderFrom(scene, camera, settings);
@@ -234,10 +239,7 @@ TEST_F(GiAccuracy, SealedRoomDoesNotLeakLightIn) {
     const float outside = 0.8f / glm::pi<float>() * lux * -sunDirection.y;
     const CameraView inside = lookAt({0.3f, 1.2f, 0.8f}, {-0.3f, 0.6f, -1.0f}, 1.0f, 1.4f);
     // The accurate mode's cones, and the defaults (the cached mode, two bounces, voxel rays).
-    RenderSettings defaults = smallSettings(64);
-    defaults.gi = true;
-    defaults.voxelResolution = kVoxels;
-    for (const RenderSettings& settings : {giSettings(kVoxels, View::Final, 64), defaults}) {
+    for (const RenderSettings& settings : {giSettings(kVoxels, View::Final, 64), defaultSettings(kVoxels, 64)}) {
         const HdrImage gi = renderFrom(scene, inside, settings);
         ASSERT_NE(renderer_->voxels(), nullptr);
         ASSERT_NEAR(renderer_->voxels()->voxelSize(), voxel, 1e-4f) << "walls must be two voxels thick";
@@ -281,10 +283,7 @@ TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
     // the fifteenth session the rays pass in front of one-sided voxels and reach the voxels at the
     // room's inner edges, lit through the wall before injection looked half a voxel out too (the
     // benchmark's room at 128³: 0.73 % then, 0.42 % after; docs/GI.md).
-    RenderSettings defaults = smallSettings(48);
-    defaults.gi = true;
-    defaults.voxelResolution = kVoxels;
-    for (const RenderSettings& settings : {giSettings(kVoxels, View::Final, 48), defaults}) {
+    for (const RenderSettings& settings : {giSettings(kVoxels, View::Final, 48), defaultSettings(kVoxels, 48)}) {
         const HdrImage gi = renderFrom(scene, inside, settings);
         ASSERT_NE(renderer_->voxels(), nullptr);
         const float voxel = renderer_->voxels()->voxelSize();
@@ -374,9 +373,7 @@ protected:
     // L_ID + L_IS with the renderer's defaults (RenderSettings as constructed: the cached mode, two
     // bounces, 32 voxel rays) but for the size, GI on and the voxel resolution: what a user gets.
     std::vector<float> defaultsIndirect(const Scene& scene, int voxels) {
-        RenderSettings settings = smallSettings(kSize);
-        settings.gi = true;
-        settings.voxelResolution = voxels;
+        const RenderSettings settings = defaultSettings(voxels, kSize);
         EXPECT_EQ(settings.bounces, 2);
         EXPECT_EQ(settings.voxelRays, 32);
         EXPECT_TRUE(settings.diffuseFromVoxelIrradiance) << "the cached mode";
