@@ -39,6 +39,9 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform coherent volatile uimage3D
 layout(binding = LIT_IMG_VOXEL_EMISSION, r32ui) uniform coherent volatile uimage3D voxelEmission;
 layout(binding = LIT_IMG_VOXEL_SURFACE, r32ui) uniform coherent volatile uimage3D voxelSurface;
 LIT_OCCUPIED_VOXELS_BLOCK();
+
+// (u, v, depth) of the projection along `axis` → voxel space: undoes voxelize.geom.glsl's swizzleForAxis.
+vec3 fromAxisSpace(vec3 s, int axis) { return axis == 0 ? s.zxy : (axis == 1 ? s.yzx : s); }
 uniform uint uOccupiedCapacity;  // entries the list can hold (VoxelVolume::occupiedCapacity)
 
 void main() {
@@ -48,7 +51,7 @@ void main() {
     int n = int(voxel.voxelInfo.x);
     // (u, v, depth) in voxels; undo the geometry shader's swizzle.
     ivec3 s = ivec3(ivec2(gl_FragCoord.xy), int(floor(gl_FragCoord.z * float(n))));
-    ivec3 v = fs.axis == 0 ? s.zxy : (fs.axis == 1 ? s.yzx : s);
+    ivec3 v = ivec3(fromAxisSpace(vec3(s), fs.axis));
     if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(n)))) discard;
 
     GpuMaterial m = materials[uMaterialIndex];
@@ -79,5 +82,5 @@ void main() {
     // rasterization's fragments beyond an edge (kTouchMargin, the enlarged triangle) record the edge.
     vec3 onPlane = vec3(vec2(s.xy) + 0.5, gl_FragCoord.z * float(n));
     vec3 local = clamp(closestPointOnTriangle(onPlane, fs.corner0, fs.corner1, fs.corner2) - vec3(s), 0.0, 1.0);
-    atomicAverageRgb(voxelSurface, v, fs.axis == 0 ? local.zxy : (fs.axis == 1 ? local.yzx : local));
+    atomicAverageRgb(voxelSurface, v, fromAxisSpace(local, fs.axis));
 }

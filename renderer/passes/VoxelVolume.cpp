@@ -29,7 +29,7 @@ std::string mib(std::size_t bytes) {
 std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
     const std::size_t texel = rgba8 ? 4 : 8;
-    const std::size_t material = voxels * 4 * 4;  // albedo, normal, emission, surface
+    const std::size_t material = voxels * 4 * VoxelVolume::kMaterialVolumeCount;  // r32ui each
     // A full 3D mip chain adds 1/8 + 1/64 + ... ≈ 1/7 of the base level; each directional volume
     // (one per axis, its two faces and a gap between them side by side) starts at 3·(N/2)³, 3/8 of
     // the base, so the three add 9/7 of it.
@@ -101,7 +101,7 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     normal_ = gl::Texture("voxel normal", {GL_TEXTURE_3D, GL_R32UI, n, n, n, 1});
     emission_ = gl::Texture("voxel emission", {GL_TEXTURE_3D, GL_R32UI, n, n, n, 1});
     surface_ = gl::Texture("voxel surface", {GL_TEXTURE_3D, GL_R32UI, n, n, n, 1});
-    for (const gl::Texture* t : {&albedo_, &normal_, &emission_, &surface_}) t->setFilter(GL_NEAREST, GL_NEAREST);
+    for (const gl::Texture* t : materialVolumes()) t->setFilter(GL_NEAREST, GL_NEAREST);
     radiance_ = gl::Texture("voxel radiance", {GL_TEXTURE_3D, radianceFormat(), n, n, n, mipCount_});
     radiance_.setFilter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
     radiance_.setWrap(GL_CLAMP_TO_BORDER);  // outside the volume is empty: opacity 0
@@ -177,7 +177,7 @@ void VoxelVolume::updateUniforms(const RenderSettings& settings, int frameIndex)
 
 void VoxelVolume::clearMaterials() const {
     const GLuint zero = 0;
-    for (const gl::Texture* t : {&albedo_, &normal_, &emission_, &surface_})
+    for (const gl::Texture* t : materialVolumes())
         if (*t) glClearTexImage(t->id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
@@ -288,7 +288,7 @@ void VoxelVolume::ensureParentLists() {
 }
 
 std::size_t VoxelVolume::materialBytes() const {
-    return static_cast<std::size_t>(resolution_) * resolution_ * resolution_ * 4 * 4;
+    return static_cast<std::size_t>(resolution_) * resolution_ * resolution_ * 4 * kMaterialVolumeCount;
 }
 
 std::size_t VoxelVolume::radianceBytes() const {
@@ -336,7 +336,7 @@ void VoxelVolume::ensureBounceVolumes() {
 }
 
 std::string VoxelVolume::memoryReport() const {
-    const std::size_t each = materialBytes() / 4;
+    const std::size_t each = materialBytes() / kMaterialVolumeCount;
     return "albedo " + mib(each) + ", normal " + mib(each) + ", emission " + mib(each) + ", surface " + mib(each) +
            ", radiance " + mib(radianceBytes()) +
            (directional_[0] ? " (with mips and 6 directional chains)" : " (with mips)") +

@@ -137,6 +137,8 @@ public:
     std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes(); }
     std::string memoryReport() const;  // "albedo 8.0 MiB, normal 8.0 MiB, ... total 54.9 MiB"
 
+    // The r32ui material volumes: albedo, normal, emission, surface (4 bytes per voxel each).
+    static constexpr int kMaterialVolumeCount = 4;
     // Radiance that maps to 1.0 in the packed emission volume (W/(sr·m²)).
     static constexpr float kEmissionRange = 16.0f;
 
@@ -147,6 +149,10 @@ private:
     glm::vec3 min_{0.0f};
     float side_ = 1.0f;
     gl::Texture albedo_, normal_, emission_, surface_, radiance_;
+    // The r32ui volumes the voxelization writes (kMaterialVolumeCount of them).
+    std::array<const gl::Texture*, kMaterialVolumeCount> materialVolumes() const {
+        return {&albedo_, &normal_, &emission_, &surface_};
+    }
     std::array<gl::Texture, LIT_VOXEL_AXIS_COUNT> directional_;
     gl::Texture direct_, bounce_;
     gl::Buffer uniforms_;
