@@ -728,7 +728,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
                     : ConeTracePass::Sampling{};
             {
                 Profiler::Scope scope(r.profiler, "cone trace");
-                if (settings.diffuseFromVoxelIrradiance) r.inject.bindIrradiance(r.voxels);
+                if (settings.diffuseFromVoxelIrradiance) r.inject.bindIrradiance();
                 r.coneTrace.executeReduced(r.voxels, settings, sampling);
             }
             r.waitForQueuedPasses();  // the resolve samples the low-resolution trace

@@ -16,9 +16,9 @@
 // meeting this floor get ~none), and only if it was traced (alpha > 0). A voxel with no traced
 // neighbour stays untraced (alpha 0), which the gather skips.
 //
-// Reads the traced ("raw") volumes, writes the filtered ones the gather reads; over the occupied
-// list (uFromList 1, as inject.comp.glsl), a part of it, or the whole grid. Values are stored as the radiance
-// volume stores radiance (encodeRadiance: RGBA8 scaled by voxelRadianceRange, or RGBA16F).
+// Reads the traced ("raw") volume, writes the gather texels (voxel.glsl, packGatherTexel: the
+// voxel's normal and both sides' filtered irradiance/π as halves, in either radiance format); over
+// the occupied list (uFromList 1, as inject.comp.glsl), a part of it, or the whole grid.
 #include "voxel.glsl"
 
 layout(local_size_x = LIT_INJECT_GROUP_SIZE, local_size_y = LIT_INJECT_GROUP_SIZE, local_size_z = LIT_INJECT_GROUP_SIZE) in;
@@ -28,14 +28,15 @@ LIT_VOXEL_LIST_READER
 // filtered (listedVoxelInRange); the frame that completes the update filters the whole list.
 LIT_VOXEL_LIST_RANGE_READER
 
-// Both sides in one volume each (otherSideTexel, voxel.glsl).
+// The traced volume holds both sides (otherSideTexel, voxel.glsl).
 layout(binding = LIT_TEX_VOXEL_IRRADIANCE) uniform sampler3D rawIrradiance;
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNormal;
-layout(binding = LIT_IMG_VOXEL_DIRECT, LIT_RADIANCE_IMAGE_FORMAT) uniform writeonly image3D filtered;
+layout(binding = LIT_IMG_VOXEL_DIRECT, rgba32ui) uniform writeonly uimage3D gatherTexels;
 
 // A voxel's unit normal and whether it is one-sided, as bounce.comp.glsl traced it; false if empty.
-bool voxelSurface(ivec3 v, out vec3 normal, out bool oneSided) {
-    uint packedNormal = imageLoad(voxelNormal, v).r;
+// `packedNormal`: the normal volume's word.
+bool voxelSurface(ivec3 v, out vec3 normal, out bool oneSided, out uint packedNormal) {
+    packedNormal = imageLoad(voxelNormal, v).r;
     if (unpackVoxel(packedNormal).a == 0.0) return false;
     vec3 averaged = unpackAveragedNormal(packedNormal);
     float agreement = length(averaged);
@@ -60,7 +61,8 @@ vec4 filteredSide(ivec3 c, vec3 n, int res) {
             if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(res)))) continue;
             vec3 vn;
             bool oneSided;
-            if (!voxelSurface(v, vn, oneSided)) continue;
+            uint packedNormal;
+            if (!voxelSurface(v, vn, oneSided, packedNormal)) continue;
             float d = dot(n, vn);
             bool otherSide = !oneSided && d < 0.0;
             float facing = otherSide ? -d : d;
@@ -86,9 +88,9 @@ void main() {
     if (any(greaterThanEqual(v, ivec3(res)))) return;
     vec3 normal;
     bool oneSided;
-    if (!voxelSurface(v, normal, oneSided)) return;  // empty: never read by the gather
+    uint packedNormal;
+    if (!voxelSurface(v, normal, oneSided, packedNormal)) return;  // empty: the gather skips its zero texel
     vec4 front = filteredSide(v, normal, res);
     vec4 back = oneSided ? front : filteredSide(v, -normal, res);
-    imageStore(filtered, v, vec4(encodeRadiance(front.rgb), front.a > 0.0 ? 1.0 : 0.0));
-    imageStore(filtered, otherSideTexel(v), vec4(encodeRadiance(back.rgb), back.a > 0.0 ? 1.0 : 0.0));
+    imageStore(gatherTexels, v, packGatherTexel(packedNormal, front, back));
 }

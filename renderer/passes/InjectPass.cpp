@@ -76,7 +76,7 @@ std::vector<gl::Program*> InjectPass::programs() {
     bounce16f_.appendBuilt(programs);
     irradiance8_.appendBuilt(programs);
     irradiance16f_.appendBuilt(programs);
-    for (gl::Program* built : {&filter8_, &filter16f_, &copy8_, &copy16f_})
+    for (gl::Program* built : {&filter_, &copy8_, &copy16f_})
         if (*built) programs.push_back(built);
     return programs;
 }
@@ -165,7 +165,8 @@ void InjectPass::bindRayHits(const gl::Program& program, ConeFeatures features, 
 }
 
 std::size_t InjectPass::irradianceBytes(int n, bool radianceRgba8) {
-    return 4 * static_cast<std::size_t>(n) * n * n * (radianceRgba8 ? 4 : 8);
+    const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
+    return 2 * voxels * (radianceRgba8 ? 4 : 8) + voxels * kGatherTexelBytes;
 }
 
 void InjectPass::prepareIrradiance(const VoxelVolume& volume, bool clear) {
@@ -176,8 +177,9 @@ void InjectPass::prepareIrradiance(const VoxelVolume& volume, bool clear) {
         const GLenum format = volume.radianceFormat();
         // Both sides stacked in z (otherSideTexel, voxel.glsl).
         raw_ = gl::Texture("voxel irradiance (traced)", {GL_TEXTURE_3D, format, n, n, 2 * n, 1});
-        irradiance_ = gl::Texture("voxel irradiance", {GL_TEXTURE_3D, format, n, n, 2 * n, 1});
-        // Read with texelFetch only; nearest keeps the one-level volumes complete for any sampler state.
+        irradiance_ = gl::Texture("voxel irradiance (gather texels)", {GL_TEXTURE_3D, GL_RGBA32UI, n, n, n, 1});
+        // Read with texelFetch only; nearest keeps the one-level volumes complete for any sampler
+        // state (an integer texture with linear filtering would be incomplete).
         for (const gl::Texture* t : {&raw_, &irradiance_}) t->setFilter(GL_NEAREST, GL_NEAREST);
         irradianceResolution_ = n;
         irradianceRgba8_ = rgba8;
@@ -185,7 +187,9 @@ void InjectPass::prepareIrradiance(const VoxelVolume& volume, bool clear) {
     }
     if (!clear) return;
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (const gl::Texture* t : {&raw_, &irradiance_}) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, zero);
+    glClearTexImage(raw_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    const GLuint zeroBits[4] = {0, 0, 0, 0};  // an empty voxel to the gather
+    glClearTexImage(irradiance_.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, zeroBits);
 }
 
 void InjectPass::executeIrradiance(const VoxelVolume& volume, ConeFeatures features, bool fromList, std::uint32_t first,
@@ -220,28 +224,28 @@ void InjectPass::filterIrradiance(const VoxelVolume& volume, bool fromList, std:
     if (volume.resolution() <= 0 || irradianceResolution_ != volume.resolution() ||
         irradianceRgba8_ != volume.radianceRgba8())
         return;
-    const bool rgba8 = irradianceRgba8_;
-    const GLenum format = volume.radianceFormat();
-    const gl::Program& filter =
-        formatProgram(filter8_, filter16f_, rgba8, "voxel irradiance filter", "voxel_irradiance_filter.comp.glsl");
+    // One program for both radiance formats: it reads the traced volume through a sampler and
+    // writes the gather texels, whose format does not follow the radiance volume's.
+    if (!filter_)
+        filter_ = gl::Program(shaderRoot_, "voxel irradiance filter", {{GL_COMPUTE_SHADER, "voxel_irradiance_filter.comp.glsl"}});
+    const gl::Program& filter = filter_;
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     filter.use();
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     glBindSampler(LIT_TEX_VOXEL_IRRADIANCE, 0);
     raw_.bind(LIT_TEX_VOXEL_IRRADIANCE);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, irradiance_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
     dispatchListRange(volume, filter, fromList, first, count);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-void InjectPass::bindIrradiance(const VoxelVolume& volume) const {
+void InjectPass::bindIrradiance() const {
     if (!irradiance_) return;
-    // Both are one-level volumes with nearest filtering (set where they are made); a sampler
-    // object left on these units by another pass would override that.
-    for (const GLuint unit : {LIT_TEX_VOXEL_IRRADIANCE, LIT_TEX_VOXEL_NORMAL}) glBindSampler(unit, 0);
+    // A one-level volume with nearest filtering (set where it is made); a sampler object left on
+    // this unit by another pass would override that.
+    glBindSampler(LIT_TEX_VOXEL_IRRADIANCE, 0);
     irradiance_.bind(LIT_TEX_VOXEL_IRRADIANCE);
-    volume.normal().bind(LIT_TEX_VOXEL_NORMAL);
 }
 
 void InjectPass::execute(const VoxelVolume& volume, bool fromList, bool writeLevel0, bool writeDirect) {

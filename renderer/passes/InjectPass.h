@@ -96,22 +96,24 @@ public:
     // in the list: filtering only the traced range leaves those neighbours' values stale until
     // their own range is traced, so the frame that completes an update filters the whole list.
     void filterIrradiance(const VoxelVolume& volume, bool fromList, std::uint32_t first = 0, std::uint32_t count = 0);
-    // Binds the filtered irradiance volume (both sides) and the voxel normals (LIT_TEX_VOXEL_IRRADIANCE,
-    // LIT_TEX_VOXEL_NORMAL) for the cone passes.
-    void bindIrradiance(const VoxelVolume& volume) const;
-    // Bytes of the four irradiance volumes of an N³ volume (memory budget, VoxelVolume.h).
+    // Binds the gather texels (LIT_TEX_VOXEL_IRRADIANCE: each voxel's normal and both sides'
+    // filtered irradiance, voxel.glsl's packGatherTexel) for the cone passes.
+    void bindIrradiance() const;
+    // Bytes of the irradiance volumes of an N³ volume (memory budget, VoxelVolume.h).
     static std::size_t irradianceBytes(int n, bool radianceRgba8);
+    static constexpr std::size_t kGatherTexelBytes = 16;  // RGBA32UI
 
     std::vector<gl::Program*> programs() override;
 
 private:
-    // bounce.comp.glsl (LIT_BOUNCE_IRRADIANCE) and the filter, for RGBA8 and RGBA16F volumes.
+    // bounce.comp.glsl (LIT_BOUNCE_IRRADIANCE) for RGBA8 and RGBA16F volumes, and the filter.
     ConeProgram irradiance8_, irradiance16f_;
-    gl::Program filter8_, filter16f_;
-    // N × N × 2N each: the side of the voxel's averaged normal at z < N, the other at z + N (one
-    // sampler for both sides: llvmpipe fetched from both of two samplers a pixel chose between).
-    gl::Texture raw_;         // as traced, one cone set per voxel
-    gl::Texture irradiance_;  // filtered over the sets: what the gather reads
+    gl::Program filter_;
+    // As traced, one cone set per voxel: N × N × 2N in the radiance format, the side of the voxel's
+    // averaged normal at z < N, the other at z + N (otherSideTexel, voxel.glsl).
+    gl::Texture raw_;
+    // Filtered over the sets, what the gather reads: N³ RGBA32UI gather texels (packGatherTexel).
+    gl::Texture irradiance_;
     int irradianceResolution_ = 0;
     bool irradianceRgba8_ = false;
     // Sets uRayHits (and binds the buffer) for a voxel-ray program; nothing for cones.

@@ -88,10 +88,10 @@ using mat4 = glm::mat4;
 #define LIT_TEX_VOXEL_DIRECTIONAL_FIRST 29
 #define LIT_VOXEL_FACE_COUNT 6
 #define LIT_VOXEL_AXIS_COUNT 3  // directional volumes: one per axis, holding its two faces
-// Voxel irradiance (the cached GI mode, RenderSettings::diffuseFromVoxelIrradiance): N × N × 2N in
-// the radiance volume's format, the occupied voxels' irradiance/π on the side of their averaged
-// normal (z < N) and the other (z + N, otherSideTexel in voxel.glsl); the cone passes read the
-// filtered one, the filter the traced one.
+// Voxel irradiance (the cached GI mode, RenderSettings::diffuseFromVoxelIrradiance). The filter reads
+// the traced one: N × N × 2N in the radiance volume's format, the occupied voxels' irradiance/π on
+// the side of their averaged normal (z < N) and the other (z + N, otherSideTexel in voxel.glsl).
+// The cone passes read the filtered one: N³ RGBA32UI gather texels (packGatherTexel, voxel.glsl).
 #define LIT_TEX_VOXEL_IRRADIANCE 32
 
 // ---- Image units (image load/store) ------------------------------------------------------

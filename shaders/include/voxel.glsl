@@ -41,9 +41,46 @@ vec3 unpackAveragedNormal(uint bits) { return unpackVoxel(bits).xyz * 2.0 - 1.0;
 #endif
 #endif
 
-// The cached GI mode's irradiance volumes (InjectPass) hold both sides of a voxel in one N × N × 2N
-// volume: the side its averaged normal points to at v, the other side (thin walls) here.
+// The cached GI mode's traced irradiance volume (InjectPass) holds both sides of a voxel in one
+// N × N × 2N volume: the side its averaged normal points to at v, the other side (thin walls) here.
 ivec3 otherSideTexel(ivec3 v) { return ivec3(v.xy, v.z + int(voxel.voxelInfo.x)); }
+
+// The gather texel (the cached GI mode's filtered irradiance, RGBA32UI N³; voxel_irradiance_filter
+// writes it, the per-pixel gather of voxel_irradiance.glsl reads it): everything the gather needs of
+// a voxel in one fetch, where it took two (the normal volume, then the irradiance of the side).
+//   x: the voxel's normal word (unpackAveragedNormal reads its rgb bytes) with its count byte
+//      replaced by flags: written (never 0 once the filter wrote it), side traced, other side traced
+//   y, z, w: bfloat2(side.r, side.g), bfloat2(other.r, other.g), bfloat2(side.b, other.b):
+//      irradiance/π decoded (not in the radiance volume's encoding), a side's three values from
+//      words chosen first
+// An all-zero texel (cleared by a voxelization, not filtered since) is an empty voxel to the gather.
+// bfloat16 (8 significant bits, ≤ 0.2 % off) rather than halves (11): llvmpipe converts a half
+// in software, and 54 conversions a pixel kept 8 of the 13 ms the single fetch saved the ½-scale
+// trace of the full-frame Cornell box (47 → 34 ms with bfloat16, 42 with halves; the Cornell and
+// sealed-room accuracy figures unchanged at their precision: docs/PERFORMANCE.md, sixteenth session).
+const uint kGatherWritten = 1u << 24;
+const uint kGatherSideTraced = 1u << 25;
+const uint kGatherOtherSideTraced = 1u << 26;
+// bfloat16: a float's upper 16 bits, rounded to nearest even (finite, non-negative values).
+uint bfloatBits(float x) {
+    uint bits = floatBitsToUint(x);
+    return (bits + 0x7fffu + ((bits >> 16) & 1u)) >> 16;
+}
+uint packBfloat2(vec2 v) { return bfloatBits(v.x) | (bfloatBits(v.y) << 16); }
+float unpackBfloatLow(uint word) { return uintBitsToFloat(word << 16); }
+float unpackBfloatHigh(uint word) { return uintBitsToFloat(word & 0xffff0000u); }
+uvec4 packGatherTexel(uint normalBits, vec4 side, vec4 other) {
+    uint flags = kGatherWritten | (side.a > 0.0 ? kGatherSideTraced : 0u) | (other.a > 0.0 ? kGatherOtherSideTraced : 0u);
+    return uvec4((normalBits & 0x00ffffffu) | flags, packBfloat2(side.rg), packBfloat2(other.rg),
+                 packBfloat2(vec2(side.b, other.b)));
+}
+bool gatherTexelTraced(uvec4 t, bool otherSide) {
+    return (t.x & (otherSide ? kGatherOtherSideTraced : kGatherSideTraced)) != 0u;
+}
+vec3 gatherTexelIrradiance(uvec4 t, bool otherSide) {
+    uint rg = otherSide ? t.z : t.y;
+    return vec3(unpackBfloatLow(rg), unpackBfloatHigh(rg), otherSide ? unpackBfloatHigh(t.w) : unpackBfloatLow(t.w));
+}
 
 // The packed running average `current` with `value` (rgb in [0,1]) added. The alpha byte counts
 // the samples averaged so far (saturating at 255, after which it is a moving average).

@@ -4,26 +4,27 @@
 // mode's stratified cones once (bounce.comp.glsl, LIT_BOUNCE_IRRADIANCE) and stores irradiance/π
 // for the side its averaged normal points to (POS) and, for voxels whose normals disagree (both
 // sides of a thin wall), the other side (NEG), averaged over the cone sets along the surface by
-// voxel_irradiance_filter.comp.glsl, encoded as the radiance volume (encodeRadiance). A pixel then
-// gathers, instead of tracing cones, the
+// voxel_irradiance_filter.comp.glsl into the gather texels (voxel.glsl, packGatherTexel). A pixel
+// then gathers, instead of tracing cones, the
 // 3 × 3 × 3 voxels around its surface point pushed half a voxel along its normal, weighted by a
 // tent of radius 1.5 voxels around that point × (normal agreement)^16 × occupancy. The 16th
 // power keeps the gather to voxels facing as the pixel does (weight 0.5 at 17°, 0.1 at 30°): with
 // the square (eighth session) the sealed room's inside floor read its walls' voxels and leaked
 // 1.4-1.9× the accurate mode's light; with ^16 as much as the accurate mode (docs/GI.md, ninth
 // session). A voxel whose irradiance was not traced yet (alpha 0: cleared after a voxelization,
-// and the amortised update, voxelIrradianceVoxelsPerFrame, has not reached it) is left out.
+// and the amortised update, voxelIrradianceVoxelsPerFrame, has not reached it: the side's flag
+// in its texel) is left out.
 // Needs voxel.glsl (included by cone.glsl).
 #ifndef LIT_VOXEL_IRRADIANCE
 #define LIT_VOXEL_IRRADIANCE 0
 #endif
 #if LIT_VOXEL_IRRADIANCE
-// Both sides in one volume: the averaged normal's at z, the other at z + N (otherSideTexel,
-// voxel.glsl). With one sampler per side llvmpipe fetched from both wherever a pixel chose one
-// (a select, not a branch): the ½-scale trace of the full-frame Cornell box took 80 ms against
-// 67 ms with one fetch (docs/PERFORMANCE.md, fourteenth session).
-layout(binding = LIT_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelIrradiance;
-layout(binding = LIT_TEX_VOXEL_NORMAL) uniform usampler3D voxelNormalTexture;
+// The gather texels (voxel.glsl, packGatherTexel): a voxel's normal and both sides' irradiance in
+// one fetch. (Before, the normal volume and an N × N × 2N irradiance volume: two fetches a voxel,
+// the ½-scale trace of the full-frame Cornell box 47 ms against 33-35; and earlier, with one
+// sampler per side, llvmpipe fetched from both wherever a pixel chose one, 80 against 67 ms:
+// docs/PERFORMANCE.md, fourteenth and sixteenth sessions.)
+layout(binding = LIT_TEX_VOXEL_IRRADIANCE) uniform usampler3D voxelGatherTexels;
 
 vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
     int res = int(voxel.voxelInfo.x);
@@ -37,9 +38,9 @@ vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
             for (int x = -1; x <= 1; ++x) {
                 ivec3 v = c + ivec3(x, y, z);
                 if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(res)))) continue;
-                uint packedNormal = texelFetch(voxelNormalTexture, v, 0).r;
-                if (unpackVoxel(packedNormal).a == 0.0) continue;  // empty
-                vec3 averaged = unpackAveragedNormal(packedNormal);
+                uvec4 t = texelFetch(voxelGatherTexels, v, 0);
+                if (t.x == 0u) continue;  // empty (or not filtered since the voxelization)
+                vec3 averaged = unpackAveragedNormal(t.x);
                 float agreement = length(averaged);
                 // The normal and the two sides as bounce.comp.glsl traced them.
                 vec3 vn = agreement >= kDirectionMinLength ? averaged / agreement : vec3(0.0, 1.0, 0.0);
@@ -47,12 +48,11 @@ vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
                 bool otherSide = agreement < kOneSidedMinLength && d < 0.0;
                 float facing = otherSide ? -d : d;
                 if (facing <= 0.0) continue;
-                vec4 e = texelFetch(voxelIrradiance, otherSide ? otherSideTexel(v) : v, 0);
-                if (e.a == 0.0) continue;  // not traced yet
+                if (!gatherTexelTraced(t, otherSide)) continue;  // not traced yet
                 vec3 tent = max(1.0 - abs(vec3(v) - g) / 1.5, 0.0);
                 float f2 = facing * facing, f4 = f2 * f2, f8 = f4 * f4;
                 float w = tent.x * tent.y * tent.z * f8 * f8;
-                sum += w * decodeRadiance(e.rgb);
+                sum += w * gatherTexelIrradiance(t, otherSide);
                 weightSum += w;
             }
     return weightSum > 0.0 ? sum / weightSum : vec3(0.0);
