@@ -17,7 +17,7 @@
 // neighbour stays untraced (alpha 0), which the gather skips.
 //
 // Reads the traced ("raw") volume, writes the gather texels (voxel.glsl, packGatherTexel: the
-// voxel's normal and both sides' filtered irradiance/π as halves, in either radiance format); over
+// voxel's unit normal and both sides' filtered irradiance/π, in either radiance format); over
 // the occupied list (uFromList 1, as inject.comp.glsl), a part of it, or the whole grid.
 #include "voxel.glsl"
 
@@ -34,9 +34,8 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNor
 layout(binding = LIT_IMG_VOXEL_DIRECT, rgba32ui) uniform writeonly uimage3D gatherTexels;
 
 // A voxel's unit normal and whether it is one-sided, as bounce.comp.glsl traced it; false if empty.
-// `packedNormal`: the normal volume's word.
-bool voxelSurface(ivec3 v, out vec3 normal, out bool oneSided, out uint packedNormal) {
-    packedNormal = imageLoad(voxelNormal, v).r;
+bool voxelSurface(ivec3 v, out vec3 normal, out bool oneSided) {
+    uint packedNormal = imageLoad(voxelNormal, v).r;
     if (unpackVoxel(packedNormal).a == 0.0) return false;
     vec3 averaged = unpackAveragedNormal(packedNormal);
     float agreement = length(averaged);
@@ -61,8 +60,7 @@ vec4 filteredSide(ivec3 c, vec3 n, int res) {
             if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(res)))) continue;
             vec3 vn;
             bool oneSided;
-            uint packedNormal;
-            if (!voxelSurface(v, vn, oneSided, packedNormal)) continue;
+            if (!voxelSurface(v, vn, oneSided)) continue;
             float d = dot(n, vn);
             bool otherSide = !oneSided && d < 0.0;
             float facing = otherSide ? -d : d;
@@ -88,9 +86,8 @@ void main() {
     if (any(greaterThanEqual(v, ivec3(res)))) return;
     vec3 normal;
     bool oneSided;
-    uint packedNormal;
-    if (!voxelSurface(v, normal, oneSided, packedNormal)) return;  // empty: the gather skips its zero texel
+    if (!voxelSurface(v, normal, oneSided)) return;  // empty: the gather skips its zero texel
     vec4 front = filteredSide(v, normal, res);
     vec4 back = oneSided ? front : filteredSide(v, -normal, res);
-    imageStore(gatherTexels, v, packGatherTexel(packedNormal, front, back));
+    imageStore(gatherTexels, v, packGatherTexel(normal, oneSided, front, back));
 }

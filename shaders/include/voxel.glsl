@@ -48,19 +48,22 @@ ivec3 otherSideTexel(ivec3 v) { return ivec3(v.xy, v.z + int(voxel.voxelInfo.x))
 // The gather texel (the cached GI mode's filtered irradiance, RGBA32UI N³; voxel_irradiance_filter
 // writes it, the per-pixel gather of voxel_irradiance.glsl reads it): everything the gather needs of
 // a voxel in one fetch, where it took two (the normal volume, then the irradiance of the side).
-//   x: the voxel's normal word (unpackAveragedNormal reads its rgb bytes) with its count byte
-//      replaced by flags: written (never 0 once the filter wrote it), side traced, other side traced
+//   x: bits 0-26 the voxel's unit normal as the bounces traced it (its averaged normal
+//      normalized, +Y where the normals cancel), 9 bits per axis (round((c + 1)·255), ≤ 0.002 off:
+//      a quarter of the averaged normal's own 8-bit step); bit 27 written (so x is never 0 once
+//      the filter wrote it), 28 side traced, 29 other side traced, 30 one-sided
 //   y, z, w: bfloat2(side.r, side.g), bfloat2(other.r, other.g), bfloat2(side.b, other.b):
 //      irradiance/π decoded (not in the radiance volume's encoding), a side's three values from
 //      words chosen first
 // An all-zero texel (cleared by a voxelization, not filtered since) is an empty voxel to the gather.
-// bfloat16 (8 significant bits, ≤ 0.2 % off) rather than halves (11): llvmpipe converts a half
-// in software, and 54 conversions a pixel kept 8 of the 13 ms the single fetch saved the ½-scale
-// trace of the full-frame Cornell box (47 → 34 ms with bfloat16, 42 with halves; the Cornell and
-// sealed-room accuracy figures unchanged at their precision: docs/PERFORMANCE.md, sixteenth session).
-const uint kGatherWritten = 1u << 24;
-const uint kGatherSideTraced = 1u << 25;
-const uint kGatherOtherSideTraced = 1u << 26;
+// Costs on llvmpipe (the ½-scale trace of the full-frame Cornell box, docs/PERFORMANCE.md, sixteenth
+// session): the one fetch took it from 47 to 42 ms with halves, 34-35 with bfloat16 (8 significant
+// bits, ≤ 0.2 % off; llvmpipe converts halves in software, 54 times a pixel), and the normal stored
+// normalized saves the gather a square root and a division per voxel (36 → 29-31 ms).
+const uint kGatherWritten = 1u << 27;
+const uint kGatherSideTraced = 1u << 28;
+const uint kGatherOtherSideTraced = 1u << 29;
+const uint kGatherOneSided = 1u << 30;
 // bfloat16: a float's upper 16 bits, rounded to nearest even (finite, non-negative values).
 uint bfloatBits(float x) {
     uint bits = floatBitsToUint(x);
@@ -69,11 +72,17 @@ uint bfloatBits(float x) {
 uint packBfloat2(vec2 v) { return bfloatBits(v.x) | (bfloatBits(v.y) << 16); }
 float unpackBfloatLow(uint word) { return uintBitsToFloat(word << 16); }
 float unpackBfloatHigh(uint word) { return uintBitsToFloat(word & 0xffff0000u); }
-uvec4 packGatherTexel(uint normalBits, vec4 side, vec4 other) {
-    uint flags = kGatherWritten | (side.a > 0.0 ? kGatherSideTraced : 0u) | (other.a > 0.0 ? kGatherOtherSideTraced : 0u);
-    return uvec4((normalBits & 0x00ffffffu) | flags, packBfloat2(side.rg), packBfloat2(other.rg),
+uvec4 packGatherTexel(vec3 unitNormal, bool oneSided, vec4 side, vec4 other) {
+    uvec3 q = uvec3(round(clamp(unitNormal, -1.0, 1.0) * 255.0 + 255.0));
+    uint flags = kGatherWritten | (side.a > 0.0 ? kGatherSideTraced : 0u) |
+                 (other.a > 0.0 ? kGatherOtherSideTraced : 0u) | (oneSided ? kGatherOneSided : 0u);
+    return uvec4(q.x | (q.y << 9) | (q.z << 18) | flags, packBfloat2(side.rg), packBfloat2(other.rg),
                  packBfloat2(vec2(side.b, other.b)));
 }
+vec3 gatherTexelNormal(uvec4 t) {
+    return vec3(uvec3(t.x, t.x >> 9, t.x >> 18) & 511u) * (1.0 / 255.0) - 1.0;
+}
+bool gatherTexelOneSided(uvec4 t) { return (t.x & kGatherOneSided) != 0u; }
 bool gatherTexelTraced(uvec4 t, bool otherSide) {
     return (t.x & (otherSide ? kGatherOtherSideTraced : kGatherSideTraced)) != 0u;
 }

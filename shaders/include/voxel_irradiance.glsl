@@ -40,12 +40,9 @@ vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
                 if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(res)))) continue;
                 uvec4 t = texelFetch(voxelGatherTexels, v, 0);
                 if (t.x == 0u) continue;  // empty (or not filtered since the voxelization)
-                vec3 averaged = unpackAveragedNormal(t.x);
-                float agreement = length(averaged);
                 // The normal and the two sides as bounce.comp.glsl traced them.
-                vec3 vn = agreement >= kDirectionMinLength ? averaged / agreement : vec3(0.0, 1.0, 0.0);
-                float d = dot(n, vn);
-                bool otherSide = agreement < kOneSidedMinLength && d < 0.0;
+                float d = dot(n, gatherTexelNormal(t));
+                bool otherSide = !gatherTexelOneSided(t) && d < 0.0;
                 float facing = otherSide ? -d : d;
                 if (facing <= 0.0) continue;
                 if (!gatherTexelTraced(t, otherSide)) continue;  // not traced yet
