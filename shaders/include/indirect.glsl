@@ -1,6 +1,7 @@
 // Reduced-resolution and temporally accumulated indirect lighting (docs/GI.md, "Reduced
 // resolution and temporal accumulation"): what the low-resolution trace (indirect_trace.frag.glsl)
 // and the resolve (indirect_resolve.frag.glsl) share. Needs frame.glsl, gbuffer.glsl, cone.glsl.
+#include "bfloat.glsl"
 //
 // Both terms are traced *demodulated*: L_ID / (albedo_d · intensity · AO) = irradiance/π and
 // L_IS / (E · intensity · AO) = ⟨L⟩, the lobe-averaged radiance. These vary slowly across a
@@ -36,15 +37,17 @@ ivec2 tracedPixel(ivec2 low) {
 
 // The low-resolution targets, one texel per traced pixel, packed so the resolve reads a
 // neighbour with two fetches (on llvmpipe the resolve's cost is its texel fetches):
-//   packed (RGBA32UI): half2(D.rg), half2(D.b, 1 = D traced), half2(S.rg), half2(S.b, 1 + roughness = S traced)
+//   packed (RGBA32UI): bfloat2(D.rg), bfloat2(D.b, 1 = D traced), bfloat2(S.rg), bfloat2(S.b, 1 +
+//            roughness = S traced) (bfloat.glsl: the resolve 45-47 → 39-40 ms against halves; the
+//            roughness to 1/128, the same for neighbours of one material, whose weights it scales alike)
 //   guide  (RGBA32UI): the traced pixel's world position (float bits, m), octahedral normal (snorm16 ×2)
 // D = irradiance/π, S = lobe-averaged radiance ⟨L⟩ (0 where not traced).
 uvec4 packIndirect(vec4 diffuse, vec4 specular) {
-    return uvec4(packHalf2x16(diffuse.rg), packHalf2x16(diffuse.ba), packHalf2x16(specular.rg), packHalf2x16(specular.ba));
+    return uvec4(packBfloat2(diffuse.rg), packBfloat2(diffuse.ba), packBfloat2(specular.rg), packBfloat2(specular.ba));
 }
 void unpackIndirect(uvec4 bits, out vec4 diffuse, out vec4 specular) {
-    diffuse = vec4(unpackHalf2x16(bits.x), unpackHalf2x16(bits.y));
-    specular = vec4(unpackHalf2x16(bits.z), unpackHalf2x16(bits.w));
+    diffuse = vec4(unpackBfloat2(bits.x), unpackBfloat2(bits.y));
+    specular = vec4(unpackBfloat2(bits.z), unpackBfloat2(bits.w));
 }
 
 // Octahedral unit-vector encoding (Cigolle et al. 2014, "A Survey of Efficient Representations

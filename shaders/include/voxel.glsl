@@ -2,6 +2,7 @@
 // average that lets many fragments write one voxel without flicker (Crassin & Green 2012,
 // "Octree-Based Sparse Voxelization Using the GPU Hardware Rasterizer", OpenGL Insights ch. 22).
 #include "shared.h"
+#include "bfloat.glsl"
 
 layout(std140, binding = LIT_UBO_VOXEL) uniform VoxelBlock {
     VoxelUniforms voxel;
@@ -64,14 +65,6 @@ const uint kGatherWritten = 1u << 27;
 const uint kGatherSideTraced = 1u << 28;
 const uint kGatherOtherSideTraced = 1u << 29;
 const uint kGatherOneSided = 1u << 30;
-// bfloat16: a float's upper 16 bits, rounded to nearest even (finite, non-negative values).
-uint bfloatBits(float x) {
-    uint bits = floatBitsToUint(x);
-    return (bits + 0x7fffu + ((bits >> 16) & 1u)) >> 16;
-}
-uint packBfloat2(vec2 v) { return bfloatBits(v.x) | (bfloatBits(v.y) << 16); }
-float unpackBfloatLow(uint word) { return uintBitsToFloat(word << 16); }
-float unpackBfloatHigh(uint word) { return uintBitsToFloat(word & 0xffff0000u); }
 uvec4 packGatherTexel(vec3 unitNormal, bool oneSided, vec4 side, vec4 other) {
     uvec3 q = uvec3(round(clamp(unitNormal, -1.0, 1.0) * 255.0 + 255.0));
     uint flags = kGatherWritten | (side.a > 0.0 ? kGatherSideTraced : 0u) |
