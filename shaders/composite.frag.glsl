@@ -17,6 +17,13 @@ layout(binding = LIT_TEX_TERM_INDIRECT_DIFFUSE) uniform sampler2D termIndirectDi
 layout(binding = LIT_TEX_TERM_INDIRECT_SPECULAR) uniform sampler2D termIndirectSpecular;
 layout(binding = LIT_TEX_DEBUG_INPUT) uniform sampler2DArray debugShadowMap;
 
+// 1: the final view's program (PostPass::composite picks it for View::Final), without the other
+// views' branches: llvmpipe runs a uniform branch's body with every lane masked off, and those
+// branches cost the post pass 10 of its 30 ms at 1280×720 (docs/PERFORMANCE.md, sixteenth session).
+#ifndef LIT_COMPOSITE_FINAL_ONLY
+#define LIT_COMPOSITE_FINAL_ONLY 0
+#endif
+
 uniform ivec4 uTerms;        // which of DD, ID, DS, IS are on (1/0)
 uniform int uShadowLayer;    // layer of the 2D shadow array for the shadow-map view (-1: none)
 
@@ -34,7 +41,9 @@ void main() {
             vec3 farPoint = worldPositionFromDepth(gl_FragCoord.xy * frame.viewport.zw, 1.0);
             color = skyRadiance(farPoint - frame.cameraPosition.xyz);
         }
-    } else if (view == LIT_VIEW_DIRECT_DIFFUSE) {
+    }
+#if !LIT_COMPOSITE_FINAL_ONLY
+    else if (view == LIT_VIEW_DIRECT_DIFFUSE) {
         color = dd;
     } else if (view == LIT_VIEW_INDIRECT_DIFFUSE) {
         color = id;
@@ -61,5 +70,6 @@ void main() {
             color = vec3(pow(d, 32.0));
         }
     }
+#endif
     outColor = vec4(color, 1.0);
 }

@@ -14,6 +14,9 @@ bool isDataView(View view) {
 PostPass::PostPass(const std::filesystem::path& shaderRoot)
     : composite_(shaderRoot, "composite",
                  {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "composite.frag.glsl"}}),
+      finalComposite_(shaderRoot, "composite (final view)",
+                      {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "composite.frag.glsl"}},
+                      "#define LIT_COMPOSITE_FINAL_ONLY 1\n"),
       tonemap_(shaderRoot, "tonemap",
                {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "tonemap.frag.glsl"}}),
       plainSampler_("debug view, no comparison") {
@@ -46,11 +49,12 @@ void PostPass::bindOutputTarget() const {
 void PostPass::composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer) {
     bindHdrTarget();
     glDisable(GL_DEPTH_TEST);
-    composite_.use();
-    glProgramUniform4i(composite_.id(), composite_.location("uTerms"), settings.directDiffuse,
+    const gl::Program& program = settings.view == View::Final ? finalComposite_ : composite_;
+    program.use();
+    glProgramUniform4i(program.id(), program.location("uTerms"), settings.directDiffuse,
                        settings.gi && settings.indirectDiffuse, settings.directSpecular,
                        settings.gi && settings.indirectSpecular);
-    composite_.set("uShadowLayer", shadowLayer);
+    if (&program == &composite_) composite_.set("uShadowLayer", shadowLayer);
     shadowMaps.bind(LIT_TEX_DEBUG_INPUT);
     plainSampler_.bind(LIT_TEX_DEBUG_INPUT);
     triangle_.draw();

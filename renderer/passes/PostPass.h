@@ -28,10 +28,12 @@ public:
 
     const gl::Texture& hdr() const { return targets_->hdr; }
     const gl::Texture& output() const { return targets_->output; }
-    std::vector<gl::Program*> programs() override { return {&composite_, &tonemap_}; }
+    std::vector<gl::Program*> programs() override { return {&composite_, &finalComposite_, &tonemap_}; }
 
 private:
-    gl::Program composite_, tonemap_;
+    // composite.frag.glsl for every view, and for the final view alone (LIT_COMPOSITE_FINAL_ONLY:
+    // without the other views' branches, which llvmpipe pays for though no pixel takes them).
+    gl::Program composite_, finalComposite_, tonemap_;
     FullscreenTriangle triangle_;
     gl::Sampler plainSampler_;
     struct Targets {
