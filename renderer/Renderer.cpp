@@ -366,7 +366,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         const bool keepLastUpdate = onlyLightChanged && bounces > 1 && ConeFeatures::of(settings).voxelRays > 0;
         {
             Profiler::Scope scope(profiler, "inject");
-            inject.execute(voxels, occupiedListComplete, !keepLastUpdate, bounces > 1);
+            inject.execute(voxels, occupiedListComplete, !keepLastUpdate, bounces > 1, ShadowKinds::of(lights));
         }
         if (!keepLastUpdate) {
             Profiler::Scope scope(profiler, "mipmap");
@@ -703,7 +703,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
         r.shadow.bindMaps();
         {
             Profiler::Scope scope(r.profiler, "lighting");
-            r.direct.execute(r.terms, settings);
+            r.direct.execute(r.terms, settings, ShadowKinds::of(r.lights));
         }
         if (giWanted && ConeTracePass::reducedPath(settings)) {
             const ConeTracePass::Work work = ConeTracePass::workFor(settings);

@@ -20,25 +20,16 @@ std::string ConeFeatures::defines() const {
 
 ConeProgram::ConeProgram(std::filesystem::path root, std::string label, std::vector<gl::ShaderStageSource> stages,
                          std::string defines, ConeFeatures initial)
-    : root_(std::move(root)), label_(std::move(label)), stages_(std::move(stages)), defines_(std::move(defines)) {
+    : variants_(std::move(root), std::move(label), std::move(stages), std::move(defines)) {
     get(initial);
 }
 
 const gl::Program& ConeProgram::get(ConeFeatures features) {
-    gl::Program& program = variants_[static_cast<std::size_t>(features.index())];
-    if (!program) {
-        std::string label = label_;
-        if (features.anisotropic) label += " (anisotropic)";
-        if (features.footprint) label += " (footprint)";
-        if (features.voxelRays > 0) label += " (voxel rays)";
-        program = gl::Program(root_, label, stages_, defines_ + features.defines());
-    }
-    return program;
-}
-
-void ConeProgram::appendBuilt(std::vector<gl::Program*>& out) {
-    for (gl::Program& program : variants_)
-        if (program) out.push_back(&program);
+    std::string suffix;
+    if (features.anisotropic) suffix += " (anisotropic)";
+    if (features.footprint) suffix += " (footprint)";
+    if (features.voxelRays > 0) suffix += " (voxel rays)";
+    return variants_.get(static_cast<std::size_t>(features.index()), features.defines(), suffix);
 }
 
 }  // namespace lit

@@ -6,9 +6,9 @@
 // made the cone trace 3-4× slower with every feature off (docs/GI.md, "Cost"). Each variant is
 // built on first use, so settings that stay at their defaults compile one program.
 
+#include "gl/ProgramVariants.h"
 #include "gl/Shader.h"
 
-#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -47,16 +47,12 @@ public:
     // The variant for `features`, built now if it was not yet (throws GlError if that fails).
     const gl::Program& get(ConeFeatures features);
     // True for a default-constructed one (no program description).
-    bool empty() const { return stages_.empty(); }
+    bool empty() const { return variants_.empty(); }
     // The variants built so far (for hot reload).
-    void appendBuilt(std::vector<gl::Program*>& out);
+    void appendBuilt(std::vector<gl::Program*>& out) { variants_.appendBuilt(out); }
 
 private:
-    std::filesystem::path root_;
-    std::string label_;
-    std::vector<gl::ShaderStageSource> stages_;
-    std::string defines_;
-    std::array<gl::Program, 16> variants_;  // by ConeFeatures::index()
+    gl::ProgramVariants<16> variants_;  // by ConeFeatures::index()
 };
 
 }  // namespace lit

@@ -68,10 +68,14 @@ void dispatchListRange(const VoxelVolume& volume, const gl::Program& program, bo
 }  // namespace
 
 InjectPass::InjectPass(const std::filesystem::path& shaderRoot)
-    : program_(shaderRoot, "inject", {{GL_COMPUTE_SHADER, "inject.comp.glsl"}}), shaderRoot_(shaderRoot) {}
+    : injectPrograms_(shaderRoot, "inject", {{GL_COMPUTE_SHADER, "inject.comp.glsl"}}), shaderRoot_(shaderRoot) {
+    const ShadowKinds any;
+    injectPrograms_.get(any.index(), any.defines(), any.label());  // a broken shader fails at start-up
+}
 
 std::vector<gl::Program*> InjectPass::programs() {
-    std::vector<gl::Program*> programs{&program_};
+    std::vector<gl::Program*> programs;
+    injectPrograms_.appendBuilt(programs);
     bounce8_.appendBuilt(programs);
     bounce16f_.appendBuilt(programs);
     irradiance8_.appendBuilt(programs);
@@ -248,10 +252,12 @@ void InjectPass::bindIrradiance() const {
     irradiance_.bind(LIT_TEX_VOXEL_IRRADIANCE);
 }
 
-void InjectPass::execute(const VoxelVolume& volume, bool fromList, bool writeLevel0, bool writeDirect) {
+void InjectPass::execute(const VoxelVolume& volume, bool fromList, bool writeLevel0, bool writeDirect,
+                         ShadowKinds shadows) {
     const int n = volume.resolution();
     if (n <= 0) return;
-    program_.use();
+    const gl::Program& program = injectPrograms_.get(shadows.index(), shadows.defines(), shadows.label());
+    program.use();
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
@@ -261,12 +267,12 @@ void InjectPass::execute(const VoxelVolume& volume, bool fromList, bool writeLev
     // The bounces' copy of the direct light (inject.comp.glsl), written as level 0 is.
     writeDirect = writeDirect && volume.direct();
     writeLevel0 = writeLevel0 || !writeDirect;
-    glProgramUniform1i(program_.id(), program_.location("uWriteDirect"), writeDirect ? 1 : 0);
-    glProgramUniform1i(program_.id(), program_.location("uWriteLevel0"), writeLevel0 ? 1 : 0);
+    glProgramUniform1i(program.id(), program.location("uWriteDirect"), writeDirect ? 1 : 0);
+    glProgramUniform1i(program.id(), program.location("uWriteLevel0"), writeLevel0 ? 1 : 0);
     if (writeDirect)
         glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                            volume.radianceFormat());
-    dispatchOverVoxels(volume, program_, fromList);
+    dispatchOverVoxels(volume, program, fromList);
     // The mipmap pass reads level 0 as an image; cone tracing and debug views sample it.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }

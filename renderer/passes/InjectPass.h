@@ -3,7 +3,9 @@
 // a Lambertian surface under the scene's direct light (with shadows) plus its emission goes into
 // level 0 of the radiance volume; empty voxels get 0 (opacity 0). See shaders/inject.comp.glsl.
 
+#include "gl/ProgramVariants.h"
 #include "passes/ConeProgram.h"
+#include "passes/LightSetup.h"
 #include "passes/Pass.h"
 
 #include <glm/glm.hpp>
@@ -38,7 +40,8 @@ public:
     // the same radiance goes to the direct volume too. `writeLevel0` false with it: only the
     // direct volume is written and level 0 keeps what it holds (the last update's light, while a
     // light edit's bounces run).
-    void execute(const VoxelVolume& volume, bool fromList = true, bool writeLevel0 = true, bool writeDirect = false);
+    void execute(const VoxelVolume& volume, bool fromList = true, bool writeLevel0 = true, bool writeDirect = false,
+                 ShadowKinds shadows = {});
 
     // Light bounces: after execute() and a full mip build (MipmapPass::execute), each bounce makes
     // level 0 direct radiance + albedo × the voxel's traced indirect diffuse (shaders/bounce.comp.glsl),
@@ -119,7 +122,7 @@ private:
     // Sets uRayHits (and binds the buffer) for a voxel-ray program; nothing for cones.
     void bindRayHits(const gl::Program& program, ConeFeatures features, RayHits hits) const;
     gl::Buffer rayHits_;  // ensureRayHits
-    gl::Program program_;
+    gl::ProgramVariants<ShadowKinds::kVariants> injectPrograms_;  // inject.comp.glsl by ShadowKinds::index()
     // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce (most frames have one).
     ConeProgram bounce8_, bounce16f_;
     gl::Program copy8_, copy16f_;  // bounce_copy.comp.glsl, built by the first endBounce over the list

@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
+#include <string>
 #include <vector>
 
 namespace lit {
@@ -30,6 +32,25 @@ struct LightSetup {
     std::vector<gpu::GpuLight> lights;
     std::vector<ShadowView> shadows2d;    // directional + spot
     std::vector<ShadowView> shadowsCube;  // point
+};
+
+// The kinds of shadow map a light table uses. The programs that light from it (direct lighting,
+// injection) compile out the lookups of a kind no light has (LIT_SHADOWS_CUBE, LIT_SHADOWS_2D in
+// lights.glsl; gl::ProgramVariants): llvmpipe ran the point lights' four cube lookups for every
+// pixel of a scene lit by a spot light alone, a third of its lighting pass (docs/PERFORMANCE.md,
+// sixteenth session). The default has both, right for any table.
+struct ShadowKinds {
+    bool cube = true;  // a point light with a cube shadow map
+    bool flat = true;  // a directional or spot light with a 2D one
+
+    static ShadowKinds of(const LightSetup& setup) { return {!setup.shadowsCube.empty(), !setup.shadows2d.empty()}; }
+    static constexpr std::size_t kVariants = 4;
+    std::size_t index() const { return (cube ? 1u : 0u) + (flat ? 2u : 0u); }
+    std::string defines() const {
+        return std::string("#define LIT_SHADOWS_CUBE ") + (cube ? "1" : "0") + "\n#define LIT_SHADOWS_2D " +
+               (flat ? "1" : "0") + "\n";
+    }
+    std::string label() const { return cube && flat ? "" : (cube ? " (cube shadows)" : (flat ? " (2D shadows)" : " (no shadows)")); }
 };
 
 // Spot cone factors of the KHR_lights_punctual spec ("Inner and Outer Cone Angles"):

@@ -58,12 +58,25 @@ LightSample sampleLight(GpuLight light, vec3 position) {
 // 16/255 (docs/PERFORMANCE.md).
 const float kPcfTapOffset = 0.81649658;  // √(2/3)
 
+// Whether some light of the table has a cube (point) or a 2D (directional, spot) shadow map
+// (ShadowKinds in LightSetup.h picks the program): the lookups of a kind no light has are compiled
+// out, since llvmpipe runs a branch no lane takes with every lane masked off (the cube lookups cost
+// a spot-lit full-frame Cornell box's lighting pass 20 of its 65 ms at 1280×720). Both 1 by
+// default, which is right for any table.
+#ifndef LIT_SHADOWS_CUBE
+#define LIT_SHADOWS_CUBE 1
+#endif
+#ifndef LIT_SHADOWS_2D
+#define LIT_SHADOWS_2D 1
+#endif
+
 // Fraction of the light reaching `position` (1 = lit), with PCF of four hardware 2×2
 // comparisons (above). `normal` offsets the lookup to avoid acne on grazing surfaces.
 float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadius, float normalOffsetTexels) {
     float index = light.spotShadow.z;
     if (index < 0.0) return 1.0;
     int type = int(light.directionType.w);
+#if LIT_SHADOWS_CUBE
     if (type == LIT_LIGHT_POINT) {
         vec3 fromLight = position - light.positionRange.xyz;
         float dist = length(fromLight);
@@ -86,6 +99,8 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadi
                     texture(shadowMapsCube, vec4(v + d2, index), depth) + texture(shadowMapsCube, vec4(v - d2, index), depth);
         return 0.25 * sum;
     }
+#endif
+#if LIT_SHADOWS_2D
     vec2 size = vec2(textureSize(shadowMaps2d, 0).xy);
     // Normal offset scaled by the world size of a texel at this receiver.
     vec4 clip0 = light.shadowViewProjection * vec4(position, 1.0);
@@ -110,4 +125,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadi
     float sum = texture(shadowMaps2d, vec4(uvz.xy + d1, index, depth)) + texture(shadowMaps2d, vec4(uvz.xy - d1, index, depth)) +
                 texture(shadowMaps2d, vec4(uvz.xy + d2, index, depth)) + texture(shadowMaps2d, vec4(uvz.xy - d2, index, depth));
     return 0.25 * sum;
+#else
+    return 1.0;  // no light has a 2D shadow map, so this light has none (index < 0 above)
+#endif
 }

@@ -74,6 +74,54 @@ INSTANTIATE_TEST_SUITE_P(AllTypes, LightTypes,
                                            LightCase{"point", LightType::Point}, LightCase{"spot", LightType::Spot}),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// The lighting programs compile out the shadow lookups of a kind no light has (ShadowKinds,
+// lights.glsl): a scene with a spot and a point light, each casting a shadow, renders as the sum of
+// the two lights alone (each of which runs a program with one kind of lookup), shadows included.
+TEST_F(GlFixture, SpotAndPointShadowsTogetherAreTheSumOfEachAlone) {
+    const auto makeScene = [](bool spot, bool point) {
+        Scene scene;
+        const int white = addMaterial(scene, glm::vec3(0.8f), 0.9f, 0.0f, "white");
+        addMeshNode(scene, makePlaneMesh("floor", 4.0f, white, 4), glm::vec3(0.0f));
+        addMeshNode(scene, makeBoxMesh("left occluder", glm::vec3(0.5f), white), glm::vec3(-0.8f, 1.0f, 0.0f));
+        addMeshNode(scene, makeBoxMesh("right occluder", glm::vec3(0.5f), white), glm::vec3(0.8f, 1.0f, 0.0f));
+        Light light;
+        light.intensity = 27.0f;
+        light.outerConeAngle = 0.9f;
+        light.innerConeAngle = 0.7f;
+        light.type = LightType::Spot;
+        if (spot) addLightNode(scene, light, glm::vec3(-0.8f, 3.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+        light.type = LightType::Point;
+        if (point) addLightNode(scene, light, glm::vec3(0.8f, 3.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+        Camera camera;
+        camera.yfov = 0.9f;
+        addCameraNode(scene, camera, glm::vec3(0.0f, 4.0f, 3.0f), glm::vec3(0.0f, 0.0f, 0.0f));
+        return scene;
+    };
+    const RenderSettings settings = smallSettings();
+    const Scene both = makeScene(true, true);
+    const HdrImage together = render(both, settings);
+    const HdrImage spotAlone = render(makeScene(true, false), settings);
+    const HdrImage pointAlone = render(makeScene(false, true), settings);
+    // Per value: the terms are RGBA16F (2^-11 relative), the HDR image their 32-bit sum.
+    double worst = 0.0;
+    for (std::size_t i = 0; i < together.rgb.size(); ++i) {
+        const double error = std::abs(together.rgb[i] - spotAlone.rgb[i] - pointAlone.rgb[i]);
+        worst = std::max(worst, error / (std::abs(together.rgb[i]) + 1e-3));
+    }
+    EXPECT_LT(worst, 2e-3);
+    // Each occluder's shadow is there: below the left box the spot is blocked, below the right one the point light.
+    const float belowLeft = luminance(radianceAt(both, settings, together, {-0.8f, 0.0f, 0.05f}, 1));
+    const float belowRight = luminance(radianceAt(both, settings, together, {0.8f, 0.0f, 0.05f}, 1));
+    const float spotBelowLeft = luminance(radianceAt(both, settings, spotAlone, {-0.8f, 0.0f, 0.05f}, 1));
+    const float pointBelowRight = luminance(radianceAt(both, settings, pointAlone, {0.8f, 0.0f, 0.05f}, 1));
+    const float spotLit = luminance(radianceAt(both, settings, spotAlone, {-0.8f, 0.0f, 1.2f}, 1));
+    const float pointLit = luminance(radianceAt(both, settings, pointAlone, {0.8f, 0.0f, 1.2f}, 1));
+    EXPECT_LT(spotBelowLeft, 0.1f * spotLit);
+    EXPECT_LT(pointBelowRight, 0.1f * pointLit);
+    EXPECT_GT(belowLeft, 0.0f);
+    EXPECT_GT(belowRight, 0.0f);
+}
+
 TEST_F(GlFixture, SpotFalloffMatchesTheSpec) {
     // A spot straight down over a floor: radiance at increasing angles follows
     // saturate(cosθ·scale + offset)² · cosθ / d² (KHR_lights_punctual).
