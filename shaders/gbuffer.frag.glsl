@@ -26,6 +26,7 @@ void main() {
     vec3 n = normalize(fs.worldNormal);
     // Double-sided materials (and back faces seen through open geometry) face the viewer.
     if (!gl_FrontFacing) n = -n;
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_NORMAL)
     if (m.textures.z != 0) {
         vec3 t = fs.worldTangent.xyz - n * dot(n, fs.worldTangent.xyz);
         if (dot(t, t) > 1e-10) {
@@ -36,18 +37,25 @@ void main() {
             n = normalize(mat3(t, b, n) * tn);
         }
     }
+#endif
 
     float metalness = m.params.x;
     float roughness = m.params.y;
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_METALLIC_ROUGHNESS)
     if (m.textures.y != 0) {
         vec4 mr = texture(metallicRoughnessTexture, fs.uv);
         roughness *= mr.g;
         metalness *= mr.b;
     }
+#endif
     float occlusion = 1.0;
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_OCCLUSION)
     if (m.modes.x != 0) occlusion = 1.0 + m.params.w * (texture(occlusionTexture, fs.uv).r - 1.0);
+#endif
     vec3 emissive = m.emissive.rgb;
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_EMISSIVE)
     if (m.textures.w != 0) emissive *= texture(emissiveTexture, fs.uv).rgb;
+#endif
 
     outAlbedo = vec4(baseColor.rgb, occlusion);
     outNormal = vec4(n, 1.0);

@@ -4,13 +4,26 @@
 
 #include <shared.h>
 
+#include <string>
 #include <utility>
 
 namespace lit {
 
 GBufferPass::GBufferPass(const std::filesystem::path& shaderRoot)
-    : program_(shaderRoot, "gbuffer",
-               {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "gbuffer.frag.glsl"}}) {}
+    : programs_(shaderRoot, "gbuffer", {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "gbuffer.frag.glsl"}}) {
+    program(LIT_MATERIAL_TEXTURES_ALL);  // a broken shader fails at start-up
+}
+
+const gl::Program& GBufferPass::program(unsigned textureMask) {
+    return programs_.get(textureMask, "#define LIT_MATERIAL_TEXTURES " + std::to_string(textureMask) + "\n",
+                         " (textures " + std::to_string(textureMask) + ")");
+}
+
+std::vector<gl::Program*> GBufferPass::programs() {
+    std::vector<gl::Program*> built;
+    programs_.appendBuilt(built);
+    return built;
+}
 
 void GBufferPass::resize(int width, int height) {
     if (targets_.select(width, height) != TargetsBySize<Targets>::Selected::Empty) return;
@@ -50,13 +63,19 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
     glDisable(GL_CULL_FACE);  // back faces are shaded with flipped normals (see gbuffer.frag.glsl)
     // Linear values written to the sRGB albedo target are encoded by the hardware.
     glEnable(GL_FRAMEBUFFER_SRGB);
-    program_.use();
     gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
-    // Items are drawn one by one (as GpuScene::drawList does) to give each its node ID.
+    // Items are drawn one by one (as GpuScene::drawList does) to give each its node ID, each with
+    // the program for its material's textures.
     const std::vector<DrawItem>& items = gpuScene.items();
+    const gl::Program* bound = nullptr;
     const auto drawOne = [&](const DrawItem& item) {
-        glProgramUniform1ui(program_.id(), LIT_LOC_NODE_ID, static_cast<GLuint>(item.node + 1));
-        gpuScene.drawItem(scene, item, program_, GpuScene::Bind::Everything, counters);
+        const gl::Program& itemProgram = program(gpuScene.materialTextureMask(item));
+        if (&itemProgram != bound) {
+            itemProgram.use();
+            bound = &itemProgram;
+        }
+        glProgramUniform1ui(itemProgram.id(), LIT_LOC_NODE_ID, static_cast<GLuint>(item.node + 1));
+        gpuScene.drawItem(scene, item, itemProgram, GpuScene::Bind::Everything, counters);
     };
     gpuScene.bindGeometry();
     if (visibleItems) {

@@ -4,8 +4,11 @@
 // material (RGBA8: roughness, metalness), emissive (RGBA16F radiance), node ID (R32UI: index of
 // the scene node drawn there + 1, 0 = background; for picking and the selection outline), depth (32F).
 
+#include "gl/ProgramVariants.h"
 #include "passes/Pass.h"
 #include "passes/TargetsBySize.h"
+
+#include <shared.h>
 
 #include <cstdint>
 #include <vector>
@@ -33,10 +36,13 @@ public:
     const gl::Texture& normal() const { return targets_->normal; }
     const gl::Texture& material() const { return targets_->material; }
     const gl::Texture& nodeId() const { return targets_->nodeId; }
-    std::vector<gl::Program*> programs() override { return {&program_}; }
+    std::vector<gl::Program*> programs() override;
 
 private:
-    gl::Program program_;
+    // gbuffer.frag.glsl per combination of material textures the draws use (LIT_MATERIAL_TEXTURES,
+    // material.glsl), indexed by GpuScene::materialTextureMask.
+    gl::ProgramVariants<LIT_MATERIAL_TEXTURES_ALL + 1> programs_;
+    const gl::Program& program(unsigned textureMask);
     struct Targets {
         gl::Texture albedo, normal, material, emissive, nodeId, depth;
         gl::Framebuffer framebuffer;

@@ -204,15 +204,28 @@ void GpuScene::drawList(const Scene& scene, const gl::Program& program, Bind bin
     }
 }
 
+int GpuScene::materialRow(const DrawItem& item) const {
+    return (item.material >= 0 && static_cast<std::size_t>(item.material) + 1 < materialTextures_.size())
+               ? item.material
+               : static_cast<int>(materialTextures_.size()) - 1;
+}
+
+unsigned GpuScene::materialTextureMask(const DrawItem& item) const {
+    if (materialTextures_.empty()) return 0;
+    const MaterialTextures& t = materialTextures_[static_cast<std::size_t>(materialRow(item))];
+    return (t.baseColor ? LIT_MATERIAL_TEXTURE_BASE_COLOR : 0u) |
+           (t.metallicRoughness ? LIT_MATERIAL_TEXTURE_METALLIC_ROUGHNESS : 0u) |
+           (t.normal ? LIT_MATERIAL_TEXTURE_NORMAL : 0u) | (t.emissive ? LIT_MATERIAL_TEXTURE_EMISSIVE : 0u) |
+           (t.occlusion ? LIT_MATERIAL_TEXTURE_OCCLUSION : 0u);
+}
+
 void GpuScene::drawItem(const Scene& scene, const DrawItem& item, const gl::Program& program, Bind bind,
                         DrawCounters& counters) const {
     const glm::mat4& model = scene.nodes[static_cast<std::size_t>(item.node)].world;
     const glm::mat4 normalMatrix = glm::transpose(glm::inverse(model));
     glProgramUniformMatrix4fv(program.id(), LIT_LOC_MODEL, 1, GL_FALSE, glm::value_ptr(model));
     glProgramUniformMatrix4fv(program.id(), LIT_LOC_NORMAL_MATRIX, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-    const int material = (item.material >= 0 && static_cast<std::size_t>(item.material) + 1 < materialTextures_.size())
-                             ? item.material
-                             : static_cast<int>(materialTextures_.size()) - 1;
+    const int material = materialRow(item);
     glProgramUniform1i(program.id(), LIT_LOC_MATERIAL, material);
     bindMaterialTextures(material, bind);
     glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(item.indexCount), GL_UNSIGNED_INT,

@@ -74,6 +74,10 @@ public:
     bool empty() const { return items_.empty(); }
     const gl::Buffer& materials() const { return materials_; }
 
+    // The textures `item`'s material samples, as LIT_MATERIAL_TEXTURES bits (material.glsl): the
+    // ones that loaded, which the material table's flags also say.
+    unsigned materialTextureMask(const DrawItem& item) const;
+
     // Binds the vertex array (call once before a batch of draws).
     void bindGeometry() const { vertexArray_.bind(); }
     // Issues one draw with per-draw uniforms and textures.
@@ -82,6 +86,8 @@ public:
 
 private:
     void bindMaterialTextures(int material, Bind bind) const;
+    // The material table's row `item` draws with (the default material, last, for none or a bad index).
+    int materialRow(const DrawItem& item) const;
 
     gl::Buffer vertices_;
     gl::Buffer indices_;

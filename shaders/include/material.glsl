@@ -7,6 +7,17 @@ layout(std430, binding = LIT_SSBO_MATERIALS) readonly buffer MaterialBlock {
 
 layout(location = LIT_LOC_MATERIAL) uniform int uMaterialIndex;
 
+// The textures this program may sample (LIT_MATERIAL_TEXTURE_* bits, shared.h); the material
+// table's flags still say whether a material has each. The G-buffer pass builds a program per
+// combination its draws use (GBufferPass), so a texture no material of a draw has is not in its
+// program: llvmpipe runs a branch no lane takes with every lane masked off, and the five texture
+// branches cost the untextured Cornell box's G-buffer 13 of its 34 ms at 1280×720
+// (docs/PERFORMANCE.md, sixteenth session). Other passes keep them all.
+#ifndef LIT_MATERIAL_TEXTURES
+#define LIT_MATERIAL_TEXTURES LIT_MATERIAL_TEXTURES_ALL
+#endif
+#define LIT_HAS_MATERIAL_TEXTURE(bit) ((LIT_MATERIAL_TEXTURES & (bit)) != 0)
+
 layout(binding = LIT_TEX_BASE_COLOR) uniform sampler2D baseColorTexture;
 layout(binding = LIT_TEX_METALLIC_ROUGHNESS) uniform sampler2D metallicRoughnessTexture;
 layout(binding = LIT_TEX_NORMAL) uniform sampler2D normalTexture;
@@ -16,7 +27,9 @@ layout(binding = LIT_TEX_OCCLUSION) uniform sampler2D occlusionTexture;
 // Base colour × texture (linear; sRGB textures are decoded by the sampler).
 vec4 materialBaseColor(GpuMaterial m, vec2 uv) {
     vec4 c = m.baseColorFactor;
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_BASE_COLOR)
     if (m.textures.x != 0) c *= texture(baseColorTexture, uv);
+#endif
     return c;
 }
 

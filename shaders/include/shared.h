@@ -205,6 +205,15 @@ using mat4 = glm::mat4;
 #define LIT_ALPHA_MASK 1
 #define LIT_ALPHA_BLEND 2
 
+// The textures a material samples (GpuScene::materialTextureMask), as bits of LIT_MATERIAL_TEXTURES
+// (material.glsl): the G-buffer pass compiles a program per combination in use.
+#define LIT_MATERIAL_TEXTURE_BASE_COLOR 1
+#define LIT_MATERIAL_TEXTURE_METALLIC_ROUGHNESS 2
+#define LIT_MATERIAL_TEXTURE_NORMAL 4
+#define LIT_MATERIAL_TEXTURE_EMISSIVE 8
+#define LIT_MATERIAL_TEXTURE_OCCLUSION 16
+#define LIT_MATERIAL_TEXTURES_ALL 31
+
 // ---- Structs ------------------------------------------------------------------------------
 // Per-frame camera and output parameters. std140, binding LIT_UBO_FRAME.
 struct FrameUniforms {
