@@ -10,7 +10,8 @@
 namespace lit {
 
 GBufferPass::GBufferPass(const std::filesystem::path& shaderRoot)
-    : programs_(shaderRoot, "gbuffer", {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "gbuffer.frag.glsl"}}) {
+    : programs_(shaderRoot, "gbuffer",
+                {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "gbuffer.frag.glsl"}}) {
     program(LIT_MATERIAL_TEXTURES_ALL);  // a broken shader fails at start-up
 }
 

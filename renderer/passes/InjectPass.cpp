@@ -231,7 +231,8 @@ void InjectPass::filterIrradiance(const VoxelVolume& volume, bool fromList, std:
     // One program for both radiance formats: it reads the traced volume through a sampler and
     // writes the gather texels, whose format does not follow the radiance volume's.
     if (!filter_)
-        filter_ = gl::Program(shaderRoot_, "voxel irradiance filter", {{GL_COMPUTE_SHADER, "voxel_irradiance_filter.comp.glsl"}});
+        filter_ = gl::Program(shaderRoot_, "voxel irradiance filter",
+                              {{GL_COMPUTE_SHADER, "voxel_irradiance_filter.comp.glsl"}});
     const gl::Program& filter = filter_;
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     filter.use();

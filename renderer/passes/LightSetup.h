@@ -50,7 +50,10 @@ struct ShadowKinds {
         return std::string("#define LIT_SHADOWS_CUBE ") + (cube ? "1" : "0") + "\n#define LIT_SHADOWS_2D " +
                (flat ? "1" : "0") + "\n";
     }
-    std::string label() const { return cube && flat ? "" : (cube ? " (cube shadows)" : (flat ? " (2D shadows)" : " (no shadows)")); }
+    std::string label() const {
+        if (cube && flat) return "";
+        return cube ? " (cube shadows)" : (flat ? " (2D shadows)" : " (no shadows)");
+    }
 };
 
 // Spot cone factors of the KHR_lights_punctual spec ("Inner and Outer Cone Angles"):
