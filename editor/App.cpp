@@ -486,6 +486,12 @@ int App::run() {
             const int light = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].light;
             if (light >= 0) frameSettings.shadowDebugLight = light;
         }
+        // The cached mode's refinement (more cone sets per voxel after an update) improves light
+        // that is already right and costs the same at any render scale: while the camera moves or a
+        // value is dragged it waits, so the frame's time goes to the frame rate (the Cornell box at
+        // 1280×720 moved at 4-5 FPS while it ran, 11-12 FPS without it: docs/PERFORMANCE.md,
+        // sixteenth session), and it goes on when the view is still.
+        if (interacting_) frameSettings.voxelIrradianceRefineVoxelsPerFrame = 0;
         renderer_->render(doc_.scene, view, frameSettings);
         referenceViewer_.update(doc_.scene, view, frameSettings, *renderer_);
         takeScreenshots(/*withUi=*/false, framebuffer);
@@ -554,6 +560,7 @@ float App::renderScaleFor(double frameSeconds, const glm::mat4& view) {
     // Scripts (unless "interactive on") and screenshots render what they ask for, at the chosen scale.
     const bool interacting = !(scriptMode() && !scriptInteractive_) && !options_.screenshot &&
                              (moving || ImGui::IsAnyItemActive());
+    interacting_ = interacting;
     frameScale_ = interactiveScale_.next(viewport_.renderScale, interacting, doc_.settings.interactiveFpsTarget, frameSeconds);
     return frameScale_;
 }

@@ -260,6 +260,7 @@ private:
     float frameScale_ = 1.0f;           // the render scale of the last frame (for the overlay)
     glm::mat4 lastView_{0.0f};
     bool cameraMoved_ = false;          // this frame's view differs from the last one's
+    bool interacting_ = false;          // the camera moves or a value is dragged (renderScaleFor)
     bool scriptInteractive_ = false;    // script command "interactive on"
     // --frame-log: one row per rendered frame, written at exit.
     struct FrameLogRow {
