@@ -24,11 +24,13 @@ public:
                     std::string defines = {})
         : root_(std::move(root)), label_(std::move(label)), stages_(std::move(stages)), defines_(std::move(defines)) {}
 
-    // Variant `index` (< N), built now from `variantDefines` if it was not yet (throws GlError if
-    // that fails); `labelSuffix` names it in logs and debuggers.
-    const Program& get(std::size_t index, const std::string& variantDefines, const std::string& labelSuffix) {
-        Program& program = variants_.at(index);
-        if (!program) program = Program(root_, label_ + labelSuffix, stages_, defines_ + variantDefines);
+    // The variant of `key` (index() < N), built now from key.defines() and named with key.label()
+    // if it was not yet (throws GlError if that fails). A built variant costs no string work, so
+    // this is cheap on every frame.
+    template <typename Key>
+    const Program& get(const Key& key) {
+        Program& program = variants_.at(static_cast<std::size_t>(key.index()));
+        if (!program) program = Program(root_, label_ + key.label(), stages_, defines_ + key.defines());
         return program;
     }
     // True for a default-constructed one (no program description).
@@ -37,6 +39,11 @@ public:
     void appendBuilt(std::vector<Program*>& out) {
         for (Program& program : variants_)
             if (program) out.push_back(&program);
+    }
+    std::vector<Program*> built() {
+        std::vector<Program*> out;
+        appendBuilt(out);
+        return out;
     }
 
 private:

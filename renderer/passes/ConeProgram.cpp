@@ -24,12 +24,14 @@ ConeProgram::ConeProgram(std::filesystem::path root, std::string label, std::vec
     get(initial);
 }
 
-const gl::Program& ConeProgram::get(ConeFeatures features) {
+std::string ConeFeatures::label() const {
     std::string suffix;
-    if (features.anisotropic) suffix += " (anisotropic)";
-    if (features.footprint) suffix += " (footprint)";
-    if (features.voxelRays > 0) suffix += " (voxel rays)";
-    return variants_.get(static_cast<std::size_t>(features.index()), features.defines(), suffix);
+    if (anisotropic) suffix += " (anisotropic)";
+    if (footprint) suffix += " (footprint)";
+    if (voxelRays > 0) suffix += " (voxel rays)";
+    return suffix;
 }
+
+const gl::Program& ConeProgram::get(ConeFeatures features) { return variants_.get(features); }
 
 }  // namespace lit

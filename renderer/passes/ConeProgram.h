@@ -31,6 +31,7 @@ struct ConeFeatures {
 
     static ConeFeatures of(const RenderSettings& settings);
     std::string defines() const;
+    std::string label() const;  // " (anisotropic)" ..., for the program's name
     int index() const {
         return (anisotropic ? 1 : 0) + (footprint ? 2 : 0) + (voxelIrradiance ? 4 : 0) + (voxelRays > 0 ? 8 : 0);
     }

@@ -17,7 +17,7 @@ public:
     // Expects the G-buffer, shadow maps, frame UBO and light SSBO bound; `shadows`: the kinds of
     // shadow map the bound light table uses (ShadowKinds::of).
     void execute(const LightingTerms& terms, const RenderSettings& settings, ShadowKinds shadows = {});
-    std::vector<gl::Program*> programs() override;
+    std::vector<gl::Program*> programs() override { return programs_.built(); }
 
 private:
     gl::ProgramVariants<ShadowKinds::kVariants> programs_;  // by ShadowKinds::index()

@@ -4,7 +4,6 @@
 
 #include <shared.h>
 
-#include <string>
 #include <utility>
 
 namespace lit {
@@ -12,18 +11,7 @@ namespace lit {
 GBufferPass::GBufferPass(const std::filesystem::path& shaderRoot)
     : programs_(shaderRoot, "gbuffer",
                 {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "gbuffer.frag.glsl"}}) {
-    program(LIT_MATERIAL_TEXTURES_ALL);  // a broken shader fails at start-up
-}
-
-const gl::Program& GBufferPass::program(unsigned textureMask) {
-    return programs_.get(textureMask, "#define LIT_MATERIAL_TEXTURES " + std::to_string(textureMask) + "\n",
-                         " (textures " + std::to_string(textureMask) + ")");
-}
-
-std::vector<gl::Program*> GBufferPass::programs() {
-    std::vector<gl::Program*> built;
-    programs_.appendBuilt(built);
-    return built;
+    programs_.get(MaterialTextureKey{LIT_MATERIAL_TEXTURES_ALL});  // a broken shader fails at start-up
 }
 
 void GBufferPass::resize(int width, int height) {
@@ -70,7 +58,7 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
     const std::vector<DrawItem>& items = gpuScene.items();
     const gl::Program* bound = nullptr;
     const auto drawOne = [&](const DrawItem& item) {
-        const gl::Program& itemProgram = program(gpuScene.materialTextureMask(item));
+        const gl::Program& itemProgram = programs_.get(MaterialTextureKey{gpuScene.materialTextureMask(item)});
         if (&itemProgram != bound) {
             itemProgram.use();
             bound = &itemProgram;

@@ -11,6 +11,7 @@
 #include <shared.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace lit {
@@ -36,13 +37,18 @@ public:
     const gl::Texture& normal() const { return targets_->normal; }
     const gl::Texture& material() const { return targets_->material; }
     const gl::Texture& nodeId() const { return targets_->nodeId; }
-    std::vector<gl::Program*> programs() override;
+    std::vector<gl::Program*> programs() override { return programs_.built(); }
 
 private:
     // gbuffer.frag.glsl per combination of material textures the draws use (LIT_MATERIAL_TEXTURES,
     // material.glsl), indexed by GpuScene::materialTextureMask.
     gl::ProgramVariants<LIT_MATERIAL_TEXTURES_ALL + 1> programs_;
-    const gl::Program& program(unsigned textureMask);
+    struct MaterialTextureKey {  // a ProgramVariants key
+        unsigned mask;
+        unsigned index() const { return mask; }
+        std::string defines() const { return "#define LIT_MATERIAL_TEXTURES " + std::to_string(mask) + "\n"; }
+        std::string label() const { return " (textures " + std::to_string(mask) + ")"; }
+    };
     struct Targets {
         gl::Texture albedo, normal, material, emissive, nodeId, depth;
         gl::Framebuffer framebuffer;

@@ -69,13 +69,11 @@ void dispatchListRange(const VoxelVolume& volume, const gl::Program& program, bo
 
 InjectPass::InjectPass(const std::filesystem::path& shaderRoot)
     : injectPrograms_(shaderRoot, "inject", {{GL_COMPUTE_SHADER, "inject.comp.glsl"}}), shaderRoot_(shaderRoot) {
-    const ShadowKinds any;
-    injectPrograms_.get(any.index(), any.defines(), any.label());  // a broken shader fails at start-up
+    injectPrograms_.get(ShadowKinds{});  // a broken shader fails at start-up
 }
 
 std::vector<gl::Program*> InjectPass::programs() {
-    std::vector<gl::Program*> programs;
-    injectPrograms_.appendBuilt(programs);
+    std::vector<gl::Program*> programs = injectPrograms_.built();
     bounce8_.appendBuilt(programs);
     bounce16f_.appendBuilt(programs);
     irradiance8_.appendBuilt(programs);
@@ -168,11 +166,6 @@ void InjectPass::bindRayHits(const gl::Program& program, ConeFeatures features, 
     }
 }
 
-std::size_t InjectPass::irradianceBytes(int n, bool radianceRgba8) {
-    const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
-    return 2 * voxels * (radianceRgba8 ? 4 : 8) + voxels * kGatherTexelBytes;
-}
-
 void InjectPass::prepareIrradiance(const VoxelVolume& volume, bool clear) {
     const int n = volume.resolution();
     if (n <= 0) return;
@@ -257,7 +250,7 @@ void InjectPass::execute(const VoxelVolume& volume, bool fromList, bool writeLev
                          ShadowKinds shadows) {
     const int n = volume.resolution();
     if (n <= 0) return;
-    const gl::Program& program = injectPrograms_.get(shadows.index(), shadows.defines(), shadows.label());
+    const gl::Program& program = injectPrograms_.get(shadows);
     program.use();
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);

@@ -102,9 +102,6 @@ public:
     // Binds the gather texels (LIT_TEX_VOXEL_IRRADIANCE: each voxel's normal and both sides'
     // filtered irradiance, voxel.glsl's packGatherTexel) for the cone passes.
     void bindIrradiance() const;
-    // Bytes of the irradiance volumes of an N³ volume (memory budget, VoxelVolume.h).
-    static std::size_t irradianceBytes(int n, bool radianceRgba8);
-    static constexpr std::size_t kGatherTexelBytes = 16;  // RGBA32UI
 
     std::vector<gl::Program*> programs() override;
 

@@ -59,7 +59,6 @@ using mat4 = glm::mat4;
 // Voxel volumes (voxel cone tracing).
 #define LIT_TEX_VOXEL_RADIANCE 18
 #define LIT_TEX_VOXEL_ALBEDO 19
-#define LIT_TEX_VOXEL_NORMAL 20
 #define LIT_TEX_VOXEL_EMISSION 21
 // Cone tracing (ConeTracePass): the GGX lobe's directional albedo table, RG16F, x = n·v,
 // y = roughness, E = F0·r + g (cone.glsl, specularAlbedo).
