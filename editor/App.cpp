@@ -493,6 +493,7 @@ int App::run() {
         // sixteenth session), and it goes on when the view is still.
         if (interacting_) frameSettings.voxelIrradianceRefineVoxelsPerFrame = 0;
         renderer_->render(doc_.scene, view, frameSettings);
+        if (options_.frameLog) frameLog_.back().refinedVoxels = renderer_->stats().refinedVoxels;
         referenceViewer_.update(doc_.scene, view, frameSettings, *renderer_);
         takeScreenshots(/*withUi=*/false, framebuffer);
         presentViewport(framebuffer, target);
@@ -533,16 +534,16 @@ int App::run() {
 
 void App::writeFrameLog(double end) {
     std::ostringstream out;
-    out << "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved\n";
+    out << "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels\n";
     char line[160];
     for (std::size_t i = 0; i < frameLog_.size(); ++i) {
         const FrameLogRow& row = frameLog_[i];
         // A frame lasts until the next one begins (the loop's own frame time: update, render,
         // present); the last one until the editor ends.
         const double next = i + 1 < frameLog_.size() ? frameLog_[i + 1].start : end;
-        std::snprintf(line, sizeof line, "%zu,%.4f,%.2f,%d,%d,%.2f,%d\n", i, row.start - frameLog_.front().start,
+        std::snprintf(line, sizeof line, "%zu,%.4f,%.2f,%d,%d,%.2f,%d,%u\n", i, row.start - frameLog_.front().start,
                       (next - row.start) * 1000.0, row.renderSize.x, row.renderSize.y, row.renderScale,
-                      row.cameraMoved ? 1 : 0);
+                      row.cameraMoved ? 1 : 0, static_cast<unsigned>(row.refinedVoxels));
         out << line;
     }
     try {

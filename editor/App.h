@@ -268,6 +268,7 @@ private:
         float renderScale = 1.0f;
         glm::ivec2 renderSize{0};
         bool cameraMoved = false;
+        std::uint32_t refinedVoxels = 0;  // FrameStats::refinedVoxels of the frame
     };
     std::vector<FrameLogRow> frameLog_;
     void writeFrameLog(double end);

@@ -467,6 +467,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceRefineNext, count,
                                      irradianceRefineRound);
             tracedRanges.emplace_back(irradianceRefineNext, count);
+            stats.refinedVoxels += count;
             budget -= count;
             irradianceRefineNext += count;
             if (irradianceRefineNext >= occupiedCount) {
