@@ -930,10 +930,16 @@ void App::runScriptStep() {
     }
     if (scriptWaitForGi_ > 0) {
         // The frame just rendered tells how far the update is (renderer stats of the last frame).
-        if (renderer_ && renderer_->stats().giUpdateDone < 1.0f) {
+        const bool busy = renderer_ && (renderer_->stats().giUpdateDone < 1.0f ||
+                                        (scriptWaitForRefinement_ && renderer_->stats().giRefining));
+        if (busy) {
             if (--scriptWaitForGi_ == 0) {
-                failScript(script_[scriptNext_ - 1], "wait gi: the GI update did not finish in " +
-                                                         std::to_string(kScriptGiWaitFrames) + " frames");
+                failScript(script_[scriptNext_ - 1],
+                           scriptWaitForRefinement_
+                               ? "wait refined: the GI refinement did not finish in " +
+                                     std::to_string(kScriptRefineWaitFrames) + " frames"
+                               : "wait gi: the GI update did not finish in " + std::to_string(kScriptGiWaitFrames) +
+                                     " frames");
             }
             return;
         }
@@ -1106,8 +1112,9 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
         scriptInteractive_ = arg(0) == "on";
         return "";
     }
-    if (name == "wait" && arg(0) == "gi") {
-        scriptWaitForGi_ = kScriptGiWaitFrames;
+    if (name == "wait" && (arg(0) == "gi" || arg(0) == "refined")) {
+        scriptWaitForRefinement_ = arg(0) == "refined";
+        scriptWaitForGi_ = scriptWaitForRefinement_ ? kScriptRefineWaitFrames : kScriptGiWaitFrames;
         return "";
     }
     if (name == "wait") {

@@ -230,9 +230,12 @@ private:
     std::string scriptSource_;  // the script file, as error messages name it
     std::size_t scriptNext_ = 0;
     int scriptWaitFrames_ = 0;  // frames still to let pass before the next command
-    // wait gi: frames still allowed for the GI update to finish (0: not waiting).
+    // wait gi / wait refined: frames still allowed for the GI update (with "refined", and then its
+    // refinement rounds: ~180 frames at 128³ with the editor's budget) to finish (0: not waiting).
     static constexpr int kScriptGiWaitFrames = 2000;
+    static constexpr int kScriptRefineWaitFrames = 20000;
     int scriptWaitForGi_ = 0;
+    bool scriptWaitForRefinement_ = false;
 
     // A scene loading on a worker thread; its progress is written there and read by the UI.
     struct LoadStatus {

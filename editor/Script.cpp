@@ -134,9 +134,10 @@ std::string check(const ScriptCommand& c) {
         return a[0] == "on" || a[0] == "off" ? "" : "interactive: expected on or off, got '" + a[0] + "'";
     }
     if (name == "wait") {
-        if (auto e = count(1, 1, "a number of frames or gi"); !e.empty()) return e;
-        return a[0] == "gi" || isCount(a[0], 1) ? ""
-                                                : "wait: expected a whole number of frames (1 or more) or gi, got '" + a[0] + "'";
+        if (auto e = count(1, 1, "a number of frames, gi or refined"); !e.empty()) return e;
+        return a[0] == "gi" || a[0] == "refined" || isCount(a[0], 1)
+                   ? ""
+                   : "wait: expected a whole number of frames (1 or more), gi or refined, got '" + a[0] + "'";
     }
     if (name == "time") {
         if (auto e = count(1, 1, "a time in seconds"); !e.empty()) return e;

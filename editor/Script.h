@@ -34,6 +34,8 @@
 //   wait gi                      let frames render until the GI update after the last edit is
 //                                complete (FrameStats::giUpdateDone; refinement rounds do not count),
 //                                at most 2000 frames
+//   wait refined                 the same, then until the cached GI mode's refinement rounds after it
+//                                are done too (FrameStats::giRefining), at most 20000 frames
 //   interactive on|off           the interactive render scale (RenderSettings::interactiveFpsTarget)
 //                                also in the script (off by default: scripts render at the
 //                                chosen scale, reproducibly)

@@ -525,6 +525,8 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
 
     stats.voxelized = voxelDirty;
     stats.injected = injectDirty;
+    stats.giRefining = settings.diffuseFromVoxelIrradiance && settings.voxelIrradianceRefineVoxelsPerFrame > 0 &&
+                       irradianceRefineRound < kConeSets && occupiedListComplete && occupiedCount > 0;
     stats.occupiedVoxels = occupiedCount;
     // Progress of the spread update: passes over the list (bounces 2..N, then the irradiance).
     const double listLength = std::max(occupiedCount, 1u);

@@ -45,6 +45,8 @@ struct FrameStats {
     // Voxels the refinement (voxelIrradianceRefineVoxelsPerFrame) traced this frame; 0 when it
     // waited (a budget of 0, e.g. the editor's while the camera moves) or had nothing left.
     std::uint32_t refinedVoxels = 0;
+    // Refinement rounds are still to run after the update (or after the one under way).
+    bool giRefining = false;
     // Frustum culling, over the views rendered this frame: the camera's G-buffer pass and the
     // shadow views when shadow maps were re-rendered (voxelization draws everything, uncounted).
     int drawsSubmitted = 0;     // scene draws those views issued

@@ -47,8 +47,10 @@ spp="${LIT_SCREENSHOT_SPP:-512}"
 
 # The editor. Keys of a camera path in front of the box, seen from further back and to the side
 # so the curve and its key frusta show; the tall box selected (outline, gizmo) in the inspector.
-# "wait gi" lets the cached mode's update finish (spread over frames: at 128³ about 6 frames for
-# the bounce and 6 for the irradiance) before the GI and the overlay are captured.
+# "wait refined" lets the cached mode's update finish (spread over frames: at 128³ about 6 frames
+# for the bounce and 6 for the irradiance) and then its refinement rounds (about 180 frames), so the
+# GI is captured converged and the overlay shows the steady frame, as a user sees them once the
+# light has settled.
 script="$tmpdir/script.txt"
 cat >"$script" <<SCRIPT
 camera 0.9 1.0 4.1 0 1 0
@@ -63,7 +65,7 @@ key add
 key select 1
 camera 2.6 2.4 6.8 0 1 1.5
 select tall_box
-wait gi
+wait refined
 wait 3
 screenshot $out/editor.png ui
 select -
@@ -97,7 +99,7 @@ setting giMode cached
 view final
 panel settings off
 panel camera off
-wait gi
+wait refined
 wait 3
 screenshot $out/editor_performance.png ui
 quit

@@ -4,7 +4,9 @@
 # and --frame-log: the frames whose camera moved render at a lowered scale (the target is set
 # to 60 FPS, which no frame here meets) and the cached GI mode's refinement waits in them
 # (refined_voxels 0), while the still frames before and after the motion refine and the ones
-# after it render at full scale again. Exit 77 (skipped) without xvfb-run.
+# after it render at full scale again; "wait refined" then lets the refinement finish: its rounds
+# trace every occupied voxel 15 times in all, and the frames after it none. Exit 77 (skipped)
+# without xvfb-run.
 set -u
 editor=$1
 scene=$2
@@ -30,16 +32,26 @@ rm -f "$log"
         echo "camera $x 1 0.95 $x 1 -1"
     done
     echo "wait 4"
+    # Then the refinement's end: every round over every voxel, nothing after it.
+    echo "wait refined"
+    echo "wait 2"
     echo "quit"
 } >"$out/interactive.txt"
 
-run_editor "$scene" --script "$out/interactive.txt" --size 640x360 --frame-log "$log"
+xvfb_editor "$scene" --script "$out/interactive.txt" --size 640x360 --frame-log "$log" >"$out/editor.txt" 2>&1
+status=$?
+cat "$out/editor.txt"
+[ "$status" -eq 0 ] || fail "lit-editor exited with status $status"
+# "inject 5.3 ms over 23393 occupied voxels": the refinement's rounds each trace all of them.
+occupied=$(sed -n 's/.* over \([0-9]*\) occupied voxels.*/\1/p' "$out/editor.txt" | tail -1)
+[ -n "$occupied" ] || fail "the editor did not log the occupied voxel count"
 [ -f "$log" ] || fail "the script ran but wrote no frame log"
 head -1 "$log" | grep -q ',camera_moved,refined_voxels$' || fail "unexpected frame log header: $(head -1 "$log")"
 cat "$log"
 
 # Columns: frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels
-awk -F, 'NR > 1 {
+awk -F, -v occupied="$occupied" -v rounds=15 'NR > 1 {
+    total += $8; lastTwo = prev + $8; prev = $8
     if ($7 == 1) {
         ++moved
         if ($8 != 0) { print "frame " $1 ": the camera moved and the refinement traced " $8 " voxels"; bad = 1 }
@@ -58,6 +70,8 @@ END {
     if (lowered == 0) { print "no moving frame rendered at a lowered scale"; exit 1 }
     if (refinedAfter == 0) { print "the refinement did not go on after the motion"; exit 1 }
     if (fullAfter == 0) { print "no full-scale frame after the motion"; exit 1 }
+    if (total != rounds * occupied) { print "the refinement traced " total " voxels in all, not " rounds " rounds of " occupied; exit 1 }
+    if (lastTwo != 0) { print "the frames after wait refined still refined (" lastTwo " voxels)"; exit 1 }
     if (bad) exit 1
     print "moving frames " moved " (lowered scale in " lowered "), refining still frames before " refinedBefore ", after " refinedAfter
 }' "$log" || fail "the refinement or the render scale did not follow the motion"
