@@ -214,6 +214,12 @@ struct Renderer::Impl {
     // round under way (1..kConeSets − 1; kConeSets: done) and its next list entry.
     int irradianceRefineRound = 0;
     std::uint32_t irradianceRefineNext = 0;
+    static constexpr int kConeSets = LIT_CONE_STRATA * LIT_CONE_STRATA;
+    // Refinement rounds are left to run with `settings`, after the update (or the one under way).
+    bool refinementLeft(const RenderSettings& settings) const {
+        return settings.diffuseFromVoxelIrradiance && settings.voxelIrradianceRefineVoxelsPerFrame > 0 &&
+               irradianceRefineRound < kConeSets && occupiedListComplete && occupiedCount > 0;
+    }
     // Bounces 2..N spread over frames as the irradiance update is (the cached mode with
     // voxelIrradianceVoxelsPerFrame > 0): the bounce under way (0: none; the irradiance update waits
     // for the last one) and its next list entry.
@@ -429,10 +435,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     // The voxel irradiance (diffuseFromVoxelIrradiance): all of the list in the edit's frame, or
     // voxelIrradianceVoxelsPerFrame entries per frame, wrapping round the list, until every entry
     // has been traced since the last edit. An overflowed list (whole-grid dispatch) is done at once.
-    constexpr int kConeSets = LIT_CONE_STRATA * LIT_CONE_STRATA;
-    const bool refine = settings.diffuseFromVoxelIrradiance && irradianceRemaining == 0 &&
-                        settings.voxelIrradianceRefineVoxelsPerFrame > 0 && irradianceRefineRound < kConeSets &&
-                        occupiedListComplete && occupiedCount > 0;
+    const bool refine = irradianceRemaining == 0 && refinementLeft(settings);
     // The list ranges traced this frame, and whether the frame completed an update or a refinement
     // round (or traced everything at once): then the filter runs over the whole list, else only over
     // the ranges traced (the filter over all occupied voxels costs ~150 ms a frame at 256³ on
@@ -525,8 +528,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
 
     stats.voxelized = voxelDirty;
     stats.injected = injectDirty;
-    stats.giRefining = settings.diffuseFromVoxelIrradiance && settings.voxelIrradianceRefineVoxelsPerFrame > 0 &&
-                       irradianceRefineRound < kConeSets && occupiedListComplete && occupiedCount > 0;
+    stats.giRefining = refinementLeft(settings);
     stats.occupiedVoxels = occupiedCount;
     // Progress of the spread update: passes over the list (bounces 2..N, then the irradiance).
     const double listLength = std::max(occupiedCount, 1u);

@@ -261,6 +261,8 @@ if fast_rounds:
             if p["name"] == name:
                 return p["gpuMs"]["mean"]
         return 0.0
+    def indirect(run):  # GPU ms of the indirect passes: (cone trace, resolve, fallback)
+        return tuple(pass_mean(run, p) for p in ("cone trace", "indirect resolve", "indirect fallback"))
     w("")
     w("## Fast GI (issue #12): full-frame Cornell box, 128³, same binary, runs interleaved")
     w("")
@@ -279,7 +281,7 @@ if fast_rounds:
             continue
         offMs = off["frameMs"]["mean"]
         frames = [r["frameMs"]["mean"] for r in on]
-        ind = [pass_mean(r, "cone trace") + pass_mean(r, "indirect resolve") + pass_mean(r, "indirect fallback") for r in on]
+        ind = [sum(indirect(r)) for r in on]
         w(f"| {rnd} | {offMs:.0f} | {' / '.join(f'{f:.0f}' for f in frames)} | {' / '.join(f'{f / offMs:.2f}×' for f in frames)} | "
           f"{' / '.join(f'{i:.0f}' for i in ind)} | {ind[0] / ind[1]:.2f}× / {ind[0] / ind[2]:.2f}× |")
     temporal_rounds = [(rnd, load_run(f"cornell-gi-off-{rnd}"), load_run(f"cornell-gi-s1-{rnd}"),
@@ -295,8 +297,8 @@ if fast_rounds:
         w("| Round | frame (ms) | GI on ÷ GI off | indirect (ms): trace + resolve + fallback | indirect speed-up vs scale 1 |")
         w("|---|---|---|---|---|")
         for rnd, off, s1, t in temporal_rounds:
-            tr, rs, fb = pass_mean(t, "cone trace"), pass_mean(t, "indirect resolve"), pass_mean(t, "indirect fallback")
-            full = sum(pass_mean(s1, p) for p in ("cone trace", "indirect resolve", "indirect fallback"))
+            tr, rs, fb = indirect(t)
+            full = sum(indirect(s1))
             w(f"| {rnd} | {t['frameMs']['mean']:.0f} | {t['frameMs']['mean'] / off['frameMs']['mean']:.2f}× | "
               f"{tr + rs + fb:.0f}: {tr:.0f} + {rs:.0f} + {fb:.0f} | {full / (tr + rs + fb):.2f}× |")
     cone_rounds = [(rnd, load_run(f"cornell-gi-fast-s1-{rnd}"), load_run(f"cornell-gi-s2-{rnd}"))
@@ -314,7 +316,7 @@ if fast_rounds:
         w("|---|---|---|---|---|---|---|")
         for rnd, f1, s2 in cone_rounds:
             cone1 = pass_mean(f1, "cone trace")
-            tr, rs, fb = pass_mean(s2, "cone trace"), pass_mean(s2, "indirect resolve"), pass_mean(s2, "indirect fallback")
+            tr, rs, fb = indirect(s2)
             w(f"| {rnd} | {cone1:.0f} | {f1['frameMs']['mean']:.0f} | {tr:.0f} | {cone1 / tr:.1f}× | "
               f"{tr + rs + fb:.0f}: {tr:.0f} + {rs:.0f} + {fb:.0f} | {cone1 / (tr + rs + fb):.1f}× |")
     flick = [(t, load_run(f"flicker-temporal-{t}")) for t in ("on", "off")]
