@@ -450,7 +450,7 @@ int App::run() {
         updateCamera(std::min(static_cast<float>(frameSeconds), kMaxCameraStep));
         updatePlayback(frameSeconds);
         handleViewportMouse(currentView());
-        const glm::ivec2 previousRenderSize{doc_.settings.width, doc_.settings.height};
+        const glm::ivec2 previousRenderSize{doc_.settings.output.width, doc_.settings.output.height};
         drawUi(previousRenderSize);
         // The 2D views fill the free area between the panels; the camera views the whole window
         // (the panels float over it).
@@ -463,15 +463,15 @@ int App::run() {
             target = glm::ivec4(glm::round(topLeft.x), glm::round(static_cast<float>(framebuffer.y) - topLeft.y - size.y),
                                 glm::max(glm::ivec2(glm::round(size)), glm::ivec2(1)));
         }
-        // Lowered while the camera moves or a value is dragged (RenderSettings::interactiveFpsTarget).
+        // Lowered while the camera moves or a value is dragged (ViewportSettings::interactiveFpsTarget).
         const float renderScale = renderScaleFor(frameSeconds, currentView().view);
         const glm::ivec2 renderSize =
             glm::max(glm::ivec2(glm::round(glm::vec2(target.z, target.w) * renderScale)), glm::ivec2(1));
         syncRendererStructure();
         if (options_.frameLog) frameLog_.push_back({now, renderScale, renderSize, cameraMoved_});
 
-        doc_.settings.width = renderSize.x;
-        doc_.settings.height = renderSize.y;
+        doc_.settings.output.width = renderSize.x;
+        doc_.settings.output.height = renderSize.y;
         const CameraView view = currentView();
         // A screenshot of the viewport alone (F12, "screenshot PATH noui") is a clean render:
         // no selection outline, gizmo, markers or path, only what a debug view itself draws.
@@ -481,18 +481,22 @@ int App::run() {
         updateOverlay(view, cleanViewport);
         // The shadow map view follows the selected light; the saved setting stays as it was.
         RenderSettings frameSettings = doc_.settings;
-        if (frameSettings.view == View::ShadowMap && doc_.selectedNode >= 0 &&
+        if (frameSettings.debug.view == View::ShadowMap && doc_.selectedNode >= 0 &&
             doc_.selectedNode < static_cast<int>(doc_.scene.nodes.size())) {
             const int light = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].light;
-            if (light >= 0) frameSettings.shadowDebugLight = light;
+            if (light >= 0) frameSettings.debug.shadowMapLight = light;
         }
         // The cached mode's refinement (more cone sets per voxel after an update) improves light
         // that is already right and costs the same at any render scale: while the camera moves or a
         // value is dragged it waits, so the frame's time goes to the frame rate (the Cornell box at
         // 1280×720 moved at 4-5 FPS while it ran, 11-12 FPS without it: docs/PERFORMANCE.md,
-        // sixteenth session), and it goes on when the view is still.
-        if (interacting_) frameSettings.voxelIrradianceRefineVoxelsPerFrame = 0;
-        renderer_->render(doc_.scene, view, frameSettings);
+        // "Editor"), and it goes on when the view is still.
+        GiBudget budget{viewport_.giUpdateVoxelsPerFrame > 0
+                            ? static_cast<std::uint32_t>(viewport_.giUpdateVoxelsPerFrame)
+                            : GiBudget::kAll,
+                        static_cast<std::uint32_t>(std::max(viewport_.giRefineVoxelsPerFrame, 0))};
+        if (interacting_) budget.refineVoxels = 0;
+        renderer_->render(doc_.scene, view, frameSettings, budget);
         if (options_.frameLog) frameLog_.back().refinedVoxels = renderer_->stats().refinedVoxels;
         referenceViewer_.update(doc_.scene, view, frameSettings, *renderer_);
         takeScreenshots(/*withUi=*/false, framebuffer);
@@ -562,7 +566,8 @@ float App::renderScaleFor(double frameSeconds, const glm::mat4& view) {
     const bool interacting = !(scriptMode() && !scriptInteractive_) && !options_.screenshot &&
                              (moving || ImGui::IsAnyItemActive());
     interacting_ = interacting;
-    frameScale_ = interactiveScale_.next(viewport_.renderScale, interacting, doc_.settings.interactiveFpsTarget, frameSeconds);
+    frameScale_ =
+        interactiveScale_.next(viewport_.renderScale, interacting, viewport_.interactiveFpsTarget, frameSeconds);
     return frameScale_;
 }
 
@@ -645,17 +650,19 @@ void App::logRefusal(const std::string& message) {
 std::string App::setView(const std::string& name) {
     viewport_.coneDirections = name == kConeDirectionsView;
     if (viewport_.coneDirections) {
-        doc_.settings.view = View::Final;
+        doc_.settings.debug.view = View::Final;
         return "";
     }
     coneSurface_.reset();
     const std::optional<View> view = parseView(name);
     if (!view) return "unknown view '" + name + "'";
-    doc_.settings.view = *view;
+    doc_.settings.debug.view = *view;
     return "";
 }
 
-bool App::flatView() const { return doc_.settings.view == View::ShadowMap || doc_.settings.view == View::VoxelSlice; }
+bool App::flatView() const {
+    return doc_.settings.debug.view == View::ShadowMap || doc_.settings.debug.view == View::VoxelSlice;
+}
 
 void App::addNodeInFront(NodeKind kind) {
     // Two metres (or a tenth of the scene) in front of the camera; lights and cameras look the
@@ -743,7 +750,7 @@ void App::drawViewportBar(float menuHeight) {
         }
         // The current view, so a data view is never mistaken for the final image.
         const std::string name = viewport_.coneDirections ? std::string(kConeDirectionsView)
-                                                          : std::string(toString(doc_.settings.view));
+                                                          : std::string(toString(doc_.settings.debug.view));
         const EditorView* view = findEditorView(name);
         ImGui::Text("View: %s (%s)", view ? std::string(view->label).c_str() : name.c_str(),
                     view ? std::string(view->shortcut).c_str() : "-");
@@ -758,13 +765,13 @@ void App::drawViewportBar(float menuHeight) {
 
 void App::drawUi(glm::ivec2 renderSize) {
     float menuHeight = 0.0f;
-    const MenuContext menuContext{recent_,
-                                  doc_.file.empty() ? std::filesystem::path("untitled.gltf") : doc_.file,
-                                  doc_.undoLabel(),
-                                  doc_.redoLabel(),
-                                  viewport_.coneDirections ? std::string(kConeDirectionsView)
-                                                           : std::string(toString(doc_.settings.view)),
-                                  !doc_.selection().empty()};
+    const MenuContext menuContext{
+        recent_,
+        doc_.file.empty() ? std::filesystem::path("untitled.gltf") : doc_.file,
+        doc_.undoLabel(),
+        doc_.redoLabel(),
+        viewport_.coneDirections ? std::string(kConeDirectionsView) : std::string(toString(doc_.settings.debug.view)),
+        !doc_.selection().empty()};
     const MenuRequests menu = mainMenu_.draw(visible_, menuContext, menuHeight);
 
     const ImVec2 display = ImGui::GetIO().DisplaySize;
@@ -873,8 +880,8 @@ void App::saveScreenshot(glm::ivec2 framebufferSize, const std::filesystem::path
 
 void App::saveViewportScreenshot(const std::filesystem::path& path) {
     // The renderer's own output at its render size: no UI, no stretching to the window.
-    const int width = doc_.settings.width;
-    const int height = doc_.settings.height;
+    const int width = doc_.settings.output.width;
+    const int height = doc_.settings.output.height;
     std::vector<std::uint8_t> rgba = renderer_->readOutputRgba8();
     if (rgba.size() != static_cast<std::size_t>(width) * height * 4)
         throw std::runtime_error("the renderer has no output to save yet");
@@ -1066,7 +1073,13 @@ std::string App::runScriptCommand(const ScriptCommand& command) {
     }
     if (name == "animation") return chooseCameraAnimation(doc_, arg(0));
     if (name == "set") return setProperty(doc_, arg(0), arg(1));
-    if (name == "setting") return applySetting(doc_.settings, arg(0), arg(1));
+    if (name == "setting") {
+        std::vector<std::string> deprecated;
+        std::optional<std::string> result = applyEditorSetting(viewport_, arg(0), arg(1), &deprecated);
+        if (!result) result = applySetting(doc_.settings, arg(0), arg(1), &deprecated);
+        for (const std::string& message : deprecated) log_.warning(message);
+        return *result;
+    }
     if (name == "view") return setView(arg(0));
     if (name == "panel") {
         bool* flag = panelFlag(visible_, arg(0));
@@ -1167,7 +1180,8 @@ void App::updatePlayback(double dtSeconds) {
 std::string App::pickAt(glm::vec2 windowPixel) {
     // Window pixels → the renderer's output, which is the window scaled by the render scale.
     const glm::vec2 display(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);
-    const glm::vec2 output(static_cast<float>(doc_.settings.width), static_cast<float>(doc_.settings.height));
+    const glm::vec2 output(static_cast<float>(doc_.settings.output.width),
+                           static_cast<float>(doc_.settings.output.height));
     if (display.x <= 0.0f || display.y <= 0.0f || windowPixel.x < 0.0f || windowPixel.y < 0.0f ||
         windowPixel.x >= display.x || windowPixel.y >= display.y)
         return "pick: (" + std::to_string(windowPixel.x) + ", " + std::to_string(windowPixel.y) +
@@ -1289,7 +1303,7 @@ void App::endGizmoDrag() {
 void App::updateOverlay(const CameraView& view, bool cleanViewport) {
     // The shadow map and the voxel slice are 2D images, not the camera's view: world-space
     // markers and outlines would land on them at random.
-    if (doc_.settings.view == View::ShadowMap || doc_.settings.view == View::VoxelSlice) {
+    if (doc_.settings.debug.view == View::ShadowMap || doc_.settings.debug.view == View::VoxelSlice) {
         renderer_->setOverlay({});
         return;
     }

@@ -27,13 +27,6 @@ bool sameHierarchy(const std::vector<Node>& a, const std::vector<Node>& b) {
 
 }  // namespace
 
-RenderSettings editorRenderSettings() {
-    RenderSettings settings;
-    settings.voxelIrradianceVoxelsPerFrame = 16384;
-    settings.voxelIrradianceRefineVoxelsPerFrame = 8192;
-    return settings;
-}
-
 std::vector<std::vector<int>> primitiveMaterialsOf(const Scene& scene) {
     std::vector<std::vector<int>> materials(scene.meshes.size());
     for (std::size_t m = 0; m < scene.meshes.size(); ++m)
@@ -299,8 +292,8 @@ bool Document::redo() {
 
 namespace {
 bool sameSettingsIgnoringSize(RenderSettings a, RenderSettings b) {
-    a.width = b.width;
-    a.height = b.height;
+    a.output.width = b.output.width;
+    a.output.height = b.output.height;
     return a == b;
 }
 }  // namespace

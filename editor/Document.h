@@ -57,14 +57,6 @@ enum class Change : std::uint8_t {
     CameraPath, // the path's keys or options
 };
 
-// The render settings of a document with no settings file: the renderer's defaults, except that
-// the cached GI mode's irradiance update after a light or geometry edit is spread over frames
-// (16 384 voxels a frame: ~0.35 s a frame at 128³ on llvmpipe, a few frames for the Cornell box)
-// so that dragging a light keeps the viewport moving, and then refined with the other cone sets
-// (8 192 voxels a frame) while the view is left alone; the renderer's own defaults (all voxels in
-// the edit's frame, no refinement) suit stills, which render one frame (docs/EDITOR.md).
-RenderSettings editorRenderSettings();
-
 class Document {
 public:
     Document() = default;
@@ -73,7 +65,7 @@ public:
 
     Scene scene;
     CameraPath cameraPath;
-    RenderSettings settings = editorRenderSettings();
+    RenderSettings settings;
     std::filesystem::path file;  // where Save writes; empty for an unsaved new document
 
     // ---- selection (not part of undo) ----------------------------------------------------
@@ -179,7 +171,7 @@ private:
     // What was last saved or loaded. Comparing the state itself (rather than counting steps)
     // makes an edit that is undone by hand, or undone back to the saved point, clean again.
     EditableState saved_;
-    RenderSettings savedSettings_ = editorRenderSettings();  // the settings saved in the sidecar, to tell when they change
+    RenderSettings savedSettings_;  // the settings saved in the sidecar, to tell when they change
     bool unsaved_ = false;  // markUnsaved()
     // Per material, the last albedo texture it had in this session (-1 = none), so that
     // "material.albedoTexture off" can be turned on again.

@@ -134,11 +134,14 @@ Document openDocument(const fs::path& file, Log& log, const std::function<void(c
         const std::optional<std::string> text = readTextFile(sidecar);
         try {
             if (!text) throw std::runtime_error("cannot read the file");
-            doc.settings = renderSettingsFromJson(*text);
+            std::vector<std::string> deprecated;
+            doc.settings = renderSettingsFromJson(*text, {}, &deprecated);
             log.info("render settings from " + sidecar.filename().string());
+            // An older sidecar loads; saving writes the new keys.
+            for (const std::string& message : deprecated) log.warning(sidecar.filename().string() + ": " + message);
         } catch (const std::exception& e) {
             log.warning(sidecar.string() + ": " + e.what() + "; using the default render settings");
-            doc.settings = editorRenderSettings();
+            doc.settings = RenderSettings{};
         }
     }
     doc.markSaved();  // the settings just read are the saved ones
@@ -290,7 +293,10 @@ Document Autosave::recover(Log& log) {
     Document doc = loadScene(autosaveFile(), recoverable_->documentFile, log);
     if (auto settings = marker.find("settings"); settings != marker.end()) {
         try {
-            doc.settings = renderSettingsFromJson(settings->dump());
+            std::vector<std::string> deprecated;
+            doc.settings = renderSettingsFromJson(settings->dump(), {}, &deprecated);
+            for (const std::string& message : deprecated)
+                log.warning(markerFile().filename().string() + ": " + message);
         } catch (const std::exception& e) {
             log.warning(markerFile().string() + ": " + e.what() + "; using the default render settings");
         }

@@ -39,6 +39,15 @@ struct ViewportSettings {
     // "Cone directions" debug view: a click in the viewport shows the cones the cone-trace pass
     // traces from that pixel (instead of selecting the object there).
     bool coneDirections = false;
+    // While the camera moves or a value is dragged, the viewport lowers its render scale to hold
+    // this frame rate (frames per second; 0 = never), and renders at full scale when still.
+    float interactiveFpsTarget = 10.0f;
+    // The GI work a frame may do (GiBudget): occupied voxels the update after an edit traces per
+    // frame (0 = all in the edit's frame), then voxels the refinement traces per frame (0 = none).
+    // Spread so that a light edit keeps the editor answering; the light converges to the same
+    // image as lit-render's still.
+    int giUpdateVoxelsPerFrame = 16384;
+    int giRefineVoxelsPerFrame = 8192;
 };
 
 }  // namespace lit::editor

@@ -29,7 +29,7 @@ constexpr double kUploadInterval = 0.25;  // seconds
 
 void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
                              Renderer& renderer) {
-    unsupportedView_ = !reference::referenceRendersView(settings.view);
+    unsupportedView_ = !reference::referenceRendersView(settings.debug.view);
     if (mode_ == ReferenceMode::Off || unsupportedView_) {
         tracer_.stop();
         haveImage_ = false;
@@ -37,10 +37,10 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
     }
     reference::ReferenceSettings referenceSettings;
     // The VCT's light paths: its bounces with GI on, direct light only with GI off.
-    referenceBounces_ = settings.gi ? std::clamp(settings.bounces, 1, kMaxBounces) : 0;
+    referenceBounces_ = settings.gi.enabled ? std::clamp(settings.gi.bounces, 1, kMaxBounces) : 0;
     referenceSettings.bounces = referenceBounces_;
     // The same sky and default sun as the rasterizer (docs/REFERENCE.md).
-    tracer_.update(scene, camera, settings.width, settings.height, referenceSettings, &settings);
+    tracer_.update(scene, camera, settings.output.width, settings.output.height, referenceSettings, &settings);
 
     const double now = nowSeconds();
     const reference::ProgressiveStatus status = tracer_.status();
@@ -48,7 +48,8 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
     if (now - lastUpload_ < kUploadInterval && haveImage_) return;
     std::vector<float> rgb;
     int width = 0, height = 0;
-    if (!tracer_.latest(settings.view, settings, rgb, width, height) || width != settings.width || height != settings.height) {
+    if (!tracer_.latest(settings.debug.view, settings, rgb, width, height) || width != settings.output.width ||
+        height != settings.output.height) {
         haveImage_ = false;
         return;
     }

@@ -93,6 +93,8 @@ std::string check(const ScriptCommand& c) {
     }
     if (name == "setting") {
         if (auto e = count(2, 2, "a setting name and a value"); !e.empty()) return e;
+        ViewportSettings viewport;
+        if (std::optional<std::string> editor = applyEditorSetting(viewport, a[0], a[1])) return *editor;
         RenderSettings settings;
         return applySetting(settings, a[0], a[1]);
     }

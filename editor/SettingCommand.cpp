@@ -1,47 +1,67 @@
 #include "SettingCommand.h"
 
-#include <nlohmann/json.hpp>
-
+#include <array>
 #include <bit>
 #include <exception>
-#include <optional>
+#include <utility>
+
+#include "TextParse.h"
 
 namespace lit::editor {
 
-std::string applySetting(RenderSettings& settings, std::string_view key, std::string_view value) {
+std::string applySetting(RenderSettings& settings, std::string_view key, std::string_view value,
+                         std::vector<std::string>* warnings) {
     const std::string name(key);
-    if (name == "width" || name == "height")
+    if (name == "output.width" || name == "output.height" || name == "width" || name == "height")
         return "setting " + name + ": the editor sizes its render from the window (use --size WxH)";
-    // The GI preset is not a field of its own: it names values of anisotropicVoxels,
-    // coneFootprintPerHeight and diffuseFromVoxelIrradiance (RenderSettings.h, GiMode).
-    if (name == "giMode") {
-        const std::optional<GiMode> mode = parseGiMode(value);
-        if (!mode) return "setting giMode: expected fast, accurate or cached (got '" + std::string(value) + "')";
-        setGiMode(settings, *mode);
-        return "";
-    }
-    // renderSettingsFromJson ignores unknown keys (files from newer versions still load); a
-    // script naming one has a typo, so check against the keys toJson writes.
-    const nlohmann::json known = nlohmann::json::parse(toJson(settings));
-    // `exposure` (linear) is the pre-stops key that renderSettingsFromJson still reads.
-    if (!known.contains(name) && name != "exposure") return "unknown render setting '" + name + "'";
-
-    nlohmann::json parsed = nlohmann::json::parse(value, nullptr, /*allow_exceptions=*/false);
-    if (parsed.is_discarded() || parsed.is_object()) parsed = std::string(value);
-    const nlohmann::json object = {{name, parsed}};
-    RenderSettings updated;
+    RenderSettings updated = settings;
     try {
-        updated = renderSettingsFromJson(object.dump(), settings);
+        setRenderSetting(updated, key, value, warnings);
     } catch (const std::exception& error) {
-        return std::string(error.what()) + " (got '" + std::string(value) + "')";
+        const std::string message = error.what();
+        // An unknown key is wrong whatever its value; a bad value is shown.
+        return message.starts_with("unknown") ? message : message + " (got '" + std::string(value) + "')";
     }
     // The one range the JSON types cannot express and the renderer relies on.
-    if (updated.voxelResolution != settings.voxelResolution &&
-        (updated.voxelResolution < 64 || updated.voxelResolution > 512 ||
-         !std::has_single_bit(static_cast<unsigned>(updated.voxelResolution))))
-        return "setting voxelResolution: " + std::to_string(updated.voxelResolution) +
+    if (updated.gi.voxelResolution != settings.gi.voxelResolution &&
+        (updated.gi.voxelResolution < 64 || updated.gi.voxelResolution > 512 ||
+         !std::has_single_bit(static_cast<unsigned>(updated.gi.voxelResolution))))
+        return "setting gi.voxelResolution: " + std::to_string(updated.gi.voxelResolution) +
                " is not a power of two in 64..512";
     settings = updated;
+    return "";
+}
+
+std::optional<std::string> applyEditorSetting(ViewportSettings& viewport, std::string_view key, std::string_view value,
+                                              std::vector<std::string>* warnings) {
+    // The editor's own keys, and the render-settings keys they had before they moved here.
+    constexpr std::array<std::pair<std::string_view, std::string_view>, 3> kOldKeys{{
+        {"interactiveFpsTarget", "editor.interactiveFpsTarget"},
+        {"voxelIrradianceVoxelsPerFrame", "editor.giUpdateVoxelsPerFrame"},
+        {"voxelIrradianceRefineVoxelsPerFrame", "editor.giRefineVoxelsPerFrame"},
+    }};
+    std::string name(key);
+    for (const auto& [old, now] : kOldKeys)
+        if (key == old) {
+            name = now;
+            if (warnings)
+                warnings->push_back("setting '" + std::string(old) + "' is deprecated; it is " + std::string(now));
+        }
+    if (name == "editor.interactiveFpsTarget") {
+        const std::optional<float> fps = parseNumber<float>(std::string(value));
+        if (!fps || *fps < 0.0f)
+            return "setting " + name + ": expected frames per second from 0 (got '" + std::string(value) + "')";
+        viewport.interactiveFpsTarget = *fps;
+        return "";
+    }
+    int* count = name == "editor.giUpdateVoxelsPerFrame"   ? &viewport.giUpdateVoxelsPerFrame
+                 : name == "editor.giRefineVoxelsPerFrame" ? &viewport.giRefineVoxelsPerFrame
+                                                           : nullptr;
+    if (!count) return std::nullopt;
+    const std::optional<int> voxels = parseNumber<int>(std::string(value));
+    if (!voxels || *voxels < 0)
+        return "setting " + name + ": expected a voxel count from 0 (got '" + std::string(value) + "')";
+    *count = *voxels;
     return "";
 }
 

@@ -145,8 +145,9 @@ void addCones(const Document& doc, const OverlayOptions& options, ViewportOverla
             const glm::vec3 faces = cone.direction * cone.direction;
             const glm::vec4 faceColor(faces / std::max({faces.x, faces.y, faces.z, 1e-6f}), color.a);
             for (const ConeSample& sample :
-                 coneSamples(cone, surface.voxelSize, surface.volumeSide, doc.settings.coneStepScale, length)) {
-                const bool blendsFaces = doc.settings.anisotropicVoxels && sample.diameter >= 2.0f * surface.voxelSize;
+                 coneSamples(cone, surface.voxelSize, surface.volumeSide, doc.settings.gi.coneStepScale, length)) {
+                const bool blendsFaces =
+                    doc.settings.gi.anisotropicVoxels() && sample.diameter >= 2.0f * surface.voxelSize;
                 append(overlay.linesOnTop, circleLines(cone.apex + cone.direction * sample.tMid, cone.direction,
                                                        0.5f * sample.diameter, blendsFaces ? faceColor : color,
                                                        kConeSampleCircleSegments));

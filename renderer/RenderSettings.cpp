@@ -42,162 +42,258 @@ constexpr std::array<std::pair<SkyMode, std::string_view>, 5> kSkyModeNames{{
     {SkyMode::Hdr, "hdr"},
 }};
 
-// Custom is written but not parsed: it names "neither preset", not settings one could ask for.
-constexpr std::array<std::pair<GiMode, std::string_view>, 4> kGiModeNames{{
+constexpr std::array<std::pair<GiMode, std::string_view>, 3> kGiModeNames{{
     {GiMode::Fast, "fast"},
     {GiMode::Accurate, "accurate"},
     {GiMode::Cached, "cached"},
-    {GiMode::Custom, "custom"},
 }};
 
+template <typename Enum, std::size_t N>
+std::string_view nameOf(const std::array<std::pair<Enum, std::string_view>, N>& names, Enum value) {
+    for (const auto& [v, name] : names)
+        if (v == value) return name;
+    return names[0].second;
+}
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> valueOf(const std::array<std::pair<Enum, std::string_view>, N>& names, std::string_view text) {
+    for (const auto& [v, name] : names)
+        if (name == text) return v;
+    return std::nullopt;
+}
+
 // Text of an enum field in JSON, and back (overloads picked by the field's type).
+std::optional<View> parseEnum(std::string_view text, View*) { return parseView(text); }
 std::optional<VoxelChannel> parseEnum(std::string_view text, VoxelChannel*) { return parseVoxelChannel(text); }
 std::optional<SkyMode> parseEnum(std::string_view text, SkyMode*) { return parseSkyMode(text); }
+std::optional<GiMode> parseEnum(std::string_view text, GiMode*) { return parseGiMode(text); }
 
 template <typename T>
 constexpr bool kIsFloatArray = false;
 template <std::size_t N>
 constexpr bool kIsFloatArray<std::array<float, N>> = true;
 
-// One table drives both directions so a new field cannot be saved but not loaded.
+// One table drives writing, reading and the key list, so a new field cannot be saved but not
+// loaded. visit(group, field, member).
 template <typename Visitor>
 void visitFields(RenderSettings& s, Visitor&& visit) {
-    visit("width", s.width);
-    visit("height", s.height);
-    visit("exposureEv", s.exposureEv);
-    visit("autoExposure", s.autoExposure);
-    visit("autoExposureKey", s.autoExposureKey);
-    visit("autoExposureSpeed", s.autoExposureSpeed);
-    visit("autoExposureMinEv", s.autoExposureMinEv);
-    visit("autoExposureMaxEv", s.autoExposureMaxEv);
-    visit("skyMode", s.skyMode);
-    visit("skyZenith", s.skyZenith);
-    visit("skyHorizon", s.skyHorizon);
-    visit("skyGround", s.skyGround);
-    visit("skyIntensity", s.skyIntensity);
-    visit("skyHdrPath", s.skyHdrPath);
-    visit("defaultSunIrradiance", s.defaultSunIrradiance);
-    visit("defaultSunElevation", s.defaultSunElevation);
-    visit("defaultSunAzimuth", s.defaultSunAzimuth);
-    visit("directDiffuse", s.directDiffuse);
-    visit("directSpecular", s.directSpecular);
-    visit("indirectDiffuse", s.indirectDiffuse);
-    visit("indirectSpecular", s.indirectSpecular);
-    visit("shadows", s.shadows);
-    visit("shadowMapSize", s.shadowMapSize);
-    visit("shadowDepthBias", s.shadowDepthBias);
-    visit("shadowSlopeBias", s.shadowSlopeBias);
-    visit("shadowNormalOffset", s.shadowNormalOffset);
-    visit("shadowPcfRadius", s.shadowPcfRadius);
-    visit("shadowDebugLight", s.shadowDebugLight);
-    visit("gi", s.gi);
-    visit("voxelResolution", s.voxelResolution);
-    visit("voxelRadianceRgba8", s.voxelRadianceRgba8);
-    visit("voxelRadianceRange", s.voxelRadianceRange);
-    visit("indirectIntensity", s.indirectIntensity);
-    visit("specularSamples", s.specularSamples);
-    visit("diffuseConeAperture", s.diffuseConeAperture);
-    visit("maxTraceDistance", s.maxTraceDistance);
-    visit("coneStepScale", s.coneStepScale);
-    visit("anisotropicVoxels", s.anisotropicVoxels);
-    visit("coneFootprintPerHeight", s.coneFootprintPerHeight);
-    visit("diffuseFromVoxelIrradiance", s.diffuseFromVoxelIrradiance);
-    visit("voxelIrradianceVoxelsPerFrame", s.voxelIrradianceVoxelsPerFrame);
-    visit("voxelIrradianceRefineVoxelsPerFrame", s.voxelIrradianceRefineVoxelsPerFrame);
-    visit("voxelRays", s.voxelRays);
-    visit("bounces", s.bounces);
-    visit("voxelSlice", s.voxelSlice);
-    visit("voxelSliceAxis", s.voxelSliceAxis);
-    visit("voxelMip", s.voxelMip);
-    visit("voxelChannel", s.voxelChannel);
-    visit("frustumCulling", s.frustumCulling);
-    visit("indirectScale", s.indirectScale);
-    visit("specularFullResRoughness", s.specularFullResRoughness);
-    visit("temporalAccumulation", s.temporalAccumulation);
-    visit("temporalMaxFrames", s.temporalMaxFrames);
-    visit("temporalConeSubsets", s.temporalConeSubsets);
-    visit("interactiveFpsTarget", s.interactiveFpsTarget);
+    OutputSettings& o = s.output;
+    visit("output", "width", o.width);
+    visit("output", "height", o.height);
+    visit("output", "exposureEv", o.exposureEv);
+    visit("output", "autoExposure", o.autoExposure);
+    visit("output", "autoExposureKey", o.autoExposureKey);
+    visit("output", "autoExposureSpeed", o.autoExposureSpeed);
+    visit("output", "autoExposureMinEv", o.autoExposureMinEv);
+    visit("output", "autoExposureMaxEv", o.autoExposureMaxEv);
+    visit("output", "frustumCulling", o.frustumCulling);
+    SkySettings& sky = s.sky;
+    visit("sky", "mode", sky.mode);
+    visit("sky", "zenith", sky.zenith);
+    visit("sky", "horizon", sky.horizon);
+    visit("sky", "ground", sky.ground);
+    visit("sky", "intensity", sky.intensity);
+    visit("sky", "hdrPath", sky.hdrPath);
+    visit("sky", "sunIrradiance", sky.sunIrradiance);
+    visit("sky", "sunElevation", sky.sunElevation);
+    visit("sky", "sunAzimuth", sky.sunAzimuth);
+    ShadowSettings& sh = s.shadows;
+    visit("shadows", "enabled", sh.enabled);
+    visit("shadows", "mapSize", sh.mapSize);
+    visit("shadows", "depthBias", sh.depthBias);
+    visit("shadows", "slopeBias", sh.slopeBias);
+    visit("shadows", "normalOffset", sh.normalOffset);
+    visit("shadows", "pcfRadius", sh.pcfRadius);
+    GiSettings& gi = s.gi;
+    visit("gi", "enabled", gi.enabled);
+    visit("gi", "mode", gi.mode);
+    visit("gi", "voxelResolution", gi.voxelResolution);
+    visit("gi", "radianceRgba8", gi.radianceRgba8);
+    visit("gi", "radianceRange", gi.radianceRange);
+    visit("gi", "indirectIntensity", gi.indirectIntensity);
+    visit("gi", "bounces", gi.bounces);
+    visit("gi", "voxelRays", gi.voxelRays);
+    visit("gi", "diffuseConeAperture", gi.diffuseConeAperture);
+    visit("gi", "maxTraceDistance", gi.maxTraceDistance);
+    visit("gi", "coneStepScale", gi.coneStepScale);
+    visit("gi", "coneFootprintPerHeight", gi.coneFootprintPerHeight);
+    IndirectSettings& in = s.indirect;
+    visit("indirect", "scale", in.scale);
+    visit("indirect", "specularSamples", in.specularSamples);
+    visit("indirect", "specularFullResRoughness", in.specularFullResRoughness);
+    visit("indirect", "temporalAccumulation", in.temporalAccumulation);
+    visit("indirect", "temporalMaxFrames", in.temporalMaxFrames);
+    visit("indirect", "temporalConeSubsets", in.temporalConeSubsets);
+    TermSettings& t = s.terms;
+    visit("terms", "directDiffuse", t.directDiffuse);
+    visit("terms", "directSpecular", t.directSpecular);
+    visit("terms", "indirectDiffuse", t.indirectDiffuse);
+    visit("terms", "indirectSpecular", t.indirectSpecular);
+    DebugViewSettings& d = s.debug;
+    visit("debug", "view", d.view);
+    visit("debug", "shadowMapLight", d.shadowMapLight);
+    visit("debug", "voxelSlice", d.voxelSlice);
+    visit("debug", "voxelSliceAxis", d.voxelSliceAxis);
+    visit("debug", "voxelMip", d.voxelMip);
+    visit("debug", "voxelChannel", d.voxelChannel);
+}
+
+// The flat keys of files written before the settings had groups, and where each went.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 53> kFlatKeys{{
+    {"width", "output.width"},
+    {"height", "output.height"},
+    {"exposureEv", "output.exposureEv"},
+    {"autoExposure", "output.autoExposure"},
+    {"autoExposureKey", "output.autoExposureKey"},
+    {"autoExposureSpeed", "output.autoExposureSpeed"},
+    {"autoExposureMinEv", "output.autoExposureMinEv"},
+    {"autoExposureMaxEv", "output.autoExposureMaxEv"},
+    {"frustumCulling", "output.frustumCulling"},
+    {"skyMode", "sky.mode"},
+    {"skyZenith", "sky.zenith"},
+    {"skyHorizon", "sky.horizon"},
+    {"skyGround", "sky.ground"},
+    {"skyIntensity", "sky.intensity"},
+    {"skyHdrPath", "sky.hdrPath"},
+    {"defaultSunIrradiance", "sky.sunIrradiance"},
+    {"defaultSunElevation", "sky.sunElevation"},
+    {"defaultSunAzimuth", "sky.sunAzimuth"},
+    {"shadows", "shadows.enabled"},
+    {"shadowMapSize", "shadows.mapSize"},
+    {"shadowDepthBias", "shadows.depthBias"},
+    {"shadowSlopeBias", "shadows.slopeBias"},
+    {"shadowNormalOffset", "shadows.normalOffset"},
+    {"shadowPcfRadius", "shadows.pcfRadius"},
+    {"shadowDebugLight", "debug.shadowMapLight"},
+    {"gi", "gi.enabled"},
+    {"voxelResolution", "gi.voxelResolution"},
+    {"voxelRadianceRgba8", "gi.radianceRgba8"},
+    {"voxelRadianceRange", "gi.radianceRange"},
+    {"indirectIntensity", "gi.indirectIntensity"},
+    {"bounces", "gi.bounces"},
+    {"voxelRays", "gi.voxelRays"},
+    {"diffuseConeAperture", "gi.diffuseConeAperture"},
+    {"maxTraceDistance", "gi.maxTraceDistance"},
+    {"coneStepScale", "gi.coneStepScale"},
+    {"coneFootprintPerHeight", "gi.coneFootprintPerHeight"},
+    {"specularSamples", "indirect.specularSamples"},
+    {"indirectScale", "indirect.scale"},
+    {"specularFullResRoughness", "indirect.specularFullResRoughness"},
+    {"temporalAccumulation", "indirect.temporalAccumulation"},
+    {"temporalMaxFrames", "indirect.temporalMaxFrames"},
+    {"temporalConeSubsets", "indirect.temporalConeSubsets"},
+    {"directDiffuse", "terms.directDiffuse"},
+    {"directSpecular", "terms.directSpecular"},
+    {"indirectDiffuse", "terms.indirectDiffuse"},
+    {"indirectSpecular", "terms.indirectSpecular"},
+    {"view", "debug.view"},
+    {"giMode", "gi.mode"},  // the editor scripts' name for the mode
+    {"voxelSlice", "debug.voxelSlice"},
+    {"voxelSliceAxis", "debug.voxelSliceAxis"},
+    {"voxelMip", "debug.voxelMip"},
+    {"voxelChannel", "debug.voxelChannel"},
+    {"exposure", "output.exposureEv"},  // linear, from before exposure stops: log2 of it
+}};
+// Keys that are no longer render settings: the GI mode's parts (gi.mode replaces them) and what
+// only the editor uses (its own settings keep them).
+constexpr std::array<std::pair<std::string_view, std::string_view>, 5> kRetiredKeys{{
+    {"anisotropicVoxels", "gi.mode"},
+    {"diffuseFromVoxelIrradiance", "gi.mode"},
+    {"interactiveFpsTarget", "the editor's own settings (editor.interactiveFpsTarget)"},
+    {"voxelIrradianceVoxelsPerFrame", "the editor's GI budget (editor.giUpdateVoxelsPerFrame)"},
+    {"voxelIrradianceRefineVoxelsPerFrame", "the editor's GI budget (editor.giRefineVoxelsPerFrame)"},
+}};
+
+// Reads `value` into `field`; throws naming `key` when its type does not fit.
+template <typename T>
+void readField(const nlohmann::json& value, T& field, const std::string& key) {
+    if constexpr (std::is_enum_v<T>) {
+        const auto parsed = value.is_string() ? parseEnum(value.template get<std::string>(), &field) : std::nullopt;
+        if (!parsed) throw std::runtime_error("render settings: '" + key + "' is not a known name");
+        field = *parsed;
+    } else if constexpr (kIsFloatArray<T>) {
+        if (!value.is_array() || value.size() != field.size() ||
+            !std::all_of(value.begin(), value.end(), [](const nlohmann::json& e) { return e.is_number(); }))
+            throw std::runtime_error("render settings: '" + key + "' expects " + std::to_string(field.size()) +
+                                     " numbers");
+        field = value.template get<T>();
+    } else if constexpr (std::is_same_v<T, std::string>) {
+        if (!value.is_string()) throw std::runtime_error("render settings: '" + key + "' expects a string");
+        field = value.template get<std::string>();
+    } else {
+        const bool ok = std::is_same_v<T, bool> ? value.is_boolean()
+                        : std::is_integral_v<T> ? value.is_number_integer()
+                                                : value.is_number();
+        if (!ok) throw std::runtime_error("render settings: '" + key + "' has the wrong type");
+        field = value.template get<T>();
+    }
+}
+
+// Sets the field called `key` ("group.field") from `value`; false when no field has that key.
+// Errors name `shown` (the key as the file or the user wrote it) when given.
+bool readByKey(RenderSettings& s, std::string_view key, const nlohmann::json& value, std::string_view shown = {}) {
+    bool found = false;
+    visitFields(s, [&](std::string_view group, std::string_view name, auto& field) {
+        if (found || key.size() != group.size() + 1 + name.size() || !key.starts_with(group) ||
+            key[group.size()] != '.' || !key.ends_with(name))
+            return;
+        readField(value, field, std::string(shown.empty() ? key : shown));
+        found = true;
+    });
+    return found;
+}
+
+void warn(std::vector<std::string>* warnings, std::string text) {
+    if (warnings) warnings->push_back(std::move(text));
+}
+
+// Reads one key of an older flat file; false when `key` is no such key.
+bool readFlatKey(RenderSettings& s, const std::string& key, const nlohmann::json& value,
+                 std::vector<std::string>* warnings) {
+    for (const auto& [old, now] : kFlatKeys) {
+        if (key != old) continue;
+        if (key == "exposure") {
+            if (!value.is_number() || value.get<double>() <= 0.0)
+                throw std::runtime_error(
+                    "render settings: 'exposure' (linear, from older files) must be a positive number");
+            s.output.exposureEv = static_cast<float>(std::log2(value.get<double>()));
+            warn(warnings,
+                 "render settings: 'exposure' (a linear multiplier) is deprecated; read as output.exposureEv "
+                 "(stops) " +
+                     std::to_string(s.output.exposureEv));
+            return true;
+        }
+        readByKey(s, now, value, key);
+        warn(warnings, "render settings: '" + key + "' is deprecated; read as " + std::string(now));
+        return true;
+    }
+    return false;
 }
 }  // namespace
 
-std::string_view toString(View view) {
-    for (const auto& [v, name] : kViewNames)
-        if (v == view) return name;
-    return "final";
-}
-
-std::optional<View> parseView(std::string_view text) {
-    for (const auto& [v, name] : kViewNames)
-        if (name == text) return v;
-    return std::nullopt;
-}
-
-std::string_view toString(VoxelChannel channel) {
-    for (const auto& [c, name] : kVoxelChannelNames)
-        if (c == channel) return name;
-    return "radiance";
-}
-
-std::optional<VoxelChannel> parseVoxelChannel(std::string_view text) {
-    for (const auto& [c, name] : kVoxelChannelNames)
-        if (name == text) return c;
-    return std::nullopt;
-}
-
-std::string_view toString(SkyMode mode) {
-    for (const auto& [m, name] : kSkyModeNames)
-        if (m == mode) return name;
-    return "auto";
-}
-
-std::optional<SkyMode> parseSkyMode(std::string_view text) {
-    for (const auto& [m, name] : kSkyModeNames)
-        if (name == text) return m;
-    return std::nullopt;
-}
-
-std::string_view toString(GiMode mode) {
-    for (const auto& [m, name] : kGiModeNames)
-        if (m == mode) return name;
-    return "custom";
-}
-
-std::optional<GiMode> parseGiMode(std::string_view text) {
-    for (const auto& [m, name] : kGiModeNames)
-        if (name == text && m != GiMode::Custom) return m;
-    return std::nullopt;
-}
-
-GiMode giModeOf(const RenderSettings& settings) {
-    if (!settings.anisotropicVoxels && settings.coneFootprintPerHeight == 0.0f && !settings.diffuseFromVoxelIrradiance)
-        return GiMode::Fast;
-    if (settings.anisotropicVoxels && settings.coneFootprintPerHeight == kAccurateGiFootprint)
-        return settings.diffuseFromVoxelIrradiance ? GiMode::Cached : GiMode::Accurate;
-    return GiMode::Custom;
-}
-
-void setGiMode(RenderSettings& settings, GiMode mode) {
-    if (mode == GiMode::Custom) return;
-    const bool accurateCones = mode == GiMode::Accurate || mode == GiMode::Cached;
-    settings.anisotropicVoxels = accurateCones;
-    settings.coneFootprintPerHeight = accurateCones ? kAccurateGiFootprint : 0.0f;
-    settings.diffuseFromVoxelIrradiance = mode == GiMode::Cached;
-}
+std::string_view toString(View view) { return nameOf(kViewNames, view); }
+std::optional<View> parseView(std::string_view text) { return valueOf(kViewNames, text); }
+std::string_view toString(VoxelChannel channel) { return nameOf(kVoxelChannelNames, channel); }
+std::optional<VoxelChannel> parseVoxelChannel(std::string_view text) { return valueOf(kVoxelChannelNames, text); }
+std::string_view toString(SkyMode mode) { return nameOf(kSkyModeNames, mode); }
+std::optional<SkyMode> parseSkyMode(std::string_view text) { return valueOf(kSkyModeNames, text); }
+std::string_view toString(GiMode mode) { return nameOf(kGiModeNames, mode); }
+std::optional<GiMode> parseGiMode(std::string_view text) { return valueOf(kGiModeNames, text); }
 
 std::string toJson(const RenderSettings& settings) {
-    nlohmann::json j;
+    nlohmann::ordered_json j;
     RenderSettings copy = settings;
-    visitFields(copy, [&](const char* key, auto& value) {
+    visitFields(copy, [&](const char* group, const char* name, auto& value) {
         if constexpr (std::is_enum_v<std::decay_t<decltype(value)>>)
-            j[key] = std::string(toString(value));
+            j[group][name] = std::string(toString(value));
         else
-            j[key] = value;
+            j[group][name] = value;
     });
-    j["view"] = std::string(toString(settings.view));
     return j.dump(2);
 }
 
-RenderSettings renderSettingsFromJson(std::string_view text, const RenderSettings& defaults) {
+RenderSettings renderSettingsFromJson(std::string_view text, const RenderSettings& defaults,
+                                      std::vector<std::string>* warnings) {
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(text);
@@ -206,43 +302,65 @@ RenderSettings renderSettingsFromJson(std::string_view text, const RenderSetting
     }
     if (!j.is_object()) throw std::runtime_error("render settings: expected a JSON object");
     RenderSettings s = defaults;
-    visitFields(s, [&](const char* key, auto& value) {
-        using T = std::decay_t<decltype(value)>;
-        auto it = j.find(key);
-        if (it == j.end()) return;
-        if constexpr (std::is_enum_v<T>) {
-            const auto parsed = it->is_string() ? parseEnum(it->template get<std::string>(), &value) : std::nullopt;
-            if (!parsed) throw std::runtime_error(std::string("render settings: '") + key + "' is not a known name");
-            value = *parsed;
-        } else if constexpr (kIsFloatArray<T>) {
-            if (!it->is_array() || it->size() != value.size() ||
-                !std::all_of(it->begin(), it->end(), [](const nlohmann::json& e) { return e.is_number(); }))
-                throw std::runtime_error(std::string("render settings: '") + key + "' expects " +
-                                         std::to_string(value.size()) + " numbers");
-            value = it->template get<T>();
-        } else if constexpr (std::is_same_v<T, std::string>) {
-            if (!it->is_string()) throw std::runtime_error(std::string("render settings: '") + key + "' expects a string");
-            value = it->template get<std::string>();
-        } else {
-            const bool ok = std::is_same_v<T, bool> ? it->is_boolean()
-                            : std::is_integral_v<T> ? it->is_number_integer()
-                                                    : it->is_number();
-            if (!ok) throw std::runtime_error(std::string("render settings: '") + key + "' has the wrong type");
-            value = it->template get<T>();
-        }
+    // Older flat keys first, so that a file with both takes the grouped value.
+    for (const auto& [key, value] : j.items())
+        if (!value.is_object()) readFlatKey(s, key, value, warnings);
+    // The GI mode was three fields: the cached mode read the voxel irradiance, the accurate mode
+    // had directional voxels without it, the fast mode neither.
+    const auto flag = [&](const char* key) -> std::optional<bool> {
+        const auto it = j.find(key);
+        if (it == j.end()) return std::nullopt;
+        if (!it->is_boolean())
+            throw std::runtime_error(std::string("render settings: '") + key + "' has the wrong type");
+        return it->get<bool>();
+    };
+    const std::optional<bool> anisotropic = flag("anisotropicVoxels");
+    const std::optional<bool> irradiance = flag("diffuseFromVoxelIrradiance");
+    if (anisotropic || irradiance) {
+        s.gi.mode = irradiance.value_or(true)    ? GiMode::Cached
+                    : anisotropic.value_or(true) ? GiMode::Accurate
+                                                 : GiMode::Fast;
+        warn(warnings,
+             "render settings: 'anisotropicVoxels' and 'diffuseFromVoxelIrradiance' are deprecated; read as "
+             "gi.mode \"" +
+                 std::string(toString(s.gi.mode)) + "\"");
+    }
+    for (const auto& [key, now] : kRetiredKeys)
+        if (j.contains(key) && now != "gi.mode")
+            warn(warnings, "render settings: '" + std::string(key) + "' is no longer a render setting; it is " +
+                               std::string(now));
+    visitFields(s, [&](const char* group, const char* name, auto& value) {
+        const auto g = j.find(group);
+        if (g == j.end() || !g->is_object()) return;
+        const auto it = g->find(name);
+        if (it == g->end()) return;
+        readField(*it, value, std::string(group) + "." + name);
     });
-    // Files from before exposure stops hold a linear multiplier; a file with both keys means the stops.
-    if (auto it = j.find("exposure"); it != j.end() && !j.contains("exposureEv")) {
-        if (!it->is_number() || it->get<double>() <= 0.0)
-            throw std::runtime_error("render settings: 'exposure' (linear, from older files) must be a positive number");
-        s.exposureEv = static_cast<float>(std::log2(it->get<double>()));
-    }
-    if (auto it = j.find("view"); it != j.end()) {
-        const auto view = it->is_string() ? parseView(it->get<std::string>()) : std::nullopt;
-        if (!view) throw std::runtime_error("render settings: 'view' is not a known view name");
-        s.view = *view;
-    }
     return s;
+}
+
+std::vector<std::string> renderSettingKeys() {
+    std::vector<std::string> keys;
+    RenderSettings s;
+    visitFields(s,
+                [&](const char* group, const char* name, auto&) { keys.push_back(std::string(group) + "." + name); });
+    return keys;
+}
+
+void setRenderSetting(RenderSettings& settings, std::string_view key, std::string_view value,
+                      std::vector<std::string>* warnings) {
+    nlohmann::json parsed = nlohmann::json::parse(value, nullptr, /*allow_exceptions=*/false);
+    if (parsed.is_discarded() || parsed.is_object()) parsed = std::string(value);
+    RenderSettings updated = settings;
+    const std::string name(key);
+    if (!readByKey(updated, name, parsed)) {
+        if (name == "anisotropicVoxels" || name == "diffuseFromVoxelIrradiance") {
+            updated = renderSettingsFromJson(nlohmann::json{{name, parsed}}.dump(), settings, warnings);
+        } else if (!readFlatKey(updated, name, parsed, warnings)) {
+            throw std::runtime_error("unknown render setting '" + name + "'");
+        }
+    }
+    settings = updated;
 }
 
 }  // namespace lit

@@ -120,24 +120,25 @@ struct Renderer::Impl {
                 &coneTrace, &resolve, &fallback, &overlayPass, &voxelDebug, &autoExposure};
     }
 
-    // The sky image of settings.skyHdrPath, loaded and uploaded when the path changes; nullptr
+    // The sky image of settings.sky.hdrPath, loaded and uploaded when the path changes; nullptr
     // when the mode is not Hdr or the file could not be read (logged once per path).
     const SkyImage* updateSkyImage(const RenderSettings& settings);
 
     // Voxelize / inject / mipmaps when what they depend on changed. Returns whether it ran.
-    void updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty, DrawCounters& counters);
+    void updateVoxels(const Scene& scene, const RenderSettings& settings, const GiBudget& budget, bool shadowsDirty,
+                      DrawCounters& counters);
     // Whether the cached mode's update runs over several frames (voxelIrradianceVoxelsPerFrame
     // entries each) rather than all in the edit's frame: only over a complete list longer than that.
     // Voxels that replay their rays' recorded hits take kReplayVoxelsPerFrameFactor times as many.
-    std::uint32_t voxelsPerFrame(const RenderSettings& settings) const {
-        const auto perFrame = static_cast<std::uint32_t>(std::max(settings.voxelIrradianceVoxelsPerFrame, 0));
+    std::uint32_t voxelsPerFrame(const RenderSettings& settings, const GiBudget& budget) const {
+        const std::uint32_t perFrame = budget.updateVoxels == GiBudget::kAll ? 0u : std::max(budget.updateVoxels, 1u);
         return replaysRayHits(settings) ? static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{perFrame} * kReplayVoxelsPerFrameFactor,
                                                                           std::numeric_limits<std::uint32_t>::max()))
                       : perFrame;
     }
-    bool spreadOverFrames(const RenderSettings& settings) const {
-        const std::uint32_t perFrame = voxelsPerFrame(settings);
-        return settings.diffuseFromVoxelIrradiance && perFrame > 0 && perFrame < occupiedCount && occupiedListComplete;
+    bool spreadOverFrames(const RenderSettings& settings, const GiBudget& budget) const {
+        const std::uint32_t perFrame = voxelsPerFrame(settings, budget);
+        return settings.gi.voxelIrradiance() && perFrame > 0 && perFrame < occupiedCount && occupiedListComplete;
     }
     // Logs what the last GI update did and what it cost, once its GPU timings are in.
     void reportGiUpdate();
@@ -217,8 +218,8 @@ struct Renderer::Impl {
     static constexpr int kConeSets = LIT_CONE_STRATA * LIT_CONE_STRATA;
     // Refinement rounds are left to run with `settings`, after the update (or the one under way).
     bool refinementLeft(const RenderSettings& settings) const {
-        return settings.diffuseFromVoxelIrradiance && settings.voxelIrradianceRefineVoxelsPerFrame > 0 &&
-               irradianceRefineRound < kConeSets && occupiedListComplete && occupiedCount > 0;
+        return settings.gi.voxelIrradiance() && irradianceRefineRound < kConeSets && occupiedListComplete &&
+               occupiedCount > 0;
     }
     // Bounces 2..N spread over frames as the irradiance update is (the cached mode with
     // voxelIrradianceVoxelsPerFrame > 0): the bounce under way (0: none; the irradiance update waits
@@ -284,15 +285,16 @@ struct Renderer::Impl {
     bool occupiedListComplete = false;  // the list holds all of them (else inject runs over N³)
 };
 
-void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& settings, bool shadowsDirty,
-                                  DrawCounters& counters) {
+void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& settings, const GiBudget& budget,
+                                  bool shadowsDirty, DrawCounters& counters) {
     std::string reason;
-    const bool reallocated = voxels.ensure(settings.voxelResolution, settings.voxelRadianceRgba8, log);
+    const bool reallocated = voxels.ensure(settings.gi.voxelResolution, settings.gi.radianceRgba8, log);
     const bool moved = voxels.fitTo(bounds);
     // Sample pattern index 0 every frame without temporal accumulation: a pattern that moves
     // only adds flicker there, and a fixed one keeps each term image consistent with the final
     // image. With it, the pattern turns every frame and the history averages the patterns.
-    voxels.updateUniforms(settings, settings.temporalAccumulation ? static_cast<int>(temporalFrame % 4096) : 0);
+    voxels.updateUniforms(settings,
+                          settings.indirect.temporalAccumulation ? static_cast<int>(temporalFrame % 4096) : 0);
     const VoxelKey key{scene.geometryRevision, scene.materialRevision, &scene};
     bool voxelDirty = !voxelsValid || reallocated || moved || !(key == voxelKey);
     if (!voxelsValid) reason = "first GI frame";
@@ -302,24 +304,23 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     // Bounces and the voxel irradiance trace cones through the volume: their settings change what
     // is injected.
     const bool bounceSettingsChanged =
-        std::clamp(settings.bounces, 1, kMaxBounces) != injectedBounces ||
-        settings.diffuseFromVoxelIrradiance != injectedIrradiance ||
+        std::clamp(settings.gi.bounces, 1, kMaxBounces) != injectedBounces ||
+        settings.gi.voxelIrradiance() != injectedIrradiance ||
         // The cached mode's voxel irradiance is traced with the same cone settings as the bounces.
-        ((injectedBounces > 1 || injectedIrradiance) && (settings.anisotropicVoxels != injectedAnisotropic ||
-                                 ConeFeatures::of(settings).voxelRays != injectedVoxelRays ||
-                                 settings.coneFootprintPerHeight != injectedFootprint ||
-                                 settings.diffuseConeAperture != injectedAperture ||
-                                 settings.coneStepScale != injectedStepScale ||
-                                 settings.maxTraceDistance != injectedTraceDistance ||
-                                 settings.indirectIntensity != injectedIntensity));
+        ((injectedBounces > 1 || injectedIrradiance) &&
+         (settings.gi.anisotropicVoxels() != injectedAnisotropic ||
+          ConeFeatures::of(settings).voxelRays != injectedVoxelRays ||
+          settings.gi.footprintPerHeight() != injectedFootprint ||
+          settings.gi.diffuseConeAperture != injectedAperture || settings.gi.coneStepScale != injectedStepScale ||
+          settings.gi.maxTraceDistance != injectedTraceDistance || settings.gi.indirectIntensity != injectedIntensity));
     // The six directional mip chains are built only while anisotropic voxels are on (they cost
     // ~10× the isotropic chain on llvmpipe): switching them on rebuilds them.
-    const bool directionalMissing = settings.anisotropicVoxels && !injectedAnisotropic;
-    const bool injectDirty = voxelDirty || shadowsDirty || settings.voxelRadianceRange != injectedRadianceRange ||
+    const bool directionalMissing = settings.gi.anisotropicVoxels() && !injectedAnisotropic;
+    const bool injectDirty = voxelDirty || shadowsDirty || settings.gi.radianceRange != injectedRadianceRange ||
                              bounceSettingsChanged || directionalMissing;
     // Switched off: the directional volumes' memory goes back (0.6-1.3 GiB at 512³); switching on
     // again makes and rebuilds them (directionalMissing, from injectedAnisotropic).
-    if (!settings.anisotropicVoxels && voxels.directional(0)) {
+    if (!settings.gi.anisotropicVoxels() && voxels.directional(0)) {
         voxels.releaseDirectionalVolumes();
         injectedAnisotropic = false;
     }
@@ -355,7 +356,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     }
     if (injectDirty) {
         shadow.bindMaps();
-        const int bounces = std::clamp(settings.bounces, 1, kMaxBounces);
+        const int bounces = std::clamp(settings.gi.bounces, 1, kMaxBounces);
         // Before the injection, which then writes the bounces' direct radiance beside level 0.
         if (bounces > 1) voxels.ensureBounceVolumes();
         // When only the light changed and the bounces gather with voxel rays, level 0 and its mips
@@ -368,7 +369,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         // cones and the gathered diffuse show the same (last) update meanwhile, and a spread update
         // need not start again at each edit: see updateAgain below.
         const bool onlyLightChanged = !voxelDirty && !bounceSettingsChanged && !directionalMissing &&
-                                      settings.voxelRadianceRange == injectedRadianceRange;
+                                      settings.gi.radianceRange == injectedRadianceRange;
         const bool keepLastUpdate = onlyLightChanged && bounces > 1 && ConeFeatures::of(settings).voxelRays > 0;
         {
             Profiler::Scope scope(profiler, "inject");
@@ -376,7 +377,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         }
         if (!keepLastUpdate) {
             Profiler::Scope scope(profiler, "mipmap");
-            mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
+            mipmap.execute(voxels, settings.gi.anisotropicVoxels(), occupiedListComplete);
         }
         // A light edit while a spread update runs (a light dragged in the editor: an edit every
         // frame) lets it run on, the voxels not traced yet taking the new direct light, and asks
@@ -384,8 +385,8 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         // a drag's update from ever reaching the irradiance: the indirect light stood still until
         // the drag ended (with two bounces, the default since the thirteenth session).
         const bool updateRunning = bounceUnderWay > 0 || (injectedIrradiance && irradianceRemaining > 0);
-        const bool runOn = keepLastUpdate && updateRunning && spreadOverFrames(settings) &&
-                           settings.diffuseFromVoxelIrradiance == injectedIrradiance;
+        const bool runOn = keepLastUpdate && updateRunning && spreadOverFrames(settings, budget) &&
+                           settings.gi.voxelIrradiance() == injectedIrradiance;
         updateAgain = runOn;
         if (!runOn) {
             // Bounces 2..N: each re-injects the voxels' traced indirect light (docs/GI.md). In the
@@ -394,7 +395,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             bounceUnderWay = 0;
             if (bounces > 1) {
                 Profiler::Scope scope(profiler, "bounces");
-                if (spreadOverFrames(settings)) {
+                if (spreadOverFrames(settings, budget)) {
                     bounceUnderWay = 2;
                     bounceNext = 0;
                 } else {
@@ -402,11 +403,11 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
                         const RayHits hits = rayHitsFor(settings);
                         inject.executeBounce(voxels, ConeFeatures::of(settings), b == 2, occupiedListComplete, hits);
                         listTraced(hits);
-                        mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
+                        mipmap.execute(voxels, settings.gi.anisotropicVoxels(), occupiedListComplete);
                     }
                 }
             }
-            if (settings.diffuseFromVoxelIrradiance) {
+            if (settings.gi.voxelIrradiance()) {
                 // A new edit asks for the whole list again, from where the update stands (a new list
                 // after a voxelization: from its start), so that a light dragged over many frames keeps
                 // refreshing every voxel in turn, and once the update has gone round the list every
@@ -416,17 +417,17 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
                 restartIrradianceUpdate();
             }
         }
-        injectedIrradiance = settings.diffuseFromVoxelIrradiance;
+        injectedIrradiance = settings.gi.voxelIrradiance();
         injectedBounces = bounces;
         pendingBounces = bounces;
-        injectedAnisotropic = settings.anisotropicVoxels;
+        injectedAnisotropic = settings.gi.anisotropicVoxels();
         injectedVoxelRays = ConeFeatures::of(settings).voxelRays;
-        injectedFootprint = settings.coneFootprintPerHeight;
-        injectedAperture = settings.diffuseConeAperture;
-        injectedStepScale = settings.coneStepScale;
-        injectedTraceDistance = settings.maxTraceDistance;
-        injectedIntensity = settings.indirectIntensity;
-        injectedRadianceRange = settings.voxelRadianceRange;
+        injectedFootprint = settings.gi.footprintPerHeight();
+        injectedAperture = settings.gi.diffuseConeAperture;
+        injectedStepScale = settings.gi.coneStepScale;
+        injectedTraceDistance = settings.gi.maxTraceDistance;
+        injectedIntensity = settings.gi.indirectIntensity;
+        injectedRadianceRange = settings.gi.radianceRange;
         pendingGiReason = reason;
         pendingGiFrame = profiler.currentFrame();
         pendingVoxelize = voxelDirty;
@@ -435,7 +436,6 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
     // The voxel irradiance (diffuseFromVoxelIrradiance): all of the list in the edit's frame, or
     // voxelIrradianceVoxelsPerFrame entries per frame, wrapping round the list, until every entry
     // has been traced since the last edit. An overflowed list (whole-grid dispatch) is done at once.
-    const bool refine = irradianceRemaining == 0 && refinementLeft(settings);
     // The list ranges traced this frame, and whether the frame completed an update or a refinement
     // round (or traced everything at once): then the filter runs over the whole list, else only over
     // the ranges traced (the filter over all occupied voxels costs ~150 ms a frame at 256³ on
@@ -447,7 +447,7 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         // setting went to 0 meanwhile); the last entry ends the bounce (level 0 and its mips), and
         // the last bounce lets the irradiance update start in the next frame.
         Profiler::Scope scope(profiler, "bounces");
-        const std::uint32_t perFrame = voxelsPerFrame(settings);
+        const std::uint32_t perFrame = voxelsPerFrame(settings, budget);
         const std::uint32_t left = occupiedCount - std::min(bounceNext, occupiedCount);
         const std::uint32_t count = perFrame == 0 ? left : std::min(perFrame, left);
         const RayHits hits = rayHitsFor(settings);
@@ -456,47 +456,28 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
         if (bounceNext >= occupiedCount) {
             listTraced(hits);  // the pass ran over the whole list from 0
             inject.endBounce(voxels, true);
-            mipmap.execute(voxels, settings.anisotropicVoxels, occupiedListComplete);
+            mipmap.execute(voxels, settings.gi.anisotropicVoxels(), occupiedListComplete);
             bounceNext = 0;
             bounceUnderWay = bounceUnderWay < injectedBounces ? bounceUnderWay + 1 : 0;
         }
-    } else if (refine) {
-        // Round k traces every voxel's set + k once over the list, budget entries a frame; each
-        // voxel then averages k + 1 sets. The light is right throughout: only its sampling improves.
+    } else if (settings.gi.voxelIrradiance() && irradianceRemaining > 0) {
         Profiler::Scope scope(profiler, "voxel irradiance");
-        std::uint32_t budget = static_cast<std::uint32_t>(settings.voxelIrradianceRefineVoxelsPerFrame);
-        while (budget > 0 && irradianceRefineRound < kConeSets) {
-            const std::uint32_t count = std::min(budget, occupiedCount - irradianceRefineNext);
-            inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceRefineNext, count,
-                                     irradianceRefineRound);
-            tracedRanges.emplace_back(irradianceRefineNext, count);
-            stats.refinedVoxels += count;
-            budget -= count;
-            irradianceRefineNext += count;
-            if (irradianceRefineNext >= occupiedCount) {
-                irradianceRefineNext = 0;
-                ++irradianceRefineRound;
-                filterAll = true;
-            }
-        }
-    } else if (settings.diffuseFromVoxelIrradiance && irradianceRemaining > 0) {
-        Profiler::Scope scope(profiler, "voxel irradiance");
-        const std::uint32_t perFrame = voxelsPerFrame(settings);
-        if (!spreadOverFrames(settings)) {
+        const std::uint32_t perFrame = voxelsPerFrame(settings, budget);
+        if (!spreadOverFrames(settings, budget)) {
             const RayHits hits = rayHitsFor(settings);
             inject.executeIrradiance(voxels, ConeFeatures::of(settings), occupiedListComplete, 0, 0, 0, hits);
             listTraced(hits);
             irradianceRemaining = 0;
         } else {
-            std::uint32_t budget = std::min(perFrame, irradianceRemaining);
-            irradianceRemaining -= budget;
+            std::uint32_t left = std::min(perFrame, irradianceRemaining);
+            irradianceRemaining -= left;
             const RayHits hits = rayHitsFor(settings);
-            while (budget > 0) {  // at most twice: up to the list's end, then from its start
-                const std::uint32_t count = std::min(budget, occupiedCount - irradianceNext);
+            while (left > 0) {  // at most twice: up to the list's end, then from its start
+                const std::uint32_t count = std::min(left, occupiedCount - irradianceNext);
                 inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceNext, count, 0, hits);
                 tracedRanges.emplace_back(irradianceNext, count);
                 irradianceNext = (irradianceNext + count) % occupiedCount;
-                budget -= count;
+                left -= count;
             }
             // The accumulated indirect light holds the frames of the update (old light in the
             // voxels not reached yet): the first frame after it starts the history afresh. Every
@@ -514,6 +495,30 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
             }
         }
         filterAll = irradianceRemaining == 0;
+    }
+    // The refinement once the update is done, in the same frame when the budget allows (a still
+    // converges in its one frame).
+    const bool refine =
+        bounceUnderWay == 0 && irradianceRemaining == 0 && refinementLeft(settings) && budget.refineVoxels > 0;
+    if (refine) {
+        // Round k traces every voxel's set + k once over the list, budget entries a frame; each
+        // voxel then averages k + 1 sets. The light is right throughout: only its sampling improves.
+        Profiler::Scope scope(profiler, "voxel irradiance");
+        std::uint32_t left = budget.refineVoxels;
+        while (left > 0 && irradianceRefineRound < kConeSets) {
+            const std::uint32_t count = std::min(left, occupiedCount - irradianceRefineNext);
+            inject.executeIrradiance(voxels, ConeFeatures::of(settings), true, irradianceRefineNext, count,
+                                     irradianceRefineRound);
+            tracedRanges.emplace_back(irradianceRefineNext, count);
+            stats.refinedVoxels += count;
+            left -= count;
+            irradianceRefineNext += count;
+            if (irradianceRefineNext >= occupiedCount) {
+                irradianceRefineNext = 0;
+                ++irradianceRefineRound;
+                filterAll = true;
+            }
+        }
     }
     if (filterAll || !tracedRanges.empty()) {
         // The voxels traced see their new values (and, once the update is complete, every voxel
@@ -546,9 +551,9 @@ void Renderer::Impl::updateVoxels(const Scene& scene, const RenderSettings& sett
 }
 
 const SkyImage* Renderer::Impl::updateSkyImage(const RenderSettings& settings) {
-    if (settings.skyMode != SkyMode::Hdr) return nullptr;
-    if (settings.skyHdrPath != skyImagePath) {
-        skyImagePath = settings.skyHdrPath;
+    if (settings.sky.mode != SkyMode::Hdr) return nullptr;
+    if (settings.sky.hdrPath != skyImagePath) {
+        skyImagePath = settings.sky.hdrPath;
         skyImage = {};
         skyTexture = {};
         try {
@@ -631,9 +636,10 @@ void Renderer::setScene(const Scene& scene) {
     impl_->lastFrame.reset();  // the G-buffer's node IDs belong to the previous scene
 }
 
-void Renderer::render(const Scene& scene, const CameraView& camera, const RenderSettings& settings) {
+void Renderer::render(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+                      const GiBudget& budget) {
     Impl& r = *impl_;
-    if (settings.width <= 0 || settings.height <= 0) return;  // minimized window: nothing to draw
+    if (settings.output.width <= 0 || settings.output.height <= 0) return;  // minimized window: nothing to draw
     if (!r.gpuScene) setScene(scene);
 
     r.profiler.beginFrame();
@@ -659,9 +665,9 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     // Lights and shadow maps: rebuilt only when the scene or shadow settings change; the camera
     // does not affect them (directional maps are fitted to the scene, not the view).
     const ShadowKey key{scene.geometryRevision,     scene.lightRevision,        &scene,
-                        settings.shadows,           settings.shadowMapSize,     settings.shadowDepthBias,
-                        settings.shadowSlopeBias,   settings.defaultSunIrradiance, settings.defaultSunElevation,
-                        settings.defaultSunAzimuth};
+                        settings.shadows.enabled,   settings.shadows.mapSize,   settings.shadows.depthBias,
+                        settings.shadows.slopeBias, settings.sky.sunIrradiance, settings.sky.sunElevation,
+                        settings.sky.sunAzimuth};
     const bool shadowsDirty = !(key == r.shadowKey);
     if (shadowsDirty) {
         r.lights = buildLightSetup(scene, r.bounds, settings, r.log);
@@ -672,7 +678,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
 
     const Sky sky = resolveSky(scene, settings, r.updateSkyImage(settings));
     if (sky.mode == SkyMode::Hdr) r.skyTexture.bind(LIT_TEX_SKY);
-    const gpu::FrameUniforms frame = makeFrameUniforms(camera, settings, toShaderView(settings.view),
+    const gpu::FrameUniforms frame = makeFrameUniforms(camera, settings, toShaderView(settings.debug.view),
                                                        static_cast<int>(r.lights.lights.size()), &sky);
     r.frameUniforms.update(frame);
     r.frameUniforms.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FRAME);
@@ -682,16 +688,16 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
         Profiler::Scope scope(r.profiler, "shadow");
         const ItemCuller cullShadowView = [&r, &settings](const glm::mat4& viewProjection,
                                                           std::vector<std::uint32_t>& visible) {
-            r.cullView(viewProjection, settings.frustumCulling, visible);
+            r.cullView(viewProjection, settings.output.frustumCulling, visible);
         };
         r.shadow.execute(scene, *r.gpuScene, r.lights, settings, counters, cullShadowView);
         r.shadowKey = key;
     }
 
-    r.gbuffer.resize(settings.width, settings.height);
-    r.terms.resize(settings.width, settings.height);
-    r.post.resize(settings.width, settings.height);
-    r.cullView(frame.viewProjection, settings.frustumCulling, r.cameraItems);
+    r.gbuffer.resize(settings.output.width, settings.output.height);
+    r.terms.resize(settings.output.width, settings.output.height);
+    r.post.resize(settings.output.width, settings.output.height);
+    r.cullView(frame.viewProjection, settings.output.frustumCulling, r.cameraItems);
     {
         Profiler::Scope scope(r.profiler, "g-buffer");
         const std::size_t trianglesBefore = counters.triangles;  // the shadow pass counts its own
@@ -699,12 +705,12 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
         r.stats.triangles = counters.triangles - trianglesBefore;
     }
     // GI: the voxel volume follows the scene; nothing is allocated while GI is off.
-    const bool giWanted = settings.gi;
-    if (giWanted) r.updateVoxels(scene, settings, shadowsDirty, counters);
+    const bool giWanted = settings.gi.enabled;
+    if (giWanted) r.updateVoxels(scene, settings, budget, shadowsDirty, counters);
     r.gbuffer.bindTargets();
     // The data and voxel views show no lighting term (the composite does not use them there), so
     // they skip lighting and cone tracing; the terms are redone by the next frame that shows them.
-    if (!isDataView(settings.view)) {
+    if (!isDataView(settings.debug.view)) {
         r.shadow.bindMaps();
         {
             Profiler::Scope scope(r.profiler, "lighting");
@@ -714,26 +720,27 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
             const ConeTracePass::Work work = ConeTracePass::workFor(settings);
             const IndirectKey key{&scene,
                                   ConeTracePass::indirectScale(settings),
-                                  settings.specularSamples,
-                                  settings.voxelResolution,
-                                  settings.specularFullResRoughness,
-                                  settings.diffuseConeAperture,
-                                  settings.maxTraceDistance,
-                                  settings.coneStepScale,
-                                  settings.coneFootprintPerHeight,
-                                  settings.voxelRadianceRgba8,
+                                  settings.indirect.specularSamples,
+                                  settings.gi.voxelResolution,
+                                  settings.indirect.specularFullResRoughness,
+                                  settings.gi.diffuseConeAperture,
+                                  settings.gi.maxTraceDistance,
+                                  settings.gi.coneStepScale,
+                                  settings.gi.footprintPerHeight(),
+                                  settings.gi.radianceRgba8,
                                   work.diffuse,
                                   work.specular,
-                                  settings.anisotropicVoxels};
+                                  settings.gi.anisotropicVoxels()};
             if (!(key == r.indirectKey)) r.resolve.resetHistory();
             r.indirectKey = key;
             const ConeTracePass::Sampling sampling =
-                settings.temporalAccumulation
-                    ? ConeTracePass::samplingFor(r.temporalFrame, key.indirectScale, ConeTracePass::coneSubsets(settings))
+                settings.indirect.temporalAccumulation
+                    ? ConeTracePass::samplingFor(r.temporalFrame, key.indirectScale,
+                                                 ConeTracePass::coneSubsets(settings))
                     : ConeTracePass::Sampling{};
             {
                 Profiler::Scope scope(r.profiler, "cone trace");
-                if (settings.diffuseFromVoxelIrradiance) r.inject.bindIrradiance();
+                if (settings.gi.voxelIrradiance()) r.inject.bindIrradiance();
                 r.coneTrace.executeReduced(r.voxels, settings, sampling);
             }
             r.waitForQueuedPasses();  // the resolve samples the low-resolution trace
@@ -746,7 +753,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
                 Profiler::Scope scope(r.profiler, "indirect fallback");
                 r.fallback.execute(r.resolve, ConeFeatures::of(settings));
             }
-            if (settings.temporalAccumulation) ++r.temporalFrame;
+            if (settings.indirect.temporalAccumulation) ++r.temporalFrame;
         } else if (giWanted) {
             Profiler::Scope scope(r.profiler, "cone trace");
             r.coneTrace.execute(r.terms, r.voxels, settings);
@@ -765,14 +772,14 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
         r.terms.bind();
         int shadowLayer = -1;
         for (const ShadowView& v : r.lights.shadows2d)
-            if (v.light == settings.shadowDebugLight) shadowLayer = v.layer;
-        if (isVoxelView(settings.view)) {
+            if (v.light == settings.debug.shadowMapLight) shadowLayer = v.layer;
+        if (isVoxelView(settings.debug.view)) {
             r.post.bindHdrTarget();
             r.voxelDebug.execute(settings, giWanted ? &r.voxels : nullptr, r.voxelGeneration);
         } else {
             r.post.composite(settings, r.shadow.maps2d(), shadowLayer);
         }
-        if (settings.autoExposure && !isDataView(settings.view)) {
+        if (settings.output.autoExposure && !isDataView(settings.debug.view)) {
             const auto now = std::chrono::steady_clock::now();
             // A pause (a still render, an idle editor) does not count as adaptation time.
             const float dt = r.meteredLastFrame ? std::min(std::chrono::duration<float>(now - r.lastMetered).count(), 0.25f)
@@ -906,7 +913,8 @@ MipmapTimings Renderer::benchmarkMipmaps(int repetitions) {
 }
 
 float Renderer::exposureEv(const RenderSettings& settings) const {
-    return settings.autoExposure && impl_->meteredLastFrame ? impl_->autoExposure.readExposureEv() : settings.exposureEv;
+    return settings.output.autoExposure && impl_->meteredLastFrame ? impl_->autoExposure.readExposureEv()
+                                                                   : settings.output.exposureEv;
 }
 
 const VoxelVolume* Renderer::voxels() const { return impl_->voxelsValid ? &impl_->voxels : nullptr; }

@@ -7,18 +7,19 @@
 // dirty] → lighting terms → compose → tone map. The output is an sRGB8 texture; the linear HDR
 // image of the chosen view is kept too, for --hdr and the tests.
 
-#include "Log.h"
-#include "Overlay.h"
-#include "Profiler.h"
-#include "RenderSettings.h"
-#include "scene/CameraView.h"
-
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "Log.h"
+#include "Overlay.h"
+#include "Profiler.h"
+#include "RenderSettings.h"
+#include "gi/GiBudget.h"
+#include "scene/CameraView.h"
 
 namespace lit {
 
@@ -67,11 +68,14 @@ public:
     void setScene(const Scene& scene);
 
     // Renders one frame of `scene` (the one given to setScene, possibly edited since) into the
-    // output textures, sized settings.width × settings.height. A 0×0 size renders nothing.
-    void render(const Scene& scene, const CameraView& camera, const RenderSettings& settings);
+    // output textures, sized settings.output.width × settings.output.height. A 0×0 size renders nothing.
+    // `budget`: the GI work this frame may do (gi/GiBudget.h); the default finishes a GI update in
+    // this frame and leaves the refinement waiting.
+    void render(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+                const GiBudget& budget = GiBudget::updateOnly());
 
     // Output of the last frame: tone-mapped sRGB (GL_SRGB8_ALPHA8) and linear HDR (GL_RGBA16F
-    // → GL_RGBA32F on read) of settings.view.
+    // → GL_RGBA32F on read) of settings.debug.view.
     const gl::Texture& outputTexture() const;
     const gl::Texture& hdrTexture() const;
     std::vector<std::uint8_t> readOutputRgba8() const;  // bottom-up rows, RGBA8
@@ -99,8 +103,8 @@ public:
     // before one). With the last injection's anisotropic setting.
     MipmapTimings benchmarkMipmaps(int repetitions);
     // The exposure (stops) the last frame was tone-mapped with: the metered one when
-    // settings.autoExposure was on for it (reads a GPU buffer back: tools and tests), else
-    // settings.exposureEv.
+    // settings.output.autoExposure was on for it (reads a GPU buffer back: tools and tests), else
+    // settings.output.exposureEv.
     float exposureEv(const RenderSettings& settings) const;
     // The voxel volume of the last GI frame, for debug views and tests; nullptr before one.
     const VoxelVolume* voxels() const;

@@ -16,12 +16,10 @@ render="$build/tools/lit-render"
 mkdir -p "$out"
 
 "$render" "$scene" --out "$out/cornell_gi_off.png" --size "$size" --gi off
-# The default (cached) GI mode as the editor shows it once the view is left alone: the voxels'
-# irradiance refined with all 16 cone sets over 16 more frames (docs/GI.md, "The cached mode").
-refined=(--frames 17 --voxel-irradiance-refine 1000000)
+# lit-render's stills converge: the default (cached) GI mode as the editor shows it once the
+# view is left alone, the voxels' irradiance refined with all 16 cone sets.
 for view in final direct-diffuse indirect-diffuse direct-specular indirect-specular voxels; do
-    "$render" "$scene" --out "$out/cornell_gi_${view}.png" --size "$size" --gi on --voxels 128 --view "$view" \
-        "${refined[@]}"
+    "$render" "$scene" --out "$out/cornell_gi_${view}.png" --size "$size" --gi on --voxels 128 --view "$view"
 done
 
 # The same view path-traced by Lit's reference (docs/REFERENCE.md): two bounces (the light paths
@@ -36,7 +34,7 @@ spp="${LIT_SCREENSHOT_SPP:-512}"
     --hdr "$tmpdir/reference_2bounces.hdr"
 "$render" "$scene" --reference --bounces 1 --spp "$spp" --size "$size" --out "$out/cornell_reference_1bounce.png"
 "$render" "$scene" --reference --bounces all --spp "$spp" --size "$size" --out "$out/cornell_reference_all.png"
-"$render" "$scene" --size "$size" --gi on --voxels 128 "${refined[@]}" --compare "$tmpdir/reference_2bounces.hdr" \
+"$render" "$scene" --size "$size" --gi on --voxels 128 --compare "$tmpdir/reference_2bounces.hdr" \
     --difference "$out/cornell_gi_difference.png"
 "$render" "$scene" --size "$size" --gi on --voxels 128 --gi-mode accurate \
     --out "$out/cornell_gi_accurate.png" --compare "$tmpdir/reference_2bounces.hdr" \
@@ -76,26 +74,26 @@ panel timeline off
 panel log off
 panel stats off
 view voxel-slice
-setting voxelChannel albedo
-setting voxelMip 1
-setting voxelSliceAxis 1
-setting voxelSlice 0.2
+setting debug.voxelChannel albedo
+setting debug.voxelMip 1
+setting debug.voxelSliceAxis 1
+setting debug.voxelSlice 0.2
 wait 2
 screenshot $out/editor_voxel_slice.png ui
 panel stats on
-setting voxelMip 0
+setting debug.voxelMip 0
 view cone-directions
-setting giMode fast
+setting gi.mode fast
 wait 2
 pick 520 560
 wait 1
 screenshot $out/editor_cone_directions.png ui
-setting giMode accurate
+setting gi.mode accurate
 wait 2
 pick 520 560
 wait 1
 screenshot $out/editor_cone_directions_accurate.png ui
-setting giMode cached
+setting gi.mode cached
 view final
 panel settings off
 panel camera off

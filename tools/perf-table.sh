@@ -75,7 +75,8 @@ results="$work/results"
 mkdir -p "$results"
 
 # run NAME [lit-render flags...]: one benchmark of $benchScene, its summary printed, its JSON kept
-# as NAME.json.
+# as NAME.json. Each runs the single-frame steady state (the GI update in the first frame, no
+# refinement) unless it sets the GI work per frame itself.
 benchScene="$scene"
 benchSize="$size"
 run() {
@@ -84,7 +85,10 @@ run() {
     echo "== $name: lit-render $(basename "$benchScene") --size $benchSize $*"
     local timer=()
     [[ -x /usr/bin/time ]] && timer=(/usr/bin/time -f "%U %S" -o "$results/$name.cpu")
-    "${timer[@]}" "$render" "$benchScene" --size "$benchSize" --json "$results/$name.json" "$@" | grep -v '^wrote '
+    local budget=(--single-frame)
+    [[ " $* " == *" --gi-update-per-frame "* ]] && budget=()
+    "${timer[@]}" "$render" "$benchScene" --size "$benchSize" --json "$results/$name.json" "${budget[@]}" "$@" \
+        | grep -v '^wrote '
 }
 
 run "gi-off" --bench "$frames" --gi off --culling on
@@ -132,9 +136,9 @@ if [[ "$fast" == 1 ]]; then
     run "gi-updates-256" --bench 1 --gi on --voxels 256 --settings "$work/rgba8.json" --bench-gi-updates 3 \
         | tee "$results/gi-updates-256.txt"
     # The editor's light edit: the cached mode traces the voxel irradiance of 16384 voxels per frame
-    # after an edit (editor/Document.cpp), so its edit frame, not the whole update, is what a user waits on.
+    # after an edit (editor/EditorState.h), so its edit frame, not the whole update, is what a user waits on.
     run "gi-updates-256-editor" --bench 1 --gi on --voxels 256 --settings "$work/rgba8.json" --bench-gi-updates 3 \
-        --voxel-irradiance-per-frame 16384 | tee "$results/gi-updates-256-editor.txt"
+        --gi-update-per-frame 16384 --gi-refine-per-frame 0 | tee "$results/gi-updates-256-editor.txt"
 fi
 
 if [[ -n "$compareRev" ]]; then
@@ -334,7 +338,7 @@ if fast_rounds:
             w(f"| {t} | {r['flickerPercent']:.3f} % | {r['flickerWorstPercent']:.3f} % | {r['frameMs']['mean']:.0f} |")
     for name, how in (("gi-updates-256", "the whole update in one frame, `lit-render --bench 1 --bench-gi-updates 3`"),
                       ("gi-updates-256-editor", "the edit frame as the editor runs it, the voxel irradiance of 16384 "
-                       "voxels per frame, `--voxel-irradiance-per-frame 16384`")):
+                       "voxels per frame, `--gi-update-per-frame 16384`")):
         upd = os.path.join(results, name + ".txt")
         if not os.path.exists(upd):
             continue

@@ -50,7 +50,7 @@ cp "$root/assets/cornell_box.gltf" "$root/assets/cornell_box.bin" "$work/scene/"
 # ended by time, not by the script's end).
 block() {
     cat <<'BLOCK'
-setting voxelResolution 64
+setting gi.voxelResolution 64
 select tall_box
 set node.translation 0.2 0.3 -0.1
 wait 2
@@ -72,12 +72,12 @@ wait 2
 view indirect-diffuse
 wait 2
 view final
-setting gi false
+setting gi.enabled false
 wait 2
-setting gi true
-setting voxelResolution 128
+setting gi.enabled true
+setting gi.voxelResolution 128
 wait 3
-setting voxelResolution 64
+setting gi.voxelResolution 64
 wait 3
 key add
 time 2

@@ -28,19 +28,19 @@ void AutoExposurePass::execute(const gl::Texture& hdr, const RenderSettings& set
     const auto groups = [](int pixels) {
         return static_cast<GLuint>((pixels + LIT_EXPOSURE_GROUP_SIZE - 1) / LIT_EXPOSURE_GROUP_SIZE);
     };
-    glDispatchCompute(groups(settings.width), groups(settings.height), 1);
+    glDispatchCompute(groups(settings.output.width), groups(settings.output.height), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     adapt_.use();
-    adapt_.set("uKey", settings.autoExposureKey);
-    adapt_.set("uCompensationEv", settings.exposureEv);
-    adapt_.set("uMinEv", settings.autoExposureMinEv);
-    adapt_.set("uMaxEv", settings.autoExposureMaxEv);
+    adapt_.set("uKey", settings.output.autoExposureKey);
+    adapt_.set("uCompensationEv", settings.output.exposureEv);
+    adapt_.set("uMinEv", settings.output.autoExposureMinEv);
+    adapt_.set("uMaxEv", settings.output.autoExposureMaxEv);
     // Share of the way to the target this frame: 1 − e^(−speed·Δt); all of it when adaptation is
     // instant (speed 0) or the previous value is not valid.
-    const float blend = !valid_ || settings.autoExposureSpeed <= 0.0f
+    const float blend = !valid_ || settings.output.autoExposureSpeed <= 0.0f
                             ? 1.0f
-                            : 1.0f - std::exp(-settings.autoExposureSpeed * std::max(deltaSeconds, 0.0f));
+                            : 1.0f - std::exp(-settings.output.autoExposureSpeed * std::max(deltaSeconds, 0.0f));
     adapt_.set("uBlend", blend);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_UNIFORM_BARRIER_BIT);

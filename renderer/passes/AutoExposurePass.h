@@ -17,7 +17,7 @@ class AutoExposurePass : public Pass {
 public:
     explicit AutoExposurePass(const std::filesystem::path& shaderRoot);
 
-    // Meters `hdr` (RGBA32F, settings.width × height) and adapts. `deltaSeconds` is the time since
+    // Meters `hdr` (RGBA32F, settings.output.width × height) and adapts. `deltaSeconds` is the time since
     // the previous metered frame; the first frame after reset() takes the metered value at once.
     void execute(const gl::Texture& hdr, const RenderSettings& settings, float deltaSeconds);
     void reset() { valid_ = false; }

@@ -8,8 +8,8 @@
 namespace lit {
 
 ConeFeatures ConeFeatures::of(const RenderSettings& settings) {
-    return {settings.anisotropicVoxels, settings.coneFootprintPerHeight > 0.0f, settings.diffuseFromVoxelIrradiance,
-            std::clamp(settings.voxelRays, 0, kMaxVoxelRays)};
+    return {settings.gi.anisotropicVoxels(), settings.gi.footprintPerHeight() > 0.0f, settings.gi.voxelIrradiance(),
+            std::clamp(settings.gi.voxelRays, 0, kMaxVoxelRays)};
 }
 
 std::string ConeFeatures::defines() const {

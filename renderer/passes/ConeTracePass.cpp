@@ -60,10 +60,11 @@ void ConeTracePass::buildAlbedoTable() {
 
 ConeTracePass::Work ConeTracePass::workFor(const RenderSettings& settings) {
     Work work;
-    if (!settings.gi) return work;
-    work.diffuse = settings.view == View::IndirectDiffuse || (settings.view == View::Final && settings.indirectDiffuse);
-    work.specular =
-        settings.view == View::IndirectSpecular || (settings.view == View::Final && settings.indirectSpecular);
+    if (!settings.gi.enabled) return work;
+    work.diffuse = settings.debug.view == View::IndirectDiffuse ||
+                   (settings.debug.view == View::Final && settings.terms.indirectDiffuse);
+    work.specular = settings.debug.view == View::IndirectSpecular ||
+                    (settings.debug.view == View::Final && settings.terms.indirectSpecular);
     return work;
 }
 
@@ -93,18 +94,19 @@ void ConeTracePass::bindAlbedoTable() {
 }
 
 int ConeTracePass::indirectScale(const RenderSettings& settings) {
-    return settings.indirectScale <= 1 ? 1 : (settings.indirectScale <= 2 ? 2 : 4);
+    return settings.indirect.scale <= 1 ? 1 : (settings.indirect.scale <= 2 ? 2 : 4);
 }
 
 bool ConeTracePass::reducedPath(const RenderSettings& settings) {
     // The voxel-irradiance gather (the cached GI mode) exists only in the reduced path's shaders.
-    return indirectScale(settings) > 1 || settings.temporalAccumulation || ConeFeatures::of(settings).footprint ||
-           settings.diffuseFromVoxelIrradiance;
+    return indirectScale(settings) > 1 || settings.indirect.temporalAccumulation ||
+           ConeFeatures::of(settings).footprint || settings.gi.voxelIrradiance();
 }
 
 bool ConeTracePass::coneSubsets(const RenderSettings& settings) {
     // With the voxel-irradiance gather there are no diffuse cones to split into subsets.
-    return settings.temporalAccumulation && settings.temporalConeSubsets && !settings.diffuseFromVoxelIrradiance;
+    return settings.indirect.temporalAccumulation && settings.indirect.temporalConeSubsets &&
+           !settings.gi.voxelIrradiance();
 }
 
 ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scale, bool coneSubsets) {
@@ -126,7 +128,7 @@ ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scal
 void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettings& settings,
                                    const Sampling& sampling) {
     const int scale = indirectScale(settings);
-    const int w = (settings.width + scale - 1) / scale, h = (settings.height + scale - 1) / scale;
+    const int w = (settings.output.width + scale - 1) / scale, h = (settings.output.height + scale - 1) / scale;
     if (low_.select(w, h) == TargetsBySize<LowTargets>::Selected::Empty) {
         LowTargets& t = low_.current();
         t.packed = gl::Texture("indirect terms (reduced)", {GL_TEXTURE_2D, GL_RGBA32UI, w, h, 1, 1});
@@ -172,7 +174,7 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         program.use();
         const GLuint id = program.id();
         glProgramUniform2i(id, program.location("uTraceTerms"), work.diffuse ? 1 : 0, work.specular ? 1 : 0);
-        glProgramUniform1f(id, program.location("uSmoothRoughness"), settings.specularFullResRoughness);
+        glProgramUniform1f(id, program.location("uSmoothRoughness"), settings.indirect.specularFullResRoughness);
         glProgramUniform1i(id, program.location("uScale"), scale);
         glProgramUniform2i(id, program.location("uJitter"), sampling.jitter.x, sampling.jitter.y);
         glProgramUniform1f(id, program.location("uRotation"), sampling.rotation);

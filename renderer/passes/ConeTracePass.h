@@ -36,7 +36,7 @@ public:
     // carries intensity, trace distance, step scale, aperture and specular sample count), and a
     // radiance volume whose mip chain is up to date. Binds volume.radiance() to
     // LIT_TEX_VOXEL_RADIANCE and its albedo table to LIT_TEX_SPECULAR_ALBEDO itself. Terms that
-    // are neither shown (settings.view) nor switched on are written as 0 without tracing them.
+    // are neither shown (settings.debug.view) nor switched on are written as 0 without tracing them.
     void execute(const LightingTerms& terms, const VoxelVolume& volume, const RenderSettings& settings);
 
     // Which pixel of each block is traced and how the cone sets are turned this frame (temporal

@@ -17,7 +17,7 @@ void DirectLightingPass::execute(const LightingTerms& terms, const RenderSetting
     glDisable(GL_DEPTH_TEST);
     const gl::Program& program = programs_.get(shadows);
     program.use();
-    program.set("uShadowNormalOffset", settings.shadowNormalOffset);
+    program.set("uShadowNormalOffset", settings.shadows.normalOffset);
     triangle_.draw();
 }
 

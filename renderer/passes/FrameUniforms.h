@@ -10,7 +10,7 @@
 
 namespace lit {
 
-// `shaderView` is the LIT_VIEW_* value of settings.view; `lightCount` the GpuLight entries bound;
+// `shaderView` is the LIT_VIEW_* value of settings.debug.view; `lightCount` the GpuLight entries bound;
 // `sky` the resolved sky (none: black, as before there was a sky).
 inline gpu::FrameUniforms makeFrameUniforms(const CameraView& camera, const RenderSettings& settings, int shaderView,
                                             int lightCount, const Sky* sky = nullptr) {
@@ -20,9 +20,9 @@ inline gpu::FrameUniforms makeFrameUniforms(const CameraView& camera, const Rend
     frame.viewProjection = camera.projection * camera.view;
     frame.inverseViewProjection = glm::inverse(frame.viewProjection);
     frame.cameraPosition = glm::vec4(camera.position, 1.0f);
-    const float w = static_cast<float>(settings.width), h = static_cast<float>(settings.height);
+    const float w = static_cast<float>(settings.output.width), h = static_cast<float>(settings.output.height);
     frame.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
-    frame.exposure = glm::vec4(settings.exposureScale(), settings.shadowPcfRadius, 0.0f, 0.0f);
+    frame.exposure = glm::vec4(settings.output.exposureScale(), settings.shadows.pcfRadius, 0.0f, 0.0f);
     frame.counts = glm::ivec4(lightCount, shaderView, 0, 0);
     if (sky) {
         const int mode = sky->mode == SkyMode::Uniform    ? LIT_SKY_UNIFORM

@@ -111,7 +111,7 @@ void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& con
         resetHistory();
         return;
     }
-    const bool temporal = settings.temporalAccumulation;
+    const bool temporal = settings.indirect.temporalAccumulation;
     Targets& t = targetsFor(terms, temporal);
     last_.targets = &t;
     last_.history = -1;
@@ -128,10 +128,10 @@ void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& con
     last_.cone = &cone;
     last_.volume = &volume;
     last_.traceTerms = {work.diffuse ? 1 : 0, work.specular ? 1 : 0};
-    last_.smoothRoughness = settings.specularFullResRoughness;
+    last_.smoothRoughness = settings.indirect.specularFullResRoughness;
     last_.scale = ConeTracePass::indirectScale(settings);
     last_.sampling = sampling;
-    last_.maxFrames = std::max(settings.temporalMaxFrames, 1);
+    last_.maxFrames = std::max(settings.indirect.temporalMaxFrames, 1);
     last_.clampMargin = clampMargin(settings, sampling);
     const gl::Program& program = temporal ? program_ : plainProgram_;
     bindInputs(program);

@@ -37,7 +37,7 @@ public:
     // (ConeTracePass::executeReduced of this frame with the same settings and `sampling`).
     // Expects bound as for ConeTracePass: the G-buffer, the frame UBO (this frame's camera), the
     // voxel UBO; binds the radiance volume and albedo table itself. With
-    // settings.temporalAccumulation the history of the last temporal frame at this size is blended
+    // settings.indirect.temporalAccumulation the history of the last temporal frame at this size is blended
     // in when it is valid (no reset since), reprojected with the view-projection of the frame that
     // wrote it; `viewProjection` is this frame's (world → clip), kept with the history it writes.
     void execute(const LightingTerms& terms, ConeTracePass& cone, const VoxelVolume& volume,

@@ -60,11 +60,11 @@ LightSetup buildLightSetup(const Scene& scene, const Aabb& sceneBounds, const Re
         g.colorIntensity = glm::vec4(light.color, light.intensity);
         const glm::vec2 spot = spotAngleScaleOffset(light.innerConeAngle, light.outerConeAngle);
         g.spotShadow = glm::vec4(spot, -1.0f, 0.0f);
-        g.shadowParams = glm::vec4(0.0f, 1.0f, settings.shadowDepthBias, settings.shadowSlopeBias);
+        g.shadowParams = glm::vec4(0.0f, 1.0f, settings.shadows.depthBias, settings.shadows.slopeBias);
         g.shadowViewProjection = glm::mat4(1.0f);
 
         const int lightIndex = static_cast<int>(setup.lights.size());
-        if (settings.shadows && light.castsShadow) {
+        if (settings.shadows.enabled && light.castsShadow) {
             ShadowView view;
             view.light = lightIndex;
             view.position = position;
@@ -125,7 +125,7 @@ LightSetup buildLightSetup(const Scene& scene, const Aabb& sceneBounds, const Re
         Light sun;
         sun.name = "default sun";
         sun.type = LightType::Directional;
-        sun.intensity = settings.defaultSunIrradiance;
+        sun.intensity = settings.sky.sunIrradiance;
         addLight(sun, glm::vec3(0.0f), defaultSunDirection(settings));
     }
     if (warnedShadows) log.warning("too many shadow-casting lights; some lights render without shadows");

@@ -49,11 +49,11 @@ void PostPass::bindOutputTarget() const {
 void PostPass::composite(const RenderSettings& settings, const gl::Texture& shadowMaps, int shadowLayer) {
     bindHdrTarget();
     glDisable(GL_DEPTH_TEST);
-    const gl::Program& program = settings.view == View::Final ? finalComposite_ : composite_;
+    const gl::Program& program = settings.debug.view == View::Final ? finalComposite_ : composite_;
     program.use();
-    glProgramUniform4i(program.id(), program.location("uTerms"), settings.directDiffuse,
-                       settings.gi && settings.indirectDiffuse, settings.directSpecular,
-                       settings.gi && settings.indirectSpecular);
+    glProgramUniform4i(program.id(), program.location("uTerms"), settings.terms.directDiffuse,
+                       settings.gi.enabled && settings.terms.indirectDiffuse, settings.terms.directSpecular,
+                       settings.gi.enabled && settings.terms.indirectSpecular);
     if (&program == &composite_) composite_.set("uShadowLayer", shadowLayer);
     shadowMaps.bind(LIT_TEX_DEBUG_INPUT);
     plainSampler_.bind(LIT_TEX_DEBUG_INPUT);
@@ -66,9 +66,9 @@ void PostPass::tonemap(const RenderSettings& settings) {
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_FRAMEBUFFER_SRGB);
     tonemap_.use();
-    tonemap_.set("uDataView", isDataView(settings.view) ? 1 : 0);
+    tonemap_.set("uDataView", isDataView(settings.debug.view) ? 1 : 0);
     // The exposure buffer is bound by the Renderer (AutoExposurePass) when auto exposure is on.
-    tonemap_.set("uAutoExposure", settings.autoExposure && !isDataView(settings.view) ? 1 : 0);
+    tonemap_.set("uAutoExposure", settings.output.autoExposure && !isDataView(settings.debug.view) ? 1 : 0);
     targets_->hdr.bind(LIT_TEX_HDR_INPUT);
     triangle_.draw();
     glDisable(GL_FRAMEBUFFER_SRGB);

@@ -55,7 +55,7 @@ void ShadowPass::bindMaps() const {
 
 void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
                          const RenderSettings& settings, DrawCounters& counters, const ItemCuller& cull) {
-    const int size = std::clamp(settings.shadowMapSize, 16, 8192);
+    const int size = std::clamp(settings.shadows.mapSize, 16, 8192);
     ensureMaps(size, static_cast<int>(lights.shadows2d.size()), static_cast<int>(lights.shadowsCube.size()));
     if (gpuScene.empty()) return;
 
@@ -66,7 +66,7 @@ void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const Lig
     glDisable(GL_CULL_FACE);  // both faces cast: thin single-sided walls must block light
     glEnable(GL_POLYGON_OFFSET_FILL);
     // Slope-scaled bias in depth-buffer units; the constant part is in the receiver test.
-    glPolygonOffset(settings.shadowSlopeBias, 1.0f);
+    glPolygonOffset(settings.shadows.slopeBias, 1.0f);
     program_.use();
     uniforms_.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_SHADOW_PASS);
     gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);

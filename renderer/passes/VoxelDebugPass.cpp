@@ -36,12 +36,12 @@ VoxelDebugPass::VoxelDebugPass(const std::filesystem::path& shaderRoot)
       decode_(shaderRoot, "voxel debug decode", {{GL_COMPUTE_SHADER, "voxel_debug_decode.comp.glsl"}}) {}
 
 int VoxelDebugPass::mipLevel(const RenderSettings& settings, const VoxelVolume& volume) {
-    return std::clamp(settings.voxelMip, 0, std::max(volume.mipCount() - 1, 0));
+    return std::clamp(settings.debug.voxelMip, 0, std::max(volume.mipCount() - 1, 0));
 }
 
 int VoxelDebugPass::sliceIndex(const RenderSettings& settings, const VoxelVolume& volume) {
     const int side = std::max(volume.resolution() >> mipLevel(settings, volume), 1);
-    const float position = std::clamp(settings.voxelSlice, 0.0f, 1.0f);
+    const float position = std::clamp(settings.debug.voxelSlice, 0.0f, 1.0f);
     return std::clamp(static_cast<int>(std::floor(position * static_cast<float>(side))), 0, side - 1);
 }
 
@@ -77,17 +77,17 @@ void VoxelDebugPass::execute(const RenderSettings& settings, const VoxelVolume* 
         glClearBufferfv(GL_COLOR, 0, black);
         return;
     }
-    const VoxelChannel channel = settings.voxelChannel;
+    const VoxelChannel channel = settings.debug.voxelChannel;
     if (!readsRadianceVolume(channel)) decode(*volume, channel, voxelGeneration);
     const gl::Texture& source = readsRadianceVolume(channel) ? volume->radiance() : decoded_;
 
     view_.use();
     volume->uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     source.bind(LIT_TEX_DEBUG_INPUT);
-    view_.set("uSlice", settings.view == View::VoxelSlice ? 1 : 0);
+    view_.set("uSlice", settings.debug.view == View::VoxelSlice ? 1 : 0);
     view_.set("uChannel", toShaderChannel(channel));
     view_.set("uMip", mipLevel(settings, *volume));
-    view_.set("uAxis", std::clamp(settings.voxelSliceAxis, 0, 2));
+    view_.set("uAxis", std::clamp(settings.debug.voxelSliceAxis, 0, 2));
     view_.set("uSliceIndex", sliceIndex(settings, *volume));
     triangle_.draw();
 }

@@ -28,7 +28,7 @@ class VoxelDebugPass : public Pass {
 public:
     explicit VoxelDebugPass(const std::filesystem::path& shaderRoot);
 
-    // Draws settings.view into the bound framebuffer (viewport set by the caller, the frame UBO
+    // Draws settings.debug.view into the bound framebuffer (viewport set by the caller, the frame UBO
     // bound). `volume` is nullptr when there is none (GI off): the view is black.
     // `voxelGeneration` must change whenever the volume's material volumes were rewritten.
     void execute(const RenderSettings& settings, const VoxelVolume* volume, std::uint64_t voxelGeneration);

@@ -164,13 +164,12 @@ void VoxelVolume::updateUniforms(const RenderSettings& settings, int frameIndex)
     u.volumeMin = glm::vec4(min_, side_);
     const float n = static_cast<float>(resolution_);
     u.voxelInfo = glm::vec4(n, 1.0f / n, side_ / n, static_cast<float>(mipCount_));
-    u.traceParams = glm::vec4(settings.indirectIntensity, settings.maxTraceDistance * side_,
-                              std::max(settings.coneStepScale, 0.05f), settings.diffuseConeAperture);
-    u.traceOptions = glm::ivec4(std::clamp(settings.specularSamples, 1, 8), frameIndex,
+    u.traceParams = glm::vec4(settings.gi.indirectIntensity, settings.gi.maxTraceDistance * side_,
+                              std::max(settings.gi.coneStepScale, 0.05f), settings.gi.diffuseConeAperture);
+    u.traceOptions = glm::ivec4(std::clamp(settings.indirect.specularSamples, 1, 8), frameIndex,
                                 rgba8_ ? LIT_RADIANCE_RGBA8 : LIT_RADIANCE_FLOAT16, 0);
-    u.giParams = glm::vec4(std::max(settings.coneFootprintPerHeight, 0.0f), settings.anisotropicVoxels ? 1.0f : 0.0f,
-                           0.0f, 0.0f);
-    const float range = rgba8_ ? std::max(settings.voxelRadianceRange, 1e-3f) : 1.0f;
+    u.giParams = glm::vec4(settings.gi.footprintPerHeight(), settings.gi.anisotropicVoxels() ? 1.0f : 0.0f, 0.0f, 0.0f);
+    const float range = rgba8_ ? std::max(settings.gi.radianceRange, 1e-3f) : 1.0f;
     u.radianceScale = glm::vec4(1.0f / range, range, 0.0f, 0.0f);
     uniforms_.update(u);
     uniforms_.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);

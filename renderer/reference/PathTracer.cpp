@@ -327,8 +327,8 @@ std::vector<float> ReferenceImage::viewRgb(View view, const RenderSettings& sett
     if (!referenceRendersView(view))
         throw std::invalid_argument("the reference renders only the final image and the four lighting terms, not '" +
                                     std::string(toString(view)) + "'");
-    bool on[kTermCount] = {settings.directDiffuse, settings.directSpecular, settings.indirectDiffuse,
-                           settings.indirectSpecular};
+    bool on[kTermCount] = {settings.terms.directDiffuse, settings.terms.directSpecular, settings.terms.indirectDiffuse,
+                           settings.terms.indirectSpecular};
     if (view != View::Final) {
         const Term only = view == View::DirectDiffuse    ? Term::DirectDiffuse
                           : view == View::DirectSpecular ? Term::DirectSpecular

@@ -37,16 +37,7 @@ void ProgressiveReference::update(const Scene& scene, const CameraView& camera, 
     key.bounces = settings.bounces;
     key.seed = settings.seed;
     if (lighting) {
-        key.lighting = {true,
-                        static_cast<int>(lighting->skyMode),
-                        lighting->skyZenith,
-                        lighting->skyHorizon,
-                        lighting->skyGround,
-                        lighting->skyIntensity,
-                        lighting->skyHdrPath,
-                        lighting->defaultSunIrradiance,
-                        lighting->defaultSunElevation,
-                        lighting->defaultSunAzimuth};
+        key.lighting = {true, lighting->sky};
     }
     {
         std::lock_guard lock(mutex_);

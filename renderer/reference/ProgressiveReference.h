@@ -65,14 +65,10 @@ private:
         ReferenceSettings settings;
         std::optional<RenderSettings> lighting;
     };
-    // The RenderSettings fields the sky and the default sun depend on.
+    // The RenderSettings the sky and the default sun depend on.
     struct LightingKey {
         bool given = false;
-        int skyMode = 0;
-        std::array<float, 3> zenith{}, horizon{}, ground{};
-        float skyIntensity = 0.0f;
-        std::string skyHdrPath;
-        float sunIrradiance = 0.0f, sunElevation = 0.0f, sunAzimuth = 0.0f;
+        SkySettings sky;
         bool operator==(const LightingKey&) const = default;
     };
     struct Key {

@@ -100,10 +100,10 @@ ReferenceScene::ReferenceScene(const Scene& scene, Log& log) : impl_(std::make_u
     // The same light table the GL passes upload (positions, directions, spot factors, the
     // LIT_MAX_LIGHTS cap); shadow maps are not needed here.
     RenderSettings lightSettings;
-    lightSettings.shadows = false;
+    lightSettings.shadows.enabled = false;
     // Only the scene's own lights: a front end that wants the rasterizer's default sun for a scene
     // without lights adds it to the Scene it gives (lit-render --reference does, scene/Sky.h).
-    lightSettings.defaultSunIrradiance = 0.0f;
+    lightSettings.sky.sunIrradiance = 0.0f;
     lights_ = buildLightSetup(scene, scene.worldBounds(), lightSettings, log).lights;
 
     s.device = rtcNewDevice(nullptr);

@@ -302,12 +302,12 @@ std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec
     const glm::vec3 v = normalizedOr(cameraPosition - surface.position, surface.normal);
     const glm::vec3 n = shadingNormal(normalizedOr(surface.normal, {0, 1, 0}), v);
     const glm::vec3 origin = surface.position + n * (float(LIT_CONE_NORMAL_OFFSET_VOXELS) * surface.voxelSize);
-    const float maxDistance = settings.maxTraceDistance * surface.volumeSide;
+    const float maxDistance = settings.gi.maxTraceDistance * surface.volumeSide;
 
     std::vector<TracedCone> cones;
     const glm::mat3 basis = tangentFrame(n);
     // traceCone clamps the aperture.
-    const float diffuseAperture = std::clamp(settings.diffuseConeAperture, 0.0f, float(LIT_CONE_APERTURE_MAX));
+    const float diffuseAperture = std::clamp(settings.gi.diffuseConeAperture, 0.0f, float(LIT_CONE_APERTURE_MAX));
     // The accurate mode (indirect_trace.frag.glsl, LIT_CONE_FOOTPRINT): the stratified set of the
     // pixel's low-resolution texel (rotation 0: coneSetRotation), each cone footprint-bounded.
     const int coneSet = coneSetOfPixel(surface.glPixel, settings);
@@ -320,7 +320,7 @@ std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec
             // traceDiffuseCone / traceDiffuseStratified: start height √3 voxels, rising at n·d = local.z.
             if (coneSet >= 0) {
                 cone.coneSet = coneSet;
-                cone.footprintPerHeight = settings.coneFootprintPerHeight;
+                cone.footprintPerHeight = settings.gi.footprintPerHeight();
                 cone.startHeight = float(LIT_CONE_NORMAL_OFFSET_VOXELS) * surface.voxelSize;
                 cone.heightPerDistance = local.z;
             }
@@ -328,12 +328,12 @@ std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec
         }
 
     // traceSpecular with the pixel's gl_FragCoord.xy (the pixel centre) and frame index 0.
-    const int count = std::clamp(settings.specularSamples, 1, LIT_SPECULAR_MAX_SAMPLES);
+    const int count = std::clamp(settings.indirect.specularSamples, 1, LIT_SPECULAR_MAX_SAMPLES);
     const float alpha = alphaFromRoughness(surface.roughness);
     const float aperture = specularConeAperture(alpha, count);
     // specularCanReuseDiffuseCones, with the unclamped aperture the shader gets (traceParams.w).
     const bool marched =
-        !(surface.diffuse && aperture >= settings.diffuseConeAperture - float(LIT_CONE_REUSE_TOLERANCE));
+        !(surface.diffuse && aperture >= settings.gi.diffuseConeAperture - float(LIT_CONE_REUSE_TOLERANCE));
     const glm::vec2 fragCoord = glm::vec2(surface.glPixel) + 0.5f;
     const std::size_t firstSpecular = cones.size();
     float weightSum = 0.0f;

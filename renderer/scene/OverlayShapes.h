@@ -53,7 +53,7 @@ struct TracedCone {
     glm::vec3 apex{0.0f};       // world (m): the surface point moved √3 voxels along the shading normal
     glm::vec3 direction{0.0f};  // unit world axis
     float aperture = 0.0f;      // full apex angle (rad)
-    float length = 0.0f;        // maximum march distance (m): settings.maxTraceDistance × volume side
+    float length = 0.0f;        // maximum march distance (m): settings.gi.maxTraceDistance × volume side
     float weight = 0.0f;        // diffuse: W_i/π (sums to 1); specular: the sample's normalised weight
     bool specular = false;
     // False for specular samples of rough lobes on diffuse surfaces: the shader marches no cone

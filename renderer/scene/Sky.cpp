@@ -38,14 +38,14 @@ bool sceneHasLights(const Scene& scene) {
 
 Sky resolveSky(const Scene& scene, const RenderSettings& settings, const SkyImage* image) {
     Sky sky;
-    sky.mode = settings.skyMode;
+    sky.mode = settings.sky.mode;
     if (sky.mode == SkyMode::Auto) sky.mode = sceneHasLights(scene) ? SkyMode::None : SkyMode::Gradient;
     if (sky.mode == SkyMode::Hdr && (!image || image->texels.empty())) sky.mode = SkyMode::Gradient;
     const auto vec = [](const std::array<float, 3>& a) { return glm::vec3(a[0], a[1], a[2]); };
-    sky.zenith = vec(settings.skyZenith);
-    sky.horizon = vec(settings.skyHorizon);
-    sky.ground = vec(settings.skyGround);
-    sky.intensity = settings.skyIntensity;
+    sky.zenith = vec(settings.sky.zenith);
+    sky.horizon = vec(settings.sky.horizon);
+    sky.ground = vec(settings.sky.ground);
+    sky.intensity = settings.sky.intensity;
     sky.image = sky.mode == SkyMode::Hdr ? image : nullptr;
     return sky;
 }
@@ -94,9 +94,9 @@ glm::vec3 skyRadiance(const Sky& sky, glm::vec3 direction) {
 std::function<glm::vec3(const glm::vec3&)> makeSkyFunction(const Scene& scene, const RenderSettings& settings,
                                                           std::string* error) {
     std::shared_ptr<SkyImage> image;
-    if (settings.skyMode == SkyMode::Hdr) {
+    if (settings.sky.mode == SkyMode::Hdr) {
         try {
-            image = std::make_shared<SkyImage>(loadSkyImage(settings.skyHdrPath));
+            image = std::make_shared<SkyImage>(loadSkyImage(settings.sky.hdrPath));
         } catch (const SkyLoadError& e) {
             if (error) *error = e.what();
         }
@@ -107,7 +107,7 @@ std::function<glm::vec3(const glm::vec3&)> makeSkyFunction(const Scene& scene, c
 }
 
 bool hasDefaultSun(const Scene& scene, const RenderSettings& settings) {
-    return settings.defaultSunIrradiance > 0.0f && !sceneHasLights(scene);
+    return settings.sky.sunIrradiance > 0.0f && !sceneHasLights(scene);
 }
 
 bool addDefaultSun(Scene& scene, const RenderSettings& settings) {
@@ -115,14 +115,14 @@ bool addDefaultSun(Scene& scene, const RenderSettings& settings) {
     Light sun;
     sun.name = "default sun";
     sun.type = LightType::Directional;
-    sun.intensity = settings.defaultSunIrradiance;  // W/m²
+    sun.intensity = settings.sky.sunIrradiance;  // W/m²
     addLightNode(scene, sun, glm::vec3(0.0f), defaultSunDirection(settings));
     scene.updateWorldTransforms();
     return true;
 }
 
 glm::vec3 defaultSunDirection(const RenderSettings& settings) {
-    const float e = settings.defaultSunElevation, a = settings.defaultSunAzimuth;
+    const float e = settings.sky.sunElevation, a = settings.sky.sunAzimuth;
     const glm::vec3 towardsSun(std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e));
     return -glm::normalize(towardsSun);
 }

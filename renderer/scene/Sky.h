@@ -53,7 +53,7 @@ glm::vec3 skyRadiance(const Sky& sky, glm::vec3 direction);
 
 // The sky as a self-contained function of a world direction, for renderers that evaluate it on
 // the CPU (the reference path tracer's rays that leave the scene: reference::Environment). Loads
-// settings.skyHdrPath when the mode is Hdr (the closure owns the image; an unreadable file gives
+// settings.sky.hdrPath when the mode is Hdr (the closure owns the image; an unreadable file gives
 // the gradient, with the error in `*error` when given). Empty function when the sky is None.
 std::function<glm::vec3(const glm::vec3&)> makeSkyFunction(const Scene& scene, const RenderSettings& settings,
                                                           std::string* error = nullptr);

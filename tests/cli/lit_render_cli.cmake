@@ -24,7 +24,7 @@ endmacro()
 # ---- A good render ----------------------------------------------------------------------------
 set(png "${OUT_DIR}/cornell.png")
 set(hdr "${OUT_DIR}/cornell.hdr")
-run_lit_render("${cornell}" --out "${png}" --hdr "${hdr}" --size 64x64)
+run_lit_render("${cornell}" --out "${png}" --hdr "${hdr}" --size 64x64 --single-frame)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "rendering the Cornell box failed (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
 endif()
@@ -139,7 +139,8 @@ string(REPLACE "\"uri\": \"cornell_box.bin\"" "\"uri\": \"file://${OUT_DIR}/corn
 file(WRITE "${OUT_DIR}/absolute/absolute.gltf" "${absolute_json}")
 expect_failure("a file: URI without --allow-external-uris" 2 "points outside the scene's folder.*--allow-external-uris"
   "${OUT_DIR}/absolute/absolute.gltf" --out "${OUT_DIR}/absolute/refused.png" --size 16x16)
-run_lit_render("${OUT_DIR}/absolute/absolute.gltf" --allow-external-uris --out "${OUT_DIR}/absolute/read.png" --size 16x16)
+run_lit_render("${OUT_DIR}/absolute/absolute.gltf" --allow-external-uris --out "${OUT_DIR}/absolute/read.png" --size 16x16
+  --single-frame)
 if(NOT rc EQUAL 0 OR NOT EXISTS "${OUT_DIR}/absolute/read.png")
   message(FATAL_ERROR "a file: URI with --allow-external-uris did not render (exit ${rc})\nstdout:\n${out}\nstderr:\n${err}")
 endif()

@@ -35,7 +35,7 @@ rm -f "$saved" "$out/authored.bin" "$resaved"
 # 1.49 m for 0.5 to 1.05 rad), snapped to 1 m. Then the spot light and the tall box, selected
 # together, go up 1 m with one drag of the tall box's Y arrow (150 px at 3.3 m: 0.99 m, snapped).
 cat >"$out/authored.txt" <<SCRIPT
-setting gi false
+setting gi.enabled false
 add box 0 0.3 0
 set node.name new_box
 camera 0 0.3 3 0 0.3 0
@@ -78,7 +78,7 @@ checks="*.nodes=12 new_box.rotation=0,0,0.7071068,0.7071068 new_box.scale=2,1,1 
 "$check" "$saved" $checks || fail "the saved scene lacks an edit (see above)"
 
 cat >"$out/authored_again.txt" <<SCRIPT
-setting gi false
+setting gi.enabled false
 save $resaved
 select new_box
 select+ new_lamp

@@ -47,7 +47,7 @@ if ! command -v xvfb-run >/dev/null 2>&1; then
     echo "PASS (parse errors only; xvfb-run not found, so the run-time error was not tried)"
     exit 0
 fi
-printf 'setting voxelResolution 64\nsetting gi false\nselect floor\nset light.color 1 0 0\nquit\n' >"$out/runtime_error.txt"
+printf 'setting gi.voxelResolution 64\nsetting gi.enabled false\nselect floor\nset light.color 1 0 0\nquit\n' >"$out/runtime_error.txt"
 messages=$(xvfb_editor "$scene" --script "$out/runtime_error.txt" --size 160x90 2>&1)
 status=$?
 echo "$messages" | tail -n 5

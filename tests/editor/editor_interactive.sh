@@ -23,8 +23,8 @@ rm -f "$log"
 # 64³: the update is done in a few frames and the refinement (8192 voxels a frame, 15 rounds
 # over ~23 000 voxels) runs for ~40 frames after it, longer than this script.
 {
-    echo "setting voxelResolution 64"
-    echo "setting interactiveFpsTarget 60"
+    echo "setting gi.voxelResolution 64"
+    echo "setting editor.interactiveFpsTarget 60"
     echo "interactive on"
     echo "wait gi"
     echo "wait 3"

@@ -21,7 +21,7 @@ after=$out/light_red.png
 rm -f "$before" "$after"
 
 cat >"$out/light_colour.txt" <<SCRIPT
-setting voxelResolution 64
+setting gi.voxelResolution 64
 select ceiling_spot
 wait gi
 screenshot $before noui

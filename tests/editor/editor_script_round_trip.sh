@@ -21,7 +21,7 @@ rm -f "$saved" "$out/round_trip.bin" "$resaved"
 
 cat >"$out/round_trip.txt" <<SCRIPT
 # A 64^3 volume keeps each llvmpipe frame around a second.
-setting voxelResolution 64
+setting gi.voxelResolution 64
 select tall_box
 set material.roughness 0.25
 set material.roughness 0.75
@@ -48,7 +48,7 @@ run_editor "$scene" --script "$out/round_trip.txt" --size 640x360
     ceiling_spot.light.intensity=10 || fail "the saved scene lacks an edit (see above)"
 
 cat >"$out/round_trip_again.txt" <<SCRIPT
-setting voxelResolution 64
+setting gi.voxelResolution 64
 select short_box
 set node.scale 1 2 1
 save $resaved

@@ -21,7 +21,7 @@ views="final direct-diffuse indirect-diffuse direct-specular indirect-specular a
 panels="hierarchy inspector settings stats camera log timeline"
 script=$out/walkthrough.txt
 {
-    echo "setting voxelResolution 64"
+    echo "setting gi.voxelResolution 64"
     echo "select tall_box"
     echo "wait 2"
     echo "screenshot $out/panels_all.png ui"
@@ -39,11 +39,11 @@ script=$out/walkthrough.txt
     done
     # The voxel slice's other channels and axes.
     for channel in albedo normal opacity; do
-        echo "setting voxelChannel $channel"
+        echo "setting debug.voxelChannel $channel"
         echo "wait 1"
         echo "screenshot $out/view_voxel-slice-$channel.png noui"
     done
-    echo "setting voxelSliceAxis 1"
+    echo "setting debug.voxelSliceAxis 1"
     echo "wait 1"
     echo "screenshot $out/view_voxel-slice-y.png noui"
     # Cone directions: pick a pixel on the floor (window pixels, top-left origin).

@@ -53,7 +53,7 @@ Document makeDocument(int variant) {
     scene.roots = {0};
     scene.updateWorldTransforms();
     Document doc(std::move(scene), lit::CameraPath(), {});
-    doc.settings.shadowMapSize = variant == 0 ? 1024 : 2048;
+    doc.settings.shadows.mapSize = variant == 0 ? 1024 : 2048;
     return doc;
 }
 
@@ -64,7 +64,7 @@ int variantOf(const Document& doc) {
     for (int variant : {0, 1}) {
         const std::size_t side = variant == 0 ? 300 : 320;
         if (p.vertices.size() == side * side && p.vertices.back().position.y == static_cast<float>(variant) &&
-            doc.settings.shadowMapSize == (variant == 0 ? 1024 : 2048))
+            doc.settings.shadows.mapSize == (variant == 0 ? 1024 : 2048))
             return variant;
     }
     return -1;

@@ -285,15 +285,15 @@ using namespace lit::editor;
 TEST(Document, RenderSettingsChangesAreUnsavedButNotTheOutputSize) {
     Document doc = lit::editor::testing::fixtureDocument();
     ASSERT_FALSE(doc.dirty());
-    doc.settings.width = 333;  // follows the window: not a change of the document
-    doc.settings.height = 222;
+    doc.settings.output.width = 333;  // follows the window: not a change of the document
+    doc.settings.output.height = 222;
     EXPECT_FALSE(doc.dirty());
-    doc.settings.gi = !doc.settings.gi;
+    doc.settings.gi.enabled = !doc.settings.gi.enabled;
     EXPECT_TRUE(doc.dirty());
     EXPECT_FALSE(doc.canUndo());  // settings are not undo steps
     doc.markSaved();
     EXPECT_FALSE(doc.dirty());
-    doc.settings.exposureEv += 1.0f;
+    doc.settings.output.exposureEv += 1.0f;
     EXPECT_TRUE(doc.dirty());
 }
 

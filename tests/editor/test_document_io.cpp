@@ -154,12 +154,8 @@ TEST(DocumentIO, OpenGivesASceneWithoutLightsAndCamerasDefaults) {
     EXPECT_EQ(doc.scene.lights.size(), 0u);
     EXPECT_EQ(doc.scene.cameras.size(), 1u);
     EXPECT_TRUE(doc.cameraPath.empty());
-    // The renderer's defaults, but the cached GI mode's light-edit update spread over frames.
-    RenderSettings expected;
-    expected.voxelIrradianceVoxelsPerFrame = 16384;
-    expected.voxelIrradianceRefineVoxelsPerFrame = 8192;
-    EXPECT_EQ(doc.settings, expected);
-    EXPECT_EQ(doc.settings, editorRenderSettings());
+    // The render settings' defaults, the same for every front end.
+    EXPECT_EQ(doc.settings, RenderSettings{});
     EXPECT_EQ(doc.file, folder / "bare.gltf");
     EXPECT_FALSE(doc.dirty());
     EXPECT_TRUE(logged(log, LogLevel::Info, "no cameras"));
@@ -173,7 +169,7 @@ TEST(DocumentIO, ABadSidecarIsAWarning) {
     Log log;
     quiet(log);
     const Document reopened = openDocument(folder / "s.gltf", log);
-    EXPECT_EQ(reopened.settings, editorRenderSettings());
+    EXPECT_EQ(reopened.settings, RenderSettings{});
     EXPECT_TRUE(logged(log, LogLevel::Warning, "s.gltf.lit.json"));
 }
 
@@ -209,10 +205,10 @@ TEST(DocumentIO, SaveAndOpenKeepEveryEdit) {
     options.constantSpeed = true;
     const CameraPath path(fixturePath().keys(), options);
     doc.edit("Path", Change::CameraPath, [&](Scene&) { doc.cameraPath = path; });
-    doc.settings.gi = false;
-    doc.settings.exposureEv = 1.5f;
-    doc.settings.view = View::Albedo;
-    doc.settings.voxelResolution = 64;
+    doc.settings.gi.enabled = false;
+    doc.settings.output.exposureEv = 1.5f;
+    doc.settings.debug.view = View::Albedo;
+    doc.settings.gi.voxelResolution = 64;
     ASSERT_TRUE(doc.dirty());
 
     const fs::path file = folder / "edited.gltf";
@@ -326,7 +322,7 @@ TEST(Autosave, WritesAfterTheIntervalOnlyWhenDirty) {
 TEST(Autosave, ACrashLeavesARecoverableCopy) {
     const fs::path folder = freshFolder("autosave_crash");
     Document doc = fixtureDocument();
-    doc.settings.exposureEv = 3.0f;
+    doc.settings.output.exposureEv = 3.0f;
     {
         Autosave crashed(folder, 60.0);
         moveBox(doc, 4.0f);
@@ -353,7 +349,7 @@ TEST(Autosave, ACrashLeavesARecoverableCopy) {
     const Document recovered = next.recover(log);
     EXPECT_EQ(recovered.scene.nodes[0].translation.x, 4.0f);
     EXPECT_EQ(recovered.file, fs::path("fixture.gltf"));
-    EXPECT_EQ(recovered.settings.exposureEv, 3.0f);
+    EXPECT_EQ(recovered.settings.output.exposureEv, 3.0f);
     EXPECT_EQ(recovered.cameraPath.keys().size(), 2u);
     EXPECT_TRUE(recovered.dirty());
     EXPECT_FALSE(next.recoverable());

@@ -90,8 +90,8 @@ TEST(ViewportOverlay, TheCameraPathIsACurveThroughItsKeys) {
 
 TEST(ViewportOverlay, ConeDirectionsViewDrawsSixDiffuseConesAndTheSpecularOnes) {
     Document doc = sceneWithLightAndCamera();
-    doc.settings.specularSamples = 2;
-    setGiMode(doc.settings, GiMode::Fast);  // the fixed six-cone set's wireframe cones
+    doc.settings.indirect.specularSamples = 2;
+    doc.settings.gi.mode = GiMode::Fast;  // the fixed six-cone set's wireframe cones
     OverlayOptions options;
     options.markers = false;
     SurfaceSample surface;
@@ -113,9 +113,8 @@ TEST(ViewportOverlay, ConeDirectionsViewDrawsSixDiffuseConesAndTheSpecularOnes) 
 // (a circle per march sample), not the fixed six-cone set's wireframe cones.
 TEST(ViewportOverlay, ConeDirectionsViewDrawsThePixelsStratifiedSetInTheAccurateMode) {
     Document doc = sceneWithLightAndCamera();
-    doc.settings.anisotropicVoxels = true;
-    doc.settings.coneFootprintPerHeight = kAccurateGiFootprint;
-    doc.settings.indirectScale = 1;
+    doc.settings.gi.coneFootprintPerHeight = kAccurateGiFootprint;
+    doc.settings.indirect.scale = 1;
     OverlayOptions options;
     options.markers = false;
     options.coneCameraPosition = {0.0f, 3.0f, 0.0f};
@@ -148,7 +147,7 @@ TEST(ViewportOverlay, ConeDirectionsViewDrawsThePixelsStratifiedSetInTheAccurate
             EXPECT_TRUE(axisDrawn) << "cone " << i << ", pixel " << pixel.x;
             if (i == 0) capEnds.push_back(end);
             const std::size_t samples =
-                coneSamples(cone, surface.voxelSize, surface.volumeSide, doc.settings.coneStepScale, length).size();
+                coneSamples(cone, surface.voxelSize, surface.volumeSide, doc.settings.gi.coneStepScale, length).size();
             EXPECT_GT(samples, 5u);
             expectedLines += 1 + samples * std::size_t(kConeSampleCircleSegments);
         }

@@ -99,23 +99,24 @@ protected:
     Scene loadCornellBox() { return loadGltf(sourceDir() / "assets" / "cornell_box.gltf", log_); }
 
     CameraView cameraFor(const Scene& scene, const RenderSettings& settings) const {
-        return sceneCameraView(scene, scene.cameras.empty() ? -1 : 0, float(settings.width) / float(settings.height));
+        return sceneCameraView(scene, scene.cameras.empty() ? -1 : 0,
+                               float(settings.output.width) / float(settings.output.height));
     }
 
     HdrImage render(const Scene& scene, const RenderSettings& settings, int frames = 1) {
         renderer_->setScene(scene);
         const CameraView camera = cameraFor(scene, settings);
         for (int i = 0; i < frames; ++i) renderer_->render(scene, camera, settings);
-        HdrImage image{settings.width, settings.height, renderer_->readHdrRgb()};
+        HdrImage image{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
         return image;
     }
 
     static RenderSettings smallSettings(int size = 128) {
         RenderSettings s;
-        s.width = size;
-        s.height = size;
-        s.gi = false;
-        s.voxelResolution = 64;
+        s.output.width = size;
+        s.output.height = size;
+        s.gi.enabled = false;
+        s.gi.voxelResolution = 64;
         return s;
     }
 

@@ -95,7 +95,7 @@ TEST_F(ConeMirror, TracedConesMatchTheShader) {
         glProgramUniform1i(program.id(), program.location("uCount"), c.count);
         glProgramUniform2fv(program.id(), program.location("uFragCoord"), 1, &fragCoord.x);
         const RenderSettings defaults;
-        glProgramUniform1f(program.id(), program.location("uDiffuseAperture"), defaults.diffuseConeAperture);
+        glProgramUniform1f(program.id(), program.location("uDiffuseAperture"), defaults.gi.diffuseConeAperture);
         const std::vector<glm::vec4> zero(kResults, glm::vec4(0.0f));
         results.update(0, zero.size() * sizeof(glm::vec4), zero.data());
         results.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
@@ -111,8 +111,8 @@ TEST_F(ConeMirror, TracedConesMatchTheShader) {
         s.roughness = c.roughness;
         s.glPixel = c.glPixel;
         RenderSettings settings;
-        setGiMode(settings, GiMode::Fast);  // the fixed six-cone set the shader above traces
-        settings.specularSamples = c.count;
+        settings.gi.mode = GiMode::Fast;  // the fixed six-cone set the shader above traces
+        settings.indirect.specularSamples = c.count;
         const std::vector<TracedCone> cones = tracedCones(s, v * 3.0f, settings);
 
         std::vector<glm::vec4> specular;  // the shader's kept samples, in order
@@ -192,9 +192,8 @@ TEST_F(ConeMirror, AccurateModeTracedConesAreThePixelsStratifiedSet) {
     for (const int scale : {1, 2, 4})
         for (const glm::vec3 normal : {glm::vec3(0, 1, 0), glm::vec3(0, 0, -1), glm::normalize(glm::vec3(-0.4f, 0.5f, 0.3f))}) {
             RenderSettings settings;
-            settings.anisotropicVoxels = true;
-            settings.coneFootprintPerHeight = kAccurateGiFootprint;
-            settings.indirectScale = scale;
+            settings.gi.coneFootprintPerHeight = kAccurateGiFootprint;
+            settings.indirect.scale = scale;
             ASSERT_EQ(ConeTracePass::indirectScale(settings), scale);
             glProgramUniform3fv(program.id(), program.location("uNormal"), 1, &normal.x);
             glProgramUniform1i(program.id(), program.location("uScale"), scale);
@@ -243,7 +242,7 @@ TEST_F(ConeMirror, AccurateModeTracedConesAreThePixelsStratifiedSet) {
     SurfaceSample s;
     s.glPixel = {5, 6};
     RenderSettings fast;
-    setGiMode(fast, GiMode::Fast);
+    fast.gi.mode = GiMode::Fast;
     for (const TracedCone& cone : tracedCones(s, {0, 3, 0}, fast)) {
         EXPECT_EQ(cone.coneSet, -1);
         EXPECT_EQ(cone.footprintPerHeight, 0.0f);

@@ -104,13 +104,13 @@ protected:
         volume_ = std::make_unique<VoxelVolume>();
         frameUniforms_ = std::make_unique<gl::Buffer>("frame uniforms", sizeof(gpu::FrameUniforms), nullptr,
                                                       GL_DYNAMIC_STORAGE_BIT);
-        settings_.width = 96;
-        settings_.height = 96;
-        settings_.voxelResolution = 64;
+        settings_.output.width = 96;
+        settings_.output.height = 96;
+        settings_.gi.voxelResolution = 64;
         // The fast mode's tracer (isotropic mips, unbounded cones): this fixture fills only the
         // isotropic volume (glGenerateTextureMipmap); the accurate mode reads the directional
         // volumes MipmapPass builds, and is tested through the whole pipeline (test_gi_accuracy.cpp).
-        setGiMode(settings_, GiMode::Fast);
+        settings_.gi.mode = GiMode::Fast;
     }
 
     void TearDown() override {
@@ -127,7 +127,7 @@ protected:
     // Allocates the volume around `bounds` and fills level 0 from `field` at voxel centres, then
     // builds the mips with glGenerateTextureMipmap.
     void fillVolume(const RadianceField& field, const Aabb& bounds = kTestBounds) {
-        volume_->ensure(settings_.voxelResolution, false, log_);
+        volume_->ensure(settings_.gi.voxelResolution, false, log_);
         volume_->fitTo(bounds);
         const int n = volume_->resolution();
         std::vector<glm::vec4> voxels(static_cast<std::size_t>(n) * n * n);
@@ -144,7 +144,7 @@ protected:
 
     // Draws `scene` into the G-buffer from `camera` and runs the cone-tracing pass.
     TraceImages trace(const Scene& scene, const CameraView& camera) {
-        const int w = settings_.width, h = settings_.height;
+        const int w = settings_.output.width, h = settings_.output.height;
         gpuScene_ = std::make_unique<GpuScene>(scene, log_);
         const gpu::FrameUniforms frame = makeFrameUniforms(camera, settings_, LIT_VIEW_FINAL, 0);
         frameUniforms_->update(frame);
@@ -265,7 +265,7 @@ TEST_F(ConeTrace, IntensityAndOcclusionScaleBothTerms) {
     scene.textures.push_back(texture);
     scene.materials[0].occlusionTexture = 0;
     ++scene.materialRevision;
-    settings_.indirectIntensity = 0.25f;
+    settings_.gi.indirectIntensity = 0.25f;
     const TraceImages scaled = trace(scene, furnaceCamera());
     const float expected = 0.25f * 128.0f / 255.0f;
     const auto onSurface = [&](int x, int y) { return plain.surface(x, y); };
@@ -283,16 +283,16 @@ TEST_F(ConeTrace, IntensityAndOcclusionScaleBothTerms) {
 TEST_F(ConeTrace, SwitchedOffTermsAreZero) {
     fillVolume(uniformField(0.5f));
     const auto onSurface = [](const TraceImages& images) { return [&](int x, int y) { return images.surface(x, y); }; };
-    settings_.indirectSpecular = false;
+    settings_.terms.indirectSpecular = false;
     const TraceImages noSpecular = trace(furnaceScene(), furnaceCamera());
     EXPECT_GT(statsOf(noSpecular, noSpecular.diffuse, onSurface(noSpecular)).min.g, 0.0f);
     EXPECT_EQ(statsOf(noSpecular, noSpecular.specular, onSurface(noSpecular)).max, glm::vec3(0.0f));
-    settings_.view = View::IndirectSpecular;
+    settings_.debug.view = View::IndirectSpecular;
     const TraceImages shown = trace(furnaceScene(), furnaceCamera());
     EXPECT_GT(statsOf(shown, shown.specular, onSurface(shown)).min.g, 0.0f);
     EXPECT_EQ(statsOf(shown, shown.diffuse, onSurface(shown)).max, glm::vec3(0.0f)) << "not shown, not traced";
-    settings_.view = View::Final;
-    settings_.gi = false;
+    settings_.debug.view = View::Final;
+    settings_.gi.enabled = false;
     const TraceImages off = trace(furnaceScene(), furnaceCamera());
     EXPECT_EQ(statsOf(off, off.diffuse, onSurface(off)).max, glm::vec3(0.0f));
     EXPECT_EQ(statsOf(off, off.specular, onSurface(off)).max, glm::vec3(0.0f));
@@ -463,9 +463,9 @@ TEST_F(ConeTrace, ResultDoesNotDependOnStepScale) {
     });
     const Scene scene = planeScene(-0.25f, 0.8f, glm::vec3(1.0f), 1.0f, 0.0f);
     const CameraView camera = lookAt({0.0f, 1.0f, 1.0f}, {0.0f, -0.25f, 0.0f}, {0, 1, 0});
-    settings_.coneStepScale = 0.25f;
+    settings_.gi.coneStepScale = 0.25f;
     const TraceImages fine = trace(scene, camera);
-    settings_.coneStepScale = 1.0f;
+    settings_.gi.coneStepScale = 1.0f;
     const TraceImages coarse = trace(scene, camera);
     const auto onSurface = [&](int x, int y) { return fine.surface(x, y); };
     const float a = statsOf(fine, fine.diffuse, onSurface).mean.g;
@@ -492,9 +492,9 @@ TEST_F(ConeTrace, DISABLED_Benchmark) {
         for (Material& m : scene.materials) m.roughness = roughness;
         for (const int resolution : {64, 128}) {
             for (const int size : {128, 256}) {
-                settings_.voxelResolution = resolution;
-                settings_.width = size;
-                settings_.height = size;
+                settings_.gi.voxelResolution = resolution;
+                settings_.output.width = size;
+                settings_.output.height = size;
                 const float margin = scene.worldBounds().size().x / static_cast<float>(resolution);  // ~1 voxel
                 fillVolume(
                     [&](const glm::vec3& p) {
@@ -517,7 +517,7 @@ TEST_F(ConeTrace, DISABLED_Benchmark) {
                     total += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
                 }
                 std::printf("cone trace, roughness %.2f, %d³ volume, %dx%d image, %d specular samples: %.1f ms\n",
-                            roughness, resolution, size, size, settings_.specularSamples, total / frames);
+                            roughness, resolution, size, size, settings_.indirect.specularSamples, total / frames);
             }
         }
     }

@@ -32,9 +32,9 @@ protected:
         Frame off, on;
     };
     OffOn renderCullingOffAndOn(const Scene& scene, RenderSettings settings) {
-        settings.frustumCulling = false;
+        settings.output.frustumCulling = false;
         Frame off = renderTwice(scene, settings);
-        settings.frustumCulling = true;
+        settings.output.frustumCulling = true;
         return {std::move(off), renderTwice(scene, settings)};
     }
 
@@ -144,7 +144,7 @@ protected:
 TEST_F(Culling, SameImageFewerDraws) {
     const Scene scene = makeScene();
     RenderSettings settings = smallSettings(128);
-    settings.shadowMapSize = 256;
+    settings.shadows.mapSize = 256;
     const auto [off, on] = renderCullingOffAndOn(scene, settings);
     expectIdentical(on, off);
 
@@ -176,7 +176,7 @@ TEST_F(Culling, SplitPrimitiveSameImageFewerDraws) {
     EXPECT_GE(items, static_cast<int>(floorTriangles / kDefaultChunkTriangles) + 2) << "the floor is split into chunks";
 
     RenderSettings settings = smallSettings(128);
-    settings.shadowMapSize = 256;
+    settings.shadows.mapSize = 256;
     const auto [off, on] = renderCullingOffAndOn(scene, settings);
     expectIdentical(on, off);
     EXPECT_EQ(off.steady.drawsTotal, items);
@@ -193,7 +193,7 @@ TEST_F(Culling, SplitPrimitiveSameImageFewerDraws) {
 TEST_F(Culling, MovedObjectsAreRefitNotLost) {
     Scene scene = makeScene();
     RenderSettings settings = smallSettings(96);
-    settings.shadowMapSize = 256;
+    settings.shadows.mapSize = 256;
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     renderer_->render(scene, camera, settings);
@@ -204,12 +204,12 @@ TEST_F(Culling, MovedObjectsAreRefitNotLost) {
     scene.nodes[3].translation = glm::vec3(0.0f, 1.5f, 12.0f);
     scene.updateWorldTransforms();
     ++scene.geometryRevision;
-    settings.frustumCulling = true;
+    settings.output.frustumCulling = true;
     renderer_->render(scene, camera, settings);
     renderer_->render(scene, camera, settings);  // shadows cached: camera draws only
     EXPECT_EQ(renderer_->stats().drawsSubmitted, static_cast<int>(visibleFromCamera(scene, settings)));
     const std::vector<float> on = renderer_->readHdrRgb();
-    settings.frustumCulling = false;
+    settings.output.frustumCulling = false;
     renderer_->setScene(scene);  // re-render the shadow maps without culling
     renderer_->render(scene, camera, settings);
     const std::vector<float> off = renderer_->readHdrRgb();
@@ -220,9 +220,9 @@ TEST_F(Culling, SameImageWithGlobalIllumination) {
     // Voxelization draws everything; the injected light uses the (culled) shadow maps.
     const Scene scene = makeScene();
     RenderSettings settings = smallSettings(64);
-    settings.gi = true;
-    settings.voxelResolution = 64;
-    settings.shadowMapSize = 256;
+    settings.gi.enabled = true;
+    settings.gi.voxelResolution = 64;
+    settings.shadows.mapSize = 256;
     const auto [off, on] = renderCullingOffAndOn(scene, settings);
     expectIdentical(on, off);
     EXPECT_LT(on.steady.drawsSubmitted, off.steady.drawsSubmitted);
@@ -236,9 +236,9 @@ TEST_F(Culling, SponzaDrawCountsFromTheDefaultCamera) {
     addDefaultCamera(scene, log_);
     const double loadSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     RenderSettings settings = smallSettings();
-    settings.width = 256;  // 16:9, the aspect of 1280×720: culling depends on the aspect, not the size
-    settings.height = 144;
-    settings.shadowMapSize = 512;
+    settings.output.width = 256;  // 16:9, the aspect of 1280×720: culling depends on the aspect, not the size
+    settings.output.height = 144;
+    settings.shadows.mapSize = 512;
     const auto [off, on] = renderCullingOffAndOn(scene, settings);
     std::printf("Sponza (default camera, 16:9): G-buffer draws %d with culling off, %d of %d with culling on; "
                 "triangles %zu -> %zu; culling %.3f ms CPU; load %.1f s\n",

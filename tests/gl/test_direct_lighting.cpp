@@ -54,7 +54,7 @@ TEST_F(CornellShadows, TallBoxShadowsTheRedWall) {
 TEST_F(CornellShadows, ShadowTestFailsWithShadowsDisabled) {
     const Scene scene = loadCornellBox();
     RenderSettings settings = smallSettings();
-    settings.shadows = false;
+    settings.shadows.enabled = false;
     const HdrImage image = render(scene, settings);
     // Without shadow maps the same point is lit: the check above would fail.
     EXPECT_GT(shadowRatio(scene, settings, image), 0.5f);

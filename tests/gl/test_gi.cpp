@@ -12,13 +12,13 @@ class CornellGi : public GlFixture {
 protected:
     RenderSettings giSettings(bool gi, View view = View::Final) const {
         RenderSettings s = smallSettings(128);
-        s.gi = gi;
-        s.voxelResolution = 64;
-        s.view = view;
+        s.gi.enabled = gi;
+        s.gi.voxelResolution = 64;
+        s.debug.view = view;
         // One bounce: these tests are about the cone tracer and its terms; a second bounce traces
         // six cones per occupied voxel (seconds per voxelization on llvmpipe, and these tests
         // re-voxelize for every image). Bounces: test_gi_accuracy.cpp.
-        s.bounces = 1;
+        s.gi.bounces = 1;
         return s;
     }
     // Renders one view; the voxel volume is built on the first frame of each render() call.
@@ -48,9 +48,9 @@ TEST_F(CornellGi, CeilingIsLitOnlyWithGi) {
     // Both GI modes, whichever is the default (docs/GI.md): the fast one (isotropic voxels, wide
     // unbounded cones) and the accurate one (anisotropic voxels, footprint-bounded cones).
     RenderSettings settings = giSettings(true);
-    setGiMode(settings, GiMode::Fast);
+    settings.gi.mode = GiMode::Fast;
     RenderSettings accurateSettings = settings;
-    setGiMode(accurateSettings, GiMode::Accurate);
+    accurateSettings.gi.mode = GiMode::Accurate;
     const HdrImage on = render(scene, settings), off = renderView(scene, false, View::Final);
     const HdrImage accurate = render(scene, accurateSettings);
     float withGi = 1e9f, withAccurateGi = 1e9f, withoutGi = 0.0f;
@@ -101,8 +101,8 @@ TEST_F(CornellGi, WhiteSurfacesNearColouredWallsBleedTheirColour) {
     };
     const auto measure = [&](GiMode mode, int bounces) {
         RenderSettings settings = giSettings(true);
-        setGiMode(settings, mode);
-        settings.bounces = bounces;
+        settings.gi.mode = mode;
+        settings.gi.bounces = bounces;
         const HdrImage image = render(scene, settings);
         const Ratios r{ratio(radianceAt(scene, settings, image, {-0.85f, 2.0f, 0.0f}), 0, 1),
                        ratio(radianceAt(scene, settings, image, {0.85f, 2.0f, 0.0f}), 1, 0),
@@ -160,7 +160,7 @@ TEST_F(CornellGi, MirrorFloorReflectsTheRedWall) {
     ++scene.materialRevision;
     const RenderSettings settings = giSettings(true);
     const HdrImage is = renderView(scene, true, View::IndirectSpecular);
-    writePng(outputDir() / "mirror_floor_indirect_specular.png", settings.width, settings.height,
+    writePng(outputDir() / "mirror_floor_indirect_specular.png", settings.output.width, settings.output.height,
              renderer_->readOutputRgba8());
     // Front floor next to the red wall mirrors the red wall's directly lit lower part (the camera's
     // mirror image (0, −1, 3.4) sees the wall at about (−1, 0.09, 0.25)); likewise on the green side.
@@ -202,7 +202,7 @@ TEST_F(CornellGi, LightEditReinjectsWithoutRevoxelizing) {
 TEST_F(CornellGi, BadVoxelResolutionIsClampedWithAWarning) {
     const Scene scene = loadCornellBox();
     RenderSettings settings = giSettings(true);
-    settings.voxelResolution = 100;
+    settings.gi.voxelResolution = 100;
     render(scene, settings);
     ASSERT_NE(renderer_->voxels(), nullptr);
     EXPECT_EQ(renderer_->voxels()->resolution(), 128);

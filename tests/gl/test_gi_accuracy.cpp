@@ -96,11 +96,11 @@ protected:
     std::pair<HdrImage, double> againstFreshRenderer(const Scene& scene, const CameraView& camera,
                                                      const RenderSettings& settings) {
         renderer_->render(scene, camera, settings);
-        const HdrImage changed{settings.width, settings.height, renderer_->readHdrRgb()};
+        const HdrImage changed{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
         Renderer fresh(sourceDir() / "shaders", log_);
         fresh.setScene(scene);
         fresh.render(scene, camera, settings);
-        HdrImage freshImage{settings.width, settings.height, fresh.readHdrRgb()};
+        HdrImage freshImage{settings.output.width, settings.output.height, fresh.readHdrRgb()};
         const double stale = relativeDifference(changed, freshImage);
         return {std::move(freshImage), stale};
     }
@@ -116,52 +116,51 @@ protected:
     // The cached mode at 64³, L_ID, 48², one bounce and cones (giSettings' pins).
     static RenderSettings cachedAt64() {
         RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
-        setGiMode(settings, GiMode::Cached);
+        settings.gi.mode = GiMode::Cached;
         return settings;
     }
     // The defaults' GI (the cached mode, two bounces, 32 voxel rays) at 64³, L_ID, 48², without
     // temporal accumulation (its history would blur frames together).
     static RenderSettings twoBouncesWithRays() {
         RenderSettings settings = cachedAt64();
-        settings.bounces = 2;
-        settings.voxelRays = 32;
-        settings.temporalAccumulation = false;
+        settings.gi.bounces = 2;
+        settings.gi.voxelRays = 32;
+        settings.indirect.temporalAccumulation = false;
         return settings;
     }
     // What an update spread over frames must end on: a fresh renderer's image with the whole update
-    // in one frame (voxelIrradianceVoxelsPerFrame 0). Replaces the fixture's renderer.
+    // in one frame (the default GiBudget). Replaces the fixture's renderer.
     HdrImage allAtOnceInAFreshRenderer(const Scene& scene, const CameraView& camera, RenderSettings settings) {
         renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
-        settings.voxelIrradianceVoxelsPerFrame = 0;
         return renderFrom(scene, camera, settings);
     }
     HdrImage renderFrom(const Scene& scene, const CameraView& camera, const RenderSettings& settings) {
         renderer_->setScene(scene);
         renderer_->render(scene, camera, settings);
-        return HdrImage{settings.width, settings.height, renderer_->readHdrRgb()};
+        return HdrImage{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     }
     // The accurate GI mode: anisotropic voxels and footprint-bounded cones traced per pixel. The
     // tests that compare with the renderer of before switch them off explicitly; those of the
     // cached mode (the default) switch it on.
     static RenderSettings giSettings(int voxels, View view = View::Final, int size = 96) {
         RenderSettings s = smallSettings(size);
-        s.gi = true;
-        s.voxelResolution = voxels;
-        s.view = view;
+        s.gi.enabled = true;
+        s.gi.voxelResolution = voxels;
+        s.debug.view = view;
         // The accurate mode (cones traced per pixel), one bounce, cones for the voxels' own light,
         // whatever the defaults (the cached mode, two bounces, 32 voxel rays): the measurements in
         // the comments below are theirs. Tests of the defaults, of rays and of bounces say so.
-        setGiMode(s, GiMode::Accurate);
-        s.bounces = 1;
-        s.voxelRays = 0;
+        s.gi.mode = GiMode::Accurate;
+        s.gi.bounces = 1;
+        s.gi.voxelRays = 0;
         return s;
     }
     // The renderer's defaults (RenderSettings as constructed: the cached mode, two bounces, 32 voxel
     // rays) but for the size, GI on and the voxel resolution: what a user gets.
     static RenderSettings defaultSettings(int voxels, int size) {
         RenderSettings s = smallSettings(size);
-        s.gi = true;
-        s.voxelResolution = voxels;
+        s.gi.enabled = true;
+        s.gi.voxelResolution = voxels;
         return s;
     }
     // The end of the sealed-room tests: the same view without GI, then the GI image's mean (the
@@ -170,7 +169,7 @@ protected:
     // GI image is issue #11's 1 %.
     void expectNoLeak(const Scene& scene, const CameraView& inside, RenderSettings settings, const HdrImage& gi,
                       float outside, const std::string& label) {
-        settings.gi = false;
+        settings.gi.enabled = false;
         const HdrImage noGi = renderFrom(scene, inside, settings);
         const float leak = luminance(meanOf(gi, 0.0f, 0.0f, 1.0f, 1.0f));
         const float directLeak = luminance(meanOf(noGi, 0.0f, 0.0f, 1.0f, 1.0f));
@@ -194,10 +193,10 @@ TEST_F(GiAccuracy, LoneLitFloorDoesNotLightItself) {
     // The accurate mode's cones, and the defaults (the cached mode, two bounces, voxel rays, whose
     // rays leave the floor's plane and cannot cross it again).
     for (RenderSettings settings : {giSettings(64, View::DirectDiffuse, 48), defaultSettings(64, 48)}) {
-        const char* mode = settings.voxelRays > 0 ? "the defaults" : "the accurate mode";
-        settings.view = View::DirectDiffuse;
+        const char* mode = settings.gi.voxelRays > 0 ? "the defaults" : "the accurate mode";
+        settings.debug.view = View::DirectDiffuse;
         const HdrImage direct = renderFrom(scene, camera, settings);
-        settings.view = View::IndirectDiffuse;
+        settings.debug.view = View::IndirectDiffuse;
         const HdrImage indirect = renderFrom(scene, camera, settings);
         // The middle of the picture: the floor, away from its edges.
         const float own = luminance(meanOf(direct, 0.3f, 0.3f, 0.7f, 0.7f));
@@ -245,7 +244,7 @@ TEST_F(GiAccuracy, SealedRoomDoesNotLeakLightIn) {
         ASSERT_NEAR(renderer_->voxels()->voxelSize(), voxel, 1e-4f) << "walls must be two voxels thick";
         expectNoLeak(scene, inside, settings, gi, outside,
                      "sealed room at " + std::to_string(kVoxels) + "³, " +
-                         (settings.voxelRays > 0 ? "the defaults" : "the accurate mode"));
+                         (settings.gi.voxelRays > 0 ? "the defaults" : "the accurate mode"));
     }
 }
 
@@ -290,7 +289,7 @@ TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
         ASSERT_GT(t / voxel, 3.0f) << "walls must be more than two voxels thick";
         char label[96];
         std::snprintf(label, sizeof label, "sealed room, walls %.1f voxels at %d³, %s", t / voxel, kVoxels,
-                      settings.voxelRays > 0 ? "the defaults" : "the accurate mode");
+                      settings.gi.voxelRays > 0 ? "the defaults" : "the accurate mode");
         expectNoLeak(scene, inside, settings, gi, outside, label);
     }
 }
@@ -315,10 +314,9 @@ TEST_F(GiAccuracy, ThinWallLitOnOneSideGlowsLessOnTheOther) {
     const float wallRadiance = 0.8f / glm::pi<float>() * 5.0f;
     const CameraView behind = lookAt({-0.1f, 0.3f, 0.3f}, {-0.6f, 0.0f, 0.0f}, 1.0f, 0.9f);
     RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
-    settings.bounces = 1;
+    settings.gi.bounces = 1;
     const float received = luminance(meanOf(renderFrom(scene, behind, settings), 0.35f, 0.35f, 0.65f, 0.65f));
-    settings.anisotropicVoxels = false;
-    settings.coneFootprintPerHeight = 0.0f;
+    settings.gi.mode = GiMode::Fast;  // isotropic voxels, unbounded cones
     const float isotropic = luminance(meanOf(renderFrom(scene, behind, settings), 0.35f, 0.35f, 0.65f, 0.65f));
     std::printf("thin wall: lit side %.3f, receiver behind it %.4f (%.1f %%), isotropic voxels %.4f (%.1f %%)\n",
                 wallRadiance, received, 100.0f * received / wallRadiance, isotropic, 100.0f * isotropic / wallRadiance);
@@ -365,25 +363,25 @@ protected:
     std::vector<float> vctIndirect(const Scene& scene, int voxels, int bounces = 1, GiMode mode = GiMode::Accurate,
                                    int voxelRays = 0) {
         RenderSettings settings = giSettings(voxels, View::IndirectDiffuse, kSize);
-        setGiMode(settings, mode);
-        settings.bounces = bounces;
-        settings.voxelRays = voxelRays;
+        settings.gi.mode = mode;
+        settings.gi.bounces = bounces;
+        settings.gi.voxelRays = voxelRays;
         return indirectSum(scene, settings);
     }
     // L_ID + L_IS with the renderer's defaults (RenderSettings as constructed: the cached mode, two
     // bounces, 32 voxel rays) but for the size, GI on and the voxel resolution: what a user gets.
     std::vector<float> defaultsIndirect(const Scene& scene, int voxels) {
         const RenderSettings settings = defaultSettings(voxels, kSize);
-        EXPECT_EQ(settings.bounces, 2);
-        EXPECT_EQ(settings.voxelRays, 32);
-        EXPECT_TRUE(settings.diffuseFromVoxelIrradiance) << "the cached mode";
+        EXPECT_EQ(settings.gi.bounces, 2);
+        EXPECT_EQ(settings.gi.voxelRays, 32);
+        EXPECT_TRUE(settings.gi.voxelIrradiance()) << "the cached mode";
         return indirectSum(scene, settings);
     }
     // L_ID + L_IS rendered with `settings` (its view is set here).
     std::vector<float> indirectSum(const Scene& scene, RenderSettings settings) {
-        settings.view = View::IndirectDiffuse;
+        settings.debug.view = View::IndirectDiffuse;
         const HdrImage id = render(scene, settings);
-        settings.view = View::IndirectSpecular;
+        settings.debug.view = View::IndirectSpecular;
         const HdrImage is = render(scene, settings);
         std::vector<float> sum(id.rgb.size());
         for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = id.rgb[i] + is.rgb[i];
@@ -488,8 +486,8 @@ protected:
 // region within ±20 %, the image within 15 % RMSE.
 TEST_F(CornellAccuracy, DirectionalVolumesAreMirrorSymmetric) {
     RenderSettings settings = giSettings(64, View::IndirectDiffuse, kSize);
-    settings.coneFootprintPerHeight = 0.0f;
-    settings.bounces = 1;
+    settings.gi.coneFootprintPerHeight = 0.0f;
+    settings.gi.bounces = 1;
     EXPECT_LT(expectMirrorImageRegions(settings, ""), 0.15);
 }
 
@@ -504,7 +502,7 @@ TEST_F(CornellAccuracy, DirectionalVolumesAreMirrorSymmetric) {
 // with the fixed set (before) 0.73-3.55 (the nook 3.55, the back wall 0.73): it fails there.
 TEST_F(CornellAccuracy, AccurateModeIsMirrorSymmetric) {
     RenderSettings settings = giSettings(64, View::IndirectDiffuse, kSize);
-    settings.bounces = 1;
+    settings.gi.bounces = 1;
     // The RMSE is printed, not asserted: the pattern of the cone sets is not mirrored with the
     // image, so silhouettes and edges (where the strata filter keeps part of its window) differ
     // pixel by pixel; measured 14.2 % (the fixed set: 68.8 %; the unbounded mode: 10.5 %, above).
@@ -599,8 +597,8 @@ TEST_F(CornellAccuracy, FinalImageErrorIsLessThanHalfOfGiOff) {
     const CornellMeasurement truth = measureReference(scene);
     const auto rmse = [&](bool gi) {
         RenderSettings settings = giSettings(64, View::Final, kSize);
-        settings.gi = gi;
-        settings.bounces = 1;
+        settings.gi.enabled = gi;
+        settings.gi.bounces = 1;
         const HdrImage image = render(scene, settings);
         const double k = lum(reference::maskedMean(truth.truthFinal, truth.directlyLit)) /
                          std::max(lum(reference::maskedMean(image.rgb, truth.directlyLit)), 1e-12);
@@ -742,10 +740,9 @@ TEST_F(CornellAccuracy, DISABLED_ColourBleedingAndResolutionIndependence) {
 TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
     const Scene scene = loadCornellBox();
     RenderSettings accurate = giSettings(64, View::IndirectDiffuse, 48);
-    accurate.bounces = 1;
+    accurate.gi.bounces = 1;
     RenderSettings plain = accurate;
-    plain.anisotropicVoxels = false;
-    plain.coneFootprintPerHeight = 0.0f;
+    plain.gi.mode = GiMode::Fast;
     render(scene, plain);
     // The default mode does not allocate the directional volumes (0.6-1.3 GiB at 512³).
     ASSERT_NE(renderer_->voxels(), nullptr);
@@ -753,7 +750,7 @@ TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
     const std::size_t plainBytes = renderer_->voxels()->radianceBytes();
     // The same renderer and scene (no setScene: that would re-voxelize), only the settings change.
     renderer_->render(scene, cameraFor(scene, accurate), accurate);
-    const HdrImage switched{accurate.width, accurate.height, renderer_->readHdrRgb()};
+    const HdrImage switched{accurate.output.width, accurate.output.height, renderer_->readHdrRgb()};
     EXPECT_TRUE(static_cast<bool>(renderer_->voxels()->directional(0)));
     EXPECT_GT(renderer_->voxels()->radianceBytes(), plainBytes);
     // Switched off again: their memory goes back.
@@ -762,7 +759,7 @@ TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
     EXPECT_EQ(renderer_->voxels()->radianceBytes(), plainBytes);
     // ... and switching on once more makes and builds them again.
     renderer_->render(scene, cameraFor(scene, accurate), accurate);
-    const HdrImage switchedAgain{accurate.width, accurate.height, renderer_->readHdrRgb()};
+    const HdrImage switchedAgain{accurate.output.width, accurate.output.height, renderer_->readHdrRgb()};
     renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
     const HdrImage fresh = render(scene, accurate);
     double difference = 0.0, differenceAgain = 0.0, total = 0.0;
@@ -787,20 +784,20 @@ TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
 TEST_F(GiAccuracy, AccurateModeIsStableUnderTemporalAccumulation) {
     const Scene scene = loadCornellBox();
     RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
-    settings.temporalAccumulation = true;
-    settings.indirectScale = 1;
-    settings.bounces = 1;
+    settings.indirect.temporalAccumulation = true;
+    settings.indirect.scale = 1;
+    settings.gi.bounces = 1;
     // Whole sets: this test is about the sets' rotation. Cone subsets change the traced pair every
     // frame by design (frame 2 -> 3: 4.7 % with them); their convergence and late frame-to-frame
     // change are IndirectResolve.AccurateConeSubsetsConvergeToTheWholeSets.
-    settings.temporalConeSubsets = false;
+    settings.indirect.temporalConeSubsets = false;
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     renderer_->render(scene, camera, settings);
     renderer_->render(scene, camera, settings);
-    const HdrImage second{settings.width, settings.height, renderer_->readHdrRgb()};
+    const HdrImage second{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     renderer_->render(scene, camera, settings);
-    const HdrImage third{settings.width, settings.height, renderer_->readHdrRgb()};
+    const HdrImage third{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     double change = 0.0, total = 0.0;
     for (std::size_t i = 0; i < third.rgb.size(); ++i) {
         change += std::abs(double(third.rgb[i]) - second.rgb[i]);
@@ -841,7 +838,7 @@ TEST_F(GiAccuracy, BouncesAddUpInAClosedEmissiveBox) {
     std::vector<float> means, opaqueMeans;  // the furnace's voxels; every opaque voxel (printed)
     for (const int bounces : {1, 2, 3}) {
         RenderSettings settings = giSettings(64, View::Final, 32);
-        settings.bounces = bounces;
+        settings.gi.bounces = bounces;
         renderFrom(scene, camera, settings);
         ASSERT_NE(renderer_->voxels(), nullptr);
         const VoxelVolume& volume = *renderer_->voxels();
@@ -895,7 +892,7 @@ TEST_F(GiAccuracy, VoxelIrradianceLeaksNoMoreThanTheAccurateMode) {
     const CameraView inside = sceneCameraView(scene, 0, 1.0f);
     RenderSettings settings = giSettings(128, View::Final, 128);
     const float accurate = luminance(meanOf(renderFrom(scene, inside, settings), 0.0f, 0.0f, 1.0f, 1.0f));
-    settings.diffuseFromVoxelIrradiance = true;
+    settings.gi.mode = GiMode::Cached;
     const float gathered = luminance(meanOf(renderFrom(scene, inside, settings), 0.0f, 0.0f, 1.0f, 1.0f));
     std::printf("sealed room at 128³, inside mean: accurate %.3e, voxel irradiance %.3e (%.2f×) W/(sr·m²)\n", accurate,
                 gathered, gathered / accurate);
@@ -903,7 +900,7 @@ TEST_F(GiAccuracy, VoxelIrradianceLeaksNoMoreThanTheAccurateMode) {
     EXPECT_LE(gathered, 1.1f * accurate);
 }
 
-// The voxel irradiance traced over frames (voxelIrradianceVoxelsPerFrame): after a light edit the
+// The voxel irradiance traced over frames (GiBudget::updateVoxels): after a light edit the
 // image must show the old light in no voxel once the update has gone round the list, ⌈occupied ÷
 // per frame⌉ frames after the last edit: the same image as a renderer that traced every voxel with
 // the new light at once; a frame earlier it must still differ (else the test would not see a stale
@@ -912,40 +909,40 @@ TEST_F(GiAccuracy, VoxelIrradianceLeaksNoMoreThanTheAccurateMode) {
 TEST_F(GiAccuracy, VoxelIrradianceSpreadOverFramesLeavesNoTraceOfTheOldLight) {
     Scene scene = loadCornellBox();
     RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);
-    settings.diffuseFromVoxelIrradiance = true;
-    settings.temporalAccumulation = false;
+    settings.gi.mode = GiMode::Cached;
+    settings.indirect.temporalAccumulation = false;
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     renderer_->render(scene, camera, settings);  // all voxels at once (the default, 0)
     const std::uint32_t occupied = renderer_->stats().occupiedVoxels;
     ASSERT_GT(occupied, 1000u);
     constexpr int kFrames = 4;
-    settings.voxelIrradianceVoxelsPerFrame = static_cast<int>((occupied + kFrames - 1) / kFrames);
+    const GiBudget budget{static_cast<std::uint32_t>((occupied + kFrames - 1) / kFrames), 0};
     ASSERT_FALSE(scene.lights.empty());
     // A first edit, half done when the second comes: the second's update starts where the first's
     // stands (round robin), so it wraps round the list's end.
     scene.lights[0].intensity *= 0.25f;
     ++scene.lightRevision;
-    for (int i = 0; i < kFrames / 2; ++i) renderer_->render(scene, camera, settings);
+    for (int i = 0; i < kFrames / 2; ++i) renderer_->render(scene, camera, settings, budget);
     scene.lights[0].intensity *= 16.0f;
     scene.lights[0].color = glm::vec3(1.0f, 0.5f, 0.25f);
     ++scene.lightRevision;
-    for (int i = 0; i < kFrames - 1; ++i) renderer_->render(scene, camera, settings);
-    const HdrImage early{settings.width, settings.height, renderer_->readHdrRgb()};
-    renderer_->render(scene, camera, settings);
-    const HdrImage converged{settings.width, settings.height, renderer_->readHdrRgb()};
+    for (int i = 0; i < kFrames - 1; ++i) renderer_->render(scene, camera, settings, budget);
+    const HdrImage early{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
+    renderer_->render(scene, camera, settings, budget);
+    const HdrImage converged{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     const HdrImage fresh = allAtOnceInAFreshRenderer(scene, camera, settings);
     const double before = relativeDifference(early, fresh), after = relativeDifference(converged, fresh);
-    std::printf("voxel irradiance over %d frames (%d of %u voxels each): L_ID vs all at once after %d frames %.3f %%, "
-                "after %d %.5f %%\n",
-                kFrames, settings.voxelIrradianceVoxelsPerFrame, occupied, kFrames - 1, 100.0 * before, kFrames,
-                100.0 * after);
+    std::printf(
+        "voxel irradiance over %d frames (%u of %u voxels each): L_ID vs all at once after %d frames %.3f %%, "
+        "after %d %.5f %%\n",
+        kFrames, budget.updateVoxels, occupied, kFrames - 1, 100.0 * before, kFrames, 100.0 * after);
     EXPECT_GT(before, 0.01) << "a frame early some voxels must still hold the old light";
     EXPECT_LE(after, 1e-5);
 }
 
 // Bounces 2..N spread over frames as the voxel irradiance is (the cached mode with
-// voxelIrradianceVoxelsPerFrame > 0): after a light edit, each bounce takes ⌈occupied ÷ per frame⌉
+// GiBudget::updateVoxels below the list): after a light edit, each bounce takes ⌈occupied ÷ per frame⌉
 // frames, then the irradiance as many, and the image is then a renderer's that did all of it in one
 // frame; a frame earlier it still differs. Without the spreading every frame of a light drag in the
 // editor paid whole bounces (Cornell 128³ with 32 voxel rays: 1.5 s a bounce on llvmpipe). A light
@@ -962,7 +959,7 @@ TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     ASSERT_GT(occupied, 1000u);
     constexpr int kFrames = 3;  // per pass over the list: the bounce's, then the irradiance's
     constexpr std::uint32_t kReplayed = kFrames * kReplayVoxelsPerFrameFactor;
-    settings.voxelIrradianceVoxelsPerFrame = static_cast<int>((occupied + kReplayed - 1) / kReplayed);
+    const GiBudget budget{static_cast<std::uint32_t>((occupied + kReplayed - 1) / kReplayed), 0};
     ASSERT_FALSE(scene.lights.empty());
     scene.lights[0].intensity *= 4.0f;
     scene.lights[0].color = glm::vec3(1.0f, 0.5f, 0.25f);
@@ -971,35 +968,36 @@ TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     // through the bounce and then the irradiance and reaches 1 with the last frame.
     float progress = 0.0f;
     for (int i = 0; i < 2 * kFrames - 1; ++i) {
-        renderer_->render(scene, camera, settings);
+        renderer_->render(scene, camera, settings, budget);
         const FrameStats& stats = renderer_->stats();
         EXPECT_GT(stats.giUpdateDone, progress) << "frame " << i;
         EXPECT_LT(stats.giUpdateDone, 1.0f) << "frame " << i;
         EXPECT_EQ(stats.giUpdateStage, i < kFrames - 1 ? "bounce 2" : "irradiance") << "frame " << i;
         progress = stats.giUpdateDone;
     }
-    const HdrImage early{settings.width, settings.height, renderer_->readHdrRgb()};
-    renderer_->render(scene, camera, settings);
+    const HdrImage early{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
+    renderer_->render(scene, camera, settings, budget);
     EXPECT_EQ(renderer_->stats().giUpdateDone, 1.0f);
     EXPECT_EQ(renderer_->stats().giUpdateStage, "") << "no refinement asked for";
-    const HdrImage done{settings.width, settings.height, renderer_->readHdrRgb()};
+    const HdrImage done{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     const HdrImage fresh = allAtOnceInAFreshRenderer(scene, camera, settings);
     const double before = relativeDifference(early, fresh), after = relativeDifference(done, fresh);
-    std::printf("two bounces over %d + %d frames (%d × %d of %u voxels each, replayed): L_ID vs all at once after %d "
-                "frames %.3f %%, after %d %.5f %%\n",
-                kFrames, kFrames, kReplayVoxelsPerFrameFactor, settings.voxelIrradianceVoxelsPerFrame, occupied,
-                2 * kFrames - 1, 100.0 * before, 2 * kFrames, 100.0 * after);
+    std::printf(
+        "two bounces over %d + %d frames (%d × %u of %u voxels each, replayed): L_ID vs all at once after %d "
+        "frames %.3f %%, after %d %.5f %%\n",
+        kFrames, kFrames, kReplayVoxelsPerFrameFactor, budget.updateVoxels, occupied, 2 * kFrames - 1, 100.0 * before,
+        2 * kFrames, 100.0 * after);
     EXPECT_GT(before, 0.01) << "a frame early some voxels must still hold the old light";
     EXPECT_LE(after, 1e-5);
 
     // A voxelization: the bounce marches and records the hits at the setting's pace, the
     // irradiance replays them at the factor's.
     ++scene.geometryRevision;
-    const std::uint32_t perFrame = static_cast<std::uint32_t>(settings.voxelIrradianceVoxelsPerFrame);
+    const std::uint32_t perFrame = budget.updateVoxels;
     const int bounceFrames = static_cast<int>((occupied + perFrame - 1) / perFrame);
     int frames = 0;
     do {
-        renderer_->render(scene, camera, settings);
+        renderer_->render(scene, camera, settings, budget);
         ++frames;
         if (frames == bounceFrames - 1) {
             EXPECT_EQ(renderer_->stats().giUpdateStage, "bounce 2");  // its last frame is next
@@ -1007,7 +1005,7 @@ TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     } while (renderer_->stats().giUpdateDone < 1.0f && frames < 100);
     std::printf("after a voxelization: %d frames (the bounce %d, recording)\n", frames, bounceFrames);
     EXPECT_EQ(frames, bounceFrames + kFrames);
-    const HdrImage revoxelized{settings.width, settings.height, renderer_->readHdrRgb()};
+    const HdrImage revoxelized{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     EXPECT_LE(relativeDifference(revoxelized, fresh), 1e-5);
 }
 
@@ -1026,9 +1024,9 @@ TEST_F(GiAccuracy, LightDragUpdatesTheIndirectLightWhileItLasts) {
     renderer_->render(scene, camera, settings);  // everything in the first frame; the rays' hits recorded
     const std::uint32_t occupied = renderer_->stats().occupiedVoxels;
     ASSERT_GT(occupied, 1000u);
-    const HdrImage before{settings.width, settings.height, renderer_->readHdrRgb()};
+    const HdrImage before{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     constexpr std::uint32_t kReplayed = 2 * kReplayVoxelsPerFrameFactor;  // 2 frames a pass over the list
-    settings.voxelIrradianceVoxelsPerFrame = static_cast<int>((occupied + kReplayed - 1) / kReplayed);
+    const GiBudget budget{static_cast<std::uint32_t>((occupied + kReplayed - 1) / kReplayed), 0};
     ASSERT_FALSE(scene.lights.empty());
     const glm::vec3 white = scene.lights[0].color, orange(1.0f, 0.5f, 0.25f);
     constexpr int kDragFrames = 12;
@@ -1036,17 +1034,18 @@ TEST_F(GiAccuracy, LightDragUpdatesTheIndirectLightWhileItLasts) {
     for (int i = 1; i <= kDragFrames; ++i) {
         scene.lights[0].color = glm::mix(white, orange, static_cast<float>(i) / kDragFrames);
         ++scene.lightRevision;
-        renderer_->render(scene, camera, settings);
+        renderer_->render(scene, camera, settings, budget);
         EXPECT_LT(renderer_->stats().giUpdateDone, 1.0f) << "drag frame " << i;
-        if (i == kDragFrames / 2) during = relativeDifference(HdrImage{settings.width, settings.height,
-                                                                        renderer_->readHdrRgb()}, before);
+        if (i == kDragFrames / 2)
+            during = relativeDifference(
+                HdrImage{settings.output.width, settings.output.height, renderer_->readHdrRgb()}, before);
     }
     int frames = 0;
     while (renderer_->stats().giUpdateDone < 1.0f && frames < 100) {
-        renderer_->render(scene, camera, settings);
+        renderer_->render(scene, camera, settings, budget);
         ++frames;
     }
-    const HdrImage settled{settings.width, settings.height, renderer_->readHdrRgb()};
+    const HdrImage settled{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     const HdrImage fresh = allAtOnceInAFreshRenderer(scene, camera, settings);
     const double after = relativeDifference(settled, fresh), change = relativeDifference(fresh, before);
     std::printf("light drag over %d frames: L_ID after %d frames %.3f %% from before the drag; settled %d frames "
@@ -1070,8 +1069,8 @@ TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheConeSettingsCha
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     const HdrImage before = renderFrom(scene, camera, settings);
-    settings.coneFootprintPerHeight = 0.5f;
-    settings.maxTraceDistance = 0.5f;
+    settings.gi.coneFootprintPerHeight = 0.5f;
+    settings.gi.maxTraceDistance = 0.5f;
     const auto [fresh, stale] = againstFreshRenderer(scene, camera, settings);
     const double settingEffect = relativeDifference(before, fresh);
     std::printf("cached mode, footprint 0.25 -> 0.5 and trace distance 1 -> 0.5: L_ID before vs fresh %.3f %%, "
@@ -1091,7 +1090,7 @@ TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheVoxelRaysChange
     const CameraView camera = cameraFor(scene, settings);
     const HdrImage cones = renderFrom(scene, camera, settings);
     for (const int rays : {32, 8}) {
-        settings.voxelRays = rays;
+        settings.gi.voxelRays = rays;
         const auto [fresh, stale] = againstFreshRenderer(scene, camera, settings);
         const double settingEffect = relativeDifference(cones, fresh);
         std::printf("cached mode, %d voxel rays: L_ID against the cones' %.3f %%, after the change vs fresh %.5f %%\n", rays,
@@ -1101,7 +1100,7 @@ TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheVoxelRaysChange
     }
 }
 
-// The cached mode's refinement (voxelIrradianceRefineVoxelsPerFrame): after the edit's trace (one
+// The cached mode's refinement (GiBudget::refineVoxels): after the edit's trace (one
 // cone set per voxel) 15 more rounds over the voxels, each tracing the next set and averaging it
 // in, must leave every voxel with the mean of all 16 sets: the image of the shader variant that
 // traces all 16 at once (bounce.comp.glsl with LIT_IRRADIANCE_ALL_SETS 1), both through the same
@@ -1114,29 +1113,28 @@ TEST_F(GiAccuracy, CachedModeRefinementConvergesToAllConeSetsPerVoxel) {
     // The cones, and the voxel rays (the default: their sets are offsets of the rays' pattern).
     for (const int rays : {0, 32}) {
         RenderSettings settings = giSettings(64, View::IndirectDiffuse, 64);
-        setGiMode(settings, GiMode::Cached);
-        settings.voxelRays = rays;
-        settings.voxelIrradianceRefineVoxelsPerFrame = 1 << 30;  // a whole round per frame
+        settings.gi.mode = GiMode::Cached;
+        settings.gi.voxelRays = rays;
+        const GiBudget refining{GiBudget::kAll, 1u << 30};  // every round at once
         renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
         renderer_->setScene(scene);
         const CameraView camera = cameraFor(scene, settings);
-        renderer_->render(scene, camera, settings);
-        const HdrImage oneSet{settings.width, settings.height, renderer_->readHdrRgb()};
-        for (int round = 1; round < 16; ++round) renderer_->render(scene, camera, settings);
-        const HdrImage refined{settings.width, settings.height, renderer_->readHdrRgb()};
-        renderer_->render(scene, camera, settings);  // nothing left to refine: the same image
-        const HdrImage after{settings.width, settings.height, renderer_->readHdrRgb()};
+        renderer_->render(scene, camera, settings);  // the update alone: one set per voxel
+        const HdrImage oneSet{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
+        for (int round = 1; round < 16; ++round) renderer_->render(scene, camera, settings, refining);
+        const HdrImage refined{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
+        renderer_->render(scene, camera, settings, refining);  // nothing left to refine: the same image
+        const HdrImage after{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
 
         // The all-sets variant.
         const BounceShaderVariant variant(sourceDir() / "shaders", "lit_all_sets", "#define LIT_IRRADIANCE_ALL_SETS 1");
         RenderSettings allSetsSettings = settings;
-        allSetsSettings.voxelIrradianceRefineVoxelsPerFrame = 0;
         HdrImage allSets;
         {
             Renderer allSetsRenderer(variant.root, log_);
             allSetsRenderer.setScene(scene);
             allSetsRenderer.render(scene, camera, allSetsSettings);
-            allSets = HdrImage{settings.width, settings.height, allSetsRenderer.readHdrRgb()};
+            allSets = HdrImage{settings.output.width, settings.output.height, allSetsRenderer.readHdrRgb()};
         }
 
         const double before = relativeDifference(oneSet, allSets), converged = relativeDifference(refined, allSets);
@@ -1165,11 +1163,11 @@ TEST_F(GiAccuracy, VoxelRayHitCacheReplaysTheMarchedLight) {
     const BounceShaderVariant marching(sourceDir() / "shaders", "lit_ray_hits_off", "#define LIT_RAY_HIT_CACHE 0");
     const auto againstMarching = [&](const char* what) {
         renderer_->render(scene, camera, settings);
-        const HdrImage cached{settings.width, settings.height, renderer_->readHdrRgb()};
+        const HdrImage cached{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
         Renderer reference(marching.root, log_);
         reference.setScene(scene);
         reference.render(scene, camera, settings);
-        const HdrImage marched{settings.width, settings.height, reference.readHdrRgb()};
+        const HdrImage marched{settings.output.width, settings.output.height, reference.readHdrRgb()};
         const double difference = relativeDifference(cached, marched), change = relativeDifference(cached, before);
         std::printf("voxel ray hit cache, %s: L_ID against always marching %.6f %%, against before the edits %.2f %%\n", what,
                     100.0 * difference, 100.0 * change);
@@ -1202,18 +1200,18 @@ TEST_F(GiAccuracy, CachedTraceLobePassEqualsOneProgramForEveryTexel) {
     for (Material& material : scene.materials)
         material.roughness = material.name == "red" ? 0.5f : (material.name == "green" ? 0.25f : 0.35f);
     RenderSettings settings = cachedAt64();
-    settings.width = settings.height = 96;
+    settings.output.width = settings.output.height = 96;
     const ShaderVariant everyTexel(sourceDir() / "shaders", "indirect_trace.frag.glsl", "lit_lobes_every_texel",
                                    "#define LIT_LOBES_FOR_EVERY_TEXEL 1");
     for (const View view : {View::IndirectSpecular, View::Final}) {
-        settings.view = view;
+        settings.debug.view = view;
         renderer_->setScene(scene);
         const CameraView camera = cameraFor(scene, settings);
         const HdrImage split = renderFrom(scene, camera, settings);
         Renderer oneProgram(everyTexel.root, log_);
         oneProgram.setScene(scene);
         oneProgram.render(scene, camera, settings);
-        const HdrImage all{settings.width, settings.height, oneProgram.readHdrRgb()};
+        const HdrImage all{settings.output.width, settings.output.height, oneProgram.readHdrRgb()};
         double mean = 0.0;
         for (const float c : all.rgb) mean += c;
         mean /= static_cast<double>(all.rgb.size());

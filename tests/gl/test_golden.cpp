@@ -28,23 +28,23 @@ class Golden : public GlFixture, public ::testing::WithParamInterface<GoldenCase
 TEST_P(Golden, CornellBoxMatchesGoldenImage) {
     const Scene scene = loadCornellBox();
     RenderSettings settings = smallSettings(128);
-    settings.view = GetParam().view;
+    settings.debug.view = GetParam().view;
     render(scene, settings);
     const std::vector<std::uint8_t> rendered = renderer_->readOutputRgba8();
     const std::filesystem::path golden = sourceDir() / "tests" / "golden" / (std::string(GetParam().name) + ".png");
     const std::filesystem::path actual = outputDir() / (std::string(GetParam().name) + ".actual.png");
-    writePng(actual, settings.width, settings.height, rendered);
+    writePng(actual, settings.output.width, settings.output.height, rendered);
 
     if (const char* update = std::getenv("LIT_UPDATE_GOLDENS"); update && std::string(update) == "1") {
-        writePng(golden, settings.width, settings.height, rendered);
+        writePng(golden, settings.output.width, settings.output.height, rendered);
         GTEST_SKIP() << "wrote " << golden;
     }
     int w = 0, h = 0, channels = 0;
     stbi_set_flip_vertically_on_load(1);  // our buffers are bottom-up, PNGs top-down
     std::unique_ptr<stbi_uc, void (*)(void*)> expected(stbi_load(golden.c_str(), &w, &h, &channels, 4), stbi_image_free);
     ASSERT_TRUE(expected) << "missing golden image " << golden << " (run tools/update-goldens.sh)";
-    ASSERT_EQ(w, settings.width);
-    ASSERT_EQ(h, settings.height);
+    ASSERT_EQ(w, settings.output.width);
+    ASSERT_EQ(h, settings.output.height);
 
     double sum = 0.0;
     int bad = 0;

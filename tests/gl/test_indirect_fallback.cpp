@@ -44,12 +44,12 @@ protected:
         const Scene scene = loadGltf(sourceDir() / "assets" / "cornell_box.gltf", log_);
         renderer.setScene(scene);
         RenderSettings s = settingsFor(mode);
-        s.width = s.height = kSize;
-        s.voxelResolution = 64;
-        s.gi = true;
-        s.indirectScale = scale;
-        s.temporalAccumulation = true;
-        s.view = view;
+        s.output.width = s.output.height = kSize;
+        s.gi.voxelResolution = 64;
+        s.gi.enabled = true;
+        s.indirect.scale = scale;
+        s.indirect.temporalAccumulation = true;
+        s.debug.view = view;
         const glm::mat4 world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.95f));
         const CameraView camera = makeCameraView(world, glm::radians(70.0f), 1.0f, 0.05f, 20.0f);
         for (int i = 0; i < frames; ++i) renderer.render(scene, camera, s);
@@ -58,7 +58,7 @@ protected:
 
     static RenderSettings settingsFor(GiMode mode) {
         RenderSettings s;
-        setGiMode(s, mode);
+        s.gi.mode = mode;
         return s;
     }
 

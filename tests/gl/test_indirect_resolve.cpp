@@ -27,15 +27,15 @@ protected:
 
     static RenderSettings giSettings(int size, int scale, bool temporal) {
         RenderSettings s = smallSettings(size);
-        s.gi = true;
-        s.indirectScale = scale;
-        s.temporalAccumulation = temporal;
+        s.gi.enabled = true;
+        s.indirect.scale = scale;
+        s.indirect.temporalAccumulation = temporal;
         return s;
     }
 
     HdrImage renderFrames(const Scene& scene, const CameraView& camera, const RenderSettings& settings, int frames) {
         for (int i = 0; i < frames; ++i) renderer_->render(scene, camera, settings);
-        return HdrImage{settings.width, settings.height, renderer_->readHdrRgb()};
+        return HdrImage{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     }
 
     // Cone subsets against the whole sets (temporalConeSubsets off), L_ID of the Cornell box seen
@@ -52,11 +52,11 @@ protected:
     SubsetRuns renderSubsetsAndWholeSets(const Scene& scene, const CameraView& camera, GiMode mode,
                                          const std::function<void(RenderSettings)>& moreSubsetFrames) {
         RenderSettings subsets = giSettings(96, 2, true);
-        setGiMode(subsets, mode);
-        subsets.view = View::IndirectDiffuse;
-        EXPECT_TRUE(subsets.temporalConeSubsets) << "the default";
+        subsets.gi.mode = mode;
+        subsets.debug.view = View::IndirectDiffuse;
+        EXPECT_TRUE(subsets.indirect.temporalConeSubsets) << "the default";
         RenderSettings whole = subsets;
-        whole.temporalConeSubsets = false;
+        whole.indirect.temporalConeSubsets = false;
         SubsetRuns runs;
         renderer_->setScene(scene);
         runs.subsetFirst = renderFrames(scene, camera, subsets, 1);
@@ -101,9 +101,9 @@ TEST_F(IndirectResolve, ReducedResolutionMatchesFullResolutionOnCornellBox) {
     const HdrImage half = renderFrames(scene, camera, giSettings(128, 2, false), 1);
     const HdrImage quarter = renderFrames(scene, camera, giSettings(128, 4, false), 1);
     RenderSettings indirectView = giSettings(128, 1, false);
-    indirectView.view = View::IndirectDiffuse;
+    indirectView.debug.view = View::IndirectDiffuse;
     const HdrImage fullIndirect = renderFrames(scene, camera, indirectView, 1);
-    indirectView.indirectScale = 2;
+    indirectView.indirect.scale = 2;
     const HdrImage halfIndirect = renderFrames(scene, camera, indirectView, 1);
     const double halfRmse = relativeRmse(half, full), quarterRmse = relativeRmse(quarter, full);
     const double termRmse = relativeRmse(halfIndirect, fullIndirect);
@@ -124,10 +124,10 @@ TEST_F(IndirectResolve, UpsamplingKeepsDepthEdges) {
     renderer_->setScene(scene);
     const CameraView camera = insideCamera(1.0f);
     RenderSettings settings = giSettings(128, 1, false);
-    settings.view = View::IndirectDiffuse;
+    settings.debug.view = View::IndirectDiffuse;
     const HdrImage full = renderFrames(scene, camera, settings, 1);
     const std::vector<float> depth = renderer_->readDepth();
-    settings.indirectScale = 4;
+    settings.indirect.scale = 4;
     const HdrImage quarter = renderFrames(scene, camera, settings, 1);
 
     // Edge pixels: a 4-neighbour whose view distance differs by more than 10 %.
@@ -174,7 +174,7 @@ TEST_F(IndirectResolve, StillCameraConverges) {
     renderer_->setScene(scene);
     const CameraView camera = insideCamera(1.0f);
     RenderSettings settings = giSettings(96, 2, true);
-    settings.view = View::IndirectDiffuse;
+    settings.debug.view = View::IndirectDiffuse;
     std::vector<HdrImage> frames;
     for (int i = 0; i < 40; ++i) frames.push_back(renderFrames(scene, camera, settings, 1));
     const double early = relativeMeanChange(frames[1], frames[0]);
@@ -187,10 +187,10 @@ TEST_F(IndirectResolve, StillCameraConverges) {
 
     // The converged image is still the per-pixel trace's image within the quality target.
     RenderSettings reference = settings;
-    reference.indirectScale = 1;
-    reference.temporalAccumulation = false;
-    settings.view = View::Final;
-    reference.view = View::Final;
+    reference.indirect.scale = 1;
+    reference.indirect.temporalAccumulation = false;
+    settings.debug.view = View::Final;
+    reference.debug.view = View::Final;
     HdrImage converged;
     for (int i = 0; i < 16; ++i) converged = renderFrames(scene, camera, settings, 1);
     const HdrImage full = renderFrames(scene, camera, reference, 1);
@@ -214,14 +214,14 @@ TEST_F(IndirectResolve, ConeSubsetsConvergeToTheWholeConeSet) {
     HdrImage subsetFinal;
     RenderSettings reference;  // the per-pixel trace of the same settings, without accumulation
     const SubsetRuns runs = renderSubsetsAndWholeSets(scene, camera, GiMode::Fast, [&](RenderSettings subsets) {
-        subsets.view = View::Final;
+        subsets.debug.view = View::Final;
         subsetFinal = renderFrames(scene, camera, subsets, kSamplingPeriod);
         reference = subsets;
     });
-    reference.temporalConeSubsets = false;
-    reference.indirectScale = 1;
-    reference.temporalAccumulation = false;
-    reference.view = View::Final;
+    reference.indirect.temporalConeSubsets = false;
+    reference.indirect.scale = 1;
+    reference.indirect.temporalAccumulation = false;
+    reference.debug.view = View::Final;
     const HdrImage perPixel = renderFrames(scene, camera, reference, 1);
 
     const double first = relativeMeanChange(runs.subsetFirst, runs.wholeFirst);
@@ -288,7 +288,7 @@ TEST_F(IndirectResolve, DisocclusionRejectsHistory) {
     const Scene scene = loadCornellBox();
     const int size = 96;
     RenderSettings settings = giSettings(size, 2, true);
-    settings.view = View::IndirectDiffuse;
+    settings.debug.view = View::IndirectDiffuse;
     const CameraView a = insideCamera(1.0f, {-0.25f, 1.0f, 0.95f}), b = insideCamera(1.0f, {0.25f, 1.0f, 0.95f});
     renderer_->setScene(scene);
     // Frames 0..39 at A: frame 40 at B samples as frame 0 does (the sampling repeats every 40 frames:
@@ -344,11 +344,11 @@ TEST_F(IndirectResolve, HistoryIsKeptAcrossARenderSizeSwitch) {
     // the kept history measured 5.5 %: no longer a test of whether history is kept. An accurate-
     // mode equivalent needs a first frame that is far from converged (per-frame set subsets) or a
     // history-identity check (e.g. a frame count read back from the history's alpha).
-    setGiMode(settings, GiMode::Fast);
-    settings.view = View::IndirectDiffuse;
+    settings.gi.mode = GiMode::Fast;
+    settings.debug.view = View::IndirectDiffuse;
     RenderSettings moving = giSettings(small, 2, true);
-    setGiMode(moving, GiMode::Fast);
-    moving.view = View::IndirectDiffuse;
+    moving.gi.mode = GiMode::Fast;
+    moving.debug.view = View::IndirectDiffuse;
     const CameraView a = insideCamera(1.0f), b = insideCamera(1.0f, {0.05f, 1.0f, 0.95f});
     renderer_->setScene(scene);
     renderFrames(scene, a, settings, 24);   // still at A, full size
@@ -373,7 +373,7 @@ TEST_F(IndirectResolve, SceneEditRejectsHistory) {
     Scene scene = loadCornellBox();
     const int size = 96;
     RenderSettings settings = giSettings(size, 2, true);
-    settings.view = View::IndirectDiffuse;
+    settings.debug.view = View::IndirectDiffuse;
     const CameraView camera = insideCamera(1.0f);
     renderer_->setScene(scene);
     const HdrImage before = renderFrames(scene, camera, settings, kSamplingPeriod);  // next frame samples as frame 0

@@ -48,7 +48,7 @@ TEST_P(LightTypes, OccluderCastsAShadowBelowIt) {
 TEST_P(LightTypes, WithoutShadowsTheSamePointIsLit) {
     const Scene scene = makeScene(GetParam().type);
     RenderSettings settings = smallSettings();
-    settings.shadows = false;
+    settings.shadows.enabled = false;
     const HdrImage image = render(scene, settings);
     const float below = luminance(radianceAt(scene, settings, image, {0.0f, 0.0f, 0.05f}, 1));
     EXPECT_GT(below, 0.1f);

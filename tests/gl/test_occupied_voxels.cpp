@@ -64,7 +64,7 @@ protected:
         if (!lights.lights.empty())
             lightBuffer_.update(0, lights.lights.size() * sizeof(gpu::GpuLight), lights.lights.data());
         gpu::FrameUniforms frame{};
-        frame.exposure = glm::vec4(settings_.exposureScale(), settings_.shadowPcfRadius, 0.0f, 0.0f);
+        frame.exposure = glm::vec4(settings_.output.exposureScale(), settings_.shadows.pcfRadius, 0.0f, 0.0f);
         frame.counts = glm::ivec4(static_cast<int>(lights.lights.size()), 0, 0, 0);
         frameBuffer_ = gl::Buffer("frame uniforms", sizeof frame, &frame, 0);
         DrawCounters counters;

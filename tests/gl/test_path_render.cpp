@@ -62,7 +62,7 @@ TEST_F(PathRender, ConsecutiveFramesDifferALittleNeverALot) {
         renderer_->render(scene, *path.view(t, aspect, bounds), settings);
         frames.push_back(renderer_->readOutputRgba8());
     }
-    const int w = settings.width, h = settings.height;
+    const int w = settings.output.width, h = settings.output.height;
     writePng(outputDir() / "path_first.png", w, h, frames.front());
     writePng(outputDir() / "path_last.png", w, h, frames.back());
 

@@ -30,8 +30,9 @@ protected:
     }
     // Where `world` appears, in top-left pixel coordinates (as pickNode takes them).
     glm::ivec2 topLeftPixel(const Scene& scene, const RenderSettings& settings, const glm::vec3& world) const {
-        const glm::ivec2 p = projectToPixel(cameraFor(scene, settings), world, settings.width, settings.height);
-        return {p.x, settings.height - 1 - p.y};
+        const glm::ivec2 p =
+            projectToPixel(cameraFor(scene, settings), world, settings.output.width, settings.output.height);
+        return {p.x, settings.output.height - 1 - p.y};
     }
     std::vector<std::uint8_t> renderRgba8(const Scene& scene, const RenderSettings& settings) {
         renderer_->render(scene, cameraFor(scene, settings), settings);
@@ -81,8 +82,8 @@ TEST_F(Picking, BackgroundPicksNothing) {
 TEST_F(Picking, SurfaceAtReadsNormalPositionAndMaterial) {
     const Scene scene = loadCornellBox();
     RenderSettings settings = smallSettings(96);
-    settings.gi = true;  // so the sample carries the voxel volume it was traced in
-    settings.voxelResolution = 64;
+    settings.gi.enabled = true;  // so the sample carries the voxel volume it was traced in
+    settings.gi.voxelResolution = 64;
     render(scene, settings);
     struct Case {
         int node;
@@ -102,7 +103,7 @@ TEST_F(Picking, SurfaceAtReadsNormalPositionAndMaterial) {
         EXPECT_LT(glm::length(s->position - c.world), 0.06f) << "node " << c.node;
         EXPECT_NEAR(s->roughness, 0.9f, 1.0f / 255.0f);
         EXPECT_NEAR(s->metalness, 0.0f, 1.0f / 255.0f);
-        EXPECT_EQ(s->glPixel, glm::ivec2(pixel.x, settings.height - 1 - pixel.y));
+        EXPECT_EQ(s->glPixel, glm::ivec2(pixel.x, settings.output.height - 1 - pixel.y));
         ASSERT_NE(renderer_->voxels(), nullptr);
         EXPECT_FLOAT_EQ(s->volumeSide, renderer_->voxels()->side());
         EXPECT_FLOAT_EQ(s->voxelSize, renderer_->voxels()->voxelSize());
@@ -121,7 +122,7 @@ TEST_F(Picking, HighlightOutlinesOnlyTheSelectedSilhouette) {
     renderer_->setOverlay(overlay);
     const std::vector<std::uint8_t> outlined = renderRgba8(scene, settings);
     EXPECT_TRUE(renderer_->readHdrRgb() == plainHdr) << "the overlay must not touch the HDR image";
-    const int w = settings.width, h = settings.height;
+    const int w = settings.output.width, h = settings.output.height;
     std::vector<int> ids(static_cast<std::size_t>(w * h));
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) ids[static_cast<std::size_t>(y * w + x)] = renderer_->pickNode({x, y});
@@ -175,7 +176,7 @@ TEST_F(Picking, EverySelectedNodeIsOutlinedTheActiveOneBrighter) {
     overlay.selectedOutline = {kShort};
     renderer_->setOverlay(overlay);
     const std::vector<std::uint8_t> outlined = renderRgba8(scene, settings);
-    const int w = settings.width, h = settings.height;
+    const int w = settings.output.width, h = settings.output.height;
     std::vector<int> ids(static_cast<std::size_t>(w * h));
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) ids[static_cast<std::size_t>(y * w + x)] = renderer_->pickNode({x, y});
@@ -239,14 +240,16 @@ TEST_F(Picking, LinesOnTopAndBehindWalls) {
 
     // The on-top line changes the pixels it crosses: sample along its projection.
     const std::vector<std::uint8_t> onTop = renderWith({}, {open});
-    const glm::ivec2 a = projectToPixel(cameraFor(scene, settings), open.a, settings.width, settings.height);
-    const glm::ivec2 b = projectToPixel(cameraFor(scene, settings), open.b, settings.width, settings.height);
+    const glm::ivec2 a =
+        projectToPixel(cameraFor(scene, settings), open.a, settings.output.width, settings.output.height);
+    const glm::ivec2 b =
+        projectToPixel(cameraFor(scene, settings), open.b, settings.output.width, settings.output.height);
     int crossed = 0, samples = 0;
     for (float t = 0.05f; t < 0.96f; t += 0.05f, ++samples) {
         const glm::ivec2 p = glm::ivec2(glm::mix(glm::vec2(a), glm::vec2(b), t) + 0.5f);
         bool changed = false;  // the rasterized line may sit one pixel off the rounded point
         for (int dy = -1; dy <= 1; ++dy) {
-            const std::size_t i = (static_cast<std::size_t>(p.y + dy) * settings.width + p.x) * 4;
+            const std::size_t i = (static_cast<std::size_t>(p.y + dy) * settings.output.width + p.x) * 4;
             changed |= onTop[i] != plain[i] || onTop[i + 1] != plain[i + 1] || onTop[i + 2] != plain[i + 2];
         }
         crossed += changed;
@@ -288,8 +291,8 @@ TEST_F(Picking, ProfiledAsOverlayOnlyWhenThereIsOne) {
     renderer_->profiler().flush();
     const PassTiming* timing = renderer_->profiler().lastRun("overlay");
     ASSERT_NE(timing, nullptr);
-    std::printf("overlay pass (outline + gizmo, %dx%d): %.3f ms GPU, %.3f ms CPU\n", settings.width, settings.height,
-                timing->gpuMs, timing->cpuMs);
+    std::printf("overlay pass (outline + gizmo, %dx%d): %.3f ms GPU, %.3f ms CPU\n", settings.output.width,
+                settings.output.height, timing->gpuMs, timing->cpuMs);
 }
 
 // Everything the editor draws, in one picture for people to look at (tests/output/overlay.png):
@@ -298,8 +301,8 @@ TEST_F(Picking, ProfiledAsOverlayOnlyWhenThereIsOne) {
 TEST_F(Picking, WritesAnOverlayPicture) {
     const Scene scene = loadCornellBox();
     RenderSettings settings = smallSettings(192);
-    settings.gi = true;
-    settings.voxelResolution = 64;
+    settings.gi.enabled = true;
+    settings.gi.voxelResolution = 64;
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     renderer_->render(scene, camera, settings);
@@ -328,7 +331,7 @@ TEST_F(Picking, WritesAnOverlayPicture) {
     renderer_->setOverlay(overlay);
     renderer_->render(scene, camera, settings);
     const std::vector<std::uint8_t> image = renderer_->readOutputRgba8();
-    writePng(outputDir() / "overlay.png", settings.width, settings.height, image);
+    writePng(outputDir() / "overlay.png", settings.output.width, settings.output.height, image);
     EXPECT_EQ(renderer_->pickNode(floorPixel), 0) << "the overlay does not change the ID buffer";
 }
 

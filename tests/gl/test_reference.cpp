@@ -73,7 +73,7 @@ protected:
         const std::vector<bool> mask = interiorMask(hits, size, size, 2);
 
         for (const View view : {View::DirectDiffuse, View::DirectSpecular}) {
-            settings.view = view;
+            settings.debug.view = view;
             const HdrImage raster = render(scene, settings);
             const std::vector<float> traced = tracer.image().viewRgb(view, settings);
             Comparison c;

@@ -17,10 +17,10 @@ protected:
 
     static RenderSettings settingsAt(int size, View view) {
         RenderSettings s;
-        s.width = s.height = size;
-        s.voxelResolution = 64;
-        s.gi = true;  // indirect scale 2 (the default): trace, resolve and fallback run
-        s.view = view;
+        s.output.width = s.output.height = size;
+        s.gi.voxelResolution = 64;
+        s.gi.enabled = true;  // indirect scale 2 (the default): trace, resolve and fallback run
+        s.debug.view = view;
         return s;
     }
     static CameraView insideTheBox() {

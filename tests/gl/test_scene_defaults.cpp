@@ -44,10 +44,10 @@ TEST_P(BlenderScenes, MeanBrightnessWithin25PercentOfCycles) {
     ASSERT_EQ(scene.lights.size(), 1u);
     ASSERT_EQ(scene.cameras.size(), 1u);
     RenderSettings settings;  // defaults: nothing set by hand
-    settings.width = 128;
-    settings.height = 128;
+    settings.output.width = 128;
+    settings.output.height = 128;
     const double lit = meanLuminance(render(scene, settings));
-    settings.gi = false;
+    settings.gi.enabled = false;
     const double litDirect = meanLuminance(render(scene, settings));
     const double ratio = lit / cycles.at("meanLuminance").get<double>();
     const double directRatio = litDirect / cycles.at("directMeanLuminance").get<double>();
@@ -74,11 +74,11 @@ protected:
     // GI on, the sun off and a uniform sky of radiance 1: the indirect diffuse view.
     static RenderSettings uniformSkySettings() {
         RenderSettings settings = smallSettings();
-        settings.gi = true;
-        settings.defaultSunIrradiance = 0.0f;
-        settings.skyMode = SkyMode::Uniform;
-        settings.skyZenith = {1.0f, 1.0f, 1.0f};
-        settings.view = View::IndirectDiffuse;
+        settings.gi.enabled = true;
+        settings.sky.sunIrradiance = 0.0f;
+        settings.sky.mode = SkyMode::Uniform;
+        settings.sky.zenith = {1.0f, 1.0f, 1.0f};
+        settings.debug.view = View::IndirectDiffuse;
         return settings;
     }
     static Scene bareScene(bool roof, glm::vec3 eye, glm::vec3 target) {
@@ -98,7 +98,7 @@ TEST_F(SceneDefaults, BareSceneGetsASunAtAnAngleAndASky) {
     // Seen from the side the default sun's shadows fall towards, so they are in view.
     const Scene scene = bareScene(false, {-5.0f, 6.0f, -5.0f}, {0.0f, 0.0f, 0.0f});
     RenderSettings settings = smallSettings();
-    settings.gi = true;
+    settings.gi.enabled = true;
     const HdrImage image = render(scene, settings);
     // Sun: 4 W/m² at 60° elevation on albedo 0.5: L = 0.5/π · 4 · sin 60° ≈ 0.55, plus the sky's
     // ≈ 0.5/π · 0.8 ≈ 0.13.
@@ -116,9 +116,10 @@ TEST_F(SceneDefaults, BareSceneGetsASunAtAnAngleAndASky) {
     EXPECT_LT(shadow, 0.5f * floor);
     // The background is the sky model: the top row looks 12° below the horizon, past the floor.
     const CameraView view = cameraFor(scene, settings);
-    const int x = settings.width / 2, y = settings.height - 1;
-    const glm::vec4 far = glm::inverse(view.viewProjection()) *
-                          glm::vec4((x + 0.5f) / settings.width * 2.0f - 1.0f, (y + 0.5f) / settings.height * 2.0f - 1.0f, 1.0f, 1.0f);
+    const int x = settings.output.width / 2, y = settings.output.height - 1;
+    const glm::vec4 far =
+        glm::inverse(view.viewProjection()) * glm::vec4((x + 0.5f) / settings.output.width * 2.0f - 1.0f,
+                                                        (y + 0.5f) / settings.output.height * 2.0f - 1.0f, 1.0f, 1.0f);
     const glm::vec3 expected = skyRadiance(resolveSky(scene, settings, nullptr), glm::vec3(far) / far.w - view.position);
     EXPECT_LT(glm::length(image.at(x, y) - expected), 0.01f * glm::length(expected) + 1e-4f);
 }
@@ -132,7 +133,7 @@ TEST_F(SceneDefaults, BareSceneGetsASunAtAnAngleAndASky) {
 // the window with more of the sky that the roof truly leaves.
 TEST_F(SceneDefaults, SkyLightReachesAnOpenFloorThroughTheVoxels) {
     RenderSettings settings = uniformSkySettings();
-    settings.voxelResolution = 64;
+    settings.gi.voxelResolution = 64;
     const glm::vec3 eye(2.0f, 0.4f, 7.0f), target(2.0f, 0.0f, 2.0f);
     const Scene open = bareScene(false, eye, target);
     const float openFloor = luminance(radianceAt(open, settings, render(open, settings), target));
@@ -163,7 +164,7 @@ double parallelRectangleViewFactor(double a, double b, double h) {
 // less (0.25 voxel off reads 0.950 and 0.972, but the sealed room leaks 0.84 % at 128³, not 0.73 %).
 TEST_F(SceneDefaults, SkyUnderARoofMatchesTheClosedForm) {
     RenderSettings settings = uniformSkySettings();
-    settings.bounces = 1;
+    settings.gi.bounces = 1;
     // The camera under the roof, looking down at the floor below its centre: from the side, a pixel
     // at grazing incidence spans metres of floor, the open floor beyond the roof's edge too.
     const glm::vec3 eye(2.0f, 0.5f, 2.6f), target(2.0f, 0.0f, 2.0f);
@@ -171,7 +172,7 @@ TEST_F(SceneDefaults, SkyUnderARoofMatchesTheClosedForm) {
     const double roofShare = 4.0 * parallelRectangleViewFactor(1.0, 1.0, 0.95);
     const double expected = 0.5 * (1.0 - roofShare);
     for (const int voxels : {64, 128}) {
-        settings.voxelResolution = voxels;
+        settings.gi.voxelResolution = voxels;
         const float underRoof = luminance(radianceAt(covered, settings, render(covered, settings), target));
         std::printf("%d³: floor under the roof %.3f, closed form %.3f (roof's view factor %.3f): %.3f\n", voxels,
                     underRoof, expected, roofShare, underRoof / expected);
@@ -184,8 +185,8 @@ TEST_F(SceneDefaults, SkyUnderARoofMatchesTheClosedForm) {
 TEST_F(SceneDefaults, AutoExposureFollowsTheLight) {
     Scene scene = loadCornellBox();
     RenderSettings settings = smallSettings(64);
-    settings.autoExposure = true;
-    settings.autoExposureSpeed = 0.0f;  // instant, so one frame settles
+    settings.output.autoExposure = true;
+    settings.output.autoExposureSpeed = 0.0f;  // instant, so one frame settles
     render(scene, settings);
     const float ev = renderer_->exposureEv(settings);
     const std::vector<std::uint8_t> before = renderer_->readOutputRgba8();
@@ -201,7 +202,7 @@ TEST_F(SceneDefaults, AutoExposureFollowsTheLight) {
     for (std::size_t i = 0; i < after.size(); i += 4) meanAfter += after[i + 1];
     EXPECT_NEAR(meanAfter / meanBefore, 1.0, 0.15);
     // Compensation adds stops to the metered value.
-    settings.exposureEv = 1.0f;
+    settings.output.exposureEv = 1.0f;
     render(scene, settings);
     EXPECT_NEAR(renderer_->exposureEv(settings), brighterEv + 1.0f, 0.01f);
 }
@@ -255,17 +256,18 @@ TEST_F(SceneDefaults, SponzaFromInsideTheAtriumIsLitBySunAndSky) {
     addCameraNode(scene, camera, eye, glm::vec3(centre.x - 0.4f * size.x, 4.0f, centre.z));
     scene.updateWorldTransforms();
     RenderSettings settings;
-    settings.width = 128;
-    settings.height = 96;
-    settings.voxelResolution = 128;
+    settings.output.width = 128;
+    settings.output.height = 96;
+    settings.gi.voxelResolution = 128;
     const CameraView view = sceneCameraView(scene, 0, 128.0f / 96.0f);
     EXPECT_LT(view.znear, 0.1f) << "the near plane must not cut into the atrium";
     const HdrImage image = render(scene, settings);
-    writePng(outputDir() / "sponza_default_light.png", settings.width, settings.height, renderer_->readOutputRgba8());
+    writePng(outputDir() / "sponza_default_light.png", settings.output.width, settings.output.height,
+             renderer_->readOutputRgba8());
     const float mean = meanLuminance(image);
     RenderSettings skyOnly = settings;
-    skyOnly.defaultSunIrradiance = 0.0f;  // the default GI mode, as `settings`
-    skyOnly.view = View::IndirectDiffuse;
+    skyOnly.sky.sunIrradiance = 0.0f;  // the default GI mode, as `settings`
+    skyOnly.debug.view = View::IndirectDiffuse;
     const float skyLight = meanLuminance(render(scene, skyOnly));
     constexpr float kReferenceMean = 0.0243f;      // sun and sky, every bounce, 16 spp
     constexpr float kReferenceSkyLight = 0.00099f;  // sky only, by one segment, diffuse, on surfaces

@@ -79,9 +79,9 @@ void main() {
 
 TEST_F(SkyTwin, UniformAndGradientAgree) {
     RenderSettings settings;
-    settings.skyIntensity = 1.7f;
+    settings.sky.intensity = 1.7f;
     for (SkyMode mode : {SkyMode::None, SkyMode::Uniform, SkyMode::Gradient}) {
-        settings.skyMode = mode;
+        settings.sky.mode = mode;
         const Sky sky = resolveSky(Scene{}, settings, nullptr);
         const std::vector<glm::vec3> dirs = directions();
         const std::vector<glm::vec3> gpu = gpuRadiance(sky, nullptr, dirs);
@@ -102,7 +102,7 @@ TEST_F(SkyTwin, EquirectangularImageAgrees) {
     std::uniform_real_distribution<float> value(0.0f, 4.0f);
     for (int i = 0; i < image.width * image.height; ++i) image.texels.emplace_back(value(random), value(random), value(random));
     RenderSettings settings;
-    settings.skyMode = SkyMode::Hdr;
+    settings.sky.mode = SkyMode::Hdr;
     const Sky sky = resolveSky(Scene{}, settings, &image);
     const gl::Texture texture = makeSkyTexture(image);
     const std::vector<glm::vec3> dirs = directions();

@@ -24,18 +24,18 @@ protected:
     // Z slice through the middle of the box, albedo, mip 0, GI on (the views need the volume).
     static RenderSettings sliceSettings(int size = 128) {
         RenderSettings s = smallSettings(size);
-        s.gi = true;
-        s.view = View::VoxelSlice;
-        s.voxelSliceAxis = 2;
-        s.voxelSlice = 0.5f;
-        s.voxelMip = 0;
-        s.voxelChannel = VoxelChannel::Albedo;
+        s.gi.enabled = true;
+        s.debug.view = View::VoxelSlice;
+        s.debug.voxelSliceAxis = 2;
+        s.debug.voxelSlice = 0.5f;
+        s.debug.voxelMip = 0;
+        s.debug.voxelChannel = VoxelChannel::Albedo;
         return s;
     }
 
     HdrImage draw(const RenderSettings& settings) {
         renderer_->render(scene_, cameraFor(scene_, settings), settings);
-        return HdrImage{settings.width, settings.height, renderer_->readHdrRgb()};
+        return HdrImage{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     }
 
     // Pixel rectangle of a Z slice (square image) covering world x ∈ [x0, x1], y ∈ [y0, y1].
@@ -125,7 +125,7 @@ TEST_F(VoxelViewTest, MiddleZSliceShowsRedWallLeftAndGreenWallRight) {
 
 TEST_F(VoxelViewTest, OpacityIsSetOnWallsAndZeroInsideTheEmptyRoom) {
     RenderSettings s = sliceSettings();
-    s.voxelChannel = VoxelChannel::Opacity;
+    s.debug.voxelChannel = VoxelChannel::Opacity;
     const HdrImage image = draw(s);
     const glm::vec3 left = rectMean(image, worldRect(image, -1.08f, 0.5f, -0.92f, 1.5f));
     const glm::vec3 ceiling = rectMean(image, worldRect(image, -0.5f, 1.92f, 0.5f, 2.08f));
@@ -141,24 +141,24 @@ TEST_F(VoxelViewTest, ChannelsAxesAndMipsChangeTheImage) {
     ASSERT_GT(meanOf(reference), 0.01);
     for (VoxelChannel channel : {VoxelChannel::Radiance, VoxelChannel::Normal, VoxelChannel::Opacity}) {
         RenderSettings s = base;
-        s.voxelChannel = channel;
+        s.debug.voxelChannel = channel;
         EXPECT_GT(meanAbsDifference(draw(s), reference), 0.01) << toString(channel);
     }
     for (int axis : {0, 1}) {
         RenderSettings s = base;
-        s.voxelSliceAxis = axis;
+        s.debug.voxelSliceAxis = axis;
         EXPECT_GT(meanAbsDifference(draw(s), reference), 0.01) << "axis " << axis;
     }
     RenderSettings coarse = base;
-    coarse.voxelMip = 2;
+    coarse.debug.voxelMip = 2;
     EXPECT_GT(meanAbsDifference(draw(coarse), reference), 0.01) << "mip 2";
     RenderSettings volume = base;
-    volume.view = View::Voxels;
+    volume.debug.view = View::Voxels;
     const HdrImage volumeImage = draw(volume);
     EXPECT_GT(meanAbsDifference(volumeImage, reference), 0.01) << "3D view";
     // Far past the last level the mip clamps instead of failing.
     RenderSettings beyond = base;
-    beyond.voxelMip = 99;
+    beyond.debug.voxelMip = 99;
     EXPECT_EQ(VoxelDebugPass::mipLevel(beyond, *renderer_->voxels()), renderer_->voxels()->mipCount() - 1);
     EXPECT_GT(meanOf(draw(beyond)), 0.0);
 }
@@ -169,7 +169,7 @@ TEST_F(VoxelViewTest, MipOneIsABlurredMipZero) {
     // 64 px: one pixel per voxel at mip 0, two at mip 1 (no grid in either).
     RenderSettings s = sliceSettings(64);
     const HdrImage mip0 = draw(s);
-    s.voxelMip = 1;
+    s.debug.voxelMip = 1;
     const HdrImage mip1 = draw(s);
     const glm::vec3 mean0 = occupiedMean(mip0), mean1 = occupiedMean(mip1);
     ASSERT_GT(mean0.r, 0.05f);
@@ -183,7 +183,7 @@ TEST_F(VoxelViewTest, MipOneIsABlurredMipZero) {
 
 TEST_F(VoxelViewTest, GridAppearsOnlyWhenVoxelsAreAtLeastFourPixels) {
     RenderSettings s = sliceSettings(64);
-    s.voxelChannel = VoxelChannel::Opacity;
+    s.debug.voxelChannel = VoxelChannel::Opacity;
     auto gridPixels = [&](const HdrImage& image) {
         // Inside the empty room every pixel is 0 except grid lines (mix(0, 0.5, 0.5) = 0.25).
         const Rect r = worldRect(image, -0.4f, 1.4f, 0.4f, 1.75f);
@@ -193,13 +193,13 @@ TEST_F(VoxelViewTest, GridAppearsOnlyWhenVoxelsAreAtLeastFourPixels) {
         return count;
     };
     EXPECT_EQ(gridPixels(draw(s)), 0) << "1 px per voxel: no grid";
-    s.voxelMip = 2;  // 16 voxels across 64 px: 4 px each
+    s.debug.voxelMip = 2;  // 16 voxels across 64 px: 4 px each
     EXPECT_GT(gridPixels(draw(s)), 10);
 }
 
 TEST_F(VoxelViewTest, VolumeViewShowsTheRedWallOnTheLeft) {
     RenderSettings s = sliceSettings(64);
-    s.view = View::Voxels;
+    s.debug.view = View::Voxels;
     const HdrImage image = draw(s);
     // The camera looks down −Z into the box: the left wall fills the left edge of the picture.
     const glm::vec3 left = image.mean(0.0f, 0.3f, 0.08f, 0.7f);
@@ -207,7 +207,7 @@ TEST_F(VoxelViewTest, VolumeViewShowsTheRedWallOnTheLeft) {
     EXPECT_GT(left.r, 2.0f * left.g);
     EXPECT_GT(right.g, 1.5f * right.r);
     // Without GI there is no volume: black, not a failure.
-    s.gi = false;
+    s.gi.enabled = false;
     EXPECT_EQ(meanOf(draw(s)), 0.0);
 }
 
@@ -216,13 +216,13 @@ TEST_F(VoxelViewTest, VolumeViewShowsTheRedWallOnTheLeft) {
 TEST_F(VoxelViewTest, VoxelViewsSkipLightingAndConeTracing) {
     RenderSettings s = sliceSettings(64);
     for (const View view : {View::VoxelSlice, View::Voxels}) {
-        s.view = view;
+        s.debug.view = view;
         draw(s);
     }
     renderer_->profiler().flush();
     EXPECT_EQ(renderer_->profiler().lastRun("lighting"), nullptr);
     EXPECT_EQ(renderer_->profiler().lastRun("cone trace"), nullptr);
-    s.view = View::Final;
+    s.debug.view = View::Final;
     draw(s);
     renderer_->profiler().flush();
     EXPECT_NE(renderer_->profiler().lastRun("lighting"), nullptr);

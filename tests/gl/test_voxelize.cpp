@@ -39,7 +39,7 @@ protected:
     void voxelize(const Scene& scene, int n, const RenderSettings& settings = {}) {
         gpuScene_ = std::make_unique<GpuScene>(scene, log_);
         volume_ = std::make_unique<VoxelVolume>();
-        volume_->ensure(n, settings.voxelRadianceRgba8, log_);
+        volume_->ensure(n, settings.gi.radianceRgba8, log_);
         volume_->fitTo(scene.worldBounds());
         volume_->updateUniforms(settings, 0);
         DrawCounters counters;
@@ -53,7 +53,7 @@ protected:
         if (!lights.lights.empty())
             lightBuffer_.update(0, lights.lights.size() * sizeof(gpu::GpuLight), lights.lights.data());
         gpu::FrameUniforms frame{};
-        frame.exposure = glm::vec4(settings.exposureScale(), settings.shadowPcfRadius, 0.0f, 0.0f);
+        frame.exposure = glm::vec4(settings.output.exposureScale(), settings.shadows.pcfRadius, 0.0f, 0.0f);
         frame.counts = glm::ivec4(static_cast<int>(lights.lights.size()), 0, 0, 0);
         frameBuffer_ = gl::Buffer("frame uniforms", sizeof frame, &frame, 0);
         shadow_ = std::make_unique<ShadowPass>(sourceDir() / "shaders");
@@ -419,12 +419,12 @@ TEST_F(VoxelInject, EmissiveMaterialGivesItsEmission) {
     for (bool rgba8 : {false, true}) {
         SCOPED_TRACE(rgba8 ? "RGBA8 radiance" : "RGBA16F radiance");
         RenderSettings settings;
-        settings.voxelRadianceRgba8 = rgba8;
-        settings.voxelRadianceRange = 8.0f;
-        settings.defaultSunIrradiance = 0.0f;  // really no light: not the default sun of a bare scene
+        settings.gi.radianceRgba8 = rgba8;
+        settings.gi.radianceRange = 8.0f;
+        settings.sky.sunIrradiance = 0.0f;  // really no light: not the default sun of a bare scene
         voxelize(scene, 64, settings);
         inject(scene, settings);
-        const std::vector<glm::vec4> radiance = readRadianceVoxels(*volume_, 0, settings.voxelRadianceRange);
+        const std::vector<glm::vec4> radiance = readRadianceVoxels(*volume_, 0, settings.gi.radianceRange);
         int lampVoxels = 0, wrong = 0;
         for (const glm::ivec3& v : occupiedVoxels(*volume_)) {
             const glm::vec3 r = glm::vec3(radiance[index(v)]);
@@ -447,7 +447,7 @@ TEST_F(VoxelInject, CornellBoxVoxelizesAndLightsWithTimings) {
     const Scene scene = loadGltf(sourceDir() / "assets" / "cornell_box.gltf", log_);
     for (int resolution : {64, 128}) {
         RenderSettings settings;
-        settings.voxelResolution = resolution;
+        settings.gi.voxelResolution = resolution;
         voxelize(scene, resolution, settings);  // warm-up: shader compilation on first use
         inject(scene, settings);
         // Best of three: the machine running the tests is shared, the minimum is the least noisy.

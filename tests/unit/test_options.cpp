@@ -54,31 +54,32 @@ TEST(Options, EveryFlag) {
     EXPECT_EQ(o.frameCount(), 3);
 
     const lit::RenderSettings s = lit::cli::applyOptions(o, lit::RenderSettings{});
-    EXPECT_EQ(s.width, 320);
-    EXPECT_EQ(s.height, 200);
-    EXPECT_FLOAT_EQ(s.exposureEv, std::log2(2.5f));
-    EXPECT_FALSE(s.shadows);
-    EXPECT_EQ(s.view, lit::View::IndirectDiffuse);
-    EXPECT_FALSE(s.gi);
-    EXPECT_EQ(s.voxelResolution, 256);
-    EXPECT_FALSE(s.frustumCulling);
+    EXPECT_EQ(s.output.width, 320);
+    EXPECT_EQ(s.output.height, 200);
+    EXPECT_FLOAT_EQ(s.output.exposureEv, std::log2(2.5f));
+    EXPECT_FALSE(s.shadows.enabled);
+    EXPECT_EQ(s.debug.view, lit::View::IndirectDiffuse);
+    EXPECT_FALSE(s.gi.enabled);
+    EXPECT_EQ(s.gi.voxelResolution, 256);
+    EXPECT_FALSE(s.output.frustumCulling);
 }
 
 TEST(Options, CullingOnOrOff) {
     const auto culling = [](std::vector<std::string> extra) {
         std::vector<std::string> args{"x.gltf", "--out", "x.png"};
         args.insert(args.end(), extra.begin(), extra.end());
-        return lit::cli::applyOptions(parseOptions(args), lit::RenderSettings{}).frustumCulling;
+        return lit::cli::applyOptions(parseOptions(args), lit::RenderSettings{}).output.frustumCulling;
     };
-    EXPECT_TRUE(lit::RenderSettings{}.frustumCulling) << "on by default";
+    EXPECT_TRUE(lit::RenderSettings{}.output.frustumCulling) << "on by default";
     EXPECT_TRUE(culling({}));
     EXPECT_FALSE(culling({"--culling", "off"}));
     EXPECT_FALSE(culling({"--culling=off"}));
     EXPECT_TRUE(culling({"--culling", "on"}));
     lit::RenderSettings off;
-    off.frustumCulling = false;  // e.g. from --settings
-    EXPECT_FALSE(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png"}), off).frustumCulling);
-    EXPECT_TRUE(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--culling", "on"}), off).frustumCulling);
+    off.output.frustumCulling = false;  // e.g. from --settings
+    EXPECT_FALSE(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png"}), off).output.frustumCulling);
+    EXPECT_TRUE(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--culling", "on"}), off)
+                    .output.frustumCulling);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--culling", "yes"}), "--culling expects on or off, got 'yes'");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--culling"}), "missing value for --culling (expects on or off)");
     EXPECT_NE(lit::cli::usageText().find("--culling on|off"), std::string::npos);
@@ -86,25 +87,25 @@ TEST(Options, CullingOnOrOff) {
 
 TEST(Options, FlagsOverrideOnlyWhatTheyName) {
     lit::RenderSettings base;
-    base.width = 64;
-    base.height = 48;
-    base.gi = false;
-    base.exposureEv = 3.0f;
+    base.output.width = 64;
+    base.output.height = 48;
+    base.gi.enabled = false;
+    base.output.exposureEv = 3.0f;
     const lit::RenderSettings s = lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--gi", "on"}), base);
-    EXPECT_EQ(s.width, 64);
-    EXPECT_EQ(s.height, 48);
-    EXPECT_TRUE(s.gi);
-    EXPECT_FLOAT_EQ(s.exposureEv, 3.0f);
+    EXPECT_EQ(s.output.width, 64);
+    EXPECT_EQ(s.output.height, 48);
+    EXPECT_TRUE(s.gi.enabled);
+    EXPECT_FLOAT_EQ(s.output.exposureEv, 3.0f);
 }
 
 TEST(Options, ExposureStopsAutoExposureAndSky) {
     const Options o = parseOptions({"x.gltf", "--out", "x.png", "--ev", "-2.5", "--auto-exposure", "on", "--sky-hdr", "e.hdr"});
     const lit::RenderSettings s = lit::cli::applyOptions(o, lit::RenderSettings{});
-    EXPECT_FLOAT_EQ(s.exposureEv, -2.5f);
-    EXPECT_TRUE(s.autoExposure);
-    EXPECT_EQ(s.skyMode, lit::SkyMode::Hdr);
-    EXPECT_EQ(s.skyHdrPath, "e.hdr");
-    EXPECT_EQ(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--sky", "none"}), {}).skyMode,
+    EXPECT_FLOAT_EQ(s.output.exposureEv, -2.5f);
+    EXPECT_TRUE(s.output.autoExposure);
+    EXPECT_EQ(s.sky.mode, lit::SkyMode::Hdr);
+    EXPECT_EQ(s.sky.hdrPath, "e.hdr");
+    EXPECT_EQ(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--sky", "none"}), {}).sky.mode,
               lit::SkyMode::None);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--ev", "21"}), "--ev expects stops from -10 to 20, got '21'");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--ev", "1", "--exposure", "2"}),
@@ -190,9 +191,10 @@ TEST(Options, StructuralMessages) {
 
 // --voxel-rays sets RenderSettings::voxelRays (0 = cones); counts outside 0..kMaxVoxelRays are refused.
 TEST(Options, VoxelRays) {
-    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--voxel-rays", "64"}), {}).voxelRays, 64);
-    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--voxel-rays", "0"}), {}).voxelRays, 0);
-    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png"}), {}).voxelRays, lit::RenderSettings{}.voxelRays);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--voxel-rays", "64"}), {}).gi.voxelRays, 64);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--voxel-rays", "0"}), {}).gi.voxelRays, 0);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png"}), {}).gi.voxelRays,
+              lit::RenderSettings{}.gi.voxelRays);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--voxel-rays", "257"}),
               "--voxel-rays expects a ray count from 0 to 256, got '257'");
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--voxel-rays", "many"}),
@@ -210,9 +212,10 @@ TEST(Options, ReferenceFlags) {
     EXPECT_EQ(parseOptions({"x.gltf", "--reference", "--bounces=2", "--out", "r.png"}).bounces, 2);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--spp", "8"}), "--spp needs --reference");
     // Without --reference, --bounces sets the voxel GI's bounces (issue #11): at least 1, all = the most.
-    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "3"}), {}).bounces, 3);
-    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "0"}), {}).bounces, 1);
-    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "all"}), {}).bounces, lit::kMaxBounces);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "3"}), {}).gi.bounces, 3);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "0"}), {}).gi.bounces, 1);
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "all"}), {}).gi.bounces,
+              lit::kMaxBounces);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--seed", "1"}), "--seed needs --reference");
     EXPECT_EQ(usageError({"x.gltf", "--reference", "--out", "x.png", "--spp", "0"}),
               "--spp expects samples per pixel from 1 to 1048576, got '0'");
@@ -345,64 +348,72 @@ TEST(Options, FastGiFlags) {
                                     "--bench-gi-updates", "2"});
     EXPECT_EQ(o.giUpdateRounds, 2);
     const lit::RenderSettings s = lit::cli::applyOptions(o, lit::RenderSettings{});
-    EXPECT_EQ(s.indirectScale, 4);
-    EXPECT_TRUE(s.temporalAccumulation);
+    EXPECT_EQ(s.indirect.scale, 4);
+    EXPECT_TRUE(s.indirect.temporalAccumulation);
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--indirect-scale", "3"}),
               "--indirect-scale expects 1, 2 or 4, got '3'");
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--temporal", "yes"}), "--temporal expects on or off, got 'yes'");
-    EXPECT_TRUE(s.temporalConeSubsets);  // the default
+    EXPECT_TRUE(s.indirect.temporalConeSubsets);  // the default
     EXPECT_FALSE(lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "a.png", "--cone-subsets", "off"}),
                                         lit::RenderSettings{})
-                     .temporalConeSubsets);
+                     .indirect.temporalConeSubsets);
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--cone-subsets", "1"}),
               "--cone-subsets expects on or off, got '1'");
     lit::RenderSettings noSubsets;
-    noSubsets.temporalConeSubsets = false;
+    noSubsets.indirect.temporalConeSubsets = false;
     EXPECT_EQ(lit::renderSettingsFromJson(lit::toJson(noSubsets)), noSubsets);  // saved and read back
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--bench-gi-updates", "2"}),
               "--bench-gi-updates needs --bench (the steady frames come first)");
 }
 
-TEST(Options, VoxelIrradianceFlags) {
-    const lit::RenderSettings s = lit::cli::applyOptions(
-        parseOptions({"x.gltf", "--out", "a.png", "--voxel-irradiance", "on", "--voxel-irradiance-per-frame", "20000"}),
-        lit::RenderSettings{});
-    EXPECT_TRUE(s.diffuseFromVoxelIrradiance);
-    EXPECT_EQ(s.voxelIrradianceVoxelsPerFrame, 20000);
-    EXPECT_EQ(lit::RenderSettings{}.voxelIrradianceVoxelsPerFrame, 0);  // all at once: stills stay right
-    EXPECT_EQ(lit::renderSettingsFromJson(lit::toJson(s)), s);          // saved and read back
-    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--voxel-irradiance-per-frame", "-1"}),
-              "--voxel-irradiance-per-frame expects a voxel count from 0, got '-1'");
+// The GI work per frame: a still converges by default (the editor's refined light), --single-frame
+// is the old single-frame steady state, and the per-frame flags spread the work as the editor does.
+TEST(Options, GiBudgetFlags) {
+    EXPECT_EQ(lit::cli::giBudgetFor(parseOptions({"x.gltf", "--out", "a.png"})), lit::GiBudget::converge());
+    EXPECT_EQ(lit::cli::giBudgetFor(parseOptions({"x.gltf", "--out", "a.png", "--single-frame"})),
+              lit::GiBudget::updateOnly());
+    const lit::GiBudget spread = lit::cli::giBudgetFor(
+        parseOptions({"x.gltf", "--out", "a.png", "--gi-update-per-frame", "20000", "--gi-refine-per-frame", "0"}));
+    EXPECT_EQ(spread.updateVoxels, 20000u);
+    EXPECT_EQ(spread.refineVoxels, 0u);
+    // 0 = the whole update at once.
+    EXPECT_EQ(
+        lit::cli::giBudgetFor(parseOptions({"x.gltf", "--out", "a.png", "--gi-update-per-frame", "0"})).updateVoxels,
+        lit::GiBudget::kAll);
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--gi-update-per-frame", "-1"}),
+              "--gi-update-per-frame expects a voxel count from 0, got '-1'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--single-frame", "--gi-refine-per-frame", "5"}),
+              "--single-frame sets the GI work per frame; give it or --gi-update-per-frame / --gi-refine-per-frame");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--voxel-irradiance", "on"}),
+              "--voxel-irradiance was replaced by --gi-mode fast|accurate|cached");
 }
 
-TEST(Options, GiModePresetAndTheFlagsThatOverrideIt) {
+TEST(Options, GiMode) {
     using lit::GiMode;
     const lit::RenderSettings defaults;
-    EXPECT_EQ(lit::giModeOf(defaults), GiMode::Cached);
+    EXPECT_EQ(defaults.gi.mode, GiMode::Cached);
     const auto settingsFor = [](const std::vector<std::string>& args) {
         return lit::cli::applyOptions(parseOptions(args), lit::RenderSettings{});
     };
     const lit::RenderSettings accurate = settingsFor({"x.gltf", "--out", "a.png", "--gi-mode", "accurate"});
-    EXPECT_TRUE(accurate.anisotropicVoxels);
-    EXPECT_EQ(accurate.coneFootprintPerHeight, lit::kAccurateGiFootprint);
-    EXPECT_FALSE(accurate.diffuseFromVoxelIrradiance);
-    EXPECT_EQ(lit::giModeOf(accurate), GiMode::Accurate);
-    // The two fields' own flags win over the preset, whatever their order: the result is Custom.
-    const lit::RenderSettings custom = settingsFor({"x.gltf", "--footprint", "0.5", "--out", "a.png", "--gi-mode", "accurate"});
-    EXPECT_EQ(custom.coneFootprintPerHeight, 0.5f);
-    EXPECT_TRUE(custom.anisotropicVoxels);
-    EXPECT_EQ(lit::giModeOf(custom), GiMode::Custom);
-    // fast switches off what a settings file switched on; cached puts back the defaults.
+    EXPECT_TRUE(accurate.gi.anisotropicVoxels());
+    EXPECT_EQ(accurate.gi.footprintPerHeight(), lit::kAccurateGiFootprint);
+    EXPECT_FALSE(accurate.gi.voxelIrradiance());
+    EXPECT_EQ(accurate.gi.mode, GiMode::Accurate);
+    // --footprint sets the bounded cones' parameter; the mode stays.
+    const lit::RenderSettings bounded =
+        settingsFor({"x.gltf", "--footprint", "0.5", "--out", "a.png", "--gi-mode", "accurate"});
+    EXPECT_EQ(bounded.gi.footprintPerHeight(), 0.5f);
+    EXPECT_EQ(bounded.gi.mode, GiMode::Accurate);
+    // fast: isotropic voxels and unbounded cones whatever the footprint; cached puts back the defaults.
     lit::RenderSettings fromFile = accurate;
     const lit::RenderSettings fast = lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "a.png", "--gi-mode", "fast"}), fromFile);
-    EXPECT_EQ(lit::giModeOf(fast), GiMode::Fast);
-    EXPECT_FALSE(fast.anisotropicVoxels);
-    EXPECT_EQ(fast.coneFootprintPerHeight, 0.0f);
-    EXPECT_FALSE(fast.diffuseFromVoxelIrradiance);
+    EXPECT_EQ(fast.gi.mode, GiMode::Fast);
+    EXPECT_FALSE(fast.gi.anisotropicVoxels());
+    EXPECT_EQ(fast.gi.footprintPerHeight(), 0.0f);
+    EXPECT_FALSE(fast.gi.voxelIrradiance());
     const lit::RenderSettings cached = lit::cli::applyOptions(parseOptions({"x.gltf", "--out", "a.png", "--gi-mode", "cached"}), fast);
     EXPECT_EQ(cached, defaults);
-    // --voxel-irradiance off after the preset: the accurate mode.
-    EXPECT_EQ(lit::giModeOf(settingsFor({"x.gltf", "--voxel-irradiance", "off", "--out", "a.png"})), GiMode::Accurate);
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--gi-mode", "custom"}),
               "--gi-mode expects fast, accurate or cached, got 'custom'");
     EXPECT_EQ(lit::toString(GiMode::Accurate), "accurate");

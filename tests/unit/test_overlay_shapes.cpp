@@ -267,9 +267,9 @@ SurfaceSample floorSample() {
 TEST(OverlayShapes, TracedDiffuseConesFillTheHemisphere) {
     const SurfaceSample s = floorSample();
     RenderSettings settings;
-    setGiMode(settings, GiMode::Fast);  // the fixed six-cone set (the other modes: the stratified sets' tests)
-    settings.diffuseConeAperture = 0.9f;
-    settings.maxTraceDistance = 0.75f;
+    settings.gi.mode = GiMode::Fast;  // the fixed six-cone set (the other modes: the stratified sets' tests)
+    settings.gi.diffuseConeAperture = 0.9f;
+    settings.gi.maxTraceDistance = 0.75f;
     const glm::vec3 camera(1.0f, 2.0f, 2.0f);
     const std::vector<TracedCone> cones = tracedCones(s, camera, settings);
     int diffuse = 0;
@@ -310,7 +310,7 @@ TEST(OverlayShapes, MirrorSpecularConeIsTheReflectedViewRay) {
     const glm::vec3 camera(1.0f, 2.0f, 2.0f);
     const glm::vec3 mirror = glm::reflect(glm::normalize(s.position - camera), s.normal);
     for (int samples : {1, 2, 4, 8}) {
-        settings.specularSamples = samples;
+        settings.indirect.specularSamples = samples;
         int specular = 0;
         float weights = 0.0f;
         for (const TracedCone& c : tracedCones(s, camera, settings)) {
@@ -330,7 +330,7 @@ TEST(OverlayShapes, RoughSpecularConesSpreadAroundTheMirrorDirection) {
     SurfaceSample s = floorSample();
     s.roughness = 0.6f;
     RenderSettings settings;
-    settings.specularSamples = 8;
+    settings.indirect.specularSamples = 8;
     const glm::vec3 camera(1.0f, 2.0f, 2.0f);
     const glm::vec3 mirror = glm::reflect(glm::normalize(s.position - camera), s.normal);
     const float alpha = 0.36f;
@@ -359,7 +359,7 @@ TEST(OverlayShapes, RoughSpecularOnDiffuseSurfacesReusesTheDiffuseCones) {
     SurfaceSample s = floorSample();
     s.roughness = 1.0f;  // 2 samples: the specular cones clamp to 60°, as wide as the diffuse ones
     RenderSettings settings;
-    settings.specularSamples = 2;
+    settings.indirect.specularSamples = 2;
     const glm::vec3 camera(1.0f, 2.0f, 2.0f);
     int diffuse = 0, specular = 0;
     for (const TracedCone& c : tracedCones(s, camera, settings)) {
@@ -379,7 +379,7 @@ TEST(OverlayShapes, RoughSpecularOnDiffuseSurfacesReusesTheDiffuseCones) {
     EXPECT_EQ(diffuse, 0);
     // Diffuse cones wider than the widest specular cone (60°): the specular cones are marched.
     s.diffuse = true;
-    settings.diffuseConeAperture = 1.2f;
+    settings.gi.diffuseConeAperture = 1.2f;
     for (const TracedCone& c : tracedCones(s, camera, settings)) EXPECT_TRUE(c.marched);
 }
 

@@ -404,7 +404,7 @@ TEST(ReferenceTerms, FinalIsTheSumOfTheTermsAndBouncesAddLight) {
     EXPECT_EQ(indirectWithoutGi, 0.0);
     EXPECT_GT(indirect, 0.0);
     RenderSettings noSpecular;
-    noSpecular.directSpecular = noSpecular.indirectSpecular = false;
+    noSpecular.terms.directSpecular = noSpecular.terms.indirectSpecular = false;
     const std::vector<float> diffuseOnly = image.viewRgb(View::Final, noSpecular);
     EXPECT_NEAR(diffuseOnly[3 * 100], image.mean(Term::DirectDiffuse, 100).r + image.mean(Term::IndirectDiffuse, 100).r, 1e-5f);
     EXPECT_THROW(image.viewRgb(View::Albedo, RenderSettings{}), std::invalid_argument);

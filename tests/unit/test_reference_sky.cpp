@@ -92,7 +92,7 @@ TEST(ReferenceSky, TheEditorsReferenceSeesTheSameSkyAndSunAsTheRasterizer) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], expectedSky[c], 1e-4f * expectedSky[c] + 1e-7f);
     // The floor, lit by the sun (and by the sky through BRDF-sampled rays): the sun alone gives
     // albedo/π · E · cos θ = 0.5/π · 4 W/m² · sin 60° ≈ 0.55 W/(sr·m²) (RenderSettings defaults).
-    const float sunOnly = 0.5f / 3.14159265f * lighting.defaultSunIrradiance * std::sin(lighting.defaultSunElevation);
+    const float sunOnly = 0.5f / 3.14159265f * lighting.sky.sunIrradiance * std::sin(lighting.sky.sunElevation);
     EXPECT_GT(pixel(lit, floorX, floorY).g, 0.9f * sunOnly);
     // The same settings again: nothing restarts.
     progressive.update(b.scene, b.camera, kSize, kSize, settings, &lighting);
@@ -100,7 +100,7 @@ TEST(ReferenceSky, TheEditorsReferenceSeesTheSameSkyAndSunAsTheRasterizer) {
 
     // A brighter sky is a new job, and the background follows it.
     RenderSettings brighter = lighting;
-    brighter.skyIntensity = 2.0f;
+    brighter.sky.intensity = 2.0f;
     progressive.update(b.scene, b.camera, kSize, kSize, settings, &brighter);
     const std::vector<float> twice = finalImage(progressive, brighter, 3);
     EXPECT_NEAR(pixel(twice, skyX, skyY).b, 2.0f * expectedSky.b, 1e-4f * expectedSky.b);

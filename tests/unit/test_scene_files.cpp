@@ -193,15 +193,15 @@ TEST(SceneCameraPaths, BlenderAnimationStartsAtTheCameraAndUnknownNamesAreListed
 
 TEST(ExposureSettings, StopsAreSavedAndOldLinearExposureIsRead) {
     RenderSettings s;
-    s.exposureEv = -3.5f;
-    s.autoExposure = true;
-    s.skyMode = SkyMode::Hdr;
-    s.skyHdrPath = "sky.hdr";
-    s.skyZenith = {0.5f, 0.25f, 1.0f};
+    s.output.exposureEv = -3.5f;
+    s.output.autoExposure = true;
+    s.sky.mode = SkyMode::Hdr;
+    s.sky.hdrPath = "sky.hdr";
+    s.sky.zenith = {0.5f, 0.25f, 1.0f};
     EXPECT_EQ(renderSettingsFromJson(toJson(s)), s);
-    EXPECT_FLOAT_EQ(renderSettingsFromJson(R"({"exposure": 4.0})").exposureEv, 2.0f);
-    EXPECT_FLOAT_EQ(renderSettingsFromJson(R"({"exposure": 4.0, "exposureEv": -1})").exposureEv, -1.0f);
-    EXPECT_FLOAT_EQ(RenderSettings{}.exposureScale(), 1.0f);
+    EXPECT_FLOAT_EQ(renderSettingsFromJson(R"({"exposure": 4.0})").output.exposureEv, 2.0f);
+    EXPECT_FLOAT_EQ(renderSettingsFromJson(R"({"exposure": 4.0, "exposureEv": -1})").output.exposureEv, -1.0f);
+    EXPECT_FLOAT_EQ(RenderSettings{}.output.exposureScale(), 1.0f);
     EXPECT_THROW(renderSettingsFromJson(R"({"exposure": 0})"), std::runtime_error);
     EXPECT_THROW(renderSettingsFromJson(R"({"skyZenith": [1, 2]})"), std::runtime_error);
     EXPECT_THROW(renderSettingsFromJson(R"({"skyMode": "purple"})"), std::runtime_error);
@@ -214,12 +214,12 @@ TEST(Sky, GradientAndAutoMode) {
     EXPECT_EQ(sky.mode, SkyMode::Gradient) << "a scene without lights gets a sky";
     EXPECT_TRUE(hasDefaultSun(bare, settings));
     const auto near = [](glm::vec3 a, std::array<float, 3> b) { return glm::length(a - glm::vec3(b[0], b[1], b[2])) < 1e-5f; };
-    EXPECT_TRUE(near(skyRadiance(sky, {0, 1, 0}), settings.skyZenith));
-    EXPECT_TRUE(near(skyRadiance(sky, {1, 0, 0}), settings.skyHorizon));
-    EXPECT_TRUE(near(skyRadiance(sky, {0, -1, 0}), settings.skyGround));
+    EXPECT_TRUE(near(skyRadiance(sky, {0, 1, 0}), settings.sky.zenith));
+    EXPECT_TRUE(near(skyRadiance(sky, {1, 0, 0}), settings.sky.horizon));
+    EXPECT_TRUE(near(skyRadiance(sky, {0, -1, 0}), settings.sky.ground));
     // The default sun stands at its elevation, not straight up.
     const glm::vec3 sun = defaultSunDirection(settings);
-    EXPECT_NEAR(std::asin(-sun.y), settings.defaultSunElevation, 1e-5f);
+    EXPECT_NEAR(std::asin(-sun.y), settings.sky.sunElevation, 1e-5f);
 
     Scene lit = bare;
     lit.lights.push_back(Light{});
@@ -233,10 +233,10 @@ TEST(Sky, GradientAndAutoMode) {
     const auto function = makeSkyFunction(bare, settings);
     ASSERT_TRUE(function);
     EXPECT_EQ(function({0.3f, 0.5f, -0.2f}), skyRadiance(sky, {0.3f, 0.5f, -0.2f}));
-    settings.skyMode = SkyMode::Hdr;
+    settings.sky.mode = SkyMode::Hdr;
     EXPECT_EQ(resolveSky(lit, settings, nullptr).mode, SkyMode::Gradient) << "no image: the gradient";
     std::string error;
-    settings.skyHdrPath = "no_such_sky.hdr";
+    settings.sky.hdrPath = "no_such_sky.hdr";
     EXPECT_TRUE(makeSkyFunction(lit, settings, &error));
     EXPECT_NE(error.find("no_such_sky.hdr"), std::string::npos);
 }
@@ -262,8 +262,8 @@ TEST(Sky, EquirectangularImageLookup) {
     ASSERT_EQ(image.width, W);
     ASSERT_EQ(image.height, H);
     RenderSettings settings;
-    settings.skyMode = SkyMode::Hdr;
-    settings.skyIntensity = 2.0f;
+    settings.sky.mode = SkyMode::Hdr;
+    settings.sky.intensity = 2.0f;
     const Sky sky = resolveSky(Scene{}, settings, &image);
     ASSERT_EQ(sky.mode, SkyMode::Hdr);
     for (int y = 0; y < H; ++y)

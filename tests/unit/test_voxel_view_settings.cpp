@@ -24,9 +24,9 @@ TEST(VoxelViewSettings, ChannelNamesRoundTrip) {
 
 TEST(VoxelViewSettings, ChannelIsSavedByNameAndLoaded) {
     RenderSettings s;
-    s.view = View::VoxelSlice;
-    s.voxelChannel = VoxelChannel::Normal;
-    s.voxelMip = 2;
+    s.debug.view = View::VoxelSlice;
+    s.debug.voxelChannel = VoxelChannel::Normal;
+    s.debug.voxelMip = 2;
     const std::string json = toJson(s);
     EXPECT_NE(json.find("\"voxelChannel\": \"normal\""), std::string::npos) << json;
     EXPECT_EQ(renderSettingsFromJson(json), s);

@@ -379,7 +379,7 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
         Light sun;
         sun.name = "default sun";
         sun.type = LightType::Directional;
-        sun.intensity = RenderSettings{}.defaultSunIrradiance;
+        sun.intensity = RenderSettings{}.sky.sunIrradiance;
         addLightNode(scene, sun, glm::vec3(0.0f), defaultSunDirection(RenderSettings{}));
     }
     scene.updateWorldTransforms();
@@ -438,15 +438,15 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     std::vector<VctRun> runs;
     for (const int voxels : args.voxels) {
         RenderSettings settings = args.vct;
-        settings.bounces = args.bounces;
-        settings.width = size;
-        settings.height = size;
-        settings.gi = true;
-        settings.voxelResolution = voxels;
+        settings.gi.bounces = args.bounces;
+        settings.output.width = size;
+        settings.output.height = size;
+        settings.gi.enabled = true;
+        settings.gi.voxelResolution = voxels;
         VctRun run;
         run.voxels = voxels;
         const auto frame = [&](View view) {
-            settings.view = view;
+            settings.debug.view = view;
             const Clock::time_point start = Clock::now();
             for (int f = 0; f < args.frames; ++f) renderer.render(scene, camera, settings);
             glFinish();

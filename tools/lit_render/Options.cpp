@@ -190,15 +190,13 @@ Options parseOptions(const std::vector<std::string>& args) {
             const std::string text = value("fast, accurate or cached");
             options.giMode = parseGiMode(text);
             if (!options.giMode) throw UsageError("--gi-mode expects fast, accurate or cached, got '" + text + "'");
-        } else if (flag == "--anisotropic") {
-            options.anisotropic = onOff();
-        } else if (flag == "--voxel-irradiance") {
-            options.voxelIrradiance = onOff();
-        } else if (flag == "--voxel-irradiance-per-frame") {
+        } else if (flag == "--anisotropic" || flag == "--voxel-irradiance") {
+            throw UsageError(flag + " was replaced by --gi-mode fast|accurate|cached");
+        } else if (flag == "--gi-update-per-frame") {
             const std::string text = value("a voxel count");
             const auto n = parseInt(text, 0, 1 << 30);
-            if (!n) throw UsageError("--voxel-irradiance-per-frame expects a voxel count from 0, got '" + text + "'");
-            options.voxelIrradiancePerFrame = *n;
+            if (!n) throw UsageError("--gi-update-per-frame expects a voxel count from 0, got '" + text + "'");
+            options.giUpdatePerFrame = *n;
         } else if (flag == "--voxel-rays") {
             const std::string text = value("a ray count");
             const auto n = parseInt(text, 0, kMaxVoxelRays);
@@ -206,11 +204,14 @@ Options parseOptions(const std::vector<std::string>& args) {
                 throw UsageError("--voxel-rays expects a ray count from 0 to " + std::to_string(kMaxVoxelRays) + ", got '" +
                                  text + "'");
             options.voxelRays = *n;
-        } else if (flag == "--voxel-irradiance-refine") {
+        } else if (flag == "--gi-refine-per-frame") {
             const std::string text = value("a voxel count");
             const auto n = parseInt(text, 0, 1 << 30);
-            if (!n) throw UsageError("--voxel-irradiance-refine expects a voxel count from 0, got '" + text + "'");
-            options.voxelIrradianceRefine = *n;
+            if (!n) throw UsageError("--gi-refine-per-frame expects a voxel count from 0, got '" + text + "'");
+            options.giRefinePerFrame = *n;
+        } else if (flag == "--single-frame") {
+            noValue();
+            options.singleFrame = true;
         } else if (flag == "--footprint") {
             const std::string text = value("a number");
             const auto x = parseFloat(text);
@@ -323,6 +324,9 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw UsageError("--json needs --bench or --bench-path");
     if (options.frames && options.benchFrames > 0)
         throw UsageError("--frames and --bench both set the number of frames; give one of them");
+    if (options.singleFrame && (options.giUpdatePerFrame || options.giRefinePerFrame))
+        throw UsageError(
+            "--single-frame sets the GI work per frame; give it or --gi-update-per-frame / --gi-refine-per-frame");
     if (options.giUpdateRounds > 0 && options.benchFrames == 0)
         throw UsageError("--bench-gi-updates needs --bench (the steady frames come first)");
     return options;
@@ -331,35 +335,40 @@ Options parseOptions(const std::vector<std::string>& args) {
 bool Options::pathIsFile() const { return path && lower(std::filesystem::path(*path).extension().string()) == ".json"; }
 
 RenderSettings applyOptions(const Options& options, RenderSettings base) {
-    if (options.width) base.width = *options.width;
-    if (options.height) base.height = *options.height;
-    if (options.exposure) base.exposureEv = std::log2(*options.exposure);
-    if (options.ev) base.exposureEv = *options.ev;
-    if (options.autoExposure) base.autoExposure = *options.autoExposure;
-    if (options.sky) base.skyMode = *options.sky;
+    if (options.width) base.output.width = *options.width;
+    if (options.height) base.output.height = *options.height;
+    if (options.exposure) base.output.exposureEv = std::log2(*options.exposure);
+    if (options.ev) base.output.exposureEv = *options.ev;
+    if (options.autoExposure) base.output.autoExposure = *options.autoExposure;
+    if (options.sky) base.sky.mode = *options.sky;
     if (!options.skyHdr.empty()) {
-        base.skyMode = SkyMode::Hdr;
-        base.skyHdrPath = options.skyHdr.string();
+        base.sky.mode = SkyMode::Hdr;
+        base.sky.hdrPath = options.skyHdr.string();
     }
-    if (options.noShadows) base.shadows = false;
-    if (options.view) base.view = *options.view;
-    if (options.gi) base.gi = *options.gi;
-    if (options.voxels) base.voxelResolution = *options.voxels;
+    if (options.noShadows) base.shadows.enabled = false;
+    if (options.view) base.debug.view = *options.view;
+    if (options.gi) base.gi.enabled = *options.gi;
+    if (options.voxels) base.gi.voxelResolution = *options.voxels;
     // --bounces also sets the voxel GI's bounces (at least 1, "all" = the most it does).
     if (options.bounces)
-        base.bounces = *options.bounces == kAllReferenceBounces ? kMaxBounces : std::clamp(*options.bounces, 1, kMaxBounces);
-    if (options.giMode) setGiMode(base, *options.giMode);
-    if (options.anisotropic) base.anisotropicVoxels = *options.anisotropic;
-    if (options.voxelIrradiance) base.diffuseFromVoxelIrradiance = *options.voxelIrradiance;
-    if (options.voxelIrradiancePerFrame) base.voxelIrradianceVoxelsPerFrame = *options.voxelIrradiancePerFrame;
-    if (options.voxelIrradianceRefine) base.voxelIrradianceRefineVoxelsPerFrame = *options.voxelIrradianceRefine;
-    if (options.voxelRays) base.voxelRays = *options.voxelRays;
-    if (options.footprint) base.coneFootprintPerHeight = *options.footprint;
-    if (options.culling) base.frustumCulling = *options.culling;
-    if (options.indirectScale) base.indirectScale = *options.indirectScale;
-    if (options.temporal) base.temporalAccumulation = *options.temporal;
-    if (options.coneSubsets) base.temporalConeSubsets = *options.coneSubsets;
+        base.gi.bounces =
+            *options.bounces == kAllReferenceBounces ? kMaxBounces : std::clamp(*options.bounces, 1, kMaxBounces);
+    if (options.giMode) base.gi.mode = *options.giMode;
+    if (options.voxelRays) base.gi.voxelRays = *options.voxelRays;
+    if (options.footprint) base.gi.coneFootprintPerHeight = *options.footprint;
+    if (options.culling) base.output.frustumCulling = *options.culling;
+    if (options.indirectScale) base.indirect.scale = *options.indirectScale;
+    if (options.temporal) base.indirect.temporalAccumulation = *options.temporal;
+    if (options.coneSubsets) base.indirect.temporalConeSubsets = *options.coneSubsets;
     return base;
+}
+
+GiBudget giBudgetFor(const Options& options) {
+    GiBudget budget = options.singleFrame ? GiBudget::updateOnly() : GiBudget::converge();
+    if (options.giUpdatePerFrame && *options.giUpdatePerFrame > 0)
+        budget.updateVoxels = static_cast<std::uint32_t>(*options.giUpdatePerFrame);
+    if (options.giRefinePerFrame) budget.refineVoxels = static_cast<std::uint32_t>(*options.giRefinePerFrame);
+    return budget;
 }
 
 int resolveCamera(const Options& options, const Scene& scene) {
@@ -386,7 +395,7 @@ std::string shortUsage() {
     return "usage: lit-render SCENE.gltf --out image.png [--hdr image.hdr] [--size WxH] [--camera NAME|INDEX]\n"
            "                  [--ev STOPS|--exposure X] [--auto-exposure on|off] [--sky MODE] [--sky-hdr FILE.hdr]\n"
            "                  [--no-shadows] [--view VIEW] [--gi on|off] [--voxels N] [--frames N]\n"
-           "                  [--bounces N] [--gi-mode fast|accurate|cached] [--anisotropic on|off] [--footprint X]\n"
+           "                  [--bounces N] [--gi-mode fast|accurate|cached] [--footprint X] [--single-frame]\n"
            "                  [--culling on|off] [--indirect-scale 1|2|4] [--temporal on|off]\n"
            "                  [--cone-subsets on|off]\n"
            "                  [--bench FRAMES [--json FILE]] [--settings FILE.json] [--help]\n"
@@ -397,7 +406,7 @@ std::string shortUsage() {
 
 std::string usageText() {
     const RenderSettings defaults;  // the defaults quoted below come from the struct, not from memory
-    const std::string size = std::to_string(defaults.width) + "x" + std::to_string(defaults.height);
+    const std::string size = std::to_string(defaults.output.width) + "x" + std::to_string(defaults.output.height);
     return shortUsage() +
            "\n"
            "Renders a glTF scene headless (EGL, no window) with voxel cone traced global illumination.\n"
@@ -409,8 +418,12 @@ std::string usageText() {
            "                       the RMSE of luminance relative to the reference's mean\n"
            "  --difference FILE.png  with --compare: write the editor's Difference view, the signed relative\n"
            "                       error per pixel (blue too dark, white right, red too bright)\n"
-           "  --max-error X        relative error at the Difference ramp's ends (default " + formatNumber(kDefaultMaxError) + " = ±50 %)\n"
-           "  --size WxH           output size in pixels, 1.." + std::to_string(kMaxImageSide) + " each (default: the settings', " + size + ")\n"
+           "  --max-error X        relative error at the Difference ramp's ends (default " +
+           formatNumber(kDefaultMaxError) +
+           " = ±50 %)\n"
+           "  --size WxH           output size in pixels, 1.." +
+           std::to_string(kMaxImageSide) + " each (default: the settings', " + size +
+           ")\n"
            "  --camera NAME|INDEX  scene camera by name or index (default: the scene's first camera, else a\n"
            "                       camera framing the whole scene)\n"
            "  --ev STOPS           exposure in stops, -10..20: radiance x 2^STOPS before tone mapping (default 0;\n"
@@ -424,60 +437,73 @@ std::string usageText() {
            "  --allow-external-uris  let the scene read buffers and images outside its folder\n"
            "                       (absolute paths, '..', file:); off: such a scene is refused\n"
            "  --view VIEW          what to write (default final), one of:\n"
-           "                       " + viewNames() + "\n"
+           "                       " +
+           viewNames() +
+           "\n"
            "  --gi on|off          voxel cone traced indirect light (default on)\n"
            "  --voxels N           voxel volume resolution per side: 64, 128, 256 or 512 (default " +
-           std::to_string(defaults.voxelResolution) + ")\n"
-           "  --bounces N|all      light bounces of the voxel GI, 1.." + std::to_string(kMaxBounces) + " (default " +
-           std::to_string(defaults.bounces) + "; 1 = one bounce, only direct light is injected; all = " +
-           std::to_string(kMaxBounces) + "); with --reference see below\n"
-           "  --gi-mode MODE       fast, accurate or cached (default " + std::string(toString(giModeOf(defaults))) + "):\n"
-           "                       accurate = --anisotropic on --footprint " + formatNumber(kAccurateGiFootprint) + " --voxel-irradiance off, the mode\n"
-           "                       measured against the reference, cones traced per pixel (several times the fast\n"
-           "                       mode's frame); cached = the same cones traced per voxel after each light or\n"
-           "                       geometry edit, gathered per pixel (--voxel-irradiance on; docs/GI.md); fast =\n"
-           "                       isotropic voxels, unbounded cones per pixel; the three flags below override it\n"
-           "  --anisotropic on|off directional voxels for the mip levels cones read (default " +
-           std::string(defaults.anisotropicVoxels ? "on" : "off") + ")\n"
-           "  --voxel-irradiance on|off  indirect diffuse gathered from irradiance cached in the voxels\n"
-           "                       instead of per-pixel cones (default " + std::string(defaults.diffuseFromVoxelIrradiance ? "on" : "off") + ")\n"
-           "  --voxel-irradiance-per-frame N  with it: voxels whose irradiance is traced per frame after an\n"
-           "                       edit, the rest keep the old light until their turn (default " +
-           std::to_string(defaults.voxelIrradianceVoxelsPerFrame) + " = all at once)\n"
-           "  --voxel-irradiance-refine N  then: voxels traced again per frame with the other cone sets\n"
-           "                       until each holds all 16 (default " +
-           std::to_string(defaults.voxelIrradianceRefineVoxelsPerFrame) + " = off; with --frames)\n"
+           std::to_string(defaults.gi.voxelResolution) +
+           ")\n"
+           "  --bounces N|all      light bounces of the voxel GI, 1.." +
+           std::to_string(kMaxBounces) + " (default " + std::to_string(defaults.gi.bounces) +
+           "; 1 = one bounce, only direct light is injected; all = " + std::to_string(kMaxBounces) +
+           "); with --reference see below\n"
+           "  --gi-mode MODE       fast, accurate or cached (default " +
+           std::string(toString(defaults.gi.mode)) +
+           "):\n"
+           "                       cached = the voxels gather their own irradiance once per light or geometry\n"
+           "                       edit and each pixel gathers it from the voxels around it; accurate = directional\n"
+           "                       voxels and footprint-bounded cones traced per pixel (several times the fast\n"
+           "                       mode's frame); fast = the classic six cones per pixel over isotropic voxels\n"
+           "  --single-frame       the GI update in the first frame and no refinement: the single-frame steady\n"
+           "                       state benchmarks time (default: every frame finishes the GI work pending, the\n"
+           "                       refinement included, so a still shows the editor's converged light)\n"
+           "  --gi-update-per-frame N  occupied voxels the GI update after an edit traces per frame, as the\n"
+           "                       editor spreads it (default 0 = all at once; with --frames)\n"
+           "  --gi-refine-per-frame N  voxels the refinement (the other cone sets, after the update) traces\n"
+           "                       per frame (default: all at once; 0 = none)\n"
            "  --voxel-rays N       rays per voxel for the voxels' own gathered light (the cached mode's\n"
            "                       irradiance, bounces 2..N), marched through the voxel grid (default " +
-           std::to_string(defaults.voxelRays) + ";\n"
-           "                       0 = the accurate mode's cones; at most " + std::to_string(kMaxVoxelRays) + ")\n"
-           "  --footprint X        largest voxel a cone leaving a surface samples, × its height above the\n"
-           "                       surface (default " + formatNumber(defaults.coneFootprintPerHeight) + "; 0 = unbounded)\n"
+           std::to_string(defaults.gi.voxelRays) +
+           ";\n"
+           "                       0 = the accurate mode's cones; at most " +
+           std::to_string(kMaxVoxelRays) +
+           ")\n"
+           "  --footprint X        accurate and cached modes: largest voxel a cone leaving a surface samples,\n"
+           "                       × its height above the surface (default " +
+           formatNumber(defaults.gi.coneFootprintPerHeight) +
+           "; 0 = unbounded)\n"
            "  --frames N           frames rendered before the image is read (default 1)\n"
            "  --culling on|off     frustum culling of the camera and shadow views against a BVH (default " +
-           std::string(defaults.frustumCulling ? "on" : "off") + ")\n"
+           std::string(defaults.output.frustumCulling ? "on" : "off") +
+           ")\n"
            "  --indirect-scale S   trace indirect light for one pixel in S×S (1, 2 or 4; default " +
-           std::to_string(defaults.indirectScale) + ") and upsample\n"
+           std::to_string(defaults.indirect.scale) +
+           ") and upsample\n"
            "                       edge-aware; 1 traces every pixel\n"
            "  --temporal on|off    accumulate indirect light over frames (default " +
-           std::string(defaults.temporalAccumulation ? "on" : "off") + "); a still then renders\n"
-           "                       temporalMaxFrames (" + std::to_string(defaults.temporalMaxFrames) +
+           std::string(defaults.indirect.temporalAccumulation ? "on" : "off") +
+           "); a still then renders\n"
+           "                       temporalMaxFrames (" +
+           std::to_string(defaults.indirect.temporalMaxFrames) +
            ") frames unless --frames says otherwise, so it converges\n"
            "  --cone-subsets on|off with --temporal on: each traced texel marches the normal cone and 2 of\n"
            "                       the 5 side cones per frame, a different pair each frame (default " +
-           std::string(defaults.temporalConeSubsets ? "on" : "off") + ")\n"
+           std::string(defaults.indirect.temporalConeSubsets ? "on" : "off") +
+           ")\n"
            "  --bench FRAMES       render FRAMES frames and print per-pass GPU times and the frame rate\n"
            "  --bench-gi-updates N after the frames, time N interleaved rounds of a light edit (re-inject +\n"
            "                       mipmaps) against a re-voxelization (voxelize + inject + mipmaps), each\n"
            "                       with the bounces and the cached mode's voxel irradiance that follow it;\n"
-           "                       with --voxel-irradiance-per-frame, each update is let finish over\n"
+           "                       with --gi-update-per-frame, each update is let finish over\n"
            "                       frames before the next is timed (its frames are printed)\n"
            "  --json FILE          with --bench or --bench-path: also write the results as JSON\n"
            "  --settings FILE      RenderSettings JSON (as saved by the editor); flags override it\n"
            "  --path FILE|NAME     fly a camera path: a .json path file, or the name of a camera animation\n"
            "                       in the scene file (see renderer/animation/CameraPathIO.h)\n"
            "  --fps N              frames per second along the path (default " +
-           std::to_string(static_cast<int>(kDefaultPathFps)) + ")\n"
+           std::to_string(static_cast<int>(kDefaultPathFps)) +
+           ")\n"
            "  --frames-out DIR     write every frame of the path to DIR/frame_00000.png, ... (creates DIR)\n"
            "  --bench-path         time every frame of the path (after one untimed warm-up frame) and\n"
            "                       print the lowest and highest FPS and the mean frame time, and a flicker\n"
@@ -485,7 +511,9 @@ std::string usageText() {
            "  --reference          path-trace the scene on the CPU (Embree): Lit's ground truth, same scene,\n"
            "                       camera, BRDF and light units; writes the same --out/--hdr/--view images.\n"
            "                       Ctrl+C writes the image so far (see docs/REFERENCE.md)\n"
-           "  --spp N              with --reference: samples per pixel (default " + std::to_string(kDefaultReferenceSpp) + ")\n"
+           "  --spp N              with --reference: samples per pixel (default " +
+           std::to_string(kDefaultReferenceSpp) +
+           ")\n"
            "  --bounces N|all      with --reference: indirect bounces, 0 = direct light only, 1 = the same\n"
            "                       light paths as Lit's one-bounce VCT (default), all = until Russian roulette\n"
            "  --seed S             with --reference: random seed; the same seed gives the same image (default 0)\n"

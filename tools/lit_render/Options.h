@@ -2,14 +2,15 @@
 // lit-render's command line: parsed by a pure function so every accepted and rejected form is a
 // unit test (tests/unit/test_options.cpp), then applied to RenderSettings in one place.
 
-#include "RenderSettings.h"
-
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "RenderSettings.h"
+#include "gi/GiBudget.h"
 
 namespace lit {
 struct Scene;
@@ -54,13 +55,14 @@ struct Options {
     std::optional<View> view;
     std::optional<bool> gi;
     std::optional<int> voxels;         // voxels per side
-    std::optional<GiMode> giMode;      // --gi-mode fast|accurate: both fields below at once (they override it)
-    std::optional<bool> voxelIrradiance;  // --voxel-irradiance on|off (RenderSettings::diffuseFromVoxelIrradiance)
-    std::optional<int> voxelIrradiancePerFrame;  // --voxel-irradiance-per-frame N (RenderSettings::voxelIrradianceVoxelsPerFrame)
-    std::optional<int> voxelRays;                // --voxel-rays N (RenderSettings::voxelRays)
-    std::optional<int> voxelIrradianceRefine;    // --voxel-irradiance-refine N (RenderSettings::voxelIrradianceRefineVoxelsPerFrame)
-    std::optional<bool> anisotropic;   // --anisotropic on|off: directional voxels for mip levels ≥ 1
-    std::optional<float> footprint;    // --footprint X: RenderSettings::coneFootprintPerHeight (0 = off)
+    std::optional<GiMode> giMode;      // --gi-mode fast|accurate|cached (GiSettings::mode)
+    std::optional<int> voxelRays;      // --voxel-rays N (GiSettings::voxelRays)
+    std::optional<float> footprint;    // --footprint X: GiSettings::coneFootprintPerHeight (0 = off)
+    // The GI work per frame (GiBudget). Unset: each frame finishes what is pending, the refinement
+    // included, so a still shows the converged light the editor shows after refinement.
+    std::optional<int> giUpdatePerFrame;  // --gi-update-per-frame N: the update's voxels per frame (0 = all)
+    std::optional<int> giRefinePerFrame;  // --gi-refine-per-frame N: the refinement's voxels per frame (0 = none)
+    bool singleFrame = false;             // --single-frame: the update in the first frame, no refinement
     std::optional<bool> culling;       // --culling on|off: frustum culling of the G-buffer and shadow views
     std::optional<int> indirectScale;  // --indirect-scale 1|2|4
     std::optional<bool> temporal;      // --temporal on|off
@@ -97,6 +99,9 @@ Options parseOptions(const std::vector<std::string>& args);
 
 // `base` (defaults or a --settings file) with the flags that were given applied on top.
 RenderSettings applyOptions(const Options& options, RenderSettings base);
+// The GI work each frame may do: converge (everything pending, the refinement included) unless
+// --single-frame or the per-frame flags say otherwise.
+GiBudget giBudgetFor(const Options& options);
 
 // The scene camera the options choose: an integer is an index into scene.cameras, anything else
 // a camera or node name. Returns -1 (the framing camera) when the scene has no camera and none

@@ -88,21 +88,37 @@ void checkSettingsFile(const fs::path& path, const std::string& text, lit::Rende
     const nlohmann::json given = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
     const nlohmann::json known = nlohmann::json::parse(lit::toJson(lit::RenderSettings{}));
     const std::string name = path.filename().string();
+    // An older flat key is read (with its deprecation message); anything else unknown is a typo.
+    std::vector<std::string> deprecated;
+    lit::renderSettingsFromJson(text, {}, &deprecated);
+    for (const std::string& message : deprecated) log.warning(name + ": " + message);
     if (given.is_object())
-        for (const auto& [key, value] : given.items())
-            if (!known.contains(key)) log.warning(name + ": unknown setting '" + key + "' ignored");
+        for (const auto& [key, value] : given.items()) {
+            const bool old = std::any_of(deprecated.begin(), deprecated.end(), [&key](const std::string& message) {
+                return message.find("'" + key + "'") != std::string::npos;
+            });
+            if (old) continue;
+            if (!known.contains(key)) {
+                log.warning(name + ": unknown setting '" + key + "' ignored");
+            } else if (value.is_object()) {
+                for (const auto& [field, fieldValue] : value.items())
+                    if (!known[key].contains(field))
+                        log.warning(name + ": unknown setting '" + key + "." + field + "' ignored");
+            }
+        }
     const auto requireRange = [&](const char* key, int value, int lo, int hi) {
         if (value < lo || value > hi)
             throw UsageError("settings " + path.string() + ": " + key + " is " + std::to_string(value) + ", expected " +
                              std::to_string(lo) + ".." + std::to_string(hi));
     };
-    requireRange("width", settings.width, 1, lit::cli::kMaxImageSide);
-    requireRange("height", settings.height, 1, lit::cli::kMaxImageSide);
-    requireRange("voxelResolution", settings.voxelResolution, 64, 512);
-    if ((settings.voxelResolution & (settings.voxelResolution - 1)) != 0)
-        throw UsageError("settings " + path.string() + ": voxelResolution is " + std::to_string(settings.voxelResolution) +
+    requireRange("output.width", settings.output.width, 1, lit::cli::kMaxImageSide);
+    requireRange("output.height", settings.output.height, 1, lit::cli::kMaxImageSide);
+    requireRange("gi.voxelResolution", settings.gi.voxelResolution, 64, 512);
+    if ((settings.gi.voxelResolution & (settings.gi.voxelResolution - 1)) != 0)
+        throw UsageError("settings " + path.string() + ": gi.voxelResolution is " +
+                         std::to_string(settings.gi.voxelResolution) +
                          ", expected a power of two (64, 128, 256 or 512)");
-    requireRange("shadowMapSize", settings.shadowMapSize, 16, lit::cli::kMaxImageSide);
+    requireRange("shadows.mapSize", settings.shadows.mapSize, 16, lit::cli::kMaxImageSide);
     const auto clampWarn = [&](const char* key, auto& value, auto lo, auto hi) {
         using T = std::decay_t<decltype(value)>;
         const T clamped = std::clamp(value, static_cast<T>(lo), static_cast<T>(hi));
@@ -113,12 +129,12 @@ void checkSettingsFile(const fs::path& path, const std::string& text, lit::Rende
             value = clamped;
         }
     };
-    clampWarn("specularSamples", settings.specularSamples, 1, 8);
-    clampWarn("voxelSliceAxis", settings.voxelSliceAxis, 0, 2);
-    clampWarn("voxelSlice", settings.voxelSlice, 0.0f, 1.0f);
-    clampWarn("exposureEv", settings.exposureEv, -10.0f, 20.0f);
-    clampWarn("coneStepScale", settings.coneStepScale, 0.05f, 4.0f);
-    clampWarn("maxTraceDistance", settings.maxTraceDistance, 0.0f, 2.0f);
+    clampWarn("indirect.specularSamples", settings.indirect.specularSamples, 1, 8);
+    clampWarn("debug.voxelSliceAxis", settings.debug.voxelSliceAxis, 0, 2);
+    clampWarn("debug.voxelSlice", settings.debug.voxelSlice, 0.0f, 1.0f);
+    clampWarn("output.exposureEv", settings.output.exposureEv, -10.0f, 20.0f);
+    clampWarn("gi.coneStepScale", settings.gi.coneStepScale, 0.05f, 4.0f);
+    clampWarn("gi.maxTraceDistance", settings.gi.maxTraceDistance, 0.0f, 2.0f);
 }
 
 // The memory a render at this size needs, estimated before any of it is allocated: 64 bytes per
@@ -126,9 +142,10 @@ void checkSettingsFile(const fs::path& path, const std::string& text, lit::Rende
 // measured 17.5 GB, issue #14) and 21 bytes per voxel (RGBA16F radiance with its mip chain plus
 // the RGBA8 albedo, normal and emission volumes).
 std::uint64_t estimatedRenderBytes(const lit::RenderSettings& settings) {
-    const auto pixels = static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
-    const auto side = static_cast<std::uint64_t>(settings.voxelResolution);
-    return pixels * 64 + (settings.gi ? side * side * side * 21 : 0);
+    const auto pixels =
+        static_cast<std::uint64_t>(settings.output.width) * static_cast<std::uint64_t>(settings.output.height);
+    const auto side = static_cast<std::uint64_t>(settings.gi.voxelResolution);
+    return pixels * 64 + (settings.gi.enabled ? side * side * side * 21 : 0);
 }
 
 // Bytes the GL can still give: system memory for a software rasterizer (llvmpipe renders into
@@ -161,13 +178,15 @@ void checkRenderLimits(const lit::RenderSettings& settings) {
     glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &maxHeight);
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
     const int maxSide = std::min({maxTexture, maxRenderbuffer, maxWidth, maxHeight});
-    if (settings.width > maxSide || settings.height > maxSide)
-        throw UsageError("the size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                         " is larger than this GL can render (" + std::to_string(maxSide) + " per side)");
+    if (settings.output.width > maxSide || settings.output.height > maxSide)
+        throw UsageError("the size " + std::to_string(settings.output.width) + "x" +
+                         std::to_string(settings.output.height) + " is larger than this GL can render (" +
+                         std::to_string(maxSide) + " per side)");
     // The voxel irradiance volumes are N × N × 2N (InjectPass).
-    if (settings.gi && 2 * settings.voxelResolution > max3d)
-        throw UsageError(std::to_string(settings.voxelResolution) + "^3 voxels are more than this GL's 3D textures hold (" +
-                         std::to_string(max3d) + " per side, 2N needed)");
+    if (settings.gi.enabled && 2 * settings.gi.voxelResolution > max3d)
+        throw UsageError(std::to_string(settings.gi.voxelResolution) +
+                         "^3 voxels are more than this GL's 3D textures hold (" + std::to_string(max3d) +
+                         " per side, 2N needed)");
     const std::uint64_t needed = estimatedRenderBytes(settings);
     std::uint64_t available = availableRenderBytes();
     // $LIT_MAX_RENDER_MB caps it further (a shared machine, a CI runner).
@@ -176,10 +195,10 @@ void checkRenderLimits(const lit::RenderSettings& settings) {
         if (capBytes > 0 && (available == 0 || capBytes < available)) available = capBytes;
     }
     if (available > 0 && needed > available)
-        throw UsageError("a " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " render with " +
-                         std::to_string(settings.voxelResolution) + "^3 voxels needs about " +
-                         std::to_string(needed / 1'000'000) + " MB, more than the " + std::to_string(available / 1'000'000) +
-                         " MB available; use a smaller --size or --voxels");
+        throw UsageError("a " + std::to_string(settings.output.width) + "x" + std::to_string(settings.output.height) +
+                         " render with " + std::to_string(settings.gi.voxelResolution) + "^3 voxels needs about " +
+                         std::to_string(needed / 1'000'000) + " MB, more than the " +
+                         std::to_string(available / 1'000'000) + " MB available; use a smaller --size or --voxels");
 }
 
 // An output folder is checked (created, and a file created and removed in it) before the render,
@@ -255,12 +274,13 @@ void printBench(const BenchResult& bench, const lit::RenderSettings& settings, c
     const Summary frame = summarize(bench.frameMs);
     row("frame (wall ms)", frame, bench.frameMs.size());
     row("frame (CPU issue ms)", summarize(bench.cpuFrameMs), bench.cpuFrameMs.size());
-    std::printf("%dx%d, GI %s: lowest FPS %.2f, highest FPS %.2f, mean frame %.3f ms (%.2f FPS)\n", settings.width,
-                settings.height, settings.gi ? "on" : "off", frame.max > 0 ? 1000.0 / frame.max : 0.0,
-                frame.min > 0 ? 1000.0 / frame.min : 0.0, frame.mean, frame.mean > 0 ? 1000.0 / frame.mean : 0.0);
+    std::printf("%dx%d, GI %s: lowest FPS %.2f, highest FPS %.2f, mean frame %.3f ms (%.2f FPS)\n",
+                settings.output.width, settings.output.height, settings.gi.enabled ? "on" : "off",
+                frame.max > 0 ? 1000.0 / frame.max : 0.0, frame.min > 0 ? 1000.0 / frame.min : 0.0, frame.mean,
+                frame.mean > 0 ? 1000.0 / frame.mean : 0.0);
     // Draws of the last frame's culled views (the camera; shadow views only when they were redrawn).
     std::printf("draws: %d of %d submitted (culling %s), culling %.3f ms CPU (mean), %zu triangles\n",
-                lastFrame.drawsSubmitted, lastFrame.drawsTotal, settings.frustumCulling ? "on" : "off",
+                lastFrame.drawsSubmitted, lastFrame.drawsTotal, settings.output.frustumCulling ? "on" : "off",
                 summarize(bench.cullMs).mean, lastFrame.triangles);
     if (bench.mipmaps.computeMinMs > 0.0)
         std::printf("radiance mipmaps (%s): compute %.3f ms, glGenerateTextureMipmap %.3f ms (min of runs): "
@@ -290,11 +310,11 @@ nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& option
     const Summary frame = summarize(bench.frameMs);
     return {{"scene", options.scene.string()},
             {"device", device},
-            {"width", settings.width},
-            {"height", settings.height},
-            {"view", std::string(lit::toString(settings.view))},
-            {"gi", settings.gi},
-            {"voxelResolution", settings.voxelResolution},
+            {"width", settings.output.width},
+            {"height", settings.output.height},
+            {"view", std::string(lit::toString(settings.debug.view))},
+            {"gi", settings.gi.enabled},
+            {"voxelResolution", settings.gi.voxelResolution},
             {"frames", bench.frameMs.size()},
             {"frameMs", toJson(frame)},
             {"cpuFrameMs", toJson(summarize(bench.cpuFrameMs))},
@@ -313,7 +333,7 @@ nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& option
               {"anisotropic", bench.mipmaps.anisotropic}}},
             {"triangles", stats.triangles},
             {"drawCalls", stats.drawCalls},
-            {"frustumCulling", settings.frustumCulling},
+            {"frustumCulling", settings.output.frustumCulling},
             {"drawsSubmitted", stats.drawsSubmitted},
             {"drawsTotal", stats.drawsTotal},
             {"cullMs", toJson(summarize(bench.cullMs))},
@@ -516,7 +536,7 @@ int runPath(const Options& options, const lit::CameraPath& path, const lit::Scen
             throw RunError("cannot create the folder " + options.framesOut.string() + ": " + ec.message());
     }
 
-    const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+    const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
     const lit::Aabb bounds = scene.worldBounds();
     const auto viewAt = [&](double t) { return *path.view(t, aspect, bounds); };
 
@@ -524,7 +544,7 @@ int runPath(const Options& options, const lit::CameraPath& path, const lit::Scen
     if (options.benchPath) {
         // One untimed warm-up frame: voxelization, shader and driver warm-up happen once per
         // scene, not per frame of a fly-through.
-        renderer.render(scene, viewAt(times.front()), settings);
+        renderer.render(scene, viewAt(times.front()), settings, lit::cli::giBudgetFor(options));
         renderer.profiler().flush();
         glFinish();
     }
@@ -536,17 +556,18 @@ int runPath(const Options& options, const lit::CameraPath& path, const lit::Scen
     for (std::size_t i = 0; i < times.size(); ++i) {
         const lit::CameraView view = viewAt(times[i]);
         const Clock::time_point frameStart = Clock::now();
-        renderer.render(scene, view, settings);
+        renderer.render(scene, view, settings, lit::cli::giBudgetFor(options));
         if (options.benchPath) {
             recordBenchFrame(bench, passIndex, renderer, frameStart);  // timed before the read-backs below
-            flicker.add(view, settings.width, settings.height, renderer.readHdrRgb(), renderer.readDepth());
+            flicker.add(view, settings.output.width, settings.output.height, renderer.readHdrRgb(),
+                        renderer.readDepth());
         }
         if (!options.framesOut.empty()) {
             requireNoGlErrors();  // before each frame is written: no wrong frame on disk
             char name[32];
             std::snprintf(name, sizeof name, "frame_%05zu.png", i);
             rgba = renderer.readOutputRgba8();
-            lit::writePng(options.framesOut / name, settings.width, settings.height, rgba);
+            lit::writePng(options.framesOut / name, settings.output.width, settings.output.height, rgba);
         }
         progress.update(i + 1);
     }
@@ -574,8 +595,9 @@ int runPath(const Options& options, const lit::CameraPath& path, const lit::Scen
         }
     }
     if (!options.framesOut.empty())
-        std::printf("wrote %zu frames to %s (%dx%d, %g fps, %.2f s)\n", times.size(), options.framesOut.string().c_str(),
-                    settings.width, settings.height, options.pathFps(), seconds);
+        std::printf("wrote %zu frames to %s (%dx%d, %g fps, %.2f s)\n", times.size(),
+                    options.framesOut.string().c_str(), settings.output.width, settings.output.height,
+                    options.pathFps(), seconds);
     return 0;
 }
 
@@ -614,19 +636,19 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
     lit::addDefaultSun(withSun, settings);
     const lit::reference::ReferenceScene referenceScene(withSun, log);
     const double buildSeconds = secondsSince(buildStart);
-    const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+    const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
     const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
 
     lit::reference::ReferenceSettings reference;
     // Without --bounces the reference follows --gi and the settings' bounces: the same light paths
     // as the VCT, or direct light only.
-    reference.bounces = options.bounces.value_or(settings.gi ? settings.bounces : 0);
+    reference.bounces = options.bounces.value_or(settings.gi.enabled ? settings.gi.bounces : 0);
     reference.seed = options.seed.value_or(0);
     // Rays that leave the scene see the same sky as the rasterizer's background and cones.
     std::string skyError;
     reference.environment = lit::makeSkyFunction(scene, settings, &skyError);
     if (!skyError.empty()) log.error(skyError + "; using the gradient sky");
-    lit::reference::PathTracer tracer(referenceScene, camera, settings.width, settings.height, reference);
+    lit::reference::PathTracer tracer(referenceScene, camera, settings.output.width, settings.output.height, reference);
 
     interruptRequested().store(false);
     struct sigaction action {};
@@ -668,21 +690,23 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
     const double seconds = secondsSince(renderStart);
 
     const std::string bounces = reference.bounces == lit::reference::kAllBounces ? "all" : std::to_string(reference.bounces);
-    std::printf("reference: %dx%d, %u spp (min per pixel), bounces %s, seed %llu: %.1f M rays in %.2f s = %.2f Mrays/s "
-                "on %d threads (scene build %.2f s, %zu triangles)\n",
-                settings.width, settings.height, tracer.image().minSamples(), bounces.c_str(),
-                static_cast<unsigned long long>(reference.seed), static_cast<double>(tracer.raysTraced()) * 1e-6, seconds,
-                seconds > 0.0 ? static_cast<double>(tracer.raysTraced()) / seconds * 1e-6 : 0.0,
-                tbb::info::default_concurrency(), buildSeconds, referenceScene.triangleCount());
+    std::printf(
+        "reference: %dx%d, %u spp (min per pixel), bounces %s, seed %llu: %.1f M rays in %.2f s = %.2f Mrays/s "
+        "on %d threads (scene build %.2f s, %zu triangles)\n",
+        settings.output.width, settings.output.height, tracer.image().minSamples(), bounces.c_str(),
+        static_cast<unsigned long long>(reference.seed), static_cast<double>(tracer.raysTraced()) * 1e-6, seconds,
+        seconds > 0.0 ? static_cast<double>(tracer.raysTraced()) / seconds * 1e-6 : 0.0,
+        tbb::info::default_concurrency(), buildSeconds, referenceScene.triangleCount());
 
-    const std::vector<float> rgb = tracer.image().viewRgb(settings.view, settings);
+    const std::vector<float> rgb = tracer.image().viewRgb(settings.debug.view, settings);
     std::string written;
     if (!options.out.empty()) {
-        lit::writePng(options.out, settings.width, settings.height, lit::reference::toneMapToRgba8(rgb, settings.exposureScale()));
+        lit::writePng(options.out, settings.output.width, settings.output.height,
+                      lit::reference::toneMapToRgba8(rgb, settings.output.exposureScale()));
         written = options.out.string();
     }
     if (!options.hdr.empty()) {
-        lit::writeHdr(options.hdr, settings.width, settings.height, rgb);
+        lit::writeHdr(options.hdr, settings.output.width, settings.output.height, rgb);
         written += (written.empty() ? "" : " and ") + options.hdr.string();
     }
     if (!written.empty()) std::printf("wrote %s\n", written.c_str());
@@ -698,24 +722,25 @@ int runReference(const Options& options, const lit::Scene& scene, int cameraInde
 // --bench-gi-updates: a light edit (re-inject + mipmaps; the voxels stay) against a full
 // re-voxelization (voxelize + inject + mipmaps), interleaved, GPU times from the profiler; both
 // with the bounce passes and the cached GI mode's voxel irradiance pass and filter that follow
-// every edit (the whole list in the edit's frame with voxelIrradianceVoxelsPerFrame 0; else only
+// every edit (the whole list in the edit's frame unless --gi-update-per-frame; else only
 // that frame's share). Both also re-render the shadow maps (the light or geometry changed); that
 // is printed separately.
 void benchGiUpdates(int rounds, lit::Scene& scene, const lit::CameraView& camera, lit::Renderer& renderer,
-                    const lit::RenderSettings& settings) {
+                    const lit::RenderSettings& settings, const lit::GiBudget& budget) {
     const auto passMs = [&](const char* name) {
         for (const lit::PassTiming& t : renderer.profiler().timings())
             if (t.name == name && t.ran) return t.gpuMs;
         return 0.0;
     };
-    std::printf("GI updates at %d³, %u occupied voxels (%.2f %% of the grid), %d rounds:\n", settings.voxelResolution,
-                renderer.stats().occupiedVoxels,
-                100.0 * renderer.stats().occupiedVoxels / std::pow(static_cast<double>(settings.voxelResolution), 3.0),
-                rounds);
+    std::printf(
+        "GI updates at %d³, %u occupied voxels (%.2f %% of the grid), %d rounds:\n", settings.gi.voxelResolution,
+        renderer.stats().occupiedVoxels,
+        100.0 * renderer.stats().occupiedVoxels / std::pow(static_cast<double>(settings.gi.voxelResolution), 3.0),
+        rounds);
     // The cached GI mode's irradiance pass and filter (and any bounces) follow every edit: they
     // belong to its cost (0 in the modes without them).
     const auto cachedMs = [&] { return passMs("bounces") + passMs("voxel irradiance") + passMs("voxel irradiance filter"); };
-    // An update spread over frames (voxelIrradianceVoxelsPerFrame, as the editor runs it) goes on
+    // An update spread over frames (--gi-update-per-frame, as the editor runs it) goes on
     // after the timed frame: the next edit is timed once it is done, as a user's next edit usually
     // comes after the last one's light settled (and only then is the voxel rays' hit cache
     // recorded, which the light edits of the editor replay). Returns the frames it took and their
@@ -728,7 +753,7 @@ void benchGiUpdates(int rounds, lit::Scene& scene, const lit::CameraView& camera
         constexpr int kMaxFrames = 20000;
         Settle done;
         while (renderer.stats().giUpdateDone < 1.0f && done.frames < kMaxFrames) {
-            renderer.render(scene, camera, settings);
+            renderer.render(scene, camera, settings, budget);
             renderer.profiler().flush();
             ++done.frames;
             done.giMs += cachedMs();
@@ -741,14 +766,14 @@ void benchGiUpdates(int rounds, lit::Scene& scene, const lit::CameraView& camera
         // A: light edit. The first light's intensity changes by a part in 10⁴ and back next round.
         if (!scene.lights.empty()) scene.lights[0].intensity *= (round % 2) ? 1.0001f : 1.0f / 1.0001f;
         ++scene.lightRevision;
-        renderer.render(scene, camera, settings);
+        renderer.render(scene, camera, settings, budget);
         renderer.profiler().flush();
         const double editInject = passMs("inject"), editMipmap = passMs("mipmap"), editCached = cachedMs();
         const double edit = editInject + editMipmap + editCached, editShadow = passMs("shadow");
         const Settle editRest = settle();
         // B: geometry edit without moving anything: the volume is voxelized again.
         ++scene.geometryRevision;
-        renderer.render(scene, camera, settings);
+        renderer.render(scene, camera, settings, budget);
         renderer.profiler().flush();
         const double lists = passMs("mip lists"), revoxelizeCached = cachedMs();
         const double revoxelize =
@@ -795,10 +820,11 @@ int run(const Options& options) {
             throw UsageError(std::string("--compare: ") + e.what());
         }
         const lit::HdrImage& truth = *compareTruth;
-        if (truth.width != settings.width || truth.height != settings.height)
+        if (truth.width != settings.output.width || truth.height != settings.output.height)
             throw UsageError(options.compare.string() + " is " + std::to_string(truth.width) + "x" +
-                           std::to_string(truth.height) + ", the image will be " + std::to_string(settings.width) + "x" +
-                           std::to_string(settings.height) + ": render both at one --size");
+                             std::to_string(truth.height) + ", the image will be " +
+                             std::to_string(settings.output.width) + "x" + std::to_string(settings.output.height) +
+                             ": render both at one --size");
     }
     for (const fs::path* file : {&options.out, &options.hdr, &options.benchJson, &options.difference})
         if (!file->empty()) checkWritableFolder(*file, "the output");
@@ -851,7 +877,7 @@ int run(const Options& options) {
     loadProgress.done("upload");
     if (path) return runPath(options, *path, scene, renderer, settings, context, requireNoGlErrors);
 
-    const float aspect = static_cast<float>(settings.width) / static_cast<float>(settings.height);
+    const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
     const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
 
     const Clock::time_point renderStart = Clock::now();
@@ -859,19 +885,21 @@ int run(const Options& options) {
     std::map<std::string, std::size_t> passIndex;
     // With temporal accumulation a still renders until the history is full, so it shows the
     // converged image (docs/GI.md); --frames or --bench choose the count themselves.
-    const int frames = settings.temporalAccumulation && !options.frames && options.benchFrames == 0
-                           ? std::max(settings.temporalMaxFrames, 1)
+    const int frames = settings.indirect.temporalAccumulation && !options.frames && options.benchFrames == 0
+                           ? std::max(settings.indirect.temporalMaxFrames, 1)
                            : options.frameCount();
     for (int frame = 0; frame < frames; ++frame) {
         const Clock::time_point frameStart = Clock::now();
-        renderer.render(scene, camera, settings);
+        renderer.render(scene, camera, settings, lit::cli::giBudgetFor(options));
         if (options.benchFrames > 0) recordBenchFrame(bench, passIndex, renderer, frameStart);
     }
     lit::gl::injectGlErrorIfRequested();  // LIT_TEST_GL_ERROR=1: the test of the check below
     glFinish();
-    if (settings.autoExposure) std::printf("auto exposure: %+.2f EV\n", static_cast<double>(renderer.exposureEv(settings)));
-    if (options.benchFrames > 0 && settings.gi) bench.mipmaps = renderer.benchmarkMipmaps(7);
-    if (options.giUpdateRounds > 0 && settings.gi) benchGiUpdates(options.giUpdateRounds, scene, camera, renderer, settings);
+    if (settings.output.autoExposure)
+        std::printf("auto exposure: %+.2f EV\n", static_cast<double>(renderer.exposureEv(settings)));
+    if (options.benchFrames > 0 && settings.gi.enabled) bench.mipmaps = renderer.benchmarkMipmaps(7);
+    if (options.giUpdateRounds > 0 && settings.gi.enabled)
+        benchGiUpdates(options.giUpdateRounds, scene, camera, renderer, settings, lit::cli::giBudgetFor(options));
 
     if (options.benchFrames > 0) {
         printBench(bench, settings, renderer.stats());
@@ -886,19 +914,20 @@ int run(const Options& options) {
     std::string written;
     if (!options.out.empty()) {
         const std::vector<std::uint8_t> rgba = renderer.readOutputRgba8();
-        lit::writePng(options.out, settings.width, settings.height, rgba);
+        lit::writePng(options.out, settings.output.width, settings.output.height, rgba);
         written = options.out.string();
     }
     if (!options.hdr.empty() || compareTruth) {
         const std::vector<float> rgb = renderer.readHdrRgb();
         if (!options.hdr.empty()) {
-            lit::writeHdr(options.hdr, settings.width, settings.height, rgb);
+            lit::writeHdr(options.hdr, settings.output.width, settings.output.height, rgb);
             written += (written.empty() ? "" : " and ") + options.hdr.string();
         }
         if (compareTruth) compareWithReference(options, *compareTruth, rgb);
     }
     if (!written.empty())
-        std::printf("wrote %s (%d\u00d7%d, %.2f s)\n", written.c_str(), settings.width, settings.height, secondsSince(renderStart));
+        std::printf("wrote %s (%d\u00d7%d, %.2f s)\n", written.c_str(), settings.output.width, settings.output.height,
+                    secondsSince(renderStart));
     return 0;
 }
 
