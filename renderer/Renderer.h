@@ -37,14 +37,14 @@ struct FrameStats {
     bool injected = false;      // radiance was re-injected this frame
     std::size_t voxelBytes = 0; // GPU memory of the voxel volumes
     std::uint32_t occupiedVoxels = 0;  // voxels the last voxelization occupied (inject runs over these)
-    // The GI update after the last light or geometry edit, which the cached mode spreads over
-    // frames (voxelIrradianceVoxelsPerFrame): the share of it done after this frame (1: every voxel
-    // holds the current light) and what it is at ("bounce 2".."bounce N", "irradiance"; "refining"
-    // while the refinement rounds run with the light already right; "" when nothing is left).
+    // The GI update after the last light or geometry edit, which a GiBudget may spread over
+    // frames: the share of it done after this frame (1: every voxel holds the current light) and
+    // what it is at ("bounce 2".."bounce N", "irradiance"; "refining" while the refinement rounds
+    // run with the light already right; "" when nothing is left).
     float giUpdateDone = 1.0f;
     std::string giUpdateStage;
-    // Voxels the refinement (voxelIrradianceRefineVoxelsPerFrame) traced this frame; 0 when it
-    // waited (a budget of 0, e.g. the editor's while the camera moves) or had nothing left.
+    // Voxels the refinement (GiBudget::refineVoxels) traced this frame; 0 when it waited (a budget
+    // of 0, e.g. the editor's while the camera moves) or had nothing left.
     std::uint32_t refinedVoxels = 0;
     // Refinement rounds are still to run after the update (or after the one under way).
     bool giRefining = false;

@@ -23,7 +23,7 @@
 // cone-direction view and the bounces with the stratified sets"). The fixed set's pencils would otherwise give every voxel the same
 // few directions (what they happen to hit), as they did to the pixels before the sets.
 //
-// Voxel rays (LIT_VOXEL_RAYS 1, RenderSettings::voxelRays > 0, docs/GI.md "Voxel rays"): instead
+// Voxel rays (LIT_VOXEL_RAYS 1, GiSettings::voxelRays > 0, docs/GI.md "Voxel rays"): instead
 // of cones, uVoxelRays cosine-distributed rays per voxel, each marched through the voxel grid to
 // the first surface it meets (marchVoxelRay), whose voxel's radiance it takes. A cone's opacity is a coverage fraction
 // composited along it as if independent from sample to sample, so a wall the cone runs beside, or
@@ -43,7 +43,7 @@
 layout(local_size_x = LIT_INJECT_GROUP_SIZE, local_size_y = LIT_INJECT_GROUP_SIZE, local_size_z = LIT_INJECT_GROUP_SIZE) in;
 
 LIT_VOXEL_LIST_READER
-// The amortised update (RenderSettings::voxelIrradianceVoxelsPerFrame) traces a part of the list
+// The amortised update (GiBudget::updateVoxels) traces a part of the list
 // at a time (listedVoxelInRange): the irradiance, and the bounces before it.
 LIT_VOXEL_LIST_RANGE_READER
 uint gListIndex = 0u;  // this invocation's occupied-list entry (main; the ray-hit cache's index)
@@ -61,7 +61,7 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNor
 // In the radiance volume's format and encoding (encodeRadiance): RGBA8 halves their memory. The
 // side of the averaged normal at z, the other side at z + N (otherSideTexel, voxel.glsl).
 layout(binding = LIT_IMG_VOXEL_DIRECT, LIT_RADIANCE_IMAGE_FORMAT) uniform image3D voxelIrradianceOut;
-// The refinement (RenderSettings::voxelIrradianceRefineVoxelsPerFrame): round k = uSetOffset
+// The refinement (GiBudget::refineVoxels): round k = uSetOffset
 // (1..15) traces the set voxelConeSetIndex + k and averages it into what rounds 0..k − 1 left,
 // weight uBlend = 1 / (k + 1); round 0 (the edit's trace) writes with weight 1.
 uniform int uSetOffset;

@@ -1,5 +1,5 @@
 #version 450 core
-// Low-resolution cone trace (ConeTracePass at RenderSettings::indirectScale > 1, or with temporal
+// Low-resolution cone trace (ConeTracePass at IndirectSettings::scale > 1, or with temporal
 // accumulation): one pixel of every s × s block (tracedPixel, jittered per frame) traces the
 // demodulated indirect terms (indirect.glsl) for IndirectResolvePass to upsample.
 //   diffuse:  rgb irradiance/π (traceDiffuse), a 1 where it was traced (0: background, metal, L_ID off)
@@ -41,7 +41,7 @@ uniform ivec2 uTraceTerms;       // x: L_ID wanted, y: L_IS wanted (1/0)
 uniform float uSmoothRoughness;  // L_IS of smoother surfaces is left to the resolve
 uniform int uConeSubset;         // LIT_CONE_SUBSETS: this frame's phase (0..4) of the subsets
 
-// Cone subsets (LIT_CONE_SUBSETS 1, a separate program: RenderSettings::temporalConeSubsets with
+// Cone subsets (LIT_CONE_SUBSETS 1, a separate program: IndirectSettings::temporalConeSubsets with
 // temporal accumulation; ConeTracePass::executeReduced picks it): a texel traces the normal cone and two of the five side cones, k and k + 2
 // (mod 5, 144° apart), k = (phase + x + 2y) mod 5 for texel (x, y), so the four neighbours of a
 // texel trace the other four pairs and each side cone comes back every five frames. Half the

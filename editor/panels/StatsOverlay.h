@@ -9,8 +9,8 @@
 #include "FrameTimer.h"
 #include "Profiler.h"
 #include "Renderer.h"
+#include "gi/VoxelVolume.h"
 #include "panels/Layout.h"
-#include "passes/VoxelVolume.h"
 
 namespace lit::editor {
 

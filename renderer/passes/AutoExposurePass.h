@@ -4,7 +4,7 @@
 //      [LIT_EXPOSURE_LOG2_MIN, LIT_EXPOSURE_LOG2_MAX], black pixels in bin 0, not metered);
 //   2. auto_exposure.comp.glsl (one work group): the mean log2 luminance between the
 //      LIT_EXPOSURE_LOW_PERCENT and LIT_EXPOSURE_HIGH_PERCENT quantiles, the exposure that maps it
-//      to RenderSettings::autoExposureKey (plus exposureEv as compensation, clamped to the min/max
+//      to OutputSettings::autoExposureKey (plus exposureEv as compensation, clamped to the min/max
 //      stops), approached exponentially at autoExposureSpeed per second; written to the
 //      LIT_SSBO_EXPOSURE buffer that tonemap.frag.glsl reads. Nothing is read back to the CPU.
 

@@ -1,12 +1,12 @@
 #include "passes/ConeTracePass.h"
 
-#include "RenderSettings.h"
-#include "passes/LightingTerms.h"
-#include "passes/VoxelVolume.h"
-
 #include <shared.h>
 
 #include <algorithm>
+
+#include "RenderSettings.h"
+#include "gi/VoxelVolume.h"
+#include "passes/LightingTerms.h"
 
 namespace lit {
 

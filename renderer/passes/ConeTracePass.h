@@ -4,21 +4,20 @@
 // shaders/include/cone.glsl; docs/GI.md explains the method and its parameters).
 //
 // Two ways (docs/GI.md, "Reduced resolution and temporal accumulation"):
-//  - execute: every pixel at full resolution (RenderSettings::indirectScale 1 without temporal
+//  - execute: every pixel at full resolution (IndirectSettings::scale 1 without temporal
 //    accumulation: the reference path). Writes terms.indirectFramebuffer(): attachment 0 = L_ID,
 //    attachment 1 = L_IS (RGBA16F, linear radiance W/(sr·m²)), both already scaled by the
 //    indirect intensity and the material's ambient occlusion; background pixels get 0.
 //  - executeReduced: one pixel per indirectScale² block (indirect_trace.frag.glsl), demodulated,
 //    into this pass's own low-resolution targets; IndirectResolvePass turns them into the terms.
 
-#include "passes/ConeProgram.h"
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "gi/ConeProgram.h"
 #include "passes/ConeStrataFilterPass.h"
 #include "passes/Pass.h"
 #include "passes/TargetsBySize.h"
-
-#include <glm/glm.hpp>
-
-#include <cstdint>
 
 namespace lit {
 
@@ -53,7 +52,7 @@ public:
     // through LIT_DIFFUSE_ROTATION_STEPS steps of the side cones' 72° period, and, with
     // `coneSubsets`, the subset phase through frame mod 5.
     static Sampling samplingFor(std::uint64_t frame, int scale, bool coneSubsets = false);
-    // Whether a temporal frame with `settings` traces cone subsets (RenderSettings::temporalConeSubsets
+    // Whether a temporal frame with `settings` traces cone subsets (IndirectSettings::temporalConeSubsets
     // and temporal accumulation on; in either GI mode: with footprint-bounded cones the subsets are
     // pairs of the texel's stratified set).
     static bool coneSubsets(const RenderSettings& settings);
@@ -61,7 +60,7 @@ public:
     // Always with footprint-bounded cones (the accurate mode): their stratified cone sets need
     // ConeStrataFilterPass, which runs on the reduced trace (at indirect scale 1 too).
     static bool reducedPath(const RenderSettings& settings);
-    // RenderSettings::indirectScale made valid: 1, 2 or 4.
+    // IndirectSettings::scale made valid: 1, 2 or 4.
     static int indirectScale(const RenderSettings& settings);
 
     // The low-resolution trace (same bindings as execute): ⌈width/s⌉ × ⌈height/s⌉ texels of

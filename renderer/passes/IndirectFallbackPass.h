@@ -2,13 +2,13 @@
 // Indirect fallback: the full-resolution cone trace of the pixels IndirectResolvePass could not
 // reconstruct from the low-resolution trace (no low-resolution neighbour on the pixel's surface:
 // silhouettes, thin objects) or must not (specular of surfaces smoother than
-// RenderSettings::specularFullResRoughness). The resolve marks them in its trace mask; this
+// IndirectSettings::specularFullResRoughness). The resolve marks them in its trace mask; this
 // pass draws a full-screen triangle over the same targets with early depth tests against that
 // mask, so only the marked pixels run the shader (indirect_fallback.frag.glsl, the resolve's body
 // with the trace compiled in). Same upsampling and accumulation as the resolve: together they
 // write what one pass doing both would.
 
-#include "passes/ConeProgram.h"
+#include "gi/ConeProgram.h"
 #include "passes/Pass.h"
 
 namespace lit {

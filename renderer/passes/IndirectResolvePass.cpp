@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "RenderSettings.h"
+#include "gi/VoxelVolume.h"
 #include "passes/LightingTerms.h"
-#include "passes/VoxelVolume.h"
 
 namespace lit {
 

@@ -1,11 +1,11 @@
 #include "passes/VoxelDebugPass.h"
 
-#include "passes/VoxelVolume.h"
-
 #include <shared.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "gi/VoxelVolume.h"
 
 namespace lit {
 

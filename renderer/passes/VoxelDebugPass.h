@@ -1,5 +1,5 @@
 #pragma once
-// The voxel debug views, for one mip level and one channel (RenderSettings::voxelMip,
+// The voxel debug views, for one mip level and one channel (DebugViewSettings::voxelMip,
 // voxelChannel):
 //   View::VoxelSlice  one slice of the volume filling the viewport (aspect kept), each voxel a
 //                     square (nearest filtering), with a thin grid once voxels are ≥ 4 px wide;

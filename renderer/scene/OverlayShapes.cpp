@@ -1,14 +1,14 @@
 #include "scene/OverlayShapes.h"
 
-#include "passes/ConeProgram.h"
-#include "passes/ConeTracePass.h"
-#include "scene/Scene.h"
-
 #include <shared.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+
+#include "gi/ConeProgram.h"
+#include "passes/ConeTracePass.h"
+#include "scene/Scene.h"
 
 namespace lit {
 

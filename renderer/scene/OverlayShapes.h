@@ -80,7 +80,7 @@ struct ConeSample {
 // The samples traceConeFromSurface takes along `cone` up to distance `upTo` (m) in an empty
 // volume (a real march stops earlier where it turns opaque): the sampled widths, bounded by the
 // footprint for bounded cones. `voxelSize` and `volumeSide` (m) as in SurfaceSample,
-// `coneStepScale` RenderSettings::coneStepScale; none when voxelSize is 0 (no GI).
+// `coneStepScale` GiSettings::coneStepScale; none when voxelSize is 0 (no GI).
 std::vector<ConeSample> coneSamples(const TracedCone& cone, float voxelSize, float volumeSide, float coneStepScale,
                                     float upTo);
 

@@ -33,7 +33,7 @@ public:
 // Reads a Radiance .hdr (RGBE) through stb_image. Throws SkyLoadError naming the file.
 SkyImage loadSkyImage(const std::filesystem::path& file);
 
-// The sky of one frame with RenderSettings::skyMode resolved (never Auto).
+// The sky of one frame with SkySettings::mode resolved (never Auto).
 struct Sky {
     SkyMode mode = SkyMode::None;
     glm::vec3 zenith{0.0f}, horizon{0.0f}, ground{0.0f};

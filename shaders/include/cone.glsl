@@ -18,8 +18,8 @@
 // Compile-time cone features (renderer/passes/ConeProgram.h builds one program per combination):
 // llvmpipe executes both sides of a branch, even a uniform one, so a runtime switch would make
 // every cone pay for the directional lookups and the footprint bound whether they are on or not.
-//   LIT_CONE_ANISOTROPIC 1: levels ≥ 1 read the six directional volumes (RenderSettings::anisotropicVoxels)
-//   LIT_CONE_FOOTPRINT   1: diffuse cones are footprint-bounded (RenderSettings::coneFootprintPerHeight > 0)
+//   LIT_CONE_ANISOTROPIC 1: levels ≥ 1 read the six directional volumes (GiSettings::anisotropicVoxels())
+//   LIT_CONE_FOOTPRINT   1: diffuse cones are footprint-bounded (GiSettings::coneFootprintPerHeight > 0)
 #ifndef LIT_CONE_ANISOTROPIC
 #define LIT_CONE_ANISOTROPIC 0
 #endif

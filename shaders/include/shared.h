@@ -87,7 +87,7 @@ using mat4 = glm::mat4;
 #define LIT_TEX_VOXEL_DIRECTIONAL_FIRST 29
 #define LIT_VOXEL_FACE_COUNT 6
 #define LIT_VOXEL_AXIS_COUNT 3  // directional volumes: one per axis, holding its two faces
-// Voxel irradiance (the cached GI mode, RenderSettings::diffuseFromVoxelIrradiance). The filter reads
+// Voxel irradiance (the cached GI mode, GiSettings::voxelIrradiance()). The filter reads
 // the traced one: N × N × 2N in the radiance volume's format, the occupied voxels' irradiance/π on
 // the side of their averaged normal (z < N) and the other (z + N, otherSideTexel in voxel.glsl).
 // The cone passes read the filtered one: N³ RGBA32UI gather texels (packGatherTexel, voxel.glsl).
@@ -189,7 +189,7 @@ using mat4 = glm::mat4;
 #define LIT_VIEW_ROUGHNESS_METALNESS 9
 #define LIT_VIEW_VOXEL_SLICE 10
 
-// What the voxel debug views show (RenderSettings::voxelChannel, VoxelDebugPass).
+// What the voxel debug views show (DebugViewSettings::voxelChannel, VoxelDebugPass).
 #define LIT_VOXEL_CHANNEL_RADIANCE 0
 #define LIT_VOXEL_CHANNEL_ALBEDO 1
 #define LIT_VOXEL_CHANNEL_NORMAL 2

@@ -1,5 +1,5 @@
 // Indirect diffuse from irradiance cached in the voxels (the cached GI mode, LIT_VOXEL_IRRADIANCE 1,
-// RenderSettings::diffuseFromVoxelIrradiance; docs/GI.md, "Irradiance cached in the voxels
+// GiSettings::voxelIrradiance(); docs/GI.md, "Irradiance cached in the voxels
 // (eighth session)"). After each light or geometry edit every occupied voxel traces the accurate
 // mode's stratified cones once (bounce.comp.glsl, LIT_BOUNCE_IRRADIANCE) and stores irradiance/π
 // for the side its averaged normal points to (POS) and, for voxels whose normals disagree (both

@@ -3,20 +3,7 @@
 // premultiplied convention cone.glsl expects), and the G-buffer comes from simple scenes drawn
 // through GBufferPass. No voxelization, injection or Renderer is involved, so a failure here is
 // the tracer's.
-#include "GlTestSupport.h"
-
-#include "passes/FrameUniforms.h"
-
-#include "passes/ConeTracePass.h"
-#include "passes/GBufferPass.h"
-#include "passes/LightingTerms.h"
-#include "passes/VoxelVolume.h"
-#include "scene/GpuScene.h"
-#include "scene/SceneBuilder.h"
-
 #include <shared.h>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -24,6 +11,16 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "GlTestSupport.h"
+#include "gi/VoxelVolume.h"
+#include "passes/ConeTracePass.h"
+#include "passes/FrameUniforms.h"
+#include "passes/GBufferPass.h"
+#include "passes/LightingTerms.h"
+#include "scene/GpuScene.h"
+#include "scene/SceneBuilder.h"
 
 namespace lit::test {
 namespace {

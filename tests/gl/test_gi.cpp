@@ -1,9 +1,8 @@
 // Global illumination on the Cornell box (voxel cone tracing, 64³, 128×128): physical
 // invariants and effects that must appear with GI on and vanish with it off.
 #include "GlTestSupport.h"
-
+#include "gi/VoxelVolume.h"
 #include "image/ImageIO.h"
-#include "passes/VoxelVolume.h"
 
 namespace lit::test {
 namespace {

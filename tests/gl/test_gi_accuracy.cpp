@@ -9,18 +9,6 @@
 //    does the accurate mode's cone sampling (stratified cone sets);
 //  - bounces add up as a geometric series in a closed emissive box (the bounce furnace).
 // docs/GI.md ("Accuracy") has the numbers before and after each change.
-#include "GlTestSupport.h"
-
-#include "passes/InjectPass.h"
-#include "passes/VoxelVolume.h"
-#include "reference/AccuracyRegions.h"
-#include "reference/PathTracer.h"
-#include "reference/ReferenceScene.h"
-#include "scene/SceneBuilder.h"
-
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
-
 #include <unistd.h>
 
 #include <cmath>
@@ -28,9 +16,19 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <memory>
 #include <sstream>
 #include <string>
+
+#include "GlTestSupport.h"
+#include "gi/InjectPass.h"
+#include "gi/VoxelVolume.h"
+#include "reference/AccuracyRegions.h"
+#include "reference/PathTracer.h"
+#include "reference/ReferenceScene.h"
+#include "scene/SceneBuilder.h"
 
 namespace lit::test {
 namespace {
@@ -359,7 +357,7 @@ protected:
         return m;
     }
     // L_ID + L_IS of the VCT with `bounces` bounces, in GI mode `mode`.
-    // `voxelRays` > 0: the voxels' own light (the cached irradiance, bounces) by rays (RenderSettings::voxelRays).
+    // `voxelRays` > 0: the voxels' own light (the cached irradiance, bounces) by rays (GiSettings::voxelRays).
     std::vector<float> vctIndirect(const Scene& scene, int voxels, int bounces = 1, GiMode mode = GiMode::Accurate,
                                    int voxelRays = 0) {
         RenderSettings settings = giSettings(voxels, View::IndirectDiffuse, kSize);
@@ -558,7 +556,7 @@ TEST_F(CornellAccuracy, TwoBounceRegionsMatchTheTwoBounceReference) {
     EXPECT_EQ(checked, 3) << "ceiling, back wall, shadowed floor by the green wall";
 }
 
-// Issue #11's two-bounce bars in the cached mode with voxel rays (RenderSettings::voxelRays 32):
+// Issue #11's two-bounce bars in the cached mode with voxel rays (GiSettings::voxelRays 32):
 // every region within ±20 % of the two-bounce reference, the red-wall nook included, and the colour
 // bleeding ratios within ±20 % of the reference's. The cones miss the nook and both ratios (the
 // benchmark at 96², 1024 spp, 64³ / 128³: nook 0.59 / 0.60, R/G 2.99 / 3.06 against 1.99, G/R 2.66 /
@@ -879,7 +877,7 @@ TEST_F(GiAccuracy, BouncesAddUpInAClosedEmissiveBox) {
     EXPECT_NEAR(means[2] / means[0], 1.0f + albedo + albedo * albedo, 0.03f * (1.0f + albedo + albedo * albedo));
 }
 
-// The voxel-irradiance experiment (RenderSettings::diffuseFromVoxelIrradiance, docs/GI.md, ninth
+// The voxel-irradiance experiment (GiSettings::voxelIrradiance(), docs/GI.md, ninth
 // session) in the benchmark's sealed room (assets/gi/sealed_room.gltf, its camera, 128², 128³, as
 // lit-gi-accuracy): its gather must keep to voxels facing as the pixel does. With (normal
 // agreement)² (eighth session) the inside floor's gather read the walls' voxels and let in 1.86×
@@ -1080,7 +1078,7 @@ TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheConeSettingsCha
     EXPECT_LE(stale, 1e-5);
 }
 
-// Switching voxel rays on in a running renderer (RenderSettings::voxelRays, the editor's slider)
+// Switching voxel rays on in a running renderer (GiSettings::voxelRays, the editor's slider)
 // must trace the voxel irradiance again with rays, as a renderer started with them does; and a
 // different ray count again. Cornell box, 64³, L_ID. ~3 s.
 TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheVoxelRaysChange) {

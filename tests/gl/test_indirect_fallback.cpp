@@ -3,15 +3,15 @@
 // single resolve pass with the trace inline writes (the path before the split), and the pass must
 // run on the marked pixels only.
 // Cost: about 5-8 s on llvmpipe (2 cores): three renderers per GI mode, 3 frames each at 96², 64³ voxels.
-#include "GlTestSupport.h"
-#include "passes/ConeProgram.h"
-
-#include <glm/gtc/matrix_transform.hpp>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <unistd.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "GlTestSupport.h"
+#include "gi/ConeProgram.h"
 
 namespace lit::test {
 namespace {

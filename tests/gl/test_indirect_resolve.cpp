@@ -199,7 +199,7 @@ TEST_F(IndirectResolve, StillCameraConverges) {
     EXPECT_LE(rmse, 0.02);
 }
 
-// Cone subsets (RenderSettings::temporalConeSubsets, on by default with temporal accumulation):
+// Cone subsets (IndirectSettings::temporalConeSubsets, on by default with temporal accumulation):
 // every low-resolution texel marches the normal cone and two of the five side cones per frame, and
 // the accumulation averages the pairs. One frame must differ from the whole set's (else the subsets
 // are not in use); after a whole sampling period the accumulated L_ID must match the whole set's

@@ -12,21 +12,20 @@
 //    ones (a·L, a), so every branch of the reduction (ties, partial opacity) is exercised;
 //  - a one-voxel wall along each axis stays opaque with its colour at every level, a lone voxel
 //    becomes (C/4^l, 1/4^l), and the edge of an opaque box keeps its colour.
-#include "GlTestSupport.h"
-
-#include "gl/GlError.h"
-#include "passes/MipmapPass.h"
-#include "passes/VoxelVolume.h"
-
-#include <glm/gtc/packing.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <glm/gtc/packing.hpp>
 #include <random>
 #include <sstream>
+
+#include "GlTestSupport.h"
+#include "gi/MipmapBenchmark.h"
+#include "gi/MipmapPass.h"
+#include "gi/VoxelVolume.h"
+#include "gl/GlError.h"
 
 namespace lit::test {
 namespace {

@@ -2,17 +2,6 @@
 // those (indirect dispatch), and MipmapPass builds the mip chain over their parents only.
 // Checked against the volume itself and the whole-grid passes on the Cornell box at 64³.
 // Cost: about 3 s on llvmpipe, plus MipmapOverOccupiedParents (below).
-#include "GlTestSupport.h"
-
-#include "gl/Objects.h"
-#include "passes/InjectPass.h"
-#include "passes/LightSetup.h"
-#include "passes/MipmapPass.h"
-#include "passes/ShadowPass.h"
-#include "passes/VoxelVolume.h"
-#include "passes/VoxelizePass.h"
-#include "scene/GpuScene.h"
-
 #include <shared.h>
 
 #include <algorithm>
@@ -22,8 +11,26 @@
 #include <string>
 #include <tuple>
 
+#include "GlTestSupport.h"
+#include "gi/InjectPass.h"
+#include "gi/MipmapPass.h"
+#include "gi/VoxelVolume.h"
+#include "gi/VoxelizePass.h"
+#include "gl/Objects.h"
+#include "passes/LightSetup.h"
+#include "passes/ShadowPass.h"
+#include "scene/GpuScene.h"
+
 namespace lit::test {
 namespace {
+
+// Injection over the occupied-voxel list, and over the whole grid.
+lit::InjectOptions overList() { return {}; }
+lit::InjectOptions wholeGrid() {
+    lit::InjectOptions options;
+    options.overList = false;
+    return options;
+}
 
 class OccupiedVoxels : public ContextFixture {
 protected:
@@ -114,12 +121,12 @@ TEST_F(OccupiedVoxels, InjectionOverTheListEqualsTheWholeGrid) {
     const Scene scene = loadGltf(sourceDir() / "assets" / "cornell_box.gltf", log_);
     voxelize(scene, 64);
     bindLights(scene);
-    inject_->execute(*volume_, false);
+    inject_->execute(*volume_, wholeGrid());
     const std::vector<glm::vec4> grid = readRadianceVoxels(*volume_);
     // Zero level 0 (as a voxelization does: the list writes occupied voxels only), so nothing of
     // the grid's result survives, then inject from the list.
     volume_->clearRadianceLevel0();
-    inject_->execute(*volume_, true);
+    inject_->execute(*volume_, overList());
     const std::vector<glm::vec4> listed = readRadianceVoxels(*volume_);
     ASSERT_EQ(grid.size(), listed.size());
     std::size_t lit = 0, different = 0;
@@ -220,7 +227,7 @@ TEST_P(MipmapOverOccupiedParents, EqualsTheWholeGridChainAlsoAfterAnObjectMoved)
         }
         ASSERT_LE(volume_->readOccupiedCount(), volume_->occupiedCapacity());
         bindLights(scene);
-        inject_->execute(*volume_, true);
+        inject_->execute(*volume_, overList());
         mipmap_->listOccupiedParents(*volume_);
         ASSERT_TRUE(volume_->parentListsValid());
 

@@ -2,18 +2,16 @@
 // IDs (Renderer::pickNode), the surface read back from a pixel (surfaceAt), the selection outline
 // and overlay lines (OverlayPass). Nodes of assets/cornell_box.gltf: 0 floor, 1 ceiling, 2 back
 // wall, 3 left wall (red, x = −1), 4 right wall (green, x = +1), 5 tall box, 6 short box.
-#include "GlTestSupport.h"
-
-#include "image/ImageIO.h"
-#include "passes/OverlayPass.h"
-#include "passes/VoxelVolume.h"
-#include "scene/OverlayShapes.h"
-
+#include <cstdio>
+#include <cstdlib>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <cstdio>
-#include <cstdlib>
+#include "GlTestSupport.h"
+#include "gi/VoxelVolume.h"
+#include "image/ImageIO.h"
+#include "passes/OverlayPass.h"
+#include "scene/OverlayShapes.h"
 
 namespace lit::test {
 namespace {

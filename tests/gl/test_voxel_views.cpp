@@ -1,13 +1,12 @@
 // Voxel debug views (VoxelDebugPass) on the Cornell box at 64³: the slice view shows the walls
 // where they are, with their colours on the correct sides; channels, axes and mips each change
 // the image; a coarser mip is a blurred finer one; the grid appears once voxels are ≥ 4 px.
-#include "GlTestSupport.h"
-
-#include "passes/VoxelDebugPass.h"
-#include "passes/VoxelVolume.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "GlTestSupport.h"
+#include "gi/VoxelVolume.h"
+#include "passes/VoxelDebugPass.h"
 
 namespace lit::test {
 namespace {

@@ -1,26 +1,24 @@
 // Voxelization and radiance injection on scenes built in code, where the answer is known:
 // which voxels a box's surface occupies, that a tilted thin wall leaves no holes, that the
 // running average mixes coincident surfaces, and the radiance a lit floor and an emitter inject.
-#include "GlTestSupport.h"
-
-#include "gl/Objects.h"
-#include "passes/InjectPass.h"
-#include "passes/LightSetup.h"
-#include "passes/ShadowPass.h"
-#include "passes/VoxelVolume.h"
-#include "passes/VoxelizePass.h"
-#include "scene/GpuScene.h"
-#include "scene/SceneBuilder.h"
-
 #include <shared.h>
-
-#include <glm/gtc/constants.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <iostream>
+
+#include "GlTestSupport.h"
+#include "gi/InjectPass.h"
+#include "gi/VoxelVolume.h"
+#include "gi/VoxelizePass.h"
+#include "gl/Objects.h"
+#include "passes/LightSetup.h"
+#include "passes/ShadowPass.h"
+#include "scene/GpuScene.h"
+#include "scene/SceneBuilder.h"
 
 namespace lit::test {
 namespace {

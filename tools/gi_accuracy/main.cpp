@@ -6,7 +6,7 @@
 //   lit-gi-accuracy [--voxels 64,128,256] [--spp 256] [--size 128] [--scenes a,b,...]
 //                   [--shared DIR] [--out FILE.md] [--bounces N] [--settings FILE.json] [--cone-split]
 //                   [--frames N] [--images DIR] [--scene FILE.gltf]...
-// --bounces N: light bounces of both the VCT (RenderSettings::bounces) and the reference (default 1);
+// --bounces N: light bounces of both the VCT (GiSettings::bounces) and the reference (default 1);
 // --settings: RenderSettings JSON the VCT starts from (size, view, GI switch, resolution and
 // bounces are set by the tool), to compare GI variants (e.g. anisotropicVoxels off).
 // --frames N: render each VCT view N times and measure the last (default 1), for settings with

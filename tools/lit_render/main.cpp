@@ -5,50 +5,49 @@
 // written, or a size this GL or this machine's memory cannot render; 130 a --reference render
 // interrupted by Ctrl+C (after writing the image so far).
 
-#include "LoadProgressLines.h"
-#include "Options.h"
-
-#include "Log.h"
-#include "Renderer.h"
-#include "RenderSettings.h"
-#include "animation/CameraPath.h"
-#include "animation/CameraPathIO.h"
-#include "context/HeadlessContext.h"
-#include "gl/Capabilities.h"
-#include "gl/GlError.h"
-#include "image/ImageIO.h"
-#include "scene/CameraView.h"
-#include "passes/MipmapPass.h"
-#include "scene/GltfLoader.h"
-#include "scene/SceneBuilder.h"
-#include "scene/Scene.h"
-#include "scene/Sky.h"
-#include "reference/DifferenceImage.h"
-#include "reference/PathTracer.h"
-#include "reference/ReferenceScene.h"
-
 #include <epoxy/gl.h>
 #include <tbb/info.h>
-#include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
-#include <optional>
-#include <glm/glm.hpp>
-#include <cstdlib>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <unistd.h>
+#include <cstdlib>
 #include <exception>
-#include <functional>
 #include <fstream>
+#include <functional>
+#include <glm/glm.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "LoadProgressLines.h"
+#include "Log.h"
+#include "Options.h"
+#include "RenderSettings.h"
+#include "Renderer.h"
+#include "animation/CameraPath.h"
+#include "animation/CameraPathIO.h"
+#include "context/HeadlessContext.h"
+#include "gi/MipmapBenchmark.h"
+#include "gl/Capabilities.h"
+#include "gl/GlError.h"
+#include "image/ImageIO.h"
+#include "reference/DifferenceImage.h"
+#include "reference/PathTracer.h"
+#include "reference/ReferenceScene.h"
+#include "scene/CameraView.h"
+#include "scene/GltfLoader.h"
+#include "scene/Scene.h"
+#include "scene/SceneBuilder.h"
+#include "scene/Sky.h"
 
 namespace {
 

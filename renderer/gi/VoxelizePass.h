@@ -8,12 +8,11 @@
 //
 // Also here: read-backs of the volumes for tests and debug views (they stall the pipeline).
 
-#include "passes/Pass.h"
-
-#include <glm/glm.hpp>
-
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <vector>
+
+#include "passes/Pass.h"
 
 namespace lit {
 

@@ -1,9 +1,9 @@
-#include "passes/VoxelizePass.h"
-
-#include "passes/VoxelVolume.h"
-#include "scene/GpuScene.h"
+#include "gi/VoxelizePass.h"
 
 #include <shared.h>
+
+#include "gi/VoxelVolume.h"
+#include "scene/GpuScene.h"
 
 namespace lit {
 
@@ -17,8 +17,7 @@ VoxelizePass::VoxelizePass(const std::filesystem::path& shaderRoot)
                 {GL_FRAGMENT_SHADER, "voxelize.frag.glsl"}}),
       framebuffer_("voxelize (no attachments)") {}
 
-void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume,
-                           DrawCounters& counters) {
+void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume, DrawCounters& counters) {
     volume.clearMaterials();
     volume.resetOccupiedList();
     volume.clearRadianceLevel0();  // injection over the list writes occupied voxels only

@@ -1,7 +1,4 @@
-#include "passes/MipmapPass.h"
-
-#include "gl/GlError.h"
-#include "passes/VoxelVolume.h"
+#include "gi/MipmapPass.h"
 
 #include <shared.h>
 
@@ -10,46 +7,22 @@
 #include <bit>
 #include <cstdint>
 #include <cstdio>
-#include <ctime>
 #include <string>
 #include <utility>
+
+#include "gi/VoxelVolume.h"
+#include "gl/GlError.h"
 
 namespace lit {
 
 namespace {
 
-// How each format is reduced. Chosen by timing every variant against the others in one process
-// (Mesa 22.3.6 llvmpipe, AVX2, 2 cores, 256³, process CPU time per chain, min of 5-9; alternatives
-// in brackets), with the earlier straight-colour reduction (rgb = Σ rgb·a / Σ a):
-//   RGBA16F: one level per dispatch, 8×8×8 groups: 39-44 ms [one dispatch for 2 or 3 levels:
-//            82-105 ms; 4×4×4 groups: 73 ms; shared-memory reduction of 3 levels with barriers:
-//            118-140 ms; rg32ui packed loads: 69 ms].
-//   RGBA8:   three levels per dispatch, each invocation an 8³ block, 8×8×1 groups, r32ui packed
-//            loads: 61-62 ms [one level per dispatch: 66-73 ms packed, 95-101 ms as rgba8 images;
-//            shared-memory reduction: 100-137 ms].
-// Measured, not explained: per texel, llvmpipe's RGBA8 image loads cost about twice its RGBA16F
-// ones, so RGBA8 gains from reading each level once, while RGBA16F loses when one invocation
-// walks a whole block. Not measured on a GPU, where the usual shared-memory reduction may win:
-// time it with benchmarkMipmaps before changing these.
-// The plain average of the premultiplied volume (same layouts, alternatives not re-timed;
-// benchmarkMipmaps, process CPU time, medians of 7, 7 runs alternating with the old shader on a
-// machine loaded by parallel builds): RGBA8 30-46 ms (old 55-70), where the r32ui path now averages
-// four bytes at once in integers, and RGBA16F 37-70 ms (old 40-89); glGenerateTextureMipmap 53-80 ms.
-// RGBA8 bound as rgba8 images (the fallback) took 49 ms in the same session.
-// Directional opacity stacking (the current shader; 3 runs alternating with the plain average,
-// same binary, quiet machine; GPU min / process CPU median):
-//   128³ RGBA8   3.0-4.1 / 5.5-5.8 ms   (plain average 1.9-2.1 / 3.6-4.1)
-//   128³ RGBA16F 3.7-4.4 / 6.7-7.6 ms   (plain average 2.6-2.9 / 4.6-5.3)
-//   256³ RGBA8   22.9-23.8 / 46-51 ms   (plain average 14.6-14.9 / 29-30)
-//   256³ RGBA16F 23.1-32.6 / 45-58 ms   (plain average 18.0-21.9 / 36-46)
-// glGenerateTextureMipmap (plain average) ~42-55 ms GPU at 256³. Re-timed layouts at 256³, CPU ms:
-// RGBA8 3 levels 8×8×1 47, 2 levels 8×8×1 51, 1 level 8³ 43-46, 1 level 8×8×1 51-53, 2 levels 4³
-// 68 (all within the noise but the last: kept 3 levels); RGBA16F 1 level 8³ 44-54, 2 levels
-// 8×8×1 116, 3 levels 8×8×1 81, 1 level 4³ 100-104 (kept). The RGBA8 reduction in fp32 (exact
-// integers below 2^24) took 53 ms against 47 for 32-bit integers; choosing one axis on ties
-// instead of averaging them saved nothing measurable. Of the added cost, unpacking the bytes is
-// ~5 ms and the reduction itself ~10-12 ms (a plain average in the same code layout: RGBA8 34-38,
-// RGBA16F 37 ms).
+// How each format is reduced: levels per dispatch and group size, chosen by timing each layout
+// against the others with benchmarkMipmaps on llvmpipe (docs/PERFORMANCE.md, "Mipmaps"). llvmpipe's
+// RGBA8 image loads cost about twice its RGBA16F ones per texel, so RGBA8 gains from reading each
+// level once (three levels per dispatch, r32ui packed loads) while RGBA16F loses when one
+// invocation walks a whole block; shared-memory reductions with barriers were slower for both.
+// Not measured on a GPU, where the usual shared-memory reduction may win: time it before changing.
 struct Reduction {
     int levelsPerDispatch;         // 1..3
     std::array<int, 3> groupSize;  // local_size_x/y/z
@@ -107,7 +80,8 @@ MipmapPass::MipmapPass(const std::filesystem::path& shaderRoot)
       rgba16f_(shaderRoot, "mipmap rgba16f", {{GL_COMPUTE_SHADER, "mipmap.comp.glsl"}},
                definesFor(false, false, kRgba16f)),
       directionalFromIso8_(shaderRoot, "directional mipmap rgba8 from level 0",
-                           {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}}, directionalDefines(true, true, false)),
+                           {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
+                           directionalDefines(true, true, false)),
       directionalFromIso16f_(shaderRoot, "directional mipmap rgba16f from level 0",
                              {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
                              directionalDefines(false, true, false)),
@@ -126,7 +100,8 @@ MipmapPass::MipmapPass(const std::filesystem::path& shaderRoot)
       listDirectional8_(shaderRoot, "directional mipmap rgba8 over occupied parents",
                         {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}}, directionalDefines(true, false, true)),
       listDirectional16f_(shaderRoot, "directional mipmap rgba16f over occupied parents",
-                          {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}}, directionalDefines(false, false, true)),
+                          {{GL_COMPUTE_SHADER, "mipmap_directional.comp.glsl"}},
+                          directionalDefines(false, false, true)),
       listParents_(shaderRoot, "occupied parents", {{GL_COMPUTE_SHADER, "mipmap_parents.comp.glsl"}}) {}
 
 void MipmapPass::listOccupiedParents(VoxelVolume& volume) {
@@ -143,10 +118,10 @@ void MipmapPass::listOccupiedParents(VoxelVolume& volume) {
     }
     glNamedBufferSubData(parents.id(), 0, sizeof header, header.data());
     const GLuint zero = 0;
-    glClearNamedBufferSubData(parents.id(), GL_R32UI,
-                              static_cast<GLintptr>(VoxelVolume::kParentHeaderBytes + std::size_t{4} * layout.maskBegin),
-                              static_cast<GLsizeiptr>(std::size_t{4} * layout.maskWords), GL_RED_INTEGER,
-                              GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferSubData(
+        parents.id(), GL_R32UI,
+        static_cast<GLintptr>(VoxelVolume::kParentHeaderBytes + std::size_t{4} * layout.maskBegin),
+        static_cast<GLsizeiptr>(std::size_t{4} * layout.maskWords), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 
     const gl::Program& program = listParents_;
     program.use();
@@ -240,8 +215,9 @@ void MipmapPass::executeDirectionalOverParents(const VoxelVolume& volume) {
                                                     : (rgba8 ? listDirectional8_ : listDirectional16f_);
             useDirectionalLevel(program, volume, face, level);
             const int radianceLevel = level + 1;
-            glProgramUniform2i(program.id(), program.location("uParentList"), radianceLevel,
-                               static_cast<GLint>(volume.parentLayout().listOffset[static_cast<std::size_t>(radianceLevel)]));
+            glProgramUniform2i(
+                program.id(), program.location("uParentList"), radianceLevel,
+                static_cast<GLint>(volume.parentLayout().listOffset[static_cast<std::size_t>(radianceLevel)]));
             glDispatchComputeIndirect(parentDispatchOffset(radianceLevel));
             glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         }
@@ -269,8 +245,8 @@ void MipmapPass::executeDirectional(VoxelVolume& volume, bool overOccupiedParent
     for (int face = 0; face < LIT_VOXEL_FACE_COUNT; ++face) {
         const gl::Texture& target = volume.directional(face / 2);
         for (int level = 0; level < target.desc().levels; ++level) {
-            const gl::Program& program =
-                level == 0 ? (rgba8 ? directionalFromIso8_ : directionalFromIso16f_) : (rgba8 ? directional8_ : directional16f_);
+            const gl::Program& program = level == 0 ? (rgba8 ? directionalFromIso8_ : directionalFromIso16f_)
+                                                    : (rgba8 ? directional8_ : directional16f_);
             const int edge = useDirectionalLevel(program, volume, face, level);
             const auto groups = static_cast<GLuint>(ceilDiv(edge, kGroup));
             glDispatchCompute(groups, groups, groups);
@@ -324,78 +300,6 @@ void MipmapPass::execute(const gl::Texture& volume) {
     }
     // Cone tracing samples the levels through a sampler.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-}
-
-namespace {
-
-// Times `work` with a GL_TIMESTAMP pair (GPU ms) and the process CPU clock (ms, all threads).
-template <typename Work>
-void timeOnce(Work&& work, std::vector<double>& gpuMs, std::vector<double>& cpuMs) {
-    std::array<GLuint, 2> ids{};
-    glCreateQueries(GL_TIMESTAMP, 2, ids.data());
-    const gl::QueryHandle begin(ids[0]), end(ids[1]);
-    glFinish();  // the previous run must not overlap this one
-    const std::clock_t cpuStart = std::clock();
-    glQueryCounter(begin.id(), GL_TIMESTAMP);
-    work();
-    glQueryCounter(end.id(), GL_TIMESTAMP);
-    glFinish();
-    const std::clock_t cpuEnd = std::clock();
-    GLuint64 t0 = 0, t1 = 0;
-    glGetQueryObjectui64v(begin.id(), GL_QUERY_RESULT, &t0);
-    glGetQueryObjectui64v(end.id(), GL_QUERY_RESULT, &t1);
-    gpuMs.push_back(t1 >= t0 ? static_cast<double>(t1 - t0) * 1e-6 : 0.0);
-    cpuMs.push_back(static_cast<double>(cpuEnd - cpuStart) * 1000.0 / CLOCKS_PER_SEC);
-}
-
-double minOf(std::vector<double> v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
-double medianOf(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t mid = v.size() / 2;
-    return v.size() % 2 ? v[mid] : 0.5 * (v[mid - 1] + v[mid]);
-}
-
-}  // namespace
-
-MipmapTimings benchmarkMipmaps(MipmapPass& pass, VoxelVolume& volume, int repetitions, bool anisotropic) {
-    MipmapTimings t;
-    t.resolution = volume.resolution();
-    t.rgba8 = volume.radianceRgba8();
-    t.repetitions = std::clamp(repetitions, 1, 100);
-    t.anisotropic = anisotropic;
-    const bool lists = volume.parentListsValid();
-    const GLuint texture = volume.radiance().id();
-    const auto compute = [&] { pass.execute(volume, anisotropic, false); };
-    const auto occupied = [&] { pass.execute(volume, anisotropic, true); };
-    const auto generate = [&] { glGenerateTextureMipmap(texture); };
-
-    // Warm-up: llvmpipe compiles the blit shaders of glGenerateMipmap on first use (~0.25 s).
-    std::vector<double> ignoredGpu, ignoredCpu;
-    timeOnce(compute, ignoredGpu, ignoredCpu);
-    if (lists) timeOnce(occupied, ignoredGpu, ignoredCpu);
-    timeOnce(generate, ignoredGpu, ignoredCpu);
-
-    std::vector<double> computeGpu, computeCpu, occupiedGpu, occupiedCpu, generateGpu, generateCpu;
-    for (int i = 0; i < t.repetitions; ++i) {
-        timeOnce(compute, computeGpu, computeCpu);
-        if (lists) timeOnce(occupied, occupiedGpu, occupiedCpu);
-        timeOnce(generate, generateGpu, generateCpu);
-    }
-    compute();  // leave execute()'s chain in place, rounded as the cone tracer expects
-
-    t.computeMinMs = minOf(computeGpu);
-    t.computeMedianMs = medianOf(computeGpu);
-    t.generateMinMs = minOf(generateGpu);
-    t.generateMedianMs = medianOf(generateGpu);
-    t.computeCpuMedianMs = medianOf(computeCpu);
-    t.generateCpuMedianMs = medianOf(generateCpu);
-    t.computeRunsMs = computeGpu;
-    t.occupiedRunsMs = occupiedGpu;
-    t.occupiedMinMs = minOf(occupiedGpu);
-    t.occupiedMedianMs = medianOf(occupiedGpu);
-    t.occupiedCpuMedianMs = medianOf(occupiedCpu);
-    return t;
 }
 
 }  // namespace lit

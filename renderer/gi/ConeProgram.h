@@ -6,12 +6,12 @@
 // made the cone trace 3-4× slower with every feature off (docs/GI.md, "Cost"). Each variant is
 // built on first use, so settings that stay at their defaults compile one program.
 
-#include "gl/ProgramVariants.h"
-#include "gl/Shader.h"
-
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "gl/ProgramVariants.h"
+#include "gl/Shader.h"
 
 namespace lit {
 
@@ -19,13 +19,13 @@ struct RenderSettings;
 
 // The cone features a program is compiled with (LIT_CONE_ANISOTROPIC, LIT_CONE_FOOTPRINT).
 struct ConeFeatures {
-    bool anisotropic = false;  // directional voxels for levels ≥ 1 (RenderSettings::anisotropicVoxels)
-    bool footprint = false;    // footprint-bounded diffuse cones (RenderSettings::coneFootprintPerHeight > 0)
+    bool anisotropic = false;  // directional voxels for levels ≥ 1 (GiSettings::anisotropicVoxels())
+    bool footprint = false;    // footprint-bounded diffuse cones (GiSettings::coneFootprintPerHeight > 0)
     // The cached GI mode (docs/GI.md, "The cached mode"): L_ID gathered from the voxels' cached
-    // irradiance (RenderSettings::diffuseFromVoxelIrradiance) instead of per-pixel diffuse cones.
+    // irradiance (GiSettings::voxelIrradiance()) instead of per-pixel diffuse cones.
     bool voxelIrradiance = false;
     // Rays per voxel for the light the voxels gather themselves (the cached mode's irradiance and
-    // bounces 2..N; RenderSettings::voxelRays): > 0 compiles the per-voxel passes with rays marched
+    // bounces 2..N; GiSettings::voxelRays): > 0 compiles the per-voxel passes with rays marched
     // through the voxel grid (LIT_VOXEL_RAYS) instead of cones; the count itself is a uniform.
     int voxelRays = 0;
 

@@ -1,9 +1,9 @@
-#include "passes/ConeProgram.h"
-
-#include "RenderSettings.h"
+#include "gi/ConeProgram.h"
 
 #include <algorithm>
 #include <utility>
+
+#include "RenderSettings.h"
 
 namespace lit {
 
@@ -13,7 +13,9 @@ ConeFeatures ConeFeatures::of(const RenderSettings& settings) {
 }
 
 std::string ConeFeatures::defines() const {
-    const auto define = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
+    const auto define = [](const char* name, bool on) {
+        return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
+    };
     return define("LIT_CONE_ANISOTROPIC", anisotropic) + define("LIT_CONE_FOOTPRINT", footprint) +
            define("LIT_VOXEL_IRRADIANCE", voxelIrradiance) + define("LIT_VOXEL_RAYS", voxelRays > 0);
 }

@@ -18,16 +18,16 @@
 // land in the same voxel average with a compare-and-swap loop (voxel.glsl) instead of flickering.
 // A voxel is occupied when its albedo count (alpha) is non-zero.
 
-#include "RenderSettings.h"
-#include "gl/Objects.h"
-#include "scene/Aabb.h"
-
 #include <shared.h>
 
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "RenderSettings.h"
+#include "gl/Objects.h"
+#include "scene/Aabb.h"
 
 namespace lit {
 
@@ -131,9 +131,9 @@ public:
     const gl::Buffer& uniforms() const { return uniforms_; }
 
     // Bytes of GPU memory per volume and in total (radiance counted with its mip chain).
-    std::size_t materialBytes() const;   // albedo + normal + emission + surface
-    std::size_t radianceBytes() const;     // isotropic chain + the six directional chains while they exist
-    std::size_t bounceBytes() const;       // direct + bounce volumes (0 until allocated)
+    std::size_t materialBytes() const;  // albedo + normal + emission + surface
+    std::size_t radianceBytes() const;  // isotropic chain + the six directional chains while they exist
+    std::size_t bounceBytes() const;    // direct + bounce volumes (0 until allocated)
     std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes(); }
     std::string memoryReport() const;  // "albedo 8.0 MiB, normal 8.0 MiB, ... total 54.9 MiB"
 

@@ -1,11 +1,11 @@
-#include "passes/VoxelVolume.h"
-
-#include "Log.h"
+#include "gi/VoxelVolume.h"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdio>
+
+#include "Log.h"
 
 namespace lit {
 
@@ -120,10 +120,10 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     clearMaterials();
     // A surface crosses about N² voxels per N² of area; 16·N² holds the Cornell box (≈ 6·N²) and
     // Sponza at 256³ with room. An overflow is detected (readOccupiedCount) and grows the list.
-    growOccupiedList(static_cast<std::uint32_t>(std::min<std::size_t>(static_cast<std::size_t>(n) * n * n,
-                                                                      static_cast<std::size_t>(16) * n * n)));
-    log.info("voxel volume " + std::to_string(n) + "³ (" + (rgba8_ ? "RGBA8" : "RGBA16F") + " radiance): " +
-             memoryReport());
+    growOccupiedList(static_cast<std::uint32_t>(
+        std::min<std::size_t>(static_cast<std::size_t>(n) * n * n, static_cast<std::size_t>(16) * n * n)));
+    log.info("voxel volume " + std::to_string(n) + "³ (" + (rgba8_ ? "RGBA8" : "RGBA16F") +
+             " radiance): " + memoryReport());
     return true;
 }
 
@@ -213,7 +213,8 @@ std::vector<glm::ivec3> VoxelVolume::readOccupiedList() const {
     std::vector<glm::ivec3> voxels;
     voxels.reserve(count);
     for (std::uint32_t p : packed)
-        voxels.emplace_back(static_cast<int>(p & 1023u), static_cast<int>((p >> 10) & 1023u), static_cast<int>(p >> 20));
+        voxels.emplace_back(static_cast<int>(p & 1023u), static_cast<int>((p >> 10) & 1023u),
+                            static_cast<int>(p >> 20));
     return voxels;
 }
 
@@ -248,13 +249,14 @@ std::vector<glm::ivec3> VoxelVolume::readParentList(int level) const {
     count = std::min(count, parentLayout_.listCapacity[k]);
     std::vector<std::uint32_t> packed(count);
     if (count)
-        glGetNamedBufferSubData(parents_.id(),
-                                static_cast<GLintptr>(kParentHeaderBytes + std::size_t{4} * parentLayout_.listOffset[k]),
-                                static_cast<GLsizeiptr>(std::size_t{4} * count), packed.data());
+        glGetNamedBufferSubData(
+            parents_.id(), static_cast<GLintptr>(kParentHeaderBytes + std::size_t{4} * parentLayout_.listOffset[k]),
+            static_cast<GLsizeiptr>(std::size_t{4} * count), packed.data());
     std::vector<glm::ivec3> voxels;
     voxels.reserve(count);
     for (std::uint32_t p : packed)
-        voxels.emplace_back(static_cast<int>(p & 1023u), static_cast<int>((p >> 10) & 1023u), static_cast<int>(p >> 20));
+        voxels.emplace_back(static_cast<int>(p & 1023u), static_cast<int>((p >> 10) & 1023u),
+                            static_cast<int>(p >> 20));
     return voxels;
 }
 

@@ -16,14 +16,13 @@
 // reduced in exact integer arithmetic on the bytes, RGBA16F in fp32 in a fixed order; the CPU
 // reference in tests/gl/test_mipmap.cpp repeats both bit for bit.
 //
-// How it is tuned (Mesa 22.3 llvmpipe, 2 cores, 256³; the measurements are in MipmapPass.cpp):
-// one invocation reduces a whole 2³ (RGBA16F) or 8³ (RGBA8) block of the source level and stores
-// every level on the way; no shared memory and no barrier(), which measured 1.3-3× slower there.
-
-#include "passes/Pass.h"
+// How it is tuned for llvmpipe (MipmapPass.cpp, docs/PERFORMANCE.md "Mipmaps"): no shared memory
+// and no barrier(), which measured slower there.
 
 #include <filesystem>
 #include <vector>
+
+#include "passes/Pass.h"
 
 namespace lit {
 
@@ -67,9 +66,9 @@ public:
     void execute(const gl::Texture& volume);
 
     std::vector<gl::Program*> programs() override {
-        return {&rgba8_,         &rgba16f_,        &directionalFromIso8_,    &directionalFromIso16f_,
-                &directional8_,  &directional16f_, &listRgba8_,              &listRgba16f_,
-                &listFromIso8_,  &listFromIso16f_, &listDirectional8_,       &listDirectional16f_,
+        return {&rgba8_,        &rgba16f_,        &directionalFromIso8_, &directionalFromIso16f_,
+                &directional8_, &directional16f_, &listRgba8_,           &listRgba16f_,
+                &listFromIso8_, &listFromIso16f_, &listDirectional8_,    &listDirectional16f_,
                 &listParents_};
     }
 
@@ -86,42 +85,5 @@ private:
     gl::Program listRgba8_, listRgba16f_, listFromIso8_, listFromIso16f_, listDirectional8_, listDirectional16f_;
     gl::Program listParents_;
 };
-
-// Times the compute chain against glGenerateTextureMipmap (a plain average: a different, cheaper
-// reduction, kept as a yardstick) on the same texture in the same run.
-struct MipmapTimings {
-    int resolution = 0;                                  // voxels per side of level 0
-    bool rgba8 = false;                                  // radiance format: RGBA8 (true) or RGBA16F
-    int repetitions = 0;                                 // timed runs of each
-    double computeMinMs = 0.0, computeMedianMs = 0.0;    // MipmapPass::execute, GPU time (ms)
-    double generateMinMs = 0.0, generateMedianMs = 0.0;  // glGenerateTextureMipmap, GPU time (ms)
-    // Process CPU time (ms, all threads) of each, median. On llvmpipe the "GPU" is the CPU: this
-    // is the work done, which stays meaningful when other processes compete for the cores and
-    // GPU (wall-clock) times do not. On a real GPU it is only the driver's submission cost.
-    double computeCpuMedianMs = 0.0, generateCpuMedianMs = 0.0;
-    // The chain over the occupied parents (execute's default), GPU and process CPU time, when the
-    // volume's parent lists were valid (0 otherwise). `anisotropic`: both runs of the chain also
-    // built the six directional chains.
-    double occupiedMinMs = 0.0, occupiedMedianMs = 0.0, occupiedCpuMedianMs = 0.0;
-    bool anisotropic = false;
-    // GPU ms of each timed run, in order (run i of each ran back to back: one interleaved round).
-    std::vector<double> computeRunsMs, occupiedRunsMs;
-    // computeMinMs / occupiedMinMs: > 1 means building over the occupied parents is faster.
-    double occupiedSpeedup() const { return occupiedMinMs > 0.0 ? computeMinMs / occupiedMinMs : 0.0; }
-    // generateMinMs / computeMinMs: > 1 means the compute chain is faster. Minimums, because on a
-    // shared machine the medians swing by 2× with the load while the minimums stay put.
-    double speedup() const { return computeMinMs > 0.0 ? generateMinMs / computeMinMs : 0.0; }
-};
-
-// Runs each method once untimed (shader compilation, first-use allocation), then `repetitions`
-// timed runs of each, alternating so that all see the same machine load: the whole-grid chain,
-// the chain over the occupied parents (if the volume's lists are valid) and glGenerateTextureMipmap.
-// With `anisotropic` the two chains include the directional chains. GPU time comes from
-// GL_TIMESTAMP query pairs around each run, with glFinish between runs (llvmpipe reports 0 for
-// GL_TIME_ELAPSED around compute dispatches, so elapsed queries are not used). glGenerateTexture-
-// Mipmap overwrites the levels with plain averages; the chain is rebuilt by `pass` at the end, so
-// the volume ends as execute() leaves it. Level 0 is not changed.
-// `repetitions` is clamped to [1, 100].
-MipmapTimings benchmarkMipmaps(MipmapPass& pass, VoxelVolume& volume, int repetitions, bool anisotropic = false);
 
 }  // namespace lit

@@ -1,0 +1,77 @@
+#include "gi/BouncePass.h"
+
+#include <shared.h>
+
+#include "gi/VoxelVolume.h"
+
+namespace lit {
+
+std::string radianceFormatDefine(bool rgba8) {
+    return rgba8 ? "#define LIT_BOUNCE_RGBA8 1\n" : "#define LIT_BOUNCE_RGBA8 0\n";
+}
+
+const gl::Program& radianceFormatProgram(const std::filesystem::path& shaderRoot, gl::Program& rgba8Program,
+                                         gl::Program& rgba16fProgram, bool rgba8, const std::string& label,
+                                         const char* file) {
+    gl::Program& program = rgba8 ? rgba8Program : rgba16fProgram;
+    if (!program)
+        program = gl::Program(shaderRoot, label + (rgba8 ? " rgba8" : " rgba16f"), {{GL_COMPUTE_SHADER, file}},
+                              radianceFormatDefine(rgba8));
+    return program;
+}
+
+std::vector<gl::Program*> BouncePass::programs() {
+    std::vector<gl::Program*> programs;
+    trace8_.appendBuilt(programs);
+    trace16f_.appendBuilt(programs);
+    for (gl::Program* built : {&copy8_, &copy16f_})
+        if (*built) programs.push_back(built);
+    return programs;
+}
+
+void BouncePass::trace(const VoxelVolume& volume, const RayHitCache& cache, const BounceTrace& bounce) {
+    if (volume.resolution() <= 0 || !volume.direct()) return;
+    const bool rgba8 = volume.radianceRgba8();
+    ConeProgram& programs = rgba8 ? trace8_ : trace16f_;
+    if (programs.empty())
+        programs = ConeProgram(shaderRoot_, rgba8 ? "bounce rgba8" : "bounce rgba16f",
+                               {{GL_COMPUTE_SHADER, "bounce.comp.glsl"}}, radianceFormatDefine(rgba8), bounce.features);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    const gl::Program& program = programs.get(bounce.features);
+    useWithVoxelSurfaces(program, volume, bounce.features);
+    const GLenum format = volume.radianceFormat();
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY, format);
+    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+    // The light the rays take: the direct light for the second bounce, the bounce before (level 0) after it.
+    if (bounce.features.voxelRays > 0)
+        glBindImageTexture(LIT_IMG_VOXEL_RAY_SOURCE,
+                           bounce.secondBounce ? volume.direct().id() : volume.radiance().id(), 0, GL_TRUE, 0,
+                           GL_READ_ONLY, format);
+    cache.bind(program, bounce.features, bounce.overList ? bounce.rayHits : RayHits::Off);
+    dispatchListRange(volume, program, bounce.overList, bounce.range);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void BouncePass::finish(const VoxelVolume& volume, bool overList) {
+    const int n = volume.resolution();
+    if (n <= 0 || !volume.direct()) return;
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    if (overList && volume.occupiedList()) {
+        // Only the listed voxels: the bounce wrote those, and level 0 of the others is 0.
+        const gl::Program& program = radianceFormatProgram(shaderRoot_, copy8_, copy16f_, volume.radianceRgba8(),
+                                                           "bounce copy", "bounce_copy.comp.glsl");
+        program.use();
+        glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_READ_ONLY,
+                           volume.radianceFormat());
+        glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                           volume.radianceFormat());
+        dispatchOverVoxels(volume, program, true);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        return;
+    }
+    // The whole grid (the list overflowed: the bounce traced every voxel).
+    glCopyImageSubData(volume.bounce().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0,
+                       0, n, n, n);
+}
+
+}  // namespace lit

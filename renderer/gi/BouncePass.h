@@ -1,0 +1,57 @@
+#pragma once
+// Light bounces 2..N (docs/GI.md, "Bounces"): after the injection and a full mip build, each
+// occupied voxel gathers its indirect diffuse light (cones through the mips, or voxel rays through
+// the grid) and the bounce's radiance is direct radiance + albedo × that gather
+// (shaders/bounce.comp.glsl). The direct radiance is volume.direct(), which InjectPass writes
+// beside level 0 (InjectOptions::writeDirect; VoxelVolume::ensureBounceVolumes first). A bounce
+// may be spread over frames: trace() takes a range of the occupied-voxel list into
+// volume.bounce(), reading the radiance volume as it stands; finish(), once every voxel was
+// traced, copies the bounce into level 0, and the caller rebuilds the mips from it.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "gi/ConeProgram.h"
+#include "gi/RayHitCache.h"
+#include "gi/VoxelDispatch.h"
+#include "passes/Pass.h"
+
+namespace lit {
+
+class VoxelVolume;
+
+struct BounceTrace {
+    ConeFeatures features;      // the cone features (and voxel rays) to gather with (ConeFeatures::of)
+    bool secondBounce = false;  // voxel rays take the direct volume's light (else level 0's: the bounce before)
+    bool overList = true;       // the occupied-voxel list's voxels; false when it overflowed (whole grid)
+    VoxelRange range;           // list entries to trace (count 0: all)
+    RayHits rayHits = RayHits::Off;
+};
+
+class BouncePass : public Pass {
+public:
+    explicit BouncePass(std::filesystem::path shaderRoot) : shaderRoot_(std::move(shaderRoot)) {}
+
+    void trace(const VoxelVolume& volume, const RayHitCache& cache, const BounceTrace& bounce);
+    // Copies the bounce into level 0: the listed voxels only (bounce_copy.comp.glsl), or the whole
+    // grid when `overList` is false.
+    void finish(const VoxelVolume& volume, bool overList);
+
+    std::vector<gl::Program*> programs() override;
+
+private:
+    std::filesystem::path shaderRoot_;
+    // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce.
+    ConeProgram trace8_, trace16f_;
+    gl::Program copy8_, copy16f_;  // bounce_copy.comp.glsl, built by the first finish over the list
+};
+
+// The compute program `file` for RGBA8 or RGBA16F volumes (LIT_BOUNCE_RGBA8), built into
+// `rgba8Program` or `rgba16fProgram` on first use.
+const gl::Program& radianceFormatProgram(const std::filesystem::path& shaderRoot, gl::Program& rgba8Program,
+                                         gl::Program& rgba16fProgram, bool rgba8, const std::string& label,
+                                         const char* file);
+std::string radianceFormatDefine(bool rgba8);
+
+}  // namespace lit

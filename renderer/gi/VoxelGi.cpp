@@ -1,0 +1,252 @@
+#include "gi/VoxelGi.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "scene/Scene.h"
+
+namespace lit {
+
+namespace {
+std::string formatMs(double ms) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f ms", ms);
+    return text;
+}
+}  // namespace
+
+VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Log& log)
+    : profiler_(profiler),
+      log_(log),
+      voxelize_(shaderRoot),
+      inject_(shaderRoot),
+      mipmap_(shaderRoot),
+      bounce_(shaderRoot),
+      irradiance_(shaderRoot),
+      filter_(shaderRoot) {}
+
+std::vector<Pass*> VoxelGi::passes() { return {&voxelize_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_}; }
+
+RayHits VoxelGi::rayHitsFor(int rays) {
+    const GiState& state = scheduler_.state();
+    if (rays <= 0 || !state.listComplete) return RayHits::Off;
+    const bool fits = rayHitCache_.ensure(rays, state.occupied);
+    if (fits && rayHitCache_.reallocated()) {
+        char text[160];
+        std::snprintf(text, sizeof text, "voxel ray hits: %.1f MiB (%u occupied voxels × 2 sides × %d rays)",
+                      static_cast<double>(rayHitCache_.bytes()) / (1024.0 * 1024.0), state.occupied, rays);
+        log_.info(text);
+    }
+    return scheduler_.rayHits(rays, fits, rayHitCache_.reallocated());
+}
+
+GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings, const GiBudget& budget,
+                              DrawCounters& counters) {
+    GiFrameReport report;
+    const bool reallocated = volume_.ensure(settings.gi.voxelResolution, settings.gi.radianceRgba8, log_);
+    const bool moved = volume_.fitTo(frame.bounds);
+    volume_.updateUniforms(settings, frame.frameIndex);
+    const VoxelKey voxels{frame.scene.geometryRevision, frame.scene.materialRevision, &frame.scene};
+    const GiLightKey light = GiLightKey::of(settings);
+    const ConeFeatures features = ConeFeatures::of(settings);
+    const GiScheduler::Changes changes = scheduler_.changes(voxels, light, reallocated, moved, frame.shadowsDirty);
+    // Switched off: the directional volumes' memory goes back (0.6-1.3 GiB at 512³).
+    if (!light.anisotropic && volume_.directional(0)) {
+        volume_.releaseDirectionalVolumes();
+        scheduler_.directionalReleased();
+    }
+
+    if (changes.voxelize) {
+        {
+            Profiler::Scope scope(profiler_, "voxelize");
+            voxelize_.execute(frame.scene, frame.gpuScene, volume_, counters);
+        }
+        {
+            // Once per voxelization: the mip chain is then built over these (light edits too).
+            Profiler::Scope scope(profiler_, "mip lists");
+            mipmap_.listOccupiedParents(volume_);
+        }
+        ++generation_;
+        // One uint read back per voxelization (rare and slow anyway): a list that overflowed is
+        // grown for the next voxelization while this one runs over the whole grid.
+        const std::uint32_t occupied = volume_.readOccupiedCount();
+        const bool complete = occupied <= volume_.occupiedCapacity();
+        if (!complete) {
+            volume_.setParentListsValid(false);  // listed from an incomplete list: mipmaps over the whole grid
+            log_.warning("occupied-voxel list overflowed (" + std::to_string(occupied) + " voxels, room for " +
+                         std::to_string(volume_.occupiedCapacity()) +
+                         "); injecting the whole grid until the next voxelization");
+            volume_.growOccupiedList(occupied + occupied / 4);
+        }
+        scheduler_.voxelized(voxels, occupied, complete);
+    }
+    const bool overList = scheduler_.state().listComplete;
+
+    if (changes.inject) {
+        // Before the injection, which then writes the bounces' direct radiance beside level 0.
+        if (light.bounces > 1) volume_.ensureBounceVolumes();
+        const GiScheduler::UpdateStart start = scheduler_.startUpdate(changes, light, budget);
+        {
+            Profiler::Scope scope(profiler_, "inject");
+            inject_.execute(volume_, {.overList = overList,
+                                      .writeDirect = light.bounces > 1,
+                                      .writeLevel0 = !start.keepLastUpdate,
+                                      .shadows = frame.shadows});
+        }
+        // With the last update's light kept in level 0 its mips stand too (the bounces' rays read
+        // only their occupancy): the direct light's own mip build is saved (docs/PERFORMANCE.md,
+        // "GI update").
+        if (!start.keepLastUpdate) {
+            Profiler::Scope scope(profiler_, "mipmap");
+            mipmap_.execute(volume_, light.anisotropic, overList);
+        }
+        if (start.bouncesNow > 0) {
+            Profiler::Scope scope(profiler_, "bounces");
+            for (int b = 2; b <= start.bouncesNow + 1; ++b) {
+                const RayHits hits = rayHitsFor(features.voxelRays);
+                bounce_.trace(volume_, rayHitCache_, {features, b == 2, overList, {}, hits});
+                bounce_.finish(volume_, overList);
+                scheduler_.listTraced(hits);
+                mipmap_.execute(volume_, light.anisotropic, overList);
+            }
+        }
+        if (start.prepareIrradiance) irradianceCache_.prepare(volume_, start.clearIrradiance);
+        report.injected = true;
+        report.lightChanged = true;
+        pendingReason_ = changes.reason;
+        pendingFrame_ = profiler_.currentFrame();
+        pendingVoxelize_ = changes.voxelize;
+        pendingBounces_ = light.bounces;
+    }
+    continueUpdate(settings, light, budget, report);
+
+    const GiState& state = scheduler_.state();
+    report.voxelized = changes.voxelize;
+    report.occupiedVoxels = state.occupied;
+    report.refining = scheduler_.refinementLeft(light);
+    report.updateDone = scheduler_.updateDone();
+    report.updateStage = scheduler_.updateStage(report.refinedVoxels > 0);
+    return report;
+}
+
+void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget,
+                             GiFrameReport& report) {
+    const ConeFeatures features = ConeFeatures::of(settings);
+    const bool overList = scheduler_.state().listComplete;
+    // The list ranges traced this frame, and whether the frame completed an update or a
+    // refinement round (or traced everything at once): then the filter runs over the whole list,
+    // else only over the ranges traced (over all occupied voxels it costs as much as a third of
+    // the trace it follows at 256³; docs/PERFORMANCE.md, "GI update").
+    std::vector<VoxelRange> traced;
+    bool filterAll = false;
+    const GiProgress& progress = scheduler_.state().progress;
+    if (progress.bounce > 0) {
+        // A spread bounce: the last share ends it (level 0 and its mips); after the last bounce
+        // the irradiance starts in the next frame.
+        Profiler::Scope scope(profiler_, "bounces");
+        const VoxelRange range = scheduler_.bounceShare(scheduler_.voxelsPerFrame(budget, light.voxelRays));
+        const RayHits hits = rayHitsFor(features.voxelRays);
+        bounce_.trace(volume_, rayHitCache_, {features, progress.bounce == 2, true, range, hits});
+        if (scheduler_.advanceBounce(range)) {
+            scheduler_.listTraced(hits);  // the pass ran over the whole list from 0
+            bounce_.finish(volume_, true);
+            mipmap_.execute(volume_, light.anisotropic, overList);
+        }
+    } else if (light.voxelIrradiance && progress.irradianceLeft > 0) {
+        Profiler::Scope scope(profiler_, "voxel irradiance");
+        if (!scheduler_.spreadsOverFrames(light, budget)) {
+            const RayHits hits = rayHitsFor(features.voxelRays);
+            irradiance_.trace(volume_, irradianceCache_, rayHitCache_, {features, overList, {}, 0, hits});
+            scheduler_.listTraced(hits);
+            scheduler_.irradianceDone();
+        } else {
+            const std::uint32_t perFrame = scheduler_.voxelsPerFrame(budget, light.voxelRays);
+            const std::vector<VoxelRange> ranges = scheduler_.takeIrradiance(perFrame);
+            const RayHits hits = rayHitsFor(features.voxelRays);
+            for (const VoxelRange& range : ranges) {
+                irradiance_.trace(volume_, irradianceCache_, rayHitCache_, {features, true, range, 0, hits});
+                traced.push_back(range);
+            }
+            // Every entry was traced once since the edit: recorded, if that is what it did. The
+            // accumulated indirect light holds the update's frames (old light in the voxels not
+            // reached yet): the frame after it starts the history afresh.
+            if (scheduler_.state().progress.irradianceLeft == 0) {
+                report.lightChanged = true;
+                scheduler_.listTraced(hits);
+                scheduler_.restartIfAsked();
+            }
+        }
+        filterAll = scheduler_.state().progress.irradianceLeft == 0;
+    }
+    // The refinement once the update is done, in the same frame when the budget allows (a still
+    // converges in its one frame). Round k traces every voxel's set + k once over the list; each
+    // voxel then averages k + 1 sets. The light is right throughout: only its sampling improves.
+    const GiProgress& after = scheduler_.state().progress;
+    if (after.bounce == 0 && after.irradianceLeft == 0 && scheduler_.refinementLeft(light) && budget.refineVoxels > 0) {
+        Profiler::Scope scope(profiler_, "voxel irradiance");
+        int rounds = 0;
+        for (const GiScheduler::RefineShare& share : scheduler_.takeRefinement(budget.refineVoxels, rounds)) {
+            irradiance_.trace(volume_, irradianceCache_, rayHitCache_, {features, true, share.range, share.setOffset});
+            traced.push_back(share.range);
+            report.refinedVoxels += share.range.count;
+        }
+        filterAll = filterAll || rounds > 0;
+    }
+    if (filterAll || !traced.empty()) {
+        // The voxels traced see their new values (and, once the update is complete, every voxel
+        // its neighbours' new values: the result is then the all-at-once filter's exactly).
+        Profiler::Scope scope(profiler_, "voxel irradiance filter");
+        if (filterAll) {
+            filter_.execute(volume_, irradianceCache_, overList);
+        } else {
+            for (const VoxelRange& range : traced) filter_.execute(volume_, irradianceCache_, true, range);
+        }
+    }
+}
+
+void VoxelGi::bindGather(const RenderSettings& settings) const {
+    if (settings.gi.voxelIrradiance()) irradianceCache_.bindGatherTexels();
+}
+
+std::size_t VoxelGi::bytes() const { return volume_.totalBytes(); }
+
+void VoxelGi::reportUpdate() {
+    if (pendingFrame_ == 0) return;
+    const PassTiming* injectTiming = profiler_.lastRun("inject");
+    if (!injectTiming || injectTiming->frame < pendingFrame_) return;
+    const PassTiming* voxelizeTiming = profiler_.lastRun("voxelize");
+    const PassTiming* mipTiming = profiler_.lastRun("mipmap");
+    std::string text = pendingVoxelize_ ? "re-voxelized " : "re-injected ";
+    text += std::to_string(volume_.resolution()) + "³ (" + pendingReason_ + "): ";
+    if (pendingVoxelize_ && voxelizeTiming) text += "voxelize " + formatMs(voxelizeTiming->gpuMs) + ", ";
+    const PassTiming* listsTiming = profiler_.lastRun("mip lists");
+    if (pendingVoxelize_ && listsTiming && listsTiming->frame >= pendingFrame_)
+        text += "mip lists " + formatMs(listsTiming->gpuMs) + ", ";
+    const GiState& state = scheduler_.state();
+    const double n = volume_.resolution();
+    char occupancy[96];
+    std::snprintf(occupancy, sizeof occupancy, "inject %s over %u occupied voxels (%.2f %% of the grid%s)",
+                  formatMs(injectTiming->gpuMs).c_str(), state.occupied, 100.0 * state.occupied / (n * n * n),
+                  state.listComplete ? "" : ", list overflowed: whole grid");
+    text += occupancy;
+    if (mipTiming) text += ", mipmap " + formatMs(mipTiming->gpuMs);
+    const PassTiming* bounceTiming = profiler_.lastRun("bounces");
+    if (bounceTiming && bounceTiming->frame >= pendingFrame_)
+        text += ", " + std::to_string(pendingBounces_ - 1) + " more bounce" + (pendingBounces_ > 2 ? "s " : " ") +
+                formatMs(bounceTiming->gpuMs);
+    const PassTiming* irradianceTiming = profiler_.lastRun("voxel irradiance");
+    if (irradianceTiming && irradianceTiming->frame >= pendingFrame_)
+        text += ", voxel irradiance " + formatMs(irradianceTiming->gpuMs);
+    const PassTiming* filterTiming = profiler_.lastRun("voxel irradiance filter");
+    if (filterTiming && filterTiming->frame >= pendingFrame_) text += " + filter " + formatMs(filterTiming->gpuMs);
+    // Every frame of a gizmo drag re-voxelizes: one folded line with a count, not one per frame.
+    log_.info(text, Fold::IgnoringNumbers);
+    pendingFrame_ = 0;
+}
+
+MipmapTimings VoxelGi::benchmarkMipmaps(int repetitions) {
+    if (!valid()) return {};
+    return lit::benchmarkMipmaps(mipmap_, volume_, repetitions, scheduler_.state().light.anisotropic);
+}
+
+}  // namespace lit

@@ -1,0 +1,116 @@
+#pragma once
+// The voxel GI subsystem: one owner for the voxel volume and everything that fills it —
+// voxelize → inject → mips → bounces → voxel irradiance (traced, filtered, refined) — and for the
+// scheduler that decides what of it a frame does under its GiBudget (GiScheduler). The frame asks
+// update() once and then reads the volumes through volume() and bindGather(); nothing else writes
+// them. docs/GI.md, "Pipeline".
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "Log.h"
+#include "Profiler.h"
+#include "RenderSettings.h"
+#include "gi/BouncePass.h"
+#include "gi/GiBudget.h"
+#include "gi/GiScheduler.h"
+#include "gi/InjectPass.h"
+#include "gi/IrradianceFilterPass.h"
+#include "gi/MipmapBenchmark.h"
+#include "gi/MipmapPass.h"
+#include "gi/RayHitCache.h"
+#include "gi/VoxelIrradianceCache.h"
+#include "gi/VoxelIrradiancePass.h"
+#include "gi/VoxelVolume.h"
+#include "gi/VoxelizePass.h"
+#include "scene/Aabb.h"
+
+namespace lit {
+
+class GpuScene;
+struct DrawCounters;
+struct MipmapTimings;
+struct Scene;
+
+// What a GI frame did, for FrameStats and the editor's overlay.
+struct GiFrameReport {
+    bool voxelized = false;            // the volume was voxelized again
+    bool injected = false;             // the light was injected again
+    bool lightChanged = false;         // the voxels' light changed: accumulated indirect light is stale
+    std::uint32_t occupiedVoxels = 0;  // voxels the last voxelization occupied
+    float updateDone = 1.0f;           // share of the update after the last edit done (1: all)
+    std::string updateStage;           // "bounce 2".."bounce N", "irradiance", "refining k/15", ""
+    std::uint32_t refinedVoxels = 0;   // voxels the refinement traced this frame
+    bool refining = false;             // refinement rounds are still to run
+};
+
+class VoxelGi {
+public:
+    // Builds the passes' first programs (throws gl::GlError when a shader does not build).
+    VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Log& log);
+
+    struct Frame {
+        const Scene& scene;
+        const GpuScene& gpuScene;
+        Aabb bounds;                // the scene's world bounds: the volume is fitted around them
+        ShadowKinds shadows;        // the kinds of shadow map the light table uses
+        bool shadowsDirty = false;  // the lights or their shadow maps changed this frame
+        int frameIndex = 0;         // sample pattern index (turns with temporal accumulation)
+    };
+    // Brings the volumes up to date with `settings` as far as `budget` allows this frame. The
+    // caller has bound the frame UBO (LIT_UBO_FRAME), the light table (LIT_SSBO_LIGHTS) and the
+    // shadow maps (ShadowPass::bindMaps), which the injection reads. Leaves the voxel UBO bound.
+    GiFrameReport update(const Frame& frame, const RenderSettings& settings, const GiBudget& budget,
+                         DrawCounters& counters);
+    // A new scene: everything is voxelized again on the next update.
+    void invalidate() { scheduler_.invalidate(); }
+
+    // The volume of the last update; valid() is false before the first one (or after invalidate).
+    bool valid() const { return scheduler_.state().voxelsValid; }
+    const VoxelVolume& volume() const { return volume_; }
+    // Counts voxelizations (the voxel debug views cache by it).
+    std::uint64_t generation() const { return generation_; }
+    // Binds what the per-pixel gather reads in the cached mode (the irradiance gather texels).
+    void bindGather(const RenderSettings& settings) const;
+    // GPU memory of the volumes and caches, bytes.
+    std::size_t bytes() const;
+
+    // Logs what the last update did and what it cost, once its GPU timings are in (call once a
+    // frame, before the frame's own passes).
+    void reportUpdate();
+    // MipmapTimings of the current volume (after a GI frame; zeros before one).
+    MipmapTimings benchmarkMipmaps(int repetitions);
+    // The passes' programs, for hot reload.
+    std::vector<Pass*> passes();
+
+private:
+    // A trace over the occupied-voxel list with `rays` rays: what it does with the ray-hit cache.
+    RayHits rayHitsFor(int rays);
+    // The work of the update after the injection frame: this frame's share of a spread bounce, of
+    // the irradiance and of the refinement, and the filter after them.
+    void continueUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget,
+                        GiFrameReport& report);
+
+    Profiler& profiler_;
+    Log& log_;
+    VoxelVolume volume_;
+    VoxelizePass voxelize_;
+    InjectPass inject_;
+    MipmapPass mipmap_;
+    BouncePass bounce_;
+    VoxelIrradiancePass irradiance_;
+    IrradianceFilterPass filter_;
+    VoxelIrradianceCache irradianceCache_;
+    RayHitCache rayHitCache_;
+    GiScheduler scheduler_;
+    std::uint64_t generation_ = 0;
+    // The update waiting for its GPU timings to be logged: why it ran, in which frame.
+    std::string pendingReason_;
+    std::uint64_t pendingFrame_ = 0;
+    bool pendingVoxelize_ = false;
+    int pendingBounces_ = 1;
+};
+
+}  // namespace lit

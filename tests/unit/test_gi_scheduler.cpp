@@ -1,0 +1,198 @@
+// The GI scheduler's decisions, without GL: what an edit starts, how a GiBudget spreads the update
+// over frames, the ray-hit cache's record and replay, a light dragged while an update runs, and the
+// refinement.
+
+#include <gtest/gtest.h>
+
+#include "gi/GiScheduler.h"
+
+namespace {
+
+using lit::GiBudget;
+using lit::GiLightKey;
+using lit::GiScheduler;
+using lit::RayHits;
+using lit::VoxelKey;
+using lit::VoxelRange;
+
+// The defaults' light key: the cached mode, two bounces, 32 voxel rays.
+GiLightKey cachedTwoBounces() { return GiLightKey::of(lit::RenderSettings{}); }
+
+// A scheduler that has voxelized `occupied` voxels and injected `light` once, all at once.
+GiScheduler injected(std::uint32_t occupied, const GiLightKey& light = cachedTwoBounces()) {
+    GiScheduler s;
+    const VoxelKey voxels{1, 1, nullptr};
+    const GiScheduler::Changes first = s.changes(voxels, light, true, true, true);
+    s.voxelized(voxels, occupied, true);
+    s.startUpdate(first, light, GiBudget::updateOnly());
+    return s;
+}
+
+TEST(GiScheduler, TheFirstFrameVoxelizesAndInjectsEverythingAtOnce) {
+    GiScheduler s;
+    const GiLightKey light = cachedTwoBounces();
+    const VoxelKey voxels{1, 1, nullptr};
+    const GiScheduler::Changes changes = s.changes(voxels, light, true, true, false);
+    EXPECT_TRUE(changes.voxelize);
+    EXPECT_TRUE(changes.inject);
+    EXPECT_EQ(changes.reason, "first GI frame");
+    s.voxelized(voxels, 5000, true);
+    const GiScheduler::UpdateStart start = s.startUpdate(changes, light, GiBudget::converge());
+    EXPECT_EQ(start.bouncesNow, 1) << "bounce 2 traced whole in this frame";
+    EXPECT_TRUE(start.prepareIrradiance);
+    EXPECT_TRUE(start.clearIrradiance) << "after a voxelization the old values sit at old geometry";
+    EXPECT_FALSE(start.keepLastUpdate);
+    EXPECT_EQ(s.state().progress.irradianceLeft, 5000u);
+    EXPECT_FALSE(s.spreadsOverFrames(light, GiBudget::converge()));
+    EXPECT_EQ(s.state().light, light);
+}
+
+TEST(GiScheduler, NothingChangedIsNoWorkAndTheStateStaysEqual) {
+    GiScheduler s = injected(5000);
+    s.irradianceDone();
+    const lit::GiState before = s.state();
+    const GiScheduler::Changes changes = s.changes(before.voxels, before.light, false, false, false);
+    EXPECT_FALSE(changes.voxelize);
+    EXPECT_FALSE(changes.inject);
+    EXPECT_EQ(s.state(), before);
+}
+
+TEST(GiScheduler, WhatRetracesTheVoxels) {
+    const GiLightKey cached = cachedTwoBounces();
+    GiLightKey rays = cached;
+    rays.voxelRays = 64;
+    EXPECT_TRUE(rays.retraces(cached));
+    GiLightKey intensity = cached;
+    intensity.intensity = 2.0f;
+    EXPECT_TRUE(intensity.retraces(cached));
+    // The fast mode with one bounce traces nothing per voxel: the cone settings do not matter.
+    lit::RenderSettings fast;
+    fast.gi.mode = lit::GiMode::Fast;
+    fast.gi.bounces = 1;
+    const GiLightKey fastKey = GiLightKey::of(fast);
+    GiLightKey fastIntensity = fastKey;
+    fastIntensity.intensity = 2.0f;
+    EXPECT_FALSE(fastIntensity.retraces(fastKey));
+    GiLightKey moreBounces = fastKey;
+    moreBounces.bounces = 3;
+    EXPECT_TRUE(moreBounces.retraces(fastKey));
+    // A light edit alone re-injects without re-tracing, and lets level 0 keep the last light.
+    GiScheduler s = injected(5000);
+    const GiScheduler::Changes changes = s.changes(s.state().voxels, cached, false, false, true);
+    EXPECT_TRUE(changes.inject);
+    EXPECT_FALSE(changes.retrace);
+    EXPECT_TRUE(changes.onlyLight);
+    EXPECT_EQ(changes.reason, "lights or shadows changed");
+    EXPECT_TRUE(s.startUpdate(changes, cached, GiBudget::updateOnly()).keepLastUpdate);
+}
+
+// A budget below the list: bounce 2 in ⌈occupied ÷ per frame⌉ shares, then the irradiance, the
+// progress rising through both to 1.
+TEST(GiScheduler, ABudgetSpreadsTheBounceAndTheIrradianceOverFrames) {
+    GiScheduler s;
+    const GiLightKey light = cachedTwoBounces();
+    const VoxelKey voxels{1, 1, nullptr};
+    const GiScheduler::Changes changes = s.changes(voxels, light, true, true, true);
+    s.voxelized(voxels, 2500, true);
+    const GiBudget budget{1000, 0};
+    const GiScheduler::UpdateStart start = s.startUpdate(changes, light, budget);
+    EXPECT_EQ(start.bouncesNow, 0);
+    EXPECT_EQ(s.state().progress.bounce, 2);
+    EXPECT_EQ(s.updateStage(false), "bounce 2");
+    const std::uint32_t perFrame = s.voxelsPerFrame(budget, light.voxelRays);
+    EXPECT_EQ(perFrame, 1000u) << "nothing recorded yet: no replay";
+    EXPECT_EQ(s.bounceShare(perFrame), (VoxelRange{0, 1000}));
+    EXPECT_FALSE(s.advanceBounce({0, 1000}));
+    EXPECT_FLOAT_EQ(s.updateDone(), 1000.0f / 5000.0f);
+    EXPECT_EQ(s.bounceShare(perFrame), (VoxelRange{1000, 1000}));
+    EXPECT_FALSE(s.advanceBounce({1000, 1000}));
+    EXPECT_EQ(s.bounceShare(perFrame), (VoxelRange{2000, 500}));
+    EXPECT_TRUE(s.advanceBounce({2000, 500})) << "the last share ends the bounce";
+    EXPECT_EQ(s.state().progress.bounce, 0) << "two bounces: the irradiance is next";
+    EXPECT_EQ(s.updateStage(false), "irradiance");
+    EXPECT_FLOAT_EQ(s.updateDone(), 0.5f);
+    EXPECT_EQ(s.takeIrradiance(perFrame), (std::vector<VoxelRange>{{0, 1000}}));
+    EXPECT_EQ(s.takeIrradiance(perFrame), (std::vector<VoxelRange>{{1000, 1000}}));
+    EXPECT_EQ(s.takeIrradiance(perFrame), (std::vector<VoxelRange>{{2000, 500}}));
+    EXPECT_EQ(s.state().progress.irradianceLeft, 0u);
+    EXPECT_FLOAT_EQ(s.updateDone(), 1.0f);
+    EXPECT_EQ(s.updateStage(false), "");
+}
+
+// The first trace over the list records the rays' hits; the traces after a light edit replay them,
+// kReplayVoxelsPerFrameFactor times the budget's voxels a frame; new voxels or another ray count
+// record again.
+TEST(GiScheduler, RayHitsAreRecordedThenReplayed) {
+    GiScheduler s = injected(5000);
+    EXPECT_EQ(s.rayHits(32, true, true), RayHits::Record);
+    s.listTraced(RayHits::Record);
+    EXPECT_EQ(s.rayHits(32, true, false), RayHits::Replay);
+    EXPECT_EQ(s.voxelsPerFrame({1000, 0}, 32), 1000u * lit::kReplayVoxelsPerFrameFactor);
+    EXPECT_EQ(s.rayHits(64, true, false), RayHits::Record) << "other rays";
+    s.listTraced(RayHits::Record);
+    EXPECT_EQ(s.rayHits(64, false, false), RayHits::Off) << "a cache that does not fit";
+    EXPECT_EQ(s.rayHits(0, true, false), RayHits::Off) << "cones";
+    s.listTraced(RayHits::Record);
+    s.voxelized({2, 1, nullptr}, 5000, true);
+    EXPECT_EQ(s.rayHits(64, true, false), RayHits::Record) << "new voxels, new hits";
+}
+
+// A light dragged while a spread update runs: the update runs on (the voxels not traced yet take
+// the new light) and one more follows it, instead of starting again at every edit and never
+// reaching the irradiance.
+TEST(GiScheduler, ALightDragLetsTheRunningUpdateFinishAndOneMoreFollow) {
+    GiScheduler s = injected(4000);
+    const GiLightKey light = cachedTwoBounces();
+    s.rayHits(light.voxelRays, true, true);
+    s.listTraced(RayHits::Record);
+    s.irradianceDone();
+    const GiBudget budget{500, 0};  // replayed: 2000 a frame, two frames a pass
+    GiScheduler::Changes edit = s.changes(s.state().voxels, light, false, false, true);
+    GiScheduler::UpdateStart start = s.startUpdate(edit, light, budget);
+    EXPECT_FALSE(start.runOn) << "nothing was running";
+    EXPECT_EQ(s.state().progress.bounce, 2);
+    s.advanceBounce(s.bounceShare(s.voxelsPerFrame(budget, light.voxelRays)));
+    edit = s.changes(s.state().voxels, light, false, false, true);
+    start = s.startUpdate(edit, light, budget);
+    EXPECT_TRUE(start.runOn);
+    EXPECT_TRUE(s.state().progress.updateAgain);
+    EXPECT_EQ(s.state().progress.bounceNext, 2000u) << "the bounce went on where it stood";
+    s.advanceBounce(s.bounceShare(s.voxelsPerFrame(budget, light.voxelRays)));
+    s.takeIrradiance(2000);
+    s.takeIrradiance(2000);
+    ASSERT_EQ(s.state().progress.irradianceLeft, 0u);
+    EXPECT_TRUE(s.restartIfAsked()) << "the edit's own update follows";
+    EXPECT_EQ(s.state().progress.bounce, 2);
+    EXPECT_EQ(s.state().progress.irradianceLeft, 4000u);
+    EXPECT_FALSE(s.state().progress.updateAgain);
+}
+
+// The refinement: 15 rounds over the list with the set offsets 1..15, in the budget's shares; a
+// budget of 0 waits; after the last round nothing is left.
+TEST(GiScheduler, RefinementTracesTheOtherConeSetsRoundByRound) {
+    GiScheduler s = injected(3000);
+    const GiLightKey light = cachedTwoBounces();
+    s.irradianceDone();
+    ASSERT_TRUE(s.refinementLeft(light));
+    int rounds = -1;
+    EXPECT_TRUE(s.takeRefinement(0, rounds).empty());
+    EXPECT_EQ(rounds, 0);
+    const auto shares = s.takeRefinement(4000, rounds);
+    ASSERT_EQ(shares.size(), 2u);
+    EXPECT_EQ(shares[0].range, (VoxelRange{0, 3000}));
+    EXPECT_EQ(shares[0].setOffset, 1);
+    EXPECT_EQ(shares[1].range, (VoxelRange{0, 1000}));
+    EXPECT_EQ(shares[1].setOffset, 2);
+    EXPECT_EQ(rounds, 1);
+    EXPECT_EQ(s.updateStage(true), "refining 2/15");
+    std::uint32_t traced = 4000;
+    for (const auto& share : s.takeRefinement(GiBudget::kAll, rounds)) traced += share.range.count;
+    EXPECT_EQ(rounds, 14);
+    EXPECT_EQ(traced, 15u * 3000u) << "every voxel once per round";
+    EXPECT_FALSE(s.refinementLeft(light));
+    GiLightKey accurate = light;
+    accurate.voxelIrradiance = false;
+    EXPECT_FALSE(injected(3000, accurate).refinementLeft(accurate)) << "only the cached mode refines";
+}
+
+}  // namespace
