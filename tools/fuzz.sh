@@ -24,7 +24,10 @@ build() {
                  -fno-sanitize-recover=undefined -DLIT_SOURCE_DIR="\"$root\""
                  -I"$root/renderer" -I"$root/shaders/include" -I"$root/tests/fuzz" -isystem /usr/include/stb)
     # The loader's CPU part and what it needs; tinygltf and stb_image compiled in, instrumented.
-    local sources=(renderer/scene/GltfLoader.cpp renderer/io/GltfGuard.cpp renderer/io/GltfFile.cpp
+    local sources=(renderer/scene/GltfLoader.cpp renderer/scene/GltfContainer.cpp renderer/scene/GltfParse.cpp
+                   renderer/scene/GltfValidate.cpp renderer/scene/GltfImport.cpp renderer/scene/GltfImportMeshes.cpp
+                   renderer/scene/GltfImportImages.cpp renderer/scene/GltfImportKept.cpp renderer/scene/GltfKeep.cpp
+                   renderer/io/GltfGuard.cpp renderer/io/GltfFile.cpp
                    renderer/io/AtomicFile.cpp renderer/Log.cpp renderer/scene/Scene.cpp renderer/scene/Tangents.cpp
                    renderer/animation/CameraPathIO.cpp renderer/animation/CameraPath.cpp renderer/scene/CameraView.cpp
                    tests/fuzz/tinygltf_impl.cpp tests/fuzz/fuzz_gltf_loader.cpp)
@@ -37,6 +40,9 @@ build() {
         [ ! -f "$object" ] || [ "$root/$source" -nt "$object" ] && stale=1
         if [ "$source" != tests/fuzz/tinygltf_impl.cpp ]; then
             for header in renderer/io/GltfGuard.h renderer/scene/GltfLoader.h renderer/io/GltfFile.h \
+                          renderer/scene/GltfImportDetail.h renderer/scene/GltfContainer.h renderer/scene/GltfParse.h \
+                          renderer/scene/GltfValidate.h renderer/scene/GltfImport.h renderer/scene/GltfImportMeshes.h \
+                          renderer/scene/GltfImportImages.h renderer/scene/GltfImportKept.h renderer/scene/GltfKeep.h \
                           renderer/io/AtomicFile.h renderer/scene/Scene.h renderer/Log.h tests/fuzz/GltfFuzzInput.h \
                           renderer/animation/CameraPathIO.h renderer/animation/CameraPath.h; do
                 [ "$root/$header" -nt "$object" ] && stale=1

@@ -1,15 +1,16 @@
 #pragma once
-// What the glTF loader keeps of a file for a lossless save, and the writer writes back (internal
-// to scene/GltfLoader.cpp and scene/GltfWriter.cpp): extras and extensions as JSON text, so the
-// Scene stays free of tinygltf types.
+// What the glTF import keeps of a file for a lossless save, and the export writes back (internal
+// to the scene/GltfImport* and scene/GltfExport* files, and animation/SceneCameraPaths.cpp):
+// extras and extensions as JSON text, so the Scene stays free of tinygltf types.
 
 #include "scene/Scene.h"
 
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include <cstddef>
 #include <cstdint>
-#include <cstring>
+#include <initializer_list>
 #include <string>
 
 namespace lit::gltfkeep {
@@ -32,50 +33,8 @@ inline int componentBytes(int componentType) {
     }
 }
 
-inline nlohmann::json toJson(const tinygltf::Value& value) {
-    switch (value.Type()) {
-        case tinygltf::NULL_TYPE: return nullptr;
-        case tinygltf::BOOL_TYPE: return value.Get<bool>();
-        case tinygltf::INT_TYPE: return value.Get<int>();
-        case tinygltf::REAL_TYPE: return value.Get<double>();
-        case tinygltf::STRING_TYPE: return value.Get<std::string>();
-        case tinygltf::BINARY_TYPE: return nullptr;  // not produced by JSON parsing
-        case tinygltf::ARRAY_TYPE: {
-            nlohmann::json out = nlohmann::json::array();
-            for (std::size_t i = 0; i < value.ArrayLen(); ++i) out.push_back(toJson(value.Get(static_cast<int>(i))));
-            return out;
-        }
-        case tinygltf::OBJECT_TYPE: {
-            nlohmann::json out = nlohmann::json::object();
-            for (const std::string& key : value.Keys()) out[key] = toJson(value.Get(key));
-            return out;
-        }
-    }
-    return nullptr;
-}
-
-inline tinygltf::Value toValue(const nlohmann::json& j) {
-    if (j.is_boolean()) return tinygltf::Value(j.get<bool>());
-    if (j.is_number_integer()) {
-        const auto n = j.get<long long>();
-        if (n >= std::numeric_limits<int>::min() && n <= std::numeric_limits<int>::max())
-            return tinygltf::Value(static_cast<int>(n));
-        return tinygltf::Value(static_cast<double>(n));
-    }
-    if (j.is_number()) return tinygltf::Value(j.get<double>());
-    if (j.is_string()) return tinygltf::Value(j.get<std::string>());
-    if (j.is_array()) {
-        tinygltf::Value::Array out;
-        for (const nlohmann::json& e : j) out.push_back(toValue(e));
-        return tinygltf::Value(std::move(out));
-    }
-    if (j.is_object()) {
-        tinygltf::Value::Object out;
-        for (auto it = j.begin(); it != j.end(); ++it) out[it.key()] = toValue(it.value());
-        return tinygltf::Value(std::move(out));
-    }
-    return tinygltf::Value();
-}
+nlohmann::json toJson(const tinygltf::Value& value);
+tinygltf::Value toValue(const nlohmann::json& j);
 
 // FNV-1a, 64 bits: tells a buffer view's bytes at save time from the file's (Scene::fileBufferViews).
 inline std::uint64_t hashBytes(const unsigned char* bytes, std::size_t count) {
@@ -85,66 +44,36 @@ inline std::uint64_t hashBytes(const unsigned char* bytes, std::size_t count) {
 }
 
 // Extras as JSON text ("" when absent).
-inline std::string extrasText(const tinygltf::Value& extras) {
-    return extras.Type() == tinygltf::NULL_TYPE ? std::string() : toJson(extras).dump();
-}
+std::string extrasText(const tinygltf::Value& extras);
 
 // The extensions except those Lit reads and writes itself (`known`), as a JSON object text.
-inline std::string extensionsText(const tinygltf::ExtensionMap& extensions, std::initializer_list<const char*> known = {}) {
-    nlohmann::json out = nlohmann::json::object();
-    for (const auto& [name, value] : extensions) {
-        bool isKnown = false;
-        for (const char* k : known) isKnown |= name == k;
-        if (!isKnown) out[name] = toJson(value);
-    }
-    return out.empty() ? std::string() : out.dump();
-}
+std::string extensionsText(const tinygltf::ExtensionMap& extensions, std::initializer_list<const char*> known = {});
 
-inline KeptGltf keep(const tinygltf::Value& extras, const tinygltf::ExtensionMap& extensions,
-                     std::initializer_list<const char*> known = {}) {
-    return KeptGltf{extrasText(extras), extensionsText(extensions, known)};
-}
+KeptGltf keep(const tinygltf::Value& extras, const tinygltf::ExtensionMap& extensions,
+              std::initializer_list<const char*> known = {});
 
 // Writes kept extras/extensions back; extensions already present (Lit's own) win.
-inline void restore(const KeptGltf& kept, tinygltf::Value& extras, tinygltf::ExtensionMap& extensions) {
-    if (!kept.extras.empty()) {
-        const nlohmann::json j = nlohmann::json::parse(kept.extras, nullptr, false);
-        if (!j.is_discarded()) {
-            if (extras.IsObject() && j.is_object()) {  // Lit's own keys (litCastsShadow) stay
-                tinygltf::Value::Object merged = extras.Get<tinygltf::Value::Object>();
-                for (auto it = j.begin(); it != j.end(); ++it) merged.emplace(it.key(), toValue(it.value()));
-                extras = tinygltf::Value(std::move(merged));
-            } else {
-                extras = toValue(j);
-            }
-        }
-    }
-    if (!kept.extensions.empty()) {
-        const nlohmann::json j = nlohmann::json::parse(kept.extensions, nullptr, false);
-        if (j.is_object())
-            for (auto it = j.begin(); it != j.end(); ++it) extensions.emplace(it.key(), toValue(it.value()));
-    }
-}
+void restore(const KeptGltf& kept, tinygltf::Value& extras, tinygltf::ExtensionMap& extensions);
 
 // A material's optional fields (JSON pointers inside the material object) whose presence a save
 // keeps: the loader notes those the file wrote (Material::fileFields), the writer writes them
 // again even where they hold glTF's default, which tinygltf leaves out.
-inline constexpr const char* kMaterialFields[] = {
-    "alphaCutoff", "alphaMode", "doubleSided", "emissiveFactor",
-    "pbrMetallicRoughness/baseColorFactor", "pbrMetallicRoughness/metallicFactor",
-    "pbrMetallicRoughness/roughnessFactor", "pbrMetallicRoughness/baseColorTexture/texCoord",
-    "pbrMetallicRoughness/metallicRoughnessTexture/texCoord", "normalTexture/texCoord", "normalTexture/scale",
-    "emissiveTexture/texCoord", "occlusionTexture/texCoord", "occlusionTexture/strength"};
+inline constexpr const char* kMaterialFields[] = {"alphaCutoff",
+                                                  "alphaMode",
+                                                  "doubleSided",
+                                                  "emissiveFactor",
+                                                  "pbrMetallicRoughness/baseColorFactor",
+                                                  "pbrMetallicRoughness/metallicFactor",
+                                                  "pbrMetallicRoughness/roughnessFactor",
+                                                  "pbrMetallicRoughness/baseColorTexture/texCoord",
+                                                  "pbrMetallicRoughness/metallicRoughnessTexture/texCoord",
+                                                  "normalTexture/texCoord",
+                                                  "normalTexture/scale",
+                                                  "emissiveTexture/texCoord",
+                                                  "occlusionTexture/texCoord",
+                                                  "occlusionTexture/strength"};
 
 // Extras and extensions of a JSON object the parser does not read (sparse accessor parts).
-inline KeptGltf keepFromJson(const nlohmann::json& object) {
-    KeptGltf out;
-    if (!object.is_object()) return out;
-    if (const auto extras = object.find("extras"); extras != object.end()) out.extras = extras->dump();
-    if (const auto extensions = object.find("extensions"); extensions != object.end() && extensions->is_object() &&
-                                                             !extensions->empty())
-        out.extensions = extensions->dump();
-    return out;
-}
+KeptGltf keepFromJson(const nlohmann::json& object);
 
 }  // namespace lit::gltfkeep

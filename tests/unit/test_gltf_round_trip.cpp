@@ -1,16 +1,16 @@
-// Lossless glTF round trip of what Lit does not draw (issue #13): a file with skins, morph targets
-// (one sparse), TEXCOORD_1, COLOR_0 of 3 bytes per vertex, JOINTS_0/WEIGHTS_0, a custom
-// attribute, a primitive without normals (the loader unwelds it), a LINES primitive, a texture
-// read through TEXCOORD_1, an orthographic camera and a morph weight animation is loaded, saved
-// and read back with tinygltf; every value is compared with the source's, corner by corner (so
-// unwelding and index types do not matter, values do). Each test takes a few milliseconds.
+// Lossless glTF round trip of what Lit does not draw: a file with skins, morph targets (one
+// sparse), TEXCOORD_1, COLOR_0 of 3 bytes per vertex, JOINTS_0/WEIGHTS_0, a custom attribute, a
+// primitive without normals (the loader unwelds it), a LINES primitive, a texture read through
+// TEXCOORD_1, an orthographic camera and a morph weight animation is loaded, saved and read back
+// with tinygltf; every value is compared with the source's, corner by corner (so unwelding and
+// index types do not matter, values do). Each test takes a few milliseconds. The test files are
+// fixtures in tests/data/gltf/round_trip, each described where it is copied for a test.
 
 #include <gtest/gtest.h>
 
 #include "TempDir.h"
 
 #include "Log.h"
-#include "image/ImageIO.h"
 #include "io/GltfFile.h"
 #include "scene/GltfLoader.h"
 #include "scene/GltfWriter.h"
@@ -21,8 +21,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
-#include <stdexcept>
 #include <fstream>
+#include <stdexcept>
 
 namespace lit {
 namespace {
@@ -38,163 +38,25 @@ struct TempDir : lit::testing::TempDir {
     TempDir() : lit::testing::TempDir("lit_gltf_round_trip") {}
 };
 
-// Builds a .gltf and its .bin: each array becomes a buffer view and an accessor.
-class GltfBuilder {
-public:
-    template <typename T>
-    int add(const std::vector<T>& values, int componentType, const char* type, std::size_t count, bool normalized = false,
-            std::size_t stride = 0) {
-        const std::size_t elementSize = values.size() * sizeof(T) / count;
-        const std::size_t step = stride ? stride : elementSize;
-        bin_.resize((bin_.size() + 3) & ~std::size_t(3), 0);
-        const std::size_t offset = bin_.size();
-        bin_.resize(offset + step * count, 0);
-        for (std::size_t i = 0; i < count; ++i)
-            std::memcpy(bin_.data() + offset + i * step, reinterpret_cast<const std::uint8_t*>(values.data()) + i * elementSize,
-                        elementSize);
-        json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", step * count}};
-        if (stride) view["byteStride"] = stride;
-        doc["bufferViews"].push_back(view);
-        json accessor = {{"bufferView", doc["bufferViews"].size() - 1},
-                         {"componentType", componentType},
-                         {"type", type},
-                         {"count", count}};
-        if (normalized) accessor["normalized"] = true;
-        doc["accessors"].push_back(accessor);
-        return static_cast<int>(doc["accessors"].size()) - 1;
-    }
-    // An accessor of `count` zero elements with `values` at `indices` (sparse), float components.
-    int addSparse(std::size_t count, const char* type, const std::vector<std::uint16_t>& indices, const std::vector<float>& values) {
-        const int indexAccessor = add(indices, 5123, "SCALAR", indices.size());
-        const int valueAccessor = add(values, 5126, type, indices.size());
-        const json indexView = doc["accessors"][indexAccessor]["bufferView"];
-        const json valueView = doc["accessors"][valueAccessor]["bufferView"];
-        doc["accessors"].erase(doc["accessors"].begin() + indexAccessor, doc["accessors"].end());
-        doc["accessors"].push_back({{"componentType", 5126},
-                                    {"type", type},
-                                    {"count", count},
-                                    {"sparse",
-                                     {{"count", indices.size()},
-                                      {"indices", {{"bufferView", indexView}, {"componentType", 5123}}},
-                                      {"values", {{"bufferView", valueView}}}}}});
-        return static_cast<int>(doc["accessors"].size()) - 1;
-    }
-    void write(const fs::path& file) {
-        doc["asset"] = {{"version", "2.0"}};
-        doc["buffers"] = json::array({{{"uri", file.stem().string() + ".bin"}, {"byteLength", bin_.size()}}});
-        std::ofstream(file) << doc.dump(1);
-        std::ofstream(file.parent_path() / (file.stem().string() + ".bin"), std::ios::binary)
-            .write(reinterpret_cast<const char*>(bin_.data()), static_cast<std::streamsize>(bin_.size()));
-    }
-    json doc = json::object();
+fs::path fixtureDir() { return fs::path(LIT_SOURCE_DIR) / "tests" / "data" / "gltf" / "round_trip"; }
 
-private:
-    std::vector<std::uint8_t> bin_;
-};
-
-// The test file, in `dir`: see the comment at the top.
-fs::path writeRiggedFile(const TempDir& dir) {
-    GltfBuilder b;
-    json& doc = b.doc;
-    constexpr int kFloat = 5126, kUnsignedByte = 5121, kUnsignedShort = 5123;
-    // A quad of 4 vertices, 2 triangles.
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, kFloat, "VEC3", 4);
-    doc["accessors"][position]["min"] = json::array({0, 0, 0});
-    doc["accessors"][position]["max"] = json::array({1, 1, 0});
-    const int normal = b.add(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, kFloat, "VEC3", 4);
-    const int uv0 = b.add(std::vector<float>{0, 0, 1, 0, 1, 1, 0, 1}, kFloat, "VEC2", 4);
-    const int uv1 = b.add(std::vector<float>{0.5f, 0.25f, 0.75f, 0.25f, 0.75f, 0.5f, 0.5f, 0.5f}, kFloat, "VEC2", 4);
-    // 3 bytes a vertex, stored 4 apart as glTF requires; the writer must pad it the same way.
-    const int colour = b.add(std::vector<std::uint8_t>{255, 0, 0, 0, 255, 0, 0, 0, 255, 17, 34, 51}, kUnsignedByte, "VEC3", 4,
-                             true, 4);
-    const int joints = b.add(std::vector<std::uint8_t>{0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, kUnsignedByte, "VEC4", 4);
-    const int weights = b.add(std::vector<float>{0.75f, 0.25f, 0, 0, 0.5f, 0.5f, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, kFloat, "VEC4", 4);
-    const int temperature = b.add(std::vector<float>{20.5f, 21.0f, 22.25f, 19.0f}, kFloat, "SCALAR", 4);
-    const int indices = b.add(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3}, kUnsignedShort, "SCALAR", 6);
-    const int targetPosition = b.add(std::vector<float>{0, 0, 0.5f, 0, 0, 0.25f, 0, 0, 0, 0, 0, 0.125f}, kFloat, "VEC3", 4);
-    doc["accessors"][targetPosition]["min"] = json::array({0, 0, 0});
-    doc["accessors"][targetPosition]["max"] = json::array({0, 0, 0.5f});
-    const int targetNormal = b.add(std::vector<float>{0.1f, 0, 0, 0, 0.1f, 0, 0, 0, 0, 0, 0, 0}, kFloat, "VEC3", 4);
-    const int sparseTarget = b.addSparse(4, "VEC3", {1, 3}, {0, 0.5f, 0, 0.25f, 0, 0});
-    doc["accessors"][sparseTarget]["min"] = json::array({0, 0, 0});
-    doc["accessors"][sparseTarget]["max"] = json::array({0.25f, 0.5f, 0});
-    json quad = json::object();
-    quad["attributes"] = {{"POSITION", position},   {"NORMAL", normal},     {"TEXCOORD_0", uv0},
-                          {"TEXCOORD_1", uv1},      {"COLOR_0", colour},    {"JOINTS_0", joints},
-                          {"WEIGHTS_0", weights},   {"_TEMPERATURE", temperature}};
-    quad["indices"] = indices;
-    quad["material"] = 0;
-    quad["targets"] = json::array({json{{"POSITION", targetPosition}, {"NORMAL", targetNormal}},
-                                   json{{"POSITION", sparseTarget}}});
-    json quadMesh = json::object();
-    quadMesh["name"] = "skinned quad";
-    quadMesh["weights"] = {0.25, 0.5};
-    quadMesh["extras"] = json{{"targetNames", {"bulge", "lift"}}};
-    quadMesh["primitives"] = json::array({quad});
-    doc["meshes"].push_back(quadMesh);
-    // No normals: the loader unwelds it into 6 vertices; the colours must follow their corners.
-    const int flatPosition = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 0, -1, 0, 0, -1}, kFloat, "VEC3", 4);
-    doc["accessors"][flatPosition]["min"] = json::array({0, 0, -1});
-    doc["accessors"][flatPosition]["max"] = json::array({1, 0, 0});
-    const int flatColour = b.add(std::vector<float>{1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 0.5f, 0.25f, 0.5f, 0.75f, 1}, kFloat, "VEC4", 4);
-    const int flatIndices = b.add(std::vector<std::uint8_t>{0, 1, 2, 0, 2, 3}, kUnsignedByte, "SCALAR", 6);
-    json flat = json::object();
-    flat["attributes"] = {{"POSITION", flatPosition}, {"COLOR_0", flatColour}};
-    flat["indices"] = flatIndices;
-    doc["meshes"].push_back(json{{"name", "flat"}, {"primitives", json::array({flat})}});
-    // LINES: Lit does not draw it, the save keeps it.
-    const int linePosition = b.add(std::vector<float>{0, 0, 0, 0, 2, 0, 1, 2, 0}, kFloat, "VEC3", 3);
-    doc["accessors"][linePosition]["min"] = json::array({0, 0, 0});
-    doc["accessors"][linePosition]["max"] = json::array({1, 2, 0});
-    const int lineIndices = b.add(std::vector<std::uint8_t>{0, 1, 1, 2}, kUnsignedByte, "SCALAR", 4);
-    json wire = json::object();
-    wire["attributes"] = {{"POSITION", linePosition}};
-    wire["indices"] = lineIndices;
-    wire["mode"] = 1;
-    doc["meshes"].push_back(json{{"name", "wire"}, {"primitives", json::array({wire})}});
-
-    // Skin: armature → hip → knee; the quad hangs off the armature.
-    const glm::mat4 hipInverse = glm::mat4(1.0f);
-    glm::mat4 kneeInverse = glm::mat4(1.0f);
-    kneeInverse[3] = glm::vec4(0.0f, -0.5f, 0.0f, 1.0f);
-    std::vector<float> matrices(32);
-    std::memcpy(matrices.data(), &hipInverse[0][0], 64);
-    std::memcpy(matrices.data() + 16, &kneeInverse[0][0], 64);
-    const int inverseBind = b.add(matrices, kFloat, "MAT4", 2);
-    doc["nodes"] = json::parse(R"([
-        {"name": "armature", "children": [1, 3]},
-        {"name": "hip", "children": [2], "translation": [0, 0.25, 0]},
-        {"name": "knee", "translation": [0, 0.5, 0]},
-        {"name": "body", "mesh": 0, "skin": 0, "weights": [1.0, 0.0]},
-        {"name": "floor", "mesh": 1},
-        {"name": "wire", "mesh": 2},
-        {"name": "top view", "camera": 0, "translation": [0, 5, 0]}])");
-    doc["skins"] = json::parse(R"([{"name": "rig", "joints": [1, 2], "skeleton": 1}])");
-    doc["skins"][0]["inverseBindMatrices"] = inverseBind;
-    doc["scenes"] = json::parse(R"([{"nodes": [0, 4, 5, 6]}])");
-    doc["scene"] = 0;
-    doc["cameras"] = json::parse(
-        R"([{"name": "plan", "type": "orthographic", "orthographic": {"xmag": 2.0, "ymag": 1.5, "znear": 0.125, "zfar": 50.0}}])");
-    // A texture read through TEXCOORD_1 (occlusion), with a transform Lit does not read.
-    const std::vector<std::uint8_t> pixels = {255, 255, 255, 255, 128, 128, 128, 255, 64, 64, 64, 255, 0, 0, 0, 255};
-    writePng(dir / "ao.png", 2, 2, pixels, false);
-    doc["images"] = json::parse(R"([{"uri": "ao.png"}])");
-    doc["textures"] = json::parse(R"([{"source": 0}])");
-    doc["materials"] = json::parse(R"([{"name": "baked", "occlusionTexture": {"index": 0, "texCoord": 1,
-        "extensions": {"KHR_texture_transform": {"scale": [0.5, 0.5]}}}}])");
-    doc["extensionsUsed"] = json::parse(R"(["KHR_texture_transform"])");
-    // Morph weights animated over a second.
-    const int times = b.add(std::vector<float>{0, 1}, kFloat, "SCALAR", 2);
-    doc["accessors"][times]["min"] = json::array({0});
-    doc["accessors"][times]["max"] = json::array({1});
-    const int values = b.add(std::vector<float>{0, 0, 1, 0.5f}, kFloat, "SCALAR", 4);
-    doc["animations"] = json::parse(R"([{"name": "breathe", "samplers": [{}],
-        "channels": [{"sampler": 0, "target": {"node": 3, "path": "weights"}}]}])");
-    doc["animations"][0]["samplers"][0] = {{"input", times}, {"output", values}};
-    const fs::path file = dir / "rigged.gltf";
-    b.write(file);
-    return file;
+// Copies fixture `name` and the buffers and image files it names into `dir`, where a test may
+// change it and saves go beside it (so relative image URIs stay as the file has them); returns
+// the copy.
+fs::path copyFixture(const TempDir& dir, const std::string& name) {
+    const json doc = json::parse(lit::testing::readText(fixtureDir() / name));
+    std::vector<std::string> files = {name};
+    for (const char* array : {"buffers", "images"})
+        for (const json& object : doc.value(array, json::array()))
+            if (const std::string uri = object.value("uri", ""); !uri.empty() && !uri.starts_with("data:"))
+                files.push_back(uri);
+    for (const std::string& file : files)
+        fs::copy_file(fixtureDir() / file, dir / file, fs::copy_options::overwrite_existing);
+    return dir / name;
 }
+
+// The test file of the comment at the top.
+fs::path riggedFile(const TempDir& dir) { return copyFixture(dir, "rigged.gltf"); }
 
 tinygltf::Model readModel(const fs::path& file) {
     tinygltf::Model model;
@@ -218,13 +80,40 @@ std::vector<double> element(const tinygltf::Model& model, int accessorIndex, std
             const unsigned char* q = p + c * size;
             double v = 0;
             switch (a.componentType) {
-                case 5120: { const auto x = static_cast<std::int8_t>(q[0]); v = a.normalized ? std::max(x / 127.0, -1.0) : x; break; }
-                case 5121: v = a.normalized ? q[0] / 255.0 : q[0]; break;
-                case 5122: { std::int16_t x; std::memcpy(&x, q, 2); v = a.normalized ? std::max(x / 32767.0, -1.0) : x; break; }
-                case 5123: { std::uint16_t x; std::memcpy(&x, q, 2); v = a.normalized ? x / 65535.0 : x; break; }
-                case 5125: { std::uint32_t x; std::memcpy(&x, q, 4); v = x; break; }
-                case 5126: { float x; std::memcpy(&x, q, 4); v = x; break; }
-                default: ADD_FAILURE() << "component type " << a.componentType << " not expected in this test";
+                case 5120: {
+                    const auto x = static_cast<std::int8_t>(q[0]);
+                    v = a.normalized ? std::max(x / 127.0, -1.0) : x;
+                    break;
+                }
+                case 5121:
+                    v = a.normalized ? q[0] / 255.0 : q[0];
+                    break;
+                case 5122: {
+                    std::int16_t x;
+                    std::memcpy(&x, q, 2);
+                    v = a.normalized ? std::max(x / 32767.0, -1.0) : x;
+                    break;
+                }
+                case 5123: {
+                    std::uint16_t x;
+                    std::memcpy(&x, q, 2);
+                    v = a.normalized ? x / 65535.0 : x;
+                    break;
+                }
+                case 5125: {
+                    std::uint32_t x;
+                    std::memcpy(&x, q, 4);
+                    v = x;
+                    break;
+                }
+                case 5126: {
+                    float x;
+                    std::memcpy(&x, q, 4);
+                    v = x;
+                    break;
+                }
+                default:
+                    ADD_FAILURE() << "component type " << a.componentType << " not expected in this test";
             }
             out.push_back(v);
         }
@@ -233,17 +122,21 @@ std::vector<double> element(const tinygltf::Model& model, int accessorIndex, std
     const auto at = [&](int viewIndex, std::size_t byteOffset, std::size_t index, std::size_t elementSize) {
         const tinygltf::BufferView& view = model.bufferViews.at(static_cast<std::size_t>(viewIndex));
         const std::size_t stride = view.byteStride ? view.byteStride : elementSize;
-        return model.buffers.at(static_cast<std::size_t>(view.buffer)).data.data() + view.byteOffset + byteOffset + index * stride;
+        return model.buffers.at(static_cast<std::size_t>(view.buffer)).data.data() + view.byteOffset + byteOffset +
+               index * stride;
     };
     const std::size_t elementSize = static_cast<std::size_t>(components * size);
     if (a.sparse.isSparse) {
         for (int s = 0; s < a.sparse.count; ++s) {
-            const int indexSize = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.sparse.indices.componentType));
+            const int indexSize =
+                tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.sparse.indices.componentType));
             // tinygltf says -1 for an unknown type (GCC 12 at -O3 saw that -1 reach memcpy as a size).
             if (indexSize < 1 || indexSize > static_cast<int>(sizeof(std::uint32_t)))
-                throw std::runtime_error("sparse indices of component type " + std::to_string(a.sparse.indices.componentType));
-            const unsigned char* p = at(a.sparse.indices.bufferView, static_cast<std::size_t>(a.sparse.indices.byteOffset),
-                                        static_cast<std::size_t>(s), static_cast<std::size_t>(indexSize));
+                throw std::runtime_error("sparse indices of component type " +
+                                         std::to_string(a.sparse.indices.componentType));
+            const unsigned char* p =
+                at(a.sparse.indices.bufferView, static_cast<std::size_t>(a.sparse.indices.byteOffset),
+                   static_cast<std::size_t>(s), static_cast<std::size_t>(indexSize));
             std::uint32_t target = 0;
             std::memcpy(&target, p, static_cast<std::size_t>(indexSize));
             if (target == i)
@@ -257,14 +150,16 @@ std::vector<double> element(const tinygltf::Model& model, int accessorIndex, std
 
 // An attribute's value at every corner of the primitive (the index list expanded), so a
 // reindexed or unwelded primitive compares equal when every triangle has the same values.
-std::vector<std::vector<double>> corners(const tinygltf::Model& model, const tinygltf::Primitive& primitive, int accessor) {
+std::vector<std::vector<double>> corners(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                         int accessor) {
     std::vector<std::size_t> order;
     if (primitive.indices >= 0) {
         const tinygltf::Accessor& indices = model.accessors.at(static_cast<std::size_t>(primitive.indices));
         for (std::size_t i = 0; i < indices.count; ++i)
             order.push_back(static_cast<std::size_t>(element(model, primitive.indices, i)[0]));
     } else {
-        for (std::size_t i = 0; i < model.accessors.at(static_cast<std::size_t>(accessor)).count; ++i) order.push_back(i);
+        for (std::size_t i = 0; i < model.accessors.at(static_cast<std::size_t>(accessor)).count; ++i)
+            order.push_back(i);
     }
     std::vector<std::vector<double>> out;
     for (std::size_t i : order) out.push_back(element(model, accessor, i));
@@ -334,7 +229,8 @@ void expectSameUndrawnData(const tinygltf::Model& source, const tinygltf::Model&
         EXPECT_EQ(saved.skins[s].name, source.skins[s].name);
         EXPECT_EQ(nodeNames(saved, saved.skins[s].joints), nodeNames(source, source.skins[s].joints));
         EXPECT_EQ(nodeNames(saved, {saved.skins[s].skeleton}), nodeNames(source, {source.skins[s].skeleton}));
-        EXPECT_EQ(elements(saved, saved.skins[s].inverseBindMatrices), elements(source, source.skins[s].inverseBindMatrices));
+        EXPECT_EQ(elements(saved, saved.skins[s].inverseBindMatrices),
+                  elements(source, source.skins[s].inverseBindMatrices));
     }
     for (const tinygltf::Node& in : source.nodes) {
         const int index = nodeNamed(saved, in.name);
@@ -379,7 +275,7 @@ void expectSameUndrawnData(const tinygltf::Model& source, const tinygltf::Model&
 TEST(GltfRoundTrip, SkinsMorphTargetsAndExtraAttributesSurviveASave) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeRiggedFile(dir);
+    const fs::path source = riggedFile(dir);
     const Scene scene = loadGltf(source, log);
     ASSERT_EQ(scene.skins.size(), 1u);
     ASSERT_EQ(scene.meshes.at(2).otherPrimitives.size(), 1u);
@@ -393,7 +289,7 @@ TEST(GltfRoundTrip, SkinsMorphTargetsAndExtraAttributesSurviveASave) {
 TEST(GltfRoundTrip, AnEditedNodeKeepsItsSkinAndWeights) {
     TempDir dir;
     QuietLog log;
-    Scene scene = loadGltf(writeRiggedFile(dir), log);
+    Scene scene = loadGltf(riggedFile(dir), log);
     for (Node& node : scene.nodes)
         if (node.name == "body") node.translation.x += 2.0f;
     saveGltf(scene, dir / "moved.gltf");
@@ -409,7 +305,7 @@ TEST(GltfRoundTrip, AnEditedNodeKeepsItsSkinAndWeights) {
 TEST(GltfRoundTrip, RebuiltGeometryDropsOnlyItsOwnKeptAttributes) {
     TempDir dir;
     QuietLog log;
-    Scene scene = loadGltf(writeRiggedFile(dir), log);
+    Scene scene = loadGltf(riggedFile(dir), log);
     Primitive& quad = scene.meshes.at(0).primitives.at(0);
     quad.vertices.push_back(quad.vertices.back());
     saveGltf(scene, dir / "rebuilt.gltf");
@@ -425,7 +321,7 @@ TEST(GltfRoundTrip, RebuiltGeometryDropsOnlyItsOwnKeptAttributes) {
 TEST(GltfRoundTrip, ASkinLosingAJointIsLeftOut) {
     TempDir dir;
     QuietLog log;
-    Scene scene = loadGltf(writeRiggedFile(dir), log);
+    Scene scene = loadGltf(riggedFile(dir), log);
     scene.skins.at(0).joints.at(1) = -1;  // what editor/SceneEdits.cpp's delete leaves
     saveGltf(scene, dir / "no_skin.gltf");
     const tinygltf::Model saved = readModel(dir / "no_skin.gltf");
@@ -433,8 +329,8 @@ TEST(GltfRoundTrip, ASkinLosingAJointIsLeftOut) {
     EXPECT_EQ(saved.nodes.at(static_cast<std::size_t>(nodeNamed(saved, "body"))).skin, -1);
 }
 
-// ---- What else a save must keep (issue #13): several scenes, extras everywhere, embedded
-// images byte for byte, sparse accessors. Each test writes its own small file.
+// ---- What else a save must keep: several scenes, extras everywhere, embedded images byte for
+// byte, sparse accessors. Each test has its own small file.
 
 // A .gltf's JSON and its one .bin (the writer writes one buffer, "<stem>.bin").
 struct RawGltf {
@@ -456,31 +352,17 @@ std::vector<std::uint8_t> viewBytes(const RawGltf& raw, int view) {
     const json& v = raw.doc.at("bufferViews").at(static_cast<std::size_t>(view));
     const std::size_t offset = v.value("byteOffset", std::size_t(0)), length = v.at("byteLength").get<std::size_t>();
     if (offset + length > raw.bin.size()) throw std::runtime_error("buffer view past the buffer");
-    return {raw.bin.begin() + static_cast<std::ptrdiff_t>(offset), raw.bin.begin() + static_cast<std::ptrdiff_t>(offset + length)};
+    return {raw.bin.begin() + static_cast<std::ptrdiff_t>(offset),
+            raw.bin.begin() + static_cast<std::ptrdiff_t>(offset + length)};
 }
 
 // Three scenes; the file shows the second. "detail" shares node "lamp" with it, and has extras.
-fs::path writeScenesFile(const TempDir& dir) {
-    GltfBuilder b;
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 0, 1}, 5126, "VEC3", 3);
-    b.doc["accessors"][position]["min"] = json::array({0, 0, 0});
-    b.doc["accessors"][position]["max"] = json::array({1, 0, 1});
-    b.doc["meshes"] = json::parse(R"([{"name": "tri", "primitives": [{"attributes": {"POSITION": 0}}]}])");
-    b.doc["nodes"] = json::parse(R"([{"name": "ground", "mesh": 0}, {"name": "lamp", "translation": [0, 2, 0]},
-        {"name": "prop", "mesh": 0, "translation": [2, 0, 0]}])");
-    b.doc["scenes"] = json::parse(R"([{"name": "detail", "nodes": [1], "extras": {"variant": "close-up"}},
-        {"name": "main", "nodes": [0, 1, 2], "extras": {"shown": true}},
-        {"name": "props", "nodes": [2, 0]}])");
-    b.doc["scene"] = 1;
-    const fs::path file = dir / "scenes.gltf";
-    b.write(file);
-    return file;
-}
+fs::path scenesFile(const TempDir& dir) { return copyFixture(dir, "scenes.gltf"); }
 
 TEST(GltfRoundTrip, EverySceneOfTheFileSurvivesASave) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeScenesFile(dir);
+    const fs::path source = scenesFile(dir);
     const Scene scene = loadGltf(source, log);
     ASSERT_EQ(scene.otherScenes.size(), 2u);
     EXPECT_EQ(scene.sceneIndex, 1);
@@ -494,8 +376,10 @@ TEST(GltfRoundTrip, EverySceneOfTheFileSurvivesASave) {
         EXPECT_EQ(after["scenes"][i].value("name", ""), before["scenes"][i].value("name", ""));
         EXPECT_EQ(after["scenes"][i].value("extras", json()), before["scenes"][i].value("extras", json()));
         std::vector<std::string> namesBefore, namesAfter;
-        for (const json& n : before["scenes"][i]["nodes"]) namesBefore.push_back(before["nodes"][n.get<std::size_t>()]["name"]);
-        for (const json& n : after["scenes"][i]["nodes"]) namesAfter.push_back(after["nodes"][n.get<std::size_t>()]["name"]);
+        for (const json& n : before["scenes"][i]["nodes"])
+            namesBefore.push_back(before["nodes"][n.get<std::size_t>()]["name"]);
+        for (const json& n : after["scenes"][i]["nodes"])
+            namesAfter.push_back(after["nodes"][n.get<std::size_t>()]["name"]);
         EXPECT_EQ(namesAfter, namesBefore);
     }
     // Deleting a node another scene lists drops it from that scene only.
@@ -513,7 +397,8 @@ std::vector<std::vector<std::string>> sceneNodeNames(const json& doc) {
     std::vector<std::vector<std::string>> out;
     for (const json& scene : doc.at("scenes")) {
         out.emplace_back();
-        for (const json& n : scene.value("nodes", json::array())) out.back().push_back(doc["nodes"][n.get<std::size_t>()]["name"]);
+        for (const json& n : scene.value("nodes", json::array()))
+            out.back().push_back(doc["nodes"][n.get<std::size_t>()]["name"]);
     }
     return out;
 }
@@ -535,7 +420,7 @@ json jsonOf(const fs::path& file) {
 TEST(GltfRoundTrip, OtherScenesKeepTheirNodesOutsideTheShownOne) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeScenesFile(dir);
+    const fs::path source = scenesFile(dir);
     json doc = json::parse(lit::testing::readText(source));
     doc["scene"] = 0;  // show "detail": only "lamp" is drawn
     std::ofstream(source) << doc.dump();
@@ -557,51 +442,9 @@ TEST(GltfRoundTrip, OtherScenesKeepTheirNodesOutsideTheShownOne) {
 // A file whose second scene ("stage", not shown) holds a light, a camera, a skinned mesh with its
 // joint and an animated node, and a node in no scene at all; the shown scene has "ground" (shared
 // with "stage") and a sun whose light comes first in the file's lights.
-fs::path writeHiddenNodesFile(const TempDir& dir) {
-    GltfBuilder b;
-    json& doc = b.doc;
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 0, 1}, 5126, "VEC3", 3);
-    doc["accessors"][position]["min"] = json::array({0, 0, 0});
-    doc["accessors"][position]["max"] = json::array({1, 0, 1});
-    const int joints = b.add(std::vector<std::uint8_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, 5121, "VEC4", 3);
-    const int weights = b.add(std::vector<float>{1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, 5126, "VEC4", 3);
-    doc["meshes"] = json::array({{{"name", "tri"}, {"primitives", json::array({{{"attributes", {{"POSITION", position}}}}})}},
-                                 {{"name", "skinned"},
-                                  {"primitives", json::array({{{"attributes",
-                                                                {{"POSITION", position}, {"JOINTS_0", joints}, {"WEIGHTS_0", weights}}}}})}}});
-    doc["nodes"] = json::parse(R"([
-        {"name": "ground", "mesh": 0},
-        {"name": "stage", "children": [2, 3, 4], "translation": [0, 1, 0]},
-        {"name": "spot", "extensions": {"KHR_lights_punctual": {"light": 1}}, "translation": [0, 3, 0.1]},
-        {"name": "cam", "camera": 0, "translation": [0, 2, 5]},
-        {"name": "prop", "mesh": 1, "skin": 0, "children": [5]},
-        {"name": "bone", "translation": [0, 0.5, 0]},
-        {"name": "loose", "translation": [9, 9, 9], "extras": {"why": "orphan"}},
-        {"name": "sun", "extensions": {"KHR_lights_punctual": {"light": 0}},
-         "rotation": [-0.13498486578464508, 0, 0, 0.990847647190094]}])");
-    doc["extensions"] = json::parse(R"({"KHR_lights_punctual": {"lights": [
-        {"name": "sun light", "type": "directional", "intensity": 3},
-        {"name": "spot lamp", "type": "spot", "intensity": 50, "spot": {"outerConeAngle": 0.39269908169872414}}]}})");
-    doc["extensionsUsed"] = json::array({"KHR_lights_punctual"});
-    doc["extensionsRequired"] = json::array({"KHR_lights_punctual"});  // as Blender 3.4 writes it
-    doc["cameras"] = json::parse(R"([{"name": "stage cam", "type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}])");
-    doc["skins"] = json::parse(R"([{"name": "prop rig", "joints": [5], "skeleton": 5}])");
-    doc["scenes"] = json::parse(R"([{"name": "main", "nodes": [0, 7]}, {"name": "stage", "nodes": [1, 0]}])");
-    doc["scene"] = 0;
-    const int times = b.add(std::vector<float>{0, 1}, 5126, "SCALAR", 2);
-    doc["accessors"][times]["min"] = json::array({0});
-    doc["accessors"][times]["max"] = json::array({1});
-    const int moves = b.add(std::vector<float>{0, 0, 0, 0, 1, 0}, 5126, "VEC3", 2);
-    doc["animations"] = json::array({{{"name", "sway"},
-                                      {"samplers", json::array({{{"input", times}, {"output", moves}}})},
-                                      {"channels", json::array({{{"sampler", 0}, {"target", {{"node", 4}, {"path", "translation"}}}},
-                                                                {{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})}}});
-    const fs::path file = dir / "hidden.gltf";
-    b.write(file);
-    return file;
-}
+fs::path hiddenNodesFile(const TempDir& dir) { return copyFixture(dir, "hidden.gltf"); }
 
-// Everything writeHiddenNodesFile put outside the shown scene, found by name in a saved file.
+// Everything hidden.gltf has outside the shown scene, found by name in a saved file.
 void expectHiddenNodes(const json& doc) {
     const auto node = [&](const std::string& name) -> const json& {
         for (const json& n : doc.at("nodes"))
@@ -619,7 +462,8 @@ void expectHiddenNodes(const json& doc) {
     EXPECT_EQ(node("stage")["translation"], json::array({0.0, 1.0, 0.0}));
     EXPECT_EQ(names(node("prop")["children"]), (std::vector<std::string>{"bone"}));
     const json& lights = doc["extensions"]["KHR_lights_punctual"]["lights"];
-    EXPECT_EQ(lights[node("spot")["extensions"]["KHR_lights_punctual"]["light"].get<std::size_t>()]["name"], "spot lamp");
+    EXPECT_EQ(lights[node("spot")["extensions"]["KHR_lights_punctual"]["light"].get<std::size_t>()]["name"],
+              "spot lamp");
     EXPECT_EQ(doc["cameras"][node("cam")["camera"].get<std::size_t>()]["name"], "stage cam");
     EXPECT_EQ(doc["meshes"][node("prop")["mesh"].get<std::size_t>()]["name"], "skinned");
     const json& skin = doc["skins"][node("prop").at("skin").get<std::size_t>()];
@@ -628,7 +472,8 @@ void expectHiddenNodes(const json& doc) {
     EXPECT_EQ(node("loose")["extras"], json({{"why", "orphan"}}));
     EXPECT_EQ(node("loose")["translation"], json::array({9.0, 9.0, 9.0}));
     std::vector<std::string> targets;
-    for (const json& c : doc["animations"].at(0)["channels"]) targets.push_back(doc["nodes"][c["target"]["node"].get<std::size_t>()]["name"]);
+    for (const json& c : doc["animations"].at(0)["channels"])
+        targets.push_back(doc["nodes"][c["target"]["node"].get<std::size_t>()]["name"]);
     std::sort(targets.begin(), targets.end());
     EXPECT_EQ(targets, (std::vector<std::string>{"ground", "prop"}));
     std::vector<std::vector<std::string>> scenes = sceneNodeNames(doc);
@@ -640,20 +485,20 @@ void expectHiddenNodes(const json& doc) {
     // written as they were.
     EXPECT_EQ(node("spot")["translation"], json::array({0.0, 3.0, 0.1}));
     EXPECT_EQ(doc["cameras"][node("cam")["camera"].get<std::size_t>()]["perspective"]["yfov"], 0.7);
-    EXPECT_EQ(lights[node("spot")["extensions"]["KHR_lights_punctual"]["light"].get<std::size_t>()]["spot"]["outerConeAngle"],
-              0.39269908169872414);
+    EXPECT_EQ(
+        lights[node("spot")["extensions"]["KHR_lights_punctual"]["light"].get<std::size_t>()]["spot"]["outerConeAngle"],
+        0.39269908169872414);
     EXPECT_EQ(doc.value("extensionsRequired", json()), json::array({"KHR_lights_punctual"}));
     EXPECT_EQ(node("sun")["rotation"], json::array({-0.13498486578464508, 0.0, 0.0, 0.990847647190094}));
 }
 
 // Nodes in none of the shown scene's trees are kept (not drawn) and saved with their subtrees,
 // lights, cameras, meshes, skins and animation channels, through .gltf and .glb, unedited and
-// after an edit of a shown node. Fails when the loader drops them (before issue #13's fourth
-// session). A few milliseconds.
+// after an edit of a shown node. Fails when the loader drops them. A few milliseconds.
 TEST(GltfRoundTrip, NodesOutsideTheShownSceneSurviveASave) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeHiddenNodesFile(dir);
+    const fs::path source = hiddenNodesFile(dir);
     Scene scene = loadGltf(source, log);
     ASSERT_EQ(scene.nodes.size(), 2u);  // ground and sun: only they are drawn
     EXPECT_EQ(scene.keptNodes.size(), 6u);
@@ -671,7 +516,8 @@ TEST(GltfRoundTrip, NodesOutsideTheShownSceneSurviveASave) {
         expectHiddenNodes(jsonOf(again));
     }
     Scene edited = scene;
-    edited.nodes.at(static_cast<std::size_t>(edited.roots.at(0))).translation = glm::vec3(4.0f, 0.0f, 0.0f);  // "ground"
+    edited.nodes.at(static_cast<std::size_t>(edited.roots.at(0))).translation =
+        glm::vec3(4.0f, 0.0f, 0.0f);  // "ground"
     saveGltf(edited, dir / "edited.gltf");
     expectHiddenNodes(jsonOf(dir / "edited.gltf"));
 }
@@ -679,48 +525,12 @@ TEST(GltfRoundTrip, NodesOutsideTheShownSceneSurviveASave) {
 // Extras and extensions on every object the writer writes from the Scene: asset, samplers (and
 // their names), images, texture references, pbrMetallicRoughness, scenes, textures, materials,
 // animation samplers and channels.
-fs::path writeExtrasFile(const TempDir& dir) {
-    GltfBuilder b;
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 0, 1}, 5126, "VEC3", 3);
-    b.doc["accessors"][position]["min"] = json::array({0, 0, 0});
-    b.doc["accessors"][position]["max"] = json::array({1, 0, 1});
-    const int uv = b.add(std::vector<float>{0, 0, 1, 0, 0, 1}, 5126, "VEC2", 3);
-    b.doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", position}, {"TEXCOORD_0", uv}}}, {"material", 0}}})}}});
-    b.doc["nodes"] = json::parse(R"([{"name": "tri", "mesh": 0}])");
-    b.doc["scenes"] = json::parse(R"([{"nodes": [0], "extras": {"scene": 1}}])");
-    writePng(dir / "a.png", 1, 1, std::vector<std::uint8_t>{200, 100, 50, 255}, false);
-    b.doc["images"] = json::parse(R"([{"uri": "a.png", "name": "albedo", "extras": {"source": "scan"}}])");
-    b.doc["samplers"] = json::parse(R"([{"name": "tiling", "wrapS": 33648, "extras": {"why": "mirrored"},
-        "extensions": {"EXT_lit_test": {"anisotropy": 4}}}, {"wrapS": 33648}])");
-    b.doc["textures"] = json::parse(R"([{"source": 0, "sampler": 0, "extras": {"t": 0}}, {"source": 0, "sampler": 1}])");
-    b.doc["materials"] = json::parse(R"([{"name": "m", "extras": {"m": 1},
-        "pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "extras": {"slot": "base"}},
-                                 "metallicRoughnessTexture": {"index": 1},
-                                 "extras": {"pbr": true}},
-        "normalTexture": {"index": 1, "extras": {"slot": "normal"}}}])");
-    b.doc["extensionsUsed"] = json::parse(R"(["EXT_lit_test"])");
-    b.doc["extras"] = json::parse(R"({"file": "top"})");
-    const int times = b.add(std::vector<float>{0, 1}, 5126, "SCALAR", 2);
-    b.doc["accessors"][times]["min"] = json::array({0});
-    b.doc["accessors"][times]["max"] = json::array({1});
-    const int moves = b.add(std::vector<float>{0, 0, 0, 0, 1, 0}, 5126, "VEC3", 2);
-    b.doc["animations"] = json::array({{{"name", "hop"},
-                                        {"samplers", json::array({{{"input", times}, {"output", moves}, {"extras", {{"curve", "bezier"}}}}})},
-                                        {"channels", json::array({{{"sampler", 0},
-                                                                   {"target", {{"node", 0}, {"path", "translation"}}},
-                                                                   {"extras", {{"channel", 7}}}}})}}});
-    const fs::path source = dir / "extras.gltf";
-    b.write(source);
-    json before = json::parse(lit::testing::readText(source));
-    before["asset"]["extras"] = json::parse(R"({"exporter": "test", "take": 3})");  // after write() set asset
-    std::ofstream(source) << before.dump(1);
-    return source;
-}
+fs::path extrasFile(const TempDir& dir) { return copyFixture(dir, "extras.gltf"); }
 
 TEST(GltfRoundTrip, ExtrasOfEveryKindSurviveASave) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeExtrasFile(dir);
+    const fs::path source = extrasFile(dir);
     const json before = json::parse(lit::testing::readText(source));
     saveGltf(loadGltf(source, log), dir / "saved.gltf");
     const json after = json::parse(lit::testing::readText(dir / "saved.gltf"));
@@ -731,7 +541,8 @@ TEST(GltfRoundTrip, ExtrasOfEveryKindSurviveASave) {
     EXPECT_EQ(after["images"][0]["name"], before["images"][0]["name"]);
     EXPECT_EQ(after["textures"][0]["extras"], before["textures"][0]["extras"]);
     EXPECT_EQ(after["materials"][0]["extras"], before["materials"][0]["extras"]);
-    EXPECT_EQ(after["materials"][0]["pbrMetallicRoughness"]["extras"], before["materials"][0]["pbrMetallicRoughness"]["extras"]);
+    EXPECT_EQ(after["materials"][0]["pbrMetallicRoughness"]["extras"],
+              before["materials"][0]["pbrMetallicRoughness"]["extras"]);
     EXPECT_EQ(after["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extras"],
               before["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extras"]);
     EXPECT_EQ(after["materials"][0]["normalTexture"]["extras"], before["materials"][0]["normalTexture"]["extras"]);
@@ -752,69 +563,7 @@ TEST(GltfRoundTrip, ExtrasOfEveryKindSurviveASave) {
 // writes again: a kept attribute (TEXCOORD_1), a sparse morph target (its indices' and values'
 // views too), an image in a buffer view, an animation's input and output; and the buffer. The
 // animation sampler has extensions, and the asset a generator of another tool.
-fs::path writeDataExtrasFile(const TempDir& dir) {
-    GltfBuilder b;
-    json& doc = b.doc;
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 0, 1}, 5126, "VEC3", 3);
-    doc["accessors"][position]["min"] = json::array({0, 0, 0});
-    doc["accessors"][position]["max"] = json::array({1, 0, 1});
-    const int uv0 = b.add(std::vector<float>{0, 0, 1, 0, 0, 1}, 5126, "VEC2", 3);
-    const int uv1 = b.add(std::vector<float>{0, 0, 1, 0, 0, 1}, 5126, "VEC2", 3);
-    doc["accessors"][uv1]["name"] = "second uv";
-    doc["accessors"][uv1]["extras"] = {{"accessor", "uv1"}};
-    doc["accessors"][uv1]["extensions"] = {{"EXT_lit_test", {{"a", 1}}}};
-    json& uvView = doc["bufferViews"][doc["accessors"][uv1]["bufferView"].get<std::size_t>()];
-    uvView["name"] = "uv1 view";
-    uvView["extras"] = {{"view", "uv1"}};
-    uvView["extensions"] = {{"EXT_lit_test", {{"v", 2}}}};
-    const int target = b.addSparse(3, "VEC3", {1}, {0, 0.5f, 0});
-    doc["accessors"][target]["min"] = json::array({0, 0, 0});
-    doc["accessors"][target]["max"] = json::array({0, 0.5f, 0});
-    doc["accessors"][target]["extras"] = {{"accessor", "sparse"}};
-    json& sparse = doc["accessors"][target]["sparse"];
-    doc["bufferViews"][sparse["indices"]["bufferView"].get<std::size_t>()]["extras"] = {{"view", "sparse indices"}};
-    doc["bufferViews"][sparse["values"]["bufferView"].get<std::size_t>()]["extras"] = {{"view", "sparse values"}};
-    doc["meshes"] = json::array({{{"weights", {0.0}},
-                                  {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"TEXCOORD_0", uv0}, {"TEXCOORD_1", uv1}}},
-                                                               {"targets", json::array({{{"POSITION", target}}})},
-                                                               {"material", 0}}})}}});
-    doc["nodes"] = json::parse(R"([{"name": "tri", "mesh": 0}])");
-    doc["scenes"] = json::parse(R"([{"nodes": [0]}])");
-    const std::vector<std::uint8_t> png = encodePng(1, 1, std::vector<std::uint8_t>{200, 100, 50, 255}, false);
-    const int pngAccessor = b.add(png, 5121, "SCALAR", png.size());
-    const json pngView = doc["accessors"][pngAccessor]["bufferView"];
-    doc["accessors"].erase(static_cast<std::size_t>(pngAccessor));  // a view without an accessor
-    doc["bufferViews"][pngView.get<std::size_t>()]["name"] = "albedo bytes";
-    doc["bufferViews"][pngView.get<std::size_t>()]["extras"] = {{"view", "image"}};
-    doc["images"] = json::array({{{"bufferView", pngView}, {"mimeType", "image/png"}}});
-    doc["textures"] = json::parse(R"([{"source": 0}])");
-    doc["materials"] = json::parse(R"([{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": 1}}}])");
-    const int times = b.add(std::vector<float>{0, 1}, 5126, "SCALAR", 2);
-    doc["accessors"][times]["min"] = json::array({0});
-    doc["accessors"][times]["max"] = json::array({1});
-    doc["accessors"][times]["name"] = "hop times";
-    doc["accessors"][times]["extras"] = {{"accessor", "input"}};
-    doc["bufferViews"][doc["accessors"][times]["bufferView"].get<std::size_t>()]["extras"] = {{"view", "input"}};
-    const int moves = b.add(std::vector<float>{0, 0, 0, 0, 1, 0}, 5126, "VEC3", 2);
-    doc["accessors"][moves]["extras"] = {{"accessor", "output"}};
-    doc["accessors"][moves]["extensions"] = {{"EXT_lit_test", {{"o", 5}}}};
-    doc["bufferViews"][doc["accessors"][moves]["bufferView"].get<std::size_t>()]["extras"] = {{"view", "output"}};
-    doc["animations"] = json::array(
-        {{{"name", "hop"},
-          {"samplers", json::array({{{"input", times}, {"output", moves}, {"extras", {{"curve", "bezier"}}},
-                                     {"extensions", {{"EXT_lit_test", {{"handles", {0.25, 0.75}}}}}}}})},
-          {"channels", json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})}}});
-    doc["extensionsUsed"] = json::array({"EXT_lit_test"});
-    const fs::path source = dir / "data_extras.gltf";
-    b.write(source);
-    json written = json::parse(lit::testing::readText(source));
-    written["asset"]["generator"] = "Khronos glTF Blender I/O v3.4.50";
-    written["buffers"][0]["name"] = "everything";
-    written["buffers"][0]["extras"] = {{"buffer", 0}};
-    written["buffers"][0]["extensions"] = {{"EXT_lit_test", {{"b", 4}}}};
-    std::ofstream(source) << written.dump(1);
-    return source;
-}
+fs::path dataExtrasFile(const TempDir& dir) { return copyFixture(dir, "data_extras.gltf"); }
 
 // The accessor of attribute `name` of the first primitive, and its buffer view.
 const json& attributeAccessor(const json& doc, const std::string& name) {
@@ -848,10 +597,10 @@ void forEachSave(const TempDir& dir, const fs::path& source, Check check) {
     }
 }
 
-// Fails when a save drops them (before issue #13's fourth session). About 20 ms.
+// Fails when a save drops them. About 20 ms.
 TEST(GltfRoundTrip, AccessorBufferViewAndBufferExtrasSurviveASave) {
     TempDir dir;
-    forEachSave(dir, writeDataExtrasFile(dir), [](const json& before, const json& after) {
+    forEachSave(dir, dataExtrasFile(dir), [](const json& before, const json& after) {
         const json& uvBefore = attributeAccessor(before, "TEXCOORD_1");
         const json& uvAfter = attributeAccessor(after, "TEXCOORD_1");
         EXPECT_EQ(keptPart(uvAfter), keptPart(uvBefore));
@@ -862,7 +611,8 @@ TEST(GltfRoundTrip, AccessorBufferViewAndBufferExtrasSurviveASave) {
         EXPECT_EQ(keptPart(targetOf(after)), keptPart(targetOf(before)));
         for (const char* part : {"indices", "values"}) {
             SCOPED_TRACE(part);
-            EXPECT_EQ(keptPart(viewOf(after, targetOf(after)["sparse"][part])), keptPart(viewOf(before, targetOf(before)["sparse"][part])));
+            EXPECT_EQ(keptPart(viewOf(after, targetOf(after)["sparse"][part])),
+                      keptPart(viewOf(before, targetOf(before)["sparse"][part])));
         }
         EXPECT_EQ(keptPart(viewOf(after, after["images"][0])), keptPart(viewOf(before, before["images"][0])));
         for (const char* role : {"input", "output"}) {
@@ -879,28 +629,29 @@ TEST(GltfRoundTrip, AccessorBufferViewAndBufferExtrasSurviveASave) {
     });
 }
 
-// Fails when a save drops a sampler's extensions (before issue #13's fourth session). About 20 ms.
+// Fails when a save drops a sampler's extensions. About 20 ms.
 TEST(GltfRoundTrip, AnimationSamplerExtensionsSurviveASave) {
     TempDir dir;
-    forEachSave(dir, writeDataExtrasFile(dir), [](const json& before, const json& after) {
+    forEachSave(dir, dataExtrasFile(dir), [](const json& before, const json& after) {
         EXPECT_EQ(after["animations"][0]["samplers"][0].value("extensions", json()),
                   before["animations"][0]["samplers"][0]["extensions"]);
-        EXPECT_EQ(after["animations"][0]["samplers"][0].value("extras", json()), before["animations"][0]["samplers"][0]["extras"]);
+        EXPECT_EQ(after["animations"][0]["samplers"][0].value("extras", json()),
+                  before["animations"][0]["samplers"][0]["extras"]);
     });
 }
 
 // glTF's generator names the tool that wrote the file: a save writes "Lit", and keeps the
 // source's in the asset's extras (also after a second save, whose source says "Lit"). Fails when
-// the source's generator is lost (before issue #13's fourth session). About 20 ms.
+// the source's generator is lost. About 20 ms.
 TEST(GltfRoundTrip, TheSourceGeneratorIsKeptInTheAssetExtras) {
     TempDir dir;
-    forEachSave(dir, writeDataExtrasFile(dir), [](const json& before, const json& after) {
+    forEachSave(dir, dataExtrasFile(dir), [](const json& before, const json& after) {
         EXPECT_EQ(after["asset"]["generator"], "Lit");
         EXPECT_EQ(after["asset"].value("extras", json()).value("litSourceGenerator", ""), before["asset"]["generator"]);
     });
     // A file Lit made from scratch has no source generator to keep.
     QuietLog log;
-    Scene scene = loadGltf(writeDataExtrasFile(dir), log);
+    Scene scene = loadGltf(dataExtrasFile(dir), log);
     scene.generator.clear();
     saveGltf(scene, dir / "own.gltf");
     EXPECT_FALSE(jsonOf(dir / "own.gltf")["asset"].value("extras", json::object()).contains("litSourceGenerator"));
@@ -910,83 +661,15 @@ TEST(GltfRoundTrip, TheSourceGeneratorIsKeptInTheAssetExtras) {
 // byte-identical copy (the loader decodes it once), a KTX2 image Lit cannot decode (its texture
 // reads it through KHR_texture_basisu, with no fallback source) and a PNG in a data URI: a save
 // writes each one's bytes as the file had them, with its MIME type, and adds no stand-in image.
-std::uint32_t crc32(const std::uint8_t* p, std::size_t n, std::uint32_t crc = 0) {
-    crc = ~crc;
-    for (std::size_t i = 0; i < n; ++i) {
-        crc ^= p[i];
-        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-    }
-    return ~crc;
-}
-
-// A 2×1 RGB PNG of 16 bits per channel, zlib "stored" (uncompressed) data.
-std::vector<std::uint8_t> png16() {
-    std::vector<std::uint8_t> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    const auto chunk = [&](const char* type, const std::vector<std::uint8_t>& data) {
-        const std::uint32_t n = static_cast<std::uint32_t>(data.size());
-        for (int s = 24; s >= 0; s -= 8) out.push_back(static_cast<std::uint8_t>(n >> s));
-        std::vector<std::uint8_t> typed(type, type + 4);
-        typed.insert(typed.end(), data.begin(), data.end());
-        out.insert(out.end(), typed.begin(), typed.end());
-        const std::uint32_t c = crc32(typed.data(), typed.size());
-        for (int s = 24; s >= 0; s -= 8) out.push_back(static_cast<std::uint8_t>(c >> s));
-    };
-    chunk("IHDR", {0, 0, 0, 2, 0, 0, 0, 1, 16, 2, 0, 0, 0});
-    // One row: filter 0, then 2 pixels × RGB × 16 bits, low bytes that an 8-bit image drops.
-    const std::vector<std::uint8_t> row = {0, 0x12, 0x34, 0x56, 0x78, 0x9A, 0xBC, 0xFE, 0xDC, 0xBA, 0x98, 0x76, 0x54};
-    std::uint32_t a = 1, b2 = 0;
-    for (std::uint8_t v : row) {
-        a = (a + v) % 65521;
-        b2 = (b2 + a) % 65521;
-    }
-    const std::uint32_t adler = (b2 << 16) | a;
-    std::vector<std::uint8_t> z = {0x78, 0x01, 0x01, static_cast<std::uint8_t>(row.size()), 0,
-                                   static_cast<std::uint8_t>(~row.size()), 0xFF};
-    z.insert(z.end(), row.begin(), row.end());
-    for (int s = 24; s >= 0; s -= 8) z.push_back(static_cast<std::uint8_t>(adler >> s));
-    chunk("IDAT", z);
-    chunk("IEND", {});
-    return out;
-}
-
+// The fixture's .bin holds deep16.png (2x1 RGB, 16 bits per channel, uncompressed zlib data)
+// twice and compressed.ktx2 (a KTX2 header without a real payload); its data URI is small.png.
 TEST(GltfRoundTrip, EmbeddedImagesAreWrittenByteForByte) {
     TempDir dir;
     QuietLog log;
-    GltfBuilder b;
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 0, 1}, 5126, "VEC3", 3);
-    b.doc["accessors"][position]["min"] = json::array({0, 0, 0});
-    b.doc["accessors"][position]["max"] = json::array({1, 0, 1});
-    const int uv = b.add(std::vector<float>{0, 0, 1, 0, 0, 1}, 5126, "VEC2", 3);
-    const std::vector<std::uint8_t> deep = png16();
-    std::vector<std::uint8_t> ktx2 = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'};
-    for (int i = 0; i < 68; ++i) ktx2.push_back(static_cast<std::uint8_t>(i * 7));  // not a real payload
-    const int deepView = static_cast<int>(b.doc["bufferViews"].size());
-    b.add(deep, 5121, "SCALAR", deep.size());
-    const int copyView = static_cast<int>(b.doc["bufferViews"].size());
-    b.add(deep, 5121, "SCALAR", deep.size());
-    const int ktxView = static_cast<int>(b.doc["bufferViews"].size());
-    b.add(ktx2, 5121, "SCALAR", ktx2.size());
-    b.doc["accessors"].erase(b.doc["accessors"].begin() + 2, b.doc["accessors"].end());  // views only
-    std::vector<std::uint8_t> small;
-    writePng(dir / "small.png", 1, 1, std::vector<std::uint8_t>{10, 20, 30, 255}, false);
-    {
-        std::ifstream in(dir / "small.png", std::ios::binary);
-        small.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    b.doc["images"] = json::array({{{"bufferView", deepView}, {"mimeType", "image/png"}, {"name", "deep"}},
-                                   {{"bufferView", copyView}, {"mimeType", "image/png"}, {"name", "copy"}},
-                                   {{"bufferView", ktxView}, {"mimeType", "image/ktx2"}, {"name", "compressed"}},
-                                   {{"uri", "data:image/png;base64," + base64Encode(small)}, {"name", "inline"}}});
-    b.doc["textures"] = json::parse(R"([{"source": 0}, {"source": 1}, {"extensions": {"KHR_texture_basisu": {"source": 2}}},
-        {"source": 3}])");
-    b.doc["materials"] = json::parse(R"([{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
-        "metallicRoughnessTexture": {"index": 1}}, "emissiveTexture": {"index": 2}, "occlusionTexture": {"index": 3}}])");
-    b.doc["extensionsUsed"] = json::parse(R"(["KHR_texture_basisu"])");
-    b.doc["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", position}, {"TEXCOORD_0", uv}}}, {"material", 0}}})}}});
-    b.doc["nodes"] = json::parse(R"([{"mesh": 0}])");
-    b.doc["scenes"] = json::parse(R"([{"nodes": [0]}])");
-    const fs::path source = dir / "images.gltf";
-    b.write(source);
+    const std::vector<std::uint8_t> deep = lit::testing::readFile(fixtureDir() / "deep16.png");
+    const std::vector<std::uint8_t> ktx2 = lit::testing::readFile(fixtureDir() / "compressed.ktx2");
+    const std::vector<std::uint8_t> small = lit::testing::readFile(fixtureDir() / "small.png");
+    const fs::path source = copyFixture(dir, "images.gltf");
     const Scene scene = loadGltf(source, log);
     // stb_image read the 16-bit PNG (2×1, high bytes of the first pixel 0x12 0x56 0x9A), so the
     // file is a real one and the save must not write these 8-bit pixels instead.
@@ -1013,40 +696,12 @@ TEST(GltfRoundTrip, EmbeddedImagesAreWrittenByteForByte) {
 // Sparse accessors of data Lit keeps are written sparse again: a morph target without a base
 // (zeros, unsigned short indices) and a custom attribute whose base buffer view holds other
 // values where the sparse ones (unsigned byte indices) replace them.
-fs::path writeSparseFile(const TempDir& dir) {
-    GltfBuilder b;
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1}, 5126, "VEC3", 4);
-    b.doc["accessors"][position]["min"] = json::array({0, 0, 0});
-    b.doc["accessors"][position]["max"] = json::array({1, 0, 1});
-    const int normal = b.add(std::vector<float>{0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0}, 5126, "VEC3", 4);
-    const int indices = b.add(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3}, 5123, "SCALAR", 6);
-    const int target = b.addSparse(4, "VEC3", {1, 3}, {0, 0.5f, 0, 0, 0.25f, 0});
-    b.doc["accessors"][target]["min"] = json::array({0, 0, 0});
-    b.doc["accessors"][target]["max"] = json::array({0, 0.5f, 0});
-    // _WEIGHT: base 1 2 3 4, sparse element 2 = 9 (index as UNSIGNED_BYTE).
-    const int weightBase = b.add(std::vector<float>{1, 2, 3, 4}, 5126, "SCALAR", 4);
-    const int sparseIndex = b.add(std::vector<std::uint8_t>{2}, 5121, "SCALAR", 1);
-    const int sparseValue = b.add(std::vector<float>{9}, 5126, "SCALAR", 1);
-    json& weight = b.doc["accessors"][weightBase];
-    weight["sparse"] = {{"count", 1},
-                        {"indices", {{"bufferView", b.doc["accessors"][sparseIndex]["bufferView"]}, {"componentType", 5121}}},
-                        {"values", {{"bufferView", b.doc["accessors"][sparseValue]["bufferView"]}}}};
-    b.doc["meshes"] = json::array({{{"name", "sheet"},
-                                    {"weights", {0.5}},
-                                    {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"NORMAL", normal}, {"_WEIGHT", weightBase}}},
-                                                                 {"indices", indices},
-                                                                 {"targets", json::array({{{"POSITION", target}}})}}})}}});
-    b.doc["nodes"] = json::parse(R"([{"name": "sheet", "mesh": 0}])");
-    b.doc["scenes"] = json::parse(R"([{"nodes": [0]}])");
-    const fs::path file = dir / "sparse.gltf";
-    b.write(file);
-    return file;
-}
+fs::path sparseFile(const TempDir& dir) { return copyFixture(dir, "sparse.gltf"); }
 
 TEST(GltfRoundTrip, SparseAccessorsAreWrittenSparse) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeSparseFile(dir);
+    const fs::path source = sparseFile(dir);
     saveGltf(loadGltf(source, log), dir / "saved.gltf");
     const tinygltf::Model before = readModel(source);
     const tinygltf::Model after = readModel(dir / "saved.gltf");
@@ -1075,7 +730,7 @@ TEST(GltfRoundTrip, SparseAccessorsAreWrittenSparse) {
     EXPECT_EQ(corners(after, p, p.targets[0].at("POSITION")), corners(before, a, a.targets[0].at("POSITION")));
 }
 
-// A file laid out as Lit would not write it (issue #13's "not kept" list): the shown scene's
+// A file laid out as Lit would not write it: the shown scene's
 // nodes after a node of no scene, a node with a `matrix`, POSITION/NORMAL/TEXCOORD_0 each in a
 // view of its own with names, extras and extensions, UNSIGNED_SHORT indices with min/max, a
 // second mesh sharing the first one's accessors (as Blender writes identical data once), a
@@ -1083,92 +738,17 @@ TEST(GltfRoundTrip, SparseAccessorsAreWrittenSparse) {
 // extras and extensions, a TEXCOORD_1 with min/max, and animations with one input shared by two
 // samplers (its min/max JSON doubles a float cannot hold), a normalized SHORT rotation and
 // normalized UNSIGNED_BYTE morph weights.
-fs::path writeLosslessFile(const TempDir& dir) {
-    GltfBuilder b;
-    json& doc = b.doc;
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 0, -1, 0, 0, -1}, 5126, "VEC3", 4);
-    doc["accessors"][position]["min"] = json::array({0, 0, -1});
-    doc["accessors"][position]["max"] = json::array({1, 0, 0});
-    doc["accessors"][position]["name"] = "floor positions";
-    const int uv = b.add(std::vector<float>{0, 0, 1, 0, 1, 1, 0, 1}, 5126, "VEC2", 4);
-    doc["accessors"][uv]["min"] = json::array({0, 0});
-    doc["accessors"][uv]["max"] = json::array({1, 1});
-    doc["accessors"][uv]["extras"] = {{"accessor", "uv"}};
-    const int normal = b.add(std::vector<float>{0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0}, 5126, "VEC3", 4);
-    doc["accessors"][normal]["name"] = "floor normals";
-    doc["accessors"][normal]["extensions"] = {{"EXT_lit_test", {{"n", 1}}}};
-    json& normalView = doc["bufferViews"][doc["accessors"][normal]["bufferView"].get<std::size_t>()];
-    normalView["name"] = "normal view";
-    normalView["extras"] = {{"view", "normal"}};
-    const int uv1 = b.add(std::vector<float>{0.5f, 0.25f, 0.75f, 0.25f, 0.75f, 0.5f, 0.5f, 0.5f}, 5126, "VEC2", 4);
-    doc["accessors"][uv1]["min"] = json::array({0.5, 0.25});
-    doc["accessors"][uv1]["max"] = json::array({0.75, 0.5});
-    const int indices = b.add(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3}, 5123, "SCALAR", 6);
-    doc["accessors"][indices]["min"] = json::array({0});
-    doc["accessors"][indices]["max"] = json::array({3});
-    doc["accessors"][indices]["name"] = "floor indices";
-    const json floor = {{"attributes", {{"POSITION", position}, {"TEXCOORD_0", uv}, {"NORMAL", normal}, {"TEXCOORD_1", uv1}}},
-                        {"indices", indices}};
-    // Not indexed, with a sparse morph target.
-    const int triPosition = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}, 5126, "VEC3", 3);
-    doc["accessors"][triPosition]["min"] = json::array({0, 0, 0});
-    doc["accessors"][triPosition]["max"] = json::array({1, 1, 0});
-    const int triNormal = b.add(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1}, 5126, "VEC3", 3);
-    const int target = b.addSparse(3, "VEC3", {2}, {0, 0, 0.5f});
-    doc["accessors"][target]["min"] = json::array({0, 0, 0});
-    doc["accessors"][target]["max"] = json::array({0, 0, 0.5});
-    json& sparse = doc["accessors"][target]["sparse"];
-    sparse["extras"] = {{"part", "sparse"}};
-    sparse["extensions"] = {{"EXT_lit_test", {{"s", 1}}}};
-    sparse["indices"]["extras"] = {{"part", "indices"}};
-    sparse["values"]["extensions"] = {{"EXT_lit_test", {{"v", 2}}}};
-    doc["meshes"] = json::array({{{"name", "floor"}, {"primitives", json::array({floor})}},
-                                 {{"name", "twin"}, {"primitives", json::array({floor})}},
-                                 {{"name", "tri"},
-                                  {"weights", {0.0}},
-                                  {"primitives", json::array({{{"attributes", {{"POSITION", triPosition}, {"NORMAL", triNormal}}},
-                                                               {"targets", json::array({{{"POSITION", target}}})}}})}}});
-    doc["nodes"] = json::parse(R"([
-        {"name": "loose", "translation": [9, 9, 9]},
-        {"name": "tilted", "mesh": 0, "children": [2],
-         "matrix": [0, 0, -2, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0.1, 0.2, 0.3, 1]},
-        {"name": "lamp", "extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 2, 0]},
-        {"name": "spinner", "mesh": 1, "translation": [3, 0, 0]},
-        {"name": "breather", "mesh": 2, "weights": [0.0]}])");
-    doc["extensions"] = json::parse(R"({"KHR_lights_punctual": {"lights": [{"name": "bulb", "type": "point", "intensity": 5}]}})");
-    doc["extensionsUsed"] = json::array({"KHR_lights_punctual", "EXT_lit_test"});
-    doc["scenes"] = json::parse(R"([{"nodes": [1, 3, 4]}])");
-    doc["scene"] = 0;
-    const int times = b.add(std::vector<float>{0.0f, 1.0f / 24.0f, 2.0f / 24.0f}, 5126, "SCALAR", 3);
-    doc["accessors"][times]["min"] = json::array({0.0});
-    doc["accessors"][times]["max"] = json::array({0.08333333333333333});  // Blender's double of 2/24
-    // Unit quaternions about y as normalized SHORTs (0, s, 0, c)·32767.
-    const int turns = b.add(std::vector<std::int16_t>{0, 0, 0, 32767, 0, 12540, 0, 30273, 0, 23170, 0, 23170}, 5122, "VEC4", 3,
-                            /*normalized=*/true);
-    const int slides = b.add(std::vector<float>{3, 0, 0, 3, 0.5f, 0, 3, 1, 0}, 5126, "VEC3", 3);
-    const int weights = b.add(std::vector<std::uint8_t>{0, 128, 255}, 5121, "SCALAR", 3, /*normalized=*/true);
-    doc["animations"] = json::array(
-        {{{"name", "spin"},
-          {"samplers", json::array({{{"input", times}, {"output", turns}}, {{"input", times}, {"output", slides}}})},
-          {"channels", json::array({{{"sampler", 0}, {"target", {{"node", 3}, {"path", "rotation"}}}},
-                                    {{"sampler", 1}, {"target", {{"node", 3}, {"path", "translation"}}}}})}},
-         {{"name", "breathe"},
-          {"samplers", json::array({{{"input", times}, {"output", weights}}})},
-          {"channels", json::array({{{"sampler", 0}, {"target", {{"node", 4}, {"path", "weights"}}}}})}}});
-    const fs::path file = dir / "lossless.gltf";
-    b.write(file);
-    return file;
-}
+fs::path losslessFile(const TempDir& dir) { return copyFixture(dir, "lossless.gltf"); }
 
 // An edit of a sparse morph target where the file stored zeros (no base view): the accessor stays
 // sparse with one more index, keeps the file's extras and extensions of its `sparse`, `indices`
-// and `values` (which a dense accessor cannot hold) and the edited value reads back. Before issue
-// #13's seventh session the file's layout was written as it was, so the edit read back as 0.
-// A few milliseconds.
+// and `values` (which a dense accessor cannot hold) and the edited value reads back. Fails when
+// the file's sparse layout is written as it was, which reads the edit back as 0. A few
+// milliseconds.
 TEST(GltfRoundTrip, AnEditedSparseAccessorStaysSparseWithItsExtras) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeLosslessFile(dir);
+    const fs::path source = losslessFile(dir);
     Scene scene = loadGltf(source, log);
     Mesh* tri = nullptr;
     for (Mesh& mesh : scene.meshes)
@@ -1189,7 +769,8 @@ TEST(GltfRoundTrip, AnEditedSparseAccessorStaysSparseWithItsExtras) {
         const fs::path saved = dir / (std::string("sparse_edited") + ext);
         saveGltf(scene, saved);
         const json got = jsonOf(saved);
-        const json& accessor = got["accessors"][got["meshes"][2]["primitives"][0]["targets"][0]["POSITION"].get<std::size_t>()];
+        const json& accessor =
+            got["accessors"][got["meshes"][2]["primitives"][0]["targets"][0]["POSITION"].get<std::size_t>()];
         ASSERT_TRUE(accessor.contains("sparse")) << accessor.dump();
         EXPECT_FALSE(accessor.contains("bufferView")) << "the base stays zeros";
         const json& sparse = accessor["sparse"];
@@ -1207,30 +788,15 @@ TEST(GltfRoundTrip, AnEditedSparseAccessorStaysSparseWithItsExtras) {
 
 // The lossless file with its .bin laid out as Lit would not pack it: the views in reverse order,
 // each 16-byte aligned after a gap of zeros.
-fs::path writeShuffledLayoutFile(const TempDir& dir) {
-    RawGltf raw = readRaw(writeLosslessFile(dir));
-    std::vector<std::uint8_t> bin;
-    json& views = raw.doc["bufferViews"];
-    for (std::size_t v = views.size(); v-- > 0;) {
-        const std::vector<std::uint8_t> bytes = viewBytes(raw, static_cast<int>(v));
-        bin.resize(((bin.size() + 15) & ~std::size_t(15)) + 16, 0);
-        views[v]["byteOffset"] = bin.size();
-        bin.insert(bin.end(), bytes.begin(), bytes.end());
-    }
-    raw.doc["buffers"] = json::array({{{"uri", "shuffled.bin"}, {"byteLength", bin.size()}}});
-    const fs::path file = dir / "shuffled.gltf";
-    std::ofstream(file) << raw.doc.dump(1);
-    std::ofstream(dir / "shuffled.bin", std::ios::binary).write(reinterpret_cast<const char*>(bin.data()), static_cast<std::streamsize>(bin.size()));
-    return file;
-}
+fs::path shuffledLayoutFile(const TempDir& dir) { return copyFixture(dir, "shuffled.gltf"); }
 
-// The buffer's layout (issue #13's last "not kept" item): every buffer view whose bytes a save
+// The buffer's layout: every buffer view whose bytes a save
 // writes unchanged is at the file's byteOffset, so an unedited file's .bin comes back byte for
 // byte (the generated test file, the same with its views in reverse order and gaps between them,
 // and Blender 3.4's exports); after an edit of one primitive the file's views stay where they
-// were and the edited data goes into views of its own. Before issue #13's seventh session Lit
-// packed the views its own way: in the order it writes them, 4-byte aligned, back to back (the
-// reversed file's views all moved; after an edit, every view after the edited data).
+// were and the edited data goes into views of its own. Fails when a save packs the views its own
+// way (in the order it writes them, 4-byte aligned, back to back: the reversed file's views all
+// move; after an edit, every view after the edited data).
 // About 10 ms a file.
 TEST(GltfRoundTrip, UneditedBufferViewsKeepTheirByteOffsets) {
     TempDir dir;
@@ -1240,11 +806,12 @@ TEST(GltfRoundTrip, UneditedBufferViewsKeepTheirByteOffsets) {
         const tinygltf::BufferView& view = model.bufferViews.at(v);
         const std::vector<unsigned char>& data = model.buffers.at(static_cast<std::size_t>(view.buffer)).data;
         if (view.byteOffset + view.byteLength > data.size()) throw std::runtime_error("buffer view past its buffer");
-        return std::vector<unsigned char>(data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset),
-                                          data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength));
+        return std::vector<unsigned char>(
+            data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset),
+            data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength));
     };
-    for (const fs::path& source :
-         {writeShuffledLayoutFile(dir), writeLosslessFile(dir), folder / "point.gltf", folder / "sun.gltf", folder / "rig.gltf"}) {
+    for (const fs::path& source : {shuffledLayoutFile(dir), losslessFile(dir), folder / "point.gltf",
+                                   folder / "sun.gltf", folder / "rig.gltf"}) {
         const tinygltf::Model want = readModel(source);
         ASSERT_EQ(want.buffers.size(), 1u);
         Scene scene = loadGltf(source, log);
@@ -1289,7 +856,8 @@ TEST(GltfRoundTrip, UneditedBufferViewsKeepTheirByteOffsets) {
         std::size_t kept = 0;
         for (std::size_t w = 0; w < want.bufferViews.size(); ++w)
             for (std::size_t v = 0; v < got.bufferViews.size(); ++v)
-                if (got.bufferViews[v].byteOffset == want.bufferViews[w].byteOffset && viewData(got, v) == viewData(want, w)) {
+                if (got.bufferViews[v].byteOffset == want.bufferViews[w].byteOffset &&
+                    viewData(got, v) == viewData(want, w)) {
                     ++kept;
                     break;
                 }
@@ -1298,7 +866,8 @@ TEST(GltfRoundTrip, UneditedBufferViewsKeepTheirByteOffsets) {
         EXPECT_EQ(kept, want.bufferViews.size());
         EXPECT_GT(got.bufferViews.size(), want.bufferViews.size());
         std::sort(ranges.begin(), ranges.end());
-        for (std::size_t r = 1; r < ranges.size(); ++r) EXPECT_LE(ranges[r - 1].second, ranges[r].first) << "views overlap";
+        for (std::size_t r = 1; r < ranges.size(); ++r)
+            EXPECT_LE(ranges[r - 1].second, ranges[r].first) << "views overlap";
         const Scene back = loadGltf(saved, log);
         EXPECT_EQ(back.meshes.at(0).primitives.at(0).vertices.at(1).position.x, 2.0f);
     }
@@ -1327,16 +896,16 @@ json comparable(json doc) {
     return doc;
 }
 
-// The file's own JSON for everything the "not kept" list of docs/EDITOR.md used to name: node
-// matrices, node indices, accessors (order, sharing, names, extras, extensions, min/max with the
-// file's exact numbers, component types, sparse parts' extras and extensions), buffer views and
-// animations, through .gltf and .glb, unedited and after an edit of another node; and every
-// accessor's elements. Fails before issue #13's fifth session (TRS for matrices, the kept node
-// last, float animation data, no names on drawn accessors). A few milliseconds.
+// The file's own JSON for node matrices, node indices, accessors (order, sharing, names, extras,
+// extensions, min/max with the file's exact numbers, component types, sparse parts' extras and
+// extensions), buffer views and animations, through .gltf and .glb, unedited and after an edit of
+// another node; and every accessor's elements. Fails when a save writes TRS for a matrix, puts
+// the kept node last, writes animation data as floats or drops the names of drawn accessors.
+// A few milliseconds.
 TEST(GltfRoundTrip, AnUnlitFileLayoutIsWrittenBackAsTheFileHadIt) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeLosslessFile(dir);
+    const fs::path source = losslessFile(dir);
     const json want = comparable(jsonOf(source));
     const tinygltf::Model sourceModel = readModel(source);
     Scene scene = loadGltf(source, log);
@@ -1370,7 +939,8 @@ TEST(GltfRoundTrip, AnUnlitFileLayoutIsWrittenBackAsTheFileHadIt) {
             const tinygltf::Model savedModel = readModel(saved);
             ASSERT_EQ(savedModel.accessors.size(), sourceModel.accessors.size());
             for (std::size_t a = 0; a < sourceModel.accessors.size(); ++a)
-                EXPECT_EQ(elements(savedModel, static_cast<int>(a)), elements(sourceModel, static_cast<int>(a))) << "accessor " << a;
+                EXPECT_EQ(elements(savedModel, static_cast<int>(a)), elements(sourceModel, static_cast<int>(a)))
+                    << "accessor " << a;
         }
 }
 
@@ -1381,7 +951,7 @@ TEST(GltfRoundTrip, AnUnlitFileLayoutIsWrittenBackAsTheFileHadIt) {
 TEST(GltfRoundTrip, EditsWriteFreshDataAndKeepTheRest) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeLosslessFile(dir);
+    const fs::path source = losslessFile(dir);
     const json want = comparable(jsonOf(source));
     Scene scene = loadGltf(source, log);
     std::size_t tilted = 0;
@@ -1414,8 +984,8 @@ TEST(GltfRoundTrip, EditsWriteFreshDataAndKeepTheRest) {
         EXPECT_NEAR(node["scale"][2].get<double>(), 2.0, 1e-6);
         EXPECT_NEAR(std::abs(node["rotation"][1].get<double>()), std::sqrt(0.5), 1e-6);
         // The edited floor: fresh accessors in the file's layout, min/max of the new values, and
-        // the file's names, extras and extensions of those accessors and views (before issue #13's
-        // sixth session an edited primitive lost them silently).
+        // the file's names, extras and extensions of those accessors and views (which an edit
+        // must not lose silently).
         const json& floorPrimitive = got["meshes"][0]["primitives"][0];
         const json& positions = got["accessors"][floorPrimitive["attributes"]["POSITION"].get<std::size_t>()];
         EXPECT_EQ(positions.value("name", ""), "floor positions");
@@ -1432,7 +1002,8 @@ TEST(GltfRoundTrip, EditsWriteFreshDataAndKeepTheRest) {
         EXPECT_EQ(indices["componentType"], 5123);
         EXPECT_EQ(indices.value("name", ""), "floor indices");
         EXPECT_EQ(indices["max"], json::array({3}));
-        EXPECT_FALSE(got["bufferViews"][positions["bufferView"].get<std::size_t>()].contains("byteStride"));  // not interleaved
+        EXPECT_FALSE(
+            got["bufferViews"][positions["bufferView"].get<std::size_t>()].contains("byteStride"));  // not interleaved
         // The twin, unedited, keeps its names (it no longer shares the edited positions).
         const json& twin = got["meshes"][1]["primitives"][0];
         EXPECT_NE(twin["attributes"]["POSITION"], floorPrimitive["attributes"]["POSITION"]);
@@ -1477,9 +1048,9 @@ TEST(GltfRoundTrip, BlenderExportsComeBackAsTheyWere) {
                     ASSERT_EQ(got["nodes"][0]["translation"][0].get<double>(), static_cast<double>(x));
                     got["nodes"][0] = want["nodes"][0];
                 }
-                for (const char* key : {"nodes", "scenes", "meshes", "accessors", "animations", "skins", "materials",
-                                        "textures", "samplers", "images", "cameras", "extensions", "extensionsUsed",
-                                        "extensionsRequired"})
+                for (const char* key :
+                     {"nodes", "scenes", "meshes", "accessors", "animations", "skins", "materials", "textures",
+                      "samplers", "images", "cameras", "extensions", "extensionsUsed", "extensionsRequired"})
                     EXPECT_EQ(got.value(key, json()), want.value(key, json())) << key;
                 ASSERT_EQ(got["bufferViews"].size(), want["bufferViews"].size());
                 for (std::size_t v = 0; v < want["bufferViews"].size(); ++v) {
@@ -1502,45 +1073,16 @@ TEST(GltfRoundTrip, BlenderExportsComeBackAsTheyWere) {
 // doubleSided false, texCoord 0, normal scale 1, ...), leaves others out (a texture without a
 // sampler, a sampler without wraps or minFilter, a material with no fields, a scene without a
 // name), gives an image by URI its optional mimeType and has material factors a float cannot
-// hold (0.1, 0.7): a save writes exactly what the file had. Before issue #13's sixth session the
-// defaults were dropped, a default sampler added, the scene named after the file, the mimeType
-// dropped and 0.1 written as 0.10000000149011612. An edit of one factor changes only it.
+// hold (0.1, 0.7): a save writes exactly what the file had. Fails when a save drops the defaults,
+// adds a default sampler, names the scene after the file, drops the mimeType or writes 0.1 as
+// 0.10000000149011612. An edit of one factor changes only it.
 // A few milliseconds.
-fs::path writeDefaultsFile(const TempDir& dir) {
-    GltfBuilder b;
-    json& doc = b.doc;
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 0, -1}, 5126, "VEC3", 3);
-    doc["accessors"][position]["min"] = json::array({0, 0, -1});
-    doc["accessors"][position]["max"] = json::array({1, 0, 0});
-    const int normal = b.add(std::vector<float>{0, 1, 0, 0, 1, 0, 0, 1, 0}, 5126, "VEC3", 3);
-    const int uv = b.add(std::vector<float>{0, 0, 1, 0, 1, 1}, 5126, "VEC2", 3);
-    const json attributes = {{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_0", uv}};
-    doc["meshes"] = json::array({{{"name", "tri"},
-                                  {"primitives", json::array({{{"attributes", attributes}, {"material", 0}},
-                                                              {{"attributes", attributes}, {"material", 1}}})}}});
-    doc["materials"] = json::parse(R"([
-        {"name": "explicit", "alphaMode": "OPAQUE", "alphaCutoff": 0.5, "doubleSided": false,
-         "emissiveFactor": [0.0, 0.0, 0.0],
-         "pbrMetallicRoughness": {"baseColorFactor": [0.1, 0.2, 0.3, 1.0], "metallicFactor": 0.7,
-                                  "roughnessFactor": 1.0, "baseColorTexture": {"index": 0, "texCoord": 0}},
-         "normalTexture": {"index": 1, "scale": 1.0}, "occlusionTexture": {"index": 1, "strength": 0.3}},
-        {"name": "bare"}])");
-    doc["textures"] = json::parse(R"([{"source": 0}, {"source": 0, "sampler": 0}])");
-    doc["samplers"] = json::parse(R"([{"magFilter": 9728}])");
-    doc["images"] = json::parse(R"([{"uri": "white.png", "mimeType": "image/png"}])");
-    doc["nodes"] = json::parse(R"([{"name": "tri", "mesh": 0}])");
-    doc["scenes"] = json::parse(R"([{"nodes": [0]}])");
-    doc["scene"] = 0;
-    writePng(dir / "white.png", 2, 2, std::vector<std::uint8_t>(16, 255));
-    const fs::path file = dir / "defaults.gltf";
-    b.write(file);
-    return file;
-}
+fs::path defaultsFile(const TempDir& dir) { return copyFixture(dir, "defaults.gltf"); }
 
 TEST(GltfRoundTrip, DefaultsAndExactFactorsAreWrittenAsTheFileHadThem) {
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeDefaultsFile(dir);
+    const fs::path source = defaultsFile(dir);
     const json want = jsonOf(source);
     Scene scene = loadGltf(source, log);
     Scene edited = scene;
@@ -1572,25 +1114,13 @@ TEST(GltfRoundTrip, DefaultsAndExactFactorsAreWrittenAsTheFileHadThem) {
 
 // A primitive whose TANGENTs are not unit length (glTF requires unit ones; some exporters write
 // them scaled): drawn normalized, saved as the file had them while the tangents are unedited,
-// normalized once one is edited. Before issue #13's sixth session the save wrote them normalized.
-// A few milliseconds.
+// normalized once one is edited. Fails when a save writes them normalized. A few milliseconds.
 TEST(GltfRoundTrip, NonUnitTangentsAreWrittenAsTheFileHadThem) {
     TempDir dir;
     QuietLog log;
-    GltfBuilder b;
-    json& doc = b.doc;
-    const int position = b.add(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 0, -1}, 5126, "VEC3", 3);
-    doc["accessors"][position]["min"] = json::array({0, 0, -1});
-    doc["accessors"][position]["max"] = json::array({1, 0, 0});
-    const int normal = b.add(std::vector<float>{0, 1, 0, 0, 1, 0, 0, 1, 0}, 5126, "VEC3", 3);
+    // The fixture's TANGENTs.
     const std::vector<float> fileTangents = {2, 0, 0, 1, 0.5f, 0, 0, -1, 1, 0, 0, 1};
-    const int tangent = b.add(fileTangents, 5126, "VEC4", 3);
-    doc["meshes"] = json::array(
-        {{{"name", "tri"}, {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"NORMAL", normal}, {"TANGENT", tangent}}}}})}}});
-    doc["nodes"] = json::parse(R"([{"name": "tri", "mesh": 0}])");
-    doc["scenes"] = json::parse(R"([{"nodes": [0]}])");
-    const fs::path source = dir / "tangents.gltf";
-    b.write(source);
+    const fs::path source = copyFixture(dir, "tangents.gltf");
     const Scene scene = loadGltf(source, log);
     const Primitive& primitive = scene.meshes.at(0).primitives.at(0);
     EXPECT_EQ(primitive.vertices.at(0).tangent, glm::vec4(1, 0, 0, 1));  // drawn normalized
@@ -1620,9 +1150,9 @@ TEST(GltfRoundTrip, NonUnitTangentsAreWrittenAsTheFileHadThem) {
 TEST(GltfRoundTrip, SharedScenesComeBackAsTheyWere) {
     const char* env = std::getenv("LIT_SCENES_DIR");
     const fs::path root = env && *env ? fs::path(env) : fs::path(LIT_SOURCE_DIR) / ".." / "shared" / "scenes";
-    const std::vector<std::string> files = {"avocado/Avocado.gltf", "box_textured/BoxTextured.gltf",
-                                            "damaged_helmet/DamagedHelmet.gltf", "water_bottle/WaterBottle.gltf",
-                                            "cornell_box/CornellBox-Original.gltf", "sponza/Sponza.gltf"};
+    const std::vector<std::string> files = {
+        "avocado/Avocado.gltf",          "box_textured/BoxTextured.gltf",        "damaged_helmet/DamagedHelmet.gltf",
+        "water_bottle/WaterBottle.gltf", "cornell_box/CornellBox-Original.gltf", "sponza/Sponza.gltf"};
     TempDir dir;
     QuietLog log;
     int found = 0;
@@ -1637,7 +1167,8 @@ TEST(GltfRoundTrip, SharedScenesComeBackAsTheyWere) {
         json got = comparable(jsonOf(saved));
         for (json* doc : {&want, &got}) {
             for (json& image : (*doc)["images"])
-                if (image.contains("uri")) image["uri"] = fs::path(percentDecode(image["uri"].get<std::string>())).filename().string();
+                if (image.contains("uri"))
+                    image["uri"] = fs::path(percentDecode(image["uri"].get<std::string>())).filename().string();
             for (json& view : (*doc)["bufferViews"]) view.erase("buffer");
         }
         for (const char* key : {"nodes", "scenes", "meshes", "accessors", "materials", "textures", "samplers", "images",
@@ -1653,31 +1184,33 @@ TEST(GltfRoundTrip, ValidatorAcceptsTheSavedFile) {
     const char* env = std::getenv("LIT_GLTF_VALIDATOR_DIR");
     const char* home = std::getenv("HOME");
     const char* cache = std::getenv("XDG_CACHE_HOME");
-    const fs::path validatorDir = env && *env ? fs::path(env)
-                                              : (cache && *cache ? fs::path(cache) : fs::path(home ? home : "") / ".cache") /
-                                                    "lit" / "gltf-validator";
+    const fs::path validatorDir =
+        env && *env
+            ? fs::path(env)
+            : (cache && *cache ? fs::path(cache) : fs::path(home ? home : "") / ".cache") / "lit" / "gltf-validator";
     if (std::system("node --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "node is not installed: skipped";
     if (!fs::exists(validatorDir / "node_modules" / "gltf-validator"))
         GTEST_SKIP() << "gltf-validator not found in " << validatorDir.string()
                      << " (run tools/install-gltf-validator.sh): skipped";
     TempDir dir;
     QuietLog log;
-    const fs::path source = writeRiggedFile(dir);
+    const fs::path source = riggedFile(dir);
     saveGltf(loadGltf(source, log), dir / "saved.gltf");
     saveGltf(loadGltf(source, log), dir / "saved.glb");
     // Several scenes, sparse accessors and extras written back (the other round-trip cases; the
     // embedded-images case is not validated: its KTX2 image is not a real one).
-    saveGltf(loadGltf(writeScenesFile(dir), log), dir / "scenes_saved.gltf");
-    saveGltf(loadGltf(writeSparseFile(dir), log), dir / "sparse_saved.glb");
-    saveGltf(loadGltf(writeExtrasFile(dir), log), dir / "extras_saved.gltf");
-    saveGltf(loadGltf(writeHiddenNodesFile(dir), log), dir / "hidden_saved.glb");
-    saveGltf(loadGltf(writeDataExtrasFile(dir), log), dir / "data_extras_saved.gltf");
-    saveGltf(loadGltf(writeLosslessFile(dir), log), dir / "lossless_saved.glb");
-    saveGltf(loadGltf(fs::path(LIT_SOURCE_DIR) / "tests" / "data" / "blender" / "rig.gltf", log), dir / "rig_saved.gltf");
-    saveGltf(loadGltf(writeDefaultsFile(dir), log), dir / "defaults_saved.gltf");
+    saveGltf(loadGltf(scenesFile(dir), log), dir / "scenes_saved.gltf");
+    saveGltf(loadGltf(sparseFile(dir), log), dir / "sparse_saved.glb");
+    saveGltf(loadGltf(extrasFile(dir), log), dir / "extras_saved.gltf");
+    saveGltf(loadGltf(hiddenNodesFile(dir), log), dir / "hidden_saved.glb");
+    saveGltf(loadGltf(dataExtrasFile(dir), log), dir / "data_extras_saved.gltf");
+    saveGltf(loadGltf(losslessFile(dir), log), dir / "lossless_saved.glb");
+    saveGltf(loadGltf(fs::path(LIT_SOURCE_DIR) / "tests" / "data" / "blender" / "rig.gltf", log),
+             dir / "rig_saved.gltf");
+    saveGltf(loadGltf(defaultsFile(dir), log), dir / "defaults_saved.gltf");
     // The file's own buffer layout kept (views reversed, gaps), and an edit of drawn geometry and
     // of a sparse morph target (new views in the gaps or after the end, the target re-sparsed).
-    saveGltf(loadGltf(writeShuffledLayoutFile(dir), log), dir / "shuffled_saved.gltf");
+    saveGltf(loadGltf(shuffledLayoutFile(dir), log), dir / "shuffled_saved.gltf");
     {
         Scene edited = loadGltf(dir / "shuffled.gltf", log);
         edited.meshes.at(0).primitives.at(0).vertices.at(1).position.x = 2.0f;
@@ -1689,10 +1222,27 @@ TEST(GltfRoundTrip, ValidatorAcceptsTheSavedFile) {
         saveGltf(edited, dir / "shuffled_edited.glb");
     }
     std::string files;
-    for (const char* name : {"rigged.gltf", "saved.gltf", "saved.glb", "scenes.gltf", "scenes_saved.gltf", "sparse.gltf",
-                             "sparse_saved.glb", "extras.gltf", "extras_saved.gltf", "hidden.gltf", "hidden_saved.glb",
-                             "data_extras.gltf", "data_extras_saved.gltf", "lossless.gltf", "lossless_saved.glb", "rig_saved.gltf",
-                             "defaults.gltf", "defaults_saved.gltf", "shuffled.gltf", "shuffled_saved.gltf", "shuffled_edited.glb"})
+    for (const char* name : {"rigged.gltf",
+                             "saved.gltf",
+                             "saved.glb",
+                             "scenes.gltf",
+                             "scenes_saved.gltf",
+                             "sparse.gltf",
+                             "sparse_saved.glb",
+                             "extras.gltf",
+                             "extras_saved.gltf",
+                             "hidden.gltf",
+                             "hidden_saved.glb",
+                             "data_extras.gltf",
+                             "data_extras_saved.gltf",
+                             "lossless.gltf",
+                             "lossless_saved.glb",
+                             "rig_saved.gltf",
+                             "defaults.gltf",
+                             "defaults_saved.gltf",
+                             "shuffled.gltf",
+                             "shuffled_saved.gltf",
+                             "shuffled_edited.glb"})
         files += " '" + (dir / name).string() + "'";
     const std::string command = "node '" + (fs::path(LIT_SOURCE_DIR) / "tools" / "validate_gltf.cjs").string() + "' '" +
                                 validatorDir.string() + "'" + files + " > '" + (dir / "report.txt").string() + "' 2>&1";
