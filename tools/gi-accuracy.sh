@@ -39,9 +39,9 @@ trap 'rm -f "$table"' EXIT
 "$tool" "${args[@]}" --out "$table"
 
 # The commit checked out when the run ends (build lit-gi-accuracy from that tree), "+ uncommitted
-# changes" when files outside docs/ differ from it.
+# changes" when files other than docs/ and *.md differ from it.
 commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "not recorded")"
-if [ "$commit" != "not recorded" ] && [ -n "$(git -C "$root" status --porcelain -- . ':!docs' 2>/dev/null)" ]; then
+if [ "$commit" != "not recorded" ] && [ -n "$(git -C "$root" status --porcelain -- . ':!docs' ':!*.md' 2>/dev/null)" ]; then
     commit="$commit + uncommitted changes"
 fi
 cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//') ($(nproc) cores)"
