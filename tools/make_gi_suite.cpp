@@ -10,7 +10,7 @@
 //                      unchanged): an error that follows the colour is the colour's, else the geometry's
 // Each is built with SceneBuilder and written with saveGltf (atomic). The Cornell box itself is
 // assets/cornell_box.gltf (tools/make_cornell_box.cpp). tools/gi-accuracy.sh renders the suite;
-// docs/GI.md has the table. Conventions as assets/README.md: metres, +Y up, the camera looks −Z.
+// docs/tables/gi-accuracy.md has the tables. Conventions as assets/README.md: metres, +Y up, the camera looks −Z.
 
 #include "scene/GltfWriter.h"
 #include "scene/SceneBuilder.h"

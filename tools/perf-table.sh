@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# The performance table: `lit-render --bench` on Crytek Sponza at 1280×720 with GI off and with GI
-# at 128³, 256³ and 512³ voxels (RGBA8 radiance, as the reference), printed as it runs and written
-# to docs/PERFORMANCE.md next to the reference numbers, labelled with this machine's GL renderer,
-# CPU and the date. Optionally also benchmarks the cone-trace shaders of an older revision with
-# the same binary in the same run (PERF_COMPARE_REV), for before/after numbers of a shader change.
+# The performance tables: `lit-render --bench` on Crytek Sponza at 1280×720 with GI off and with GI
+# at 128³, 256³ and 512³ voxels (RGBA8 radiance), the full-frame Cornell box's GI variants
+# interleaved, flicker and light edits, printed as they run and written to
+# docs/tables/performance.md, headed by the date, the commit, this machine's GL renderer and CPU.
+# The whole file is rewritten: it holds measurements only; docs/PERFORMANCE.md says how they are
+# taken and how to read them. Optionally also benchmarks the cone-trace shaders of an older
+# revision with the same binary in the same run (PERF_COMPARE_REV), for before/after numbers of a
+# shader change.
 #
 # Usage: tools/perf-table.sh            (from anywhere; needs a built lit-render and python3)
 # Environment (all optional):
@@ -13,7 +16,7 @@
 #   PERF_FRAMES       frames per GI-off run                           (default: 5)
 #   PERF_GI_FRAMES    frames per GI-on run; the first also voxelizes  (default: 3)
 #   PERF_VOXELS       voxel resolutions for GI on                     (default: "128 256 512")
-#   PERF_OUT          the markdown file written                       (default: <repo>/docs/PERFORMANCE.md)
+#   PERF_OUT          the markdown file written                (default: <repo>/docs/tables/performance.md)
 #   PERF_COMPARE_REV  a git revision whose version of PERF_COMPARE_FILES is benchmarked as
 #                     "before" against the working tree (GI on at the first of PERF_VOXELS): the
 #                     same binary, shaders/ copied with just those files from the revision
@@ -22,7 +25,7 @@
 #                     Cornell box, whose camera sees only interior surfaces)
 #   PERF_COMPARE_ROUNDS  before/after pairs, interleaved                (default: 3)
 #   PERF_COMPARE_SIZE, PERF_COMPARE_FRAMES   image size and frames of those runs (default: 640x360, 6)
-#   PERF_FAST         1 (default): also the fast-GI rows (issue #12): the full-frame Cornell box
+#   PERF_FAST         1 (default): also the GI-cost rows: the full-frame Cornell box
 #                     (assets/cornell_inside.still.path.json: inside the box, 70° fov) at PERF_SIZE
 #                     and 128³ with GI off and GI on at indirect scale 1, 2 and 4, at 2 with
 #                     temporal accumulation, and the fast GI mode's per-pixel cone trace, interleaved
@@ -37,9 +40,7 @@
 # difference in their cost, and is much less disturbed by other processes than wall time.
 # Software rasterizers (llvmpipe) take about a second per 1280×720 GI frame: the defaults keep the
 # whole script to a few minutes there (more when the machine is shared).
-# Notes written below the line "<!-- notes below are kept by tools/perf-table.sh -->" in the
-# output file are kept when it is rewritten. A resolution whose volumes would not fit in the free
-# memory is skipped with a message.
+# A resolution whose volumes would not fit in the free memory is skipped with a message.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -50,7 +51,7 @@ size="${PERF_SIZE:-1280x720}"
 frames="${PERF_FRAMES:-5}"
 giFrames="${PERF_GI_FRAMES:-3}"
 voxelList="${PERF_VOXELS:-128 256 512}"
-out="${PERF_OUT:-$root/docs/PERFORMANCE.md}"
+out="${PERF_OUT:-$root/docs/tables/performance.md}"
 compareRev="${PERF_COMPARE_REV:-}"
 compareRounds="${PERF_COMPARE_ROUNDS:-3}"
 compareSize="${PERF_COMPARE_SIZE:-640x360}"
@@ -118,8 +119,8 @@ if [[ "$fast" == 1 ]]; then
         for scale in 1 2 4; do
             run "cornell-gi-s$scale-$round" --path "$still" --fps 10 --bench-path --gi on --voxels 128 --indirect-scale "$scale"
         done
-        # The per-pixel cone trace issue #12's trace bar was written against: the fast GI mode (the
-        # default until the cached mode) at scale 1, every pixel's cones marched every frame.
+        # The per-pixel cone trace: the fast GI mode at scale 1, six cones marched from every pixel
+        # every frame (what reduced resolution and the cached mode are measured against).
         run "cornell-gi-fast-s1-$round" --path "$still" --fps 10 --bench-path --gi on --voxels 128 --gi-mode fast \
             --indirect-scale 1
         # ½ scale with temporal accumulation, which traces cone subsets (half the cones per texel).
@@ -162,9 +163,15 @@ if [[ -n "$compareRev" ]]; then
 fi
 
 cpu="$(awk -F': ' '/model name/ {print $2; exit}' /proc/cpuinfo) ($(nproc) cores)"
-python3 - "$results" "$out" "$size" "$cpu" "$(date -u '+%Y-%m-%d %H:%M UTC')" "$compareRev" "$(uptime | sed 's/.*load average: //')" "$compareFiles" <<'PY'
+# The commit checked out when the run ends (build lit-render from that tree), "+ uncommitted
+# changes" when files other than docs/ and *.md differ from it.
+commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "not recorded")"
+if [[ "$commit" != "not recorded" && -n "$(git -C "$root" status --porcelain -- . ':!docs' ':!*.md' 2>/dev/null)" ]]; then
+    commit="$commit + uncommitted changes"
+fi
+python3 - "$results" "$out" "$size" "$cpu" "$(date -u '+%Y-%m-%d %H:%M UTC')" "$compareRev" "$(uptime | sed 's/.*load average: //')" "$compareFiles" "$commit" <<'PY'
 import json, os, sys
-results, out, size, cpu, date, compare_rev, load, compare_files = sys.argv[1:9]
+results, out, size, cpu, date, compare_rev, load, compare_files, commit = sys.argv[1:10]
 
 def load_run(name):
     path = os.path.join(results, name + ".json")
@@ -192,19 +199,17 @@ def label(name, run):
 
 lines = []
 w = lines.append
-w("# Performance")
+w("# Performance tables")
 w("")
-w("Generated by `tools/perf-table.sh` (`lit-render --bench --json` per row); rerun it to refresh.")
+w("Generated by `tools/perf-table.sh` (`lit-render --bench --json` per row); rerun it to refresh. How the numbers")
+w("are taken and how to read them: docs/PERFORMANCE.md.")
 w("")
-w("## Reference")
-w("")
-w("Crytek Sponza, NVIDIA RTX 2080, 1280×720, 512³ voxels, RGBA8 radiance: **GI off 2.03 ms, GI on 5.48 ms** per frame.")
-w("")
-w(f"## This machine: Crytek Sponza, {size.replace('x', '×')}, default camera, RGBA8 radiance")
-w("")
+w(f"- Date: {date}")
+w(f"- Commit: {commit}")
 w(f"- GPU (GL renderer): {device}")
-w(f"- CPU: {cpu}")
-w(f"- Date: {date}; load average at the end of the run: {load}")
+w(f"- CPU: {cpu}; load average at the end of the run: {load}")
+w("")
+w(f"## Crytek Sponza, {size.replace('x', '×')}, default camera, RGBA8 radiance")
 w("")
 w("| Run | frames | lowest FPS | highest FPS | mean frame (ms) | median frame (ms) | draws | triangles | cull (ms CPU) | "
   + " | ".join(f"{p} (GPU ms)" for p in passes) + " |")
@@ -214,17 +219,7 @@ for name, r in runs:
     w(f"| {label(name, r)} | {r['frames']} | {r['lowestFps']:.2f} | {r['highestFps']:.2f} | {fm['mean']:.1f} | "
       f"{fm['median']:.1f} | {r['drawsSubmitted']} of {r['drawsTotal']} | {r['triangles']} | {r['cullMs']['mean']:.3f} | "
       + " | ".join(pass_ms(r, p) for p in passes) + " |")
-w("")
-w("How to read it:")
-w("- Frame times are wall-clock per frame with the CPU waiting for the GPU each frame (`--bench`). The first frame")
-w("  also renders the shadow maps and, with GI, voxelizes, injects and mipmaps the volume: it sets the lowest FPS")
-w("  and pulls the mean up; the median is the steady frame. Pass times are means over the frames the pass ran in;")
-w("  \"(1×)\" marks a pass that ran in fewer frames than the run (the GI update, the cached shadow maps).")
-w("- draws / triangles: the last frame's G-buffer draws (of all items) and triangles; large primitives are")
-w("  split into chunks of at most 8192 triangles on upload (`TriangleChunks.h`), so culling can drop parts of them.")
-w("- On a software rasterizer (Mesa llvmpipe) every pass runs on the CPU; the machine was shared with other jobs")
-w("  during the run, so these numbers are noisy (several per cent run to run, more under load) and are no")
-w("  prediction for a GPU. Compare rows within one run, not across runs.")
+
 
 tags = sorted({f[len("before-"):-len("-1.json")] for f in os.listdir(results) if f.startswith("before-") and f.endswith("-1.json")})
 groups = []
@@ -268,13 +263,14 @@ if fast_rounds:
     def indirect(run):  # GPU ms of the indirect passes: (cone trace, resolve, fallback)
         return tuple(pass_mean(run, p) for p in ("cone trace", "indirect resolve", "indirect fallback"))
     w("")
-    w("## Fast GI (issue #12): full-frame Cornell box, 128³, same binary, runs interleaved")
+    w("## Full-frame Cornell box, 128³: GI on against GI off")
     w("")
     first = load_run(f"cornell-gi-off-{fast_rounds[0]}")
     w(f"`assets/cornell_inside.still.path.json` (camera inside the box, 70° vertical fov: every pixel a wall or box), "
-      f"{first['width']}×{first['height']}, RGBA16F radiance, `--bench-path` (one untimed warm-up frame, then "
-      f"{first['frames']} timed frames of the same view). Frame: mean wall-clock ms. Indirect: the GPU time of "
-      "\"cone trace\" plus \"indirect resolve\" (the upsampling pass) plus \"indirect fallback\" (the per-pixel trace of the pixels the resolve marks). The cached GI mode, the default, resolves at scale 1 too (one texel per pixel); the fast mode at scale 1 has neither. Ratios are within one round.")
+      f"{first['width']}×{first['height']}, RGBA16F radiance, the default (cached) GI mode, `--bench-path` (one untimed "
+      f"warm-up frame, then {first['frames']} timed frames of the same view), one binary, the variants interleaved in "
+      "each round. Frame: mean wall-clock ms. Indirect: the GPU ms of \"cone trace\" + \"indirect resolve\" + "
+      "\"indirect fallback\" (the cached mode resolves at scale 1 too, one texel per pixel). Ratios are within one round.")
     w("")
     w("| Round | GI off frame (ms) | GI on frame, scale 1 / 2 / 4 (ms) | GI on ÷ GI off, scale 1 / 2 / 4 | indirect, scale 1 / 2 / 4 (ms) | indirect speed-up vs scale 1, scale 2 / 4 |")
     w("|---|---|---|---|---|---|")
@@ -293,10 +289,10 @@ if fast_rounds:
     temporal_rounds = [t for t in temporal_rounds if all(t[1:])]
     if temporal_rounds:
         w("")
-        w("Scale 2 with temporal accumulation (`--temporal on`: the last frames' result reprojected and blended in; in "
-          "the fast and accurate modes each low-resolution texel also marches the normal cone and 2 of the 5 side cones "
-          "per frame, `temporalConeSubsets`, while the cached mode's gather has no cones to split), same rounds; "
-          "indirect = cone trace + resolve + fallback, its speed-up against scale 1's indirect.")
+        w("### Scale 2 with temporal accumulation")
+        w("")
+        w("`--temporal on`, same rounds; indirect = cone trace + resolve + fallback, its speed-up against scale 1's "
+          "indirect.")
         w("")
         w("| Round | frame (ms) | GI on ÷ GI off | indirect (ms): trace + resolve + fallback | indirect speed-up vs scale 1 |")
         w("|---|---|---|---|---|")
@@ -310,11 +306,11 @@ if fast_rounds:
     cone_rounds = [c for c in cone_rounds if all(c[1:])]
     if cone_rounds:
         w("")
-        w("Against the per-pixel cone trace the issue's trace bar (\"≥ 4× lower than today's full-resolution trace\") "
-          "was measured on when it was filed: the fast GI mode (`--gi-mode fast`, the default until the cached mode), "
-          "indirect scale 1, six cones marched from every pixel every frame; same rounds. The default's \"cone trace\" "
-          "at scale 2 is the cached mode's gather of the voxels' irradiance for one texel in 2×2; its indirect adds "
-          "the resolve and fallback. The ratios against the cached mode's own scale 1 are in the first table.")
+        w("### The default against the per-pixel cone trace")
+        w("")
+        w("The per-pixel cone trace: the fast GI mode (`--gi-mode fast`) at indirect scale 1, six cones marched from "
+          "every pixel every frame; same rounds. The default's \"cone trace\" at scale 2 is the cached mode's gather "
+          "of the voxels' irradiance for one texel in 2×2; its indirect adds the resolve and fallback.")
         w("")
         w("| Round | per-pixel cone trace, fast mode, scale 1 (ms) | its frame (ms) | default at scale 2: trace (ms) | trace lower by | indirect: trace + resolve + fallback (ms) | indirect lower by |")
         w("|---|---|---|---|---|---|---|")
@@ -327,6 +323,8 @@ if fast_rounds:
     flick = [(t, r) for t, r in flick if r and "flickerPercent" in r]
     if flick:
         w("")
+        w("## Flicker")
+        w("")
         r0 = flick[0][1]
         w(f"Flicker on `assets/cornell_inside.path.json` ({r0['width']}×{r0['height']}, 10 fps, {r0['frames']} frames, "
           "indirect scale 2): mean |frame-to-frame change| of pixels whose surface did not move (reprojected, same "
@@ -336,28 +334,27 @@ if fast_rounds:
         w("|---|---|---|---|")
         for t, r in flick:
             w(f"| {t} | {r['flickerPercent']:.3f} % | {r['flickerWorstPercent']:.3f} % | {r['frameMs']['mean']:.0f} |")
+    updates = []
     for name, how in (("gi-updates-256", "the whole update in one frame, `lit-render --bench 1 --bench-gi-updates 3`"),
-                      ("gi-updates-256-editor", "the edit frame as the editor runs it, the voxel irradiance of 16384 "
-                       "voxels per frame, `--gi-update-per-frame 16384`")):
+                      ("gi-updates-256-editor", "the edit frame as the editor runs it: its default budget of 16384 "
+                       "voxels a frame for the update, no refinement, `--gi-update-per-frame 16384 "
+                       "--gi-refine-per-frame 0`")):
         upd = os.path.join(results, name + ".txt")
-        if not os.path.exists(upd):
-            continue
-        rows = [l.strip() for l in open(upd) if l.startswith("gi-update") or l.startswith("GI updates")]
-        if rows:
-            w("")
-            w("Light edit (re-inject + mipmaps, voxels kept, and the GI mode's work that follows it) against a "
-              f"re-voxelization, Sponza 256³ RGBA8, interleaved ({how}), GPU ms from the profiler:")
-            w("")
-            w("```")
-            lines.extend(rows)
-            w("```")
-# Hand-written notes below the marker in the existing file survive a refresh.
-marker = "<!-- notes below are kept by tools/perf-table.sh -->"
-if os.path.exists(out):
-    old = open(out).read()
-    if marker in old:
+        if os.path.exists(upd):
+            rows = [l.strip() for l in open(upd) if l.startswith("gi-update") or l.startswith("GI updates")]
+            if rows:
+                updates.append((how, rows))
+    if updates:
         w("")
-        lines.append(old[old.index(marker):].rstrip("\n"))
+        w("## Light edit against a re-voxelization, Sponza 256³")
+    for how, rows in updates:
+        w("")
+        w("Light edit (re-inject + mipmaps, voxels kept, and the GI mode's work that follows it) against a "
+          f"re-voxelization, Sponza 256³ RGBA8, interleaved ({how}), GPU ms from the profiler:")
+        w("")
+        w("```")
+        lines.extend(rows)
+        w("```")
 os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
 open(out + ".tmp", "w").write("\n".join(lines) + "\n")
 os.replace(out + ".tmp", out)
