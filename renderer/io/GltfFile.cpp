@@ -141,6 +141,12 @@ void writeGltfModel(tinygltf::Model model, const fs::path& file, bool binary,
     } catch (const OrderedJson::exception& e) {
         fail(file, std::string("tinygltf wrote JSON that does not parse (") + e.what() + ")");
     }
+    // tinygltf writes an object whose members all have their defaults (a scene without nodes or
+    // name) as null, which glTF does not allow and no loader reads back: write it as {}.
+    for (auto& [key, value] : doc.items())
+        if (value.is_array())
+            for (OrderedJson& element : value)
+                if (element.is_null()) element = OrderedJson::object();
 
     for (const auto& [pointer, text] : jsonPatches) {
         try {

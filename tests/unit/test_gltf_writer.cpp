@@ -386,6 +386,22 @@ TEST(GltfWriter, SavingAgainGivesTheSameScene) {
     expectSameScene(first, loadGltf(dir / "second.glb", log));
 }
 
+// A scene with nothing in it (every node deleted in the editor) is saved as a file that loads:
+// tinygltf writes a scene without nodes or name as null, which no loader reads back.
+TEST(GltfWriter, AnEmptySceneSavesAsAFileThatLoads) {
+    TempDir dir;
+    for (const char* name : {"empty.gltf", "empty.glb"}) {
+        saveGltf(Scene{}, dir / name);
+        Log log;
+        const Scene loaded = loadGltf(dir / name, log);
+        EXPECT_TRUE(loaded.nodes.empty()) << name;
+    }
+    std::ifstream in(dir / "empty.gltf");
+    const nlohmann::json json = nlohmann::json::parse(in);
+    ASSERT_TRUE(json.contains("scenes"));
+    EXPECT_TRUE(json["scenes"][0].is_object());
+}
+
 TEST(GltfWriter, CameraPathWithoutACameraAddsOne) {
     TempDir dir;
     Scene scene;
