@@ -32,9 +32,14 @@ struct EditorOptions {
     // --allow-external-uris, as lit-render's: scenes may read buffers and images outside their
     // folder (absolute paths, "..", file:). Off, such a scene is refused (GltfLimits), so a file
     // from the internet cannot read, and a later Save copy, arbitrary files of the user. Applies
-    // to every scene this session opens (command line, File > Open, recent files, script "open").
+    // to every scene this run opens (command line, File > Open, recent files, script "open").
     bool allowExternalUris = false;
     bool help = false;
+
+    bool scriptMode() const { return script.has_value(); }
+    // A person at the window (neither --script nor --screenshot): scenes load in the background,
+    // autosave runs, questions are asked.
+    bool interactive() const { return !script && !screenshot; }
 };
 
 // A command line that cannot be used; the message says which argument and why.

@@ -34,4 +34,10 @@ const EditorView* editorViewForKey(int digit, bool shift) {
     return nullptr;
 }
 
+std::string_view currentViewName(View view, bool coneDirections) {
+    return coneDirections ? std::string_view(kConeDirectionsView) : toString(view);
+}
+
+bool isFlatView(View view) { return view == View::ShadowMap || view == View::VoxelSlice; }
+
 }  // namespace lit::editor

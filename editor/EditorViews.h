@@ -8,7 +8,12 @@
 #include <string_view>
 #include <vector>
 
+#include "RenderSettings.h"
+
 namespace lit::editor {
+
+// The editor-only view name: the final image with the cones of a picked pixel drawn over it.
+inline constexpr const char* kConeDirectionsView = "cone-directions";
 
 struct EditorView {
     std::string_view name;   // script / settings name: "final", "voxel-slice", "cone-directions"
@@ -23,5 +28,13 @@ const std::vector<EditorView>& editorViews();
 const EditorView* findEditorView(std::string_view name);
 // The entry for number key `digit` (0..9) with or without Shift, or nullptr.
 const EditorView* editorViewForKey(int digit, bool shift);
+
+// The name of the view on screen: "cone-directions" while that editor view is on, else the
+// renderer's view.
+std::string_view currentViewName(View view, bool coneDirections);
+
+// The shadow map and the voxel slice are 2D images, not the camera's view: they fill the free
+// viewport area, a click there picks nothing and no world-space overlay is drawn over them.
+bool isFlatView(View view);
 
 }  // namespace lit::editor

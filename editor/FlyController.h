@@ -1,5 +1,5 @@
 #pragma once
-// Turns one frame of input into FlyCamera motion. Input is gathered by the App (from GLFW,
+// Turns one frame of input into FlyCamera motion. Input is gathered by ViewportInput (from GLFW,
 // filtered by what ImGui wants), so this stays free of any window library and is unit-tested.
 
 #include <glm/glm.hpp>

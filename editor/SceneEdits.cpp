@@ -253,6 +253,14 @@ int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 directio
     return index;
 }
 
+int addNodeInFront(Document& doc, NodeKind kind, glm::vec3 eye, glm::vec3 forward) {
+    const Aabb bounds = doc.scene.worldBounds();
+    const float distance = bounds.empty() ? 2.0f : std::clamp(0.1f * glm::length(bounds.size()), 1.0f, 10.0f);
+    const glm::vec3 direction =
+        kind == NodeKind::DirectionalLight ? glm::normalize(forward + glm::vec3(0.0f, -1.0f, 0.0f)) : forward;
+    return addNode(doc, kind, eye + forward * distance, direction);
+}
+
 std::string deleteSelection(Document& doc) {
     const std::vector<int> top = topLevelSelection(doc);
     if (top.empty()) return "nothing is selected";

@@ -47,6 +47,11 @@ Mesh makeSphereMesh(const std::string& name, float radius, int material, int rin
 // new node alone. One undo step "Add <Kind>". Returns the node index.
 int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 direction = {0.0f, -1.0f, 0.0f});
 
+// addNode in front of a camera at `eye` looking along `forward` (unit): two metres (or a tenth
+// of the scene, 1 to 10 m) ahead; lights and cameras look the way the camera does (a sun also
+// downwards), so a new spot light lights what is in view. The Add menu's and the script's "add".
+int addNodeInFront(Document& doc, NodeKind kind, glm::vec3 eye, glm::vec3 forward);
+
 // Deletes the selected nodes with their subtrees. One undo step. Returns "" or why nothing was
 // deleted ("nothing is selected").
 std::string deleteSelection(Document& doc);

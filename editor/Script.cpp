@@ -25,6 +25,8 @@ std::pair<std::string_view, std::string_view> firstWord(std::string_view text) {
 }
 
 bool isNumber(const std::string& text) { return parseNumber<double>(text).has_value(); }
+// Positions, pixels and steps: the runner uses them as floats, so they must parse as one.
+bool isFloat(const std::string& text) { return parseNumber<float>(text).has_value(); }
 
 bool isCount(const std::string& text, long minimum) {
     const auto value = parseNumber<long>(text);
@@ -35,132 +37,228 @@ std::string plural(std::size_t n, const char* word) {
     return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
 
-// Checks one command; returns "" or the message.
-std::string check(const ScriptCommand& c) {
-    const std::string& name = c.name;
+// "" when the command has between `minimum` and `maximum` arguments, else the message.
+std::string expectCount(const ScriptCommand& c, std::size_t minimum, std::size_t maximum, const char* usage) {
+    if (c.args.size() >= minimum && c.args.size() <= maximum) return "";
+    return c.name + ": expected " + usage + ", got " + plural(c.args.size(), "argument");
+}
+
+// "" when every argument is a number, else the message.
+std::string expectNumbers(const ScriptCommand& c) {
+    for (const std::string& v : c.args)
+        if (!isFloat(v)) return c.name + ": expected a number, got '" + v + "'";
+    return "";
+}
+
+std::string expectOnOff(const ScriptCommand& c, const std::string& value) {
+    return value == "on" || value == "off" ? "" : c.name + ": expected on or off, got '" + value + "'";
+}
+
+std::string checkNoArguments(const ScriptCommand& c) { return expectCount(c, 0, 0, "no arguments"); }
+
+std::string checkAdd(const ScriptCommand& c) {
+    constexpr const char* kKinds = "(empty, directional, point, spot, camera, box, plane, sphere)";
     const std::vector<std::string>& a = c.args;
-    auto count = [&](std::size_t minimum, std::size_t maximum, const char* usage) -> std::string {
-        if (a.size() >= minimum && a.size() <= maximum) return "";
-        return name + ": expected " + usage + ", got " + plural(a.size(), "argument");
-    };
-    if (name == "select") return count(1, 1, "a node name (or - for none)");
-    if (name == "select+") return count(1, 1, "a node name");
-    if (name == "parent") return count(1, 1, "a parent node name (or - for the scene root)");
-    if (name == "animation") return count(1, 1, "a camera animation name");
-    if (name == "add") {
-        if (a.empty() || (a.size() != 1 && a.size() != 4))
-            return "add: expected a kind (empty, directional, point, spot, camera, box, plane, sphere) and optionally X Y Z";
-        if (!parseNodeKind(a[0]))
-            return "unknown kind '" + a[0] + "' (empty, directional, point, spot, camera, box, plane, sphere)";
-        for (std::size_t i = 1; i < a.size(); ++i)
-            if (!isNumber(a[i])) return "add: expected a number, got '" + a[i] + "'";
-        return "";
-    }
-    if (name == "delete" || name == "duplicate" || name == "frame") return count(0, 0, "no arguments");
-    if (name == "gizmo") {
-        if (auto e = count(1, 1, "translate, rotate or scale"); !e.empty()) return e;
-        return parseGizmoMode(a[0]) ? "" : "gizmo: expected translate, rotate or scale, got '" + a[0] + "'";
-    }
-    if (name == "space") {
-        if (auto e = count(1, 1, "world or local"); !e.empty()) return e;
-        return a[0] == "world" || a[0] == "local" ? "" : "space: expected world or local, got '" + a[0] + "'";
-    }
-    if (name == "snap") {
-        if (a.size() == 1) return a[0] == "on" || a[0] == "off" ? "" : "snap: expected on, off or M DEG FACTOR, got '" + a[0] + "'";
-        if (a.size() != 3) return "snap: expected on, off or three steps (metres, degrees, scale factor)";
-        for (const std::string& v : a)
-            if (!isNumber(v) || *parseNumber<double>(v) <= 0.0) return "snap: expected a positive step, got '" + v + "'";
-        return "";
-    }
-    if (name == "drag" || name == "orbit") {
-        const std::size_t n = name == "drag" ? 4 : 2;
-        if (auto e = count(n, n, name == "drag" ? "X0 Y0 X1 Y1 window pixels" : "DX DY pixels"); !e.empty()) return e;
-        for (const std::string& v : a)
-            if (!isNumber(v)) return name + ": expected a number, got '" + v + "'";
-        return "";
-    }
-    if (name == "material") {
-        if (auto e = count(1, 1, "unique"); !e.empty()) return e;
-        return a[0] == "unique" ? "" : "material: expected unique, got '" + a[0] + "'";
-    }
-    if (name == "primitive") {
-        if (auto e = count(1, 1, "a primitive index"); !e.empty()) return e;
-        return isCount(a[0], 0) ? "" : "primitive: expected a primitive index, got '" + a[0] + "'";
-    }
-    if (name == "set") {
-        if (a.size() < 2) return "set: expected a property and a value";
-        return checkPropertyValue(a[0], a[1]);
-    }
-    if (name == "setting") {
-        if (auto e = count(2, 2, "a setting name and a value"); !e.empty()) return e;
-        ViewportSettings viewport;
-        if (std::optional<std::string> editor = applyEditorSetting(viewport, a[0], a[1])) return *editor;
-        RenderSettings settings;
-        return applySetting(settings, a[0], a[1]);
-    }
-    if (name == "view") {
-        if (auto e = count(1, 1, "a view name"); !e.empty()) return e;
-        // "cone-directions" is the editor's own view (cones drawn over the final image).
-        return parseView(a[0]) || a[0] == kConeDirectionsView ? "" : "unknown view '" + a[0] + "'";
-    }
-    if (name == "panel") {
-        if (auto e = count(2, 2, "a panel name and on|off"); !e.empty()) return e;
-        // The names the App resolves with panelFlag when the command runs.
-        if (PanelVisibility probe; panelFlag(probe, a[0]) == nullptr)
-            return "unknown panel '" + a[0] + "' (hierarchy, inspector, settings, stats, camera, log, timeline)";
-        return a[1] == "on" || a[1] == "off" ? "" : "panel: expected on or off, got '" + a[1] + "'";
-    }
-    if (name == "pick") {
-        if (auto e = count(2, 2, "X and Y window pixels"); !e.empty()) return e;
-        for (const std::string& v : a)
-            if (!isNumber(v) || v.front() == '-') return "pick: expected a pixel position, got '" + v + "'";
-        return "";
-    }
-    if (name == "screenshot") {
-        if (auto e = count(1, 2, "a file and optionally ui|noui"); !e.empty()) return e;
-        return a.size() == 1 || a[1] == "ui" || a[1] == "noui" ? "" : "screenshot: expected ui or noui, got '" + a[1] + "'";
-    }
-    if (name == "save") return count(0, 1, "at most a file");
-    if (name == "camera") {
-        if (auto e = count(6, 6, "a position X Y Z and a point to look at X Y Z"); !e.empty()) return e;
-        for (const std::string& v : a)
-            if (!isNumber(v)) return "camera: expected a number, got '" + v + "'";
-        return "";
-    }
-    if (name == "open") return count(1, 1, "a file");
-    if (name == "undo" || name == "redo" || name == "play" || name == "pause" || name == "quit" || name == "memory" ||
-        name == "loop")
-        return count(0, 0, "no arguments");
-    if (name == "interactive") {
-        if (auto e = count(1, 1, "on or off"); !e.empty()) return e;
-        return a[0] == "on" || a[0] == "off" ? "" : "interactive: expected on or off, got '" + a[0] + "'";
-    }
-    if (name == "wait") {
-        if (auto e = count(1, 1, "a number of frames, gi or refined"); !e.empty()) return e;
-        return a[0] == "gi" || a[0] == "refined" || isCount(a[0], 1)
-                   ? ""
-                   : "wait: expected a whole number of frames (1 or more), gi or refined, got '" + a[0] + "'";
-    }
-    if (name == "time") {
-        if (auto e = count(1, 1, "a time in seconds"); !e.empty()) return e;
-        return isNumber(a[0]) ? "" : "time: expected seconds, got '" + a[0] + "'";
-    }
-    if (name == "key") {
-        if (a.empty()) return "key: expected add, delete I, select I, time I T or update I";
-        const std::string& action = a[0];
-        std::size_t values = 0;
-        if (action == "add") values = 0;
-        else if (action == "delete" || action == "select" || action == "update") values = 1;
-        else if (action == "time") values = 2;
-        else return "unknown key action '" + action + "' (add, delete, select, time, update)";
-        if (a.size() != values + 1)
-            return "key " + action + ": expected " + (values == 0 ? std::string("no values") : plural(values, "value")) +
-                   ", got " + std::to_string(a.size() - 1);
-        if (values >= 1 && !isCount(a[1], 0)) return "key " + action + ": expected a key index, got '" + a[1] + "'";
-        if (values == 2 && !isNumber(a[2])) return "key time: expected seconds, got '" + a[2] + "'";
-        return "";
-    }
-    return "unknown command '" + name + "'";
+    if (a.empty() || (a.size() != 1 && a.size() != 4))
+        return std::string("add: expected a kind ") + kKinds + " and optionally X Y Z";
+    if (!parseNodeKind(a[0])) return "unknown kind '" + a[0] + "' " + kKinds;
+    for (std::size_t i = 1; i < a.size(); ++i)
+        if (!isFloat(a[i])) return "add: expected a number, got '" + a[i] + "'";
+    return "";
+}
+
+std::string checkGizmo(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 1, "translate, rotate or scale"); !e.empty()) return e;
+    return parseGizmoMode(c.args[0]) ? "" : "gizmo: expected translate, rotate or scale, got '" + c.args[0] + "'";
+}
+
+std::string checkSpace(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 1, "world or local"); !e.empty()) return e;
+    const std::string& a = c.args[0];
+    return a == "world" || a == "local" ? "" : "space: expected world or local, got '" + a + "'";
+}
+
+std::string checkSnap(const ScriptCommand& c) {
+    const std::vector<std::string>& a = c.args;
+    if (a.size() == 1)
+        return a[0] == "on" || a[0] == "off" ? "" : "snap: expected on, off or M DEG FACTOR, got '" + a[0] + "'";
+    if (a.size() != 3) return "snap: expected on, off or three steps (metres, degrees, scale factor)";
+    for (const std::string& v : a)
+        if (!isFloat(v) || *parseNumber<float>(v) <= 0.0f) return "snap: expected a positive step, got '" + v + "'";
+    return "";
+}
+
+std::string checkDrag(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 4, 4, "X0 Y0 X1 Y1 window pixels"); !e.empty()) return e;
+    return expectNumbers(c);
+}
+
+std::string checkOrbit(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 2, 2, "DX DY pixels"); !e.empty()) return e;
+    return expectNumbers(c);
+}
+
+std::string checkMaterial(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 1, "unique"); !e.empty()) return e;
+    return c.args[0] == "unique" ? "" : "material: expected unique, got '" + c.args[0] + "'";
+}
+
+std::string checkPrimitive(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 1, "a primitive index"); !e.empty()) return e;
+    return isCount(c.args[0], 0) ? "" : "primitive: expected a primitive index, got '" + c.args[0] + "'";
+}
+
+std::string checkSet(const ScriptCommand& c) {
+    if (c.args.size() < 2) return "set: expected a property and a value";
+    return checkPropertyValue(c.args[0], c.args[1]);
+}
+
+// Applied to default settings: the same setters the runner uses, so both accept the same keys
+// and values.
+std::string checkSetting(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 2, 2, "a setting name and a value"); !e.empty()) return e;
+    ViewportSettings viewport;
+    if (std::optional<std::string> editor = applyEditorSetting(viewport, c.args[0], c.args[1])) return *editor;
+    RenderSettings settings;
+    return applySetting(settings, c.args[0], c.args[1]);
+}
+
+std::string checkView(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 1, "a view name"); !e.empty()) return e;
+    // "cone-directions" is the editor's own view (cones drawn over the final image).
+    return parseView(c.args[0]) || c.args[0] == kConeDirectionsView ? "" : "unknown view '" + c.args[0] + "'";
+}
+
+std::string checkPanel(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 2, 2, "a panel name and on|off"); !e.empty()) return e;
+    // The names the runner resolves with panelFlag.
+    if (PanelVisibility probe; panelFlag(probe, c.args[0]) == nullptr)
+        return "unknown panel '" + c.args[0] + "' (hierarchy, inspector, settings, stats, camera, log, timeline)";
+    return expectOnOff(c, c.args[1]);
+}
+
+std::string checkPick(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 2, 2, "X and Y window pixels"); !e.empty()) return e;
+    for (const std::string& v : c.args)
+        if (!isFloat(v) || v.front() == '-') return "pick: expected a pixel position, got '" + v + "'";
+    return "";
+}
+
+std::string checkScreenshot(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 2, "a file and optionally ui|noui"); !e.empty()) return e;
+    const std::vector<std::string>& a = c.args;
+    return a.size() == 1 || a[1] == "ui" || a[1] == "noui" ? "" : "screenshot: expected ui or noui, got '" + a[1] + "'";
+}
+
+std::string checkCamera(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 6, 6, "a position X Y Z and a point to look at X Y Z"); !e.empty()) return e;
+    return expectNumbers(c);
+}
+
+std::string checkInteractive(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 1, "on or off"); !e.empty()) return e;
+    return expectOnOff(c, c.args[0]);
+}
+
+std::string checkWait(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 1, "a number of frames, gi or refined"); !e.empty()) return e;
+    const std::string& a = c.args[0];
+    // A frame count is an int (the runner counts frames in one).
+    const std::optional<int> frames = parseNumber<int>(a);
+    return a == "gi" || a == "refined" || (frames && *frames >= 1)
+               ? ""
+               : "wait: expected a whole number of frames (1 or more), gi or refined, got '" + a + "'";
+}
+
+std::string checkTime(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 1, "a time in seconds"); !e.empty()) return e;
+    return isNumber(c.args[0]) ? "" : "time: expected seconds, got '" + c.args[0] + "'";
+}
+
+std::string checkKey(const ScriptCommand& c) {
+    const std::vector<std::string>& a = c.args;
+    if (a.empty()) return "key: expected add, delete I, select I, time I T or update I";
+    const std::string& action = a[0];
+    std::size_t values = 0;
+    if (action == "add")
+        values = 0;
+    else if (action == "delete" || action == "select" || action == "update")
+        values = 1;
+    else if (action == "time")
+        values = 2;
+    else
+        return "unknown key action '" + action + "' (add, delete, select, time, update)";
+    if (a.size() != values + 1)
+        return "key " + action + ": expected " + (values == 0 ? std::string("no values") : plural(values, "value")) +
+               ", got " + std::to_string(a.size() - 1);
+    if (values >= 1 && !isCount(a[1], 0)) return "key " + action + ": expected a key index, got '" + a[1] + "'";
+    if (values == 2 && !isNumber(a[2])) return "key time: expected seconds, got '" + a[2] + "'";
+    return "";
+}
+
+// How the rest of a command's line becomes its arguments.
+enum class Arguments {
+    Words,             // split on whitespace
+    RestOfLine,        // one argument, the whole rest (node and animation names may hold spaces)
+    PropertyAndValue,  // the first word, then the rest (set node.name A name with spaces)
+};
+
+// The script language: each command's name, verb, arguments and the checks that need no scene
+// (argument counts, numbers, on|off, view and panel names). The runner does the rest.
+struct CommandSpec {
+    std::string_view name;
+    ScriptVerb verb;
+    Arguments arguments;
+    std::string (*check)(const ScriptCommand&);
+};
+
+constexpr CommandSpec kCommands[] = {
+    {"select", ScriptVerb::Select, Arguments::RestOfLine,
+     [](const ScriptCommand& c) { return expectCount(c, 1, 1, "a node name (or - for none)"); }},
+    {"select+", ScriptVerb::SelectToggle, Arguments::RestOfLine,
+     [](const ScriptCommand& c) { return expectCount(c, 1, 1, "a node name"); }},
+    {"add", ScriptVerb::Add, Arguments::Words, checkAdd},
+    {"delete", ScriptVerb::Delete, Arguments::Words, checkNoArguments},
+    {"duplicate", ScriptVerb::Duplicate, Arguments::Words, checkNoArguments},
+    {"parent", ScriptVerb::Parent, Arguments::RestOfLine,
+     [](const ScriptCommand& c) { return expectCount(c, 1, 1, "a parent node name (or - for the scene root)"); }},
+    {"material", ScriptVerb::Material, Arguments::Words, checkMaterial},
+    {"primitive", ScriptVerb::Primitive, Arguments::Words, checkPrimitive},
+    {"gizmo", ScriptVerb::Gizmo, Arguments::Words, checkGizmo},
+    {"space", ScriptVerb::Space, Arguments::Words, checkSpace},
+    {"snap", ScriptVerb::Snap, Arguments::Words, checkSnap},
+    {"drag", ScriptVerb::Drag, Arguments::Words, checkDrag},
+    {"frame", ScriptVerb::Frame, Arguments::Words, checkNoArguments},
+    {"orbit", ScriptVerb::Orbit, Arguments::Words, checkOrbit},
+    {"animation", ScriptVerb::Animation, Arguments::RestOfLine,
+     [](const ScriptCommand& c) { return expectCount(c, 1, 1, "a camera animation name"); }},
+    {"set", ScriptVerb::Set, Arguments::PropertyAndValue, checkSet},
+    {"setting", ScriptVerb::Setting, Arguments::Words, checkSetting},
+    {"view", ScriptVerb::View, Arguments::Words, checkView},
+    {"panel", ScriptVerb::Panel, Arguments::Words, checkPanel},
+    {"pick", ScriptVerb::Pick, Arguments::Words, checkPick},
+    {"screenshot", ScriptVerb::Screenshot, Arguments::Words, checkScreenshot},
+    {"save", ScriptVerb::Save, Arguments::Words,
+     [](const ScriptCommand& c) { return expectCount(c, 0, 1, "at most a file"); }},
+    {"open", ScriptVerb::Open, Arguments::Words, [](const ScriptCommand& c) { return expectCount(c, 1, 1, "a file"); }},
+    {"camera", ScriptVerb::Camera, Arguments::Words, checkCamera},
+    {"undo", ScriptVerb::Undo, Arguments::Words, checkNoArguments},
+    {"redo", ScriptVerb::Redo, Arguments::Words, checkNoArguments},
+    {"interactive", ScriptVerb::Interactive, Arguments::Words, checkInteractive},
+    {"wait", ScriptVerb::Wait, Arguments::Words, checkWait},
+    {"key", ScriptVerb::Key, Arguments::Words, checkKey},
+    {"play", ScriptVerb::Play, Arguments::Words, checkNoArguments},
+    {"pause", ScriptVerb::Pause, Arguments::Words, checkNoArguments},
+    {"time", ScriptVerb::Time, Arguments::Words, checkTime},
+    {"quit", ScriptVerb::Quit, Arguments::Words, checkNoArguments},
+    {"loop", ScriptVerb::Loop, Arguments::Words, checkNoArguments},
+    {"memory", ScriptVerb::Memory, Arguments::Words, checkNoArguments},
+};
+
+const CommandSpec* findCommand(std::string_view name) {
+    for (const CommandSpec& spec : kCommands)
+        if (spec.name == name) return &spec;
+    return nullptr;
 }
 
 }  // namespace
@@ -183,17 +281,25 @@ std::vector<ScriptCommand> parseScript(std::string_view text, const std::string&
         ScriptCommand command;
         command.line = lineNumber;
         command.name = std::string(name);
-        if (name == "set") {
-            // The value is the rest of the line (node.name may hold spaces).
-            const auto [property, value] = firstWord(rest);
-            if (!property.empty()) command.args.emplace_back(property);
-            if (!value.empty()) command.args.emplace_back(value);
-        } else if (name == "select" || name == "select+" || name == "parent" || name == "animation") {
-            if (!rest.empty()) command.args.emplace_back(rest);  // node names may hold spaces
-        } else {
-            for (const std::string_view word : splitWords(rest)) command.args.emplace_back(word);
+        const CommandSpec* spec = findCommand(name);
+        if (spec == nullptr)
+            throw ScriptError(scriptErrorAt(command, source, "unknown command '" + command.name + "'"));
+        command.verb = spec->verb;
+        switch (spec->arguments) {
+            case Arguments::Words:
+                for (const std::string_view word : splitWords(rest)) command.args.emplace_back(word);
+                break;
+            case Arguments::RestOfLine:
+                if (!rest.empty()) command.args.emplace_back(rest);
+                break;
+            case Arguments::PropertyAndValue: {
+                const auto [property, value] = firstWord(rest);
+                if (!property.empty()) command.args.emplace_back(property);
+                if (!value.empty()) command.args.emplace_back(value);
+                break;
+            }
         }
-        if (const std::string error = check(command); !error.empty())
+        if (const std::string error = spec->check(command); !error.empty())
             throw ScriptError(scriptErrorAt(command, source, error));
         commands.push_back(std::move(command));
     }

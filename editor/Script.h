@@ -1,7 +1,8 @@
 #pragma once
 // Editor scripts (lit-editor SCENE --script FILE): one action per line, run in order, one line
 // per frame at most (wait N waits N frames). '#' starts a comment; blank lines are skipped.
-// Parsing is window-free (lit_editor_core); the App executes the commands.
+// Parsing and checking are window-free (lit_editor_core) and driven by one command table in
+// Script.cpp; ScriptRunner (the editor) executes the commands by their verb.
 //
 //   select NODE_NAME             select a node by name ("select -" clears the selection)
 //   select+ NODE_NAME            add a node to the selection (Shift+click), or take it out
@@ -36,11 +37,13 @@
 //                                at most 2000 frames
 //   wait refined                 the same, then until the cached GI mode's refinement rounds after it
 //                                are done too (FrameStats::giRefining), at most 20000 frames
-//   interactive on|off           the interactive render scale (RenderSettings::interactiveFpsTarget)
+//   interactive on|off           the interactive render scale (ViewportSettings::interactiveFpsTarget)
 //                                also in the script (off by default: scripts render at the
 //                                chosen scale, reproducibly)
 //   key add|delete|select I|time I T|update I   camera path keys (the timeline's actions)
 //   play | pause | time T        camera path playback
+//   memory                       log what the process holds (after handing free heap back)
+//   loop                         start the script over from its first command
 //   quit
 //
 // Unknown commands, a wrong number of arguments or values that do not parse stop the script
@@ -52,23 +55,63 @@
 #include <string_view>
 #include <vector>
 
-namespace lit::editor {
+#include "EditorViews.h"  // kConeDirectionsView
 
-// The editor-only view name: the final image with the cones of a picked pixel drawn over it.
-inline constexpr const char* kConeDirectionsView = "cone-directions";
+namespace lit::editor {
 
 class ScriptError : public std::runtime_error {
 public:
     explicit ScriptError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// Every command a script can hold, one row each in Script.cpp's command table. The runner
+// switches over these without a default, so a verb it does not carry out fails the build.
+enum class ScriptVerb {
+    Select,        // select NODE_NAME | -
+    SelectToggle,  // select+ NODE_NAME
+    Add,
+    Delete,
+    Duplicate,
+    Parent,
+    Material,
+    Primitive,
+    Gizmo,
+    Space,
+    Snap,
+    Drag,
+    Frame,
+    Orbit,
+    Animation,
+    Set,
+    Setting,
+    View,
+    Panel,
+    Pick,
+    Screenshot,
+    Save,
+    Open,
+    Camera,
+    Undo,
+    Redo,
+    Interactive,
+    Wait,
+    Key,  // key, play, pause and time: the timeline's actions (runPathCommand)
+    Play,
+    Pause,
+    Time,
+    Quit,
+    Loop,
+    Memory,
+};
+
 struct ScriptCommand {
     int line = 0;                    // 1-based line in the file, for messages
+    ScriptVerb verb = ScriptVerb::Select;
     std::string name;                // "select", "set", ...
     std::vector<std::string> args;   // the rest of the line split on whitespace; for "set",
                                      // args[0] is the property and args[1] the rest of the line;
-                                     // for "select", args[0] is the rest of the line (node names
-                                     // may hold spaces, though not '#')
+                                     // for "select", "select+", "parent" and "animation", args[0]
+                                     // is the rest of the line (names may hold spaces, not '#')
 };
 
 // Parses and checks the whole script before anything runs: command names, argument counts,

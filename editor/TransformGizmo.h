@@ -38,6 +38,14 @@ struct GizmoSnap {
     float scaleStep = 0.1f;          // scale factor
 };
 
+// The gizmo as the user set it up: the viewport bar, W / E / R / T and the script's gizmo,
+// space and snap commands edit it; drags and the overlay read it.
+struct GizmoTool {
+    GizmoMode mode = GizmoMode::Translate;
+    GizmoSpace space = GizmoSpace::World;
+    GizmoSnap snap;  // snap.enabled: always on; Ctrl snaps during a drag either way
+};
+
 // The gizmo's three axes in world space (unit columns): the world axes, or the node's own axes
 // (the columns of its world matrix, normalised) for local space. Scale always uses local axes.
 glm::mat3 gizmoAxes(GizmoMode mode, GizmoSpace space, const glm::mat4& nodeWorld);

@@ -1,6 +1,6 @@
 #pragma once
-// Modal questions the App asks before it loses work: "Save changes to box.gltf?" (Save /
-// Discard / Cancel) and "Recover the autosave?" (Recover / Discard). The App asks, draws the
+// Modal questions the editor asks before it loses work: "Save changes to box.gltf?" (Save /
+// Discard / Cancel) and "Recover the autosave?" (Recover / Discard). FileActions asks, draws the
 // dialog every frame and acts on the answer when one comes.
 
 #include <string>

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "Script.h"
 
@@ -165,7 +166,7 @@ TEST(Script, InteractiveCommand) {
     EXPECT_THROW(parseScript("interactive\n", "s.txt"), ScriptError);
 }
 
-// "memory" logs what the process holds and "loop" starts the script over (the soak test's session).
+// "memory" logs what the process holds and "loop" starts the script over (for the soak test).
 TEST(Script, MemoryAndLoopCommands) {
     const std::vector<ScriptCommand> commands = parseScript("memory\nloop\n", "s.txt");
     ASSERT_EQ(commands.size(), 2u);
@@ -228,6 +229,40 @@ TEST(Script, RejectsBadAuthoringCommands) {
     EXPECT_NE(errorOf("material shared\n"), "");
     EXPECT_NE(errorOf("primitive -1\n"), "");
     EXPECT_NE(errorOf("select+\n"), "");
+}
+
+}  // namespace
+
+namespace {
+
+using namespace lit::editor;
+
+// The command table gives each command its own verb, and every verb has a command (the runner
+// switches over the verbs).
+TEST(Script, EachCommandHasItsOwnVerb) {
+    const std::vector<ScriptCommand> commands = parseScript(
+        "select A\nselect+ A\nadd box\ndelete\nduplicate\nparent -\nmaterial unique\nprimitive 0\n"
+        "gizmo rotate\nspace local\nsnap on\ndrag 1 2 3 4\nframe\norbit 1 2\nanimation a\nset node.name A\n"
+        "setting gi false\nview final\npanel log on\npick 1 2\nscreenshot a.png\nsave\nopen a.gltf\n"
+        "camera 0 0 0 1 1 1\nundo\nredo\ninteractive on\nwait 1\nkey add\nplay\npause\ntime 1\nquit\nloop\n"
+        "memory\n",
+        "s.txt");
+    std::set<ScriptVerb> verbs;
+    for (const ScriptCommand& command : commands) verbs.insert(command.verb);
+    EXPECT_EQ(verbs.size(), commands.size());
+    EXPECT_EQ(commands.size(), static_cast<std::size_t>(ScriptVerb::Memory) + 1);
+    EXPECT_EQ(commands[0].verb, ScriptVerb::Select);
+    EXPECT_EQ(commands[1].verb, ScriptVerb::SelectToggle);
+    EXPECT_EQ(commands.back().verb, ScriptVerb::Memory);
+}
+
+// Positions, pixels and steps are used as floats: a number beyond a float's range is refused
+// when the script is read, not when the command runs.
+TEST(Script, NumbersUsedAsFloatsMustFitOne) {
+    EXPECT_EQ(errorOf("add box 1e300 0 0\n"), "s.txt:1: add: expected a number, got '1e300'");
+    EXPECT_EQ(errorOf("orbit 1e300 0\n"), "s.txt:1: orbit: expected a number, got '1e300'");
+    EXPECT_EQ(errorOf("wait 3000000000\n"),
+              "s.txt:1: wait: expected a whole number of frames (1 or more), gi or refined, got '3000000000'");
 }
 
 }  // namespace

@@ -1,0 +1,40 @@
+#pragma once
+// --frame-log FILE: one row per rendered frame (when it began, the render scale and size, whether
+// the camera moved, the voxels the GI refined), written as CSV when the editor ends. The
+// editor_interactive test and the frame-rate measurements (docs/PERFORMANCE.md, "Editor") read
+// it. Window-free (lit_editor_core).
+
+#include <cstdint>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace lit::editor {
+
+struct FrameLogRow {
+    double start = 0.0;  // s, on the editor's steady clock, when the frame began
+    float renderScale = 1.0f;
+    glm::ivec2 renderSize{0};  // pixels
+    bool cameraMoved = false;
+    std::uint32_t refinedVoxels = 0;  // FrameStats::refinedVoxels of the frame
+};
+
+class FrameLog {
+public:
+    void add(const FrameLogRow& row) { rows_.push_back(row); }
+    // The row of the frame being rendered (after add).
+    FrameLogRow& last() { return rows_.back(); }
+
+    // frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels:
+    // a frame lasts until the next one begins (the loop's own frame time: update, render,
+    // present), the last one until `endSeconds`; start_s counts from the first frame.
+    std::string csv(double endSeconds) const;
+    // Writes csv() atomically; throws when it cannot.
+    void write(const std::filesystem::path& file, double endSeconds) const;
+
+private:
+    std::vector<FrameLogRow> rows_;
+};
+
+}  // namespace lit::editor

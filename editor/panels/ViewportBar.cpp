@@ -1,0 +1,78 @@
+#include "panels/ViewportBar.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+#include "EditorViews.h"
+#include "panels/CameraPanel.h"
+#include "panels/Layout.h"
+
+namespace lit::editor {
+
+glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, GizmoTool& gizmo, std::string_view view,
+                          std::size_t selected) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(), ImGuiCond_Always);
+    constexpr float kMargin = 8.0f;
+    float left = 0.0f, right = display.x, top = menuHeight, bottom = display.y;
+    if (visible.hierarchy || visible.inspector) left = layout.hierarchy.position.x + layout.hierarchy.size.x + kMargin;
+    if (visible.renderSettings || visible.camera) right = layout.renderSettings.position.x - kMargin;
+    if (visible.log || visible.timeline) bottom = layout.log.position.y - kMargin;
+    const glm::vec4 area{left, top, std::max(right - left, 1.0f), std::max(bottom - top, 1.0f)};
+
+    ImGui::SetNextWindowPos(ImVec2(right - kMargin, bottom - kMargin), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
+                                        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
+                                        ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    if (ImGui::Begin("Viewport bar", nullptr, kFlags)) {
+        auto modeButton = [&gizmo](const char* label, GizmoMode mode, const char* tip) {
+            const bool current = gizmo.mode == mode;
+            if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+            if (ImGui::Button(label)) gizmo.mode = mode;
+            if (current) ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+            ImGui::SameLine();
+        };
+        modeButton("Move", GizmoMode::Translate, "Translate gizmo (W)");
+        modeButton("Rotate", GizmoMode::Rotate, "Rotate gizmo (E)");
+        modeButton("Scale", GizmoMode::Scale, "Scale gizmo (R), always along the node's own axes");
+        if (ImGui::Button(gizmo.space == GizmoSpace::World ? "World" : "Local"))
+            gizmo.space = gizmo.space == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo axes: the world's or the node's own (T)");
+        ImGui::SameLine();
+        GizmoSnap& snap = gizmo.snap;
+        ImGui::Checkbox("Snap", &snap.enabled);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Snap gizmo drags to the steps below (or hold Ctrl while dragging)");
+        ImGui::SameLine();
+        if (ImGui::Button("Steps...")) ImGui::OpenPopup("snap steps");
+        if (ImGui::BeginPopup("snap steps")) {
+            ImGui::SetNextItemWidth(120.0f);
+            ImGui::DragFloat("Move (m)", &snap.translateStep, 0.01f, 0.001f, 100.0f, "%.3f",
+                             ImGuiSliderFlags_Logarithmic);
+            ImGui::SetNextItemWidth(120.0f);
+            ImGui::DragFloat("Rotate (deg)", &snap.rotateStepDegrees, 0.5f, 0.1f, 180.0f, "%.1f");
+            ImGui::SetNextItemWidth(120.0f);
+            ImGui::DragFloat("Scale (factor)", &snap.scaleStep, 0.01f, 0.001f, 10.0f, "%.3f",
+                             ImGuiSliderFlags_Logarithmic);
+            snap.translateStep = std::max(snap.translateStep, 0.001f);
+            snap.rotateStepDegrees = std::max(snap.rotateStepDegrees, 0.1f);
+            snap.scaleStep = std::max(snap.scaleStep, 0.001f);
+            ImGui::EndPopup();
+        }
+        const EditorView* entry = findEditorView(view);
+        ImGui::Text("View: %s (%s)", entry ? std::string(entry->label).c_str() : std::string(view).c_str(),
+                    entry ? std::string(entry->shortcut).c_str() : "-");
+        if (selected > 1) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("| %zu selected", selected);
+        }
+    }
+    ImGui::End();
+    return area;
+}
+
+}  // namespace lit::editor

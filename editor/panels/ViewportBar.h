@@ -1,0 +1,21 @@
+#pragma once
+// The bar in the bottom-right corner of the free viewport area (the stats overlay has the top
+// left): the gizmo's mode, space and snapping, and the name of the view on screen, so a data
+// view is never mistaken for the final image.
+
+#include <cstddef>
+#include <glm/glm.hpp>
+#include <string_view>
+
+#include "EditorState.h"
+#include "TransformGizmo.h"
+
+namespace lit::editor {
+
+// Returns the free viewport area between the panels shown (from the layout: a moved panel is
+// not followed), ImGui units: x, y, width, height. `view`: an EditorViews.h name; `selected`:
+// how many nodes are selected.
+glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, GizmoTool& gizmo, std::string_view view,
+                          std::size_t selected);
+
+}  // namespace lit::editor
