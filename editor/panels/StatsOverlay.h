@@ -16,7 +16,7 @@ namespace lit::editor {
 
 // `voxels`: the renderer's voxel volume (null before GI has run), whose per-texture memory
 // report is the tooltip of the voxel memory line. `renderScale`: the viewport's render scale this
-// frame (lowered while the camera moves, RenderSettings::interactiveFpsTarget).
+// frame (lowered while the camera moves, ViewportSettings::interactiveFpsTarget).
 void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
                       ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels = nullptr,
                       float renderScale = 1.0f);
