@@ -113,7 +113,7 @@ expect_failure("unknown view" 2 "unknown view 'xray'"
 expect_failure("unknown camera" 2 "unknown camera 'nowhere'.*'camera'"
   "${cornell}" --out "${OUT_DIR}/f.png" --size 16x16 --camera nowhere)
 
-# ---- Hostile and out-of-range inputs (issue #14): each a one-line error, exit 2, nothing written
+# ---- Hostile and out-of-range inputs: each a one-line error, exit 2, nothing written
 file(MAKE_DIRECTORY "${OUT_DIR}/a_folder.gltf")
 expect_failure("a folder as the scene" 2 "a_folder\\.gltf: is a directory"
   "${OUT_DIR}/a_folder.gltf" --out "${OUT_DIR}/g.png" --size 16x16)
@@ -180,8 +180,8 @@ if(NOT rc EQUAL 2 OR NOT err MATCHES "needs about [0-9]+ MB, more than the 100 M
   message(FATAL_ERROR "a render over the memory cap: exit ${rc}\n${err}")
 endif()
 
-# A GL error during a render (issue #14: it used to end in exit 0 with the error only in the
-# log) makes lit-render exit 1 with a message and write nothing. LIT_TEST_GL_ERROR=1 makes one
+# A GL error during a render makes lit-render exit 1 with a message and write nothing (not exit 0
+# with the error only in the log, and a wrong image). LIT_TEST_GL_ERROR=1 makes one
 # invalid GL call after the frames (gl::injectGlErrorIfRequested), caught by the same debug
 # output a driver or pass error would reach. A 16x16 render without GI: about a second.
 set(gl_error_png "${OUT_DIR}/gl_error.png")

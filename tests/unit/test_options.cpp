@@ -211,7 +211,7 @@ TEST(Options, ReferenceFlags) {
     EXPECT_EQ(parseOptions({"x.gltf", "--reference", "--out", "r.png"}).referenceSpp(), lit::cli::kDefaultReferenceSpp);
     EXPECT_EQ(parseOptions({"x.gltf", "--reference", "--bounces=2", "--out", "r.png"}).bounces, 2);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--spp", "8"}), "--spp needs --reference");
-    // Without --reference, --bounces sets the voxel GI's bounces (issue #11): at least 1, all = the most.
+    // Without --reference, --bounces sets the voxel GI's bounces: at least 1, all = the most.
     EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "3"}), {}).gi.bounces, 3);
     EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "0"}), {}).gi.bounces, 1);
     EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "all"}), {}).gi.bounces,
