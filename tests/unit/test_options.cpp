@@ -1,16 +1,15 @@
 // lit-render's command line (tools/lit_render/Options.cpp): what is accepted, what it means, and
 // the exact message for what is rejected (the message is the only help a user gets).
 
-#include "Options.h"
-
-#include "scene/Scene.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <string>
 #include <vector>
+
+#include "OptionFlags.h"
+#include "Options.h"
+#include "scene/Scene.h"
 
 namespace {
 
@@ -419,6 +418,36 @@ TEST(Options, GiMode) {
     EXPECT_EQ(lit::toString(GiMode::Accurate), "accurate");
     EXPECT_EQ(lit::toString(GiMode::Cached), "cached");
     EXPECT_NE(lit::cli::usageText().find("--gi-mode MODE       fast, accurate or cached (default cached)"), std::string::npos);
+}
+
+// --help is generated from the flag table: every flag is listed under its group's heading, and
+// every flag listed is one the parser takes.
+TEST(Options, HelpListsEveryFlagUnderItsGroup) {
+    const std::string help = lit::cli::usageText();
+    const auto headingAt = [&](lit::cli::FlagGroup group) {
+        const std::string title(lit::cli::title(group));
+        return title.empty() ? help.find("\n\n") : help.find("\n" + title + ":\n");
+    };
+    for (const char* heading : {"Files", "Settings", "Output", "Sky", "Shadows", "GI", "Indirect", "Debug views",
+                                "Benchmarks", "Camera paths", "Reference"})
+        EXPECT_NE(help.find(std::string("\n") + heading + ":\n"), std::string::npos) << heading;
+    for (const lit::cli::Flag& flag : lit::cli::flagTable()) {
+        const std::size_t start = headingAt(flag.group);
+        ASSERT_NE(start, std::string::npos) << flag.names.front();
+        const std::size_t end = flag.group == lit::cli::kLastFlagGroup
+                                    ? help.size()
+                                    : headingAt(static_cast<lit::cli::FlagGroup>(static_cast<int>(flag.group) + 1));
+        for (const std::string& name : flag.names) {
+            const std::size_t at = help.find(" " + name + (name.starts_with("--") ? " " : ","), start);
+            EXPECT_TRUE(at != std::string::npos && at < end) << name << " is not under its heading";
+        }
+        // The parser knows it: whatever it says about the value, it is not an unknown option.
+        EXPECT_EQ(usageError({"x.gltf", flag.names.front()}).find("unknown option"), std::string::npos)
+            << flag.names.front();
+    }
+    EXPECT_NE(usageError({"x.gltf", "--out", "x.png", "--anisotropic"}).find("was replaced by --gi-mode"),
+              std::string::npos);
+    EXPECT_EQ(help.find("--anisotropic"), std::string::npos) << "replaced flags are not listed";
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
 // lit-render's command line: parsed by a pure function so every accepted and rejected form is a
-// unit test (tests/unit/test_options.cpp), then applied to RenderSettings in one place.
+// unit test (tests/unit/test_options.cpp), then applied to RenderSettings in one place. The flags
+// themselves, with their help, are one table (OptionFlags.h).
 
 #include <cstdint>
 #include <filesystem>
@@ -108,7 +109,8 @@ GiBudget giBudgetFor(const Options& options);
 // was asked for. Throws UsageError listing the scene's cameras when the choice matches none.
 int resolveCamera(const Options& options, const Scene& scene);
 
-// The usage text printed by --help (the short form follows usage errors).
+// The usage text printed by --help, generated from the flag table (the short form follows usage
+// errors).
 std::string usageText();
 std::string shortUsage();
 
