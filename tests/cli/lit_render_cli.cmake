@@ -203,6 +203,19 @@ if(NOT rc EQUAL 0 OR NOT err MATCHES "unknown setting 'sparkles' ignored" OR NOT
   message(FATAL_ERROR "settings with an unknown key and a clamped value: exit ${rc}\n${err}")
 endif()
 
+# --set KEY=VALUE: an older key is read with its deprecation warning; a value lit-render clamps is
+# a warning and the render goes on; a size it cannot render is refused before any GL work.
+run_lit_render("${cornell}" --out "${OUT_DIR}/set.png" --size 16x16 --set gi.enabled=false --set width=8
+  --set debug.voxelSlice=2)
+if(NOT rc EQUAL 0 OR NOT err MATCHES "--set: render settings: 'width' is deprecated; read as output\\.width"
+   OR NOT err MATCHES "--set: debug\\.voxelSlice 2 is outside 0\\.\\.1; using 1")
+  message(FATAL_ERROR "--set with an older key and a clamped value: exit ${rc}\n${err}")
+endif()
+expect_failure("--set out of range" 2 "--set: gi\\.voxelResolution is 100, expected a power of two"
+  "${cornell}" --out "${OUT_DIR}/o.png" --set gi.voxelResolution=100)
+expect_failure("--set unknown key" 2 "--set: unknown render setting 'gi\\.sparkles'"
+  "${cornell}" --out "${OUT_DIR}/o.png" --set gi.sparkles=1)
+
 # A sampler enum glTF does not allow used to end in GL errors and exit 0: now a warning and the
 # default, and no GL error (any would make lit-render exit 1).
 file(MAKE_DIRECTORY "${OUT_DIR}/sampler")

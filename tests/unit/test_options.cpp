@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -418,6 +419,63 @@ TEST(Options, GiMode) {
     EXPECT_EQ(lit::toString(GiMode::Accurate), "accurate");
     EXPECT_EQ(lit::toString(GiMode::Cached), "cached");
     EXPECT_NE(lit::cli::usageText().find("--gi-mode MODE       fast, accurate or cached (default cached)"), std::string::npos);
+}
+
+// --set KEY=VALUE sets any render setting by its "group.field" key: after --settings (the base),
+// before the other flags, in the order given.
+TEST(Options, SetAnyRenderSettingByItsKey) {
+    const Options o = parseOptions({"x.gltf", "--out", "x.png", "--set", "gi.voxelResolution=256", "--set=gi.mode=fast",
+                                    "--set", "indirect.temporalAccumulation=true", "--set", "sky.zenith=[1, 2, 3]",
+                                    "--set", "sky.hdrPath=a=b.hdr", "--set", "debug.view=albedo"});
+    ASSERT_EQ(o.set.size(), 6u);
+    EXPECT_EQ(o.set[0], (lit::cli::SettingAssignment{"gi.voxelResolution", "256"}));
+    const lit::RenderSettings s = applyOptions(o, {});
+    EXPECT_EQ(s.gi.voxelResolution, 256);
+    EXPECT_EQ(s.gi.mode, lit::GiMode::Fast);  // a bare word is a string
+    EXPECT_TRUE(s.indirect.temporalAccumulation);
+    EXPECT_EQ(s.sky.zenith, (std::array<float, 3>{1.0f, 2.0f, 3.0f}));
+    EXPECT_EQ(s.sky.hdrPath, "a=b.hdr");  // the key ends at the first '='
+    EXPECT_EQ(s.debug.view, lit::View::Albedo);
+
+    lit::RenderSettings fromFile;
+    fromFile.gi.bounces = 4;
+    fromFile.gi.voxelResolution = 64;
+    const auto settingsFor = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args{"x.gltf", "--out", "x.png"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        return applyOptions(parseOptions(args), fromFile);
+    };
+    EXPECT_EQ(settingsFor({"--set", "gi.bounces=3"}).gi.bounces, 3) << "--set overrides --settings";
+    EXPECT_EQ(settingsFor({"--set", "gi.bounces=3"}).gi.voxelResolution, 64) << "and nothing else";
+    EXPECT_EQ(settingsFor({"--voxels", "128", "--set", "gi.voxelResolution=256"}).gi.voxelResolution, 128)
+        << "the other flags override --set";
+    EXPECT_EQ(settingsFor({"--set", "gi.bounces=3", "--set", "gi.bounces=1"}).gi.bounces, 1) << "in order";
+
+    // An older flat key is read, with its deprecation message (lit-render prints it as a warning).
+    std::vector<std::string> warnings;
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--set", "voxelResolution=64"}), {}, &warnings)
+                  .gi.voxelResolution,
+              64);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], "render settings: 'voxelResolution' is deprecated; read as gi.voxelResolution");
+
+    EXPECT_EQ(
+        usageError({"x.gltf", "--out", "x.png", "--set", "gi.sparkles=1"}),
+        "--set: unknown render setting 'gi.sparkles' (the keys: renderer/RenderSettings.h, docs/GI.md \"Parameters\")");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set", "gi.voxelResolution=big"}),
+              "--set gi.voxelResolution=big: 'gi.voxelResolution' has the wrong type");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set", "gi.mode=turbo"}),
+              "--set gi.mode=turbo: 'gi.mode' is not a known name");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set", "gi.voxelResolution"}),
+              "--set expects KEY=VALUE (e.g. gi.voxelResolution=256), got 'gi.voxelResolution'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set", "=1"}),
+              "--set expects KEY=VALUE (e.g. gi.voxelResolution=256), got '=1'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set"}), "missing value for --set (expects KEY=VALUE)");
+
+    const std::string help = lit::cli::usageText();
+    EXPECT_NE(help.find("--set KEY=VALUE"), std::string::npos);
+    EXPECT_NE(help.find("renderer/RenderSettings.h and"), std::string::npos);
+    EXPECT_NE(help.find("docs/GI.md, \"Parameters\""), std::string::npos);
 }
 
 // --help is generated from the flag table: every flag is listed under its group's heading, and

@@ -52,6 +52,27 @@ ParseValue integerInto(Member Options::*member, int lo, int hi, std::string expe
     };
 }
 
+// --set KEY=VALUE. The key and the value are tried on default settings now, so a typo is a usage
+// error before anything loads; the values are applied for real in applyOptions.
+void parseSetting(Options& options, const std::string& flag, const std::string& text) {
+    const std::size_t eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw UsageError(got(flag, "KEY=VALUE (e.g. gi.voxelResolution=256)", text));
+    SettingAssignment assignment{text.substr(0, eq), text.substr(eq + 1)};
+    RenderSettings probe;
+    try {
+        setRenderSetting(probe, assignment.key, assignment.value);
+    } catch (const std::exception& e) {
+        std::string reason = e.what();
+        if (reason.starts_with("unknown"))
+            throw UsageError(flag + ": " + reason +
+                             " (the keys: renderer/RenderSettings.h, docs/GI.md \"Parameters\")");
+        if (const std::string prefix = "render settings: "; reason.starts_with(prefix)) reason.erase(0, prefix.size());
+        throw UsageError(flag + " " + text + ": " + reason);
+    }
+    options.set.push_back(std::move(assignment));
+}
+
 }  // namespace
 
 std::string_view title(FlagGroup group) {
@@ -121,8 +142,19 @@ std::vector<Flag> flagTable() {
                      .value = "FILE.json",
                      .expects = "FILE.json",
                      .group = G::Settings,
-                     .help = "RenderSettings JSON (as saved by the editor); the other flags override it",
+                     .help = "RenderSettings JSON (as saved by the editor); --set and the other flags override it",
                      .store = pathInto(&Options::settings)});
+    flags.push_back(
+        {.names = {"--set"},
+         .value = "KEY=VALUE",
+         .expects = "KEY=VALUE",
+         .group = G::Settings,
+         .help = "set any render setting by its JSON key \"group.field\" (gi.voxelResolution=256, gi.mode=fast, "
+                 "indirect.temporalAccumulation=true); the value is JSON or a bare word. Repeatable; applied in "
+                 "order after --settings and before the other flags, so a flag that sets the same value wins. Older "
+                 "flat keys are read with a warning. The keys, their units and ranges: renderer/RenderSettings.h "
+                 "and docs/GI.md, \"Parameters\"",
+         .store = parseSetting});
 
     // ---- Output (RenderSettings::output)
     flags.push_back(

@@ -161,7 +161,14 @@ Options parseOptions(const std::vector<std::string>& args) {
 
 bool Options::pathIsFile() const { return path && lower(std::filesystem::path(*path).extension().string()) == ".json"; }
 
-RenderSettings applyOptions(const Options& options, RenderSettings base) {
+RenderSettings applyOptions(const Options& options, RenderSettings base, std::vector<std::string>* warnings) {
+    for (const SettingAssignment& assignment : options.set) {
+        try {
+            setRenderSetting(base, assignment.key, assignment.value, warnings);
+        } catch (const std::exception& e) {  // parseOptions tried each already; a hand-made Options may not have
+            throw UsageError("--set " + assignment.key + "=" + assignment.value + ": " + e.what());
+        }
+    }
     if (options.width) base.output.width = *options.width;
     if (options.height) base.output.height = *options.height;
     if (options.exposure) base.output.exposureEv = std::log2(*options.exposure);

@@ -34,7 +34,7 @@ inline double secondsSince(Clock::time_point start) {
 // What every run reads, all resolved before the scene loads so a bad file fails at once.
 struct RunContext {
     const Options& options;
-    const RenderSettings& settings;  // --settings with the flags applied
+    const RenderSettings& settings;  // --settings, then --set, then the other flags
     // --compare's reference image, read and checked against the render's size up front; null
     // without --compare.
     const HdrImage* compareTruth = nullptr;

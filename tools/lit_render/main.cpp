@@ -74,11 +74,17 @@ lit::Scene loadScene(const Options& options, lit::Log& log, LoadProgressPrinter&
     }
 }
 
-// --settings, then the flags.
+// --settings, then --set, then the other flags.
 lit::RenderSettings resolveSettings(const Options& options, lit::Log& log) {
-    const lit::RenderSettings settings =
+    lit::RenderSettings settings =
         options.settings.empty() ? lit::RenderSettings{} : loadSettingsFile(options.settings, log);
-    return applyOptions(options, settings);
+    std::vector<std::string> deprecated;
+    settings = applyOptions(options, settings, &deprecated);
+    for (const std::string& message : deprecated) log.warning("--set: " + message);
+    // The file was checked and each flag checks its own value: only --set can have put a value out
+    // of range.
+    if (!options.set.empty()) checkRenderableSettings(settings, "--set", "--set", log);
+    return settings;
 }
 
 int run(const Options& options) {
