@@ -113,7 +113,7 @@ expect_failure("unknown view" 2 "unknown view 'xray'"
 expect_failure("unknown camera" 2 "unknown camera 'nowhere'.*'camera'"
   "${cornell}" --out "${OUT_DIR}/f.png" --size 16x16 --camera nowhere)
 
-# ---- Hostile and out-of-range inputs (issue #14): each a one-line error, exit 2, nothing written
+# ---- Hostile and out-of-range inputs: each a one-line error, exit 2, nothing written
 file(MAKE_DIRECTORY "${OUT_DIR}/a_folder.gltf")
 expect_failure("a folder as the scene" 2 "a_folder\\.gltf: is a directory"
   "${OUT_DIR}/a_folder.gltf" --out "${OUT_DIR}/g.png" --size 16x16)
@@ -180,8 +180,8 @@ if(NOT rc EQUAL 2 OR NOT err MATCHES "needs about [0-9]+ MB, more than the 100 M
   message(FATAL_ERROR "a render over the memory cap: exit ${rc}\n${err}")
 endif()
 
-# A GL error during a render (issue #14: it used to end in exit 0 with the error only in the
-# log) makes lit-render exit 1 with a message and write nothing. LIT_TEST_GL_ERROR=1 makes one
+# A GL error during a render makes lit-render exit 1 with a message and write nothing (not exit 0
+# with the error only in the log, and a wrong image). LIT_TEST_GL_ERROR=1 makes one
 # invalid GL call after the frames (gl::injectGlErrorIfRequested), caught by the same debug
 # output a driver or pass error would reach. A 16x16 render without GI: about a second.
 set(gl_error_png "${OUT_DIR}/gl_error.png")
@@ -202,6 +202,19 @@ run_lit_render("${cornell}" --out "${OUT_DIR}/odd.png" --settings "${OUT_DIR}/od
 if(NOT rc EQUAL 0 OR NOT err MATCHES "unknown setting 'sparkles' ignored" OR NOT err MATCHES "specularSamples 50 is outside 1\\.\\.8; using 8")
   message(FATAL_ERROR "settings with an unknown key and a clamped value: exit ${rc}\n${err}")
 endif()
+
+# --set KEY=VALUE: an older key is read with its deprecation warning; a value lit-render clamps is
+# a warning and the render goes on; a size it cannot render is refused before any GL work.
+run_lit_render("${cornell}" --out "${OUT_DIR}/set.png" --size 16x16 --set gi.enabled=false --set width=8
+  --set debug.voxelSlice=2)
+if(NOT rc EQUAL 0 OR NOT err MATCHES "--set: render settings: 'width' is deprecated; read as output\\.width"
+   OR NOT err MATCHES "--set: debug\\.voxelSlice 2 is outside 0\\.\\.1; using 1")
+  message(FATAL_ERROR "--set with an older key and a clamped value: exit ${rc}\n${err}")
+endif()
+expect_failure("--set out of range" 2 "--set: gi\\.voxelResolution is 100, expected a power of two"
+  "${cornell}" --out "${OUT_DIR}/o.png" --set gi.voxelResolution=100)
+expect_failure("--set unknown key" 2 "--set: unknown render setting 'gi\\.sparkles'"
+  "${cornell}" --out "${OUT_DIR}/o.png" --set gi.sparkles=1)
 
 # A sampler enum glTF does not allow used to end in GL errors and exit 0: now a warning and the
 # default, and no GL error (any would make lit-render exit 1).

@@ -1,5 +1,5 @@
-// lit-render's load progress lines (tools/lit_render/LoadProgressLines.h; issue #13's "lit-render
-// prints load progress (parse, textures, upload) on long loads"). Microseconds.
+// lit-render's load progress lines (tools/lit_render/LoadProgressLines.h): progress (parse,
+// textures, upload) on long loads only. Microseconds.
 #include <gtest/gtest.h>
 
 #include "LoadProgressLines.h"

@@ -1,16 +1,16 @@
 // lit-render's command line (tools/lit_render/Options.cpp): what is accepted, what it means, and
 // the exact message for what is rejected (the message is the only help a user gets).
 
-#include "Options.h"
-
-#include "scene/Scene.h"
-
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
-
 #include <string>
 #include <vector>
+
+#include "OptionFlags.h"
+#include "Options.h"
+#include "scene/Scene.h"
 
 namespace {
 
@@ -211,7 +211,7 @@ TEST(Options, ReferenceFlags) {
     EXPECT_EQ(parseOptions({"x.gltf", "--reference", "--out", "r.png"}).referenceSpp(), lit::cli::kDefaultReferenceSpp);
     EXPECT_EQ(parseOptions({"x.gltf", "--reference", "--bounces=2", "--out", "r.png"}).bounces, 2);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--spp", "8"}), "--spp needs --reference");
-    // Without --reference, --bounces sets the voxel GI's bounces (issue #11): at least 1, all = the most.
+    // Without --reference, --bounces sets the voxel GI's bounces: at least 1, all = the most.
     EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "3"}), {}).gi.bounces, 3);
     EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "0"}), {}).gi.bounces, 1);
     EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "all"}), {}).gi.bounces,
@@ -419,6 +419,93 @@ TEST(Options, GiMode) {
     EXPECT_EQ(lit::toString(GiMode::Accurate), "accurate");
     EXPECT_EQ(lit::toString(GiMode::Cached), "cached");
     EXPECT_NE(lit::cli::usageText().find("--gi-mode MODE       fast, accurate or cached (default cached)"), std::string::npos);
+}
+
+// --set KEY=VALUE sets any render setting by its "group.field" key: after --settings (the base),
+// before the other flags, in the order given.
+TEST(Options, SetAnyRenderSettingByItsKey) {
+    const Options o = parseOptions({"x.gltf", "--out", "x.png", "--set", "gi.voxelResolution=256", "--set=gi.mode=fast",
+                                    "--set", "indirect.temporalAccumulation=true", "--set", "sky.zenith=[1, 2, 3]",
+                                    "--set", "sky.hdrPath=a=b.hdr", "--set", "debug.view=albedo"});
+    ASSERT_EQ(o.set.size(), 6u);
+    EXPECT_EQ(o.set[0], (lit::cli::SettingAssignment{"gi.voxelResolution", "256"}));
+    const lit::RenderSettings s = applyOptions(o, {});
+    EXPECT_EQ(s.gi.voxelResolution, 256);
+    EXPECT_EQ(s.gi.mode, lit::GiMode::Fast);  // a bare word is a string
+    EXPECT_TRUE(s.indirect.temporalAccumulation);
+    EXPECT_EQ(s.sky.zenith, (std::array<float, 3>{1.0f, 2.0f, 3.0f}));
+    EXPECT_EQ(s.sky.hdrPath, "a=b.hdr");  // the key ends at the first '='
+    EXPECT_EQ(s.debug.view, lit::View::Albedo);
+
+    lit::RenderSettings fromFile;
+    fromFile.gi.bounces = 4;
+    fromFile.gi.voxelResolution = 64;
+    const auto settingsFor = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args{"x.gltf", "--out", "x.png"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        return applyOptions(parseOptions(args), fromFile);
+    };
+    EXPECT_EQ(settingsFor({"--set", "gi.bounces=3"}).gi.bounces, 3) << "--set overrides --settings";
+    EXPECT_EQ(settingsFor({"--set", "gi.bounces=3"}).gi.voxelResolution, 64) << "and nothing else";
+    EXPECT_EQ(settingsFor({"--voxels", "128", "--set", "gi.voxelResolution=256"}).gi.voxelResolution, 128)
+        << "the other flags override --set";
+    EXPECT_EQ(settingsFor({"--set", "gi.bounces=3", "--set", "gi.bounces=1"}).gi.bounces, 1) << "in order";
+
+    // An older flat key is read, with its deprecation message (lit-render prints it as a warning).
+    std::vector<std::string> warnings;
+    EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--set", "voxelResolution=64"}), {}, &warnings)
+                  .gi.voxelResolution,
+              64);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], "render settings: 'voxelResolution' is deprecated; read as gi.voxelResolution");
+
+    EXPECT_EQ(
+        usageError({"x.gltf", "--out", "x.png", "--set", "gi.sparkles=1"}),
+        "--set: unknown render setting 'gi.sparkles' (the keys: renderer/RenderSettings.h, docs/GI.md \"Parameters\")");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set", "gi.voxelResolution=big"}),
+              "--set gi.voxelResolution=big: 'gi.voxelResolution' has the wrong type");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set", "gi.mode=turbo"}),
+              "--set gi.mode=turbo: 'gi.mode' is not a known name");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set", "gi.voxelResolution"}),
+              "--set expects KEY=VALUE (e.g. gi.voxelResolution=256), got 'gi.voxelResolution'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set", "=1"}),
+              "--set expects KEY=VALUE (e.g. gi.voxelResolution=256), got '=1'");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--set"}), "missing value for --set (expects KEY=VALUE)");
+
+    const std::string help = lit::cli::usageText();
+    EXPECT_NE(help.find("--set KEY=VALUE"), std::string::npos);
+    EXPECT_NE(help.find("renderer/RenderSettings.h and"), std::string::npos);
+    EXPECT_NE(help.find("docs/GI.md, \"Parameters\""), std::string::npos);
+}
+
+// --help is generated from the flag table: every flag is listed under its group's heading, and
+// every flag listed is one the parser takes.
+TEST(Options, HelpListsEveryFlagUnderItsGroup) {
+    const std::string help = lit::cli::usageText();
+    const auto headingAt = [&](lit::cli::FlagGroup group) {
+        const std::string title(lit::cli::title(group));
+        return title.empty() ? help.find("\n\n") : help.find("\n" + title + ":\n");
+    };
+    for (const char* heading : {"Files", "Settings", "Output", "Sky", "Shadows", "GI", "Indirect", "Debug views",
+                                "Benchmarks", "Camera paths", "Reference"})
+        EXPECT_NE(help.find(std::string("\n") + heading + ":\n"), std::string::npos) << heading;
+    for (const lit::cli::Flag& flag : lit::cli::flagTable()) {
+        const std::size_t start = headingAt(flag.group);
+        ASSERT_NE(start, std::string::npos) << flag.names.front();
+        const std::size_t end = flag.group == lit::cli::kLastFlagGroup
+                                    ? help.size()
+                                    : headingAt(static_cast<lit::cli::FlagGroup>(static_cast<int>(flag.group) + 1));
+        for (const std::string& name : flag.names) {
+            const std::size_t at = help.find(" " + name + (name.starts_with("--") ? " " : ","), start);
+            EXPECT_TRUE(at != std::string::npos && at < end) << name << " is not under its heading";
+        }
+        // The parser knows it: whatever it says about the value, it is not an unknown option.
+        EXPECT_EQ(usageError({"x.gltf", flag.names.front()}).find("unknown option"), std::string::npos)
+            << flag.names.front();
+    }
+    EXPECT_NE(usageError({"x.gltf", "--out", "x.png", "--anisotropic"}).find("was replaced by --gi-mode"),
+              std::string::npos);
+    EXPECT_EQ(help.find("--anisotropic"), std::string::npos) << "replaced flags are not listed";
 }
 
 }  // namespace

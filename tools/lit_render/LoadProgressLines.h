@@ -1,9 +1,9 @@
 #pragma once
-// lit-render's load progress on stderr (issue #13: "lit-render prints load progress on long
-// loads"), as a pure function of the loader's reports and the seconds since the load began, so
-// tests/unit/test_load_progress_lines.cpp can check it without a slow load: silent for the first
-// second (a short load prints nothing), then "loading: STAGE DONE/TOTAL, T s" when the stage
-// changes, a stage ends, or a second has passed since the last line.
+// lit-render's load progress on stderr, so a long load (a large scene's parse, textures and upload)
+// does not look like a hang, as a pure function of the loader's reports and the seconds since the
+// load began, so tests/unit/test_load_progress_lines.cpp can check it without a slow load: silent
+// for the first second (a short load prints nothing), then "loading: STAGE DONE/TOTAL, T s" when
+// the stage changes, a stage ends, or a second has passed since the last line.
 
 #include "scene/GltfLoader.h"
 

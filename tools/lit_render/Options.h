@@ -1,6 +1,7 @@
 #pragma once
 // lit-render's command line: parsed by a pure function so every accepted and rejected form is a
-// unit test (tests/unit/test_options.cpp), then applied to RenderSettings in one place.
+// unit test (tests/unit/test_options.cpp), then applied to RenderSettings in one place. The flags
+// themselves, with their help, are one table (OptionFlags.h).
 
 #include <cstdint>
 #include <filesystem>
@@ -34,6 +35,12 @@ inline constexpr int kMaxReferenceSpp = 1 << 20;  // a guard against typos
 inline constexpr int kMaxReferenceBounces = 64;   // --bounces N; "all" is unbounded (Russian roulette)
 inline constexpr int kAllReferenceBounces = -1;   // --bounces all
 inline constexpr float kDefaultMaxError = 0.5f;   // --max-error: ±50 % at the Difference ramp's ends (the editor's default)
+
+// --set KEY=VALUE: one render setting by its "group.field" JSON key, as typed.
+struct SettingAssignment {
+    std::string key, value;
+    bool operator==(const SettingAssignment&) const = default;
+};
 
 struct Options {
     bool help = false;                 // --help: print usage, ignore the rest
@@ -71,6 +78,7 @@ struct Options {
     int benchFrames = 0;               // 0 = no benchmark
     std::filesystem::path benchJson;   // --json: benchmark results as JSON
     std::filesystem::path settings;    // --settings: RenderSettings JSON applied before the flags
+    std::vector<SettingAssignment> set;  // --set KEY=VALUE, in the order given: after --settings, before the flags
     // Camera paths: --path FILE.json (a path file) or NAME (a camera animation in the scene file).
     std::optional<std::string> path;
     std::optional<double> fps;         // --fps: frames per second along the path
@@ -97,8 +105,9 @@ struct Options {
 // flags that do not go together (--frames-out without --path, --path with --out, ...).
 Options parseOptions(const std::vector<std::string>& args);
 
-// `base` (defaults or a --settings file) with the flags that were given applied on top.
-RenderSettings applyOptions(const Options& options, RenderSettings base);
+// `base` (defaults or a --settings file) with --set and then the other flags that were given
+// applied on top. The deprecation messages of older keys given to --set go to `warnings`.
+RenderSettings applyOptions(const Options& options, RenderSettings base, std::vector<std::string>* warnings = nullptr);
 // The GI work each frame may do: converge (everything pending, the refinement included) unless
 // --single-frame or the per-frame flags say otherwise.
 GiBudget giBudgetFor(const Options& options);
@@ -108,7 +117,8 @@ GiBudget giBudgetFor(const Options& options);
 // was asked for. Throws UsageError listing the scene's cameras when the choice matches none.
 int resolveCamera(const Options& options, const Scene& scene);
 
-// The usage text printed by --help (the short form follows usage errors).
+// The usage text printed by --help, generated from the flag table (the short form follows usage
+// errors).
 std::string usageText();
 std::string shortUsage();
 

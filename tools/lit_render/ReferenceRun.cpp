@@ -1,0 +1,132 @@
+#include "ReferenceRun.h"
+
+#include <tbb/info.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "Compare.h"
+#include "Log.h"
+#include "image/ImageIO.h"
+#include "reference/DifferenceImage.h"
+#include "reference/PathTracer.h"
+#include "reference/ReferenceScene.h"
+#include "scene/CameraView.h"
+#include "scene/Scene.h"
+#include "scene/Sky.h"
+
+namespace lit::cli {
+
+namespace {
+
+// Set by SIGINT while a reference render runs: the render stops after the tiles in flight and
+// writes the image so far. A lock-free atomic is async-signal-safe; a signal handler has no other
+// way to reach the render than through static storage.
+std::atomic<bool>& interruptRequested() {
+    static std::atomic<bool> requested{false};
+    return requested;
+}
+extern "C" void onInterrupt(int) { interruptRequested().store(true); }
+
+}  // namespace
+
+int runReference(const RunContext& run, const Scene& scene, int cameraIndex) {
+    const Options& options = run.options;
+    const RenderSettings& settings = run.settings;
+    Log& log = run.log;
+    const Clock::time_point buildStart = Clock::now();
+    // A scene without lights is lit by the rasterizer's default sun (scene/Sky.h); give the
+    // reference the same sun as a light of its own copy of the scene.
+    lit::Scene withSun = scene;
+    lit::addDefaultSun(withSun, settings);
+    const lit::reference::ReferenceScene referenceScene(withSun, log);
+    const double buildSeconds = secondsSince(buildStart);
+    const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
+    const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
+
+    lit::reference::ReferenceSettings reference;
+    // Without --bounces the reference follows --gi and the settings' bounces: the same light paths
+    // as the VCT, or direct light only.
+    reference.bounces = options.bounces.value_or(settings.gi.enabled ? settings.gi.bounces : 0);
+    reference.seed = options.seed.value_or(0);
+    // Rays that leave the scene see the same sky as the rasterizer's background and cones.
+    std::string skyError;
+    reference.environment = lit::makeSkyFunction(scene, settings, &skyError);
+    if (!skyError.empty()) log.error(skyError + "; using the gradient sky");
+    lit::reference::PathTracer tracer(referenceScene, camera, settings.output.width, settings.output.height, reference);
+
+    interruptRequested().store(false);
+    struct sigaction action {};
+    action.sa_handler = onInterrupt;
+    sigemptyset(&action.sa_mask);
+    struct sigaction previous {};
+    sigaction(SIGINT, &action, &previous);
+
+    const int spp = options.referenceSpp();
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    const Clock::time_point renderStart = Clock::now();
+    double lastPrint = -1.0;
+    bool interrupted = false;
+    bool printed = false;
+    while (tracer.samplesDone() < spp) {
+        if (!tracer.addSamples(1, &interruptRequested())) {
+            interrupted = true;
+            break;
+        }
+        const double elapsed = secondsSince(renderStart);
+        const int done = tracer.samplesDone();
+        if (elapsed - lastPrint >= (terminal ? 0.2 : 1.0) || done == spp) {
+            lastPrint = elapsed;
+            printed = true;
+            const double raysPerSecond = elapsed > 0.0 ? static_cast<double>(tracer.raysTraced()) / elapsed : 0.0;
+            const double remaining = elapsed / done * (spp - done);
+            char line[160];
+            std::snprintf(line, sizeof line, "reference: %d/%d spp, %.2f Mrays/s, %.1f s elapsed, ETA %.1f s", done,
+                          spp, raysPerSecond * 1e-6, elapsed, remaining);
+            if (terminal)
+                std::fprintf(stderr, "\r%-72s", line);
+            else
+                std::fprintf(stderr, "%s\n", line);
+            std::fflush(stderr);
+        }
+    }
+    sigaction(SIGINT, &previous, nullptr);
+    if (printed && terminal) std::fputc('\n', stderr);
+    const double seconds = secondsSince(renderStart);
+
+    const std::string bounces =
+        reference.bounces == lit::reference::kAllBounces ? "all" : std::to_string(reference.bounces);
+    std::printf(
+        "reference: %dx%d, %u spp (min per pixel), bounces %s, seed %llu: %.1f M rays in %.2f s = %.2f Mrays/s "
+        "on %d threads (scene build %.2f s, %zu triangles)\n",
+        settings.output.width, settings.output.height, tracer.image().minSamples(), bounces.c_str(),
+        static_cast<unsigned long long>(reference.seed), static_cast<double>(tracer.raysTraced()) * 1e-6, seconds,
+        seconds > 0.0 ? static_cast<double>(tracer.raysTraced()) / seconds * 1e-6 : 0.0,
+        tbb::info::default_concurrency(), buildSeconds, referenceScene.triangleCount());
+
+    const std::vector<float> rgb = tracer.image().viewRgb(settings.debug.view, settings);
+    std::string written;
+    if (!options.out.empty()) {
+        lit::writePng(options.out, settings.output.width, settings.output.height,
+                      lit::reference::toneMapToRgba8(rgb, settings.output.exposureScale()));
+        written = options.out.string();
+    }
+    if (!options.hdr.empty()) {
+        lit::writeHdr(options.hdr, settings.output.width, settings.output.height, rgb);
+        written += (written.empty() ? "" : " and ") + options.hdr.string();
+    }
+    if (!written.empty()) std::printf("wrote %s\n", written.c_str());
+    if (run.compareTruth) compareWithReference(options, *run.compareTruth, rgb);
+    if (interrupted) {
+        std::fprintf(stderr, "lit-render: interrupted after %d of %d samples per pixel; the image so far was written\n",
+                     tracer.samplesDone(), spp);
+        return 130;  // the shell's status for a SIGINT
+    }
+    return 0;
+}
+
+}  // namespace lit::cli

@@ -1,0 +1,76 @@
+#include "StillRun.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "Bench.h"
+#include "Compare.h"
+#include "GiUpdateBench.h"
+#include "Renderer.h"
+#include "gl/Capabilities.h"
+#include "image/ImageIO.h"
+#include "scene/CameraView.h"
+#include "scene/Scene.h"
+
+namespace lit::cli {
+
+int runStill(const RunContext& run, Scene& scene, int cameraIndex, const GlRun& gl) {
+    const Options& options = run.options;
+    const RenderSettings& settings = run.settings;
+    Renderer& renderer = gl.renderer;
+    const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
+    const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
+
+    const Clock::time_point renderStart = Clock::now();
+    BenchResult bench;
+    // With temporal accumulation a still renders until the history is full, so it shows the
+    // converged image (docs/GI.md, "Temporal accumulation"); --frames or --bench choose the count
+    // themselves.
+    const int frames = settings.indirect.temporalAccumulation && !options.frames && options.benchFrames == 0
+                           ? std::max(settings.indirect.temporalMaxFrames, 1)
+                           : options.frameCount();
+    for (int frame = 0; frame < frames; ++frame) {
+        const Clock::time_point frameStart = Clock::now();
+        renderer.render(scene, camera, settings, giBudgetFor(options));
+        if (options.benchFrames > 0) recordBenchFrame(bench, renderer, frameStart);
+    }
+    lit::gl::injectGlErrorIfRequested();  // LIT_TEST_GL_ERROR=1: the test of the check below
+    glFinish();
+    if (settings.output.autoExposure)
+        std::printf("auto exposure: %+.2f EV\n", static_cast<double>(renderer.exposureEv(settings)));
+    if (options.benchFrames > 0 && settings.gi.enabled) bench.mipmaps = renderer.benchmarkMipmaps(7);
+    if (options.giUpdateRounds > 0 && settings.gi.enabled)
+        benchGiUpdates(options.giUpdateRounds, scene, camera, renderer, settings, giBudgetFor(options));
+
+    if (options.benchFrames > 0) {
+        printBench(bench, settings, renderer.stats());
+        if (!options.benchJson.empty())
+            writeBenchJson(options.benchJson, benchJson(bench, options, settings, gl.device, renderer.stats()));
+    }
+
+    gl.requireNoGlErrors();
+    std::string written;
+    if (!options.out.empty()) {
+        const std::vector<std::uint8_t> rgba = renderer.readOutputRgba8();
+        lit::writePng(options.out, settings.output.width, settings.output.height, rgba);
+        written = options.out.string();
+    }
+    if (!options.hdr.empty() || run.compareTruth) {
+        const std::vector<float> rgb = renderer.readHdrRgb();
+        if (!options.hdr.empty()) {
+            lit::writeHdr(options.hdr, settings.output.width, settings.output.height, rgb);
+            written += (written.empty() ? "" : " and ") + options.hdr.string();
+        }
+        if (run.compareTruth) compareWithReference(options, *run.compareTruth, rgb);
+    }
+    if (!written.empty())
+        std::printf("wrote %s (%d\u00d7%d, %.2f s)\n", written.c_str(), settings.output.width, settings.output.height,
+                    secondsSince(renderStart));
+    return 0;
+}
+
+}  // namespace lit::cli
