@@ -8,20 +8,20 @@
 // k times (k = 1 is direct light only), so a pixel that traces it sees k + 1 bounces in all.
 // Voxels whose normals disagree (both sides of a thin wall) gather over both hemispheres and
 // average them, as injection lights them from both sides. Voxels are treated as Lambertian
-// (metals too: docs/GI.md, known limitations).
+// (metals too: docs/GI.md, "Known limits").
 //
 // Work: as inject.comp.glsl, the occupied-voxel list (uFromList = 1; glDispatchComputeIndirect with
 // the dispatch size the voxelization wrote, LIT_INJECT_LIST_GROUP_SIZE entries per group) or,
 // when the list overflowed, the whole grid in 8³ groups. Only occupied voxels trace cones, and
 // over the grid a SIMD vector that holds one of them pays for the whole vector's cones: the
-// list packs occupied voxels densely (docs/GI.md, "Bounces", measured 128³).
+// list packs occupied voxels densely (docs/GI.md, "Bounces").
 //
 // Accurate mode (LIT_CONE_FOOTPRINT, footprint-bounded cones): a voxel traces one of the
 // stratified cone sets of cone_strata.glsl instead of the fixed six-cone set, chosen by its
 // coordinates across its surface (voxelConeSetIndex), so that each 4 × 4 patch of a surface's voxels
-// holds all 16 sets and the mip levels the pixels' cones read average them (docs/GI.md, "The
-// cone-direction view and the bounces with the stratified sets"). The fixed set's pencils would otherwise give every voxel the same
-// few directions (what they happen to hit), as they did to the pixels before the sets.
+// holds all 16 sets and the mip levels the pixels' cones read average them (docs/GI.md, "Stratified
+// cone sets"). The fixed set's pencils would otherwise give every voxel the same few directions
+// (what they happen to hit).
 //
 // Voxel rays (LIT_VOXEL_RAYS 1, GiSettings::voxelRays > 0, docs/GI.md "Voxel rays"): instead
 // of cones, uVoxelRays cosine-distributed rays per voxel, each marched through the voxel grid to
@@ -76,7 +76,7 @@ uniform int uVoxelRays;
 
 // Empty blocks of 16³ and of 4³ voxels (levels 4 and 2 of the radiance volume are 0 exactly where
 // nothing is below them: docs/GI.md, "Mipmaps over the occupied parents") are crossed in one step;
-// the 16³ blocks halve the pass at 256³ in the Cornell box (24-29 s → 13.4-13.6 s on llvmpipe).
+// the 16³ blocks halve the pass at 256³ in the Cornell box on llvmpipe (docs/GI.md, "Voxel rays").
 const int kRaySkipLevelCoarse = 4;
 const int kRaySkipLevel = 2;
 const int kRayMaxSteps = 2048;
@@ -89,13 +89,13 @@ const float kRayBackFaceCosine = 0.5;
 // A one-sided voxel (averaged normal at least kRayPlaneMinLength long: a surface, or an edge or
 // corner of one) is solid only behind its surface: the part of the voxel behind the plane through
 // the point of its surface the voxelization recorded (voxelSurfacePoint), with its averaged normal
-// (at an edge, a bevel across it); docs/GI.md, "Rays that end on the surface, not on the voxel":
+// (at an edge, a bevel across it); docs/GI.md, "Rays that end on the surface":
 // - a ray ends in such a voxel if it is behind that plane where it enters or leaves the voxel, and
 //   passes on if it stays in front. Behind, not only across: a slanted plane is written to one voxel
 //   per column (voxelize.frag.glsl) but runs on into the column's next voxel, where a ray can cross
 //   it unseen, and then meets the voxels of that surface from behind (the sealed room turned 30°
 //   and 12°, walls 1.5 voxels thick at 128³, let in 4.1 % of the outside light when rays ended only
-//   on a crossing, 2.8 % so; 0.8 % when voxels were cubes: docs/GI.md for why).
+//   on a crossing, 2.8 % so; 0.8 % when voxels were cubes; why they are not, below).
 //   A voxel's faces lie up to a voxel off its surface, so rays that ended on them saw every
 //   object up to a voxel larger: a 2 m roof 0.95 m above a floor hid 0.60 / 0.83 of the closed form's
 //   sky at 64³ / 128³ (tests/gl/test_scene_defaults.cpp), and the Cornell floor in the blocks' shadows

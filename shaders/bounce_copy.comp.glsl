@@ -3,7 +3,7 @@
 // (bounce.comp.glsl wrote it for every entry of the occupied list) into level 0 of the radiance
 // volume. Only the list: empty voxels hold 0 in level 0 since the voxelization, and a copy of the
 // whole N³ volume moved 33 times the occupied voxels on Sponza at 256³ (3 % occupied; the
-// whole-volume copies cost 10-14 ms each on llvmpipe there, docs/PERFORMANCE.md). Define set by InjectPass: LIT_BOUNCE_RGBA8 (the volumes' format).
+// whole-volume copies cost 10-14 ms each on llvmpipe there). Define set by InjectPass: LIT_BOUNCE_RGBA8 (the volumes' format).
 #include "voxel.glsl"
 
 layout(local_size_x = LIT_INJECT_LIST_GROUP_SIZE) in;

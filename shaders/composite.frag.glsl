@@ -19,7 +19,7 @@ layout(binding = LIT_TEX_DEBUG_INPUT) uniform sampler2DArray debugShadowMap;
 
 // 1: the final view's program (PostPass::composite picks it for View::Final), without the other
 // views' branches: llvmpipe runs a uniform branch's body with every lane masked off, and those
-// branches cost the post pass 10 of its 30 ms at 1280×720 (docs/PERFORMANCE.md, sixteenth session).
+// branches cost the post pass 10 of its 30 ms at 1280×720 (docs/PERFORMANCE.md, "llvmpipe").
 #ifndef LIT_COMPOSITE_FINAL_ONLY
 #define LIT_COMPOSITE_FINAL_ONLY 0
 #endif

@@ -49,11 +49,11 @@ uniform int uConeSubset;         // LIT_CONE_SUBSETS: this frame's phase (0..4) 
 //   D = W_0·C_0 + (1 − W_0)·½(C_k + C_{k+2})
 // is exact in a uniform field (the furnace holds every frame) and its mean over the five phases
 // is the full set's W_0·C_0 + Σ W_i·C_i (each side cone is in two of the five pairs, W_i = (1 − W_0)/5);
-// the temporal accumulation averages the phases (docs/GI.md). With footprint-bounded cones (the
-// accurate mode) the cones are those of the texel's stratified set (cone_strata.glsl), whose
-// regions have the fixed table's weights, so the same estimate holds per set; the strata filter
-// then averages the texels' sets as without subsets, and since the accurate mode's sets do not
-// turn with the frame, five frames of one texel are exactly its whole set.
+// the temporal accumulation averages the phases (docs/GI.md, "Cone subsets"). With
+// footprint-bounded cones (the accurate mode) the cones are those of the texel's stratified set
+// (cone_strata.glsl), whose regions have the fixed table's weights, so the same estimate holds per
+// set; the strata filter then averages the texels' sets as without subsets, and since the accurate
+// mode's sets do not turn with the frame, five frames of one texel are exactly its whole set.
 #ifndef LIT_CONE_SUBSETS
 #define LIT_CONE_SUBSETS 0
 #endif
@@ -120,8 +120,8 @@ void main() {
     // No diffuse cones to reuse: a lobe wide enough to have reused them (a rough lobe on a diffuse
     // surface) takes the gathered irradiance/π, the cosine-weighted mean radiance over the
     // hemisphere, in their place; it loses the lobe's direction, which the six cones' weighting
-    // kept. Measured (docs/GI.md, ninth session): Cornell regions +2-5 %, the frame 0.70-0.76× of
-    // tracing the lobes. Narrower lobes trace their own cones.
+    // kept: the Cornell regions read 2-5 % more, the frame costs 0.70-0.76× of tracing the lobes
+    // (docs/GI.md, "Indirect specular: GGX cones"). Narrower lobes trace their own cones.
     bool lobeFromIrradiance = reuse;
     reuse = false;
 #endif

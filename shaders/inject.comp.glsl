@@ -103,7 +103,7 @@ void main() {
         // room's inner edges, where a wall's end meets the next wall's face, that point is in the
         // room's shadow while the point a voxel out can be outside it, and the voxel rays, which pass
         // in front of one-sided voxels to these (bounce.comp.glsl), saw that light inside: the sealed
-        // room let in 0.73 % of the outside light at 128³, 0.42 % with this (docs/GI.md).
+        // room let in 0.73 % of the outside light at 128³, 0.42 % with this (docs/GI.md, "Injection").
         if (!oneSided)
             visibility *= shadowVisibility(light, centre + facing * (0.5 * voxelSize), facing, kShadowPcfRadius,
                                            kShadowNormalOffsetTexels);

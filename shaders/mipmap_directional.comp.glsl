@@ -7,10 +7,10 @@
 //     parent_pair = front + (1 − front.a) · back        (rgb and a alike)
 // and the 4 pairs averaged (their share of the parent's cross-section). A wall one voxel thick
 // stays opaque seen face-on at every level, but covers only 2^-k of the cross-section seen
-// edge-on at level k (the isotropic stacked mips made it opaque from every side, so a surface
-// occluded and lit itself through its own coarse voxels: docs/GI.md). Seen from inside a closed
-// room, a coarse voxel that holds the wall and what lies behind it shows the wall's inner side:
-// the outside no longer bleeds in.
+// edge-on at level k (the isotropic stacked mips make it opaque from every side, so a surface
+// occludes and lights itself through its own coarse voxels: docs/GI.md, "Anisotropic voxels").
+// Seen from inside a closed room, a coarse voxel that holds the wall and what lies behind it shows
+// the wall's inner side, so the outside does not bleed in.
 //
 // Level 1 is built from the isotropic level 0 and the voxels' normals (directional emission):
 // a Lambertian surface sends its radiance only to the side it faces, so a child whose averaged
@@ -57,17 +57,18 @@ uniform ivec3 uFace;  // x axis (0 X, 1 Y, 2 Z), y 1 if the cone travels towards
 uniform ivec2 uOffsets;
 
 #if LIT_DIRECTIONAL_FROM_ISO
-// Surfaces seen edge-on on a slab (issue #11, the sealed room's leak). A face seen edge-on keeps its
+// Surfaces seen edge-on on a slab (the sealed room's leak). A face seen edge-on keeps its
 // light (weight 1, above), which is right for a lone surface: a cone that grazes a floor from above
 // sees the floor's light. But the outer face of a wall only a few voxels thick is seen edge-on by
 // a directional face of every coarse voxel that holds the wall, and such a voxel is also what a
 // cone from INSIDE the room samples: the face that sees the wall edge-on showed the sunlit outside
 // to it (1.36 % / 1.17 % of the outside radiance leaked into the benchmark's sealed room at
-// 128³ / 256³, 0.2 m walls, footprint bound 0.25: docs/GI.md). Six faces cannot tell from which
-// side of the slab a cone comes, but a cone can reach the edge-on face only from the side it faces,
-// where the face along the normal (weight 1) already shows it. So a surface whose slab's other
-// side lies right behind it (an occupied level-0 voxel within kBackedSearchVoxels against its
-// normal, whose normal points the other way or which holds both sides) sends no light edge-on.
+// 128³ / 256³, 0.2 m walls, footprint bound 0.25: docs/GI.md, "Anisotropic voxels"). Six faces
+// cannot tell from which side of the slab a cone comes, but a cone can reach the edge-on face only
+// from the side it faces, where the face along the normal (weight 1) already shows it. So a
+// surface whose slab's other side lies right behind it (an occupied level-0 voxel within
+// kBackedSearchVoxels against its normal, whose normal points the other way or which holds both
+// sides) sends no light edge-on.
 // Surfaces with nothing behind them within that distance (single-sided walls, the Cornell box's
 // hollow blocks away from their edges) keep weight 1: the Cornell regions are unchanged to two
 // digits, the sealed room leaks 0.32 % / 0.16 % (weight ½ instead of 0: 0.84 % / 0.66 %).

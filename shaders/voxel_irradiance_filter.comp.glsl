@@ -1,6 +1,6 @@
 #version 450 core
-// Voxel irradiance strata filter (InjectPass::executeIrradiance, the cached GI mode; docs/GI.md,
-// "The cached mode: the irradiance filtered over the cone sets (tenth session)").
+// Voxel irradiance strata filter (IrradianceFilterPass, the cached GI mode; docs/GI.md,
+// "The filter").
 //
 // Each voxel traces one of the 16 stratified cone sets (bounce.comp.glsl, voxelConeSetIndex: the
 // 4 × 4 pattern over the two axes that run along its surface), so the traced irradiance carries

@@ -39,9 +39,9 @@ float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
 // Extra enlargement (pixels) beyond the half pixel, on the edges and the bounding box: a row or
 // column that a triangle only touches (its edge lies exactly on the face between two voxels, as
 // the Cornell box's block sides' top edges do at 64³) sits on the enlarged edge itself, and whether
-// the rasterizer covers it then depends on sub-pixel snapping. Without the margin such rows were
+// the rasterizer covers it then depends on sub-pixel snapping. Without the margin such rows are
 // written or skipped by the grid's alignment (ceiling and back wall 1.03-1.14 of the reference over
-// grid offsets, 1.03-1.08 with it: docs/GI.md, "Rules for surfaces on voxel faces"). 10⁻³ pixel
+// grid offsets, 1.03-1.08 with it: docs/GI.md, "Surfaces on voxel faces"). 10⁻³ pixel
 // is below llvmpipe's snapping (8 sub-pixel bits, 1/256 pixel) and changed nothing; 0.01 is above.
 const float kTouchMargin = 0.01;
 

@@ -34,8 +34,8 @@ struct RoomMaterials {
     int white, red, green, floor;
 };
 
-// Variants of the Cornell room for telling a tracer's defect from a scene's property (issue #11:
-// the red-wall shadow): x mirrored (every x negated, so the turns about y too), or the two coloured
+// Variants of the Cornell room for telling a tracer's defect from a scene's property (the
+// red-wall nook's shadow): x mirrored (every x negated, so the turns about y too), or the two coloured
 // walls' materials swapped. Node names stay with the colour (the accuracy regions find the red
 // wall by name and take the floor on its side).
 struct RoomVariant {

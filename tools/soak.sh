@@ -15,8 +15,8 @@
 # view, nothing selected), so block ends compare like with like; samples at arbitrary moments
 # would differ by the 128^3 voxel volumes a block allocates and frees.
 #
-# Passes when, from the first block end after WARMUP_SECONDS (default 120: issue #14 asks for less
-# than 5 % resident growth "from minute 2 to the end" of a 10-minute soak) to the last block end,
+# Passes when, from the first block end after WARMUP_SECONDS (default 120: the bar is less than 5 %
+# resident growth "from minute 2 to the end" of a 10-minute soak) to the last block end,
 #   - the heap in use grows by less than 5 % (what the process has allocated and not freed: a
 #     leak in our code or in the driver's malloc'd objects, llvmpipe's textures among them), and
 #   - the resident size grows by less than 5 % (leaks outside malloc too: mappings, JIT code),

@@ -3,7 +3,7 @@
 // combination of the optional cone features (anisotropic voxels, footprint-bounded cones).
 // llvmpipe runs both sides of a branch, a uniform one included, so a feature behind a runtime
 // `if` costs its texture reads whether it is on or not: the anisotropic branch in sampleRadiance
-// made the cone trace 3-4× slower with every feature off (docs/GI.md, "Cost"). Each variant is
+// made the cone trace 3-4× slower with every feature off (docs/GI.md, "Modes"). Each variant is
 // built on first use, so settings that stay at their defaults compile one program.
 
 #include <filesystem>
@@ -21,7 +21,7 @@ struct RenderSettings;
 struct ConeFeatures {
     bool anisotropic = false;  // directional voxels for levels ≥ 1 (GiSettings::anisotropicVoxels())
     bool footprint = false;    // footprint-bounded diffuse cones (GiSettings::coneFootprintPerHeight > 0)
-    // The cached GI mode (docs/GI.md, "The cached mode"): L_ID gathered from the voxels' cached
+    // The cached GI mode (docs/GI.md, "Voxel irradiance cache"): L_ID gathered from the voxels' cached
     // irradiance (GiSettings::voxelIrradiance()) instead of per-pixel diffuse cones.
     bool voxelIrradiance = false;
     // Rays per voxel for the light the voxels gather themselves (the cached mode's irradiance and

@@ -8,9 +8,9 @@
 //   the 4 pairs are averaged; the parent is the axis with the largest a (exactly tied axes:
 //   their colours averaged).
 // A one-voxel wall stays (C, 1) at every level instead of fading to 2^-k, so wide cones reading
-// coarse levels no longer see through it; empty space stays 0, a uniform region (L, 1) stays
+// coarse levels do not see through it; empty space stays 0, a uniform region (L, 1) stays
 // (L, 1), and rgb/a stays a weighted mean of the children's colours (no dark edges).
-// glGenerateTextureMipmap (a plain average) is only a speed reference now.
+// glGenerateTextureMipmap (a plain average) is only a speed reference (docs/PERFORMANCE.md, "Mipmaps").
 //
 // Every level is rounded to the texture's format before the next is built from it: RGBA8 is
 // reduced in exact integer arithmetic on the bytes, RGBA16F in fp32 in a fixed order; the CPU
@@ -48,7 +48,7 @@ public:
     // tracing (texture fetches) and image loads see every level. Changes the current program and
     // image units LIT_IMG_MIP_SOURCE, LIT_IMG_MIP_DEST, LIT_IMG_MIP_DEST2, LIT_IMG_MIP_DEST3.
     // With `anisotropic`, also builds the six directional chains (executeDirectional): only then,
-    // because they cost ~10× the isotropic chain on llvmpipe (docs/GI.md, "Cost").
+    // because they cost ~10× the isotropic chain on llvmpipe (docs/GI.md, "Anisotropic voxels").
     // `overOccupiedParents` (and the volume's parent lists valid): only the voxels of each level
     // with an occupied voxel below them are computed, one indirect dispatch per level over its
     // list; every other voxel is left as VoxelizePass cleared it, 0, which is also what the whole

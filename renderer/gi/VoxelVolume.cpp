@@ -135,22 +135,14 @@ bool VoxelVolume::fitTo(const Aabb& sceneBounds) {
     const float side = extent * static_cast<float>(resolution_) / static_cast<float>(std::max(resolution_ - 4, 1));
     // The grid is shifted by a quarter voxel along y and z (padding 2¼ voxels below, 1¾ above), so
     // that surfaces at whole-voxel distances from the bounds do not lie on the faces between two
-    // voxels. There the voxelization depends on sub-pixel rounding: at 64³ the Cornell box's block
-    // tops (18 and 36 voxels above its floor) lie on voxel faces, and the conservative rasterization
-    // of the blocks' vertical sides writes or skips the voxel row their top edges only touch; the
-    // accurate mode read the ceiling and the back wall 8-11 % brighter than at 128³ (VCT ÷
-    // reference, 64³ → 128³: ceiling 1.14 → 1.00, back wall 1.09 → 0.91; shifted 1.06 → 0.99,
-    // 0.98 → 0.91). A workaround: surfaces ¾ voxel off a face in y or z, or on one in x, meet it
-    // again. voxelize.geom.glsl's kTouchMargin now covers the rows an edge only touches, which
-    // removes most of that (shift 0: ceiling 1.08, back wall 0.99), but the shift stays: without it
-    // the nook reads 0.89 at 64³ (0.95 with it), and with every axis on faces the margin's extra
-    // rows darken the ceiling instead (docs/GI.md, "(ninth session)"). A quarter, not a half: a half puts
-    // surfaces at half-voxel distances from the bounds on voxel faces instead (the benchmark's
-    // sealed room at 128³ leaked 1.37 % of the outside light with ½, 0.48 % with ¼). x is not
-    // shifted, so that the grid stays mirror-symmetric about the scene's centre in x, the axis the
-    // Cornell mirror tests flip (¼ in x too: about the same benchmark numbers, but 23 % RMSE
-    // between the box and its mirror image, against 11 %). docs/GI.md, "Surfaces on voxel faces
-    // (eighth session)".
+    // voxels: there the voxelization depends on sub-pixel rounding of the rows an edge only
+    // touches (the Cornell box at 64³ read its ceiling and back wall 8-14 % brighter than at
+    // 128³). voxelize.geom.glsl's kTouchMargin covers those rows and removes most of it, but
+    // without the shift the red-wall nook still reads 0.89 of the reference at 64³ (0.95 with it).
+    // A quarter, not a half: a half puts surfaces at half-voxel distances on faces instead. x is
+    // not shifted, so that the grid stays mirror-symmetric about the scene's centre in x, the axis
+    // the Cornell mirror tests flip. docs/GI.md, "Surfaces on voxel faces"; the shifts that did not
+    // work: "Approaches that did not work".
     const glm::vec3 shift = glm::vec3(0.0f, 0.25f, 0.25f) * (side / static_cast<float>(resolution_));
     const glm::vec3 min = bounds.center() - glm::vec3(0.5f * side) - shift;
     const bool moved = side != side_ || min != min_;

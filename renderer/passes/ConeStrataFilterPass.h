@@ -1,5 +1,5 @@
 #pragma once
-// Cone-strata filter (accurate mode, issue #11): the footprint-bounded diffuse cones see along
+// Cone-strata filter (accurate mode): the footprint-bounded diffuse cones see along
 // their axes only, so each low-resolution texel of the reduced trace traces one of
 // LIT_CONE_STRATA² differently stratified cone sets (shaders/include/cone_strata.glsl), laid out as
 // a fixed pattern over the texels; this pass averages each texel's demodulated indirect diffuse

@@ -97,7 +97,7 @@ private:
     // The cached GI mode's texels whose specular lobe needs cones (indirect_trace.frag.glsl with
     // LIT_TRACE_LOBES 1): the main trace has no cone code and marks them in the lobe mask. On
     // llvmpipe the cone code behind an untaken branch cost the ½-scale trace of the full-frame
-    // Cornell box 40 % of its time (75 against 45 ms; docs/PERFORMANCE.md, fourteenth session).
+    // Cornell box 40 % of its time (docs/PERFORMANCE.md, "llvmpipe").
     ConeProgram reducedLobeProgram_;
     // The low-resolution targets of one size, kept for two sizes (the editor's interactive render
     // scale switches back and forth; TargetsBySize): RGBA32UI, ⌈width/s⌉ × ⌈height/s⌉.

@@ -14,7 +14,7 @@
 // kept per size for two sizes (TargetsBySize): the editor's interactive render scale switches to a
 // small size while the camera moves and back when it stops, and the still frame then finds its
 // size's history (with the camera it was written with) and its targets instead of starting afresh
-// and reallocating them (docs/PERFORMANCE.md, "Editor: history kept per size").
+// and reallocating them (docs/PERFORMANCE.md, "Editor").
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -55,10 +55,8 @@ public:
     // subsets (`sampling.coneSubset` ≥ 0 with footprint-bounded cones). There the strata filter
     // averages each texel with its neighbours, so the neighbours of a pixel all hold the same
     // frame's pairs of side cones, off the whole sets' value by up to ~2× in places (Cornell box,
-    // 96², 64³): a 10 % box held the history to the current frame's pairs (L_ID after 40 frames
-    // 8.1 % from the whole sets'; 5.4 / 4.0 / 3.3 / 2.1 % with 0.2 / 0.3 / 0.5 / 1 for both, 1.84 %
-    // with 3 for the pairs only, the whole sets' own 10 % box being the rest: 0.56 % with neither
-    // clamped; docs/GI.md, "Side-cone pairs in the accurate mode").
+    // 96², 64³), and a 10 % box held the history to the current frame's pairs (docs/GI.md, "Cone
+    // subsets").
     static constexpr float kClampMargin = 0.1f;
     static constexpr float kSubsetClampMargin = 3.0f;
     static float clampMargin(const RenderSettings& settings, const ConeTracePass::Sampling& sampling);

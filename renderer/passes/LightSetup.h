@@ -38,7 +38,7 @@ struct LightSetup {
 // injection) compile out the lookups of a kind no light has (LIT_SHADOWS_CUBE, LIT_SHADOWS_2D in
 // lights.glsl; gl::ProgramVariants): llvmpipe ran the point lights' four cube lookups for every
 // pixel of a scene lit by a spot light alone, a third of its lighting pass (docs/PERFORMANCE.md,
-// sixteenth session). The default has both, right for any table.
+// "llvmpipe"). The default has both, right for any table.
 struct ShadowKinds {
     bool cube = true;  // a point light with a cube shadow map
     bool flat = true;  // a directional or spot light with a 2D one

@@ -8,9 +8,9 @@
 // The spare set stays empty until a second size is used (lit-render and the tests use one size).
 // A third size replaces the *smaller* of the two sets: while the camera moves the interactive scale
 // changes size now and then (128×72, 192×108, 256×144, ... within one motion), and dropping the
-// least recently used set then dropped the full size, so the still frame after every such motion
-// reallocated its targets (and lost the indirect history) after all (docs/PERFORMANCE.md, "Editor:
-// the still size kept").
+// least recently used set would drop the full size, so the still frame after every such motion
+// would reallocate its targets (and lose the indirect history) after all (docs/PERFORMANCE.md,
+// "Editor").
 //
 // `Targets` is a pass's plain struct of GL objects with `int width, height` members; it is swapped
 // whole, so a target added to the struct cannot be forgotten by the swap.

@@ -7,8 +7,9 @@
 // A pixel is *lit only indirectly* when its surface is not emissive and no punctual light reaches
 // it (FirstHit::litBy == 0: outside every cone and range, facing away, or occluded); *directly lit*
 // when at least one does. Named regions of the Cornell box (assets/cornell_box.gltf, found by node
-// name) follow the issue: the ceiling, the shadowed floor next to the red wall and next to the green
-// wall, and the back wall above the blocks (all lit only indirectly by its down-pointing spot).
+// name) are those the GI accuracy bars name: the ceiling, the shadowed floor next to the red wall
+// and next to the green wall, and the back wall above the blocks (all lit only indirectly by its
+// down-pointing spot).
 
 #include "reference/PathTracer.h"
 

@@ -126,7 +126,7 @@ GpuScene::GpuScene(const Scene& scene, Log& log, std::uint32_t maxChunkTriangles
     std::size_t textureBytes = 0;
     // An image wider or taller than the driver's limit cannot be a texture (glTextureStorage2D
     // fails with GL_INVALID_VALUE): checked here, before the upload, so that it is one warning
-    // naming the image instead of a GL error (issue #14).
+    // naming the image instead of a GL error.
     GLint maxTextureSide = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSide);
     for (std::size_t t = 0; t < scene.textures.size(); ++t) {

@@ -1,8 +1,8 @@
 // bfloat16: a float's upper 16 bits (sign, the 8-bit exponent, 7 of the 23 mantissa bits), two to a
 // uint. Packing rounds to nearest even (≤ 0.2 % off: 8 significant bits); unpacking is a shift or
-// a mask, where halves (packHalf2x16, 11 significant bits) are converted in software on llvmpipe:
-// the cached mode's gather and the indirect resolve were 8 and 6-7 ms (of 42 and 46) cheaper with
-// these on the full-frame Cornell box at 1280×720 (docs/PERFORMANCE.md, sixteenth session).
+// a mask, where halves (packHalf2x16, 11 significant bits) are converted in software on llvmpipe,
+// which made the cached mode's gather and the indirect resolve slower (docs/PERFORMANCE.md,
+// "llvmpipe").
 // For finite values (the rounding would carry a NaN's mantissa into the exponent).
 uint bfloatBits(float x) {
     uint bits = floatBitsToUint(x);

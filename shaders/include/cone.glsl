@@ -61,7 +61,8 @@ const int kConeMaxSteps = 1800;
 //    the middle of the first step, so it lies 2.4 (side cones) to 3 (normal cone) voxels off the
 //    surface.
 // The price is that occluders closer than that to a surface are missed (contact shadows are left
-// to direct lighting) and light may leak through walls thinner than that (docs/GI.md).
+// to direct lighting) and light may leak through walls thinner than that (docs/GI.md, "Marching a
+// cone").
 const float kConeNormalOffsetVoxels = LIT_CONE_NORMAL_OFFSET_VOXELS;
 const float kConeStartVoxels = 1.0;
 
@@ -99,7 +100,7 @@ vec2 volumeSpan(vec3 uvwOrigin, vec3 uvwPerMetre) {
 //
 // Per step the loop does one texture fetch and a little scalar math; what can be done once per
 // cone is hoisted out of it (measured on llvmpipe, where every instruction runs on the CPU; see
-// docs/PERFORMANCE.md): the volume is clipped against the ray once (volumeSpan) instead of
+// docs/PERFORMANCE.md, "llvmpipe"): the volume is clipped against the ray once (volumeSpan) instead of
 // testing each sample's coordinates, sample coordinates step linearly in volume space, and the
 // sampled level's voxel size is the cone diameter itself (clamped to the coarsest level) rather
 // than exp2 of the log2 that chose the level.
@@ -108,22 +109,15 @@ const float kFaceMinTransmittance = 1.0 / 4096.0;
 // Opacity correction exponent per sampled voxel width. Trilinear filtering spreads an opaque
 // voxel's opacity over a tent two voxels wide (a(x) = 1 − |x|), and the optical depth of that tent,
 // ∫ −ln(1 − a(x)) dx = 2 voxel widths, lets e^−2 = 13.5 % of a cone through a wall one voxel thick
-// (more when the steps miss the peak): light leaked out of closed rooms and a hollow emissive box
-// gave 0.87 of its furnace value (iso). Counting each voxel width 3×: e^−6 = 0.25 % (≤ 0.7 % at
-// any step phase with steps of half a voxel); the hollow box gives 0.98-1.0, the Cornell ceiling
-// rose from 0.72 to 0.83 of the reference at 128³ (k = 1, 2, 3, 4 measured: docs/GI.md).
-// Partially covered voxels (a surface seen edge-on) block more than their coverage; uniform
-// opaque fields are unchanged (the furnace stays exact).
-// The default mode (no cone feature on) keeps the tracer of before issue #11 (k = 1, the march
-// ends at the volume's face): with isotropic coarse voxels, k = 3 made the side cones' self-
-// occlusion by their own surface's voxels worse (Cornell ceiling at 64³ 0.044 → 0.014 W/(sr·m²)).
-// With footprint-bounded cones (the accurate mode) k = 2: k = 3 was chosen while the six fixed
-// bounded cones under-read the hemisphere (pencils along their axes), and its extra opacity made up
-// for part of that; with the stratified cone sets (cone_strata.glsl) integrating the hemisphere,
-// k = 3 over-read the Cornell ceiling by 21 % at 64³; k = 2 gives ceiling 1.09 / 0.96, red-wall nook
-// 0.80 / 0.87 of the reference at 64³ / 128³, and the self-illumination, thin-wall and GL sealed-room
-// bars still hold; the benchmark's sealed room (1.6-voxel walls) leaks 2.1 % (k = 3: 1.7 %; fixed
-// set 1.0 %): docs/GI.md, "Stratified cone sets".
+// (more when the steps miss the peak), so light leaks out of closed rooms. Counting each sampled
+// width k times lets e^−2k through. Partially covered voxels (a surface seen edge-on) block more
+// than their coverage; uniform opaque fields are unchanged (the furnace stays exact).
+// The fast mode (no cone feature on) keeps k = 1 and ends the march at the volume's face: with
+// isotropic coarse voxels a larger k makes the side cones' self-occlusion by their own surface's
+// voxels worse. Footprint-bounded cones (the accurate and cached modes) take k = 2: with the
+// stratified cone sets (cone_strata.glsl) integrating the hemisphere, k = 3 over-reads the Cornell
+// ceiling by 21 % at 64³; directional voxels with unbounded cones take 3. docs/GI.md, "Marching a
+// cone" (k per sampled voxel width).
 #if LIT_CONE_FOOTPRINT
 const float kOpacityPerVoxel = 2.0;
 const float kPastFaceVoxels = 1.0;  // sampled voxels marched past the volume's face (below)
@@ -169,7 +163,8 @@ vec4 sampleRadiance(vec3 uvw, float level, vec3 faceWeights, vec3 faceOffsets) {
 // A sample below level 1 (level ∈ [0, 1)): the directional blend of level 1 mixed with the isotropic
 // level 0. The march reads it only while its samples are finer than level 1 (the first of
 // traceConeFromSurface's two loops): llvmpipe runs both sides of a branch, so a `level < 1` test
-// inside sampleRadiance made every sample pay for this fourth lookup (docs/GI.md, "Landing").
+// inside sampleRadiance made every sample pay for this fourth lookup (docs/GI.md, "Anisotropic
+// voxels").
 vec4 sampleRadianceBelowLevel1(vec3 uvw, float level, vec3 faceWeights, vec3 faceOffsets) {
     return mix(textureLod(voxelRadianceTexture, uvw, 0.0), sampleRadiance(uvw, level, faceWeights, faceOffsets), level);
 }
@@ -180,8 +175,8 @@ vec4 sampleRadianceBelowLevel1(vec3 uvw, float level, vec3 faceWeights, vec3 fac
 // sample reads are at most giParams.x × (its height above the surface) wide (0 = no bound):
 // a wide cone near its surface would otherwise read coarse voxels that hold the surface itself,
 // and a lit surface would light itself, an unlit one hide its surroundings behind its own dark
-// voxels (self-illumination; docs/GI.md). Steps shrink with the sampled width, so a bounded cone
-// takes more, narrower samples near the surface.
+// voxels (self-illumination; docs/GI.md, "Footprint-bounded cones"). Steps shrink with the
+// sampled width, so a bounded cone takes more, narrower samples near the surface.
 vec4 traceConeFromSurface(vec3 origin, vec3 direction, float aperture, float maxDistance, float startHeight,
                           float heightPerDistance) {
     float voxelSize = voxel.voxelInfo.z;

@@ -1,12 +1,12 @@
-// Stratified diffuse cone sets for the footprint-bounded cones of the accurate mode (issue #11,
-// docs/GI.md "Stratified cone sets"). Needs cone.glsl.
+// Stratified diffuse cone sets for the footprint-bounded cones of the accurate mode (docs/GI.md,
+// "Stratified cone sets"). Needs cone.glsl.
 //
 // Why. A footprint-bounded cone reads voxels at most coneFootprintPerHeight × its height above
 // the surface wide (traceConeFromSurface): a side cone of the six-cone set is a pencil ~9° wide
 // standing for a 72° × 60° sector of the hemisphere, and sees what lies along its axis only.
-// With one fixed set the light of a small region depended on where the axes landed (the Cornell
-// box's red-wall nook got 0.25–0.96 of the reference as the set turned; docs/GI.md, "The red-wall
-// shadow").
+// With one fixed set the light of a small region depends on where the axes land (the Cornell
+// box's red-wall nook got 0.25–0.96 of the reference as the set turned; docs/GI.md,
+// "Footprint-bounded cones").
 //
 // What. The six regions of the hemisphere and their weights stay those of cone.glsl (the cap
 // θ < 30°, weight ¼, and five 72° ring sectors 30° < θ < 90°, weight 3/20 each: projected solid

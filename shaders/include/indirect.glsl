@@ -20,7 +20,8 @@ uniform float uRotation;  // rad: this frame's turn of the cone sets about the n
 // The turn the cone sets take this frame. Footprint-bounded cones (LIT_CONE_FOOTPRINT, the
 // accurate mode) see along their axes only, so their result depends on the set's rotation:
 // turning it every frame made a still camera's L_ID change 9.6 % from frame to frame and the
-// cornell_inside path flicker 5.4 % (320×180, 128³); with the set fixed, 0.4 % (docs/GI.md).
+// cornell_inside path flicker 5.4 % (320×180, 128³); with the set fixed, 0.4 % (docs/GI.md,
+// "Approaches that did not work").
 // They keep rotation 0, the set a still without temporal accumulation traces.
 float coneSetRotation() {
 #if LIT_CONE_FOOTPRINT
@@ -38,7 +39,7 @@ ivec2 tracedPixel(ivec2 low) {
 // The low-resolution targets, one texel per traced pixel, packed so the resolve reads a
 // neighbour with two fetches (on llvmpipe the resolve's cost is its texel fetches):
 //   packed (RGBA32UI): bfloat2(D.rg), bfloat2(D.b, 1 = D traced), bfloat2(S.rg), bfloat2(S.b, 1 +
-//            roughness = S traced) (bfloat.glsl: the resolve 45-47 → 39-40 ms against halves; the
+//            roughness = S traced) (bfloat.glsl: cheaper than halves for the resolve; the
 //            roughness to 1/128, the same for neighbours of one material, whose weights it scales alike)
 //   guide  (RGBA32UI): the traced pixel's world position (float bits, m), octahedral normal (snorm16 ×2)
 // D = irradiance/π, S = lobe-averaged radiance ⟨L⟩ (0 where not traced).

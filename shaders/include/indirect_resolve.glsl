@@ -40,7 +40,7 @@ layout(early_fragment_tests) in;  // the trace mask's depth test decides before 
 // 0: the resolve without temporal accumulation (IndirectResolvePass's plain program), whose
 // history block is then not compiled: llvmpipe runs a uniform branch's body with every lane
 // masked off, and the history's three fetches cost the resolve 6-7 of its 55 ms with temporal
-// accumulation off (full-frame Cornell box, 1280×720; docs/PERFORMANCE.md, fourteenth session).
+// accumulation off (full-frame Cornell box, 1280×720; docs/PERFORMANCE.md, "llvmpipe").
 #ifndef LIT_RESOLVE_HISTORY
 #define LIT_RESOLVE_HISTORY 1
 #endif

@@ -12,7 +12,7 @@ layout(location = LIT_LOC_MATERIAL) uniform int uMaterialIndex;
 // combination its draws use (GBufferPass), so a texture no material of a draw has is not in its
 // program: llvmpipe runs a branch no lane takes with every lane masked off, and the five texture
 // branches cost the untextured Cornell box's G-buffer 13 of its 34 ms at 1280×720
-// (docs/PERFORMANCE.md, sixteenth session). Other passes keep them all.
+// (docs/PERFORMANCE.md, "llvmpipe"). Other passes keep them all.
 #ifndef LIT_MATERIAL_TEXTURES
 #define LIT_MATERIAL_TEXTURES LIT_MATERIAL_TEXTURES_ALL
 #endif

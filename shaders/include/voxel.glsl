@@ -57,10 +57,10 @@ ivec3 otherSideTexel(ivec3 v) { return ivec3(v.xy, v.z + int(voxel.voxelInfo.x))
 //      irradiance/π decoded (not in the radiance volume's encoding), a side's three values from
 //      words chosen first
 // An all-zero texel (cleared by a voxelization, not filtered since) is an empty voxel to the gather.
-// Costs on llvmpipe (the ½-scale trace of the full-frame Cornell box, docs/PERFORMANCE.md, sixteenth
-// session): the one fetch took it from 47 to 42 ms with halves, 34-35 with bfloat16 (8 significant
-// bits, ≤ 0.2 % off; llvmpipe converts halves in software, 54 times a pixel), and the normal stored
-// normalized saves the gather a square root and a division per voxel (36 → 29-31 ms).
+// One fetch per voxel, bfloat16 rather than halves (llvmpipe converts halves in software, 54 times
+// a pixel; bfloat16 keeps 8 significant bits, ≤ 0.2 % off), and the normal stored normalized (no
+// square root or division per voxel in the gather): each made the ½-scale gather of the full-frame
+// Cornell box cheaper on llvmpipe (docs/GI.md, "The filter"; docs/PERFORMANCE.md, "llvmpipe").
 const uint kGatherWritten = 1u << 27;
 const uint kGatherSideTraced = 1u << 28;
 const uint kGatherOtherSideTraced = 1u << 29;

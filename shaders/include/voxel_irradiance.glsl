@@ -1,29 +1,28 @@
 // Indirect diffuse from irradiance cached in the voxels (the cached GI mode, LIT_VOXEL_IRRADIANCE 1,
-// GiSettings::voxelIrradiance(); docs/GI.md, "Irradiance cached in the voxels
-// (eighth session)"). After each light or geometry edit every occupied voxel traces the accurate
-// mode's stratified cones once (bounce.comp.glsl, LIT_BOUNCE_IRRADIANCE) and stores irradiance/π
-// for the side its averaged normal points to (POS) and, for voxels whose normals disagree (both
-// sides of a thin wall), the other side (NEG), averaged over the cone sets along the surface by
-// voxel_irradiance_filter.comp.glsl into the gather texels (voxel.glsl, packGatherTexel). A pixel
-// then gathers, instead of tracing cones, the
+// GiSettings::voxelIrradiance(); docs/GI.md, "Voxel irradiance cache"). After each light or
+// geometry edit every occupied voxel gathers its irradiance once (bounce.comp.glsl,
+// LIT_BOUNCE_IRRADIANCE: voxel rays, or the stratified cones with gi.voxelRays 0) and stores
+// irradiance/π for the side its averaged normal points to (POS) and, for voxels whose normals
+// disagree (both sides of a thin wall), the other side (NEG), averaged over the sets along the
+// surface by voxel_irradiance_filter.comp.glsl into the gather texels (voxel.glsl,
+// packGatherTexel). A pixel then gathers, instead of tracing cones, the
 // 3 × 3 × 3 voxels around its surface point pushed half a voxel along its normal, weighted by a
 // tent of radius 1.5 voxels around that point × (normal agreement)^16 × occupancy. The 16th
 // power keeps the gather to voxels facing as the pixel does (weight 0.5 at 17°, 0.1 at 30°): with
-// the square (eighth session) the sealed room's inside floor read its walls' voxels and leaked
-// 1.4-1.9× the accurate mode's light; with ^16 as much as the accurate mode (docs/GI.md, ninth
-// session). A voxel whose irradiance was not traced yet (alpha 0: cleared after a voxelization,
-// and the amortised update, voxelIrradianceVoxelsPerFrame, has not reached it: the side's flag
-// in its texel) is left out.
+// the square the sealed room's inside floor read its walls' voxels and leaked 1.4-1.9× the
+// accurate mode's light; with ^16 as much as the accurate mode (docs/GI.md, "The gather"). A voxel
+// whose irradiance was not traced yet (alpha 0: cleared after a voxelization, and the spread
+// update, the GiBudget's updateVoxels, has not reached it: the side's flag in its texel) is left
+// out.
 // Needs voxel.glsl (included by cone.glsl).
 #ifndef LIT_VOXEL_IRRADIANCE
 #define LIT_VOXEL_IRRADIANCE 0
 #endif
 #if LIT_VOXEL_IRRADIANCE
 // The gather texels (voxel.glsl, packGatherTexel): a voxel's normal and both sides' irradiance in
-// one fetch. (Before, the normal volume and an N × N × 2N irradiance volume: two fetches a voxel,
-// the ½-scale trace of the full-frame Cornell box 47 ms against 33-35; and earlier, with one
-// sampler per side, llvmpipe fetched from both wherever a pixel chose one, 80 against 67 ms:
-// docs/PERFORMANCE.md, fourteenth and sixteenth sessions.)
+// one fetch, one sampler: llvmpipe pays for every fetch in the loop, and with one sampler per side
+// it would fetch from both wherever a pixel chose one (docs/GI.md, "The filter"; docs/PERFORMANCE.md,
+// "llvmpipe").
 layout(binding = LIT_TEX_VOXEL_IRRADIANCE) uniform usampler3D voxelGatherTexels;
 
 vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {

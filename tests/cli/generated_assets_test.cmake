@@ -1,8 +1,7 @@
 # The committed generated scenes must be what their generators write today (ctest
 # generated_assets): assets/cornell_box.* from make-cornell-box and assets/gi/* from make-gi-suite.
-# A generator changed without re-running it leaves tests and benchmarks measuring a stale scene:
-# until the eleventh session assets/gi/glossy_floor, thin_walls and sealed_room still held lights
-# written before glTF light units became photometric (683× too dim; docs/GI.md).
+# A generator changed without re-running it leaves tests and benchmarks measuring a stale scene
+# (lights written in radiometric rather than photometric glTF units are 683× too dim; docs/UNITS.md).
 #   cmake -DMAKE_CORNELL_BOX=... -DMAKE_GI_SUITE=... -DSOURCE_DIR=... -DOUT_DIR=... -P generated_assets_test.cmake
 foreach(var MAKE_CORNELL_BOX MAKE_GI_SUITE SOURCE_DIR OUT_DIR)
   if(NOT DEFINED ${var})

@@ -1,10 +1,10 @@
 #!/bin/sh
 # editor_gl_error.sh EDITOR SCENE OUTDIR
-# A GL error in the editor must reach its log (the log panel, and stderr) in every build type:
-# issue #14 found that the release editor never installed the GL debug output, so its GL errors
-# went unseen. LIT_TEST_GL_ERROR=1 makes the editor issue one invalid GL call once its context
-# is set up (gl::injectGlErrorIfRequested, GL_INVALID_OPERATION); the run must print it as an
-# error line of the log and still finish its script normally. Exit 77 (skipped) without xvfb-run.
+# A GL error in the editor must reach its log (the log panel, and stderr) in every build type: a
+# release editor that did not install the GL debug output would leave its GL errors unseen.
+# LIT_TEST_GL_ERROR=1 makes the editor issue one invalid GL call once its context is set up
+# (gl::injectGlErrorIfRequested, GL_INVALID_OPERATION); the run must print it as an error line of
+# the log and still finish its script normally. Exit 77 (skipped) without xvfb-run.
 set -u
 editor=$1
 scene=$2

@@ -1,4 +1,4 @@
-// InteractiveScale: the editor's render scale while the camera moves (issue #12).
+// InteractiveScale: the editor's render scale while the camera moves (docs/PERFORMANCE.md, "Editor").
 #include <gtest/gtest.h>
 
 #include "InteractiveScale.h"

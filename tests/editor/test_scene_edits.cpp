@@ -314,7 +314,7 @@ TEST(SceneEdits, PerPrimitiveMaterialSelection) {
     // Make the second primitive's material unique although the node is its only user: the
     // first primitive does not share it, so this is refused; sharing it makes it allowed.
     EXPECT_NE(makeMaterialUnique(doc, box, 1), "");
-    // Undo, redo, save and reopen (the issue: every edit undoable and saved): the edit stays on
+    // Undo, redo, save and reopen (every edit undoable and saved): the edit stays on
     // the second primitive's material, the first primitive's is untouched.
     const EditableState after = doc.capture();
     ASSERT_TRUE(doc.undo());

@@ -437,7 +437,7 @@ TEST_F(ConeTrace, DiffuseDependsOnNormalDirection) {
     // the 2.1 m volume through its sides before they reach y = 0. The five side cones, 60° from
     // the normal, cross the radiant half for only ~0.9 m before their axis leaves the volume, with
     // footprints (mip 4-5, 0.5-1 m voxels) half in the empty half, so they end partly transparent
-    // and the tracer gives 0.72-0.78 L (docs/GI.md, limitations). Reading the premultiplied
+    // and the tracer gives 0.72-0.78 L (docs/GI.md, "Known limits"). Reading the premultiplied
     // volume as straight colour would give 0.43-0.48 L.
     EXPECT_GT(u.min.g, 0.65f * L);
     EXPECT_LT(u.max.g, 1.0f * L);
@@ -472,7 +472,8 @@ TEST_F(ConeTrace, ResultDoesNotDependOnStepScale) {
     EXPECT_NEAR(b / a, 1.0f, 0.05f) << "step 0.25: " << a << ", step 1.0: " << b;
 }
 
-// Timings for docs/GI.md (not a test: run with --gtest_also_run_disabled_tests). The Cornell
+// Timings (docs/PERFORMANCE.md, "What each benchmark prints"; not a test: run with
+// --gtest_also_run_disabled_tests). The Cornell
 // box G-buffer; the volume is filled with the world boxes of its meshes (walls and blocks opaque,
 // radiance 0.3), a stand-in for a voxelized scene with the same cone lengths. Once with the
 // box's materials (roughness 0.9: wide specular cones), once with every surface a mirror

@@ -44,8 +44,9 @@ TEST_F(CornellGi, FourTermsSumToTheFinalImage) {
 
 TEST_F(CornellGi, CeilingIsLitOnlyWithGi) {
     const Scene scene = loadCornellBox();
-    // Both GI modes, whichever is the default (docs/GI.md): the fast one (isotropic voxels, wide
-    // unbounded cones) and the accurate one (anisotropic voxels, footprint-bounded cones).
+    // Both GI modes, whichever is the default (docs/GI.md, "Modes"): the fast one (isotropic
+    // voxels, wide unbounded cones) and the accurate one (anisotropic voxels, footprint-bounded
+    // cones).
     RenderSettings settings = giSettings(true);
     settings.gi.mode = GiMode::Fast;
     RenderSettings accurateSettings = settings;
@@ -62,15 +63,15 @@ TEST_F(CornellGi, CeilingIsLitOnlyWithGi) {
     EXPECT_LT(withoutGi, 1e-3f) << "the downward spot does not reach the ceiling";
     // Fast mode. The ceiling sees the spot-lit floor (radiance ≈ 0.8-1.3) over a large solid
     // angle: a physical estimate is 0.1-0.2. With the mip chain stacking opacity (thin walls stay
-    // opaque) 64³ gives 0.044; with plain-average mips the cones saw through the walls and it was
+    // opaque) 64³ gives 0.044; with plain-average mips the cones see through the walls and it is
     // 0.008. The remaining gap is the side cones' self-occlusion by the ceiling's own coarse
     // voxels, which the accurate mode fixes.
     EXPECT_GT(withGi, 0.03f) << "bounced light must reach the ceiling";
     EXPECT_LT(withGi, 0.3f) << "more than the lit floor can send";
-    // Accurate mode, re-derived from the reference path tracer (issue #10; docs/GI.md, accuracy):
-    // the ceiling's mean one-bounce radiance is 0.42 W/(sr·m²) (0.47 with two bounces). The
-    // fast mode gives 0.044 (above); the accurate one 0.3-0.4. Bars: at least half of the
-    // one-bounce mean at the darkest of the three points, at most 1.2 × the two-bounce mean.
+    // Accurate mode, re-derived from the reference path tracer (docs/GI.md, "Accuracy against the
+    // reference"): the ceiling's mean one-bounce radiance is 0.42 W/(sr·m²) (0.47 with two
+    // bounces). The fast mode gives 0.044 (above); the accurate one 0.3-0.4. Bars: at least half of
+    // the one-bounce mean at the darkest of the three points, at most 1.2 × the two-bounce mean.
     EXPECT_GT(withAccurateGi, 0.5f * 0.42f) << "accurate GI: bounced light must reach the ceiling";
     EXPECT_LT(withAccurateGi, 1.2f * 0.47f) << "accurate GI: more than the lit floor can send";
 }
@@ -86,12 +87,12 @@ TEST_F(CornellGi, CeilingIsLitOnlyWithGi) {
 //   fast:     ceiling 1.127, 1.187 / 1.547, 1.299   back wall 1.179, 1.177 / 1.349, 1.298
 //   accurate: ceiling 1.015, 1.012 / 1.188, 1.119   back wall 1.270, 1.151 / 1.369, 1.258
 // Every mode must bleed where the reference does (at least half its excess over 1). The accurate
-// mode must also match the reference's ratios within ±20 % (issue #11's bar) and not bleed where
+// mode must also match the reference's ratios within ±20 % (the GI accuracy bar) and not bleed where
 // the reference does not: the one-bounce ceiling within ±5 % of grey, since the smallest real
 // bleed in this view is 6.3 %. The fast mode bleeds on the one-bounce ceiling by 13-19 %, and its
 // two-bounce ceiling is 1.38× and 1.22× the reference's ratios: known errors of that mode
-// (docs/GI.md), not asserted. (An earlier version of this test asked every mode for > 1.05 on the
-// one-bounce ceiling: the fast mode's error, not light.)
+// (docs/GI.md, "Known limits"), not asserted. (Asking every mode for > 1.05 on the one-bounce
+// ceiling would ask for the fast mode's error, not light.)
 TEST_F(CornellGi, WhiteSurfacesNearColouredWallsBleedTheirColour) {
     const Scene scene = loadCornellBox();
     const auto ratio = [](const glm::vec3& c, int a, int b) { return c[a] / std::max(c[b], 1e-4f); };

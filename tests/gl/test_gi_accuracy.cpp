@@ -1,4 +1,4 @@
-// GI accuracy (issue #11): the criteria that say the cone-traced light lands in the right places,
+// GI accuracy: the criteria that say the cone-traced light lands in the right places,
 // each in a scene with a known answer, rendered through the whole Renderer (voxelize, inject,
 // bounces, mips, cone trace) at 64³-128³ and 96²-128² pixels.
 //  - a lone lit floor does not light itself (self-illumination);
@@ -8,7 +8,8 @@
 //  - the directional volumes treat −x and +x alike (the Cornell box and its mirror image), and so
 //    does the accurate mode's cone sampling (stratified cone sets);
 //  - bounces add up as a geometric series in a closed emissive box (the bounce furnace).
-// docs/GI.md ("Accuracy") has the numbers before and after each change.
+// docs/GI.md ("Accuracy against the reference", "Known limits", "Approaches that did not work")
+// has the numbers.
 #include <unistd.h>
 
 #include <cmath>
@@ -138,8 +139,8 @@ protected:
         return HdrImage{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
     }
     // The accurate GI mode: anisotropic voxels and footprint-bounded cones traced per pixel. The
-    // tests that compare with the renderer of before switch them off explicitly; those of the
-    // cached mode (the default) switch it on.
+    // tests that compare with the fast mode's isotropic voxels switch them off explicitly; those of
+    // the cached mode (the default) switch it on.
     static RenderSettings giSettings(int voxels, View view = View::Final, int size = 96) {
         RenderSettings s = smallSettings(size);
         s.gi.enabled = true;
@@ -164,7 +165,7 @@ protected:
     // The end of the sealed-room tests: the same view without GI, then the GI image's mean (the
     // leak) and the GI-off image's as shares of the outside radiance `outside`. The GI-off image
     // must be dark, else the shadow maps let the sun in and the leak is not GI's; the bar on the
-    // GI image is issue #11's 1 %.
+    // GI image is 1 %.
     void expectNoLeak(const Scene& scene, const CameraView& inside, RenderSettings settings, const HdrImage& gi,
                       float outside, const std::string& label) {
         settings.gi.enabled = false;
@@ -180,8 +181,8 @@ protected:
 
 // A white floor (one quad, so one voxel thick) alone in the volume, lit from above: nothing else
 // can send light back, so its indirect light is exactly 0. Cones that leave it must not see its
-// own voxels. Before (isotropic stacked mips, no footprint bound): L_ID = 0.69 L at 64³
-// (docs/GI.md). Bar: 5 % of the floor's own radiance (issue #11).
+// own voxels. With isotropic stacked mips and no footprint bound: L_ID = 0.69 L at 64³
+// (docs/GI.md, "Footprint-bounded cones"). Bar: 5 % of the floor's own radiance.
 TEST_F(GiAccuracy, LoneLitFloorDoesNotLightItself) {
     Scene scene;
     const int white = addMaterial(scene, glm::vec3(0.8f), 1.0f, 0.0f, "white");
@@ -207,15 +208,15 @@ TEST_F(GiAccuracy, LoneLitFloorDoesNotLightItself) {
 
 // A closed room (walls, floor and roof two voxels thick at 64³) on a ground lit by a strong
 // sun; a camera inside. No light can get in: everything the inside shows is a leak. Bar: 1 % of
-// the outside ground's radiance (issue #11). Measured: 0.43 % at 128³; at 64³ 0.48 %, 0.23 % since
-// slab-backed surfaces send no light edge-on (seventh session); with the isotropic voxels
+// the outside ground's radiance. Measured: 0.43 % at 128³; at 64³ 0.48 %, 0.23 % with slab-backed
+// surfaces sending no light edge-on (mipmap_directional.comp.glsl, "backed"); with the isotropic voxels
 // (anisotropicVoxels off, no footprint bound) the benchmark's sealed room leaked 12 %, 7.4 %,
 // 4.0 % at 64³, 128³, 256³.
 TEST_F(GiAccuracy, SealedRoomDoesNotLeakLightIn) {
     Scene scene;
     const int white = addMaterial(scene, glm::vec3(0.8f), 1.0f, 0.0f, "white");
     const float groundSize = 4.0f;
-    constexpr int kVoxels = 64;  // the benchmark measures 128³ and 256³ (docs/GI.md)
+    constexpr int kVoxels = 64;  // the benchmark measures 128³ and 256³ (docs/tables/gi-accuracy.md)
     // VoxelVolume::fitTo pads the scene by 2 voxels per side: voxel = extent / (N − 4).
     const float voxel = groundSize / float(kVoxels - 4);
     const float w = 2.0f * voxel;  // wall thickness
@@ -250,12 +251,12 @@ TEST_F(GiAccuracy, SealedRoomDoesNotLeakLightIn) {
 // roof, walls and ground) on a ground 8 m wide, so that at 128³ the walls are 3.1 voxels thick,
 // more than the two of the test above, but a twentieth of the room: a footprint-bounded cone in the
 // middle of the room samples voxels 0.3-0.7 m wide, each holding the wall and the sunlit surface
-// outside it. The directional faces that see a wall edge-on showed that outer surface's light
-// (edge-on emission weight 1) to cones from inside: 1.17 % of the ground's radiance leaked in on
+// outside it. With edge-on emission weight 1 the directional faces that see a wall edge-on show
+// that outer surface's light to cones from inside: 1.17 % of the ground's radiance leaked in on
 // the benchmark at 256³ (same wall thickness in voxels), 1.36 % at 128³. Level 1 of the directional
-// chains now gives a surface seen edge-on no light when the other side of its slab lies right
-// behind it (mipmap_directional.comp.glsl, "backed"): measured here 1.16 % before, 0.15 % after
-// (docs/GI.md, "The sealed room's leak closed"). Bar: 1 % (issue #11). ~1.5 s on llvmpipe.
+// chains gives a surface seen edge-on no light when the other side of its slab lies right
+// behind it (mipmap_directional.comp.glsl, "backed"): measured here 1.16 % without that, 0.15 %
+// with it (docs/GI.md, "Anisotropic voxels"). Bar: 1 %. ~1.5 s on llvmpipe.
 TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
     Scene scene;
     const int ground = addMaterial(scene, glm::vec3(0.5f), 0.9f, 0.0f, "ground");
@@ -276,10 +277,10 @@ TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
     scene.updateWorldTransforms();
     const float outside = 0.5f / glm::pi<float>() * lux * -sunDirection.y;
     const CameraView inside = lookAt({1.2f, 1.6f, 1.6f}, {-1.0f, 1.4f, -1.5f}, 1.0f, 1.2f);
-    // The accurate mode's cones, and the defaults (the cached mode, two bounces, voxel rays): since
-    // the fifteenth session the rays pass in front of one-sided voxels and reach the voxels at the
-    // room's inner edges, lit through the wall before injection looked half a voxel out too (the
-    // benchmark's room at 128³: 0.73 % then, 0.42 % after; docs/GI.md).
+    // The accurate mode's cones, and the defaults (the cached mode, two bounces, voxel rays): the
+    // rays pass in front of one-sided voxels and reach the voxels at the room's inner edges, which
+    // are lit through the wall unless injection also looks half a voxel out (the benchmark's room
+    // at 128³: 0.73 % without that look, 0.42 % with it; docs/GI.md, "Injection").
     for (const RenderSettings& settings : {giSettings(kVoxels, View::Final, 48), defaultSettings(kVoxels, 48)}) {
         const HdrImage gi = renderFrom(scene, inside, settings);
         ASSERT_NE(renderer_->voxels(), nullptr);
@@ -296,9 +297,10 @@ TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
 // wall's dark side and is in its shadow. Only the lit side radiates, away from the receiver, so
 // the receiver's indirect light is 0. Isotropic voxels glow on both sides; the directional ones
 // do not seen face-on, but a one-voxel wall seen edge-on still shows its light to both sides
-// (docs/GI.md, limitations): measured 26 % of the wall's radiance against 43 % with the
-// isotropic volume of before (anisotropicVoxels off, no footprint bound, one bounce): 0.62×.
-// The goal (no glow) is not met; the bar keeps what was gained: at most ¾ of the isotropic glow.
+// (docs/GI.md, "Known limits"): measured 26 % of the wall's radiance against 43 % with the
+// isotropic volume (anisotropicVoxels off, no footprint bound, one bounce): 0.62×.
+// The goal (no glow) is not met; the bar keeps what the directional voxels gain: at most ¾ of the
+// isotropic glow.
 TEST_F(GiAccuracy, ThinWallLitOnOneSideGlowsLessOnTheOther) {
     Scene scene;
     const int white = addMaterial(scene, glm::vec3(0.8f), 1.0f, 0.0f, "white");
@@ -386,7 +388,7 @@ protected:
         return sum;
     }
     static double lum(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-    // Issue #11's bar: each of the four regions lit only indirectly within ±20 % of the reference.
+    // The bar: each of the four regions lit only indirectly within ±20 % of the reference.
     static void expectRegionsMatchTheReference(const CornellMeasurement& truth, const std::vector<float>& vct) {
         int checked = 0;
         for (const reference::NamedRegion& region : truth.regions) {
@@ -399,7 +401,7 @@ protected:
         }
         EXPECT_EQ(checked, 4) << "ceiling, back wall, shadowed floor by the green wall and by the red wall";
     }
-    // Issue #11's bleeding bar: R/G on the shadowed floor by the red wall and G/R by the green wall
+    // The bleeding bar: R/G on the shadowed floor by the red wall and G/R by the green wall
     // within ±20 % of the reference's.
     static void expectBleedingMatchesTheReference(const CornellMeasurement& truth, const std::vector<float>& vct) {
         int checked = 0;
@@ -474,7 +476,7 @@ protected:
 // by make-gi-suite) get mirror-image indirect light. Anisotropic voxels with unbounded cones: the
 // footprint-bounded cones of the accurate mode see along their axes, and the six-cone set is not
 // mirror-symmetric (mirrored, it is the set turned by 36°), so there the regions differ by design
-// (docs/GI.md, "The red-wall shadow"); wide cones mostly average that out. Measured (64³, 96²):
+// (docs/GI.md, "Footprint-bounded cones"); wide cones mostly average that out. Measured (64³, 96²):
 // region means 0.89 (the short block's shadow, 25 px), 0.98, 1.00, 1.01 of their mirror images',
 // the L_ID image 10.5 % RMSE (of its mean) from its mirror image; the rest is the set's turn and the
 // voxel grid, not quite symmetric about x = 0. With a defect that treats one face of an axis unlike
@@ -492,12 +494,12 @@ TEST_F(CornellAccuracy, DirectionalVolumesAreMirrorSymmetric) {
 // The accurate mode (footprint-bounded cones) gives the Cornell box and its mirror image in x mirror-
 // image indirect light. Its bounded cones see along their axes; with one fixed six-cone set (the
 // mirror image of the set is the set turned by 36°) the red-wall nook got 0.25 of the reference in
-// the Cornell box and 1.11 in the mirrored box, ratio 4.4 (docs/GI.md, "The red-wall shadow").
+// the Cornell box and 1.11 in the mirrored box, ratio 4.4 (docs/GI.md, "Footprint-bounded cones").
 // The stratified cone sets (cone_strata.glsl, ConeStrataFilterPass) integrate each region over
-// LIT_CONE_STRATA² cells, so the result no longer depends on the set's orientation. Bars as
+// LIT_CONE_STRATA² cells, so the result does not depend on the set's orientation. Bars as
 // DirectionalVolumesAreMirrorSymmetric's (the defects it guards against scored 0.55-0.57 and
 // 20-22 %): every region within ±20 % of its mirror image's. Measured (64³, 96²): 0.92-1.07;
-// with the fixed set (before) 0.73-3.55 (the nook 3.55, the back wall 0.73): it fails there.
+// with the fixed set 0.73-3.55 (the nook 3.55, the back wall 0.73): it fails there.
 TEST_F(CornellAccuracy, AccurateModeIsMirrorSymmetric) {
     RenderSettings settings = giSettings(64, View::IndirectDiffuse, kSize);
     settings.gi.bounces = 1;
@@ -507,37 +509,36 @@ TEST_F(CornellAccuracy, AccurateModeIsMirrorSymmetric) {
     expectMirrorImageRegions(settings, "accurate: ");
 }
 
-// Issue #11: the mean indirect radiance of each region lit only indirectly within ±20 % of the
-// reference. Before (isotropic voxels, benchmark at 64³, docs/GI.md): ceiling 0.19, back wall
+// The mean indirect radiance of each region lit only indirectly within ±20 % of the reference.
+// With isotropic voxels (benchmark at 64³, docs/GI.md, "Known limits"): ceiling 0.19, back wall
 // 0.38, shadowed floor by the green wall 1.01, by the red wall 1.72. With the fixed six-cone set of
-// the accurate mode: 0.93, 0.92, 1.00 and 0.25 (the red-wall nook, excluded then); with the
-// stratified cone sets (benchmark, 128²): 1.09, 1.08, 0.94, 0.80; this test (96²) 1.09, 1.09,
-// 1.01, 0.82 (1.14, 1.10, 1.01, 0.81 just before the grid's ¼-voxel shift in y and z of the eighth
-// session), since it 1.05, 0.99, 1.02, 0.86.
+// the accurate mode: 0.93, 0.92, 1.00 and 0.25 (the red-wall nook, not asserted with that set);
+// with the stratified cone sets (benchmark, 128²): 1.09, 1.08, 0.94, 0.80 and this test (96²) 1.09,
+// 1.09, 1.01, 0.82 when first measured; this test reads 1.05, 0.99, 1.02, 0.86 with the grid's
+// ¼-voxel shift in y and z, 1.14, 1.10, 1.01, 0.81 without it.
 TEST_F(CornellAccuracy, IndirectOnlyRegionsMatchTheReference) {
     const Scene scene = loadCornellBox();
     expectRegionsMatchTheReference(measureReference(scene), vctIndirect(scene, 64));
 }
 
 // The same bars for the cached mode (the default: the accurate cones traced per voxel, filtered
-// over the cone sets, gathered per pixel), at issue #11's own resolution, 128³. Measured (this
+// over the cone sets, gathered per pixel), at the default voxel resolution, 128³. Measured (this
 // test, 96²): ceiling 1.04, back wall 0.93, floor by the green wall 0.95, nook 0.81 (the
 // weakest). At 64³ its nook is 0.75 (benchmark 0.77; with all 16 sets traced per voxel and no
-// filter 0.81): below the bar there, so 64³ is not claimed (docs/GI.md, "The cached mode", tenth
-// session).
+// filter 0.81): below the bar there, so 64³ is not claimed (docs/GI.md, "Voxel irradiance cache").
 TEST_F(CornellAccuracy, CachedModeRegionsMatchTheReferenceAt128) {
     const Scene scene = loadCornellBox();
     expectRegionsMatchTheReference(measureReference(scene), vctIndirect(scene, 128, 1, GiMode::Cached));
 }
 
-// Issue #11, multiple bounces: with two bounces against the two-bounce reference, the same ±20 %
+// Multiple bounces: with two bounces against the two-bounce reference, the same ±20 %
 // bars on the Cornell regions. The bounce pass of the accurate mode traces the stratified cone
 // sets from each voxel (bounce.comp.glsl, cone_strata.glsl voxelConeSetIndex). Measured (this
 // test, 64³, 96², reference 64 spp): ceiling 1.09, back wall 1.17, floor by the green wall 0.99,
-// nook 0.62 (docs/GI.md, "The cone-direction view and the bounces with the stratified sets"); benchmark 64³ / 128³ (128², 128 spp): ceiling 1.09 / 0.96, back wall 1.15 / 0.96, floor by
-// the green wall 0.94 / 0.93 (the fixed set's bounce: 1.09 / 0.95, 1.02 / 0.85, 0.94 / 0.92). The
-// red-wall nook gets 0.61-0.64 of its two-bounce light with either (not met: docs/GI.md), so it is
-// printed, not asserted.
+// nook 0.62 (docs/GI.md, "Stratified cone sets"); benchmark 64³ / 128³ (128², 128 spp): ceiling
+// 1.09 / 0.96, back wall 1.15 / 0.96, floor by the green wall 0.94 / 0.93 (the fixed set's bounce:
+// 1.09 / 0.95, 1.02 / 0.85, 0.94 / 0.92). The red-wall nook gets 0.61-0.64 of its two-bounce light
+// with either (not met: docs/GI.md, "Known limits"), so it is printed, not asserted.
 TEST_F(CornellAccuracy, TwoBounceRegionsMatchTheTwoBounceReference) {
     const Scene scene = loadCornellBox();
     const CornellMeasurement truth = measureReference(scene, 2);
@@ -556,7 +557,7 @@ TEST_F(CornellAccuracy, TwoBounceRegionsMatchTheTwoBounceReference) {
     EXPECT_EQ(checked, 3) << "ceiling, back wall, shadowed floor by the green wall";
 }
 
-// Issue #11's two-bounce bars in the cached mode with voxel rays (GiSettings::voxelRays 32):
+// The two-bounce bars in the cached mode with voxel rays (GiSettings::voxelRays 32):
 // every region within ±20 % of the two-bounce reference, the red-wall nook included, and the colour
 // bleeding ratios within ±20 % of the reference's. The cones miss the nook and both ratios (the
 // benchmark at 96², 1024 spp, 64³ / 128³: nook 0.59 / 0.60, R/G 2.99 / 3.06 against 1.99, G/R 2.66 /
@@ -572,8 +573,8 @@ TEST_F(CornellAccuracy, VoxelRaysMeetTheTwoBounceBars) {
 }
 
 // The same bars with the renderer's defaults (RenderSettings as constructed: the cached mode, two
-// bounces, 32 voxel rays) at issue #11's resolution, 128³, against the two-bounce reference: what a
-// user gets. Fails if a default goes back to the cones (nook 0.60, R/G 3.06 against 1.99 in the
+// bounces, 32 voxel rays) at the default voxel resolution, 128³, against the two-bounce reference:
+// what a user gets. Fails if a default goes back to the cones (nook 0.60, R/G 3.06 against 1.99 in the
 // benchmark at 96²) or to one bounce (every region too dark against two bounces). Measured (this
 // test): see the printout; the benchmark at 96², 1024 spp: ceiling 1.03, back wall 1.02, floor by
 // the green wall 0.92, nook 0.94, R/G 2.14, G/R 2.35 (docs/GI.md, "Voxel rays"). ~8 s.
@@ -585,9 +586,9 @@ TEST_F(CornellAccuracy, DefaultsMeetTheTwoBounceBarsAt128) {
     expectBleedingMatchesTheReference(truth, vct);
 }
 
-// Issue #11: RMSE of the final image (the VCT scaled so that its mean over directly lit pixels
+// RMSE of the final image (the VCT scaled so that its mean over directly lit pixels
 // matches the reference's) below half of GI-off's RMSE. Both one bounce. Measured at 64³: 0.60 of
-// GI-off's with the isotropic volume of before, 0.59 with the fixed six-cone set of the accurate
+// GI-off's with the isotropic volume, 0.59 with the fixed six-cone set of the accurate
 // mode (0.45 with the rejected five sub-cones per cone, at 6× the cone trace), 0.41 with the
 // stratified cone sets (docs/GI.md, "Stratified cone sets").
 TEST_F(CornellAccuracy, FinalImageErrorIsLessThanHalfOfGiOff) {
@@ -616,14 +617,14 @@ TEST_F(CornellAccuracy, FinalImageErrorIsLessThanHalfOfGiOff) {
     EXPECT_LT(on, 0.5 * off);
 }
 
-// Issue #11: the accurate mode's indirect light must not depend on the voxel resolution: each
+// The accurate mode's indirect light must not depend on the voxel resolution: each
 // region lit only indirectly changes by at most 10 % from 64³ to 128³ (no reference needed: both
-// are VCT). At 64³ the Cornell box's lit block tops (18 and 36 voxels above the floor) lay on the
-// faces between two voxels, and voxelize.frag.glsl put them into the voxel above: the ceiling and
-// the back wall read 8-11 % brighter than with the tops inside their voxel. VoxelVolume::fitTo now
-// shifts the grid by ¼ voxel in y and z (docs/GI.md, "Surfaces on voxel faces (eighth session)").
-// Measured here (96², 128³ ÷ 64³): before 0.876 (ceiling), 1.088 (nook), 0.996 (floor by the green
-// wall), 0.850 (back wall): it fails; after 0.942, 1.040, 0.989, 0.939.
+// are VCT). On an unshifted grid at 64³ the Cornell box's lit block tops (18 and 36 voxels above the
+// floor) lie on the faces between two voxels, and voxelize.frag.glsl puts them into the voxel above:
+// the ceiling and the back wall read 8-11 % brighter than with the tops inside their voxel.
+// VoxelVolume::fitTo shifts the grid by ¼ voxel in y and z (docs/GI.md, "Surfaces on voxel faces").
+// Measured here (96², 128³ ÷ 64³): without the shift 0.876 (ceiling), 1.088 (nook), 0.996 (floor by
+// the green wall), 0.850 (back wall): it fails; with it 0.942, 1.040, 0.989, 0.939.
 TEST_F(CornellAccuracy, IndirectRegionsChangeLittleFrom64To128Voxels) {
     const Scene scene = loadCornellBox();
     const std::vector<float> low = vctIndirect(scene, 64), high = vctIndirect(scene, 128);
@@ -638,26 +639,27 @@ TEST_F(CornellAccuracy, IndirectRegionsChangeLittleFrom64To128Voxels) {
     EXPECT_EQ(checked, 4) << "ceiling, back wall, shadowed floor by the green wall and by the red wall";
 }
 
-// Issue #11, the grid's alignment: the Cornell box's indirect light must not depend on where the
+// The grid's alignment: the Cornell box's indirect light must not depend on where the
 // voxel faces fall. Two tiny planes outside the box (one under the floor, one over the ceiling,
 // where no light reaches) stretch the scene's bounds in y to 2.4 m, so a voxel is 4 cm (64³; the
 // box is 50 voxels tall, the block tops 15 and 30 voxels above the floor). Moving both planes
-// down together moves the grid against the box and keeps the voxel size: with today's fitTo
+// down together moves the grid against the box and keeps the voxel size: with fitTo as it is
 // (2¼ voxels below the bounds) 0.19 m under the floor puts the floor, both block tops (the block
 // sides' top edges) and the ceiling on voxel faces, 0.21 m half a voxel off them; the depths are
 // found from the grid's placement, so the test holds if fitTo's padding or shift changes. Same
 // voxel size, same scene, only the alignment differs. With the edges on faces the conservative
-// rasterization wrote or skipped the rows the block sides only touch by sub-pixel snapping
-// (voxelize.geom.glsl kTouchMargin): in the benchmark at 64³, ceiling and back wall read 1.14 and
-// 1.09 of the reference on faces against 1.03-1.06 and 0.97-0.98 off them (8-12 % apart); with
-// the margin 1.03-1.08 and 0.98-0.99 over four offsets (at most 5 % apart). Measured here (96²,
-// on faces ÷ half a voxel off): with the margin ceiling 1.053, back wall 1.014; without it 1.131
-// and 1.137. Bar ±8 %: above the margin's spread (5 % in the benchmark, 5.3 % here) by a third,
-// so that another rasterizer's rounding does not trip it, and 5 points below the failure it
+// rasterization writes or skips the rows the block sides only touch by sub-pixel snapping, unless
+// voxelize.geom.glsl's kTouchMargin covers them: in the benchmark at 64³, ceiling and back wall
+// read 1.14 and 1.09 of the reference on faces against 1.03-1.06 and 0.97-0.98 off them (8-12 %
+// apart); with the margin 1.03-1.08 and 0.98-0.99 over four offsets (at most 5 % apart). Measured
+// here (96², on faces ÷ half a voxel off): with the margin ceiling 1.053, back wall 1.014; without
+// it 1.131 and 1.137. Bar ±8 %: above the margin's spread (5 % in the benchmark, 5.3 % here) by a
+// third, so that another rasterizer's rounding does not trip it, and 5 points below the failure it
 // catches. The two floor regions are printed, not asserted (25-33 px; the floor by the green wall
 // reads 1.07 with the margin and 1.01 without, the nook 1.014 and 1.036: neither is the edges').
 // With fitTo's ¼ shift dropped (x and z on faces as well) it fails the other way, ceiling 0.908:
-// the margin is not the whole cure, which is why the shift stays. docs/GI.md, "(ninth session)".
+// the margin is not the whole cure, which is why the shift stays. docs/GI.md, "Surfaces on voxel
+// faces".
 TEST_F(CornellAccuracy, IndirectRegionsDoNotDependOnTheGridAlignment) {
     const Scene original = loadCornellBox();
     const float span = 0.4f;  // the bounds grow from 2 m to 2.4 m in y: 60 → 50 voxels over the box
@@ -702,13 +704,13 @@ TEST_F(CornellAccuracy, IndirectRegionsDoNotDependOnTheGridAlignment) {
     EXPECT_EQ(checked, 2) << "ceiling, back wall";
 }
 
-// Not met yet (run with --gtest_also_run_disabled_tests; a known gap in docs/GI.md). With the
-// fixed six-cone set: the red-wall nook at 0.25-0.33 of the reference, R/G there 5.3-5.5 (ref.
+// Not met yet (run with --gtest_also_run_disabled_tests; a known gap: docs/GI.md, "Known limits").
+// With the fixed six-cone set: the red-wall nook at 0.25-0.33 of the reference, R/G there 5.3-5.5 (ref.
 // 2.64), G/R by the green wall 3.19 (ref. 2.46), the regions 13-16 % lower at 128³ than at 64³.
 // With the stratified cone sets (this test, 96²): the nook 0.82 and G/R pass; R/G is still too red
 // (benchmark 3.37 / 3.33 at 64³ / 128³) and the ceiling and back wall drop 13-14 % from 64³ to
-// 128³ (1.09 → 0.95, 1.09 → 0.93 of the reference; 6 % since the grid's ¼-voxel shift of the
-// eighth session: IndirectRegionsChangeLittleFrom64To128Voxels).
+// 128³ (1.09 → 0.95, 1.09 → 0.93 of the reference; 6 % with the grid's ¼-voxel shift:
+// IndirectRegionsChangeLittleFrom64To128Voxels).
 TEST_F(CornellAccuracy, DISABLED_ColourBleedingAndResolutionIndependence) {
     const Scene scene = loadCornellBox();
     const CornellMeasurement truth = measureReference(scene);
@@ -732,9 +734,10 @@ TEST_F(CornellAccuracy, DISABLED_ColourBleedingAndResolutionIndependence) {
 
 // Switching the accurate mode on in a running renderer (the editor's checkbox) without any scene
 // change: the directional mip chains, built only while anisotropic voxels are on, must be built
-// then, so the image equals a fresh renderer's; they are not allocated in the default mode and are
-// freed when the mode is switched off, and built again when it comes back. A renderer that skipped them would trace empty
-// directional volumes (no indirect light). Bar: 0.1 % of the mean, i.e. the same image.
+// then, so the image equals a fresh renderer's; they are not allocated in the fast mode and are
+// freed when the mode is switched off, and built again when it comes back. A renderer that skipped
+// them would trace empty directional volumes (no indirect light). Bar: 0.1 % of the mean, i.e. the
+// same image.
 TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
     const Scene scene = loadCornellBox();
     RenderSettings accurate = giSettings(64, View::IndirectDiffuse, 48);
@@ -742,7 +745,7 @@ TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
     RenderSettings plain = accurate;
     plain.gi.mode = GiMode::Fast;
     render(scene, plain);
-    // The default mode does not allocate the directional volumes (0.6-1.3 GiB at 512³).
+    // The fast mode does not allocate the directional volumes (0.6-1.3 GiB at 512³).
     ASSERT_NE(renderer_->voxels(), nullptr);
     EXPECT_FALSE(static_cast<bool>(renderer_->voxels()->directional(0))) << "directional volumes allocated in the default mode";
     const std::size_t plainBytes = renderer_->voxels()->radianceBytes();
@@ -775,9 +778,9 @@ TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
 
 // Temporal accumulation in the accurate mode, still camera, indirect scale 1 (so no pixel jitter:
 // only the cone set's rotation could change between frames). Footprint-bounded cones see along
-// their axes, and turning the set every frame, as the default mode does, made the result depend
-// on the frame (second session: a still camera's L_ID changed 9.6 % from frame to frame; the
-// cornell_inside path flickered 5.4 %, 0.4 % with the set fixed). Bar: 0.5 % mean change between
+// their axes, and turning the set every frame, as the fast mode does, makes the result depend
+// on the frame (a still camera's L_ID changed 9.6 % from frame to frame; the cornell_inside path
+// flickered 5.4 %, 0.4 % with the set fixed). Bar: 0.5 % mean change between
 // frames 2 and 3 (with the set fixed they are the same image up to the history blend's rounding).
 TEST_F(GiAccuracy, AccurateModeIsStableUnderTemporalAccumulation) {
     const Scene scene = loadCornellBox();
@@ -816,7 +819,7 @@ TEST_F(GiAccuracy, AccurateModeIsStableUnderTemporalAccumulation) {
 // also holds the part of the +x plane that rounded to the voxel beyond its face). Their cones see
 // the dark outside: 974 of 21930 voxels, 3-bounce mean 1.62 against 1.71 inside. Over every opaque
 // voxel the 3-bounce ratio read 1.6965 with voxelize.geom.glsl's kTouchMargin (1.7013 without),
-// over the box's voxels 1.7035 (1.7018): docs/GI.md, "(ninth session)".
+// over the box's voxels 1.7035 (1.7018): docs/GI.md, "Bounces" and "Surfaces on voxel faces".
 TEST_F(GiAccuracy, BouncesAddUpInAClosedEmissiveBox) {
     Scene scene;
     const float albedo = 0.5f;
@@ -877,10 +880,10 @@ TEST_F(GiAccuracy, BouncesAddUpInAClosedEmissiveBox) {
     EXPECT_NEAR(means[2] / means[0], 1.0f + albedo + albedo * albedo, 0.03f * (1.0f + albedo + albedo * albedo));
 }
 
-// The voxel-irradiance experiment (GiSettings::voxelIrradiance(), docs/GI.md, ninth
-// session) in the benchmark's sealed room (assets/gi/sealed_room.gltf, its camera, 128², 128³, as
+// The cached mode's voxel irradiance (GiSettings::voxelIrradiance(), docs/GI.md, "The gather")
+// in the benchmark's sealed room (assets/gi/sealed_room.gltf, its camera, 128², 128³, as
 // lit-gi-accuracy): its gather must keep to voxels facing as the pixel does. With (normal
-// agreement)² (eighth session) the inside floor's gather read the walls' voxels and let in 1.86×
+// agreement)² the inside floor's gather read the walls' voxels and let in 1.86×
 // the accurate mode's light (8.98e-3 against 4.83e-3 of the ground's radiance); with the 16th power
 // 1.00× (4.85e-3), and 0.88× here since rough L_IS comes from the gather too. Bar: no more than
 // 1.1× the accurate mode. ~3 s.
@@ -1007,10 +1010,10 @@ TEST_F(GiAccuracy, BouncesSpreadOverFramesEndWhereOneFrameEnds) {
     EXPECT_LE(relativeDifference(revoxelized, fresh), 1e-5);
 }
 
-// A light dragged in the editor: an edit every frame. With two bounces (the default since the
-// thirteenth session) a spread update started again at each edit, so its bounce never ended, the
-// irradiance never ran and the indirect light stood still until the drag stopped (L_ID during the
-// drag 0.000 % from before it). Now a light edit lets a running update run on, the voxels not
+// A light dragged in the editor: an edit every frame. With two bounces (the default) a spread
+// update that started again at each edit would never end its bounce, the irradiance would never run
+// and the indirect light would stand still until the drag stopped (L_ID during the drag 0.000 %
+// from before it, measured). A light edit lets a running update run on, the voxels not
 // traced yet taking the new direct light, and another update follows: the indirect light follows
 // the drag a few frames behind, and once the light stops the image is a fresh renderer's. Cornell
 // box, 64³, two bounces with voxel rays, 2 frames a pass at the replay pace. ~3 s.
@@ -1050,7 +1053,8 @@ TEST_F(GiAccuracy, LightDragUpdatesTheIndirectLightWhileItLasts) {
                 "after it, %.6f %% from a fresh renderer (the drag changed it %.2f %%)\n",
                 kDragFrames, kDragFrames / 2, 100.0 * during, frames, 100.0 * after, 100.0 * change);
     // Half-way through the drag the light went half the way; the indirect light lags an update (4
-    // frames here): it shows the light of the first two frames (5.1 % of 38.5 % measured, 0 before).
+    // frames here): it shows the light of the first two frames (5.1 % of 38.5 % measured; 0 when
+    // each edit restarts the update).
     EXPECT_GT(during, 0.1 * change) << "the indirect light must follow the drag";
     EXPECT_LE(frames, 2 * 2 * 2) << "at most the update under way and one more";
     EXPECT_LE(after, 1e-5);
@@ -1058,9 +1062,9 @@ TEST_F(GiAccuracy, LightDragUpdatesTheIndirectLightWhileItLasts) {
 
 // The cached mode's voxel irradiance is traced with the cone settings (footprint bound, aperture,
 // step, trace distance, anisotropic voxels): changing one must trace it again, as a renderer
-// started with the new value does. Before the tenth session only bounces > 1 re-traced on such a
-// change, so the cached mode kept showing the old settings' light (measured here: 35.9 % of the
-// mean L_ID away from a fresh renderer's, against 0 once re-traced). Cornell box, 64³, L_ID. ~2 s.
+// started with the new value does. If only bounces > 1 re-traced on such a change, the cached mode
+// would keep showing the old settings' light (measured here: 35.9 % of the mean L_ID away from a
+// fresh renderer's, against 0 once re-traced). Cornell box, 64³, L_ID. ~2 s.
 TEST_F(GiAccuracy, CachedModeTracesTheVoxelIrradianceAgainWhenTheConeSettingsChange) {
     const Scene scene = loadCornellBox();
     RenderSettings settings = cachedAt64();
@@ -1145,13 +1149,14 @@ TEST_F(GiAccuracy, CachedModeRefinementConvergesToAllConeSetsPerVoxel) {
     }
 }
 
-// The voxel rays' hit cache (InjectPass::ensureRayHits): the first trace after a voxelization
+// The voxel rays' hit cache (RayHitCache): the first trace after a voxelization
 // records every ray's hit, and the traces after a light edit replay them instead of marching. The
 // replayed light must be the marched light exactly: after a light edit, and after a geometry edit
 // (which must record afresh: the old hits would be the old geometry's), the image equals that of
-// the variant that always marches (LIT_RAY_HIT_CACHE 0). Before the cache a light edit cost a
-// re-voxelization's trace (Sponza 256³: ratio 0.88-1.02, issue #12's bar ≤ ¼); with it 0.18-0.23
-// (docs/PERFORMANCE.md). Cornell box, 64³, the defaults (two bounces, 32 rays), L_ID. ~4 s.
+// the variant that always marches (LIT_RAY_HIT_CACHE 0). Without the cache a light edit costs a
+// re-voxelization's trace (Sponza 256³: ratio 0.88-1.02, the bar ≤ ¼); with it 0.18-0.23
+// (docs/PERFORMANCE.md, "GI update"). Cornell box, 64³, the defaults (two bounces, 32 rays), L_ID.
+// ~4 s.
 TEST_F(GiAccuracy, VoxelRayHitCacheReplaysTheMarchedLight) {
     Scene scene = loadCornellBox();
     RenderSettings settings = twoBouncesWithRays();

@@ -61,8 +61,9 @@ TEST_F(GlErrors, InjectedErrorOnlyWhenRequested) {
     EXPECT_EQ(glErrorLines().size(), 1u);
 }
 
-// An image larger than GL_MAX_TEXTURE_SIZE (issue #14: it ended in GL errors) is refused before
-// the upload with a warning that names it, and the texture falls back to the neutral one.
+// An image larger than GL_MAX_TEXTURE_SIZE (glTextureStorage2D would fail with a GL error) is
+// refused before the upload with a warning that names it, and the texture falls back to the
+// neutral one.
 TEST_F(GlErrors, AnImageOverTheTextureLimitIsAWarningNotAGlError) {
     GLint maxSide = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSide);

@@ -36,9 +36,9 @@ protected:
         return root;
     }
 
-    // Renders `frames` frames of the Cornell box from inside (the full-frame view) with the
-    // shaders under `shaderRoot`; returns the last frame. Temporal accumulation on, so the history
-    // outputs of both passes feed the later frames.
+    // Renders `frames` frames of the Cornell box from inside (the full-frame view of the
+    // benchmarks) with the shaders under `shaderRoot`; returns the last frame. Temporal
+    // accumulation on, so the history outputs of both passes feed the later frames.
     HdrImage renderWith(const fs::path& shaderRoot, GiMode mode, int scale, int frames, View view = View::Final) {
         Renderer renderer(shaderRoot, log_);
         const Scene scene = loadGltf(sourceDir() / "assets" / "cornell_box.gltf", log_);

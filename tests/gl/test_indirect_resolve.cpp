@@ -1,6 +1,6 @@
 // Reduced-resolution indirect lighting and its temporal accumulation (ConeTracePass::
 // executeReduced + IndirectResolvePass), through the Renderer on the Cornell box seen from
-// inside (every pixel a wall or box, as in the issue's full-frame benchmark).
+// inside (every pixel a wall or box, as in the full-frame benchmark).
 // Cost: about 28 s in all on llvmpipe (2 cores), 96² to 128² pixels, 64³ voxels.
 #include "GlTestSupport.h"
 
@@ -92,7 +92,7 @@ protected:
 };
 
 // Half and quarter resolution tracing (one frame, no accumulation) against the per-pixel trace:
-// the issue's quality target is 2 % RMSE relative to the mean on the final image.
+// the quality target is 2 % RMSE relative to the mean on the final image.
 TEST_F(IndirectResolve, ReducedResolutionMatchesFullResolutionOnCornellBox) {
     const Scene scene = loadCornellBox();
     renderer_->setScene(scene);
@@ -109,7 +109,7 @@ TEST_F(IndirectResolve, ReducedResolutionMatchesFullResolutionOnCornellBox) {
     const double termRmse = relativeRmse(halfIndirect, fullIndirect);
     std::printf("final image RMSE vs full resolution: 1/2 %.3f %%, 1/4 %.3f %%; L_ID alone at 1/2: %.3f %% of its mean\n",
                 100 * halfRmse, 100 * quarterRmse, 100 * termRmse);
-    EXPECT_LE(halfRmse, 0.02);     // the issue's target
+    EXPECT_LE(halfRmse, 0.02);     // the quality target
     EXPECT_LE(quarterRmse, 0.02);  // same target; the default is 1/2
     // The indirect term on its own is smooth on the Cornell box: the upsampled term must be close,
     // not only the final image where direct light dominates.
@@ -183,7 +183,7 @@ TEST_F(IndirectResolve, StillCameraConverges) {
     EXPECT_GT(early, 0.002) << "the cone sets should turn between frames";
     // With 16 frames of history a frame moves the result by about 1/16 of one frame's deviation.
     EXPECT_LE(late, 0.25 * early);
-    EXPECT_LE(late, 0.01);  // the issue's flicker target, 1 % of the mean
+    EXPECT_LE(late, 0.01);  // the flicker target, 1 % of the mean
 
     // The converged image is still the per-pixel trace's image within the quality target.
     RenderSettings reference = settings;
@@ -209,8 +209,8 @@ TEST_F(IndirectResolve, ConeSubsetsConvergeToTheWholeConeSet) {
     const CameraView camera = insideCamera(1.0f);
     // The fast mode's fixed cone set: the accurate mode's subsets (pairs of the stratified sets) are
     // AccurateConeSubsetsConvergeToTheWholeSets, without this test's final-image check, which the
-    // accurate mode's reduced-resolution gap would fail with or without subsets (docs/GI.md, "The
-    // accurate mode at reduced resolution").
+    // accurate mode's reduced-resolution gap would fail with or without subsets (docs/GI.md, "Known
+    // limits": the accurate mode at reduced resolution).
     HdrImage subsetFinal;
     RenderSettings reference;  // the per-pixel trace of the same settings, without accumulation
     const SubsetRuns runs = renderSubsetsAndWholeSets(scene, camera, GiMode::Fast, [&](RenderSettings subsets) {
@@ -239,7 +239,7 @@ TEST_F(IndirectResolve, ConeSubsetsConvergeToTheWholeConeSet) {
     EXPECT_GT(first, 0.01) << "one frame of subsets should differ from the whole set";
     EXPECT_LE(converged, 0.04);
     EXPECT_LE(std::abs(bias), 0.005);
-    EXPECT_LE(final, 0.02);  // the issue's quality target
+    EXPECT_LE(final, 0.02);  // the quality target
 }
 
 // Cone subsets in the accurate mode: each texel traces the normal cone and side cones k, k + 2 of
@@ -268,9 +268,9 @@ TEST_F(IndirectResolve, AccurateConeSubsetsConvergeToTheWholeSets) {
     // history clamped to the neighbours' box widened by 10 % as in the fast mode
     // (IndirectResolvePass::clampMargin) 8.1 %, 4.2 % change per frame.
     EXPECT_GT(first, 0.01) << "one frame of subsets should differ from the whole sets";
-    EXPECT_LE(converged, 0.02);  // the issue's quality target
+    EXPECT_LE(converged, 0.02);  // the quality target
     EXPECT_LE(std::abs(bias), 0.005);
-    EXPECT_LE(late, 0.01);  // the issue's flicker target, 1 % of the mean
+    EXPECT_LE(late, 0.01);  // the flicker target, 1 % of the mean
 }
 
 // World point of pixel (x, y) of a depth image rendered with `camera` (square image of `size`).
@@ -341,7 +341,7 @@ TEST_F(IndirectResolve, HistoryIsKeptAcrossARenderSizeSwitch) {
     // subsets, rotated sets: 10.7 %), so history shows. The accurate mode's first frame already
     // averages all 16 stratified sets through the strata filter (4.2 % from the converged image,
     // the rest is the jitter of the traced pixel), and a 5 cm move's nearest-pixel reprojection of
-    // the kept history measured 5.5 %: no longer a test of whether history is kept. An accurate-
+    // the kept history measured 5.5 %: not a test of whether history is kept. An accurate-
     // mode equivalent needs a first frame that is far from converged (per-frame set subsets) or a
     // history-identity check (e.g. a frame count read back from the history's alpha).
     settings.gi.mode = GiMode::Fast;
@@ -362,7 +362,7 @@ TEST_F(IndirectResolve, HistoryIsKeptAcrossARenderSizeSwitch) {
     std::printf("first full-size frame after a switch, L_ID RMSE from the converged image: %.3f %% (a first frame "
                 "without history: %.3f %%)\n", 100 * backError, 100 * freshError);
     // Measured (96², 64³, cone subsets): 3.9 % with the kept history, 10.7 % for a first frame
-    // without it. Failing variants: the history dropped at every size change (as before) 10.4 %;
+    // without it. Failing variants: the history dropped at every size change 10.4 %;
     // kept but reprojected with the last frame's camera (the small frame's) instead of its own 8.6 %.
     EXPECT_LE(backError, 0.5 * freshError);
 }

@@ -1,7 +1,7 @@
 // The rasterizer's direct terms against the reference path tracer's (label gl). With GI off
 // both compute light → surface → eye with the same BRDF and light units; only visibility differs
 // (shadow maps against exact rays), so pixels near shadow and geometry edges are masked out and
-// the means over the rest must agree within 2 % (the bound). Also: the cone tracer's
+// the means over the rest must agree within 2 % (the bound). Also: the cone tracer's
 // specular albedo table against the reference's own GGX integration.
 #include "GlTestSupport.h"
 

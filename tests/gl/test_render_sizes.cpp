@@ -1,6 +1,6 @@
 // Render-size changes (the editor's interactive render scale switches between the full size when
 // still and a smaller one while moving): the G-buffer, lighting-term and post targets of the
-// previous size are kept as a spare and reused when that size comes back (issue #12). An image
+// previous size are kept as a spare and reused when that size comes back (TargetsBySize). An image
 // rendered after a switch back must be exactly the image a renderer that never changed size
 // renders, including the indirect terms (reduced-resolution trace and resolve) and a data view.
 // Cost: about 3 s on llvmpipe (2 cores): two renderers, 96² and 64², 64³ voxels.

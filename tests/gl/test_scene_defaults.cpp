@@ -1,4 +1,4 @@
-// Scenes from other tools look right without manual settings (issue #13):
+// Scenes from other tools look right without manual settings:
 //  - Blender-exported scenes (tests/data/blender, made by tools/blender/make_scenes.py) render
 //    within 25 % of the mean brightness of Blender's own Cycles render of them;
 //  - a scene without lights gets a default sun and a sky, whose light reaches surfaces through
@@ -28,7 +28,8 @@ class BlenderScenes : public GlFixture, public ::testing::WithParamInterface<con
 // Lit's defaults (EV 0, no auto exposure, sky auto = none for a lit scene, GI on) against the
 // mean of Cycles' linear render (256 samples, black world; cycles_reference.json says how it was
 // made). Both are means of linear radiance over all pixels of the same camera at 128×128, so no
-// view transform enters. The 25 % bound on the full image is the issue's requirement (Cycles
+// view transform enters. The 25 % bound on the full image is the requirement for scenes from
+// other tools (Cycles
 // traces every bounce, Lit one cone-traced bounce). The direct light alone (Lit without GI,
 // Cycles with no bounces) isolates the light units from the GI: 10 % covers the differences in
 // shading models (Principled BSDF vs Lit's GGX + Lambert) and Cycles' noise (< 1 % at 256
@@ -56,10 +57,10 @@ TEST_P(BlenderScenes, MeanBrightnessWithin25PercentOfCycles) {
                 cycles.at("directMeanLuminance").get<double>(), directRatio);
     EXPECT_GT(directRatio, 0.9);
     EXPECT_LT(directRatio, 1.1);
-    // The point scene was 1.28x Cycles in the fast GI mode (its cone-traced indirect diffuse 0.262
+    // The point scene is 1.28x Cycles in the fast GI mode (its cone-traced indirect diffuse 0.262
     // where the reference's one bounce gives 0.069: docs/UNITS.md, "Brightness against Blender's
-    // Cycles"); in the cached mode, the default since the tenth session, it is 0.91 (spot 0.86,
-    // sun 0.88), so all three are asserted.
+    // Cycles"); in the cached mode, the default, it is 0.91 (spot 0.86, sun 0.88), so all three are
+    // asserted.
     EXPECT_GT(ratio, 0.75);
     EXPECT_LT(ratio, 1.25);
 }
@@ -127,10 +128,10 @@ TEST_F(SceneDefaults, BareSceneGetsASunAtAnAngleAndASky) {
 // A uniform sky of radiance L over an open floor gives irradiance π·L, so the floor's indirect
 // diffuse radiance should be ρ·L = 0.5 (ρ = 0.5); with the sun off this is all the light there is.
 // How much of it a roof takes away is SkyUnderARoofMatchesTheClosedForm's (below): this camera, low
-// and far, averages metres of floor in a pixel, the open floor beyond the roof too. It had asserted
-// less than 0.6 × the open floor's here (a band: it read 0.279, the closed form's one-bounce 0.210 is
-// 0.42 of ρ·L); the rays that start on the floor (fifteenth session) read 0.320, the open floor in
-// the window with more of the sky that the roof truly leaves.
+// and far, averages metres of floor in a pixel, the open floor beyond the roof too. A band of less
+// than 0.6 × the open floor's under the roof read 0.279 with rays started √3 voxels off the voxel
+// centre (the closed form's one-bounce 0.210 is 0.42 of ρ·L) and reads 0.320 with the rays that
+// start on the floor, the open floor in the window with more of the sky that the roof truly leaves.
 TEST_F(SceneDefaults, SkyLightReachesAnOpenFloorThroughTheVoxels) {
     RenderSettings settings = uniformSkySettings();
     settings.gi.voxelResolution = 64;
@@ -150,16 +151,16 @@ double parallelRectangleViewFactor(double a, double b, double h) {
     return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2.0 * 3.14159265358979);
 }
 
-// A closed form for the voxel rays' geometry (issue #11, resolution independence): one bounce of a
+// A closed form for the voxel rays' geometry (resolution independence): one bounce of a
 // uniform sky (radiance L = 1, no sun) on a floor of albedo ρ = 0.5 under a 2 m × 2 m roof 0.95 m
 // above it. The roof holds no light (one bounce: only what the sky gives directly), so the floor
 // below its centre reflects ρ·L·(1 − F), F = the roof's view factor (0.579), and the open floor ρ·L.
-// Until the fifteenth session the voxel rays started √3 voxels off the voxel centre (17 cm at 64³
-// here, where a voxel is 10 cm), from where the roof covers more of the sky, and ended where they
-// entered a voxel, so the roof looked up to a voxel wider: the floor read 0.60 and 0.83 of the closed
-// form at 64³ and 128³. They start half a voxel off the floor's plane and end on the roof's surface
-// now (bounce.comp.glsl; docs/GI.md, "Rays that end on the surface"): 0.905 and 0.955. Bar ±10 %,
-// the issue's resolution-independence bar, at both. What is left at 64³ is mostly the start, still
+// Voxel rays started √3 voxels off the voxel centre (17 cm at 64³ here, where a voxel is 10 cm),
+// from where the roof covers more of the sky, and ended where they entered a voxel, so the roof
+// looked up to a voxel wider: the floor read 0.60 and 0.83 of the closed form at 64³ and 128³. They
+// start half a voxel off the floor's plane and end on the roof's surface (bounce.comp.glsl;
+// docs/GI.md, "Rays that end on the surface"): 0.905 and 0.955. Bar ±10 %, the resolution-
+// independence bar, at both. What is left at 64³ is mostly the start, still
 // 5 cm above the floor: from there the roof's view factor is 0.605, the floor's share of the sky 6 %
 // less (0.25 voxel off reads 0.950 and 0.972, but the sealed room leaks 0.84 % at 128³, not 0.73 %).
 TEST_F(SceneDefaults, SkyUnderARoofMatchesTheClosedForm) {
@@ -223,12 +224,13 @@ std::filesystem::path sharedScene(const char* relative) {
 // one render with sun and sky, one with the sky alone, both in the default mode).
 //
 // The bounds come from the reference renderer (reference/PathTracer.h) of this view, 128 × 96,
-// with the same default sun and gradient sky (docs/UNITS.md "Sponza's atrium"):
+// with the same default sun and gradient sky (docs/UNITS.md "Sponza's atrium under the default sun
+// and sky"):
 //  - the mean linear luminance with sun and sky, every bounce, 16 spp: 0.0243. Lit must be
-//    within 25 % of it (the issue's bar for the Blender scenes against Cycles); Lit measures
-//    0.0247 (the cached mode, the default since the tenth session), 0.0254 (accurate mode) and
-//    0.0256 (fast mode). The old bound, mean > 0.05, asked for
-//    twice the light the scene physically gives this view (about 3 stops under the sunlit ground).
+//    within 25 % of it (the bar for the Blender scenes against Cycles); Lit measures 0.0247 (the
+//    cached mode, the default), 0.0254 (accurate mode) and 0.0256 (fast mode). A bound of
+//    mean > 0.05 would ask for twice the light the scene physically gives this view (about 3 stops
+//    under the sunlit ground).
 //  - sky light on surfaces, sun off: the diffuse light the sky gives the surfaces in view by one
 //    segment (Lit's one-bounce cones return the sky, its voxels hold no sky light), as a mean over
 //    all pixels (background 0): 0.00099 (every bounce: 0.00118). This is a presence check, not an
@@ -237,9 +239,9 @@ std::filesystem::path sharedScene(const char* relative) {
 //    footprints read more: 0.1 → 0.00054, 0.03 → 0.00075; the coarse voxels over the atrium's 11 m
 //    walls block most of its opening, docs/UNITS.md), the fast mode 2·10⁻⁵ = 0.02 (lost). The
 //    bar, more than a tenth of the reference, fails when the sky light is lost as in the fast mode
-//    and passes with the cone-traced modes' known gap (issue #11); the upper bar, 1.25 × the
-//    reference, fails if the sky is counted twice. The old bound, > 0.01, was ten times the
-//    reference's sky light.
+//    and passes with the cone-traced modes' known gap (docs/GI.md, "Known limits"); the upper bar,
+//    1.25 × the reference, fails if the sky is counted twice. A bound of > 0.01 would be ten times
+//    the reference's sky light.
 TEST_F(SceneDefaults, SponzaFromInsideTheAtriumIsLitBySunAndSky) {
     const std::filesystem::path path = sharedScene("sponza/Sponza.gltf");
     if (path.empty()) GTEST_SKIP() << "Sponza not found (set LIT_SCENES_DIR or put it in ../shared/scenes): skipped";

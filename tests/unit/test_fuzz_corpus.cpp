@@ -1,6 +1,6 @@
 // Replays the fuzzing corpus through the ordinary loader (not libFuzzer): the seeds must load,
 // and every input that ever crashed, hung or exhausted memory under tools/fuzz.sh
-// (tests/fuzz/regressions) must now give a SceneLoadError or a scene, each within seconds.
+// (tests/fuzz/regressions) must give a SceneLoadError or a scene, each within seconds.
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,8 @@
 // The hardened loader front (renderer/io/GltfGuard.h) through loadGltf: each test is one of the
-// hostile inputs of issue #14 (deep JSON, a folder or an escaping path as a URI, amplification,
-// unknown versions) written small into a fresh folder. Each must give a SceneLoadError naming
-// the file (or load correctly), never a crash, an allocation of the file system's whim or a hang.
+// hostile inputs the guard exists for (deep JSON, a folder or an escaping path as a URI,
+// amplification, unknown versions) written small into a fresh folder. Each must give a
+// SceneLoadError naming the file (or load correctly), never a crash, an allocation of the file
+// system's whim or a hang.
 
 #include <gtest/gtest.h>
 
@@ -117,7 +118,7 @@ TEST(GltfGuard, TheTriangleLoads) {
     EXPECT_EQ(scene.meshes[0].primitives[0].indices.size(), 3u);
 }
 
-// Issue #14, cause 1: extras nested 1,000-100,000 levels overflowed tinygltf's recursion.
+// Extras nested 1,000-100,000 levels deep overflow tinygltf's recursion.
 TEST(GltfGuard, DeepJsonIsRefusedBeforeTinygltfRecurses) {
     TempDir dir;
     for (const int depth : {65, 1000, 100000}) {
@@ -149,7 +150,7 @@ TEST(GltfGuard, TooManyJsonValuesAreRefused) {
     EXPECT_CONTAINS(loadError(writeScene(dir, "values.gltf", doc), options), "more than 400 values");
 }
 
-// Issue #14, cause 2: a uri naming a folder made tinygltf try to allocate ~2^63 bytes.
+// A uri naming a folder makes tinygltf try to allocate ~2^63 bytes.
 TEST(GltfGuard, AFolderAsBufferOrImageIsNotRead) {
     TempDir dir;
     fs::create_directories(dir / "sub");
@@ -204,8 +205,8 @@ TEST(GltfGuard, UrisOutsideTheScenesFolderAreRefused) {
 }
 
 // An absolute path or a file: URI names a file anywhere: refused without the opt-in, read with
-// it. tinygltf joins every URI onto the scene's folder ("scene/" + "/data/tri.bin"), so before
-// the fix the opt-in still ended in "File not found" (issue #14).
+// it. tinygltf joins every URI onto the scene's folder ("scene/" + "/data/tri.bin"), so left to
+// tinygltf the opt-in would still end in "File not found".
 TEST(GltfGuard, AbsolutePathsAndFileUrisAreReadOnlyWithTheOptIn) {
     TempDir dir;
     fs::create_directories(dir / "scene");
@@ -323,7 +324,7 @@ TEST(GltfGuard, RequiredExtensionsLitDoesNotHaveAreRefused) {
     EXPECT_CONTAINS(loadError(writeScene(dir, "draco.gltf", doc)), "requires the glTF extension KHR_draco_mesh_compression");
 }
 
-// Issue #14, cause 3: thousands of images naming one PNG were decoded one by one.
+// Thousands of images naming one PNG would be decoded one by one.
 TEST(GltfGuard, IdenticalImagesAreDecodedOnceAndShared) {
     TempDir dir;
     writeBytes(dir / "wood.png", png(64, 64, 200));

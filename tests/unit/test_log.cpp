@@ -13,7 +13,7 @@ TEST(Log, RepeatsDifferingOnlyInNumbersFoldIntoOneEntry) {
     std::vector<LogMessage> heard;
     log.setSink([&heard](const LogMessage& m) { heard.push_back(m); });
     log.info("opened scene");
-    // What a gizmo drag used to log every frame.
+    // A line repeated every frame with other numbers (as a gizmo drag re-voxelizes).
     for (int frame = 0; frame < 50; ++frame)
         log.info("re-voxelized 64³ (geometry changed): voxelize " + std::to_string(1.5 + frame) + " ms",
                  Fold::IgnoringNumbers);

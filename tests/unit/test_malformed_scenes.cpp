@@ -1,5 +1,6 @@
-// The catalogue of malformed scenes (issue #14): one named set, each kind made from the project's
-// Cornell box by one mutation, each with what Lit must do with it. A file that cannot be drawn is
+// The catalogue of malformed scenes (docs/RELIABILITY.md, "The catalogue of malformed scenes"):
+// one named set, each kind made from the project's Cornell box by one mutation, each with what Lit
+// must do with it. A file that cannot be drawn is
 // refused with a SceneLoadError that names the file and the problem; a file whose values are only
 // out of the spec's ranges loads, with a warning naming the value, and Lit draws the nearest valid
 // value. The suite's sanitizer build (tools/lit.sh test-sanitize) runs the catalogue under
@@ -318,7 +319,7 @@ TEST_P(MalformedScene, IsRefusedWithAClearErrorOrLoadsWithAWarning) {
 INSTANTIATE_TEST_SUITE_P(Catalogue, MalformedScene, ::testing::ValuesIn(catalogue()),
                          [](const ::testing::TestParamInfo<Kind>& info) { return info.param.name; });
 
-// The issue asks for 21 kinds at least; the catalogue must not shrink below that unnoticed.
+// The catalogue holds 21 kinds at least and must not shrink below that unnoticed.
 TEST(MalformedSceneCatalogue, HoldsAtLeast21Kinds) { EXPECT_GE(catalogue().size(), 21u); }
 
 }  // namespace

@@ -159,7 +159,7 @@ TEST(ReferenceClosedForm, LambertFloorUnderPointLight) {
             return kIntensity / (distance * distance) * (d.y / distance);  // E = I/d² · cos θ
         }).mean;
         const glm::vec3 got = r.tracer->image().mean(Term::DirectDiffuse, static_cast<std::size_t>(p.y * 32 + p.x));
-        // 1 %: the issue's bound; the pixel-jitter noise at 256 spp is below 0.2 % here.
+        // 1 %: the bound; the pixel-jitter noise at 256 spp is below 0.2 % here.
         EXPECT_NEAR(got.r, expected, 0.01f * expected) << "pixel " << p.x << ", " << p.y;
         EXPECT_FLOAT_EQ(got.r, got.b) << "white light on a white floor stays grey";
     }
@@ -195,7 +195,7 @@ TEST(ReferenceClosedForm, SpotConeAndRangeWindow) {
             const PixelTruth truth = closedFormPixel(r.camera, 32, x, y, kAlbedo, irradiance);
             const float expected = truth.mean;
             const float got = r.tracer->image().mean(Term::DirectDiffuse, static_cast<std::size_t>(y * 32 + x)).g;
-            // 1 % (the issue's bound), or 4 standard errors of the pixel's jitter noise where the
+            // 1 % (the bound), or 4 standard errors of the pixel's jitter noise where the
             // cone's edge crosses the pixel and the radiance inside it ranges from 0 to full.
             const float noise = 4.0f * truth.spread / std::sqrt(256.0f);
             EXPECT_NEAR(got, expected, std::max({0.01f * expected, noise, 1e-4f})) << "pixel " << x << ", " << y;
@@ -415,8 +415,9 @@ TEST(ReferenceTerms, FinalIsTheSumOfTheTermsAndBouncesAddLight) {
 // with every bounce, against the linear mean of Cycles' render of the same file (256 samples,
 // black world, light radius 0, cycles_reference.json). This ties the light units and the
 // integrator to a renderer Lit does not share code with, and is what tells a units error (the
-// reference would disagree too) from a GI error of the cone tracer (only Lit would): issue #13's
-// point scene is 1.28× Cycles in Lit but not in the reference (docs/UNITS.md).
+// reference would disagree too) from a GI error of the cone tracer (only Lit would): the point
+// scene is 1.28× Cycles in Lit's fast mode but not in the reference (docs/UNITS.md, "Brightness
+// against Blender's Cycles").
 // Measured (32 spp, 128²): reference / Cycles = 0.985 point, 0.94 spot, 0.983 sun. The 10 % band
 // covers the shading models (Principled BSDF against glTF's GGX + Lambert) and the spot's edge
 // (Blender's smoothstep blend against glTF's quadratic falloff of the exporter's inner/outer
@@ -512,13 +513,14 @@ TEST(ReferenceProgressive, AccumulatesWhileStillAndRestartsOnChange) {
 }
 
 
-// ---- Accuracy regions on the Cornell box's variants (issue #11's diagnosis) ----------------------
+// ---- Accuracy regions on the Cornell box's variants (the GI accuracy diagnostics) ---------------
 
 // make-gi-suite's mirrored and colour-swapped Cornell boxes (assets/gi) are what they claim, and the
 // regions name each floor half by the wall on its side: a pixel of the mirrored box sees what the
 // pixel mirrored about the image's centre column sees in the Cornell box, at x negated; the red
 // wall's half of the floor is x < 0 in the Cornell box and x > 0 in both variants. (Those
-// scenes told a tracer defect from a property of the scene and the cone set: docs/GI.md.)
+// scenes tell a tracer defect from a property of the scene and the cone set: docs/GI.md, "Accuracy
+// against the reference".)
 TEST(AccuracyRegions, CornellVariantsAreMirroredAndRegionsFollowTheRedWall) {
     // The benchmark's size: at 64² the short block's shadow is too small to survive the regions'
     // two-pixel erosion.

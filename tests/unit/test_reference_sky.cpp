@@ -1,5 +1,5 @@
 // The editor's progressive reference (Reference and Difference views) sees the rasterizer's sky
-// and default sun (issue #13, docs/REFERENCE.md): a scene without lights under the default
+// and default sun (docs/REFERENCE.md): a scene without lights under the default
 // gradient sky. 16×16 pixels, direct light only: well under a second.
 
 #include <gtest/gtest.h>
@@ -76,7 +76,7 @@ TEST(ReferenceSky, TheEditorsReferenceSeesTheSameSkyAndSunAsTheRasterizer) {
     const int skyX = kSize / 2, skyY = kSize - 1, floorX = kSize / 2, floorY = 0;
 
     ProgressiveReference progressive(8);
-    // Without the rasterizer's settings, as the editor used to call it: black.
+    // Without the rasterizer's settings (a caller that passes none): black.
     progressive.update(b.scene, b.camera, kSize, kSize, settings);
     const std::vector<float> unlit = finalImage(progressive, lighting, 1);
     EXPECT_EQ(pixel(unlit, skyX, skyY), glm::vec3(0.0f));

@@ -1,4 +1,4 @@
-// Files from real tools (issue #13): photometric light units, a lossless save (animations,
+// Files from real tools: photometric light units, a lossless save (animations,
 // extras, unknown extensions, no invented tangents), camera animations as paths, the sky model
 // on the CPU, the exposure settings, depth ranges for a camera inside a scene, and the Khronos
 // glTF-Validator on what Lit saves (when node and the validator are installed).

@@ -20,7 +20,7 @@
 // --cone-split: also a table of the indirect diffuse of each Cornell region split by the six
 // diffuse cones' regions of the hemisphere (see coneSplit below), the truth's and the VCT's.
 // cornell_room, cornell_mirrored and cornell_swapped (assets/gi, the Cornell box rebuilt, mirrored
-// in x, its wall colours swapped) run only when --scenes names them (diagnostics, issue #11).
+// in x, its wall colours swapped) run only when --scenes names them (diagnostics).
 //
 // Metrics (luminance, per scene and resolution; regions from reference/AccuracyRegions.h):
 //   indirect-only VCT/ref   mean indirect radiance (L_ID + L_IS) of the VCT over the pixels lit only
