@@ -48,7 +48,8 @@ public:
     // tracing (texture fetches) and image loads see every level. Changes the current program and
     // image units LIT_IMG_MIP_SOURCE, LIT_IMG_MIP_DEST, LIT_IMG_MIP_DEST2, LIT_IMG_MIP_DEST3.
     // With `anisotropic`, also builds the six directional chains (executeDirectional): only then,
-    // because they cost ~10× the isotropic chain on llvmpipe (docs/GI.md, "Anisotropic voxels").
+    // because they cost ~10× the isotropic chain on llvmpipe (lit-render --bench prints both:
+    // docs/PERFORMANCE.md, "What each benchmark prints").
     // `overOccupiedParents` (and the volume's parent lists valid): only the voxels of each level
     // with an occupied voxel below them are computed, one indirect dispatch per level over its
     // list; every other voxel is left as VoxelizePass cleared it, 0, which is also what the whole
