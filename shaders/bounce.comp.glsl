@@ -1,5 +1,5 @@
 #version 450 core
-// One more light bounce in the voxel volume (InjectPass::executeBounce): every occupied voxel's
+// One more light bounce in the voxel volume (BouncePass): every occupied voxel's
 // outgoing radiance becomes its direct radiance plus what it reflects of the light the volume
 // holds now,
 //   L_{k+1} = L_direct + albedo · Σ_i W_i/π · C_i(L_k)                (W/(sr·m²))
@@ -32,7 +32,7 @@
 // it averages the 16 cone sets (rayIrradiance).
 //
 // Defines set by InjectPass: LIT_BOUNCE_RGBA8 (1: rgba8 direct volume, 0: rgba16f);
-// LIT_BOUNCE_IRRADIANCE 1 (the cached GI mode, InjectPass::executeIrradiance, voxel_irradiance.glsl):
+// LIT_BOUNCE_IRRADIANCE 1 (the cached GI mode, VoxelIrradiancePass, voxel_irradiance.glsl):
 // store each voxel's irradiance/π instead, for the side of its averaged normal and the other side,
 // in two volumes of the radiance volume's format (voxel_irradiance_filter.comp.glsl then averages
 // them over the cone sets), and leave the radiance as it is; LIT_IRRADIANCE_ALL_SETS 1: average all
@@ -123,7 +123,7 @@ vec3 rayOrigin(ivec3 v, vec3 normal, float agreement) {
     return voxel.volumeMin.xyz + (voxelSurfacePoint(v) + kRayStartVoxels * normal) * voxel.voxelInfo.z;
 }
 
-// The ray-hit cache (InjectPass::ensureRayHits, LIT_SSBO_VOXEL_RAY_HITS): a ray's first hit depends
+// The ray-hit cache (RayHitCache, LIT_SSBO_VOXEL_RAY_HITS): a ray's first hit depends
 // on the voxels' occupancy, normals and surface points only, not on their light, so a trace over the list records
 // each ray's hit (uRayHits 1) and later traces of the same rays replay them (2) with the radiance
 // the volume holds then: a light edit's bounce and irradiance march no ray. 0: march, record nothing

@@ -1,5 +1,5 @@
 #version 450 core
-// The end of a light bounce (InjectPass::endBounce): copies each listed voxel's traced bounce
+// The end of a light bounce (BouncePass::finish): copies each listed voxel's traced bounce
 // (bounce.comp.glsl wrote it for every entry of the occupied list) into level 0 of the radiance
 // volume. Only the list: empty voxels hold 0 in level 0 since the voxelization, and a copy of the
 // whole N³ volume moved 33 times the occupied voxels on Sponza at 256³ (3 % occupied; the

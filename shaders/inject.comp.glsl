@@ -28,7 +28,7 @@ layout(binding = LIT_IMG_VOXEL_RADIANCE) uniform writeonly image3D voxelRadiance
 layout(binding = LIT_IMG_VOXEL_DIRECT) uniform writeonly image3D voxelDirect;
 uniform int uWriteDirect;
 // 0 (with uWriteDirect): level 0 keeps the last update's light, which the bounces replace once
-// they are done (a light edit with voxel rays: Renderer, InjectPass::execute).
+// they are done (a light edit with voxel rays: VoxelGi, InjectOptions::writeLevel0).
 uniform int uWriteLevel0;
 
 void storeRadiance(ivec3 v, vec4 value) {

@@ -34,7 +34,7 @@ std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     // (one per axis, its two faces and a gap between them side by side) starts at 3·(N/2)³, 3/8 of
     // the base, so the three add 9/7 of it.
     const std::size_t radiance = voxels * texel * 8 / 7 + 9 * (voxels / 8) * texel * 8 / 7;
-    // The cached GI mode's irradiance volumes (InjectPass::prepareIrradiance: the traced one,
+    // The cached GI mode's irradiance volumes (VoxelIrradianceCache::prepare: the traced one,
     // N × N × 2N for two sides in the radiance format, and the RGBA32UI gather texels); counted in
     // every mode.
     const std::size_t irradiance = 2 * voxels * texel + voxels * 16;

@@ -12,7 +12,7 @@
 //             lets a cone pick its face by a coordinate offset instead of a branch, which llvmpipe
 //             would run both sides of); level 0 stays the isotropic radiance volume
 //   direct, bounce  same format, N³, 1 level, allocated when more than one bounce is asked for:
-//             the direct radiance and the next bounce's radiance (InjectPass::executeBounce)
+//             the direct radiance and the next bounce's radiance (BouncePass)
 //
 // The material volumes use r32ui because GLSL has atomics only on 32-bit integers: fragments that
 // land in the same voxel average with a compare-and-swap loop (voxel.glsl) instead of flickering.

@@ -104,7 +104,7 @@ using mat4 = glm::mat4;
 // k+2 and k+3 at these. Units 4..7 stay below GL 4.5's guaranteed minimum of 8 image units.
 #define LIT_IMG_MIP_DEST2 6
 #define LIT_IMG_MIP_DEST3 7
-// Multiple bounces (InjectPass::executeBounce): the direct radiance read, the next bounce written.
+// Multiple bounces (BouncePass): the direct radiance read, the next bounce written.
 #define LIT_IMG_VOXEL_DIRECT 4
 #define LIT_IMG_VOXEL_BOUNCE 5
 // The light a bounce's voxel rays take where they end (bounce.comp.glsl): the direct volume for the
@@ -127,7 +127,7 @@ using mat4 = glm::mat4;
 // then the lists and the levels' bitmasks (offsets from MipmapPass). Work groups of
 // LIT_INJECT_LIST_GROUP_SIZE entries, as over the occupied-voxel list.
 #define LIT_SSBO_MIP_PARENTS 5
-// The voxel rays' first hits (InjectPass::ensureRayHits, bounce.comp.glsl): one uint per occupied-
+// The voxel rays' first hits (RayHitCache, bounce.comp.glsl): one uint per occupied-
 // list entry, side (front, back) and ray, recorded by a trace and replayed while the voxels stay.
 #define LIT_SSBO_VOXEL_RAY_HITS 6
 #define LIT_MIP_LIST_LEVELS 10  // levels 0..9: a 512³ volume's whole chain

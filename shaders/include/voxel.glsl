@@ -123,7 +123,7 @@ uint averageRgbAdd(uint current, vec3 value) {
 uint packVoxelCoord(ivec3 v) { return uint(v.x) | (uint(v.y) << 10) | (uint(v.z) << 20); }
 ivec3 unpackVoxelCoord(uint p) { return ivec3(int(p & 1023u), int((p >> 10) & 1023u), int(p >> 20)); }
 
-// What a compute shader that InjectPass::dispatchOverVoxels runs (injection, bounces) declares:
+// What a compute shader that dispatchOverVoxels (gi/VoxelDispatch.h) runs (injection, bounces) declares:
 // the list, whether this dispatch runs over it (uFromList = 1, LIT_INJECT_LIST_GROUP_SIZE entries
 // per work group) or over the whole grid, and listedVoxel(), this invocation's voxel of the list
 // (false past its end).
@@ -138,7 +138,7 @@ ivec3 unpackVoxelCoord(uint p) { return ivec3(int(p & 1023u), int((p >> 10) & 10
         return true;                                                                               \
     }
 // A part of the list, entries [uListFirst, uListEnd), in one dispatch sized for them (the cached GI
-// mode's amortised irradiance trace and its filter, InjectPass::dispatchListRange); the whole list
+// mode's amortised irradiance trace and its filter, dispatchListRange); the whole list
 // is uListFirst 0 and uListEnd the capacity, as the indirect dispatch. Use with LIT_VOXEL_LIST_READER.
 // `index`: the voxel's entry in the list (per-entry data kept beside it, the voxel rays' hits).
 #define LIT_VOXEL_LIST_RANGE_READER                                                                       \

@@ -747,7 +747,7 @@ TEST_F(GiAccuracy, SwitchingTheAccurateModeOnBuildsTheDirectionalChains) {
     render(scene, plain);
     // The fast mode does not allocate the directional volumes (0.6-1.3 GiB at 512³).
     ASSERT_NE(renderer_->voxels(), nullptr);
-    EXPECT_FALSE(static_cast<bool>(renderer_->voxels()->directional(0))) << "directional volumes allocated in the default mode";
+    EXPECT_FALSE(static_cast<bool>(renderer_->voxels()->directional(0))) << "directional volumes allocated in the fast mode";
     const std::size_t plainBytes = renderer_->voxels()->radianceBytes();
     // The same renderer and scene (no setScene: that would re-voxelize), only the settings change.
     renderer_->render(scene, cameraFor(scene, accurate), accurate);
