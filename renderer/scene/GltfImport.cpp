@@ -251,12 +251,15 @@ std::vector<int> Importer::loadNodes(Scene& scene) const {
                     fail(what + " has a 'scale' with " + std::to_string(in.scale.size()) + " numbers, expected 3");
                 node.scale = glm::vec3(in.scale[0], in.scale[1], in.scale[2]);
             }
+            // The keys "t0", "r3", ... built by append: GCC 12 at -O3 warns (-Wrestrict, a false
+            // positive) on "t" + std::to_string(k) here, which breaks the -Werror Release build.
+            const auto component = [](char what, std::size_t k) { return std::string(1, what).append(std::to_string(k)); };
             for (std::size_t k = 0; k < in.translation.size(); ++k)
-                noteNumber(node.fileNumbers, "t" + std::to_string(k), in.translation[k]);
+                noteNumber(node.fileNumbers, component('t', k), in.translation[k]);
             for (std::size_t k = 0; k < in.rotation.size(); ++k)
-                noteNumber(node.fileNumbers, "r" + std::to_string(k), in.rotation[k]);
+                noteNumber(node.fileNumbers, component('r', k), in.rotation[k]);
             for (std::size_t k = 0; k < in.scale.size(); ++k)
-                noteNumber(node.fileNumbers, "s" + std::to_string(k), in.scale[k]);
+                noteNumber(node.fileNumbers, component('s', k), in.scale[k]);
         }
         node.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_lights_punctual"});
         (reachable[i] ? scene.nodes : scene.keptNodes).push_back(std::move(node));

@@ -253,7 +253,9 @@ std::string usageText() {
             std::string names;
             for (auto name = flag.names.rbegin(); name != flag.names.rend(); ++name)
                 names += (names.empty() ? "" : ", ") + *name;
-            if (!flag.shownValue().empty()) names += " " + flag.shownValue();
+            // Appended, not " " + shownValue(): GCC 12 at -O3 warns (-Wrestrict, a false positive)
+            // on that form, which breaks the -Werror Release build.
+            if (!flag.shownValue().empty()) names.append(" ").append(flag.shownValue());
             std::string line = std::string(kIndent, ' ') + names;
             line += line.size() + 2 <= kHelpColumn ? std::string(kHelpColumn - line.size(), ' ')
                                                    : "  ";  // 2 spaces at least
