@@ -33,6 +33,8 @@ constexpr double kHeapReleaseInterval = 5.0;
 // Longest time step given to the camera, in seconds: after a stall (loading a scene) the
 // camera must not jump by the whole stall.
 constexpr float kMaxCameraStep = 1.0f;
+// How often a loading scene's progress window is refreshed while nothing else happens, s.
+constexpr double kLoadingRefreshSeconds = 0.1;
 // Window background where the renderer has not drawn (before the first frame): dark grey, sRGB.
 constexpr float kBackground[4] = {0.08f, 0.08f, 0.09f, 1.0f};
 
@@ -109,6 +111,9 @@ void App::resetCamera() {
     const CameraView view = sceneCameraView(doc_.scene, cameraIndex, aspect);
     camera_.setFromView(view);
     camera_.speed = flySpeedForBounds(doc_.scene.worldBounds());
+    // A jump to another view (a new document, "Reset to scene camera") is no motion: the next
+    // frame renders at the full scale rather than lowered, then held for the grace period.
+    lastView_ = glm::mat4(0.0f);
 }
 
 void App::updateTitle() {
@@ -128,9 +133,19 @@ int App::run() {
     double previousTime = glfwGetTime();
     double nextShaderCheck = previousTime + kShaderReloadInterval;
     double nextHeapRelease = previousTime + kHeapReleaseInterval;
-    int framesRendered = 0;
+    int framesDrawn = 0;
+    double waitSeconds = 0.0;  // how long this frame may wait for events first (IdleWait)
     while (!exitCode_) {
-        glfwPollEvents();
+        // An idle editor sleeps until the window system has news or something is due; the
+        // sleep is no part of the frame's work (camera step, frame time in the overlay).
+        double slept = 0.0;
+        if (waitSeconds > 0.0) {
+            const double before = glfwGetTime();
+            glfwWaitEventsTimeout(waitSeconds);
+            slept = glfwGetTime() - before;
+        } else {
+            glfwPollEvents();
+        }
         if (window_.shouldClose()) {
             // The close button: ask first when there are unsaved changes.
             window_.cancelClose();
@@ -151,13 +166,15 @@ int App::run() {
             continue;
         }
         const double now = glfwGetTime();
-        const double frameSeconds = now - previousTime;
+        const double frameSeconds = now - previousTime;  // the previous frame, with its sleep
+        const double workSeconds = std::max(frameSeconds - slept, 0.0);
         previousTime = now;
-        frameTimer_.add(frameSeconds);
+        frameTimer_.add(workSeconds);
+        if (previousRendered_) lastRenderSeconds_ = workSeconds;
 
         imgui_->beginFrame();
-        input_.updateFlyCamera(std::min(static_cast<float>(frameSeconds), kMaxCameraStep));
-        updatePlayback(frameSeconds);
+        input_.updateFlyCamera(std::min(static_cast<float>(workSeconds), kMaxCameraStep));
+        updatePlayback(workSeconds);
         input_.handleMouse(input_.currentView());
         const glm::ivec2 previousRenderSize{doc_.settings.output.width, doc_.settings.output.height};
         drawUi(previousRenderSize);
@@ -172,46 +189,58 @@ int App::run() {
             target = glm::ivec4(glm::round(topLeft.x), glm::round(static_cast<float>(framebuffer.y) - topLeft.y - size.y),
                                 glm::max(glm::ivec2(glm::round(size)), glm::ivec2(1)));
         }
+        sceneUpload_.syncStructure(doc_.scene, log_);
+        const CameraView view = input_.currentView();
+        FrameInputs inputs = frameInputs(view, screenshots_.cleanViewportDue());
         // Lowered while the camera moves or a value is dragged (ViewportSettings::interactiveFpsTarget).
-        const float renderScale = renderScaleFor(frameSeconds, input_.currentView().view);
+        const float renderScale = renderScaleFor(now, view.view, redraw_.editedSinceRender(inputs));
         const glm::ivec2 renderSize =
             glm::max(glm::ivec2(glm::round(glm::vec2(target.z, target.w) * renderScale)), glm::ivec2(1));
-        sceneUpload_.syncStructure(doc_.scene, log_);
-        if (options_.frameLog) frameLog_.add({now, renderScale, renderSize, cameraMoved_});
+        doc_.settings.output.width = inputs.settings.output.width = renderSize.x;
+        doc_.settings.output.height = inputs.settings.output.height = renderSize.y;
 
-        doc_.settings.output.width = renderSize.x;
-        doc_.settings.output.height = renderSize.y;
-        const CameraView view = input_.currentView();
-        // A screenshot of the viewport alone (F12, "screenshot PATH noui") is a clean render:
-        // no selection outline, gizmo, markers or path, only what a debug view itself draws.
-        updateOverlay(view, screenshots_.cleanViewportDue());
-        // The shadow map view follows the selected light; the saved setting stays as it was.
-        RenderSettings frameSettings = doc_.settings;
-        if (frameSettings.debug.view == View::ShadowMap && doc_.selectedNode >= 0 &&
-            doc_.selectedNode < static_cast<int>(doc_.scene.nodes.size())) {
-            const int light = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].light;
-            if (light >= 0) frameSettings.debug.shadowMapLight = light;
+        // Redraw on demand: render only when the inputs changed or work is still in flight.
+        const GiBudget budget = giBudget(now);
+        const FrameStats& stats = renderer_->stats();  // of the last rendered frame
+        const PendingWork pending{
+            .giUpdating = stats.giUpdateDone < 1.0f,
+            .giRefining = stats.giRefining && budget.refineVoxels > 0,
+            .playing = playback_.playing,
+            .screenshot = screenshots_.cleanViewportDue(),
+            .shadersReloaded = std::exchange(shadersReloaded_, false),
+        };
+        const RedrawReason reason = redraw_.decide(inputs, pending, viewport_.redrawOnDemand);
+        const bool render = reason != RedrawReason::None;
+        if (render) {
+            renderer_->setOverlay(inputs.overlay);
+            renderer_->render(doc_.scene, view, inputs.settings, budget);
+        } else {
+            // The last frame's GPU timings arrive without a new frame to collect them.
+            renderer_->profiler().poll();
         }
-        // The cached mode's refinement (more cone sets per voxel after an update) improves light
-        // that is already right and costs the same at any render scale: while the camera moves or a
-        // value is dragged it waits, so the frame's time goes to the frame rate (the Cornell box at
-        // 1280×720 moved at 4-5 FPS while it ran, 11-12 FPS without it: docs/PERFORMANCE.md,
-        // "Editor"), and it goes on when the view is still.
-        GiBudget budget{viewport_.giUpdateVoxelsPerFrame > 0
-                            ? static_cast<std::uint32_t>(viewport_.giUpdateVoxelsPerFrame)
-                            : GiBudget::kAll,
-                        static_cast<std::uint32_t>(std::max(viewport_.giRefineVoxelsPerFrame, 0))};
-        if (interacting_) budget.refineVoxels = 0;
-        renderer_->render(doc_.scene, view, frameSettings, budget);
-        if (options_.frameLog) frameLog_.last().refinedVoxels = renderer_->stats().refinedVoxels;
-        referenceViewer_.update(doc_.scene, view, frameSettings, *renderer_);
+        // The reference tracer runs on its own thread: its image is refreshed either way.
+        referenceViewer_.update(doc_.scene, view, inputs.settings, *renderer_);
+        if (render) redraw_.rendered(std::move(inputs), reason, now);
+        previousRendered_ = render;
+        lastFrame_ = {
+            .renderScale = renderScale,
+            .rendered = render,
+            .reason = redrawReasonName(reason),
+            .framesReused = render ? 0 : lastFrame_.framesReused + 1,
+            .renderFrameMs = lastRenderSeconds_ * 1000.0,
+        };
+        if (options_.frameLog) {
+            frameLog_.add({now, renderScale, renderSize, cameraMoved_});
+            frameLog_.last().refinedVoxels = render ? renderer_->stats().refinedVoxels : 0;
+            frameLog_.last().rendered = render;
+        }
         takeScreenshots(/*withUi=*/false, framebuffer);
         presentViewport(framebuffer, target);
         imgui_->render();
         takeScreenshots(/*withUi=*/true, framebuffer);
-        ++framesRendered;
+        ++framesDrawn;
 
-        if (options_.screenshot && framesRendered >= options_.frames) {
+        if (options_.screenshot && framesDrawn >= options_.frames) {
             Screenshots::saveWindow(framebuffer, *options_.screenshot);
             return 0;
         }
@@ -220,37 +249,101 @@ int App::run() {
         files_.autosave(now);  // glfwGetTime: a steady clock
 
         if (now >= nextShaderCheck) {
-            renderer_->reloadChangedShaders();
+            shadersReloaded_ = renderer_->reloadChangedShaders();
             nextShaderCheck = now + kShaderReloadInterval;
         }
         if (now >= nextHeapRelease) {
             ProcessMemory::releaseFreeHeap();
             nextHeapRelease = now + kHeapReleaseInterval;
         }
+        waitSeconds = idleWaitSeconds(render);
     }
     files_.exiting(*exitCode_);
     if (options_.frameLog) {
         try {
             frameLog_.write(*options_.frameLog, glfwGetTime());
-        } catch (const std::exception& e) {
-            log_.error(std::string("frame log: ") + e.what());
+        } catch (const std::exception& error) {
+            log_.error(std::string("frame log: ") + error.what());
         }
     }
     return *exitCode_;
 }
 
-float App::renderScaleFor(double frameSeconds, const glm::mat4& view) {
+FrameInputs App::frameInputs(const CameraView& view, bool cleanViewport) const {
+    FrameInputs inputs{
+        .camera = view,
+        .settings = doc_.settings,
+        .geometryRevision = doc_.scene.geometryRevision,
+        .materialRevision = doc_.scene.materialRevision,
+        .lightRevision = doc_.scene.lightRevision,
+        .sceneUploads = sceneUpload_.uploads(),
+        .overlay = {},
+    };
+    // The shadow map view follows the selected light; the saved setting stays as it was.
+    if (inputs.settings.debug.view == View::ShadowMap && doc_.selectedNode >= 0 &&
+        doc_.selectedNode < static_cast<int>(doc_.scene.nodes.size())) {
+        const int light = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].light;
+        if (light >= 0) inputs.settings.debug.shadowMapLight = light;
+    }
+    // The shadow map and the voxel slice are 2D images, not the camera's view: world-space
+    // markers and outlines would land on them at random.
+    if (!isFlatView(doc_.settings.debug.view)) {
+        const ImGuiIO& io = ImGui::GetIO();
+        inputs.overlay = buildViewportOverlay(doc_, view, {io.DisplaySize.x, io.DisplaySize.y},
+                                              input_.overlayOptions(cleanViewport));
+    }
+    return inputs;
+}
+
+GiBudget App::giBudget(double now) const {
+    GiBudget budget{viewport_.giUpdateVoxelsPerFrame > 0 ? static_cast<std::uint32_t>(viewport_.giUpdateVoxelsPerFrame)
+                                                         : GiBudget::kAll,
+                    static_cast<std::uint32_t>(std::max(viewport_.giRefineVoxelsPerFrame, 0))};
+    // The cached mode's refinement (more cone sets per voxel after an update) improves light
+    // that is already right and costs the same at any render scale: while the camera moves or a
+    // value is dragged, and for the interactive scale's grace period after, it waits, so the
+    // frame's time goes to the frame rate (the Cornell box at 1280×720 moved at 4-5 FPS while it
+    // ran, 11-12 FPS without it: docs/PERFORMANCE.md, "Editor"), and it goes on when the view is
+    // still.
+    if (interacting_ || interactiveScale_.holding(now)) budget.refineVoxels = 0;
+    return budget;
+}
+
+double App::idleWaitSeconds(bool rendered) {
+    // Scripts and --screenshot run frame after frame; so does anything moving or converging.
+    const bool busy = options_.scriptMode() || options_.screenshot || rendered || imgui_->sawInput() ||
+                      ImGui::IsAnyItemActive() || input_.looking() || input_.gizmoDragging() || playback_.playing ||
+                      shadersReloaded_;
+    const double now = glfwGetTime();
+    double wakeWithin = IdleWait::kMaxSeconds;
+    // The full-size frame follows the grace period of the interactive scale without an event.
+    if (interactiveScale_.holding(now)) wakeWithin = std::min(wakeWithin, interactiveScale_.graceLeft(now));
+    // The reference image and a loading scene's progress change on other threads.
+    if (referenceViewer_.accumulating()) wakeWithin = std::min(wakeWithin, ReferenceViewer::kRefreshSeconds);
+    if (files_.loading()) wakeWithin = std::min(wakeWithin, kLoadingRefreshSeconds);
+    return idleWait_.next(busy, wakeWithin);
+}
+
+float App::renderScaleFor(double now, const glm::mat4& view, bool edited) {
     // The first frame has no view to compare with: it does not count as a motion.
     const bool moving = view != lastView_ && lastView_ != glm::mat4(0.0f);
     lastView_ = view;
     cameraMoved_ = moving;
     // Scripts (unless "interactive on") and screenshots render what they ask for, at the chosen scale.
     const bool scripted = script_ && !script_->interactive();
-    const bool interacting = !scripted && !options_.screenshot && (moving || ImGui::IsAnyItemActive());
+    // A value dragged counts while it changes what is rendered: a click on a button or a row
+    // is active too, and must not drop the scale for nothing.
+    const bool dragging = edited && (ImGui::IsAnyItemActive() || input_.gizmoDragging());
+    const bool interacting = !scripted && !options_.screenshot && (moving || dragging);
     interacting_ = interacting;
-    frameScale_ =
-        interactiveScale_.next(viewport_.renderScale, interacting, viewport_.interactiveFpsTarget, frameSeconds);
-    return frameScale_;
+    return interactiveScale_.next({
+        .full = viewport_.renderScale,
+        .interacting = interacting,
+        .targetFps = viewport_.interactiveFpsTarget,
+        .now = now,
+        .lastRenderSeconds = lastRenderSeconds_,
+        .previousRendered = previousRendered_,
+    });
 }
 
 void App::updatePlayback(double dtSeconds) {
@@ -258,18 +351,6 @@ void App::updatePlayback(double dtSeconds) {
     playback_.advance(doc_.cameraPath, dtSeconds);
     if (!playback_.lookThrough) return;
     lookThroughPath(doc_.cameraPath, playback_.time, camera_);
-}
-
-void App::updateOverlay(const CameraView& view, bool cleanViewport) {
-    // The shadow map and the voxel slice are 2D images, not the camera's view: world-space
-    // markers and outlines would land on them at random.
-    if (isFlatView(doc_.settings.debug.view)) {
-        renderer_->setOverlay({});
-        return;
-    }
-    const ImGuiIO& io = ImGui::GetIO();
-    renderer_->setOverlay(
-        buildViewportOverlay(doc_, view, {io.DisplaySize.x, io.DisplaySize.y}, input_.overlayOptions(cleanViewport)));
 }
 
 void App::takeScreenshots(bool withUi, glm::ivec2 framebufferSize) {
@@ -305,7 +386,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.inspector) inspectorPanel_.draw(doc_, layout.inspector, &visible_.inspector);
     if (visible_.stats)
         drawStatsOverlay(frameTimer_, renderer_->profiler(), renderer_->stats(), renderSize, imgui_->monoFont(),
-                         layout.stats, &visible_.stats, renderer_->voxels(), frameScale_);
+                         layout.stats, &visible_.stats, renderer_->voxels(), lastFrame_);
     if (visible_.renderSettings) {
         const RenderSettingsRequests requests =
             drawRenderSettingsPanel(doc_.settings, viewport_, static_cast<int>(doc_.scene.lights.size()),
@@ -398,9 +479,11 @@ void App::presentViewport(glm::ivec2 framebufferSize, glm::ivec4 target) {
     // neither decodes the source nor encodes into the (sRGB-capable) window, so the encoded
     // values are copied unchanged, and ImGui's sRGB-authored colours are drawn as they are.
     glDisable(GL_FRAMEBUFFER_SRGB);
-    glClearNamedFramebufferfv(0, GL_COLOR, 0, kBackground);
-
     const gl::Texture& output = referenceViewer_.output() ? *referenceViewer_.output() : renderer_->outputTexture();
+    // Cleared only where the image does not cover the window (a 2D view, no image yet): a clear
+    // of the whole window costs 0.5-1 ms on llvmpipe, in every frame.
+    if (!output || target != glm::ivec4(0, 0, framebufferSize.x, framebufferSize.y))
+        glClearNamedFramebufferfv(0, GL_COLOR, 0, kBackground);
     if (!output) return;
     // Attached every frame: the renderer recreates the texture on resize, and a deleted texture
     // can come back under the same name.

@@ -2,7 +2,8 @@
 // The editor application: owns the window, the UI, the renderer, the Document (scene, camera
 // path, settings, selection, undo) and the editor's state, wires the parts that act on them
 // (FileActions, ViewportInput, Screenshots, ScriptRunner, the panels) and runs the frame loop:
-// input, UI, render, present. Panels edit the Document and the state they are given; the App
+// input, UI, the 3D render when something in it changed (ViewportRedraw), present, and a sleep
+// while nothing happens (IdleWait). Panels edit the Document and the state they are given; the App
 // turns their requests and the keyboard shortcuts into actions.
 
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include "FileActions.h"
 #include "FrameLog.h"
 #include "FrameTimer.h"
+#include "IdleWait.h"
 #include "ImGuiLayer.h"
 #include "InteractiveScale.h"
 #include "Log.h"
@@ -31,12 +33,14 @@
 #include "ScriptRunner.h"
 #include "TransformGizmo.h"
 #include "ViewportInput.h"
+#include "ViewportRedraw.h"
 #include "Window.h"
 #include "gl/Objects.h"
 #include "panels/HierarchyPanel.h"
 #include "panels/InspectorPanel.h"
 #include "panels/LogPanel.h"
 #include "panels/MainMenu.h"
+#include "panels/StatsOverlay.h"
 #include "panels/TimelinePanel.h"
 #include "scene/CameraView.h"
 
@@ -63,11 +67,17 @@ private:
     // Plays the camera path and, when looking through it, moves the fly camera along.
     void updatePlayback(double dtSeconds);
     // The viewport's render scale this frame: viewport_.renderScale when still, lower while
-    // interacting so the frame time meets the target.
-    float renderScaleFor(double frameSeconds, const glm::mat4& view);
-    // Markers, gizmo, path, selection and cones for this frame, handed to the renderer; with
-    // `cleanViewport` only the cones of the cone directions view (for viewport screenshots).
-    void updateOverlay(const CameraView& view, bool cleanViewport);
+    // interacting so the frame time meets the target. `edited`: the camera, the scene or the
+    // render settings differ from the last rendered frame's (ViewportRedraw::editedSinceRender).
+    float renderScaleFor(double now, const glm::mat4& view, bool edited);
+    // What the viewport's frame is rendered from, its render size aside: the camera, the render
+    // settings, the scene's revisions and the overlay (markers, gizmo, path, selection, cones;
+    // with `cleanViewport` only the cones of the cone directions view, for viewport screenshots).
+    FrameInputs frameInputs(const CameraView& view, bool cleanViewport) const;
+    // The GI work this frame may do: the refinement waits while interacting.
+    GiBudget giBudget(double now) const;
+    // Whether the frame loop may sleep before the next frame (IdleWait), and how long.
+    double idleWaitSeconds(bool rendered);
     // Writes the screenshots due at this point of the frame (`withUi`: after the UI is drawn).
     void takeScreenshots(bool withUi, glm::ivec2 framebufferSize);
     void drawUi(glm::ivec2 renderSize);
@@ -123,10 +133,17 @@ private:
     // Interactive render scale (ViewportSettings::interactiveFpsTarget): the scale the viewport
     // uses while the camera moves or a value is dragged, and the last frame's view to detect motion.
     InteractiveScale interactiveScale_;
-    float frameScale_ = 1.0f;  // the render scale of the last frame (for the overlay)
     glm::mat4 lastView_{0.0f};
     bool cameraMoved_ = false;  // this frame's view differs from the last one's
     bool interacting_ = false;  // the camera moves or a value is dragged (renderScaleFor)
+    // Redraw on demand (ViewportSettings::redrawOnDemand): the 3D frame renders only when its
+    // inputs changed or work is pending; the loop sleeps when nothing happens at all.
+    ViewportRedraw redraw_;
+    IdleWait idleWait_;
+    ViewportFrameInfo lastFrame_;     // the last frame, for the performance overlay
+    bool previousRendered_ = false;   // the previous frame rendered the 3D image
+    double lastRenderSeconds_ = 0.0;  // how long the last frame that rendered took, s
+    bool shadersReloaded_ = false;    // changed shader files were reloaded after the last frame
 };
 
 }  // namespace lit::editor

@@ -42,6 +42,10 @@ struct ViewportSettings {
     // While the camera moves or a value is dragged, the viewport lowers its render scale to hold
     // this frame rate (frames per second; 0 = never), and renders at full scale when still.
     float interactiveFpsTarget = 10.0f;
+    // Render the 3D image only when something it shows changed or work is still in flight, and
+    // show the last one again otherwise (ViewportRedraw.h); off renders every frame (for timing
+    // the renderer in the editor).
+    bool redrawOnDemand = true;
     // The GI work a frame may do (GiBudget): occupied voxels the update after an edit traces per
     // frame (0 = all in the edit's frame), then voxels the refinement traces per frame (0 = none).
     // Spread so that a light edit keeps the editor answering; the light converges to the same

@@ -78,6 +78,8 @@ public:
     // In the UI: the loading progress and the questions, acting on their answers.
     void drawLoadingWindow();
     void drawQuestions();
+    // A scene is loading on the worker: its progress window wants frames while nothing else does.
+    bool loading() const { return loading_.has_value(); }
     bool asking() const { return unsavedQuestion_.asking() || recoverQuestion_.asking(); }
     // Once a frame: writes the autosave copy when it is due. `nowSeconds`: a steady clock.
     void autosave(double nowSeconds);

@@ -1,6 +1,7 @@
 #pragma once
-// --frame-log FILE: one row per rendered frame (when it began, the render scale and size, whether
-// the camera moved, the voxels the GI refined), written as CSV when the editor ends. The
+// --frame-log FILE: one row per frame of the editor's loop (when it began, the render scale and
+// size, whether the camera moved, the voxels the GI refined, whether the 3D image was rendered or
+// the last one shown again), written as CSV when the editor ends. The
 // editor_interactive test and the frame-rate measurements (docs/PERFORMANCE.md, "Editor") read
 // it. Window-free (lit_editor_core).
 
@@ -18,6 +19,7 @@ struct FrameLogRow {
     glm::ivec2 renderSize{0};  // pixels
     bool cameraMoved = false;
     std::uint32_t refinedVoxels = 0;  // FrameStats::refinedVoxels of the frame
+    bool rendered = false;            // the 3D image was rendered (redraw on demand: ViewportRedraw.h)
 };
 
 class FrameLog {
@@ -26,8 +28,8 @@ public:
     // The row of the frame being rendered (after add).
     FrameLogRow& last() { return rows_.back(); }
 
-    // frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels:
-    // a frame lasts until the next one begins (the loop's own frame time: update, render,
+    // frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,
+    // rendered: a frame lasts until the next one begins (the loop's own frame time: update, render,
     // present), the last one until `endSeconds`; start_s counts from the first frame.
     std::string csv(double endSeconds) const;
     // Writes csv() atomically; throws when it cannot.

@@ -5,8 +5,10 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
+#include <iterator>
 #include <stdexcept>
 #include <system_error>
 
@@ -114,6 +116,15 @@ void ImGuiLayer::beginFrame() {
     ImGui_ImplGlfw_NewFrame();
     latchShortKeyPresses();
     ImGui::NewFrame();
+    // After NewFrame: it derives the mouse delta and the releases, and the typed characters
+    // stay queued until the frame ends. A held key or button counts (the fly camera moves while
+    // WASD is held, and holding sends no events).
+    const ImGuiIO& io = ImGui::GetIO();
+    const auto any = [](const auto& flags) {
+        return std::any_of(std::begin(flags), std::end(flags), [](bool b) { return b; });
+    };
+    sawInput_ = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f || io.MouseWheelH != 0.0f ||
+                !io.InputQueueCharacters.empty() || any(io.MouseDown) || any(io.MouseReleased) || any(io.KeysDown);
 }
 
 void ImGuiLayer::render() {

@@ -23,6 +23,9 @@ public:
     ImFont* monoFont() const { return monoFont_; }
 
     void beginFrame();
+    // The frame begun last saw input: the mouse moved, a button or key is held or was released,
+    // the wheel turned, text was typed. The frame loop sleeps only after frames without any.
+    bool sawInput() const { return sawInput_; }
     // Builds the draw lists and draws them into the current framebuffer (the window's).
     void render();
 
@@ -41,6 +44,7 @@ private:
     std::array<bool, kKeyCount> latched_{};
     ImFont* uiFont_ = nullptr;
     ImFont* monoFont_ = nullptr;
+    bool sawInput_ = false;
 };
 
 }  // namespace lit::editor

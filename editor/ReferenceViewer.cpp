@@ -21,10 +21,6 @@ double nowSeconds() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Refreshing the image costs a pass over it on the CPU (and, for Difference, an HDR read-back):
-// a few times a second is enough to watch it converge.
-constexpr double kUploadInterval = 0.25;  // seconds
-
 }  // namespace
 
 void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
@@ -44,8 +40,8 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
 
     const double now = nowSeconds();
     const reference::ProgressiveStatus status = tracer_.status();
-    if (now - lastUpload_ < kUploadInterval && status.samplesPerPixel == uploadedSamples_) return;
-    if (now - lastUpload_ < kUploadInterval && haveImage_) return;
+    if (now - lastUpload_ < kRefreshSeconds && status.samplesPerPixel == uploadedSamples_) return;
+    if (now - lastUpload_ < kRefreshSeconds && haveImage_) return;
     std::vector<float> rgb;
     int width = 0, height = 0;
     if (!tracer_.latest(settings.debug.view, settings, rgb, width, height) || width != settings.output.width ||
@@ -73,6 +69,12 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
 
 const gl::Texture* ReferenceViewer::output() const {
     return mode_ != ReferenceMode::Off && haveImage_ && texture_ ? &texture_ : nullptr;
+}
+
+bool ReferenceViewer::accumulating() const {
+    if (mode_ == ReferenceMode::Off || unsupportedView_) return false;
+    const reference::ProgressiveStatus status = tracer_.status();
+    return status.running || status.samplesPerPixel != uploadedSamples_;
 }
 
 void ReferenceViewer::drawWindow(ImVec2 topRight, ImGuiCond placeCondition) {

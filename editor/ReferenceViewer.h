@@ -23,11 +23,18 @@ enum class ReferenceMode { Off, Reference, Difference };
 
 class ReferenceViewer {
 public:
+    // Refreshing the image costs a pass over it on the CPU (and, for Difference, an HDR
+    // read-back): a few times a second is enough to watch it converge. Seconds.
+    static constexpr double kRefreshSeconds = 0.25;
+
     // After the rasterizer's frame: feeds the current state to the tracer and refreshes the
     // displayed image (a few times a second). Turns the tracer off when the mode is Off.
     void update(const Scene& scene, const CameraView& camera, const RenderSettings& settings, Renderer& renderer);
     // The image to show instead of the renderer's output, or nullptr (mode Off, no image yet).
     const gl::Texture* output() const;
+    // The tracer is still adding samples the shown image lacks: the editor keeps refreshing it
+    // (every kRefreshSeconds) although its own frame does not change.
+    bool accumulating() const;
     // A small window: mode, samples per pixel, samples/s, the colour bar and its range. Placed
     // with its top right corner at `topRight` (the free viewport area's corner, clear of the
     // panels) on first use, or always when `placeCondition` is ImGuiCond_Always (after a resize).

@@ -26,6 +26,7 @@ std::vector<int> structureOf(const Scene& scene) {
 }  // namespace
 
 void SceneUpload::upload(const Scene& scene) {
+    ++uploads_;
     renderer_.setScene(scene);
     uploaded_ = structureOf(scene);
 }
@@ -33,6 +34,7 @@ void SceneUpload::upload(const Scene& scene) {
 void SceneUpload::syncStructure(const Scene& scene, Log& log) {
     std::vector<int> structure = structureOf(scene);
     if (structure == uploaded_) return;
+    ++uploads_;
     try {
         renderer_.setScene(scene);
     } catch (const std::exception& error) {

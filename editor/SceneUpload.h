@@ -4,6 +4,7 @@
 // removed (a structural edit, or its undo), since the GpuScene's draw items are per node and
 // primitive. Transforms and material values the renderer reads from the Scene each frame.
 
+#include <cstdint>
 #include <vector>
 
 #include "Log.h"
@@ -22,12 +23,15 @@ public:
     // Once a frame: uploads again when the structure changed since the last upload. A failure is
     // logged; it is not retried until the structure changes again.
     void syncStructure(const Scene& scene, Log& log);
+    // How many times the renderer was given a scene: a new one tells the viewport to redraw.
+    std::uint64_t uploads() const { return uploads_; }
 
 private:
     Renderer& renderer_;
     // What the GpuScene was built from: per node its mesh, per mesh its primitives' materials,
     // and the material count.
     std::vector<int> uploaded_;
+    std::uint64_t uploads_ = 0;
 };
 
 }  // namespace lit::editor

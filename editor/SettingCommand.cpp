@@ -54,6 +54,12 @@ std::optional<std::string> applyEditorSetting(ViewportSettings& viewport, std::s
         viewport.interactiveFpsTarget = *fps;
         return "";
     }
+    if (name == "editor.redrawOnDemand") {
+        if (value != "true" && value != "false")
+            return "setting " + name + ": expected true or false (got '" + std::string(value) + "')";
+        viewport.redrawOnDemand = value == "true";
+        return "";
+    }
     int* count = name == "editor.giUpdateVoxelsPerFrame"   ? &viewport.giUpdateVoxelsPerFrame
                  : name == "editor.giRefineVoxelsPerFrame" ? &viewport.giRefineVoxelsPerFrame
                                                            : nullptr;

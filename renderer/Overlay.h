@@ -13,6 +13,7 @@ namespace lit {
 struct OverlayLine {
     glm::vec3 a{0.0f}, b{0.0f};  // end points, world space (m)
     glm::vec4 color{1.0f};       // linear RGB, alpha = opacity
+    bool operator==(const OverlayLine&) const = default;
 };
 
 struct ViewportOverlay {
@@ -30,6 +31,9 @@ struct ViewportOverlay {
     std::vector<OverlayLine> linesOnTop;
 
     bool empty() const { return activeOutline.empty() && selectedOutline.empty() && lines.empty() && linesOnTop.empty(); }
+    // The editor redraws its viewport only when the overlay (among others) differs from the last
+    // frame's (editor/ViewportRedraw.h).
+    bool operator==(const ViewportOverlay&) const = default;
 };
 
 // The surface seen through one pixel of the last frame, read back from the G-buffer.

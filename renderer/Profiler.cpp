@@ -110,6 +110,13 @@ void Profiler::flush() {
         collect(frames_[static_cast<std::size_t>((current_ + i) % kFramesInFlight)], true);
 }
 
+void Profiler::poll() {
+    for (int i = 0; i < kFramesInFlight; ++i) {
+        Frame& frame = frames_[static_cast<std::size_t>((current_ + i) % kFramesInFlight)];
+        if (frame.pending && !collect(frame, false)) break;
+    }
+}
+
 double Profiler::gpuMs(const std::string& pass) const {
     for (const PassTiming& t : latest_)
         if (t.name == pass) return t.gpuMs;

@@ -63,6 +63,10 @@ public:
     // Blocks until every issued query is available and collects them (for benchmarks and tests
     // that need the timings of the frame they just rendered).
     void flush();
+    // Collects the frames whose queries are ready, oldest first, without waiting or starting a
+    // frame: a front end that shows its last image again instead of rendering (the editor when
+    // nothing changed) calls it so that the last rendered frame's timings still arrive.
+    void poll();
 
 private:
     struct Sample {

@@ -80,6 +80,10 @@ bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
     ImGui::SliderFloat("Interactive FPS", &viewport.interactiveFpsTarget, 0.0f, 60.0f, "%.0f FPS");
     tooltip("While the camera moves or a value is dragged, lower the render scale to hold this frame rate\n"
             "(0 = never); full scale again when still");
+    ImGui::Checkbox("Redraw on demand", &viewport.redrawOnDemand);
+    tooltip(
+        "Render the 3D image only when something in it changed or is still converging;\n"
+        "otherwise show the last one again (off: render every frame)");
     ImGui::Checkbox("Markers and gizmo", &viewport.markers);
     tooltip("Light and camera markers, the camera path and the translate gizmo");
     ImGui::Checkbox("Cone directions", &viewport.coneDirections);

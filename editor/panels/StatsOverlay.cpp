@@ -104,7 +104,7 @@ ImU32 passColor(const std::string& passName) {
 
 void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
                       ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels,
-                      float renderScale) {
+                      const ViewportFrameInfo& frame) {
     placeNextWindow(placement);
     ImGui::SetNextWindowBgAlpha(0.72f);  // an overlay: the image stays visible behind it
     constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
@@ -119,7 +119,18 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
     ImGui::Text("%6.1f FPS  frame %7.1f ms", timer.fps(), timer.averageMs());
     ImGui::Text("CPU %7.1f ms  GPU %7.1f ms", profiler.lastCpuFrameMs(), profiler.totalGpuMs());
     drawFrameGraph(timer, width);
-    ImGui::Text("Render %d x %d px  scale %.2f", renderSize.x, renderSize.y, renderScale);
+    // Redraw on demand: say whether the image and the numbers below come from this frame.
+    if (frame.rendered) {
+        ImGui::Text("3D frame rendered (%.*s)", static_cast<int>(frame.reason.size()), frame.reason.data());
+    } else {
+        ImGui::TextDisabled("idle: last frame reused (%d)", frame.framesReused);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "Nothing the 3D image shows changed: the last rendered image is shown again\n"
+                "under the UI. The timings below are of that frame (%.1f ms).",
+                frame.renderFrameMs);
+    }
+    ImGui::Text("Render %d x %d px  scale %.2f", renderSize.x, renderSize.y, frame.renderScale);
     ImGui::Text("Draws %d  Triangles %zu", stats.drawCalls, stats.triangles);
     ImGui::Text("Culling: %d of %d draws, %.2f ms", stats.drawsSubmitted, stats.drawsTotal, stats.cullMs);
     constexpr double kMiB = 1024.0 * 1024.0;

@@ -1,10 +1,12 @@
 #pragma once
-// The performance overlay: FPS, a frame-time graph of the last few seconds, GPU time per pass as
-// a stacked bar and a table, CPU frame time, draw calls, triangles, culling and voxel memory.
+// The performance overlay: FPS, a frame-time graph of the last few seconds, whether the 3D image
+// was rendered or reused, GPU time per pass as a stacked bar and a table, CPU frame time, draw
+// calls, triangles, culling and voxel memory.
 // Drawn semi-transparent in the viewport's corner so it reads over any scene.
 
 #include <glm/glm.hpp>
 #include <string>
+#include <string_view>
 
 #include "FrameTimer.h"
 #include "Profiler.h"
@@ -14,12 +16,22 @@
 
 namespace lit::editor {
 
+// The viewport's last frame as the overlay reports it: with redraw on demand (ViewportRedraw.h)
+// most frames show the last rendered image again, and the stats and pass timings are that
+// image's.
+struct ViewportFrameInfo {
+    float renderScale = 1.0f;    // lowered while the camera moves (ViewportSettings::interactiveFpsTarget)
+    bool rendered = true;        // the 3D image was rendered, else the last one was shown again
+    std::string_view reason;     // why it was rendered (redrawReasonName)
+    int framesReused = 0;        // frames in a row that showed the last rendered image again
+    double renderFrameMs = 0.0;  // how long the last frame that rendered took (update, render, present)
+};
+
 // `voxels`: the renderer's voxel volume (null before GI has run), whose per-texture memory
-// report is the tooltip of the voxel memory line. `renderScale`: the viewport's render scale this
-// frame (lowered while the camera moves, ViewportSettings::interactiveFpsTarget).
+// report is the tooltip of the voxel memory line.
 void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
-                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels = nullptr,
-                      float renderScale = 1.0f);
+                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels,
+                      const ViewportFrameInfo& frame);
 
 // The colour a pass has in the stacked bar and the table: fixed per pass name, so a pass keeps
 // its colour when others appear or vanish.

@@ -21,6 +21,7 @@ struct CameraView {
 
     glm::mat4 viewProjection() const { return projection * view; }
     glm::vec3 forward() const;  // world-space viewing direction (−Z of the camera)
+    bool operator==(const CameraView&) const = default;
 };
 
 // A perspective view from a camera's world matrix (rotation and translation; scale ignored).

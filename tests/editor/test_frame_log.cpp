@@ -9,17 +9,22 @@ using namespace lit::editor;
 TEST(FrameLog, EachFrameLastsUntilTheNextBegins) {
     FrameLog log;
     log.add({10.0, 1.0f, {640, 360}, false});
+    log.last().rendered = true;
     log.add({10.25, 0.5f, {320, 180}, true});
     log.last().refinedVoxels = 4096;
-    EXPECT_EQ(log.csv(10.75),
-              "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels\n"
-              "0,0.0000,250.00,640,360,1.00,0,0\n"
-              "1,0.2500,500.00,320,180,0.50,1,4096\n");
+    log.last().rendered = true;
+    log.add({10.75, 0.5f, {320, 180}, false});  // the last image shown again (rendered = false)
+    EXPECT_EQ(log.csv(10.76),
+              "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered\n"
+              "0,0.0000,250.00,640,360,1.00,0,0,1\n"
+              "1,0.2500,500.00,320,180,0.50,1,4096,1\n"
+              "2,0.7500,10.00,320,180,0.50,0,0,0\n");
 }
 
 TEST(FrameLog, AnEmptyLogIsTheHeader) {
-    EXPECT_EQ(FrameLog().csv(1.0),
-              "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels\n");
+    EXPECT_EQ(
+        FrameLog().csv(1.0),
+        "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered\n");
 }
 
 }  // namespace

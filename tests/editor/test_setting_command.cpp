@@ -96,6 +96,10 @@ TEST(EditorSettingCommand, EditorSettings) {
     EXPECT_NE(lit::editor::applyEditorSetting(viewport, "editor.giUpdateVoxelsPerFrame", "-3")->find("voxel count"),
               std::string::npos);
     EXPECT_FALSE(lit::editor::applyEditorSetting(viewport, "gi.bounces", "2").has_value());
+    EXPECT_EQ(lit::editor::applyEditorSetting(viewport, "editor.redrawOnDemand", "false"), "");
+    EXPECT_FALSE(viewport.redrawOnDemand);
+    EXPECT_NE(lit::editor::applyEditorSetting(viewport, "editor.redrawOnDemand", "0")->find("true or false"),
+              std::string::npos);
 }
 
 // The script's "panel NAME on|off" and the View menu name the same flags.

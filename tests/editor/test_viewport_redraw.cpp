@@ -1,0 +1,138 @@
+// ViewportRedraw: the editor renders its 3D frame only when something it shows changed or work
+// is still in flight; otherwise the last image is shown again.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ViewportRedraw.h"
+
+namespace lit::editor {
+namespace {
+
+FrameInputs someInputs() {
+    FrameInputs inputs;
+    inputs.settings.output.width = 640;
+    inputs.settings.output.height = 360;
+    inputs.camera.position = {0.0f, 1.0f, 3.0f};
+    return inputs;
+}
+
+// A redraw that has rendered `inputs` once.
+ViewportRedraw renderedOnce(const FrameInputs& inputs, double now = 10.0) {
+    ViewportRedraw redraw;
+    EXPECT_EQ(redraw.decide(inputs, {}, true), RedrawReason::First);
+    redraw.rendered(inputs, RedrawReason::First, now);
+    return redraw;
+}
+
+TEST(ViewportRedraw, TheSameInputsRenderNothing) {
+    const FrameInputs inputs = someInputs();
+    const ViewportRedraw redraw = renderedOnce(inputs);
+    EXPECT_EQ(redraw.decide(inputs, {}, true), RedrawReason::None);
+    EXPECT_FALSE(redraw.editedSinceRender(inputs));
+    // Redraw on demand off: every frame.
+    EXPECT_EQ(redraw.decide(inputs, {}, false), RedrawReason::Always);
+}
+
+TEST(ViewportRedraw, EachInputThatChangedRenders) {
+    const FrameInputs inputs = someInputs();
+    const ViewportRedraw redraw = renderedOnce(inputs);
+    auto changed = [&](auto&& change) {
+        FrameInputs next = inputs;
+        change(next);
+        return redraw.decide(next, {}, true);
+    };
+    EXPECT_EQ(changed([](FrameInputs& i) { i.settings.output.width = 320; }), RedrawReason::Size);
+    EXPECT_EQ(changed([](FrameInputs& i) { i.camera.position.x += 0.01f; }), RedrawReason::Camera);
+    EXPECT_EQ(changed([](FrameInputs& i) { ++i.geometryRevision; }), RedrawReason::Scene);
+    EXPECT_EQ(changed([](FrameInputs& i) { ++i.materialRevision; }), RedrawReason::Scene);
+    EXPECT_EQ(changed([](FrameInputs& i) { ++i.lightRevision; }), RedrawReason::Scene);
+    EXPECT_EQ(changed([](FrameInputs& i) { ++i.sceneUploads; }), RedrawReason::Scene);
+    EXPECT_EQ(changed([](FrameInputs& i) { i.settings.output.exposureEv += 1.0f; }), RedrawReason::Settings);
+    EXPECT_EQ(changed([](FrameInputs& i) { i.settings.debug.view = View::Albedo; }), RedrawReason::Settings);
+    EXPECT_EQ(changed([](FrameInputs& i) { i.overlay.activeOutline.push_back(3); }), RedrawReason::Overlay);
+    EXPECT_EQ(changed([](FrameInputs& i) {
+                  i.overlay.lines.push_back({{0, 0, 0}, {1, 0, 0}, {1, 1, 0, 1}});
+              }),
+              RedrawReason::Overlay);
+}
+
+TEST(ViewportRedraw, EditsButNotTheSizeOrTheOverlayCountAsInteraction) {
+    const FrameInputs inputs = someInputs();
+    const ViewportRedraw redraw = renderedOnce(inputs);
+    FrameInputs next = inputs;
+    next.settings.output.width = 100;       // the interactive scale's own doing
+    next.overlay.selectedOutline = {1, 2};  // a click in the hierarchy
+    EXPECT_FALSE(redraw.editedSinceRender(next));
+    ++next.geometryRevision;  // a gizmo or slider drag
+    EXPECT_TRUE(redraw.editedSinceRender(next));
+    next = inputs;
+    next.settings.gi.indirectIntensity = 2.0f;
+    EXPECT_TRUE(redraw.editedSinceRender(next));
+}
+
+TEST(ViewportRedraw, PendingWorkRendersWithUnchangedInputs) {
+    const FrameInputs inputs = someInputs();
+    const ViewportRedraw redraw = renderedOnce(inputs);
+    EXPECT_EQ(redraw.decide(inputs, {.giUpdating = true}, true), RedrawReason::GiUpdate);
+    EXPECT_EQ(redraw.decide(inputs, {.giRefining = true}, true), RedrawReason::GiRefine);
+    EXPECT_EQ(redraw.decide(inputs, {.playing = true}, true), RedrawReason::Playback);
+    EXPECT_EQ(redraw.decide(inputs, {.screenshot = true}, true), RedrawReason::Screenshot);
+    EXPECT_EQ(redraw.decide(inputs, {.shadersReloaded = true}, true), RedrawReason::Shaders);
+}
+
+TEST(ViewportRedraw, TemporalAccumulationRendersUntilItsHistoryIsFull) {
+    FrameInputs inputs = someInputs();
+    inputs.settings.indirect.temporalAccumulation = true;
+    inputs.settings.indirect.temporalMaxFrames = 4;
+    ViewportRedraw redraw = renderedOnce(inputs);
+    // The first frame holds one frame of history: three more fill it.
+    double now = 10.0;
+    for (int frame = 0; frame < 3; ++frame) {
+        ASSERT_EQ(redraw.decide(inputs, {}, true), RedrawReason::Temporal) << frame;
+        redraw.rendered(inputs, RedrawReason::Temporal, now += 0.1);
+    }
+    EXPECT_EQ(redraw.decide(inputs, {}, true), RedrawReason::None);
+    // A selection change does not start it again; a camera motion does.
+    FrameInputs selected = inputs;
+    selected.overlay.activeOutline = {2};
+    redraw.rendered(selected, redraw.decide(selected, {}, true), now += 0.1);
+    EXPECT_EQ(redraw.decide(selected, {}, true), RedrawReason::None);
+    FrameInputs moved = selected;
+    moved.camera.position.z -= 0.5f;
+    redraw.rendered(moved, redraw.decide(moved, {}, true), now += 0.1);
+    EXPECT_EQ(redraw.temporalFramesLeft(), 3);
+    // With GI off there is nothing to accumulate.
+    FrameInputs noGi = moved;
+    noGi.settings.gi.enabled = false;
+    redraw.rendered(noGi, redraw.decide(noGi, {}, true), now += 0.1);
+    EXPECT_EQ(redraw.decide(noGi, {}, true), RedrawReason::None);
+}
+
+TEST(ViewportRedraw, AutoExposureRendersUntilItHasAdapted) {
+    FrameInputs inputs = someInputs();
+    inputs.settings.output.autoExposure = true;
+    inputs.settings.output.autoExposureSpeed = 3.0f;  // 1/s
+    ViewportRedraw redraw = renderedOnce(inputs, 0.0);
+    // To 1 % of the step: ln(100) / 3 = 1.54 s of adaptation, at 0.1 s a frame 16 frames.
+    const double seconds = std::log(100.0) / 3.0;
+    EXPECT_NEAR(redraw.exposureSecondsLeft(), seconds, 1e-9);
+    int frames = 0;
+    double now = 0.0;
+    while (redraw.decide(inputs, {}, true) == RedrawReason::Exposure && frames < 100) {
+        redraw.rendered(inputs, RedrawReason::Exposure, now += 0.1);
+        ++frames;
+    }
+    EXPECT_EQ(frames, 16);
+    // A pause counts at most ViewportRedraw::kMaxExposureStep, as in the renderer.
+    redraw.rendered(inputs, RedrawReason::Settings, now += 0.1);
+    redraw.rendered(inputs, RedrawReason::Exposure, now += 30.0);
+    EXPECT_NEAR(redraw.exposureSecondsLeft(), seconds - ViewportRedraw::kMaxExposureStep, 1e-9);
+    // Speed 0 adapts at once: the frame that changed is enough.
+    inputs.settings.output.autoExposureSpeed = 0.0f;
+    redraw.rendered(inputs, RedrawReason::Settings, now += 0.1);
+    EXPECT_EQ(redraw.decide(inputs, {}, true), RedrawReason::None);
+}
+
+}  // namespace
+}  // namespace lit::editor
