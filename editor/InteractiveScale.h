@@ -1,13 +1,12 @@
 #pragma once
-// The viewport's render scale while the user interacts (RenderSettings::interactiveFpsTarget):
+// The viewport's render scale while the user interacts (ViewportSettings::interactiveFpsTarget):
 // while the camera moves or a value is dragged, the scale drops so the frame time meets the
 // target; when still, the viewport renders at its full (chosen) scale.
 //
-// Why it is a class of its own (issue #12, editor frame log on the full-frame Cornell box): the
-// first version restarted every motion from the full scale and could at most halve the scale per
-// frame, so each motion began with frames at ½ and ¼ scale (0.5–0.75 s and 0.2 s on this machine)
-// before it reached ~0.2; and it re-chose the scale every frame in steps of 0.05, so the scale
-// flipped between neighbouring steps on noise and every flip reallocated the renderer's targets.
+// Why it is a class of its own: a scale that restarts every motion from full size and can at most
+// halve per frame begins each motion with frames at ½ and ¼ scale (0.5–0.75 s and 0.2 s at
+// 1280×720 on llvmpipe) before it reaches ~0.2; and a scale re-chosen every frame in small steps
+// flips between neighbouring steps on noise, each flip reallocating the renderer's targets.
 // This controller
 //  - remembers the scale of the last motion and starts the next one there;
 //  - before any motion, jumps to the scale a still frame's time predicts (cost ∝ pixels ∝ scale²);
