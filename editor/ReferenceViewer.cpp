@@ -33,7 +33,9 @@ void ReferenceViewer::update(const Scene& scene, const CameraView& camera, const
     }
     reference::ReferenceSettings referenceSettings;
     // The VCT's light paths: its bounces with GI on, direct light only with GI off.
-    referenceBounces_ = settings.gi.enabled ? std::clamp(settings.gi.bounces, 1, kMaxBounces) : 0;
+    referenceBounces_ = !settings.gi.enabled                 ? 0
+                        : settings.gi.bounces == kAllBounces ? reference::kAllBounces
+                                                             : std::clamp(settings.gi.bounces, 1, kMaxBounces);
     referenceSettings.bounces = referenceBounces_;
     // The same sky and default sun as the rasterizer (docs/REFERENCE.md).
     tracer_.update(scene, camera, settings.output.width, settings.output.height, referenceSettings, &settings);
@@ -102,7 +104,9 @@ void ReferenceViewer::drawWindow(ImVec2 topRight, ImGuiCond placeCondition) {
             const reference::ProgressiveStatus s = tracer_.status();
             ImGui::Text("%d spp, %.0f samples/s, %.2f Mrays/s%s", s.samplesPerPixel, s.samplesPerSecond,
                         s.raysPerSecond * 1e-6, s.running ? "" : " (done)");
-            if (referenceBounces_ > 0)
+            if (referenceBounces_ == reference::kAllBounces)
+                ImGui::TextDisabled("Every bounce, as the GI's; restarts on any edit");
+            else if (referenceBounces_ > 0)
                 ImGui::TextDisabled("%d bounce%s, as the GI's; restarts on any edit", referenceBounces_,
                                     referenceBounces_ > 1 ? "s" : "");
             else

@@ -49,7 +49,8 @@ private:
     int uploadedSamples_ = -1;
     float maxError_ = 0.5f;     // relative error at the ends of the Difference ramp
     bool unsupportedView_ = false;
-    int referenceBounces_ = 0;  // the bounces the reference traces (the GI's, 0 with GI off)
+    // The bounces the reference traces (the GI's, reference::kAllBounces for every bounce, 0 with GI off).
+    int referenceBounces_ = 0;
 };
 
 }  // namespace lit

@@ -45,8 +45,13 @@ enum class VoxelChannel {
 std::string_view toString(VoxelChannel channel);
 std::optional<VoxelChannel> parseVoxelChannel(std::string_view text);  // "radiance", "albedo", ...
 
-// Most light bounces GiSettings::bounces may ask for (each costs one pass over the occupied voxels).
+// Most light bounces GiSettings::bounces may ask for by count (each costs one pass over the
+// occupied voxels).
 inline constexpr int kMaxBounces = 8;
+// GiSettings::bounces for every bounce: the update repeats bounce passes until the voxels' light
+// stops changing (docs/GI.md, "Bounces"), at most kMaxConvergingBounces.
+inline constexpr int kAllBounces = 0;
+inline constexpr int kMaxConvergingBounces = 64;
 // The most rays per voxel GiSettings::voxelRays asks for (more are clamped to it).
 inline constexpr int kMaxVoxelRays = 256;
 // The footprint bound of the accurate and cached modes' diffuse cones (GiSettings::
@@ -132,10 +137,12 @@ struct GiSettings {
     bool radianceRgba8 = false;      // store radiance as RGBA8 (512³ fits in 512 MiB) instead of RGBA16F
     float radianceRange = 4.0f;      // RGBA8 only: radiance that maps to 1.0 (W/(sr·m²))
     float indirectIntensity = 1.0f;  // multiplier of the indirect light (1 = physically based)
-    // Light bounces: 1 = direct light only is injected (one bounce reaches the pixels), 2 = the
-    // voxels also reflect the light they gather, and so on; each further bounce is one more pass
-    // over every occupied voxel per light or geometry edit (docs/GI.md, "Bounces").
-    int bounces = 2;  // 1..kMaxBounces
+    // Light bounces: kAllBounces (0, the default) = every bounce, the update repeating passes until
+    // the light converges; 1 = direct light only is injected (one bounce reaches the pixels), 2 = the
+    // voxels also reflect the light they gather, and so on (for comparison with the reference's
+    // bounce counts). Each bounce past the first is one more pass over every occupied voxel per
+    // light or geometry edit (docs/GI.md, "Bounces").
+    int bounces = kAllBounces;  // 0 (all) or 1..kMaxBounces
     // Rays per voxel for the light the voxels gather themselves (the cached mode's irradiance and
     // bounces 2..N): cosine-distributed over the voxel's hemisphere and marched through the voxel
     // grid to the first occupied voxel (docs/GI.md, "Voxel rays"). 0 = the accurate mode's

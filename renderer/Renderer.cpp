@@ -354,6 +354,8 @@ void Renderer::Impl::updateGi(const Scene& scene, const RenderSettings& settings
     stats.giUpdateStage = report.updateStage;
     stats.refinedVoxels = report.refinedVoxels;
     stats.giRefining = report.refining;
+    stats.giBounces = report.bounces;
+    stats.giEveryBounce = report.everyBounce;
 }
 
 // L_DD + L_DS from the lights and their shadow maps, then L_ID + L_IS from the voxel GI.

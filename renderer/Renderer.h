@@ -48,6 +48,10 @@ struct FrameStats {
     std::uint32_t refinedVoxels = 0;
     // Refinement rounds are still to run after the update (or after the one under way).
     bool giRefining = false;
+    // The bounces of light the voxels hold (GiFrameReport::bounces) and whether that is every
+    // bounce, the light iterated until it converged (GiSettings::bounces kAllBounces).
+    int giBounces = 0;
+    bool giEveryBounce = false;
     // Frustum culling, over the views rendered this frame: the camera's G-buffer pass and the
     // shadow views when shadow maps were re-rendered (voxelization draws everything, uncounted).
     int drawsSubmitted = 0;     // scene draws those views issued

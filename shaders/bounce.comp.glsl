@@ -69,6 +69,13 @@ uniform float uBlend;
 #else
 layout(binding = LIT_IMG_VOXEL_DIRECT, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelDirect;
 layout(binding = LIT_IMG_VOXEL_BOUNCE) uniform writeonly image3D voxelBounce;
+// Every bounce until the light converges (GiSettings::bounces kAllBounces): each voxel adds the
+// luminance of its new radiance and of its change from the bounce before to the change bins
+// (shared.h, LIT_SSBO_BOUNCE_CHANGE), from which VoxelGi decides when to stop.
+uniform int uMeasureChange;
+layout(std430, binding = LIT_SSBO_BOUNCE_CHANGE) buffer BounceChange {
+    uint changeBins[2 * LIT_BOUNCE_CHANGE_BINS];
+};
 #endif
 
 #if LIT_VOXEL_RAYS
@@ -323,5 +330,23 @@ void main() {
     vec3 irradiance = 0.5 * (front + back);  // = front for a one-sided voxel
     vec3 radiance = decodeRadiance(direct.rgb) + albedo.rgb * irradiance * voxel.traceParams.x;
     imageStore(voxelBounce, v, vec4(encodeRadiance(radiance), 1.0));
+    if (uMeasureChange != 0) {
+        // The bounce before: where the rays take their light (the direct volume for the second
+        // bounce, level 0 after it), or level 0 for cones.
+#if LIT_VOXEL_RAYS
+        vec4 before = imageLoad(voxelRaySource, v);
+#else
+        vec4 before = texelFetch(voxelRadianceTexture, v, 0);
+#endif
+        vec3 previous = before.a > 0.0 ? decodeRadiance(before.rgb / before.a) : vec3(0.0);
+        const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);
+        float luminance = dot(radiance, kLuminance);
+        float change = abs(luminance - dot(previous, kLuminance));
+        uint bin = (uint(v.x) + 7u * uint(v.y) + 13u * uint(v.z)) % uint(LIT_BOUNCE_CHANGE_BINS);
+        // Clamped per voxel; a bin of 32 768 voxels (a million in all) overflows only at a mean
+        // radiance above 500 W/(sr·m²).
+        atomicAdd(changeBins[bin], uint(min(luminance * LIT_BOUNCE_CHANGE_SCALE, 4194304.0)));
+        atomicAdd(changeBins[LIT_BOUNCE_CHANGE_BINS + bin], uint(min(change * LIT_BOUNCE_CHANGE_SCALE, 4194304.0)));
+    }
 #endif
 }

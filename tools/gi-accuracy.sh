@@ -16,7 +16,7 @@
 #                   llvmpipe takes minutes per 512³ first frame and several GiB of memory)
 #   GI_SPP          reference samples/pixel   (default: 256)
 #   GI_SIZE         image side in pixels      (default: 128)
-#   GI_BOUNCES      light bounces of the VCT and the reference (default: 2, the renderer's default)
+#   GI_BOUNCES      light bounces of the VCT and the reference (default: all, the renderer's default)
 #   GI_SCENES       comma-separated subset: cornell_box,sealed_room,thin_walls,glossy_floor,sponza;
 #                   the diagnostic Cornell variants cornell_room,cornell_mirrored,cornell_swapped
 #                   (assets/gi) run only when named here
@@ -31,7 +31,7 @@ tool="$build/tools/lit-gi-accuracy"
 out="${GI_OUT:-$root/docs/tables/gi-accuracy.md}"
 [ -x "$tool" ] || { echo "gi-accuracy: $tool not found; build it: cmake --build build --target lit-gi-accuracy" >&2; exit 1; }
 
-args=(--voxels "${GI_VOXELS:-64,128,256}" --spp "${GI_SPP:-256}" --size "${GI_SIZE:-128}" --bounces "${GI_BOUNCES:-2}")
+args=(--voxels "${GI_VOXELS:-64,128,256}" --spp "${GI_SPP:-256}" --size "${GI_SIZE:-128}" --bounces "${GI_BOUNCES:-all}")
 [ -n "${GI_SCENES:-}" ] && args+=(--scenes "$GI_SCENES")
 [ -n "${GI_SHARED:-}" ] && args+=(--shared "$GI_SHARED")
 table="$(mktemp)"

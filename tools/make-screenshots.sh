@@ -22,25 +22,24 @@ for view in final direct-diffuse indirect-diffuse direct-specular indirect-specu
     "$render" "$scene" --out "$out/cornell_gi_${view}.png" --size "$size" --gi on --voxels 128 --view "$view"
 done
 
-# The same view path-traced by Lit's reference (docs/REFERENCE.md): two bounces (the light paths
-# of the default GI, two bounces), one bounce and every bounce; then the Difference view of each GI
-# image against the two-bounce reference (blue too dark, white right, red too bright; ±50 % at the
-# ends), for the default (cached) mode, the accurate mode and the fast mode (docs/GI.md), all with
-# the default two bounces.
+# The same view path-traced by Lit's reference (docs/REFERENCE.md): every bounce (the light paths
+# of the default GI), one bounce and two; then the Difference view of each GI image against the
+# every-bounce reference (blue too dark, white right, red too bright; ±50 % at the ends), for the
+# default (cached) mode, the accurate mode and the fast mode (docs/GI.md), all with every bounce.
 tmpdir="$(mktemp -d)"
 trap 'rm -rf "$tmpdir"' EXIT
 spp="${LIT_SCREENSHOT_SPP:-512}"
-"$render" "$scene" --reference --bounces 2 --spp "$spp" --size "$size" --out "$out/cornell_reference_2bounces.png" \
-    --hdr "$tmpdir/reference_2bounces.hdr"
+"$render" "$scene" --reference --bounces all --spp "$spp" --size "$size" --out "$out/cornell_reference_all.png" \
+    --hdr "$tmpdir/reference_all.hdr"
 "$render" "$scene" --reference --bounces 1 --spp "$spp" --size "$size" --out "$out/cornell_reference_1bounce.png"
-"$render" "$scene" --reference --bounces all --spp "$spp" --size "$size" --out "$out/cornell_reference_all.png"
-"$render" "$scene" --size "$size" --gi on --voxels 128 --compare "$tmpdir/reference_2bounces.hdr" \
+"$render" "$scene" --reference --bounces 2 --spp "$spp" --size "$size" --out "$out/cornell_reference_2bounces.png"
+"$render" "$scene" --size "$size" --gi on --voxels 128 --compare "$tmpdir/reference_all.hdr" \
     --difference "$out/cornell_gi_difference.png"
 "$render" "$scene" --size "$size" --gi on --voxels 128 --gi-mode accurate \
-    --out "$out/cornell_gi_accurate.png" --compare "$tmpdir/reference_2bounces.hdr" \
+    --out "$out/cornell_gi_accurate.png" --compare "$tmpdir/reference_all.hdr" \
     --difference "$out/cornell_gi_accurate_difference.png"
 "$render" "$scene" --size "$size" --gi on --voxels 128 --gi-mode fast \
-    --out "$out/cornell_gi_fast.png" --compare "$tmpdir/reference_2bounces.hdr" \
+    --out "$out/cornell_gi_fast.png" --compare "$tmpdir/reference_all.hdr" \
     --difference "$out/cornell_gi_fast_difference.png"
 
 # The editor. Keys of a camera path in front of the box, seen from further back and to the side

@@ -186,11 +186,14 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
     tooltip("Longest cone, as a fraction of the voxel volume's side");
     changed |= ImGui::SliderFloat("Step scale", &s.gi.coneStepScale, 0.1f, 2.0f, "%.2f");
     tooltip("Step along a cone = scale x cone diameter (smaller is slower and smoother)");
-    changed |= ImGui::SliderInt("Bounces", &s.gi.bounces, 1, kMaxBounces);
-    tooltip("Light bounces (count; default 2). 1: only direct light is injected into the voxels; each more\n"
-            "re-injects the voxels' own traced indirect light (one extra pass over the occupied voxels per\n"
-            "bounce after each light or geometry edit, spread over frames in the cached mode: seconds per\n"
-            "bounce on a software rasterizer)");
+    changed |= ImGui::SliderInt("Bounces", &s.gi.bounces, kAllBounces, kMaxBounces,
+                                s.gi.bounces == kAllBounces ? "all" : "%d");
+    tooltip(
+        "Light bounces (count, or all: the default). all: the voxels reflect their own light bounce after\n"
+        "bounce until it stops changing (the full light, as a path tracer's every bounce). 1: only direct\n"
+        "light is injected into the voxels; each more re-injects the voxels' own gathered light. Each\n"
+        "bounce is one more pass over the occupied voxels after a light or geometry edit, spread over\n"
+        "frames in the cached mode; the overlay shows the update's progress");
     changed |=
         ImGui::SliderInt("Voxel rays", &s.gi.voxelRays, 0, kMaxVoxelRays, s.gi.voxelRays == 0 ? "cones" : "%d rays");
     tooltip("Rays per voxel (count) for the light the voxels gather themselves: the cached mode's irradiance\n"

@@ -143,13 +143,21 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
     if (stats.giUpdateDone < 1.0f) {
         ImGui::Text("GI update %3.0f %% (%s)", 100.0 * static_cast<double>(stats.giUpdateDone), stats.giUpdateStage.c_str());
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("The light of the last edit is traced a part of the voxels a frame (Render settings, "
-                              "Irradiance voxels / frame); until 100 %% some voxels hold the light from before the edit");
+            ImGui::SetTooltip(
+                "The light of the last edit is traced a part of the voxels a frame (Render settings, "
+                "Update voxels / frame); until 100 %% some voxels hold the light from before the edit");
     } else if (!stats.giUpdateStage.empty()) {
         ImGui::TextDisabled("GI %s", stats.giUpdateStage.c_str());
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("The light is right; each round traces every voxel again with other directions, "
                               "averaging out the faint bands of a one-frame trace");
+    } else if (stats.giBounces > 0 && !stats.giRefining) {
+        if (stats.giEveryBounce)
+            ImGui::TextDisabled("GI converged: every bounce (%d)", stats.giBounces);
+        else
+            ImGui::TextDisabled("GI converged: %d bounce%s", stats.giBounces, stats.giBounces > 1 ? "s" : "");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The voxels hold the light of the last edit, refined; nothing is left to trace");
     }
 
     const auto& timings = profiler.timings();

@@ -2,6 +2,8 @@
 
 #include <shared.h>
 
+#include <array>
+
 #include "gi/VoxelVolume.h"
 
 namespace lit {
@@ -48,8 +50,33 @@ void BouncePass::trace(const VoxelVolume& volume, const RayHitCache& cache, cons
                            bounce.secondBounce ? volume.direct().id() : volume.radiance().id(), 0, GL_TRUE, 0,
                            GL_READ_ONLY, format);
     cache.bind(program, bounce.features, bounce.overList ? bounce.rayHits : RayHits::Off);
+    const bool measure = bounce.measureChange && changeBins_;
+    glProgramUniform1i(program.id(), program.location("uMeasureChange"), measure ? 1 : 0);
+    if (measure) changeBins_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_BOUNCE_CHANGE);
     dispatchListRange(volume, program, bounce.overList, bounce.range);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void BouncePass::resetChange() {
+    constexpr std::size_t kBytes = 2 * LIT_BOUNCE_CHANGE_BINS * sizeof(GLuint);
+    if (!changeBins_) changeBins_ = gl::Buffer("bounce change", kBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    const GLuint zero = 0;
+    glClearNamedBufferData(changeBins_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+BounceChange BouncePass::readChange() const {
+    if (!changeBins_) return {};
+    std::array<GLuint, 2 * LIT_BOUNCE_CHANGE_BINS> bins{};
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(changeBins_.id(), 0, sizeof bins, bins.data());
+    BounceChange change;
+    for (int i = 0; i < LIT_BOUNCE_CHANGE_BINS; ++i) {
+        change.luminance += bins[static_cast<std::size_t>(i)];
+        change.change += bins[static_cast<std::size_t>(LIT_BOUNCE_CHANGE_BINS + i)];
+    }
+    change.luminance /= LIT_BOUNCE_CHANGE_SCALE;
+    change.change /= LIT_BOUNCE_CHANGE_SCALE;
+    return change;
 }
 
 void BouncePass::finish(const VoxelVolume& volume, bool overList) {

@@ -27,6 +27,15 @@ struct BounceTrace {
     bool overList = true;       // the occupied-voxel list's voxels; false when it overflowed (whole grid)
     VoxelRange range;           // list entries to trace (count 0: all)
     RayHits rayHits = RayHits::Off;
+    bool measureChange = false;  // add to the change sums (readChange), for every bounce until converged
+};
+
+// What one bounce did to the voxels' light: the luminance of its radiance and of its change from
+// the bounce before, summed over the voxels it traced (W/(sr·m²)).
+struct BounceChange {
+    double luminance = 0.0;
+    double change = 0.0;
+    double relative() const { return luminance > 0.0 ? change / luminance : 0.0; }
 };
 
 class BouncePass : public Pass {
@@ -37,6 +46,10 @@ public:
     // Copies the bounce into level 0: the listed voxels only (bounce_copy.comp.glsl), or the whole
     // grid when `overList` is false.
     void finish(const VoxelVolume& volume, bool overList);
+    // The change sums of the traces with measureChange since the last reset. readChange waits for
+    // them (a GPU stall: once per bounce, with every bounce).
+    void resetChange();
+    BounceChange readChange() const;
 
     std::vector<gl::Program*> programs() override;
 
@@ -45,6 +58,7 @@ private:
     // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce.
     ConeProgram trace8_, trace16f_;
     gl::Program copy8_, copy16f_;  // bounce_copy.comp.glsl, built by the first finish over the list
+    gl::Buffer changeBins_;        // LIT_SSBO_BOUNCE_CHANGE, made by the first resetChange
 };
 
 // The compute program `file` for RGBA8 or RGBA16F volumes (LIT_BOUNCE_RGBA8), built into

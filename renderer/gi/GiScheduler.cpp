@@ -1,6 +1,7 @@
 #include "gi/GiScheduler.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace lit {
@@ -8,7 +9,8 @@ namespace lit {
 GiLightKey GiLightKey::of(const RenderSettings& settings) {
     const GiSettings& gi = settings.gi;
     GiLightKey key;
-    key.bounces = std::clamp(gi.bounces, 1, kMaxBounces);
+    key.untilConverged = gi.bounces == kAllBounces;
+    key.bounces = key.untilConverged ? kMaxConvergingBounces : std::clamp(gi.bounces, 1, kMaxBounces);
     key.voxelIrradiance = gi.voxelIrradiance();
     key.anisotropic = gi.anisotropicVoxels();
     key.voxelRays = std::clamp(gi.voxelRays, 0, kMaxVoxelRays);
@@ -22,12 +24,28 @@ GiLightKey GiLightKey::of(const RenderSettings& settings) {
 }
 
 bool GiLightKey::retraces(const GiLightKey& last) const {
-    if (bounces != last.bounces || voxelIrradiance != last.voxelIrradiance) return true;
+    if (bounces != last.bounces || untilConverged != last.untilConverged || voxelIrradiance != last.voxelIrradiance)
+        return true;
     // What the traces read matters only when something traces.
     const bool traced = last.bounces > 1 || last.voxelIrradiance;
     return traced && (anisotropic != last.anisotropic || voxelRays != last.voxelRays || footprint != last.footprint ||
                       aperture != last.aperture || stepScale != last.stepScale || traceDistance != last.traceDistance ||
                       intensity != last.intensity);
+}
+
+bool BounceConvergence::add(double relativeChange) {
+    ++bounces_;
+    const double previous = last_;
+    last_ = relativeChange;
+    if (relativeChange <= kStill) return true;
+    if (previous <= 0.0) return false;  // one measured bounce says nothing of the rate
+    const double ratio = std::clamp(relativeChange / previous, 0.0, 0.97);
+    const double missing = relativeChange * ratio / (1.0 - ratio);
+    // Bounces until missing · ratio^n < kMissing.
+    const double more =
+        ratio > 0.0 && missing > kMissing ? std::ceil(std::log(kMissing / missing) / std::log(ratio)) : 0.0;
+    expected_ = bounces_ + static_cast<int>(std::min(more, 1000.0));
+    return missing < kMissing;
 }
 
 GiScheduler::Changes GiScheduler::changes(const VoxelKey& voxels, const GiLightKey& light, bool volumeReallocated,
@@ -101,6 +119,7 @@ GiScheduler::UpdateStart GiScheduler::startUpdate(const Changes& changes, const 
     if (!u.runOn) {
         p.bounce = 0;
         if (light.bounces > 1) {
+            p.bounceEstimate = light.untilConverged ? kFirstBounceEstimate : light.bounces;
             if (spreadsOverFrames(light, budget)) {
                 p.bounce = 2;
                 p.bounceNext = 0;
@@ -138,12 +157,13 @@ VoxelRange GiScheduler::bounceShare(std::uint32_t perFrame) const {
     return {p.bounceNext, perFrame == 0 ? left : std::min(perFrame, left)};
 }
 
-bool GiScheduler::advanceBounce(VoxelRange range) {
+bool GiScheduler::advanceBounce(VoxelRange range, bool converged) {
     GiProgress& p = state_.progress;
     p.bounceNext += range.count;
     if (p.bounceNext < state_.occupied) return false;
     p.bounceNext = 0;
-    p.bounce = p.bounce < state_.light.bounces ? p.bounce + 1 : 0;
+    const bool last = p.bounce >= state_.light.bounces || (state_.light.untilConverged && converged);
+    p.bounce = last ? 0 : p.bounce + 1;
     return true;
 }
 
@@ -167,6 +187,7 @@ bool GiScheduler::restartIfAsked() {
     p.updateAgain = false;
     p.bounce = state_.light.bounces > 1 ? 2 : 0;
     p.bounceNext = 0;
+    p.bounceEstimate = state_.light.untilConverged ? kFirstBounceEstimate : state_.light.bounces;
     restartIrradiance();
     return true;
 }
@@ -198,7 +219,10 @@ std::vector<GiScheduler::RefineShare> GiScheduler::takeRefinement(std::uint32_t 
 float GiScheduler::updateDone() const {
     const GiProgress& p = state_.progress;
     const double list = std::max(state_.occupied, 1u);
-    const int passes = (state_.light.bounces - 1) + (state_.light.voxelIrradiance ? 1 : 0);
+    // Every bounce: the passes the update is expected to take; the bounce under way is never the
+    // last one counted, so the figure stays below 1 until the update ends.
+    const int bounces = state_.light.untilConverged ? std::max(p.bounceEstimate, p.bounce + 1) : state_.light.bounces;
+    const int passes = (bounces - 1) + (state_.light.voxelIrradiance ? 1 : 0);
     if (p.bounce > 0) return static_cast<float>(((p.bounce - 2) * list + p.bounceNext) / (passes * list));
     if (state_.light.voxelIrradiance && p.irradianceLeft > 0)
         return static_cast<float>(((passes - 1) * list + (list - p.irradianceLeft)) / (passes * list));

@@ -32,7 +32,9 @@ struct VoxelKey {
 
 // What the voxels' light depends on besides the scene's lights and shadow maps.
 struct GiLightKey {
-    int bounces = 0;               // 1..kMaxBounces; 0 before the first injection
+    // 1..kMaxBounces, or kMaxConvergingBounces with untilConverged; 0 before the first injection.
+    int bounces = 0;
+    bool untilConverged = false;   // every bounce: the passes stop once the light stops changing
     bool voxelIrradiance = false;  // the cached mode's irradiance is traced after the bounces
     bool anisotropic = false;      // the directional chains are built
     int voxelRays = 0;
@@ -49,6 +51,7 @@ struct GiLightKey {
 // The update under way after the last light or geometry edit, over the occupied-voxel list.
 struct GiProgress {
     int bounce = 0;                    // the bounce spread over frames (2..N); 0: none
+    int bounceEstimate = 0;            // every bounce: the bounces the update is expected to take
     std::uint32_t bounceNext = 0;      // its next list entry
     std::uint32_t irradianceNext = 0;  // the irradiance's next list entry (round robin over the list)
     std::uint32_t irradianceLeft = 0;  // entries still to trace since the last edit (0: all hold its light)
@@ -70,11 +73,34 @@ struct GiState {
     bool operator==(const GiState&) const = default;
 };
 
+// Every bounce (GiSettings::bounces kAllBounces): when to stop. From one bounce to the next the
+// voxels' light changes by a share that falls about geometrically (by the scene's mean albedo
+// times how much of a voxel's hemisphere sees other voxels), so after a bounce whose relative
+// change is c, with ratio r to the bounce before, about c · r / (1 − r) of the light is still
+// missing; the update stops once that is below kMissing. docs/GI.md, "Bounces".
+class BounceConvergence {
+public:
+    static constexpr double kMissing = 0.005;  // share of the light still missing when it stops
+    static constexpr double kStill = 1e-4;     // a relative change this small: nothing moves (no light)
+    // Adds bounce k's relative change (BounceChange::relative); true when the light has converged.
+    bool add(double relativeChange);
+    // The bounces the light is expected to need in all, from the ratio measured so far (0 before
+    // two bounces were measured).
+    int expectedBounces() const { return expected_; }
+
+private:
+    double last_ = -1.0;
+    int bounces_ = 1;  // bounce 1 is the direct light; the first measured is bounce 2
+    int expected_ = 0;
+};
+
 class GiScheduler {
 public:
     // Cone sets of the stratified pattern: the refinement traces every voxel with the other
     // kConeSets − 1 after the update's one.
     static constexpr int kConeSets = LIT_CONE_STRATA * LIT_CONE_STRATA;
+    // Every bounce: the bounces an update is expected to take before the first is measured.
+    static constexpr int kFirstBounceEstimate = 8;
 
     const GiState& state() const { return state_; }
 
@@ -136,8 +162,11 @@ public:
     // trace. finishBounce() after tracing it when the range reached the list's end.
     VoxelRange bounceShare(std::uint32_t perFrame) const;
     // Advances past `range`; returns true when the bounce is complete (the caller copies it into
-    // level 0 and rebuilds the mips). The last bounce lets the irradiance start next frame.
-    bool advanceBounce(VoxelRange range);
+    // level 0). `converged`: with every bounce, the light stopped changing with this one, which
+    // is then the last. The last bounce lets the irradiance start next frame.
+    bool advanceBounce(VoxelRange range, bool converged = false);
+    // Every bounce: how many bounces the update is now expected to take (for the progress figure).
+    void estimateBounces(int bounces) { state_.progress.bounceEstimate = bounces; }
 
     // This frame's share of the irradiance update (irradianceLeft > 0, spread): at most two ranges
     // (up to the list's end, then from its start). The state advances past them.

@@ -100,14 +100,28 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             Profiler::Scope scope(profiler_, "mipmap");
             mipmap_.execute(volume_, light.anisotropic, overList);
         }
+        convergence_ = {};
+        pendingBounces_ = light.untilConverged ? 0 : light.bounces;
         if (start.bouncesNow > 0) {
             Profiler::Scope scope(profiler_, "bounces");
             for (int b = 2; b <= start.bouncesNow + 1; ++b) {
                 const RayHits hits = rayHitsFor(features.voxelRays);
-                bounce_.trace(volume_, rayHitCache_, {features, b == 2, overList, {}, hits});
+                if (light.untilConverged) bounce_.resetChange();
+                bounce_.trace(volume_, rayHitCache_, {features, b == 2, overList, {}, hits, light.untilConverged});
                 bounce_.finish(volume_, overList);
                 scheduler_.listTraced(hits);
-                mipmap_.execute(volume_, light.anisotropic, overList);
+                const bool last = b == start.bouncesNow + 1 ||
+                                  (light.untilConverged && convergence_.add(bounce_.readChange().relative()));
+                // Voxel rays read level 0 where they end and only the mips' occupancy, which a
+                // bounce does not change: the mips are rebuilt after the last bounce alone.
+                if (features.voxelRays == 0 || last) mipmap_.execute(volume_, light.anisotropic, overList);
+                if (last) {
+                    if (light.untilConverged) {
+                        pendingBounces_ = b;
+                        scheduler_.estimateBounces(b);
+                    }
+                    break;
+                }
             }
         }
         if (start.prepareIrradiance) irradianceCache_.prepare(volume_, start.clearIrradiance);
@@ -116,7 +130,6 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         pendingReason_ = changes.reason;
         pendingFrame_ = profiler_.currentFrame();
         pendingVoxelize_ = changes.voxelize;
-        pendingBounces_ = light.bounces;
     }
     continueUpdate(settings, light, budget, report);
 
@@ -126,6 +139,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     report.refining = scheduler_.refinementLeft(light);
     report.updateDone = scheduler_.updateDone();
     report.updateStage = scheduler_.updateStage(report.refinedVoxels > 0);
+    report.bounces = state.light.untilConverged ? state.progress.bounceEstimate : state.light.bounces;
+    report.everyBounce = state.light.untilConverged;
     return report;
 }
 
@@ -146,11 +161,18 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         Profiler::Scope scope(profiler_, "bounces");
         const VoxelRange range = scheduler_.bounceShare(scheduler_.voxelsPerFrame(budget, light.voxelRays));
         const RayHits hits = rayHitsFor(features.voxelRays);
-        bounce_.trace(volume_, rayHitCache_, {features, progress.bounce == 2, true, range, hits});
-        if (scheduler_.advanceBounce(range)) {
+        if (light.untilConverged && range.first == 0) bounce_.resetChange();
+        bounce_.trace(volume_, rayHitCache_, {features, progress.bounce == 2, true, range, hits, light.untilConverged});
+        const bool passEnds = range.first + range.count >= scheduler_.state().occupied;
+        const bool converged = passEnds && light.untilConverged && convergence_.add(bounce_.readChange().relative());
+        if (light.untilConverged && convergence_.expectedBounces() > 0)
+            scheduler_.estimateBounces(converged ? progress.bounce : convergence_.expectedBounces());
+        if (scheduler_.advanceBounce(range, converged)) {
             scheduler_.listTraced(hits);  // the pass ran over the whole list from 0
             bounce_.finish(volume_, true);
-            mipmap_.execute(volume_, light.anisotropic, overList);
+            // Voxel rays need the mips' occupancy only (see update()): rebuilt after the last bounce.
+            if (features.voxelRays == 0 || scheduler_.state().progress.bounce == 0)
+                mipmap_.execute(volume_, light.anisotropic, overList);
         }
     } else if (light.voxelIrradiance && progress.irradianceLeft > 0) {
         Profiler::Scope scope(profiler_, "voxel irradiance");
@@ -173,7 +195,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             if (scheduler_.state().progress.irradianceLeft == 0) {
                 report.lightChanged = true;
                 scheduler_.listTraced(hits);
-                scheduler_.restartIfAsked();
+                if (scheduler_.restartIfAsked()) convergence_ = {};
             }
         }
         filterAll = scheduler_.state().progress.irradianceLeft == 0;
@@ -231,9 +253,13 @@ void VoxelGi::reportUpdate() {
     text += occupancy;
     if (mipTiming) text += ", mipmap " + formatMs(mipTiming->gpuMs);
     const PassTiming* bounceTiming = profiler_.lastRun("bounces");
-    if (bounceTiming && bounceTiming->frame >= pendingFrame_)
-        text += ", " + std::to_string(pendingBounces_ - 1) + " more bounce" + (pendingBounces_ > 2 ? "s " : " ") +
-                formatMs(bounceTiming->gpuMs);
+    if (bounceTiming && bounceTiming->frame >= pendingFrame_) {
+        // 0: every bounce, spread over frames (the count is known when the light converges).
+        text += pendingBounces_ == 0
+                    ? std::string(", bounces until converged ")
+                    : ", " + std::to_string(pendingBounces_ - 1) + " more bounce" + (pendingBounces_ > 2 ? "s " : " ");
+        text += formatMs(bounceTiming->gpuMs);
+    }
     const PassTiming* irradianceTiming = profiler_.lastRun("voxel irradiance");
     if (irradianceTiming && irradianceTiming->frame >= pendingFrame_)
         text += ", voxel irradiance " + formatMs(irradianceTiming->gpuMs);

@@ -44,6 +44,10 @@ struct GiFrameReport {
     std::string updateStage;           // "bounce 2".."bounce N", "irradiance", "refining k/15", ""
     std::uint32_t refinedVoxels = 0;   // voxels the refinement traced this frame
     bool refining = false;             // refinement rounds are still to run
+    // The bounces the voxels' light holds (with every bounce: those it took to converge, or the
+    // count expected while the update runs).
+    int bounces = 0;
+    bool everyBounce = false;  // GiSettings::bounces is every bounce
 };
 
 class VoxelGi {
@@ -105,6 +109,7 @@ private:
     VoxelIrradianceCache irradianceCache_;
     RayHitCache rayHitCache_;
     GiScheduler scheduler_;
+    BounceConvergence convergence_;  // every bounce: the update's bounces so far
     std::uint64_t generation_ = 0;
     // The update waiting for its GPU timings to be logged: why it ran, in which frame.
     std::string pendingReason_;

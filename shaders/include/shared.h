@@ -130,6 +130,13 @@ using mat4 = glm::mat4;
 // The voxel rays' first hits (RayHitCache, bounce.comp.glsl): one uint per occupied-
 // list entry, side (front, back) and ray, recorded by a trace and replayed while the voxels stay.
 #define LIT_SSBO_VOXEL_RAY_HITS 6
+// How much a bounce changed the voxels' light (bounce.comp.glsl with uMeasureChange, VoxelGi when
+// GiSettings::bounces is every bounce): LIT_BOUNCE_CHANGE_BINS uints summing the luminance of the
+// bounce's radiance, then as many summing its change from the bounce before, both in units of
+// 1/LIT_BOUNCE_CHANGE_SCALE W/(sr·m²). Voxels spread over the bins so that no bin overflows.
+#define LIT_SSBO_BOUNCE_CHANGE 7
+#define LIT_BOUNCE_CHANGE_BINS 32
+#define LIT_BOUNCE_CHANGE_SCALE 256.0
 #define LIT_MIP_LIST_LEVELS 10  // levels 0..9: a 512³ volume's whole chain
 
 // ---- Cone choice (cone.glsl), mirrored by tracedCones() in renderer/scene/OverlayShapes.cpp ------

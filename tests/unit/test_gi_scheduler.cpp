@@ -15,8 +15,12 @@ using lit::RayHits;
 using lit::VoxelKey;
 using lit::VoxelRange;
 
-// The defaults' light key: the cached mode, two bounces, 32 voxel rays.
-GiLightKey cachedTwoBounces() { return GiLightKey::of(lit::RenderSettings{}); }
+// The cached mode, two bounces, 32 voxel rays.
+GiLightKey cachedTwoBounces() {
+    lit::RenderSettings settings;
+    settings.gi.bounces = 2;
+    return GiLightKey::of(settings);
+}
 
 // A scheduler that has voxelized `occupied` voxels and injected `light` once, all at once.
 GiScheduler injected(std::uint32_t occupied, const GiLightKey& light = cachedTwoBounces()) {
@@ -193,6 +197,45 @@ TEST(GiScheduler, RefinementTracesTheOtherConeSetsRoundByRound) {
     GiLightKey accurate = light;
     accurate.voxelIrradiance = false;
     EXPECT_FALSE(injected(3000, accurate).refinementLeft(accurate)) << "only the cached mode refines";
+}
+
+// Every bounce (the default): the passes go on until a bounce's change, extrapolated over the
+// bounces still to come, is below BounceConvergence::kMissing; the progress counts the bounces the
+// measured rate predicts.
+TEST(GiScheduler, EveryBounceStopsWhenTheLightConverges) {
+    const GiLightKey every = GiLightKey::of(lit::RenderSettings{});
+    EXPECT_TRUE(every.untilConverged);
+    EXPECT_EQ(every.bounces, lit::kMaxConvergingBounces);
+    EXPECT_TRUE(every.retraces(cachedTwoBounces()));
+    GiScheduler s;
+    const VoxelKey voxels{1, 1, nullptr};
+    const GiScheduler::Changes changes = s.changes(voxels, every, true, true, true);
+    s.voxelized(voxels, 1000, true);
+    const GiBudget budget{500, 0};  // spread: each bounce a pass over frames
+    s.startUpdate(changes, every, budget);
+    ASSERT_EQ(s.state().progress.bounce, 2);
+    EXPECT_EQ(s.state().progress.bounceEstimate, GiScheduler::kFirstBounceEstimate);
+    // Each bounce changes the light by half the last one's change.
+    lit::BounceConvergence convergence;
+    double change = 0.4;
+    int bounce = 2;
+    for (; bounce < 40; ++bounce) {
+        const bool converged = convergence.add(change);
+        EXPECT_EQ(s.state().progress.bounce, bounce);
+        EXPECT_TRUE(s.advanceBounce({0, 1000}, converged));
+        if (converged) break;
+        change *= 0.5;
+    }
+    // After bounce k the light still missing is change_k · r / (1 − r) = change_k: 0.4 · 2^(2−k) < 0.005.
+    EXPECT_EQ(bounce, 9);
+    EXPECT_EQ(s.state().progress.bounce, 0) << "the irradiance is next";
+    EXPECT_EQ(convergence.expectedBounces(), 9);
+    // A scene without light converges at once; a light that keeps changing stops at the cap.
+    EXPECT_TRUE(lit::BounceConvergence{}.add(0.0));
+    lit::BounceConvergence slow;
+    EXPECT_FALSE(slow.add(0.5));
+    EXPECT_FALSE(slow.add(0.49));
+    EXPECT_GT(slow.expectedBounces(), 100);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 //   lit-gi-accuracy [--voxels 64,128,256] [--spp 256] [--size 128] [--scenes a,b,...]
 //                   [--shared DIR] [--out FILE.md] [--bounces N] [--settings FILE.json] [--cone-split]
 //                   [--frames N] [--images DIR] [--scene FILE.gltf]...
-// --bounces N: light bounces of both the VCT (GiSettings::bounces) and the reference (default 1);
+// --bounces N|all: light bounces of both the VCT (GiSettings::bounces) and the reference (default 1);
 // --settings: RenderSettings JSON the VCT starts from (size, view, GI switch, resolution and
 // bounces are set by the tool), to compare GI variants (e.g. anisotropicVoxels off).
 // --frames N: render each VCT view N times and measure the last (default 1), for settings with
@@ -120,7 +120,7 @@ std::vector<std::string> split(const std::string& text) {
 
 const char* const kUsage =
     "usage: lit-gi-accuracy [--voxels 64,128,256] [--spp 256] [--size 128] [--scenes a,b,...]\n"
-    "                       [--shared DIR] [--out FILE.md] [--bounces N] [--settings FILE.json] [--cone-split]\n"
+    "                       [--shared DIR] [--out FILE.md] [--bounces N|all] [--settings FILE.json] [--cone-split]\n"
     "                       [--frames N] [--images DIR] [--scene FILE.gltf]...\n"
     "The GI accuracy benchmark: the VCT against the reference path tracer (docs/GI.md; the options are\n"
     "described at the top of tools/gi_accuracy/main.cpp).\n";
@@ -158,8 +158,10 @@ Args parseArgs(int argc, char** argv) {
         } else if (flag == "--out") {
             args.out = value;
         } else if (flag == "--bounces") {
-            args.bounces = std::stoi(value);
-            if (args.bounces < 1 || args.bounces > kMaxBounces) throw std::invalid_argument("--bounces: 1.." + std::to_string(kMaxBounces));
+            // all: every bounce, the GI's default (kAllBounces) and the reference's until Russian roulette.
+            args.bounces = value == "all" ? lit::kAllBounces : std::stoi(value);
+            if (args.bounces != lit::kAllBounces && (args.bounces < 1 || args.bounces > kMaxBounces))
+                throw std::invalid_argument("--bounces: 1.." + std::to_string(kMaxBounces) + " or all");
         } else if (flag == "--frames") {
             args.frames = std::stoi(value);
             if (args.frames < 1 || args.frames > 1000) throw std::invalid_argument("--frames: 1..1000");
@@ -408,7 +410,7 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     const Clock::time_point referenceStart = Clock::now();
     const ReferenceScene referenceScene(scene, log);
     ReferenceSettings referenceSettings;
-    referenceSettings.bounces = args.bounces;
+    referenceSettings.bounces = args.bounces == lit::kAllBounces ? reference::kAllBounces : args.bounces;
     PathTracer tracer(referenceScene, camera, size, size, referenceSettings);
     tracer.addSamples(args.spp);
     const double referenceSeconds = secondsSince(referenceStart);
@@ -604,8 +606,10 @@ int main(int argc, char** argv) {
         std::string md;
         md += "Measured by `tools/gi-accuracy.sh` (" + std::to_string(args.size) + "×" + std::to_string(args.size) +
               " pixels, reference " + std::to_string(args.spp) + " spp with " +
-              (args.bounces == 1 ? std::string("one bounce") : std::to_string(args.bounces) + " bounces") + ", " +
-              context.description() + "):\n\n";
+              (args.bounces == 1                  ? std::string("one bounce")
+               : args.bounces == lit::kAllBounces ? std::string("every bounce")
+                                                  : std::to_string(args.bounces) + " bounces") +
+              ", " + context.description() + "):\n\n";
         md += "| scene | voxels | indirect-only VCT/ref | final RMSE, exposure-matched (reference noise) | indirect energy VCT/ref | VCT first "
               "frame s | VCT frame s | reference s |\n|---|---:|---:|---:|---:|---:|---:|---:|\n" + summary;
         if (!regions.empty())

@@ -287,11 +287,11 @@ std::vector<Flag> flagTable() {
          .value = "N|all",
          .expects = "a bounce count or all",
          .group = G::Gi,
-         .help = "light bounces of the voxel GI, 1.." + std::to_string(kMaxBounces) + " (default " +
-                 std::to_string(defaults.gi.bounces) +
-                 "; 1 = one bounce, only direct light is injected; 0 counts as "
-                 "1; all = " +
-                 std::to_string(kMaxBounces) + "). With --reference, the path tracer's indirect bounces, 0.." +
+         .help = "light bounces of the voxel GI, 1.." + std::to_string(kMaxBounces) + " or all (default " +
+                 std::string(defaults.gi.bounces == kAllBounces ? "all" : std::to_string(defaults.gi.bounces)) +
+                 "; 1 = one bounce, only direct light is injected; 0 counts as 1; all = every bounce, the "
+                 "voxels' light iterated until it converges). With --reference, the path tracer's indirect "
+                 "bounces, 0.." +
                  std::to_string(kMaxReferenceBounces) +
                  ": 0 = direct light only, 1 = the same light paths as a one-bounce voxel GI, all = until Russian "
                  "roulette (default: the voxel GI's bounces, 0 with --gi off)",

@@ -183,10 +183,10 @@ RenderSettings applyOptions(const Options& options, RenderSettings base, std::ve
     if (options.view) base.debug.view = *options.view;
     if (options.gi) base.gi.enabled = *options.gi;
     if (options.voxels) base.gi.voxelResolution = *options.voxels;
-    // --bounces also sets the voxel GI's bounces (at least 1, "all" = the most it does).
+    // --bounces also sets the voxel GI's bounces (at least 1; all = every bounce, until converged).
     if (options.bounces)
         base.gi.bounces =
-            *options.bounces == kAllReferenceBounces ? kMaxBounces : std::clamp(*options.bounces, 1, kMaxBounces);
+            *options.bounces == kAllReferenceBounces ? kAllBounces : std::clamp(*options.bounces, 1, kMaxBounces);
     if (options.giMode) base.gi.mode = *options.giMode;
     if (options.voxelRays) base.gi.voxelRays = *options.voxelRays;
     if (options.footprint) base.gi.coneFootprintPerHeight = *options.footprint;

@@ -51,7 +51,8 @@ int runReference(const RunContext& run, const Scene& scene, int cameraIndex) {
     lit::reference::ReferenceSettings reference;
     // Without --bounces the reference follows --gi and the settings' bounces: the same light paths
     // as the VCT, or direct light only.
-    reference.bounces = options.bounces.value_or(settings.gi.enabled ? settings.gi.bounces : 0);
+    const int giBounces = settings.gi.bounces == lit::kAllBounces ? lit::reference::kAllBounces : settings.gi.bounces;
+    reference.bounces = options.bounces.value_or(settings.gi.enabled ? giBounces : 0);
     reference.seed = options.seed.value_or(0);
     // Rays that leave the scene see the same sky as the rasterizer's background and cones.
     std::string skyError;
