@@ -356,6 +356,7 @@ void Renderer::Impl::updateGi(const Scene& scene, const RenderSettings& settings
     stats.giRefining = report.refining;
     stats.giBounces = report.bounces;
     stats.giEveryBounce = report.everyBounce;
+    stats.giShowingPrevious = report.showingPrevious;
 }
 
 // L_DD + L_DS from the lights and their shadow maps, then L_ID + L_IS from the voxel GI.

@@ -52,6 +52,9 @@ struct FrameStats {
     // bounce, the light iterated until it converged (GiSettings::bounces kAllBounces).
     int giBounces = 0;
     bool giEveryBounce = false;
+    // The indirect diffuse light shown is the last complete update's while the update after a
+    // geometry edit is traced (GiFrameReport::showingPrevious).
+    bool giShowingPrevious = false;
     // Frustum culling, over the views rendered this frame: the camera's G-buffer pass and the
     // shadow views when shadow maps were re-rendered (voxelization draws everything, uncounted).
     int drawsSubmitted = 0;     // scene draws those views issued

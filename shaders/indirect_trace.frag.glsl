@@ -133,7 +133,20 @@ void main() {
 #endif
     bool diffuseWanted = (uTraceTerms.x != 0 || reuse) && diffuseSurface;
 #if LIT_VOXEL_IRRADIANCE
-    vec3 gathered = diffuseWanted || (specular && lobeFromIrradiance) ? gatherVoxelIrradiance(s.position, n) : vec3(0.0);
+    bool gatheredNothing = false;
+    vec3 gathered = diffuseWanted || (specular && lobeFromIrradiance)
+                        ? gatherVoxelIrradiance(s.position, n, gatheredNothing)
+                        : vec3(0.0);
+#if LIT_TRACE_LOBES
+    // No voxel around the point faces this way: the diffuse cones give its irradiance/π instead
+    // (the same estimate the accurate and fast modes use), for the lobe too.
+    if (gatheredNothing) gathered = traceDiffuseInFrame(origin, basis, voxel.traceParams.w, maxDistance, cones);
+#else
+    if (gatheredNothing) {
+        gl_FragDepth = kLobeTrace;  // the lobe pass traces this texel's cones
+        return;
+    }
+#endif
 #endif
 #if LIT_CONE_SUBSETS
     {

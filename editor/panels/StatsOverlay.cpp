@@ -141,11 +141,16 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
     // The cached mode's update after an edit runs over frames: how far it is, so that nobody
     // judges the light before it is right.
     if (stats.giUpdateDone < 1.0f) {
-        ImGui::Text("GI update %3.0f %% (%s)", 100.0 * static_cast<double>(stats.giUpdateDone), stats.giUpdateStage.c_str());
+        ImGui::Text("GI update %3.0f %% (%s)%s", 100.0 * static_cast<double>(stats.giUpdateDone),
+                    stats.giUpdateStage.c_str(), stats.giShowingPrevious ? ": showing the light before the edit" : "");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
-                "The light of the last edit is traced a part of the voxels a frame (Render settings, "
-                "Update voxels / frame); until 100 %% some voxels hold the light from before the edit");
+            ImGui::SetTooltip(stats.giShowingPrevious
+                                  ? "The light of the edited geometry is traced a part of the voxels a frame (Render "
+                                    "settings, Update voxels / frame); the indirect diffuse light shown is the last "
+                                    "complete one until then, and swaps to the new one at 100 %%"
+                                  : "The light of the last edit is traced a part of the voxels a frame (Render "
+                                    "settings, Update voxels / frame); until 100 %% some voxels hold the light from "
+                                    "before the edit");
     } else if (!stats.giUpdateStage.empty()) {
         ImGui::TextDisabled("GI %s", stats.giUpdateStage.c_str());
         if (ImGui::IsItemHovered())

@@ -26,7 +26,7 @@ std::vector<gl::Program*> BouncePass::programs() {
     std::vector<gl::Program*> programs;
     trace8_.appendBuilt(programs);
     trace16f_.appendBuilt(programs);
-    for (gl::Program* built : {&copy8_, &copy16f_})
+    for (gl::Program* built : {&copy8_, &copy16f_, &warm8_, &warm16f_})
         if (*built) programs.push_back(built);
     return programs;
 }
@@ -99,6 +99,32 @@ void BouncePass::finish(const VoxelVolume& volume, bool overList) {
     // The whole grid (the list overflowed: the bounce traced every voxel).
     glCopyImageSubData(volume.bounce().id(), GL_TEXTURE_3D, 0, 0, 0, 0, volume.radiance().id(), GL_TEXTURE_3D, 0, 0, 0,
                        0, n, n, n);
+}
+
+void BouncePass::keepIndirect(const VoxelVolume& volume) {
+    if (volume.resolution() <= 0 || !volume.direct() || !volume.occupiedList()) return;
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // voxels new to the geometry keep nothing
+    glClearTexImage(volume.bounce().id(), 0, GL_RGBA, GL_FLOAT, zero);
+    warmStart(volume, 0);
+}
+
+void BouncePass::addKeptIndirect(const VoxelVolume& volume) {
+    if (volume.resolution() <= 0 || !volume.direct() || !volume.occupiedList()) return;
+    warmStart(volume, 1);
+}
+
+void BouncePass::warmStart(const VoxelVolume& volume, int mode) {
+    const gl::Program& program = radianceFormatProgram(shaderRoot_, warm8_, warm16f_, volume.radianceRgba8(),
+                                                       "bounce warm start", "bounce_warm_start.comp.glsl");
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    program.use();
+    glProgramUniform1i(program.id(), program.location("uMode"), mode);
+    const GLenum format = volume.radianceFormat();
+    glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY, format);
+    glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_READ_WRITE, format);
+    dispatchOverVoxels(volume, program, true);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 }  // namespace lit

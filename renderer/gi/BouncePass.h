@@ -46,6 +46,12 @@ public:
     // Copies the bounce into level 0: the listed voxels only (bounce_copy.comp.glsl), or the whole
     // grid when `overList` is false.
     void finish(const VoxelVolume& volume, bool overList);
+    // Every bounce after a geometry edit starts from the last update's light (bounce_warm_start.comp.glsl):
+    // keepIndirect, before the voxelization, over the old list, keeps each voxel's indirect light in
+    // the bounce volume; addKeptIndirect, after the injection, over the new list, adds it to level 0.
+    // Only over a complete list (both must be).
+    void keepIndirect(const VoxelVolume& volume);
+    void addKeptIndirect(const VoxelVolume& volume);
     // The change sums of the traces with measureChange since the last reset. readChange waits for
     // them (a GPU stall: once per bounce, with every bounce).
     void resetChange();
@@ -58,6 +64,8 @@ private:
     // bounce.comp.glsl for RGBA8 and RGBA16F volumes, built on the first bounce.
     ConeProgram trace8_, trace16f_;
     gl::Program copy8_, copy16f_;  // bounce_copy.comp.glsl, built by the first finish over the list
+    gl::Program warm8_, warm16f_;  // bounce_warm_start.comp.glsl, built by the first keepIndirect
+    void warmStart(const VoxelVolume& volume, int mode);
     gl::Buffer changeBins_;        // LIT_SSBO_BOUNCE_CHANGE, made by the first resetChange
 };
 

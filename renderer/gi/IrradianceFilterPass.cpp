@@ -26,4 +26,17 @@ void IrradianceFilterPass::execute(const VoxelVolume& volume, const VoxelIrradia
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
+void IrradianceFilterPass::pruneShown(const VoxelVolume& volume, const VoxelIrradianceCache& cache) {
+    if (!cache.matches(volume) || !cache.showingPrevious()) return;
+    if (!prune_)
+        prune_ = gl::Program(shaderRoot_, "voxel irradiance prune", {{GL_COMPUTE_SHADER, "voxel_irradiance_prune.comp.glsl"}});
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    prune_.use();
+    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, cache.shownTexels().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32UI);
+    const auto groups = static_cast<GLuint>((volume.resolution() + LIT_INJECT_GROUP_SIZE - 1) / LIT_INJECT_GROUP_SIZE);
+    glDispatchCompute(groups, groups, groups);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
 }  // namespace lit

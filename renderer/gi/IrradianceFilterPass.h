@@ -25,13 +25,21 @@ public:
     // completes an update filters the whole list.
     void execute(const VoxelVolume& volume, const VoxelIrradianceCache& cache, bool overList, VoxelRange range = {});
 
+    // After a voxelization: empties the shown texels (VoxelIrradianceCache::showingPrevious) of
+    // voxels the new voxelization left empty or turned (voxel_irradiance_prune.comp.glsl).
+    void pruneShown(const VoxelVolume& volume, const VoxelIrradianceCache& cache);
+
     std::vector<gl::Program*> programs() override {
-        return program_ ? std::vector<gl::Program*>{&program_} : std::vector<gl::Program*>{};
+        std::vector<gl::Program*> built;
+        for (gl::Program* p : {&program_, &prune_})
+            if (*p) built.push_back(p);
+        return built;
     }
 
 private:
     std::filesystem::path shaderRoot_;
     gl::Program program_;  // one program for both radiance formats, built on first use
+    gl::Program prune_;    // built by the first pruneShown
 };
 
 }  // namespace lit

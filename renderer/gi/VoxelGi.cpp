@@ -56,6 +56,21 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         scheduler_.directionalReleased();
     }
 
+    // After a geometry edit the pixels keep gathering the last complete update's irradiance until
+    // the new one is complete, unless its texels no longer line up with the voxels (the volume moved
+    // or was made again) or belong to another scene.
+    const bool keepShownLight = !reallocated && !moved && scheduler_.state().voxelsValid &&
+                                scheduler_.state().voxels.scene == &frame.scene;
+    // Every bounce after a geometry edit, spread over frames: the bounces start from the last
+    // update's light (BouncePass::keepIndirect; the old list is read before the voxelization
+    // replaces it).
+    const GiState& before = scheduler_.state();
+    bool warmStart = changes.voxelize && keepShownLight && light.untilConverged && before.light.bounces > 1 &&
+                     before.listComplete && volume_.direct() && scheduler_.spreadsOverFrames(light, budget);
+    if (warmStart) {
+        Profiler::Scope scope(profiler_, "bounces");
+        bounce_.keepIndirect(volume_);
+    }
     if (changes.voxelize) {
         {
             Profiler::Scope scope(profiler_, "voxelize");
@@ -81,6 +96,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         scheduler_.voxelized(voxels, occupied, complete);
     }
     const bool overList = scheduler_.state().listComplete;
+    warmStart = warmStart && overList;
 
     if (changes.inject) {
         // Before the injection, which then writes the bounces' direct radiance beside level 0.
@@ -93,6 +109,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                                       .writeLevel0 = !start.keepLastUpdate,
                                       .shadows = frame.shadows});
         }
+        if (!start.runOn) warmStart_ = warmStart;
+        if (warmStart) bounce_.addKeptIndirect(volume_);
         // With the last update's light kept in level 0 its mips stand too (the bounces' rays read
         // only their occupancy): the direct light's own mip build is saved (docs/PERFORMANCE.md,
         // "GI update").
@@ -107,7 +125,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             for (int b = 2; b <= start.bouncesNow + 1; ++b) {
                 const RayHits hits = rayHitsFor(features.voxelRays);
                 if (light.untilConverged) bounce_.resetChange();
-                bounce_.trace(volume_, rayHitCache_, {features, b == 2, overList, {}, hits, light.untilConverged});
+                bounce_.trace(volume_, rayHitCache_, {features, b == 2 && !warmStart_, overList, {}, hits, light.untilConverged});
                 bounce_.finish(volume_, overList);
                 scheduler_.listTraced(hits);
                 const bool last = b == start.bouncesNow + 1 ||
@@ -124,7 +142,13 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                 }
             }
         }
-        if (start.prepareIrradiance) irradianceCache_.prepare(volume_, start.clearIrradiance);
+        if (start.prepareIrradiance) {
+            // Only an update spread over frames shows anything before it completes (lit-render's
+            // stills never need the second set of texels).
+            irradianceCache_.prepare(volume_, start.clearIrradiance,
+                                     keepShownLight && scheduler_.spreadsOverFrames(light, budget));
+            if (changes.voxelize) filter_.pruneShown(volume_, irradianceCache_);
+        }
         report.injected = true;
         report.lightChanged = true;
         pendingReason_ = changes.reason;
@@ -141,6 +165,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     report.updateStage = scheduler_.updateStage(report.refinedVoxels > 0);
     report.bounces = state.light.untilConverged ? state.progress.bounceEstimate : state.light.bounces;
     report.everyBounce = state.light.untilConverged;
+    report.showingPrevious = irradianceCache_.showingPrevious();
     return report;
 }
 
@@ -162,7 +187,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         const VoxelRange range = scheduler_.bounceShare(scheduler_.voxelsPerFrame(budget, light.voxelRays));
         const RayHits hits = rayHitsFor(features.voxelRays);
         if (light.untilConverged && range.first == 0) bounce_.resetChange();
-        bounce_.trace(volume_, rayHitCache_, {features, progress.bounce == 2, true, range, hits, light.untilConverged});
+        bounce_.trace(volume_, rayHitCache_, {features, progress.bounce == 2 && !warmStart_, true, range, hits, light.untilConverged});
         const bool passEnds = range.first + range.count >= scheduler_.state().occupied;
         const bool converged = passEnds && light.untilConverged && convergence_.add(bounce_.readChange().relative());
         if (light.untilConverged && convergence_.expectedBounces() > 0)
@@ -224,13 +249,16 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             for (const VoxelRange& range : traced) filter_.execute(volume_, irradianceCache_, true, range);
         }
     }
+    // Every voxel holds the update's light: the pixels gather it from now on.
+    if (scheduler_.state().progress.irradianceLeft == 0 && scheduler_.state().progress.bounce == 0)
+        irradianceCache_.showWritten();
 }
 
 void VoxelGi::bindGather(const RenderSettings& settings) const {
     if (settings.gi.voxelIrradiance()) irradianceCache_.bindGatherTexels();
 }
 
-std::size_t VoxelGi::bytes() const { return volume_.totalBytes(); }
+std::size_t VoxelGi::bytes() const { return volume_.totalBytes() + irradianceCache_.bytes() + rayHitCache_.bytes(); }
 
 void VoxelGi::reportUpdate() {
     if (pendingFrame_ == 0) return;

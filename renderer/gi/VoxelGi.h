@@ -48,6 +48,9 @@ struct GiFrameReport {
     // count expected while the update runs).
     int bounces = 0;
     bool everyBounce = false;  // GiSettings::bounces is every bounce
+    // The pixels gather the last complete update's irradiance while the one after a geometry edit
+    // is traced (VoxelIrradianceCache::showingPrevious).
+    bool showingPrevious = false;
 };
 
 class VoxelGi {
@@ -110,6 +113,9 @@ private:
     RayHitCache rayHitCache_;
     GiScheduler scheduler_;
     BounceConvergence convergence_;  // every bounce: the update's bounces so far
+    // The update's bounces started from the last update's light (level 0 holds it): its second
+    // bounce reads level 0, not the direct volume.
+    bool warmStart_ = false;
     std::uint64_t generation_ = 0;
     // The update waiting for its GPU timings to be logged: why it ran, in which frame.
     std::string pendingReason_;

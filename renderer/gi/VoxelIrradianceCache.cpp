@@ -6,25 +6,48 @@
 
 namespace lit {
 
-void VoxelIrradianceCache::prepare(const VoxelVolume& volume, bool clear) {
+namespace {
+gl::Texture makeGatherTexels(int n) {
+    gl::Texture texels("voxel irradiance (gather texels)", {GL_TEXTURE_3D, GL_RGBA32UI, n, n, n, 1});
+    // Read with texelFetch only; nearest keeps the one-level volume complete for any sampler
+    // state (an integer texture with linear filtering would be incomplete).
+    texels.setFilter(GL_NEAREST, GL_NEAREST);
+    return texels;
+}
+
+void clearGatherTexels(const gl::Texture& texels) {
+    const GLuint zeroBits[4] = {0, 0, 0, 0};  // an empty voxel to the gather
+    glClearTexImage(texels.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, zeroBits);
+}
+}  // namespace
+
+void VoxelIrradianceCache::prepare(const VoxelVolume& volume, bool clear, bool keepShown) {
     const int n = volume.resolution();
     if (n <= 0) return;
     if (!matches(volume)) {
         // Both sides stacked in z (otherSideTexel, voxel.glsl).
         traced_ = gl::Texture("voxel irradiance (traced)", {GL_TEXTURE_3D, volume.radianceFormat(), n, n, 2 * n, 1});
-        gatherTexels_ = gl::Texture("voxel irradiance (gather texels)", {GL_TEXTURE_3D, GL_RGBA32UI, n, n, n, 1});
-        // Read with texelFetch only; nearest keeps the one-level volumes complete for any sampler
-        // state (an integer texture with linear filtering would be incomplete).
-        for (const gl::Texture* t : {&traced_, &gatherTexels_}) t->setFilter(GL_NEAREST, GL_NEAREST);
+        traced_.setFilter(GL_NEAREST, GL_NEAREST);
+        gatherTexels_[0] = makeGatherTexels(n);
+        gatherTexels_[1] = {};
+        written_ = shown_ = 0;
         resolution_ = n;
         rgba8_ = volume.radianceRgba8();
         clear = true;  // new storage holds anything
+        keepShown = false;
     }
     if (!clear) return;
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearTexImage(traced_.id(), 0, GL_RGBA, GL_FLOAT, zero);
-    const GLuint zeroBits[4] = {0, 0, 0, 0};  // an empty voxel to the gather
-    glClearTexImage(gatherTexels_.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, zeroBits);
+    if (keepShown && shown_ == written_) {
+        // The shown set is complete: write the new update into the other one. (When the pixels
+        // already gather an older complete set, the incomplete one is written again.)
+        written_ = 1 - shown_;
+        if (!gatherTexels_[written_]) gatherTexels_[written_] = makeGatherTexels(n);
+    } else if (!keepShown) {
+        shown_ = written_;
+    }
+    clearGatherTexels(gatherTexels_[written_]);
 }
 
 bool VoxelIrradianceCache::matches(const VoxelVolume& volume) const {
@@ -32,17 +55,19 @@ bool VoxelIrradianceCache::matches(const VoxelVolume& volume) const {
 }
 
 void VoxelIrradianceCache::bindGatherTexels() const {
-    if (!gatherTexels_) return;
+    const gl::Texture& texels = gatherTexels_[shown_];
+    if (!texels) return;
     // A one-level volume with nearest filtering (set where it is made); a sampler object left on
     // this unit by another pass would override that.
     glBindSampler(LIT_TEX_VOXEL_IRRADIANCE, 0);
-    gatherTexels_.bind(LIT_TEX_VOXEL_IRRADIANCE);
+    texels.bind(LIT_TEX_VOXEL_IRRADIANCE);
 }
 
 std::size_t VoxelIrradianceCache::bytes() const {
     const auto n = static_cast<std::size_t>(resolution_);
     if (n == 0) return 0;
-    return n * n * 2 * n * (rgba8_ ? 4 : 8) + n * n * n * 16;
+    const std::size_t gatherSets = gatherTexels_[1] ? 2 : 1;
+    return n * n * 2 * n * (rgba8_ ? 4 : 8) + gatherSets * n * n * n * 16;
 }
 
 }  // namespace lit

@@ -22,19 +22,34 @@ public:
     // values sit at old geometry) marks every voxel untraced (alpha 0, which the filter and the
     // gather skip); new storage is always cleared. A light edit keeps the old values until they
     // are traced again.
-    void prepare(const VoxelVolume& volume, bool clear);
+    //
+    // `keepShown` (with `clear`; the volume's placement unchanged): the pixels go on gathering the
+    // last complete update's texels while the new ones are traced into a second set, so an edit
+    // never blanks the indirect light; showWritten() swaps once the update is complete.
+    void prepare(const VoxelVolume& volume, bool clear, bool keepShown = false);
+    // The update is complete: the pixels gather the texels it wrote (no copy; the other set is
+    // what the next kept update writes into).
+    void showWritten() { shown_ = written_; }
+    // The pixels gather the last complete update's texels, not those being written.
+    bool showingPrevious() const { return shown_ != written_; }
     // Whether the volumes match `volume` (prepare ran for its resolution and format).
     bool matches(const VoxelVolume& volume) const;
 
     const gl::Texture& traced() const { return traced_; }
-    const gl::Texture& gatherTexels() const { return gatherTexels_; }
-    // Binds the gather texels to LIT_TEX_VOXEL_IRRADIANCE for the cone passes.
+    // The texels the filter writes.
+    const gl::Texture& gatherTexels() const { return gatherTexels_[written_]; }
+    // The texels the pixels gather.
+    const gl::Texture& shownTexels() const { return gatherTexels_[shown_]; }
+    // Binds the texels the pixels gather (the last complete update's while another is traced)
+    // to LIT_TEX_VOXEL_IRRADIANCE for the cone passes.
     void bindGatherTexels() const;
     std::size_t bytes() const;
 
 private:
     gl::Texture traced_;
-    gl::Texture gatherTexels_;
+    // Two sets: the second is made by the first kept update and stays (docs/GI.md, "Memory").
+    gl::Texture gatherTexels_[2];
+    int written_ = 0, shown_ = 0;
     int resolution_ = 0;
     bool rgba8_ = false;
 };

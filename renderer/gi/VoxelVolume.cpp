@@ -35,9 +35,9 @@ std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     // the base, so the three add 9/7 of it.
     const std::size_t radiance = voxels * texel * 8 / 7 + 9 * (voxels / 8) * texel * 8 / 7;
     // The cached GI mode's irradiance volumes (VoxelIrradianceCache::prepare: the traced one,
-    // N × N × 2N for two sides in the radiance format, and the RGBA32UI gather texels); counted in
-    // every mode.
-    const std::size_t irradiance = 2 * voxels * texel + voxels * 16;
+    // N × N × 2N for two sides in the radiance format, and two sets of RGBA32UI gather texels, the
+    // one shown while the other is written after a geometry edit); counted in every mode.
+    const std::size_t irradiance = 2 * voxels * texel + 2 * voxels * 16;
     return material + radiance + (bounces ? 2 * voxels * texel : 0) + irradiance;
 }
 

@@ -184,7 +184,11 @@ void main() {
         for (int i = 0; i < kDiffuseConeCount; ++i) cones[i] = vec3(0.0);  // never read (as in indirect_trace)
         // As indirect_trace.frag.glsl: a lobe wide enough to reuse diffuse cones takes the gathered
         // irradiance instead.
-        vec3 gathered = traceDiffuseHere || (traceSpecularHere && reuse) ? gatherVoxelIrradiance(s.position, n) : vec3(0.0);
+        bool gatheredNothing = false;
+        vec3 gathered = traceDiffuseHere || (traceSpecularHere && reuse)
+                            ? gatherVoxelIrradiance(s.position, n, gatheredNothing)
+                            : vec3(0.0);
+        if (gatheredNothing) gathered = traceDiffuseInFrame(origin, basis, voxel.traceParams.w, maxDistance, cones);
         if (traceDiffuseHere) diffuse = gathered;
         if (traceSpecularHere)
             specular = reuse ? gathered

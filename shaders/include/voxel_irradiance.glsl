@@ -13,7 +13,9 @@
 // accurate mode's light; with ^16 as much as the accurate mode (docs/GI.md, "The gather"). A voxel
 // whose irradiance was not traced yet (alpha 0: cleared after a voxelization, and the spread
 // update, the GiBudget's updateVoxels, has not reached it: the side's flag in its texel) is left
-// out.
+// out. `nothing` says that no voxel around the point counted (a surface the voxels do not hold
+// facing this way: a thin feature, or geometry moved since the irradiance shown was traced); the
+// caller traces cones there instead.
 // Needs voxel.glsl (included by cone.glsl).
 #ifndef LIT_VOXEL_IRRADIANCE
 #define LIT_VOXEL_IRRADIANCE 0
@@ -25,7 +27,7 @@
 // "llvmpipe").
 layout(binding = LIT_TEX_VOXEL_IRRADIANCE) uniform usampler3D voxelGatherTexels;
 
-vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
+vec3 gatherVoxelIrradiance(vec3 position, vec3 n, out bool nothing) {
     int res = int(voxel.voxelInfo.x);
     // Continuous voxel coordinates with voxel centres on integers.
     vec3 g = (position - voxel.volumeMin.xyz) / voxel.voxelInfo.z + 0.5 * n - 0.5;
@@ -51,6 +53,7 @@ vec3 gatherVoxelIrradiance(vec3 position, vec3 n) {
                 sum += w * gatherTexelIrradiance(t, otherSide);
                 weightSum += w;
             }
-    return weightSum > 0.0 ? sum / weightSum : vec3(0.0);
+    nothing = !(weightSum > 0.0);
+    return nothing ? vec3(0.0) : sum / weightSum;
 }
 #endif
