@@ -30,8 +30,8 @@ struct BounceTrace {
     bool measureChange = false;  // add to the change sums (readChange), for every bounce until converged
 };
 
-// What one bounce did to the voxels' light: the luminance of its radiance and of its change from
-// the bounce before, summed over the voxels it traced (W/(sr·m²)).
+// What one bounce did to the voxels' light: the luminance of its bounced light (radiance − direct)
+// and of its change from the bounce before, summed over the voxels it traced (W/(sr·m²)).
 struct BounceChange {
     double luminance = 0.0;
     double change = 0.0;

@@ -81,7 +81,10 @@ struct GiState {
 class BounceConvergence {
 public:
     static constexpr double kMissing = 0.005;  // share of the light still missing when it stops
-    static constexpr double kStill = 1e-4;     // a relative change this small: nothing moves (no light)
+    // A relative change this small is the radiance volume's own rounding (RGBA16F holds 11
+    // significant bits, 0.05 %: once the light has settled, the bounces keep changing it by
+    // 0.07 % in a dim room, a limit cycle), so the light has settled whatever the rate says.
+    static constexpr double kStill = 0.002;
     // Adds bounce k's relative change (BounceChange::relative); true when the light has converged.
     bool add(double relativeChange);
     // The bounces the light is expected to need in all, from the ratio measured so far (0 before

@@ -132,8 +132,9 @@ using mat4 = glm::mat4;
 #define LIT_SSBO_VOXEL_RAY_HITS 6
 // How much a bounce changed the voxels' light (bounce.comp.glsl with uMeasureChange, VoxelGi when
 // GiSettings::bounces is every bounce): LIT_BOUNCE_CHANGE_BINS uints summing the luminance of the
-// bounce's radiance, then as many summing its change from the bounce before, both in units of
-// 1/LIT_BOUNCE_CHANGE_SCALE W/(sr·m²). Voxels spread over the bins so that no bin overflows.
+// bounce's bounced light (radiance − direct), then as many summing its change from the bounce
+// before, both in units of 1/LIT_BOUNCE_CHANGE_SCALE W/(sr·m²) (rounded stochastically). Voxels
+// spread over the bins so that no bin overflows.
 #define LIT_SSBO_BOUNCE_CHANGE 7
 #define LIT_BOUNCE_CHANGE_BINS 32
 #define LIT_BOUNCE_CHANGE_SCALE 256.0

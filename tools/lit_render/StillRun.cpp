@@ -42,6 +42,10 @@ int runStill(const RunContext& run, Scene& scene, int cameraIndex, const GlRun& 
     glFinish();
     if (settings.output.autoExposure)
         std::printf("auto exposure: %+.2f EV\n", static_cast<double>(renderer.exposureEv(settings)));
+    // Every bounce stops when the light has converged: how many it took says how much of the
+    // image is bounced light (docs/GI.md, "Bounces").
+    if (settings.gi.enabled && renderer.stats().giEveryBounce && renderer.stats().giUpdateDone >= 1.0f)
+        std::printf("GI: every bounce, converged after %d\n", renderer.stats().giBounces);
     if (options.benchFrames > 0 && settings.gi.enabled) bench.mipmaps = renderer.benchmarkMipmaps(7);
     if (options.giUpdateRounds > 0 && settings.gi.enabled)
         benchGiUpdates(options.giUpdateRounds, scene, camera, renderer, settings, giBudgetFor(options));
