@@ -233,6 +233,9 @@ int App::run() {
             frameLog_.add({now, renderScale, renderSize, cameraMoved_});
             frameLog_.last().refinedVoxels = render ? renderer_->stats().refinedVoxels : 0;
             frameLog_.last().rendered = render;
+            frameLog_.last().playhead = playback_.time;
+            frameLog_.last().playing = playback_.playing;
+            frameLog_.last().camera = camera_.position;
         }
         takeScreenshots(/*withUi=*/false, framebuffer);
         presentViewport(framebuffer, target);

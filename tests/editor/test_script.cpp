@@ -110,6 +110,12 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(errorOf("key time 1 soon\n"), "s.txt:1: key time: expected seconds, got 'soon'");
     EXPECT_EQ(errorOf("time\n"), "s.txt:1: time: expected a time in seconds, got 0 arguments");
     EXPECT_EQ(errorOf("time 1s\n"), "s.txt:1: time: expected seconds, got '1s'");
+    EXPECT_EQ(errorOf("play 9\n"), "s.txt:1: play: expected a speed 0.1..4, got '9'");
+    EXPECT_EQ(errorOf("play 1 2\n"), "s.txt:1: play: expected at most a speed, got 2 arguments");
+    EXPECT_EQ(errorOf("duration 0\n"), "s.txt:1: duration: expected seconds > 0, got '0'");
+    EXPECT_EQ(errorOf("wait playing\n"),
+              "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got 'playing'");
+    EXPECT_EQ(errorOf("play 0.5\nwait play\nduration 3\n"), "");
 }
 
 TEST(Script, ErrorAtNamesTheCommandsLine) {
@@ -244,7 +250,7 @@ TEST(Script, EachCommandHasItsOwnVerb) {
         "select A\nselect+ A\nadd box\ndelete\nduplicate\nparent -\nmaterial unique\nprimitive 0\n"
         "gizmo rotate\nspace local\nsnap on\ndrag 1 2 3 4\nframe\norbit 1 2\nanimation a\nset node.name A\n"
         "setting gi false\nview final\npanel log on\npick 1 2\nscreenshot a.png\nsave\nopen a.gltf\n"
-        "camera 0 0 0 1 1 1\nundo\nredo\ninteractive on\nwait 1\nkey add\nplay\npause\ntime 1\nquit\nloop\n"
+        "camera 0 0 0 1 1 1\nundo\nredo\ninteractive on\nwait 1\nkey add\nplay\npause\ntime 1\nduration 2\nquit\nloop\n"
         "memory\n",
         "s.txt");
     std::set<ScriptVerb> verbs;
