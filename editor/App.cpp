@@ -11,6 +11,7 @@
 
 #include "EditorViews.h"
 #include "FlyController.h"
+#include "GizmoChoice.h"
 #include "ProcessMemory.h"
 #include "SceneEdits.h"
 #include "ViewportOverlay.h"
@@ -401,7 +402,8 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.timeline) timelinePanel_.draw(doc_, playback_, camera_, layout.timeline, &visible_.timeline);
     if (visible_.camera && drawCameraPanel(camera_, layout.camera, &visible_.camera).resetToSceneCamera) resetCamera();
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
-    viewportRect_ = drawViewportBar(menuHeight, visible_, gizmoTool_, viewName, doc_.selection().size());
+    viewportRect_ = drawViewportBar(menuHeight, visible_, gizmoTool_, input_.gizmoMode(),
+                                    scaleAppliesTo(doc_.scene, doc_.selectedNode), viewName, doc_.selection().size());
     constexpr float kViewportMargin = 8.0f;
     referenceViewer_.drawWindow(ImVec2(viewportRect_.x + viewportRect_.z - kViewportMargin, viewportRect_.y + kViewportMargin),
                                 resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);

@@ -7,6 +7,7 @@
 
 #include "EditorViews.h"
 #include "FlyController.h"
+#include "GizmoChoice.h"
 #include "SceneEdits.h"
 #include "scene/SceneBuilder.h"
 
@@ -119,9 +120,10 @@ void ViewportInput::handleMouse(const CameraView& view) {
     if (isFlatView(doc_.settings.debug.view)) return;
     if (gizmoShown) {
         const glm::vec2 display(io.DisplaySize.x, io.DisplaySize.y);
-        const glm::mat3 axes = gizmoAxes(gizmoTool_.mode, gizmoTool_.space,
-                                         doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].world);
-        hoveredGizmoAxis_ = TransformGizmo::hitTest(gizmoTool_.mode, view, display,
+        const GizmoMode mode = gizmoMode();
+        const glm::mat3 axes =
+            gizmoAxes(mode, gizmoTool_.space, doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].world);
+        hoveredGizmoAxis_ = TransformGizmo::hitTest(mode, view, display,
                                                     nodeWorldPosition(doc_.scene, doc_.selectedNode), axes, mouse);
     }
     if (!ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
@@ -146,7 +148,7 @@ bool ViewportInput::beginGizmoDrag(const CameraView& view, glm::vec2 mouse) {
     const glm::vec2 display(io.DisplaySize.x, io.DisplaySize.y);
     const Node& active = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)];
     const glm::vec3 origin = nodeWorldPosition(doc_.scene, doc_.selectedNode);
-    const GizmoMode mode = gizmoTool_.mode;
+    const GizmoMode mode = gizmoMode();
     const glm::mat3 axes = gizmoAxes(mode, gizmoTool_.space, active.world);
     const int handle = TransformGizmo::hitTest(mode, view, display, origin, axes, mouse);
     if (handle < 0 || !gizmo_.begin(mode, handle, view, display, origin, axes, mouse)) return false;
@@ -250,6 +252,8 @@ void ViewportInput::frameSelection() {
 
 void ViewportInput::forgetConeSurface() { coneSurface_.reset(); }
 
+GizmoMode ViewportInput::gizmoMode() const { return gizmoModeFor(gizmoTool_, doc_.scene, doc_.selectedNode); }
+
 OverlayOptions ViewportInput::overlayOptions(bool cleanViewport) const {
     OverlayOptions options;
     options.markers = viewport_.markers && !cleanViewport;
@@ -257,7 +261,7 @@ OverlayOptions ViewportInput::overlayOptions(bool cleanViewport) const {
     options.cameraPath = viewport_.markers && !cleanViewport;
     options.selectionOutline = !cleanViewport;
     options.hoveredGizmoAxis = gizmo_.active() ? gizmo_.handle() : hoveredGizmoAxis_;
-    options.gizmoMode = gizmo_.active() ? gizmo_.mode() : gizmoTool_.mode;
+    options.gizmoMode = gizmo_.active() ? gizmo_.mode() : gizmoMode();
     options.gizmoSpace = gizmoTool_.space;
     if (viewport_.coneDirections && coneSurface_) {
         options.coneSurface = coneSurface_;

@@ -49,6 +49,9 @@ public:
     // Drops the cone directions view's pick (its view was left).
     void forgetConeSurface();
 
+    // The gizmo mode for the active node: the tool's, or Move where scale means nothing
+    // (GizmoChoice.h).
+    GizmoMode gizmoMode() const;
     bool looking() const { return looking_; }  // the right mouse button looks around
     bool gizmoDragging() const { return gizmo_.active(); }
     // What this input adds to the overlay (gizmo hover, cones); `cleanViewport`: only the cones.

@@ -11,8 +11,8 @@
 
 namespace lit::editor {
 
-glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, GizmoTool& gizmo, std::string_view view,
-                          std::size_t selected) {
+glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, GizmoTool& gizmo, GizmoMode shownMode,
+                          bool scaleApplies, std::string_view view, std::size_t selected) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(), ImGuiCond_Always);
     constexpr float kMargin = 8.0f;
@@ -28,17 +28,22 @@ glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, Gizm
                                         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
                                         ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     if (ImGui::Begin("Viewport bar", nullptr, kFlags)) {
-        auto modeButton = [&gizmo](const char* label, GizmoMode mode, const char* tip) {
-            const bool current = gizmo.mode == mode;
+        auto modeButton = [&gizmo, shownMode](const char* label, GizmoMode mode, const char* tip, bool enabled) {
+            const bool current = shownMode == mode;
             if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+            ImGui::BeginDisabled(!enabled);
             if (ImGui::Button(label)) gizmo.mode = mode;
+            ImGui::EndDisabled();
             if (current) ImGui::PopStyleColor();
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+            if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", tip);
             ImGui::SameLine();
         };
-        modeButton("Move", GizmoMode::Translate, "Translate gizmo (W)");
-        modeButton("Rotate", GizmoMode::Rotate, "Rotate gizmo (E)");
-        modeButton("Scale", GizmoMode::Scale, "Scale gizmo (R), always along the node's own axes");
+        modeButton("Move", GizmoMode::Translate, "Translate gizmo (W)", true);
+        modeButton("Rotate", GizmoMode::Rotate, "Rotate gizmo (E)", true);
+        modeButton("Scale", GizmoMode::Scale,
+                   scaleApplies ? "Scale gizmo (R), always along the node's own axes"
+                                : "Lights and cameras have no size to scale: the Move gizmo stands in",
+                   scaleApplies);
         if (ImGui::Button(gizmo.space == GizmoSpace::World ? "World" : "Local"))
             gizmo.space = gizmo.space == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo axes: the world's or the node's own (T)");

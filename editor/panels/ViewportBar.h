@@ -14,8 +14,9 @@ namespace lit::editor {
 
 // Returns the free viewport area between the panels shown (from the layout: a moved panel is
 // not followed), ImGui units: x, y, width, height. `view`: an EditorViews.h name; `selected`:
-// how many nodes are selected.
-glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, GizmoTool& gizmo, std::string_view view,
-                          std::size_t selected);
+// how many nodes are selected; `shownMode`: the gizmo the viewport shows for the active node
+// (GizmoChoice.h), highlighted; `scaleApplies`: false greys Scale out (a light or camera).
+glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, GizmoTool& gizmo, GizmoMode shownMode,
+                          bool scaleApplies, std::string_view view, std::size_t selected);
 
 }  // namespace lit::editor
