@@ -386,7 +386,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(),
                                                   resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
 
-    if (visible_.hierarchy) hierarchyPanel_.draw(doc_, layout.hierarchy, &visible_.hierarchy);
+    if (visible_.hierarchy) hierarchyPanel_.draw(doc_, camera_.right(), layout.hierarchy, &visible_.hierarchy);
     if (visible_.inspector) inspectorPanel_.draw(doc_, layout.inspector, &visible_.inspector);
     if (visible_.stats)
         drawStatsOverlay(frameTimer_, renderer_->profiler(), renderer_->stats(), renderSize, imgui_->monoFont(),
@@ -431,7 +431,7 @@ void App::carryOutMenuRequests(const MenuRequests& menu) {
     if (menu.open) files_.requestOpen(*menu.open);
     if (menu.add) addNodeInFront(doc_, *menu.add, camera_.position, camera_.forward());
     if (menu.deleteSelection) logRefusal(deleteSelection(doc_));
-    if (menu.duplicateSelection) logRefusal(duplicateSelection(doc_));
+    if (menu.duplicateSelection) logRefusal(duplicateSelection(doc_, camera_.right()));
     if (menu.frameSelection) input_.frameSelection();
     if (menu.view) input_.setView(*menu.view);
     logRefusal(std::exchange(doc_.lastRefusal, {}));
@@ -455,7 +455,7 @@ void App::handleShortcuts() {
             playback_.play(doc_.cameraPath);
     }
     if (pressed(GLFW_KEY_ESCAPE)) doc_.select(-1);
-    if (io.KeyCtrl && pressed(GLFW_KEY_D)) logRefusal(duplicateSelection(doc_));
+    if (io.KeyCtrl && pressed(GLFW_KEY_D)) logRefusal(duplicateSelection(doc_, camera_.right()));
     // Editing keys; while the right mouse button is held the letters fly the camera instead.
     if (input_.looking() || io.KeyCtrl || io.KeyAlt) return;
     if (pressed(GLFW_KEY_DELETE) || pressed(GLFW_KEY_X)) logRefusal(deleteSelection(doc_));

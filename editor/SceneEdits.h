@@ -60,7 +60,14 @@ std::string deleteSelection(Document& doc);
 // parent) with its subtree, next to the original under the same parent. Meshes are shared
 // (instances, like Godot); lights and cameras are copied so the copies can be edited alone.
 // The copies become the selection. One undo step. Returns "" or the reason.
-std::string duplicateSelection(Document& doc);
+// `offsetDirection` (world, unit; zero: none) moves the copies aside so they do not hide in the
+// original: by the selection's width along it plus kDuplicateGap of that (at least 20 cm, the
+// size F gives a light). The editor passes the view's right vector: the copy appears beside the
+// original on screen, as Ctrl+D in Blender followed by a move.
+std::string duplicateSelection(Document& doc, glm::vec3 offsetDirection = glm::vec3(0.0f));
+// The world offset duplicateSelection gives the copies of the top-level selected nodes.
+glm::vec3 duplicateOffset(const Document& doc, glm::vec3 offsetDirection);
+inline constexpr float kDuplicateGap = 0.1f;  // fraction of the selection's width between copy and original
 
 // Makes `newParent` (-1: the scene root) the parent of `node`, keeping its world transform.
 // Refused (returns the reason) when newParent is node itself or below it.

@@ -81,7 +81,7 @@ std::string ScriptRunner::run(const ScriptCommand& command) {
         case ScriptVerb::Delete:
             return deleteSelection(doc);
         case ScriptVerb::Duplicate:
-            return duplicateSelection(doc);
+            return duplicateSelection(doc, target_.camera.right());
         case ScriptVerb::Parent: {
             int parent = -1;
             if (args[0] != "-") {

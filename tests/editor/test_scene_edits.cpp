@@ -10,6 +10,7 @@
 #include "Log.h"
 #include "Properties.h"
 #include "SceneEdits.h"
+#include "ViewportOverlay.h"
 
 namespace {
 
@@ -258,6 +259,46 @@ TEST(SceneEdits, ReparentKeepsWorldTransformAndRefusesCycles) {
     EXPECT_EQ(doc.scene.nodes[static_cast<std::size_t>(box)].parent, -1);
     expectNear(doc.scene.nodes[static_cast<std::size_t>(box)].world, before);
     expectConsistent(doc.scene);
+}
+
+TEST(SceneEdits, DuplicateSelectsTheCopyBesideTheOriginalAndUndoRemovesIt) {
+    Document doc;
+    const int box = addNode(doc, NodeKind::Box, {0.0f, 0.5f, 0.0f});
+    const std::size_t nodes = doc.scene.nodes.size();
+    // The view's right vector is +X: the 1 m box's copy goes 1 m + 10 % to the right.
+    ASSERT_EQ(duplicateSelection(doc, {1.0f, 0.0f, 0.0f}), "");
+    ASSERT_EQ(doc.scene.nodes.size(), nodes + 1);
+    const int copy = findNode(doc.scene, "Box.001");
+    ASSERT_GE(copy, 0);
+    EXPECT_EQ(doc.selectedNode, copy);
+    EXPECT_EQ(doc.selection(), std::vector<int>{copy});
+    const glm::vec3 moved = nodeWorldPosition(doc.scene, copy) - nodeWorldPosition(doc.scene, box);
+    EXPECT_NEAR(glm::length(moved - glm::vec3(1.0f + kDuplicateGap, 0.0f, 0.0f)), 0.0f, 1e-5f);
+    // The copies no longer overlap the original.
+    EXPECT_GT(nodeWorldBounds(doc.scene, copy).min.x, nodeWorldBounds(doc.scene, box).max.x);
+    EXPECT_EQ(doc.undoLabel(), "Duplicate Box");
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.scene.nodes.size(), nodes);
+    EXPECT_LT(findNode(doc.scene, "Box.001"), 0);
+
+    // A light (no size: counted as 20 cm) under a scaled, turned parent moves by the world offset.
+    const int lamp = addNode(doc, NodeKind::PointLight, {0.0f, 2.0f, 0.0f});
+    ASSERT_EQ(setProperty(doc, "node.scale", "2 2 2"), "");  // the lamp is selected
+    doc.select(box);
+    ASSERT_EQ(setProperty(doc, "node.rotation", "0 90 0"), "");
+    ASSERT_EQ(setProperty(doc, "node.scale", "3 1 1"), "");
+    doc.select(lamp);
+    ASSERT_EQ(reparentSelection(doc, box), "");
+    const glm::vec3 before = nodeWorldPosition(doc.scene, lamp);
+    ASSERT_EQ(duplicateSelection(doc, {0.0f, 0.0f, -1.0f}), "");
+    const int lampCopy = doc.selectedNode;
+    ASSERT_NE(lampCopy, lamp);
+    const glm::vec3 shift = nodeWorldPosition(doc.scene, lampCopy) - before;
+    EXPECT_NEAR(glm::length(shift - glm::vec3(0.0f, 0.0f, -0.2f * (1.0f + kDuplicateGap))), 0.0f, 1e-4f);
+    // No direction: the copy stays on the original, as before.
+    ASSERT_EQ(duplicateSelection(doc), "");
+    EXPECT_NEAR(glm::length(nodeWorldPosition(doc.scene, doc.selectedNode) - nodeWorldPosition(doc.scene, lampCopy)),
+                0.0f, 1e-5f);
 }
 
 TEST(SceneEdits, MakeUniqueSplitsASharedMaterial) {
