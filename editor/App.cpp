@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 #include <epoxy/gl.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ClosePopupToLevel: Escape closes menus
 
 #include <algorithm>
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <utility>
 
 #include "EditorViews.h"
+#include "EscapeKey.h"
 #include "FlyController.h"
 #include "GizmoChoice.h"
 #include "ProcessMemory.h"
@@ -454,7 +456,13 @@ void App::handleShortcuts() {
         else
             playback_.play(doc_.cameraPath);
     }
-    if (pressed(GLFW_KEY_ESCAPE)) doc_.select(-1);
+    if (pressed(GLFW_KEY_ESCAPE)) {
+        const bool popupOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+        if (escapeAction(popupOpen) == EscapeAction::ClosePopups)
+            ImGui::ClosePopupToLevel(0, /*restore_focus_to_window_under_popup=*/true);
+        else
+            doc_.select(-1);
+    }
     if (io.KeyCtrl && pressed(GLFW_KEY_D)) logRefusal(duplicateSelection(doc_, camera_.right()));
     // Editing keys; while the right mouse button is held the letters fly the camera instead.
     if (input_.looking() || io.KeyCtrl || io.KeyAlt) return;
