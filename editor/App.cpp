@@ -373,6 +373,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     const MenuContext menuContext{
         .recent = recent_,
         .currentScene = doc_.file.empty() ? std::filesystem::path("untitled.gltf") : doc_.file,
+        .documentFile = doc_.file,
         .undoLabel = doc_.undoLabel(),
         .redoLabel = doc_.redoLabel(),
         .currentView = viewName,
