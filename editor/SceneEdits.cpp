@@ -194,7 +194,13 @@ std::vector<int> topLevelSelection(const Document& doc) {
     return top;
 }
 
-int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 direction) {
+float midGreyLightIntensity(LightType type, float distance, float exposureEv) {
+    constexpr float kPi = 3.14159265f;
+    const float d = type == LightType::Directional ? 1.0f : std::max(distance, 0.01f);
+    return kMiddleGrey * kPi * d * d / std::exp2(exposureEv);
+}
+
+int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 direction, float lightDistance) {
     const KindInfo& info = infoOf(kind);
     int index = -1;
     doc.edit(std::string("Add ") + info.label, Change::Transform, [&](Scene& scene) {
@@ -213,7 +219,7 @@ int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 directio
             light.type = kind == NodeKind::DirectionalLight ? LightType::Directional
                          : kind == NodeKind::PointLight      ? LightType::Point
                                                              : LightType::Spot;
-            light.intensity = kind == NodeKind::DirectionalLight ? kAddedSunLux : kAddedLampCandela;
+            light.intensity = midGreyLightIntensity(light.type, lightDistance, doc.settings.output.exposureEv);
             if (kind == NodeKind::SpotLight) light.innerConeAngle = 0.5f * light.outerConeAngle;
             scene.lights.push_back(light);
             node.light = static_cast<int>(scene.lights.size() - 1);
@@ -259,7 +265,7 @@ int addNodeInFront(Document& doc, NodeKind kind, glm::vec3 eye, glm::vec3 forwar
     const float distance = bounds.empty() ? 2.0f : std::clamp(0.1f * glm::length(bounds.size()), 1.0f, 10.0f);
     const glm::vec3 direction =
         kind == NodeKind::DirectionalLight ? glm::normalize(forward + glm::vec3(0.0f, -1.0f, 0.0f)) : forward;
-    return addNode(doc, kind, eye + forward * distance, direction);
+    return addNode(doc, kind, eye + forward * distance, direction, distance);
 }
 
 std::string deleteSelection(Document& doc) {

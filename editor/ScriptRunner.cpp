@@ -188,7 +188,8 @@ std::string ScriptRunner::add(const ScriptCommand& command) {
     if (args.size() == 4) {
         const glm::vec3 position(number(args[1]), number(args[2]), number(args[3]));
         addNode(target_.doc, kind, position,
-                kind == NodeKind::DirectionalLight ? glm::vec3(0.3f, -1.0f, -0.2f) : camera.forward());
+                kind == NodeKind::DirectionalLight ? glm::vec3(0.3f, -1.0f, -0.2f) : camera.forward(),
+                glm::distance(camera.position, position));
     } else {
         addNodeInFront(target_.doc, kind, camera.position, camera.forward());
     }

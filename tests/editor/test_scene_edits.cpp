@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "DocumentIO.h"
@@ -299,6 +301,37 @@ TEST(SceneEdits, DuplicateSelectsTheCopyBesideTheOriginalAndUndoRemovesIt) {
     ASSERT_EQ(duplicateSelection(doc), "");
     EXPECT_NEAR(glm::length(nodeWorldPosition(doc.scene, doc.selectedNode) - nodeWorldPosition(doc.scene, lampCopy)),
                 0.0f, 1e-5f);
+}
+
+TEST(SceneEdits, ANewLightShowsAWhiteSurfaceAtItsDistanceAsMiddleGrey) {
+    constexpr float kPi = 3.14159265f;
+    // Radiance of a white Lambertian surface facing the light (docs/UNITS.md), after exposure.
+    auto exposedRadiance = [&](const Light& light, float distance, float ev) {
+        const float irradiance =
+            light.type == LightType::Directional ? light.intensity : light.intensity / (distance * distance);
+        return 1.0f / kPi * irradiance * std::exp2(ev);
+    };
+    // 1 m away at EV 0: 0.18 π W/sr = 386 cd, not the 6830 cd a fixed 10 W/sr gave.
+    EXPECT_NEAR(midGreyLightIntensity(LightType::Point, 1.0f, 0.0f), 0.5655f, 1e-3f);
+    EXPECT_NEAR(midGreyLightIntensity(LightType::Point, 1.0f, 0.0f) * 683.0f, 386.2f, 0.5f);
+    EXPECT_NEAR(midGreyLightIntensity(LightType::Spot, 2.0f, 2.0f), 0.5655f, 1e-3f);  // ×4 for 2 m, ÷4 for +2 EV
+
+    Document doc;
+    doc.settings.output.exposureEv = 1.5f;
+    const glm::vec3 eye(0.0f, 1.0f, 5.0f), forward(0.0f, 0.0f, -1.0f);
+    for (const NodeKind kind : {NodeKind::PointLight, NodeKind::SpotLight, NodeKind::DirectionalLight}) {
+        const int node = addNodeInFront(doc, kind, eye, forward);
+        const Node& n = doc.scene.nodes[static_cast<std::size_t>(node)];
+        const Light& light = doc.scene.lights[static_cast<std::size_t>(n.light)];
+        // A surface as far beyond the light as the light is from the camera.
+        const float distance = glm::length(nodeWorldPosition(doc.scene, node) - eye);
+        EXPECT_NEAR(exposedRadiance(light, distance, doc.settings.output.exposureEv), kMiddleGrey, 1e-4f)
+            << nodeKindName(kind);
+    }
+    // The script's "add point X Y Z": the distance from the camera to X Y Z.
+    const int lamp = addNode(doc, NodeKind::PointLight, {0.0f, 1.0f, 1.0f}, forward, 4.0f);
+    const Light& light = doc.scene.lights[static_cast<std::size_t>(doc.scene.nodes[static_cast<std::size_t>(lamp)].light)];
+    EXPECT_NEAR(exposedRadiance(light, 4.0f, 1.5f), kMiddleGrey, 1e-4f);
 }
 
 TEST(SceneEdits, MakeUniqueSplitsASharedMaterial) {
