@@ -407,6 +407,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
     viewportRect_ = drawViewportBar(menuHeight, visible_, gizmoTool_, input_.gizmoMode(),
                                     scaleAppliesTo(doc_.scene, doc_.selectedNode), viewName, doc_.selection().size());
+    input_.setVisibleArea(viewportRect_);
     constexpr float kViewportMargin = 8.0f;
     referenceViewer_.drawWindow(ImVec2(viewportRect_.x + viewportRect_.z - kViewportMargin, viewportRect_.y + kViewportMargin),
                                 resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);

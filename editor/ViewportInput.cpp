@@ -247,7 +247,8 @@ void ViewportInput::frameSelection() {
     }
     // The near plane follows the camera each frame (currentView, depthRangeFor), so the framed
     // object is never clipped.
-    frameBounds(camera_, bounds);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    frameBoundsInArea(camera_, bounds, {display.x, display.y}, visibleArea_);
 }
 
 void ViewportInput::forgetConeSurface() { coneSurface_.reset(); }
