@@ -239,6 +239,7 @@ int App::run() {
             frameLog_.last().playhead = playback_.time;
             frameLog_.last().playing = playback_.playing;
             frameLog_.last().camera = camera_.position;
+            frameLog_.last().selectedNode = doc_.selectedNode;
         }
         takeScreenshots(/*withUi=*/false, framebuffer);
         presentViewport(framebuffer, target);

@@ -50,7 +50,7 @@ status=$?
 cat "$out/editor.txt"
 [ "$status" -eq 0 ] || fail "lit-editor exited with status $status"
 [ -f "$log" ] || fail "the script ran but wrote no frame log"
-head -1 "$log" | grep -q ',playhead_s,playing,camera_x,camera_y,camera_z$' || fail "unexpected frame log header: $(head -1 "$log")"
+head -1 "$log" | grep -q ',playhead_s,playing,camera_x,camera_y,camera_z,' || fail "unexpected frame log header: $(head -1 "$log")"
 
 # Columns: 1 frame, 2 start_s, ..., 9 rendered, 10 playhead_s, 11 playing, 12-14 camera x y z.
 # Frame N runs the script's command N (0-based, one a frame): frames 3, 6 and 9 the three
