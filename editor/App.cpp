@@ -406,7 +406,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.timeline) timelinePanel_.draw(doc_, playback_, camera_, layout.timeline, &visible_.timeline);
     if (visible_.camera && drawCameraPanel(camera_, layout.camera, &visible_.camera).resetToSceneCamera) resetCamera();
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
-    viewportRect_ = drawViewportBar(menuHeight, visible_, gizmoTool_, input_.gizmoMode(),
+    viewportRect_ = drawViewportBar(menuHeight, gizmoTool_, input_.gizmoMode(),
                                     scaleAppliesTo(doc_.scene, doc_.selectedNode), viewName, doc_.selection().size());
     input_.setVisibleArea(viewportRect_);
     constexpr float kViewportMargin = 8.0f;

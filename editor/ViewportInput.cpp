@@ -8,6 +8,7 @@
 #include "EditorViews.h"
 #include "FlyController.h"
 #include "GizmoChoice.h"
+#include "ViewportArea.h"
 #include "SceneEdits.h"
 #include "scene/SceneBuilder.h"
 
@@ -106,6 +107,9 @@ void ViewportInput::handleMouse(const CameraView& view) {
     }
     hoveredGizmoAxis_ = -1;
     if (io.WantCaptureMouse || looking_) return;
+    // Only the visible viewport answers: not the gaps between the panels, nor the picture behind
+    // a docked one (the whole window until the first layout).
+    if (visibleArea_.z > 1.0f && !insideArea(visibleArea_, mouse)) return;
     if (io.KeyAlt && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         orbiting_ = true;
         orbitCursor_ = glm::dvec2(io.MousePos.x, io.MousePos.y);

@@ -46,8 +46,9 @@ public:
     std::string setView(const std::string& name);
     // Frame selected (F): the camera moves so the selection fills the visible viewport area.
     void frameSelection();
-    // The part of the window the panels leave free (ImGui units: x, y, width, height; the
-    // viewport bar computes it each frame). Frame selected centres the selection there.
+    // The visible viewport (ViewportArea.h; ImGui units: x, y, width, height; the viewport bar
+    // computes it each frame): the mouse picks and grabs the gizmo only there, and Frame
+    // selected centres the selection there.
     void setVisibleArea(glm::vec4 area) { visibleArea_ = area; }
     // Drops the cone directions view's pick (its view was left).
     void forgetConeSurface();

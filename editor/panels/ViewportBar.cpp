@@ -1,28 +1,35 @@
 #include "panels/ViewportBar.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // FindWindowByName: where the panels are this frame
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "EditorViews.h"
-#include "panels/CameraPanel.h"
-#include "panels/Layout.h"
+#include "ViewportArea.h"
 
 namespace lit::editor {
 
-glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, GizmoTool& gizmo, GizmoMode shownMode,
+namespace {
+// The panels that dock against the window's sides (their ImGui window names).
+constexpr const char* kDockablePanels[] = {"Hierarchy", "Inspector", "Render settings", "Camera", "Log", "Timeline"};
+}  // namespace
+
+glm::vec4 drawViewportBar(float menuHeight, GizmoTool& gizmo, GizmoMode shownMode,
                           bool scaleApplies, std::string_view view, std::size_t selected) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(), ImGuiCond_Always);
-    constexpr float kMargin = 8.0f;
-    float left = 0.0f, right = display.x, top = menuHeight, bottom = display.y;
-    if (visible.hierarchy || visible.inspector) left = layout.hierarchy.position.x + layout.hierarchy.size.x + kMargin;
-    if (visible.renderSettings || visible.camera) right = layout.renderSettings.position.x - kMargin;
-    if (visible.log || visible.timeline) bottom = layout.log.position.y - kMargin;
-    const glm::vec4 area{left, top, std::max(right - left, 1.0f), std::max(bottom - top, 1.0f)};
+    // Where the panels drawn this frame are (after the user moved, resized or collapsed them).
+    std::vector<glm::vec4> panels;
+    for (const char* name : kDockablePanels)
+        if (const ImGuiWindow* window = ImGui::FindWindowByName(name); window != nullptr && window->Active && !window->Hidden)
+            panels.emplace_back(window->Pos.x, window->Pos.y, window->Size.x, window->Size.y);
+    const glm::vec4 area = visibleViewportArea({display.x, display.y}, menuHeight, panels);
 
-    ImGui::SetNextWindowPos(ImVec2(right - kMargin, bottom - kMargin), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+    // Flush in the area's bottom-right corner: part of the viewport's frame, not over the middle
+    // of the picture.
+    ImGui::SetNextWindowPos(ImVec2(area.x + area.z, area.y + area.w), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
     ImGui::SetNextWindowBgAlpha(0.6f);
     constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
                                         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
