@@ -47,8 +47,9 @@ i=0
 while [ ! -f "$out/ready.png" ] && [ $i -lt 1200 ]; do sleep 0.1; i=$((i + 1)); done
 sleep 0.5
 click() { xdotool mousemove "$1" "$2"; sleep 0.2; xdotool click 1; sleep 0.5; }
-# Keys are held for 0.3 s: Dear ImGui 1.86 reads which keys are down once a frame, so a press
-# and release within one frame (xdotool's default tap, 12 ms) can pass unseen.
+# Keys are held 0.3 s and spaced out: the editor sees which keys went down once a frame
+# (ImGuiLayer latches a short press for one frame), so two presses of a key within one frame,
+# which a render of half a second on llvmpipe can span, count as one.
 tap() { xdotool keydown "$1"; sleep 0.3; xdotool keyup "$1"; sleep 0.4; }
 undo() { xdotool keydown ctrl; sleep 0.2; tap z; xdotool keyup ctrl; sleep 0.4; }
 plus_key() { click 687 603; }
