@@ -71,6 +71,13 @@ void TimelinePanel::drawRuler(Document& doc, PathPlayback& playback, FlyCamera& 
         draw->AddText(ImVec2(x + 2.0f, origin.y), IM_COL32(150, 150, 150, 255), label);
     }
 
+    // The path's own span, lighter: the ruler goes on past its end for scrubbing and adding keys.
+    if (!doc.cameraPath.empty()) {
+        const float startX = range.toX(doc.cameraPath.startTime(), origin.x, width);
+        const float endX = range.toX(doc.cameraPath.endTime(), origin.x, width);
+        draw->AddRectFilled(ImVec2(startX, origin.y + 12.0f), ImVec2(endX, origin.y + kRulerHeight - 4.0f),
+                            IM_COL32(52, 56, 68, 255), 2.0f);
+    }
     // Keys as diamonds on the middle line.
     const float keyY = origin.y + kRulerHeight * 0.62f;
     draw->AddLine(ImVec2(origin.x, keyY), ImVec2(origin.x + width, keyY), IM_COL32(70, 70, 80, 255));
@@ -90,12 +97,6 @@ void TimelinePanel::drawRuler(Document& doc, PathPlayback& playback, FlyCamera& 
                                             (kKeyRadius + 2.0f) * secondsPerUnit)
                                   : -1;
 
-    // The end of the path: the ruler goes on past it for scrubbing and adding keys later.
-    if (!doc.cameraPath.empty()) {
-        const float endX = range.toX(doc.cameraPath.endTime(), origin.x, width);
-        draw->AddRectFilled(ImVec2(endX, origin.y + 10.0f), ImVec2(origin.x + width, origin.y + kRulerHeight),
-                            IM_COL32(0, 0, 0, 60));
-    }
     // Playhead.
     if (!doc.cameraPath.empty()) {
         const float x = range.toX(playback.time, origin.x, width);
