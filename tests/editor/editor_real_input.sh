@@ -9,7 +9,7 @@
 #   - Escape again with nothing open: the selection is cleared (the keys reach the editor);
 #   - Ctrl+Z twice: the fourth key goes, then the drag is undone (key 1 back at 1 s).
 # Read from the frame log (playhead, selected node per frame). The pixel positions are those of
-# the default layout at 1280x720 with the DejaVu Sans UI font (the screenshot ready_ui.png shows
+# the default layout at 1280x720 with the DejaVu Sans UI font (the screenshot after_ui.png shows
 # them). Exit 77 (skipped) without xvfb-run, xdotool or that font.
 set -u
 editor=$1
