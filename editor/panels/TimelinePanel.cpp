@@ -271,7 +271,7 @@ void TimelinePanel::draw(Document& doc, PathPlayback& playback, FlyCamera& camer
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The viewport follows the path while playing or scrubbing");
 
     if (path.empty()) {
-        ImGui::TextDisabled("No keys: fly to a view and press + Key, then to the next view and + Key again");
+        ImGui::TextDisabled("No keys: fly to a view, + Key; next view, + Key");
     } else {
         ImGui::Text("%.2f s, %zu keys%s", playback.time, path.keys().size(), playback.playing ? ", playing" : "");
         // The duration scales every key's time about the first key; one undo step per drag.
