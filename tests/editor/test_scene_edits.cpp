@@ -276,7 +276,7 @@ TEST(SceneEdits, DuplicateSelectsTheCopyBesideTheOriginalAndUndoRemovesIt) {
     EXPECT_EQ(doc.selection(), std::vector<int>{copy});
     const glm::vec3 moved = nodeWorldPosition(doc.scene, copy) - nodeWorldPosition(doc.scene, box);
     EXPECT_NEAR(glm::length(moved - glm::vec3(1.0f + kDuplicateGap, 0.0f, 0.0f)), 0.0f, 1e-5f);
-    // The copies no longer overlap the original.
+    // The copy clears the original.
     EXPECT_GT(nodeWorldBounds(doc.scene, copy).min.x, nodeWorldBounds(doc.scene, box).max.x);
     EXPECT_EQ(doc.undoLabel(), "Duplicate Box");
     ASSERT_TRUE(doc.undo());
@@ -297,7 +297,7 @@ TEST(SceneEdits, DuplicateSelectsTheCopyBesideTheOriginalAndUndoRemovesIt) {
     ASSERT_NE(lampCopy, lamp);
     const glm::vec3 shift = nodeWorldPosition(doc.scene, lampCopy) - before;
     EXPECT_NEAR(glm::length(shift - glm::vec3(0.0f, 0.0f, -0.2f * (1.0f + kDuplicateGap))), 0.0f, 1e-4f);
-    // No direction: the copy stays on the original, as before.
+    // No direction: the copy stays on the original.
     ASSERT_EQ(duplicateSelection(doc), "");
     EXPECT_NEAR(glm::length(nodeWorldPosition(doc.scene, doc.selectedNode) - nodeWorldPosition(doc.scene, lampCopy)),
                 0.0f, 1e-5f);
