@@ -37,8 +37,8 @@ inline constexpr float kPrimitiveSphereRadius = 0.5f;
 // (0.18) after the exposure: Lambertian radiance ρ/π · E with ρ = 1, times 2^exposureEv, is 0.18.
 // So I = 0.18 · π · d² / 2^EV in W/sr for a point or spot light (E = I / d²), and 0.18 · π / 2^EV
 // in W/m² for a directional one (E = I; `distance` unused). Scene units (docs/UNITS.md: × 683 for
-// cd and lux). At EV 0 and 1 m: 0.57 W/sr = 386 cd; a lamp too bright by a factor of 10 (the
-// 6830 cd a fixed "10" W/sr gave) would burn the surface out 3.3 stops over.
+// cd and lux). At EV 0 and 1 m: 0.57 W/sr = 386 cd; a fixed 10 W/sr (6830 cd) there shows the
+// wall 17.7 times as bright, 4.1 stops over middle grey, burnt out after tone mapping.
 inline constexpr float kMiddleGrey = 0.18f;
 float midGreyLightIntensity(LightType type, float distance, float exposureEv);
 // Where addNode assumes the lit surface is when not told: the Add menu's own placement distance
