@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 #include <epoxy/gl.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ClosePopupToLevel: Escape closes menus
 
 #include <algorithm>
 #include <cstdint>
@@ -10,7 +11,9 @@
 #include <utility>
 
 #include "EditorViews.h"
+#include "EscapeKey.h"
 #include "FlyController.h"
+#include "GizmoChoice.h"
 #include "ProcessMemory.h"
 #include "SceneEdits.h"
 #include "ViewportOverlay.h"
@@ -233,6 +236,10 @@ int App::run() {
             frameLog_.add({now, renderScale, renderSize, cameraMoved_});
             frameLog_.last().refinedVoxels = render ? renderer_->stats().refinedVoxels : 0;
             frameLog_.last().rendered = render;
+            frameLog_.last().playhead = playback_.time;
+            frameLog_.last().playing = playback_.playing;
+            frameLog_.last().camera = camera_.position;
+            frameLog_.last().selectedNode = doc_.selectedNode;
         }
         takeScreenshots(/*withUi=*/false, framebuffer);
         presentViewport(framebuffer, target);
@@ -367,6 +374,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     const MenuContext menuContext{
         .recent = recent_,
         .currentScene = doc_.file.empty() ? std::filesystem::path("untitled.gltf") : doc_.file,
+        .documentFile = doc_.file,
         .undoLabel = doc_.undoLabel(),
         .redoLabel = doc_.redoLabel(),
         .currentView = viewName,
@@ -382,7 +390,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(),
                                                   resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
 
-    if (visible_.hierarchy) hierarchyPanel_.draw(doc_, layout.hierarchy, &visible_.hierarchy);
+    if (visible_.hierarchy) hierarchyPanel_.draw(doc_, camera_.right(), layout.hierarchy, &visible_.hierarchy);
     if (visible_.inspector) inspectorPanel_.draw(doc_, layout.inspector, &visible_.inspector);
     if (visible_.stats)
         drawStatsOverlay(frameTimer_, renderer_->profiler(), renderer_->stats(), renderSize, imgui_->monoFont(),
@@ -398,7 +406,9 @@ void App::drawUi(glm::ivec2 renderSize) {
     if (visible_.timeline) timelinePanel_.draw(doc_, playback_, camera_, layout.timeline, &visible_.timeline);
     if (visible_.camera && drawCameraPanel(camera_, layout.camera, &visible_.camera).resetToSceneCamera) resetCamera();
     if (visible_.log) logPanel_.draw(log_, imgui_->monoFont(), layout.log, &visible_.log);
-    viewportRect_ = drawViewportBar(menuHeight, visible_, gizmoTool_, viewName, doc_.selection().size());
+    viewportRect_ = drawViewportBar(menuHeight, gizmoTool_, input_.gizmoMode(),
+                                    scaleAppliesTo(doc_.scene, doc_.selectedNode), viewName, doc_.selection().size());
+    input_.setVisibleArea(viewportRect_);
     constexpr float kViewportMargin = 8.0f;
     referenceViewer_.drawWindow(ImVec2(viewportRect_.x + viewportRect_.z - kViewportMargin, viewportRect_.y + kViewportMargin),
                                 resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
@@ -426,7 +436,7 @@ void App::carryOutMenuRequests(const MenuRequests& menu) {
     if (menu.open) files_.requestOpen(*menu.open);
     if (menu.add) addNodeInFront(doc_, *menu.add, camera_.position, camera_.forward());
     if (menu.deleteSelection) logRefusal(deleteSelection(doc_));
-    if (menu.duplicateSelection) logRefusal(duplicateSelection(doc_));
+    if (menu.duplicateSelection) logRefusal(duplicateSelection(doc_, camera_.right()));
     if (menu.frameSelection) input_.frameSelection();
     if (menu.view) input_.setView(*menu.view);
     logRefusal(std::exchange(doc_.lastRefusal, {}));
@@ -449,8 +459,14 @@ void App::handleShortcuts() {
         else
             playback_.play(doc_.cameraPath);
     }
-    if (pressed(GLFW_KEY_ESCAPE)) doc_.select(-1);
-    if (io.KeyCtrl && pressed(GLFW_KEY_D)) logRefusal(duplicateSelection(doc_));
+    if (pressed(GLFW_KEY_ESCAPE)) {
+        const bool popupOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+        if (escapeAction(popupOpen) == EscapeAction::ClosePopups)
+            ImGui::ClosePopupToLevel(0, /*restore_focus_to_window_under_popup=*/true);
+        else
+            doc_.select(-1);
+    }
+    if (io.KeyCtrl && pressed(GLFW_KEY_D)) logRefusal(duplicateSelection(doc_, camera_.right()));
     // Editing keys; while the right mouse button is held the letters fly the camera instead.
     if (input_.looking() || io.KeyCtrl || io.KeyAlt) return;
     if (pressed(GLFW_KEY_DELETE) || pressed(GLFW_KEY_X)) logRefusal(deleteSelection(doc_));

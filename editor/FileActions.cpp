@@ -5,6 +5,7 @@
 #include <exception>
 #include <utility>
 
+#include "SaveAsName.h"
 #include "panels/LoadingWindow.h"
 
 namespace lit::editor {
@@ -109,7 +110,7 @@ void FileActions::answerUnsavedChanges(Answer answer) {
             if (doc_.file.empty()) {
                 // No file yet: the Save As dialog finishes the job (or its Cancel drops it).
                 saveAsForPending_ = true;
-                menu_.askSaveAs("untitled.gltf");
+                menu_.askSaveAs(suggestSaveAsName(doc_.file));
                 return;
             }
             // A failed save loses nothing: the error is shown and the action is dropped.
@@ -261,7 +262,7 @@ std::string FileActions::saveTo(const std::filesystem::path& target) {
 
 void FileActions::saveOrAskForName() {
     if (doc_.file.empty())
-        menu_.askSaveAs("untitled.gltf");
+        menu_.askSaveAs(suggestSaveAsName(doc_.file));
     else
         saveTo(doc_.file);
 }

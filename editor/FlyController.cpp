@@ -60,6 +60,26 @@ float frameBounds(FlyCamera& camera, const Aabb& bounds) {
     return distance;
 }
 
+float frameBoundsInArea(FlyCamera& camera, const Aabb& bounds, glm::vec2 window, glm::vec4 area) {
+    if (bounds.empty()) return 0.0f;
+    if (window.x <= 0.0f || window.y <= 0.0f || area.z <= 1.0f || area.w <= 1.0f) return frameBounds(camera, bounds);
+    const float radius = std::max(0.5f * glm::length(bounds.size()), 0.05f);
+    // Tangents of the half field of view: the window spans ±tanX, ±tanY at unit depth.
+    const float tanY = std::tan(0.5f * camera.yfov);
+    const float tanX = tanY * window.x / window.y;
+    // The area's centre and half extent at unit depth (screen y grows downwards, view y up).
+    const glm::vec2 centre((area.x + 0.5f * area.z) / window.x * 2.0f - 1.0f,
+                           1.0f - (area.y + 0.5f * area.w) / window.y * 2.0f);
+    const float halfExtent = 0.8f * std::min(area.z / window.x * tanX, area.w / window.y * tanY);
+    // A sphere at depth z spans r / √(z² − r²) in tangent units: solve for 80 % of the area.
+    const float depth = radius * std::sqrt(1.0f + 1.0f / (halfExtent * halfExtent));
+    const glm::vec3 forward = camera.forward(), right = camera.right();
+    const glm::vec3 up = glm::cross(right, forward);
+    const glm::vec3 toCentre = forward + right * (centre.x * tanX) + up * (centre.y * tanY);
+    camera.position = bounds.center() - toCentre * depth;
+    return depth;
+}
+
 float flySpeedForBounds(const Aabb& bounds) {
     if (bounds.empty()) return 2.0f;
     const float side = glm::length(bounds.size());

@@ -45,6 +45,15 @@ void orbitAround(FlyCamera& camera, glm::vec3 pivot, glm::vec2 pixels, const Fly
 // Returns the distance from the camera to the bounds' centre (m); empty bounds: no change, 0.
 float frameBounds(FlyCamera& camera, const Aabb& bounds);
 
+// Frame selected into part of the window: the camera keeps its orientation and moves so that the
+// bounds' centre lands on the centre of `area` (x, y, width, height from the window's top-left
+// corner, in the units of `window`, the whole window's size, which the camera's view fills) and
+// the sphere around the bounds fills about 80 % of the area's shorter side. The editor passes the
+// viewport area left free by its panels, so the framed object is not hidden behind one. An
+// empty or degenerate area frames in the whole window (frameBounds). Returns the distance along
+// the view direction (m); empty bounds: no change, 0.
+float frameBoundsInArea(FlyCamera& camera, const Aabb& bounds, glm::vec2 window, glm::vec4 area);
+
 // A comfortable default speed for a scene of this size: crossing it takes about 4 seconds.
 float flySpeedForBounds(const Aabb& bounds);
 

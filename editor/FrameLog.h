@@ -1,9 +1,11 @@
 #pragma once
 // --frame-log FILE: one row per frame of the editor's loop (when it began, the render scale and
 // size, whether the camera moved, the voxels the GI refined, whether the 3D image was rendered or
-// the last one shown again), written as CSV when the editor ends. The
-// editor_interactive test and the frame-rate measurements (docs/PERFORMANCE.md, "Editor") read
-// it. Window-free (lit_editor_core).
+// the last one shown again, the camera path's playhead, where the camera was and the active node),
+// written as CSV
+// when the editor ends. The editor_interactive, editor_camera_path and editor_real_input tests and
+// the frame-rate
+// measurements (docs/PERFORMANCE.md, "Editor") read it. Window-free (lit_editor_core).
 
 #include <cstdint>
 #include <filesystem>
@@ -20,6 +22,10 @@ struct FrameLogRow {
     bool cameraMoved = false;
     std::uint32_t refinedVoxels = 0;  // FrameStats::refinedVoxels of the frame
     bool rendered = false;            // the 3D image was rendered (redraw on demand: ViewportRedraw.h)
+    double playhead = 0.0;            // s, the camera path's playhead (PathPlayback::time)
+    bool playing = false;             // the camera path plays
+    glm::vec3 camera{0.0f};           // m, the fly camera's position the frame renders from
+    int selectedNode = -1;            // the active node (Document::selectedNode), -1: none
 };
 
 class FrameLog {
@@ -29,7 +35,7 @@ public:
     FrameLogRow& last() { return rows_.back(); }
 
     // frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,
-    // rendered: a frame lasts until the next one begins (the loop's own frame time: update, render,
+    // rendered,playhead_s,playing,camera_x,camera_y,camera_z,selected_node: a frame lasts until the next one begins (the loop's own frame time: update, render,
     // present), the last one until `endSeconds`; start_s counts from the first frame.
     std::string csv(double endSeconds) const;
     // Writes csv() atomically; throws when it cannot.

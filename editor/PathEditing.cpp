@@ -62,6 +62,76 @@ std::size_t addKey(Document& doc, CameraKey key) {
     return index;
 }
 
+float nextKeyTime(const CameraPath& path, double playhead) {
+    const std::vector<CameraKey>& keys = path.keys();
+    if (keys.empty()) return static_cast<float>(playhead);
+    const auto onKey = std::any_of(keys.begin(), keys.end(), [&](const CameraKey& key) {
+        return std::abs(static_cast<double>(key.time) - playhead) < kMinKeySpacing;
+    });
+    if (!onKey && playhead > keys.front().time) return static_cast<float>(playhead);
+    const float meanSpacing =
+        keys.size() < 2 ? kDefaultKeyInterval
+                        : std::max((keys.back().time - keys.front().time) / static_cast<float>(keys.size() - 1),
+                                   kMinAddedKeyInterval);
+    return keys.back().time + meanSpacing;
+}
+
+std::size_t addKeyFromView(Document& doc, PathPlayback& playback, const FlyCamera& camera) {
+    const std::size_t index = addKey(doc, keyFromCamera(camera, nextKeyTime(doc.cameraPath, playback.time)));
+    playback.playing = false;
+    playback.time = doc.cameraPath.keys()[index].time;
+    return index;
+}
+
+TimeSpan scrubSpan(const CameraPath& path) {
+    if (path.empty()) return {};
+    const double start = std::min(0.0, static_cast<double>(path.startTime()));
+    const double end = path.endTime();
+    return {start, end + std::max(0.25 * (end - start), static_cast<double>(kDefaultKeyInterval))};
+}
+
+bool scalePathDuration(Document& doc, float seconds) {
+    const std::vector<CameraKey>& keys = doc.cameraPath.keys();
+    if (keys.size() < 2 || !std::isfinite(seconds) || seconds <= 0.0f) return false;
+    const float first = keys.front().time;
+    const float duration = keys.back().time - first;
+    float smallestGap = duration;
+    for (std::size_t i = 1; i < keys.size(); ++i) smallestGap = std::min(smallestGap, keys[i].time - keys[i - 1].time);
+    // The shortest gap must stay a key spacing apart (a little more, for the float rounding).
+    const float factor = std::max(seconds / duration, 1.01f * kMinKeySpacing / smallestGap);
+    std::vector<CameraKey> scaled = keys;
+    for (CameraKey& key : scaled) key.time = first + (key.time - first) * factor;
+    try {
+        doc.cameraPath.setKeys(std::move(scaled));
+    } catch (const CameraPathError&) {
+        return false;
+    }
+    doc.touched(Change::CameraPath);
+    return true;
+}
+
+bool setPathDuration(Document& doc, float seconds) {
+    if (doc.cameraPath.keys().size() < 2) return false;
+    doc.beginEdit("Path Duration");
+    const bool ok = scalePathDuration(doc, seconds);
+    doc.endEdit();
+    return ok;
+}
+
+int keyNear(const CameraPath& path, double time, double tolerance) {
+    int best = -1;
+    double bestDistance = tolerance;
+    const std::vector<CameraKey>& keys = path.keys();
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        const double distance = std::abs(static_cast<double>(keys[i].time) - time);
+        if (distance <= bestDistance) {
+            best = static_cast<int>(i);
+            bestDistance = distance;
+        }
+    }
+    return best;
+}
+
 bool deleteKey(Document& doc, std::size_t index) {
     if (index >= doc.cameraPath.keys().size()) return false;
     doc.edit("Delete Key", Change::CameraPath, [&](Scene&) { doc.cameraPath.removeKey(index); });
@@ -134,7 +204,7 @@ void PathPlayback::advance(const CameraPath& path, double dtSeconds) {
 
 void PathPlayback::play(const CameraPath& path) {
     if (path.empty()) return;
-    if (!path.options().loop && time >= path.endTime()) time = path.startTime();
+    if (time < path.startTime() || (!path.options().loop && time >= path.endTime())) time = path.startTime();
     playing = true;
 }
 
@@ -145,7 +215,19 @@ std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& cam
     std::size_t index = 0;
     if (name == "play") {
         if (doc.cameraPath.empty()) return "the camera path has no keys to play";
+        if (!args.empty()) {
+            const std::optional<float> speed = parseNumber<float>(args[0]);
+            if (!speed || *speed < kMinPlaybackSpeed || *speed > kMaxPlaybackSpeed) return "play: expected a speed 0.1..4";
+            playback.speed = *speed;
+        }
         playback.play(doc.cameraPath);
+        return "";
+    }
+    if (name == "duration") {
+        const std::optional<float> seconds = args.size() == 1 ? parseNumber<float>(args[0]) : std::nullopt;
+        if (!seconds || *seconds <= 0.0f) return "duration: expected seconds > 0";
+        if (count < 2) return "duration: the camera path needs two keys to have a duration";
+        setPathDuration(doc, *seconds);
         return "";
     }
     if (name == "pause") {
@@ -163,10 +245,7 @@ std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& cam
     const std::string& action = args[0];
     if (action == "add") {
         if (args.size() != 1) return "key add takes no values";
-        // Like the timeline's "+ Key": the playhead follows the new key (moved on if its time
-        // was taken).
-        const std::size_t index = addKey(doc, keyFromCamera(camera, static_cast<float>(playback.time)));
-        playback.time = doc.cameraPath.keys()[index].time;
+        addKeyFromView(doc, playback, camera);
         return "";
     }
     if (args.size() < 2) return "key " + action + ": expected a key index";

@@ -14,6 +14,14 @@ namespace lit::editor {
 
 // Keys closer than this in time are one key: adding at an occupied time moves the new key on.
 inline constexpr float kMinKeySpacing = 1.0f / 120.0f;  // seconds
+// The gap "+ Key" leaves after the last key of a path with fewer than two intervals to learn
+// from (Blender's and Unity's keying moves on by a frame step; a second reads as a camera move).
+inline constexpr float kDefaultKeyInterval = 1.0f;  // seconds
+// The shortest gap "+ Key" takes from a path's mean spacing: keys piled up closer than this
+// would give a path too fast to see.
+inline constexpr float kMinAddedKeyInterval = 0.1f;  // seconds
+
+struct PathPlayback;  // below
 
 // The key a fly camera gives: its position, orientation and field of view at `time`.
 CameraKey keyFromCamera(const FlyCamera& camera, float time);
@@ -26,6 +34,34 @@ void lookThroughPath(const CameraPath& path, double time, FlyCamera& camera);
 // Adds `key` as one undo step ("Add Key"); when its time is taken it goes kMinKeySpacing after
 // the last key at or after it. Selects it and returns its index.
 std::size_t addKey(Document& doc, CameraKey key);
+// Where "+ Key" puts a key with the playhead at `playhead` (seconds):
+// - an empty path: at the playhead;
+// - the playhead past the last key, or between two keys (not on one): at the playhead, as a
+//   keyframe inserted at the current frame in Blender;
+// - the playhead on a key (within kMinKeySpacing) or before the first key: after the last key,
+//   by kDefaultKeyInterval when the path has one key, else by its mean key spacing (at least
+//   kMinAddedKeyInterval). So "fly to a view, + Key" repeated gives keys a second apart.
+float nextKeyTime(const CameraPath& path, double playhead);
+// The timeline's "+ Key" and the script's "key add": a key from `camera` at nextKeyTime, one
+// undo step; the playhead moves to it. Returns its index.
+std::size_t addKeyFromView(Document& doc, PathPlayback& playback, const FlyCamera& camera);
+// The seconds the ruler shows and the playhead can be scrubbed over: from the earlier of 0 and
+// the first key to past the last key by a quarter of the path (at least kDefaultKeyInterval),
+// so there is room to scrub beyond the end and add a key there.
+struct TimeSpan {
+    double start = 0.0, end = kDefaultKeyInterval;
+};
+TimeSpan scrubSpan(const CameraPath& path);
+// The path's duration (last key − first key) made `seconds` by scaling every key's time about
+// the first key; the spacing stays at least kMinKeySpacing. Not an undo step by itself (a drag
+// of the Duration field is one). False with fewer than two keys or a duration that is not > 0.
+bool scalePathDuration(Document& doc, float seconds);
+// The same as one undo step ("Path Duration"), for the script.
+bool setPathDuration(Document& doc, float seconds);
+// The key whose diamond is nearest `time` within `tolerance` seconds (the ruler's pick: of
+// keys drawn on top of each other the nearest wins, not the last drawn), or -1.
+int keyNear(const CameraPath& path, double time, double tolerance);
+
 // Deletes key `index` ("Delete Key"); the selection moves to a neighbour. Returns false (and
 // changes nothing) for an index out of range.
 bool deleteKey(Document& doc, std::size_t index);
@@ -42,6 +78,10 @@ void setPathOptions(Document& doc, const CameraPathOptions& options);
 
 // Where the playhead is and whether it moves. The path's own `loop` option decides whether the
 // playhead wraps at the end; without it playback stops at the end.
+// Playback rates the timeline's Speed slider and the script's "play SPEED" take.
+inline constexpr float kMinPlaybackSpeed = 0.1f;
+inline constexpr float kMaxPlaybackSpeed = 4.0f;
+
 struct PathPlayback {
     double time = 0.0;    // seconds, in the path's time
     bool playing = false;
@@ -50,14 +90,15 @@ struct PathPlayback {
 
     // Advances by dtSeconds × speed when playing; wraps (loop) or stops at the end.
     void advance(const CameraPath& path, double dtSeconds);
-    // Starts playing; from the start when the playhead is at (or past) the end of an open path.
+    // Starts playing; from the start when the playhead is at (or past) the end of an open path,
+    // or before its first key.
     void play(const CameraPath& path);
 };
 
 // Applies one script command of the timeline family (key add|delete|select I|time I T|update I,
-// play, pause, time T) to the document, playback and fly camera. Returns "" or an error message.
-// "key add" adds a key from `camera` at the playhead; "key select I" moves the playhead to the
-// key and, like clicking it, points the camera there.
+// play [SPEED], pause, time T, duration T) to the document, playback and fly camera. Returns ""
+// or an error message. "key add" is the timeline's "+ Key" (addKeyFromView); "key select I"
+// moves the playhead to the key and, like clicking it, points the camera there.
 std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& camera, const std::string& name,
                            const std::vector<std::string>& args);
 

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "ViewportOverlay.h"
 #include "scene/SceneBuilder.h"
 #include "scene/Tangents.h"
 
@@ -193,7 +194,13 @@ std::vector<int> topLevelSelection(const Document& doc) {
     return top;
 }
 
-int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 direction) {
+float midGreyLightIntensity(LightType type, float distance, float exposureEv) {
+    constexpr float kPi = 3.14159265f;
+    const float d = type == LightType::Directional ? 1.0f : std::max(distance, 0.01f);
+    return kMiddleGrey * kPi * d * d / std::exp2(exposureEv);
+}
+
+int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 direction, float lightDistance) {
     const KindInfo& info = infoOf(kind);
     int index = -1;
     doc.edit(std::string("Add ") + info.label, Change::Transform, [&](Scene& scene) {
@@ -212,7 +219,7 @@ int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 directio
             light.type = kind == NodeKind::DirectionalLight ? LightType::Directional
                          : kind == NodeKind::PointLight      ? LightType::Point
                                                              : LightType::Spot;
-            light.intensity = kind == NodeKind::DirectionalLight ? kAddedSunLux : kAddedLampCandela;
+            light.intensity = midGreyLightIntensity(light.type, lightDistance, doc.settings.output.exposureEv);
             if (kind == NodeKind::SpotLight) light.innerConeAngle = 0.5f * light.outerConeAngle;
             scene.lights.push_back(light);
             node.light = static_cast<int>(scene.lights.size() - 1);
@@ -258,7 +265,7 @@ int addNodeInFront(Document& doc, NodeKind kind, glm::vec3 eye, glm::vec3 forwar
     const float distance = bounds.empty() ? 2.0f : std::clamp(0.1f * glm::length(bounds.size()), 1.0f, 10.0f);
     const glm::vec3 direction =
         kind == NodeKind::DirectionalLight ? glm::normalize(forward + glm::vec3(0.0f, -1.0f, 0.0f)) : forward;
-    return addNode(doc, kind, eye + forward * distance, direction);
+    return addNode(doc, kind, eye + forward * distance, direction, distance);
 }
 
 std::string deleteSelection(Document& doc) {
@@ -348,9 +355,26 @@ std::string deleteSelection(Document& doc) {
     return "";
 }
 
-std::string duplicateSelection(Document& doc) {
+glm::vec3 duplicateOffset(const Document& doc, glm::vec3 offsetDirection) {
+    if (glm::length(offsetDirection) < 1e-6f) return glm::vec3(0.0f);
+    const glm::vec3 direction = glm::normalize(offsetDirection);
+    Aabb bounds;
+    for (const int node : topLevelSelection(doc)) {
+        const Aabb b = nodeWorldBounds(doc.scene, node);
+        bounds.extend(b.min);
+        bounds.extend(b.max);
+    }
+    if (bounds.empty()) return glm::vec3(0.0f);
+    // The box's extent along the direction: each side's share.
+    const glm::vec3 size = bounds.size();
+    const float width = std::max(glm::dot(glm::abs(size), glm::abs(direction)), 0.2f);
+    return direction * width * (1.0f + kDuplicateGap);
+}
+
+std::string duplicateSelection(Document& doc, glm::vec3 offsetDirection) {
     const std::vector<int> top = topLevelSelection(doc);
     if (top.empty()) return "nothing is selected";
+    const glm::vec3 offset = duplicateOffset(doc, offsetDirection);
     std::vector<int> copies;
     doc.edit("Duplicate " + selectionLabel(doc, top), Change::Transform, [&](Scene& scene) {
         // Copies node `source` and its subtree under `parent`; returns the copy's index.
@@ -379,6 +403,12 @@ std::string duplicateSelection(Document& doc) {
             return index;
         };
         for (const int source : top) copies.push_back(copyTree(source, scene.nodes[static_cast<std::size_t>(source)].parent));
+        // The offset is in world space; each copy's translation is in its parent's.
+        for (const int copy : copies) {
+            Node& node = scene.nodes[static_cast<std::size_t>(copy)];
+            const glm::mat4 parent = node.parent >= 0 ? scene.nodes[static_cast<std::size_t>(node.parent)].world : glm::mat4(1.0f);
+            node.translation += glm::vec3(glm::inverse(parent) * glm::vec4(offset, 0.0f));
+        }
         rebuildRoots(scene);
     });
     doc.select(-1);

@@ -33,23 +33,33 @@ const std::vector<NodeKind>& allNodeKinds();
 inline constexpr float kPrimitiveBoxSide = 1.0f;
 inline constexpr float kPrimitivePlaneSide = 2.0f;
 inline constexpr float kPrimitiveSphereRadius = 0.5f;
-// Default light intensities of added lights (docs/UNITS.md): a sun of 3 lx like the default
-// light, and 10 cd point/spot lights (a bright bulb at room scale).
-inline constexpr float kAddedSunLux = 3.0f;
-inline constexpr float kAddedLampCandela = 10.0f;
+// An added light shows a white diffuse surface `distance` metres away, facing it, as middle grey
+// (0.18) after the exposure: Lambertian radiance ρ/π · E with ρ = 1, times 2^exposureEv, is 0.18.
+// So I = 0.18 · π · d² / 2^EV in W/sr for a point or spot light (E = I / d²), and 0.18 · π / 2^EV
+// in W/m² for a directional one (E = I; `distance` unused). Scene units (docs/UNITS.md: × 683 for
+// cd and lux). At EV 0 and 1 m: 0.57 W/sr = 386 cd; a fixed 10 W/sr (6830 cd) there shows the
+// wall 17.7 times as bright, 4.1 stops over middle grey, burnt out after tone mapping.
+inline constexpr float kMiddleGrey = 0.18f;
+float midGreyLightIntensity(LightType type, float distance, float exposureEv);
+// Where addNode assumes the lit surface is when not told: the Add menu's own placement distance
+// at room scale.
+inline constexpr float kDefaultLightDistance = 2.0f;  // metres
 
 // A UV sphere (rings × segments quads, poles as triangle fans) of `radius` centred on the origin.
 Mesh makeSphereMesh(const std::string& name, float radius, int material, int rings = 16, int segments = 32);
 
 // Adds a root node of `kind` at world `position` (lights and cameras looking down −Z rotated to
 // point along `direction`, normalised; ignored for other kinds), named after the kind and made
-// unique ("Box", "Box.001"). Primitives get a new mesh and their own new material. Selects the
+// unique ("Box", "Box.001"). Primitives get a new mesh and their own new material. A light gets
+// midGreyLightIntensity at `lightDistance` (metres) and the document's exposure. Selects the
 // new node alone. One undo step "Add <Kind>". Returns the node index.
-int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 direction = {0.0f, -1.0f, 0.0f});
+int addNode(Document& doc, NodeKind kind, glm::vec3 position, glm::vec3 direction = {0.0f, -1.0f, 0.0f},
+            float lightDistance = kDefaultLightDistance);
 
 // addNode in front of a camera at `eye` looking along `forward` (unit): two metres (or a tenth
 // of the scene, 1 to 10 m) ahead; lights and cameras look the way the camera does (a sun also
-// downwards), so a new spot light lights what is in view. The Add menu's and the script's "add".
+// downwards), so a new spot light lights what is in view. A light's intensity is set for a
+// surface as far from it as it is from the camera. The Add menu's and the script's "add".
 int addNodeInFront(Document& doc, NodeKind kind, glm::vec3 eye, glm::vec3 forward);
 
 // Deletes the selected nodes with their subtrees. One undo step. Returns "" or why nothing was
@@ -60,7 +70,14 @@ std::string deleteSelection(Document& doc);
 // parent) with its subtree, next to the original under the same parent. Meshes are shared
 // (instances, like Godot); lights and cameras are copied so the copies can be edited alone.
 // The copies become the selection. One undo step. Returns "" or the reason.
-std::string duplicateSelection(Document& doc);
+// `offsetDirection` (world, unit; zero: none) moves the copies aside so they do not hide in the
+// original: by the selection's width along it plus kDuplicateGap of that (at least 20 cm, the
+// size F gives a light). The editor passes the view's right vector: the copy appears beside the
+// original on screen, as Ctrl+D in Blender followed by a move.
+std::string duplicateSelection(Document& doc, glm::vec3 offsetDirection = glm::vec3(0.0f));
+// The world offset duplicateSelection gives the copies of the top-level selected nodes.
+glm::vec3 duplicateOffset(const Document& doc, glm::vec3 offsetDirection);
+inline constexpr float kDuplicateGap = 0.1f;  // fraction of the selection's width between copy and original
 
 // Makes `newParent` (-1: the scene root) the parent of `node`, keeping its world transform.
 // Refused (returns the reason) when newParent is node itself or below it.

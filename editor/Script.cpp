@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "EditorState.h"
+#include "PathEditing.h"
 #include "Properties.h"
 #include "RenderSettings.h"
 #include "SceneEdits.h"
@@ -161,18 +162,33 @@ std::string checkInteractive(const ScriptCommand& c) {
 }
 
 std::string checkWait(const ScriptCommand& c) {
-    if (auto e = expectCount(c, 1, 1, "a number of frames, gi or refined"); !e.empty()) return e;
+    if (auto e = expectCount(c, 1, 1, "a number of frames, gi, refined or play"); !e.empty()) return e;
     const std::string& a = c.args[0];
     // A frame count is an int (the runner counts frames in one).
     const std::optional<int> frames = parseNumber<int>(a);
-    return a == "gi" || a == "refined" || (frames && *frames >= 1)
+    return a == "gi" || a == "refined" || a == "play" || (frames && *frames >= 1)
                ? ""
-               : "wait: expected a whole number of frames (1 or more), gi or refined, got '" + a + "'";
+               : "wait: expected a whole number of frames (1 or more), gi, refined or play, got '" + a + "'";
 }
 
 std::string checkTime(const ScriptCommand& c) {
     if (auto e = expectCount(c, 1, 1, "a time in seconds"); !e.empty()) return e;
     return isNumber(c.args[0]) ? "" : "time: expected seconds, got '" + c.args[0] + "'";
+}
+
+std::string checkPlay(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 0, 1, "at most a speed"); !e.empty()) return e;
+    if (c.args.empty()) return "";
+    const std::optional<float> speed = parseNumber<float>(c.args[0]);
+    return speed && *speed >= kMinPlaybackSpeed && *speed <= kMaxPlaybackSpeed
+               ? ""
+               : "play: expected a speed 0.1..4, got '" + c.args[0] + "'";
+}
+
+std::string checkDuration(const ScriptCommand& c) {
+    if (auto e = expectCount(c, 1, 1, "a duration in seconds"); !e.empty()) return e;
+    const std::optional<float> seconds = parseNumber<float>(c.args[0]);
+    return seconds && *seconds > 0.0f ? "" : "duration: expected seconds > 0, got '" + c.args[0] + "'";
 }
 
 std::string checkKey(const ScriptCommand& c) {
@@ -247,9 +263,10 @@ constexpr CommandSpec kCommands[] = {
     {"interactive", ScriptVerb::Interactive, Arguments::Words, checkInteractive},
     {"wait", ScriptVerb::Wait, Arguments::Words, checkWait},
     {"key", ScriptVerb::Key, Arguments::Words, checkKey},
-    {"play", ScriptVerb::Play, Arguments::Words, checkNoArguments},
+    {"play", ScriptVerb::Play, Arguments::Words, checkPlay},
     {"pause", ScriptVerb::Pause, Arguments::Words, checkNoArguments},
     {"time", ScriptVerb::Time, Arguments::Words, checkTime},
+    {"duration", ScriptVerb::Duration, Arguments::Words, checkDuration},
     {"quit", ScriptVerb::Quit, Arguments::Words, checkNoArguments},
     {"loop", ScriptVerb::Loop, Arguments::Words, checkNoArguments},
     {"memory", ScriptVerb::Memory, Arguments::Words, checkNoArguments},

@@ -46,6 +46,15 @@ void ScriptRunner::step() {
         }
         waitForGi_ = 0;
     }
+    if (waitForPlayback_ > 0) {
+        if (target_.playback.playing) {
+            if (--waitForPlayback_ == 0)
+                fail(commands_[next_ - 1],
+                     "wait play: the playback did not end in " + std::to_string(kPlaybackWaitFrames) + " frames");
+            return;
+        }
+        waitForPlayback_ = 0;
+    }
     if (next_ >= commands_.size()) {
         target_.exitCode = 0;  // the end of the script: like quit
         return;
@@ -72,7 +81,7 @@ std::string ScriptRunner::run(const ScriptCommand& command) {
         case ScriptVerb::Delete:
             return deleteSelection(doc);
         case ScriptVerb::Duplicate:
-            return duplicateSelection(doc);
+            return duplicateSelection(doc, target_.camera.right());
         case ScriptVerb::Parent: {
             int parent = -1;
             if (args[0] != "-") {
@@ -141,6 +150,7 @@ std::string ScriptRunner::run(const ScriptCommand& command) {
         case ScriptVerb::Play:
         case ScriptVerb::Pause:
         case ScriptVerb::Time:
+        case ScriptVerb::Duration:
             return runPathCommand(doc, target_.playback, target_.camera, command.name, args);
         case ScriptVerb::Quit:
             target_.exitCode = 0;
@@ -178,7 +188,8 @@ std::string ScriptRunner::add(const ScriptCommand& command) {
     if (args.size() == 4) {
         const glm::vec3 position(number(args[1]), number(args[2]), number(args[3]));
         addNode(target_.doc, kind, position,
-                kind == NodeKind::DirectionalLight ? glm::vec3(0.3f, -1.0f, -0.2f) : camera.forward());
+                kind == NodeKind::DirectionalLight ? glm::vec3(0.3f, -1.0f, -0.2f) : camera.forward(),
+                glm::distance(camera.position, position));
     } else {
         addNodeInFront(target_.doc, kind, camera.position, camera.forward());
     }
@@ -260,6 +271,10 @@ std::string ScriptRunner::camera(const ScriptCommand& command) {
 
 std::string ScriptRunner::wait(const ScriptCommand& command) {
     const std::string& what = command.args[0];
+    if (what == "play") {
+        waitForPlayback_ = kPlaybackWaitFrames;
+        return "";
+    }
     if (what == "gi" || what == "refined") {
         waitForRefinement_ = what == "refined";
         waitForGi_ = waitForRefinement_ ? kRefineWaitFrames : kGiWaitFrames;

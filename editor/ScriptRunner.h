@@ -78,6 +78,9 @@ private:
     static constexpr int kRefineWaitFrames = 20000;
     int waitForGi_ = 0;
     bool waitForRefinement_ = false;
+    // wait play: frames still allowed for the camera path's playback to end (0: not waiting).
+    static constexpr int kPlaybackWaitFrames = 20000;
+    int waitForPlayback_ = 0;
     bool interactive_ = false;
 };
 

@@ -7,6 +7,8 @@
 
 #include "EditorViews.h"
 #include "FlyController.h"
+#include "GizmoChoice.h"
+#include "ViewportArea.h"
 #include "SceneEdits.h"
 #include "scene/SceneBuilder.h"
 
@@ -105,6 +107,9 @@ void ViewportInput::handleMouse(const CameraView& view) {
     }
     hoveredGizmoAxis_ = -1;
     if (io.WantCaptureMouse || looking_) return;
+    // Only the visible viewport answers: not the gaps between the panels, nor the picture behind
+    // a docked one (the whole window until the first layout).
+    if (visibleArea_.z > 1.0f && !insideArea(visibleArea_, mouse)) return;
     if (io.KeyAlt && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         orbiting_ = true;
         orbitCursor_ = glm::dvec2(io.MousePos.x, io.MousePos.y);
@@ -119,9 +124,10 @@ void ViewportInput::handleMouse(const CameraView& view) {
     if (isFlatView(doc_.settings.debug.view)) return;
     if (gizmoShown) {
         const glm::vec2 display(io.DisplaySize.x, io.DisplaySize.y);
-        const glm::mat3 axes = gizmoAxes(gizmoTool_.mode, gizmoTool_.space,
-                                         doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].world);
-        hoveredGizmoAxis_ = TransformGizmo::hitTest(gizmoTool_.mode, view, display,
+        const GizmoMode mode = gizmoMode();
+        const glm::mat3 axes =
+            gizmoAxes(mode, gizmoTool_.space, doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].world);
+        hoveredGizmoAxis_ = TransformGizmo::hitTest(mode, view, display,
                                                     nodeWorldPosition(doc_.scene, doc_.selectedNode), axes, mouse);
     }
     if (!ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
@@ -146,7 +152,7 @@ bool ViewportInput::beginGizmoDrag(const CameraView& view, glm::vec2 mouse) {
     const glm::vec2 display(io.DisplaySize.x, io.DisplaySize.y);
     const Node& active = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)];
     const glm::vec3 origin = nodeWorldPosition(doc_.scene, doc_.selectedNode);
-    const GizmoMode mode = gizmoTool_.mode;
+    const GizmoMode mode = gizmoMode();
     const glm::mat3 axes = gizmoAxes(mode, gizmoTool_.space, active.world);
     const int handle = TransformGizmo::hitTest(mode, view, display, origin, axes, mouse);
     if (handle < 0 || !gizmo_.begin(mode, handle, view, display, origin, axes, mouse)) return false;
@@ -245,10 +251,13 @@ void ViewportInput::frameSelection() {
     }
     // The near plane follows the camera each frame (currentView, depthRangeFor), so the framed
     // object is never clipped.
-    frameBounds(camera_, bounds);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    frameBoundsInArea(camera_, bounds, {display.x, display.y}, visibleArea_);
 }
 
 void ViewportInput::forgetConeSurface() { coneSurface_.reset(); }
+
+GizmoMode ViewportInput::gizmoMode() const { return gizmoModeFor(gizmoTool_, doc_.scene, doc_.selectedNode); }
 
 OverlayOptions ViewportInput::overlayOptions(bool cleanViewport) const {
     OverlayOptions options;
@@ -257,7 +266,7 @@ OverlayOptions ViewportInput::overlayOptions(bool cleanViewport) const {
     options.cameraPath = viewport_.markers && !cleanViewport;
     options.selectionOutline = !cleanViewport;
     options.hoveredGizmoAxis = gizmo_.active() ? gizmo_.handle() : hoveredGizmoAxis_;
-    options.gizmoMode = gizmo_.active() ? gizmo_.mode() : gizmoTool_.mode;
+    options.gizmoMode = gizmo_.active() ? gizmo_.mode() : gizmoMode();
     options.gizmoSpace = gizmoTool_.space;
     if (viewport_.coneDirections && coneSurface_) {
         options.coneSurface = coneSurface_;

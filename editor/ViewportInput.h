@@ -44,11 +44,18 @@ public:
     std::string pickAt(glm::vec2 windowPixel);
     // Shows the view called `name` (an EditorViews.h name). Returns "" or the error.
     std::string setView(const std::string& name);
-    // Frame selected (F): the camera backs off until the selection fills the view.
+    // Frame selected (F): the camera moves so the selection fills the visible viewport area.
     void frameSelection();
+    // The visible viewport (ViewportArea.h; ImGui units: x, y, width, height; the viewport bar
+    // computes it each frame): the mouse picks and grabs the gizmo only there, and Frame
+    // selected centres the selection there.
+    void setVisibleArea(glm::vec4 area) { visibleArea_ = area; }
     // Drops the cone directions view's pick (its view was left).
     void forgetConeSurface();
 
+    // The gizmo mode for the active node: the tool's, or Move where scale means nothing
+    // (GizmoChoice.h).
+    GizmoMode gizmoMode() const;
     bool looking() const { return looking_; }  // the right mouse button looks around
     bool gizmoDragging() const { return gizmo_.active(); }
     // What this input adds to the overlay (gizmo hover, cones); `cleanViewport`: only the cones.
@@ -84,6 +91,7 @@ private:
     glm::dvec2 orbitCursor_{0.0};
     // Cone directions view: the surface last clicked and where the camera was then.
     std::optional<SurfaceSample> coneSurface_;
+    glm::vec4 visibleArea_{0.0f};  // 0 until the UI has been laid out: the whole window
     glm::vec3 coneCameraPosition_{0.0f};
 };
 

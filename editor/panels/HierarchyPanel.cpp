@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "SceneEdits.h"
 
@@ -56,23 +57,25 @@ bool acceptNodeDrop(Document& doc, int newParent) {
     return changed;
 }
 
-// Right-click menu of a row: the edits of the Edit menu on this node.
-bool nodeContextMenu(Document& doc, int index) {
-    bool changed = false;
+// Right-click menu of a row: the edits of the Edit menu on this node. They are carried out
+// after the tree is drawn (HierarchyPanel::carryOut): the tree must not change under the loop
+// that draws it, and the rows must be drawn once more to scroll to a new selection.
+NodeAction nodeContextMenu(Document& doc, int index) {
+    NodeAction action = NodeAction::None;
     if (ImGui::BeginPopupContextItem()) {
         if (!doc.isSelected(index)) doc.select(index);
-        if (ImGui::MenuItem("Duplicate", "Ctrl+D")) changed = duplicateSelection(doc).empty();
-        if (ImGui::MenuItem("Delete", "Del")) changed = deleteSelection(doc).empty();
+        if (ImGui::MenuItem("Duplicate", "Ctrl+D")) action = NodeAction::Duplicate;
+        if (ImGui::MenuItem("Delete", "Del")) action = NodeAction::Delete;
         if (ImGui::MenuItem("Move to the root", nullptr, false, doc.scene.nodes[static_cast<std::size_t>(index)].parent >= 0))
-            changed = reparentSelection(doc, -1).empty();
+            action = NodeAction::MoveToRoot;
         ImGui::EndPopup();
     }
-    return changed;
+    return action;
 }
 
 }  // namespace
 
-bool HierarchyPanel::draw(Document& doc, const Placement& placement, bool* open) {
+bool HierarchyPanel::draw(Document& doc, glm::vec3 viewRight, const Placement& placement, bool* open) {
     placeNextWindow(placement);
     bool changed = false;
     if (ImGui::Begin("Hierarchy", open)) {
@@ -91,6 +94,8 @@ bool HierarchyPanel::draw(Document& doc, const Placement& placement, bool* open)
             for (const int root : scene.roots) changed |= drawNode(doc, root, 0);
         }
         revealedSelection_ = doc.selectedNode;
+        // After revealedSelection_: a copy made here is scrolled to on the next frame.
+        changed |= carryOut(doc, std::exchange(pendingAction_, NodeAction::None), viewRight);
         // The space below the rows: a drop there moves the dragged nodes to the scene root.
         ImGui::Dummy(ImVec2(-1.0f, std::max(ImGui::GetContentRegionAvail().y, 24.0f)));
         changed |= acceptNodeDrop(doc, -1);
@@ -104,6 +109,16 @@ bool HierarchyPanel::draw(Document& doc, const Placement& placement, bool* open)
     }
     ImGui::End();
     return changed;
+}
+
+bool HierarchyPanel::carryOut(Document& doc, NodeAction action, glm::vec3 viewRight) {
+    switch (action) {
+        case NodeAction::None: return false;
+        case NodeAction::Duplicate: doc.lastRefusal = duplicateSelection(doc, viewRight); break;
+        case NodeAction::Delete: doc.lastRefusal = deleteSelection(doc); break;
+        case NodeAction::MoveToRoot: doc.lastRefusal = reparentSelection(doc, -1); break;
+    }
+    return doc.lastRefusal.empty();
 }
 
 bool HierarchyPanel::drawNode(Document& doc, int index, int depth) {
@@ -148,7 +163,7 @@ bool HierarchyPanel::drawNode(Document& doc, int index, int depth) {
         ImGui::EndDragDropSource();
     }
     changed |= acceptNodeDrop(doc, index);
-    changed |= nodeContextMenu(doc, index);
+    if (const NodeAction action = nodeContextMenu(doc, index); action != NodeAction::None) pendingAction_ = action;
     if (opened && !node.children.empty()) {
         for (const int child : node.children) changed |= drawNode(doc, child, depth + 1);
         ImGui::TreePop();

@@ -5,22 +5,30 @@
 
 #include <imgui.h>
 
+#include <glm/glm.hpp>
+
 #include "Document.h"
 #include "panels/Layout.h"
 
 namespace lit::editor {
 
+// What a row's right-click menu asked for.
+enum class NodeAction { None, Duplicate, Delete, MoveToRoot };
+
 class HierarchyPanel {
 public:
-    // Returns true when the user changed the selection this frame.
-    bool draw(Document& doc, const Placement& placement, bool* open);
+    // Returns true when the user changed the selection this frame. `viewRight`: the viewport
+    // camera's right vector, where Duplicate moves the copies (duplicateSelection).
+    bool draw(Document& doc, glm::vec3 viewRight, const Placement& placement, bool* open);
 
 private:
     bool drawNode(Document& doc, int index, int depth);
+    bool carryOut(Document& doc, NodeAction action, glm::vec3 viewRight);
     bool drawFlatList(Document& doc);
 
     ImGuiTextFilter filter_;
     int revealedSelection_ = -1;  // the selection the tree was last opened up to
+    NodeAction pendingAction_ = NodeAction::None;  // a row's menu choice, done after the tree
 };
 
 }  // namespace lit::editor

@@ -4,6 +4,7 @@
 #include <imgui_stdlib.h>
 
 #include "EditorViews.h"
+#include "SaveAsName.h"
 #include "panels/Dialogs.h"
 
 namespace lit::editor {
@@ -32,7 +33,7 @@ MenuRequests MainMenu::draw(PanelVisibility& visible, const MenuContext& context
             }
             ImGui::Separator();
             if (ImGui::MenuItem("Save", "Ctrl+S")) requests.save = true;
-            if (ImGui::MenuItem("Save As...")) askSaveAs(context.currentScene);
+            if (ImGui::MenuItem("Save As...")) askSaveAs(suggestSaveAsName(context.documentFile));
             ImGui::Separator();
             if (ImGui::MenuItem("Screenshot", "F12")) requests.screenshot = true;
             if (ImGui::MenuItem("Screenshot with UI")) requests.screenshotWithUi = true;

@@ -18,7 +18,8 @@ namespace lit::editor {
 // What the menu shows besides the panel flags.
 struct MenuContext {
     const RecentFiles& recent;
-    std::filesystem::path currentScene;  // pre-fills the Open and Save As path fields
+    std::filesystem::path currentScene;  // pre-fills the Open path field
+    std::filesystem::path documentFile;  // the document's file (empty: none), for Save As's suggestion
     std::string undoLabel;               // "" = nothing to undo
     std::string redoLabel;
     std::string currentView;  // EditorViews.h name, ticked in the View menu

@@ -20,25 +20,14 @@ constexpr float kRulerHeight = 44.0f;  // ImGui units
 constexpr float kKeyRadius = 6.0f;     // half the diamond's width
 constexpr float kDegPerRad = 57.2957795f;
 
-// Time shown across the ruler: the path's keys with a margin, at least one second.
-struct TimeRange {
-    double start = 0.0, end = 1.0;
-    float toX(double t, float x0, float width) const {
-        return x0 + static_cast<float>((t - start) / (end - start)) * width;
-    }
-    double toTime(float x, float x0, float width) const { return start + (x - x0) / width * (end - start); }
-};
+using TimeRange = TimelinePanel::TimeRange;
 
+// Time shown across the ruler: the span the playhead can be scrubbed over (PathEditing's
+// scrubSpan, which reaches past the last key) with a small margin either side.
 TimeRange rangeOf(const CameraPath& path) {
-    TimeRange range;
-    if (!path.empty()) {
-        range.start = std::min(0.0, static_cast<double>(path.startTime()));
-        range.end = std::max(static_cast<double>(path.endTime()), range.start + 1.0);
-    }
-    const double margin = (range.end - range.start) * 0.04;
-    range.start -= margin;
-    range.end += margin;
-    return range;
+    const TimeSpan span = scrubSpan(path);
+    const double margin = (span.end - span.start) * 0.03;
+    return {span.start - margin, span.end + margin};
 }
 
 // Tick spacing that leaves at least ~60 units between labels.
@@ -54,15 +43,21 @@ void lookAtPlayhead(const Document& doc, const PathPlayback& playback, FlyCamera
     lookThroughPath(doc.cameraPath, playback.time, camera);
 }
 
+}  // namespace
+
 // The ruler: ticks, keys, playhead. Click a key to select it (and jump there), drag it to
-// retime (one undo step per drag), click or drag elsewhere to scrub.
-void drawRuler(Document& doc, PathPlayback& playback, FlyCamera& camera, int& draggedKey) {
+// retime (one undo step per drag), click or drag elsewhere to scrub. While the mouse is held the
+// ruler keeps the scale it had when pressed: dragging the last key would otherwise stretch the
+// ruler under the mouse, and the key would run away from it.
+void TimelinePanel::drawRuler(Document& doc, PathPlayback& playback, FlyCamera& camera) {
+    int& draggedKey = draggedKey_;
     const float width = std::max(ImGui::GetContentRegionAvail().x, 50.0f);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##ruler", ImVec2(width, kRulerHeight));
     const bool hovered = ImGui::IsItemHovered();
     const bool active = ImGui::IsItemActive();
-    const TimeRange range = rangeOf(doc.cameraPath);
+    if (!active) heldRange_.reset();
+    const TimeRange range = heldRange_ ? *heldRange_ : rangeOf(doc.cameraPath);
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + kRulerHeight), IM_COL32(30, 30, 34, 255), 3.0f);
 
@@ -76,21 +71,31 @@ void drawRuler(Document& doc, PathPlayback& playback, FlyCamera& camera, int& dr
         draw->AddText(ImVec2(x + 2.0f, origin.y), IM_COL32(150, 150, 150, 255), label);
     }
 
+    // The path's own span, lighter: the ruler goes on past its end for scrubbing and adding keys.
+    if (!doc.cameraPath.empty()) {
+        const float startX = range.toX(doc.cameraPath.startTime(), origin.x, width);
+        const float endX = range.toX(doc.cameraPath.endTime(), origin.x, width);
+        draw->AddRectFilled(ImVec2(startX, origin.y + 12.0f), ImVec2(endX, origin.y + kRulerHeight - 4.0f),
+                            IM_COL32(52, 56, 68, 255), 2.0f);
+    }
     // Keys as diamonds on the middle line.
     const float keyY = origin.y + kRulerHeight * 0.62f;
     draw->AddLine(ImVec2(origin.x, keyY), ImVec2(origin.x + width, keyY), IM_COL32(70, 70, 80, 255));
     const std::vector<CameraKey>& keys = doc.cameraPath.keys();
     const ImVec2 mouse = ImGui::GetIO().MousePos;
-    int keyUnderMouse = -1;
     for (std::size_t i = 0; i < keys.size(); ++i) {
         const float x = range.toX(keys[i].time, origin.x, width);
         const bool selected = static_cast<int>(i) == doc.selectedKey;
         const float r = selected ? kKeyRadius + 1.5f : kKeyRadius;
         const ImU32 color = selected ? IM_COL32(255, 170, 40, 255) : IM_COL32(200, 200, 210, 255);
         draw->AddQuadFilled(ImVec2(x, keyY - r), ImVec2(x + r, keyY), ImVec2(x, keyY + r), ImVec2(x - r, keyY), color);
-        if (hovered && std::abs(mouse.x - x) <= kKeyRadius + 2.0f && std::abs(mouse.y - keyY) <= kKeyRadius + 4.0f)
-            keyUnderMouse = static_cast<int>(i);
     }
+    // The key nearest the mouse within a diamond's reach (plus 2 units of slack) is the one picked.
+    const double secondsPerUnit = (range.end - range.start) / width;
+    const int keyUnderMouse = hovered && std::abs(mouse.y - keyY) <= kKeyRadius + 4.0f
+                                  ? keyNear(doc.cameraPath, range.toTime(mouse.x, origin.x, width),
+                                            (kKeyRadius + 2.0f) * secondsPerUnit)
+                                  : -1;
 
     // Playhead.
     if (!doc.cameraPath.empty()) {
@@ -99,6 +104,7 @@ void drawRuler(Document& doc, PathPlayback& playback, FlyCamera& camera, int& dr
     }
 
     if (ImGui::IsItemActivated()) {
+        heldRange_ = range;
         if (keyUnderMouse >= 0) {
             draggedKey = keyUnderMouse;
             doc.selectedKey = keyUnderMouse;
@@ -120,9 +126,10 @@ void drawRuler(Document& doc, PathPlayback& playback, FlyCamera& camera, int& dr
                 playback.time = doc.cameraPath.keys()[static_cast<std::size_t>(draggedKey)].time;
             }
         } else if (!doc.cameraPath.empty()) {
+            // The whole ruler scrubs, past the last key too (the camera stays at the last pose there).
+            const TimeSpan span = scrubSpan(doc.cameraPath);
             playback.playing = false;
-            playback.time = std::clamp(t, static_cast<double>(doc.cameraPath.startTime()),
-                                       static_cast<double>(doc.cameraPath.endTime()));
+            playback.time = std::clamp(t, span.start, span.end);
             lookAtPlayhead(doc, playback, camera);
         }
     }
@@ -134,6 +141,8 @@ void drawRuler(Document& doc, PathPlayback& playback, FlyCamera& camera, int& dr
         ImGui::SetTooltip("key %d at %.3f s (drag to retime)", keyUnderMouse,
                           static_cast<double>(keys[static_cast<std::size_t>(keyUnderMouse)].time));
 }
+
+namespace {
 
 // Undo bracket for one widget: the whole interaction (a drag, a typed value) is one step.
 void bracket(Document& doc, const char* label, bool changed, auto&& apply) {
@@ -236,14 +245,16 @@ void TimelinePanel::draw(Document& doc, PathPlayback& playback, FlyCamera& camer
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the start");
     ImGui::SameLine();
-    if (ImGui::Button("+ Key")) {
-        addKey(doc, keyFromCamera(camera, static_cast<float>(playback.time)));
-        playback.time = path.keys()[static_cast<std::size_t>(doc.selectedKey)].time;
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Add a key at the playhead with the current view");
+    if (ImGui::Button("+ Key")) addKeyFromView(doc, playback, camera);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Add a key with the current view: %.2f s after the last key, or at the playhead when it is "
+                          "between keys or past the end; the playhead moves to it",
+                          path.keys().size() < 2 ? static_cast<double>(kDefaultKeyInterval)
+                                                 : static_cast<double>(nextKeyTime(path, path.endTime()) - path.endTime()));
     ImGui::SameLine();
     ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Speed").x - 8.0f, 60.0f));
-    ImGui::SliderFloat("Speed", &playback.speed, 0.1f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("Speed", &playback.speed, kMinPlaybackSpeed, kMaxPlaybackSpeed, "%.2fx",
+                       ImGuiSliderFlags_Logarithmic);
 
     // Path options, each one undo step.
     CameraPathOptions options = path.options();
@@ -259,13 +270,23 @@ void TimelinePanel::draw(Document& doc, PathPlayback& playback, FlyCamera& camer
     ImGui::Checkbox("Look through", &playback.lookThrough);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The viewport follows the path while playing or scrubbing");
 
-    if (path.empty())
-        ImGui::TextDisabled("No keys: fly to a view and press + Key");
-    else
-        ImGui::Text("%.2f s of %.2f s, %zu keys%s", playback.time, static_cast<double>(path.endTime()),
-                    path.keys().size(), playback.playing ? ", playing" : "");
+    if (path.empty()) {
+        ImGui::TextDisabled("No keys: fly to a view, + Key; next view, + Key");
+    } else {
+        ImGui::Text("%.2f s, %zu keys%s", playback.time, path.keys().size(), playback.playing ? ", playing" : "");
+        // The duration scales every key's time about the first key; one undo step per drag.
+        ImGui::SameLine();
+        ImGui::BeginDisabled(path.keys().size() < 2);
+        float duration = path.duration();
+        ImGui::SetNextItemWidth(90.0f);
+        const bool changed = ImGui::DragFloat("Duration (s)", &duration, 0.02f, kMinKeySpacing, 3600.0f, "%.2f");
+        bracket(doc, "Path Duration", changed, [&] { scalePathDuration(doc, duration); });
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("From the first key to the last; changing it spreads the keys in proportion");
+        ImGui::EndDisabled();
+    }
 
-    drawRuler(doc, playback, camera, draggedKey_);
+    drawRuler(doc, playback, camera);
     drawSelectedKey(doc, camera, playback);
     ImGui::End();
 }

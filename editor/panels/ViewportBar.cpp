@@ -1,44 +1,56 @@
 #include "panels/ViewportBar.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // FindWindowByName: where the panels are this frame
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "EditorViews.h"
-#include "panels/CameraPanel.h"
-#include "panels/Layout.h"
+#include "ViewportArea.h"
 
 namespace lit::editor {
 
-glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, GizmoTool& gizmo, std::string_view view,
-                          std::size_t selected) {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(), ImGuiCond_Always);
-    constexpr float kMargin = 8.0f;
-    float left = 0.0f, right = display.x, top = menuHeight, bottom = display.y;
-    if (visible.hierarchy || visible.inspector) left = layout.hierarchy.position.x + layout.hierarchy.size.x + kMargin;
-    if (visible.renderSettings || visible.camera) right = layout.renderSettings.position.x - kMargin;
-    if (visible.log || visible.timeline) bottom = layout.log.position.y - kMargin;
-    const glm::vec4 area{left, top, std::max(right - left, 1.0f), std::max(bottom - top, 1.0f)};
+namespace {
+// The panels that dock against the window's sides (their ImGui window names).
+constexpr const char* kDockablePanels[] = {"Hierarchy", "Inspector", "Render settings", "Camera", "Log", "Timeline"};
+}  // namespace
 
-    ImGui::SetNextWindowPos(ImVec2(right - kMargin, bottom - kMargin), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+glm::vec4 drawViewportBar(float menuHeight, GizmoTool& gizmo, GizmoMode shownMode,
+                          bool scaleApplies, std::string_view view, std::size_t selected) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    // Where the panels drawn this frame are (after the user moved, resized or collapsed them).
+    std::vector<glm::vec4> panels;
+    for (const char* name : kDockablePanels)
+        if (const ImGuiWindow* window = ImGui::FindWindowByName(name); window != nullptr && window->Active && !window->Hidden)
+            panels.emplace_back(window->Pos.x, window->Pos.y, window->Size.x, window->Size.y);
+    const glm::vec4 area = visibleViewportArea({display.x, display.y}, menuHeight, panels);
+
+    // Flush in the area's bottom-right corner: part of the viewport's frame, not over the middle
+    // of the picture.
+    ImGui::SetNextWindowPos(ImVec2(area.x + area.z, area.y + area.w), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
     ImGui::SetNextWindowBgAlpha(0.6f);
     constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
                                         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
                                         ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     if (ImGui::Begin("Viewport bar", nullptr, kFlags)) {
-        auto modeButton = [&gizmo](const char* label, GizmoMode mode, const char* tip) {
-            const bool current = gizmo.mode == mode;
+        auto modeButton = [&gizmo, shownMode](const char* label, GizmoMode mode, const char* tip, bool enabled) {
+            const bool current = shownMode == mode;
             if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+            ImGui::BeginDisabled(!enabled);
             if (ImGui::Button(label)) gizmo.mode = mode;
+            ImGui::EndDisabled();
             if (current) ImGui::PopStyleColor();
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+            if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", tip);
             ImGui::SameLine();
         };
-        modeButton("Move", GizmoMode::Translate, "Translate gizmo (W)");
-        modeButton("Rotate", GizmoMode::Rotate, "Rotate gizmo (E)");
-        modeButton("Scale", GizmoMode::Scale, "Scale gizmo (R), always along the node's own axes");
+        modeButton("Move", GizmoMode::Translate, "Translate gizmo (W)", true);
+        modeButton("Rotate", GizmoMode::Rotate, "Rotate gizmo (E)", true);
+        modeButton("Scale", GizmoMode::Scale,
+                   scaleApplies ? "Scale gizmo (R), always along the node's own axes"
+                                : "Lights and cameras have no size to scale: the Move gizmo stands in",
+                   scaleApplies);
         if (ImGui::Button(gizmo.space == GizmoSpace::World ? "World" : "Local"))
             gizmo.space = gizmo.space == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo axes: the world's or the node's own (T)");

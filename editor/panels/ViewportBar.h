@@ -1,7 +1,7 @@
 #pragma once
-// The bar in the bottom-right corner of the free viewport area (the stats overlay has the top
-// left): the gizmo's mode, space and snapping, and the name of the view on screen, so a data
-// view is never mistaken for the final image.
+// The bar in the bottom-right corner of the visible viewport (ViewportArea.h; the stats overlay
+// has the top left): the gizmo's mode, space and snapping, and the name of the view on screen,
+// so a data view is never mistaken for the final image.
 
 #include <cstddef>
 #include <glm/glm.hpp>
@@ -12,10 +12,12 @@
 
 namespace lit::editor {
 
-// Returns the free viewport area between the panels shown (from the layout: a moved panel is
-// not followed), ImGui units: x, y, width, height. `view`: an EditorViews.h name; `selected`:
-// how many nodes are selected.
-glm::vec4 drawViewportBar(float menuHeight, const PanelVisibility& visible, GizmoTool& gizmo, std::string_view view,
-                          std::size_t selected);
+// Call after the panels: returns the visible viewport, the area the docked panels drawn this
+// frame leave free (visibleViewportArea), ImGui units: x, y, width, height. `view`: an
+// EditorViews.h name; `selected`:
+// how many nodes are selected; `shownMode`: the gizmo the viewport shows for the active node
+// (GizmoChoice.h), highlighted; `scaleApplies`: false greys Scale out (a light or camera).
+glm::vec4 drawViewportBar(float menuHeight, GizmoTool& gizmo, GizmoMode shownMode,
+                          bool scaleApplies, std::string_view view, std::size_t selected);
 
 }  // namespace lit::editor

@@ -34,6 +34,8 @@ rm -f "$saved" "$out/authored.bin" "$resaved"
 # world X: 0.9 m at this distance with the Cornell box camera's 0.69 rad field of view (0.67 to
 # 1.49 m for 0.5 to 1.05 rad), snapped to 1 m. Then the spot light and the tall box, selected
 # together, go up 1 m with one drag of the tall box's Y arrow (150 px at 3.3 m: 0.99 m, snapped).
+# The duplicate of new_box (1 m wide along X after the turn) goes 1.1 m to the right of the view
+# (+X): its own width and a tenth.
 cat >"$out/authored.txt" <<SCRIPT
 setting gi.enabled false
 add box 0 0.3 0
@@ -71,8 +73,8 @@ run_editor "$scene" --script "$out/authored.txt" --size 640x360
 # 9 nodes in the Cornell box - short_box + new_box, new_lamp and their copies = 12.
 checks="*.nodes=12 new_box.rotation=0,0,0.7071068,0.7071068 new_box.scale=2,1,1 new_box.translation=1,0.3,0
     new_box.holds=1,0,0 new_box.roughness=0.5 new_lamp.parent=new_box new_lamp.worldPosition=0,1.5,0.5
-    new_lamp.holds=0,1,0 new_box.001.translation=1,0.3,0 new_box.001.scale=2,1,1 new_box.001.roughness=0.2
-    new_box.001.distinctMaterial=1:new_box new_lamp.001.parent=new_box.001 new_lamp.001.worldPosition=0,1.5,0.5
+    new_lamp.holds=0,1,0 new_box.001.translation=2.1,0.3,0 new_box.001.scale=2,1,1 new_box.001.roughness=0.2
+    new_box.001.distinctMaterial=1:new_box new_lamp.001.parent=new_box.001 new_lamp.001.worldPosition=1.1,1.5,0.5
     tall_box.translation=-0.33,1,-0.3 ceiling_spot.translation=0,2.9,0"
 # shellcheck disable=SC2086
 "$check" "$saved" $checks || fail "the saved scene lacks an edit (see above)"

@@ -33,9 +33,10 @@ status=$?
 cat "$out/editor.txt"
 [ "$status" -eq 0 ] || fail "lit-editor exited with status $status"
 [ -f "$log" ] || fail "the script ran but wrote no frame log"
-head -1 "$log" | grep -q ',refined_voxels,rendered$' || fail "unexpected frame log header: $(head -1 "$log")"
+head -1 "$log" | grep -q ',refined_voxels,rendered,' || fail "unexpected frame log header: $(head -1 "$log")"
 
-# Columns: frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered
+# Columns: frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered,
+# playhead_s,playing,camera_x,camera_y,camera_z,selected_node
 # The last 40 rows are the frames of "wait 40" (quit ends the loop before its frame).
 rows=$(($(wc -l <"$log") - 1))
 [ "$rows" -gt 40 ] || fail "only $rows frames in the log"

@@ -46,10 +46,11 @@ cat "$out/editor.txt"
 occupied=$(sed -n 's/.* over \([0-9]*\) occupied voxels.*/\1/p' "$out/editor.txt" | tail -1)
 [ -n "$occupied" ] || fail "the editor did not log the occupied voxel count"
 [ -f "$log" ] || fail "the script ran but wrote no frame log"
-head -1 "$log" | grep -q ',camera_moved,refined_voxels,rendered$' || fail "unexpected frame log header: $(head -1 "$log")"
+head -1 "$log" | grep -q ',camera_moved,refined_voxels,rendered,' || fail "unexpected frame log header: $(head -1 "$log")"
 cat "$log"
 
-# Columns: frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered
+# Columns: frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered,
+# playhead_s,playing,camera_x,camera_y,camera_z,selected_node
 awk -F, -v occupied="$occupied" -v rounds=15 'NR > 1 {
     total += $8; lastTwo = prev + $8; prev = $8
     if ($7 == 1) {

@@ -14,17 +14,23 @@ TEST(FrameLog, EachFrameLastsUntilTheNextBegins) {
     log.last().refinedVoxels = 4096;
     log.last().rendered = true;
     log.add({10.75, 0.5f, {320, 180}, false});  // the last image shown again (rendered = false)
+    log.last().playhead = 1.5;
+    log.last().playing = true;
+    log.last().camera = {1.0f, -2.0f, 0.25f};
+    log.last().selectedNode = 7;
     EXPECT_EQ(log.csv(10.76),
-              "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered\n"
-              "0,0.0000,250.00,640,360,1.00,0,0,1\n"
-              "1,0.2500,500.00,320,180,0.50,1,4096,1\n"
-              "2,0.7500,10.00,320,180,0.50,0,0,0\n");
+              "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered,"
+              "playhead_s,playing,camera_x,camera_y,camera_z,selected_node\n"
+              "0,0.0000,250.00,640,360,1.00,0,0,1,0.0000,0,0.0000,0.0000,0.0000,-1\n"
+              "1,0.2500,500.00,320,180,0.50,1,4096,1,0.0000,0,0.0000,0.0000,0.0000,-1\n"
+              "2,0.7500,10.00,320,180,0.50,0,0,0,1.5000,1,1.0000,-2.0000,0.2500,7\n");
 }
 
 TEST(FrameLog, AnEmptyLogIsTheHeader) {
     EXPECT_EQ(
         FrameLog().csv(1.0),
-        "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered\n");
+        "frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered,"
+        "playhead_s,playing,camera_x,camera_y,camera_z,selected_node\n");
 }
 
 }  // namespace

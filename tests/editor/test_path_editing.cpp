@@ -120,4 +120,105 @@ TEST(PathEditing, ScriptCommandsDriveKeysAndPlayback) {
     EXPECT_EQ(doc.cameraPath.keys().size(), 1u);
 }
 
+TEST(PathEditing, PlusKeyFromThreeViewsGivesKeysASecondApartAndMovesThePlayhead) {
+    Document doc;
+    PathPlayback playback;
+    const glm::vec3 views[] = {{0, 1, 3}, {1, 1, 2}, {2, 1, 0}};
+    for (const glm::vec3& view : views) addKeyFromView(doc, playback, cameraAt(view, 0.0f));
+    const std::vector<CameraKey>& keys = doc.cameraPath.keys();
+    ASSERT_EQ(keys.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_FLOAT_EQ(keys[i].time, static_cast<float>(i) * kDefaultKeyInterval);
+        EXPECT_EQ(keys[i].position, views[i]);
+    }
+    EXPECT_DOUBLE_EQ(playback.time, 2.0 * kDefaultKeyInterval);
+    EXPECT_EQ(doc.selectedKey, 2);
+    ASSERT_TRUE(doc.undo());  // each "+ Key" is its own step
+    EXPECT_EQ(doc.cameraPath.keys().size(), 2u);
+}
+
+TEST(PathEditing, NextKeyTimeFollowsTheMeanSpacingOrThePlayhead) {
+    EXPECT_FLOAT_EQ(nextKeyTime(CameraPath(), 0.5), 0.5f);  // empty: at the playhead
+    Document doc;
+    addKey(doc, keyFromCamera(cameraAt({0, 1, 3}, 0.0f), 0.0f));
+    EXPECT_FLOAT_EQ(nextKeyTime(doc.cameraPath, 0.0), kDefaultKeyInterval);  // on the only key
+    addKey(doc, keyFromCamera(cameraAt({1, 1, 3}, 0.0f), 2.0f));
+    addKey(doc, keyFromCamera(cameraAt({2, 1, 3}, 0.0f), 4.0f));
+    EXPECT_FLOAT_EQ(nextKeyTime(doc.cameraPath, 4.0), 6.0f);   // on the last key: mean spacing 2 s
+    EXPECT_FLOAT_EQ(nextKeyTime(doc.cameraPath, 2.0), 6.0f);   // on a middle key: after the last
+    EXPECT_FLOAT_EQ(nextKeyTime(doc.cameraPath, -1.0), 6.0f);  // before the first key: after the last
+    EXPECT_FLOAT_EQ(nextKeyTime(doc.cameraPath, 5.0), 5.0f);   // past the end: at the playhead
+    EXPECT_FLOAT_EQ(nextKeyTime(doc.cameraPath, 1.0), 1.0f);   // between keys: inserted there
+
+    // Keys piled up a frame apart do not make the next one pile up too.
+    Document piled;
+    addKey(piled, keyFromCamera(cameraAt({0, 1, 3}, 0.0f), 0.0f));
+    addKey(piled, keyFromCamera(cameraAt({0, 1, 3}, 0.0f), 0.0f));
+    ASSERT_EQ(piled.cameraPath.keys().size(), 2u);
+    EXPECT_FLOAT_EQ(nextKeyTime(piled.cameraPath, piled.cameraPath.endTime()),
+                    piled.cameraPath.endTime() + kMinAddedKeyInterval);
+}
+
+TEST(PathEditing, TheScrubSpanReachesPastTheLastKey) {
+    EXPECT_DOUBLE_EQ(scrubSpan(CameraPath()).end, kDefaultKeyInterval);
+    Document doc = threeKeyDocument();  // keys at 0, 1, 2 s
+    const TimeSpan span = scrubSpan(doc.cameraPath);
+    EXPECT_DOUBLE_EQ(span.start, 0.0);
+    EXPECT_DOUBLE_EQ(span.end, 3.0);  // a second (more than a quarter of 2 s) past the end
+    ASSERT_TRUE(retimeKey(doc, 2, 10.0f));
+    EXPECT_DOUBLE_EQ(scrubSpan(doc.cameraPath).end, 12.5);
+    // The playhead past the end shows the last key's view.
+    FlyCamera camera;
+    lookThroughPath(doc.cameraPath, 12.0, camera);
+    EXPECT_NEAR(glm::length(camera.position - glm::vec3(2, 1, 0)), 0.0f, 1e-5f);
+}
+
+TEST(PathEditing, TheDurationSpreadsTheKeysInProportionAsOneUndoStep) {
+    Document doc = threeKeyDocument();
+    ASSERT_TRUE(setPathDuration(doc, 6.0f));
+    EXPECT_EQ(doc.undoLabel(), "Path Duration");
+    const std::vector<CameraKey>& keys = doc.cameraPath.keys();
+    EXPECT_FLOAT_EQ(keys[0].time, 0.0f);
+    EXPECT_FLOAT_EQ(keys[1].time, 3.0f);
+    EXPECT_FLOAT_EQ(keys[2].time, 6.0f);
+    EXPECT_FLOAT_EQ(doc.cameraPath.duration(), 6.0f);
+    // Too short a duration keeps the keys a key spacing apart.
+    ASSERT_TRUE(setPathDuration(doc, 1e-6f));
+    EXPECT_GE(doc.cameraPath.keys()[1].time - doc.cameraPath.keys()[0].time, kMinKeySpacing);
+    ASSERT_TRUE(doc.undo());
+    ASSERT_TRUE(doc.undo());
+    EXPECT_FLOAT_EQ(doc.cameraPath.keys()[2].time, 2.0f);
+    EXPECT_FALSE(setPathDuration(doc, 0.0f));
+    Document one;
+    addKey(one, keyFromCamera(cameraAt({0, 1, 3}, 0.0f), 0.0f));
+    EXPECT_FALSE(setPathDuration(one, 3.0f));
+}
+
+TEST(PathEditing, TheRulerPicksTheNearestKey) {
+    Document doc = threeKeyDocument();
+    EXPECT_EQ(keyNear(doc.cameraPath, 0.9, 0.2), 1);
+    EXPECT_EQ(keyNear(doc.cameraPath, 1.6, 0.2), -1);
+    ASSERT_TRUE(retimeKey(doc, 1, 0.05f));  // drawn almost on top of key 0
+    EXPECT_EQ(keyNear(doc.cameraPath, 0.01, 0.1), 0);
+    EXPECT_EQ(keyNear(doc.cameraPath, 0.04, 0.1), 1);
+}
+
+TEST(PathEditing, PlayStartsFromTheStartWhenThePlayheadIsOutsideThePath) {
+    Document doc = threeKeyDocument();
+    PathPlayback playback;
+    playback.time = 2.8;  // scrubbed past the end
+    playback.play(doc.cameraPath);
+    EXPECT_DOUBLE_EQ(playback.time, 0.0);
+    playback.time = -0.5;
+    playback.play(doc.cameraPath);
+    EXPECT_DOUBLE_EQ(playback.time, 0.0);
+    FlyCamera camera;
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "play", {"0.5"}), "");
+    EXPECT_FLOAT_EQ(playback.speed, 0.5f);
+    EXPECT_NE(runPathCommand(doc, playback, camera, "play", {"9"}), "");
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "duration", {"4"}), "");
+    EXPECT_FLOAT_EQ(doc.cameraPath.duration(), 4.0f);
+    EXPECT_NE(runPathCommand(doc, playback, camera, "duration", {"-1"}), "");
+}
+
 }  // namespace

@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "DocumentIO.h"
@@ -10,6 +12,7 @@
 #include "Log.h"
 #include "Properties.h"
 #include "SceneEdits.h"
+#include "ViewportOverlay.h"
 
 namespace {
 
@@ -258,6 +261,77 @@ TEST(SceneEdits, ReparentKeepsWorldTransformAndRefusesCycles) {
     EXPECT_EQ(doc.scene.nodes[static_cast<std::size_t>(box)].parent, -1);
     expectNear(doc.scene.nodes[static_cast<std::size_t>(box)].world, before);
     expectConsistent(doc.scene);
+}
+
+TEST(SceneEdits, DuplicateSelectsTheCopyBesideTheOriginalAndUndoRemovesIt) {
+    Document doc;
+    const int box = addNode(doc, NodeKind::Box, {0.0f, 0.5f, 0.0f});
+    const std::size_t nodes = doc.scene.nodes.size();
+    // The view's right vector is +X: the 1 m box's copy goes 1 m + 10 % to the right.
+    ASSERT_EQ(duplicateSelection(doc, {1.0f, 0.0f, 0.0f}), "");
+    ASSERT_EQ(doc.scene.nodes.size(), nodes + 1);
+    const int copy = findNode(doc.scene, "Box.001");
+    ASSERT_GE(copy, 0);
+    EXPECT_EQ(doc.selectedNode, copy);
+    EXPECT_EQ(doc.selection(), std::vector<int>{copy});
+    const glm::vec3 moved = nodeWorldPosition(doc.scene, copy) - nodeWorldPosition(doc.scene, box);
+    EXPECT_NEAR(glm::length(moved - glm::vec3(1.0f + kDuplicateGap, 0.0f, 0.0f)), 0.0f, 1e-5f);
+    // The copy clears the original.
+    EXPECT_GT(nodeWorldBounds(doc.scene, copy).min.x, nodeWorldBounds(doc.scene, box).max.x);
+    EXPECT_EQ(doc.undoLabel(), "Duplicate Box");
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.scene.nodes.size(), nodes);
+    EXPECT_LT(findNode(doc.scene, "Box.001"), 0);
+
+    // A light (no size: counted as 20 cm) under a scaled, turned parent moves by the world offset.
+    const int lamp = addNode(doc, NodeKind::PointLight, {0.0f, 2.0f, 0.0f});
+    ASSERT_EQ(setProperty(doc, "node.scale", "2 2 2"), "");  // the lamp is selected
+    doc.select(box);
+    ASSERT_EQ(setProperty(doc, "node.rotation", "0 90 0"), "");
+    ASSERT_EQ(setProperty(doc, "node.scale", "3 1 1"), "");
+    doc.select(lamp);
+    ASSERT_EQ(reparentSelection(doc, box), "");
+    const glm::vec3 before = nodeWorldPosition(doc.scene, lamp);
+    ASSERT_EQ(duplicateSelection(doc, {0.0f, 0.0f, -1.0f}), "");
+    const int lampCopy = doc.selectedNode;
+    ASSERT_NE(lampCopy, lamp);
+    const glm::vec3 shift = nodeWorldPosition(doc.scene, lampCopy) - before;
+    EXPECT_NEAR(glm::length(shift - glm::vec3(0.0f, 0.0f, -0.2f * (1.0f + kDuplicateGap))), 0.0f, 1e-4f);
+    // No direction: the copy stays on the original.
+    ASSERT_EQ(duplicateSelection(doc), "");
+    EXPECT_NEAR(glm::length(nodeWorldPosition(doc.scene, doc.selectedNode) - nodeWorldPosition(doc.scene, lampCopy)),
+                0.0f, 1e-5f);
+}
+
+TEST(SceneEdits, ANewLightShowsAWhiteSurfaceAtItsDistanceAsMiddleGrey) {
+    constexpr float kPi = 3.14159265f;
+    // Radiance of a white Lambertian surface facing the light (docs/UNITS.md), after exposure.
+    auto exposedRadiance = [&](const Light& light, float distance, float ev) {
+        const float irradiance =
+            light.type == LightType::Directional ? light.intensity : light.intensity / (distance * distance);
+        return 1.0f / kPi * irradiance * std::exp2(ev);
+    };
+    // 1 m away at EV 0: 0.18 π W/sr = 386 cd, not the 6830 cd a fixed 10 W/sr gave.
+    EXPECT_NEAR(midGreyLightIntensity(LightType::Point, 1.0f, 0.0f), 0.5655f, 1e-3f);
+    EXPECT_NEAR(midGreyLightIntensity(LightType::Point, 1.0f, 0.0f) * 683.0f, 386.2f, 0.5f);
+    EXPECT_NEAR(midGreyLightIntensity(LightType::Spot, 2.0f, 2.0f), 0.5655f, 1e-3f);  // ×4 for 2 m, ÷4 for +2 EV
+
+    Document doc;
+    doc.settings.output.exposureEv = 1.5f;
+    const glm::vec3 eye(0.0f, 1.0f, 5.0f), forward(0.0f, 0.0f, -1.0f);
+    for (const NodeKind kind : {NodeKind::PointLight, NodeKind::SpotLight, NodeKind::DirectionalLight}) {
+        const int node = addNodeInFront(doc, kind, eye, forward);
+        const Node& n = doc.scene.nodes[static_cast<std::size_t>(node)];
+        const Light& light = doc.scene.lights[static_cast<std::size_t>(n.light)];
+        // A surface as far beyond the light as the light is from the camera.
+        const float distance = glm::length(nodeWorldPosition(doc.scene, node) - eye);
+        EXPECT_NEAR(exposedRadiance(light, distance, doc.settings.output.exposureEv), kMiddleGrey, 1e-4f)
+            << nodeKindName(kind);
+    }
+    // The script's "add point X Y Z": the distance from the camera to X Y Z.
+    const int lamp = addNode(doc, NodeKind::PointLight, {0.0f, 1.0f, 1.0f}, forward, 4.0f);
+    const Light& light = doc.scene.lights[static_cast<std::size_t>(doc.scene.nodes[static_cast<std::size_t>(lamp)].light)];
+    EXPECT_NEAR(exposedRadiance(light, 4.0f, 1.5f), kMiddleGrey, 1e-4f);
 }
 
 TEST(SceneEdits, MakeUniqueSplitsASharedMaterial) {

@@ -78,13 +78,13 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(errorOf("wait 1\n\nselec Box\n"), "s.txt:3: unknown command 'selec'");
     EXPECT_EQ(errorOf("select\n"), "s.txt:1: select: expected a node name (or - for none), got 0 arguments");
     EXPECT_EQ(errorOf("undo now\n"), "s.txt:1: undo: expected no arguments, got 1 argument");
-    EXPECT_EQ(errorOf("\nwait\n"), "s.txt:2: wait: expected a number of frames, gi or refined, got 0 arguments");
-    EXPECT_EQ(errorOf("wait 1.5x\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), gi or refined, got '1.5x'");
-    EXPECT_EQ(errorOf("wait 0\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), gi or refined, got '0'");
+    EXPECT_EQ(errorOf("\nwait\n"), "s.txt:2: wait: expected a number of frames, gi, refined or play, got 0 arguments");
+    EXPECT_EQ(errorOf("wait 1.5x\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got '1.5x'");
+    EXPECT_EQ(errorOf("wait 0\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got '0'");
     EXPECT_EQ(errorOf("wait refine\n"),
-              "s.txt:1: wait: expected a whole number of frames (1 or more), gi or refined, got 'refine'");
+              "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got 'refine'");
     EXPECT_EQ(parseScript("wait refined\n", "s.txt").at(0).args, std::vector<std::string>{"refined"});
-    EXPECT_EQ(errorOf("wait GI\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), gi or refined, got 'GI'");
+    EXPECT_EQ(errorOf("wait GI\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got 'GI'");
     EXPECT_EQ(errorOf("set light.intensity\n"), "s.txt:1: set: expected a property and a value");
     EXPECT_EQ(errorOf("set light.intensity 1.5x\n"), "s.txt:1: light.intensity: expected 1 number, got '1.5x'");
     EXPECT_EQ(errorOf("set light.colour 1 1 1\n"), "s.txt:1: unknown property 'light.colour'");
@@ -110,6 +110,12 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(errorOf("key time 1 soon\n"), "s.txt:1: key time: expected seconds, got 'soon'");
     EXPECT_EQ(errorOf("time\n"), "s.txt:1: time: expected a time in seconds, got 0 arguments");
     EXPECT_EQ(errorOf("time 1s\n"), "s.txt:1: time: expected seconds, got '1s'");
+    EXPECT_EQ(errorOf("play 9\n"), "s.txt:1: play: expected a speed 0.1..4, got '9'");
+    EXPECT_EQ(errorOf("play 1 2\n"), "s.txt:1: play: expected at most a speed, got 2 arguments");
+    EXPECT_EQ(errorOf("duration 0\n"), "s.txt:1: duration: expected seconds > 0, got '0'");
+    EXPECT_EQ(errorOf("wait playing\n"),
+              "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got 'playing'");
+    EXPECT_EQ(errorOf("play 0.5\nwait play\nduration 3\n"), "");
 }
 
 TEST(Script, ErrorAtNamesTheCommandsLine) {
@@ -244,7 +250,7 @@ TEST(Script, EachCommandHasItsOwnVerb) {
         "select A\nselect+ A\nadd box\ndelete\nduplicate\nparent -\nmaterial unique\nprimitive 0\n"
         "gizmo rotate\nspace local\nsnap on\ndrag 1 2 3 4\nframe\norbit 1 2\nanimation a\nset node.name A\n"
         "setting gi false\nview final\npanel log on\npick 1 2\nscreenshot a.png\nsave\nopen a.gltf\n"
-        "camera 0 0 0 1 1 1\nundo\nredo\ninteractive on\nwait 1\nkey add\nplay\npause\ntime 1\nquit\nloop\n"
+        "camera 0 0 0 1 1 1\nundo\nredo\ninteractive on\nwait 1\nkey add\nplay\npause\ntime 1\nduration 2\nquit\nloop\n"
         "memory\n",
         "s.txt");
     std::set<ScriptVerb> verbs;
@@ -262,7 +268,7 @@ TEST(Script, NumbersUsedAsFloatsMustFitOne) {
     EXPECT_EQ(errorOf("add box 1e300 0 0\n"), "s.txt:1: add: expected a number, got '1e300'");
     EXPECT_EQ(errorOf("orbit 1e300 0\n"), "s.txt:1: orbit: expected a number, got '1e300'");
     EXPECT_EQ(errorOf("wait 3000000000\n"),
-              "s.txt:1: wait: expected a whole number of frames (1 or more), gi or refined, got '3000000000'");
+              "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got '3000000000'");
 }
 
 }  // namespace
