@@ -42,9 +42,11 @@ std::size_t texturesWithoutFallback(const nlohmann::json& doc) {
 
 bool isSupportedExtension(std::string_view name) {
     // KHR_mesh_quantization only widens the accessor types allowed for attributes, which the
-    // generic accessor reader handles.
-    static constexpr std::array<std::string_view, 3> supported = {
-        "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_mesh_quantization"};
+    // generic accessor reader handles; the compressed geometry is decoded before the import
+    // (scene/GltfCompression.h).
+    static constexpr std::array<std::string_view, 5> supported = {
+        "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_mesh_quantization",
+        "EXT_meshopt_compression", "KHR_draco_mesh_compression"};
     return std::find(supported.begin(), supported.end(), name) != supported.end();
 }
 

@@ -171,7 +171,12 @@ TEST(GltfExtensions, OptionalKtx2TexturesFallBackToTheirOtherSource) {
     ASSERT_EQ(image.rgba.size(), 16u);
     EXPECT_EQ(image.rgba[0], 255);  // the PNG's red, decoded
     EXPECT_EQ(image.rgba[1], 0);
-    EXPECT_LT(scene.textures[1].image, 0) << "no other source: drawn without an image";
+    // No other source: drawn without its image (no image, or the loader's neutral 1×1 white).
+    if (scene.textures[1].image >= 0) {
+        const Image& neutral = scene.images.at(static_cast<std::size_t>(scene.textures[1].image));
+        EXPECT_EQ(neutral.width * neutral.height, 1);
+        EXPECT_EQ(neutral.rgba, (std::vector<std::uint8_t>{255, 255, 255, 255}));
+    }
     EXPECT_EQ(log.warningsWith("scene.gltf: uses KHR_texture_basisu (KTX2 textures), which Lit does not decode; "
                                "textures use their other source (1 texture has none and is drawn without it)"),
               1u);
