@@ -2,14 +2,14 @@
 
 #include "scene/GltfCompression.h"
 
-#include "scene/GltfDraco.h"
-#include "scene/GltfLoader.h"
-#include "scene/GltfMeshopt.h"
-
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+
+#include "scene/GltfDraco.h"
+#include "scene/GltfLoader.h"
+#include "scene/GltfMeshopt.h"
 
 namespace lit::gltfimport {
 
@@ -99,7 +99,8 @@ std::vector<unsigned char> tinygltfInput(const GuardedScene& guarded, const nloh
     // guard checked the header's lengths against the file).
     const std::vector<unsigned char>& bytes = guarded.bytes;
     const std::size_t declared = std::min<std::size_t>(readLittleEndian32(bytes.data() + 8), bytes.size());
-    const std::size_t afterJson = std::min<std::size_t>(20 + std::size_t(readLittleEndian32(bytes.data() + 12)), declared);
+    const std::size_t afterJson =
+        std::min<std::size_t>(20 + std::size_t(readLittleEndian32(bytes.data() + 12)), declared);
     text.resize((text.size() + 3) & ~std::size_t(3), ' ');  // chunks are 4-byte aligned; JSON pads with spaces
     std::vector<unsigned char> out(20 + text.size());
     std::memcpy(out.data(), bytes.data(), 12);
@@ -185,10 +186,11 @@ std::vector<std::string> decodeCompressedGeometry(const std::filesystem::path& p
             tinygltf::Primitive& primitive = model.meshes[m].primitives[p];
             // The indices tinygltfInput took away from tinygltf.
             const auto indices = primitives[p].find("indices");
-            primitive.indices = indices != primitives[p].end() && indices->is_number_unsigned() &&
-                                        indices->get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max())
-                                    ? static_cast<int>(indices->get<std::uint64_t>())
-                                    : -1;
+            primitive.indices =
+                indices != primitives[p].end() && indices->is_number_unsigned() &&
+                        indices->get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max())
+                    ? static_cast<int>(indices->get<std::uint64_t>())
+                    : -1;
             if (decoded < 0) {
                 model.buffers.emplace_back();
                 decoded = static_cast<int>(model.buffers.size() - 1);
@@ -201,12 +203,11 @@ std::vector<std::string> decodeCompressedGeometry(const std::filesystem::path& p
         }
     }
 
-    // The model now reads as an uncompressed file.
+    // From here on the model reads as an uncompressed file.
     for (std::vector<std::string>* list : {&model.extensionsUsed, &model.extensionsRequired})
-        list->erase(std::remove_if(list->begin(), list->end(),
-                                   [&](const std::string& e) {
-                                       return std::find(names.begin(), names.end(), e) != names.end();
-                                   }),
+        list->erase(std::remove_if(
+                        list->begin(), list->end(),
+                        [&](const std::string& e) { return std::find(names.begin(), names.end(), e) != names.end(); }),
                     list->end());
     return names;
 }

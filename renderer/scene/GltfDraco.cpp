@@ -3,10 +3,6 @@
 
 #include "scene/GltfDraco.h"
 
-#include "scene/GltfKeep.h"
-#include "scene/GltfLoader.h"
-#include "scene/GltfValidate.h"
-
 #include <draco/compression/decode.h>
 #include <draco/mesh/mesh.h>
 
@@ -14,6 +10,11 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <utility>
+
+#include "scene/GltfKeep.h"
+#include "scene/GltfLoader.h"
+#include "scene/GltfValidate.h"
 
 namespace lit::gltfimport {
 
@@ -38,7 +39,8 @@ template <typename T>
 bool writeAttribute(const draco::PointAttribute& attribute, std::size_t count, int components, unsigned char* out) {
     T value[16];
     for (std::size_t i = 0; i < count; ++i) {
-        const draco::AttributeValueIndex index = attribute.mapped_index(draco::PointIndex(static_cast<std::uint32_t>(i)));
+        const draco::AttributeValueIndex index =
+            attribute.mapped_index(draco::PointIndex(static_cast<std::uint32_t>(i)));
         if (index.value() >= attribute.size()) return false;
         if (!attribute.ConvertValue<T>(index, static_cast<std::int8_t>(components), value)) return false;
         std::memcpy(out + i * sizeof(T) * static_cast<std::size_t>(components), value,
@@ -91,8 +93,8 @@ void decodeDracoPrimitive(const std::string& what, const nlohmann::json& extensi
     // The compressed bytes, inside their buffer.
     const std::uint64_t viewIndex = extension["bufferView"].get<std::uint64_t>();
     if (viewIndex >= model.bufferViews.size())
-        throw SceneLoadError(where + " names buffer view " + std::to_string(viewIndex) + ", which does not exist (the file has " +
-                             std::to_string(model.bufferViews.size()) + ")");
+        throw SceneLoadError(where + " names buffer view " + std::to_string(viewIndex) +
+                             ", which does not exist (the file has " + std::to_string(model.bufferViews.size()) + ")");
     const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(viewIndex)];
     if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size() || view.buffer == decoded)
         throw SceneLoadError(where + ": buffer view " + std::to_string(viewIndex) + " names buffer " +
@@ -110,8 +112,8 @@ void decodeDracoPrimitive(const std::string& what, const nlohmann::json& extensi
     auto result = decoder.DecodeMeshFromBuffer(&input);
     if (!result.ok())
         throw SceneLoadError(where + ": the Draco data in buffer view " + std::to_string(viewIndex) + " (" +
-                             std::to_string(view.byteLength) + " bytes) does not decode: " +
-                             result.status().error_msg_string());
+                             std::to_string(view.byteLength) +
+                             " bytes) does not decode: " + result.status().error_msg_string());
     const std::unique_ptr<draco::Mesh> mesh = std::move(result).value();
     if (!mesh) throw SceneLoadError(where + ": the Draco data holds no mesh");
     const std::size_t points = mesh->num_points();
@@ -166,7 +168,8 @@ void decodeDracoPrimitive(const std::string& what, const nlohmann::json& extensi
         const auto named = primitive.attributes.find(it.key());
         if (named == primitive.attributes.end())
             throw SceneLoadError(where + " lists the attribute " + it.key() + ", which the primitive does not have");
-        if (!it.value().is_number_unsigned() || it.value().get<std::uint64_t>() > std::numeric_limits<std::uint32_t>::max())
+        if (!it.value().is_number_unsigned() ||
+            it.value().get<std::uint64_t>() > std::numeric_limits<std::uint32_t>::max())
             throw SceneLoadError(where + ": the Draco id of " + it.key() + " is " + it.value().dump() +
                                  ", not an unsigned integer");
         const draco::PointAttribute* attribute =
@@ -177,7 +180,8 @@ void decodeDracoPrimitive(const std::string& what, const nlohmann::json& extensi
         const tinygltf::Accessor& accessor = accessorAt(where, model, named->second, it.key());
         if (accessor.count != points)
             throw SceneLoadError(where + " decodes " + std::to_string(points) + " points but the " + it.key() +
-                                 " accessor " + std::to_string(named->second) + " has " + std::to_string(accessor.count));
+                                 " accessor " + std::to_string(named->second) + " has " +
+                                 std::to_string(accessor.count));
         const int componentSize = gltfkeep::componentBytes(accessor.componentType);
         const int components = componentsOf(accessor.type);
         if (componentSize == 0 || components == 0)
@@ -186,7 +190,8 @@ void decodeDracoPrimitive(const std::string& what, const nlohmann::json& extensi
         const std::size_t elementSize = static_cast<std::size_t>(componentSize) * static_cast<std::size_t>(components);
         const auto [index, out] = appendView(model, decoded, points * elementSize);
         if (!writeAttribute(accessor.componentType, *attribute, points, components, out))
-            throw SceneLoadError(where + ": the Draco attribute " + it.key() + " cannot be converted to the accessor's type");
+            throw SceneLoadError(where + ": the Draco attribute " + it.key() +
+                                 " cannot be converted to the accessor's type");
         tinygltf::Accessor& target = model.accessors[static_cast<std::size_t>(named->second)];
         target.bufferView = index;
         target.byteOffset = 0;

@@ -2,13 +2,13 @@
 
 #include "scene/GltfExtensions.h"
 
-#include "Log.h"
-#include "scene/GltfLoader.h"
-
 #include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
+
+#include "Log.h"
+#include "scene/GltfLoader.h"
 
 namespace lit::gltfimport {
 
@@ -45,8 +45,8 @@ bool isSupportedExtension(std::string_view name) {
     // generic accessor reader handles; the compressed geometry is decoded before the import
     // (scene/GltfCompression.h).
     static constexpr std::array<std::string_view, 5> supported = {
-        "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_mesh_quantization",
-        "EXT_meshopt_compression", "KHR_draco_mesh_compression"};
+        "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_mesh_quantization", "EXT_meshopt_compression",
+        "KHR_draco_mesh_compression"};
     return std::find(supported.begin(), supported.end(), name) != supported.end();
 }
 
@@ -70,8 +70,9 @@ void checkExtensions(const std::filesystem::path& path, const nlohmann::json& do
         if (isSupportedExtension(name)) continue;
         if (name == kBasisu) {
             const std::size_t bare = texturesWithoutFallback(doc);
-            log.warning(file + ": uses KHR_texture_basisu (KTX2 textures), which Lit does not decode; textures use "
-                               "their other source" +
+            log.warning(file +
+                        ": uses KHR_texture_basisu (KTX2 textures), which Lit does not decode; textures use "
+                        "their other source" +
                         (bare == 0 ? std::string()
                                    : " (" + std::to_string(bare) + (bare == 1 ? " texture has" : " textures have") +
                                          " none and " + (bare == 1 ? "is" : "are") + " drawn without it)"));

@@ -3,13 +3,13 @@
 
 #include "scene/GltfMeshopt.h"
 
-#include "scene/GltfLoader.h"
-
 #include <meshoptimizer.h>
 
 #include <cstdint>
 #include <limits>
 #include <optional>
+
+#include "scene/GltfLoader.h"
 
 namespace lit::gltfimport {
 
@@ -51,8 +51,8 @@ void decodeMeshoptView(const std::string& what, const nlohmann::json& extension,
     const std::string filter = stringField(what, extension, "filter", "NONE");
 
     if (byteOffset > sourceSize || byteLength > sourceSize - byteOffset)
-        throw SceneLoadError(what + ": EXT_meshopt_compression's data (offset " + std::to_string(byteOffset) +
-                             ", " + std::to_string(byteLength) + " bytes) lies outside its buffer (" +
+        throw SceneLoadError(what + ": EXT_meshopt_compression's data (offset " + std::to_string(byteOffset) + ", " +
+                             std::to_string(byteLength) + " bytes) lies outside its buffer (" +
                              std::to_string(sourceSize) + " bytes)");
     if (stride == 0 || count > destinationSize / stride)
         throw SceneLoadError(what + ": EXT_meshopt_compression decodes " + std::to_string(count) + " elements of " +
@@ -71,7 +71,8 @@ void decodeMeshoptView(const std::string& what, const nlohmann::json& extension,
             throw SceneLoadError(what + ": EXT_meshopt_compression TRIANGLES count " + std::to_string(count) +
                                  " is not a multiple of 3");
         if (filter != "NONE")
-            throw SceneLoadError(what + ": EXT_meshopt_compression filter " + filter + " is allowed only with mode ATTRIBUTES");
+            throw SceneLoadError(what + ": EXT_meshopt_compression filter " + filter +
+                                 " is allowed only with mode ATTRIBUTES");
     } else {
         throw SceneLoadError(what + ": EXT_meshopt_compression mode '" + mode +
                              "' is not ATTRIBUTES, TRIANGLES or INDICES");
@@ -91,12 +92,14 @@ void decodeMeshoptView(const std::string& what, const nlohmann::json& extension,
     // input (libmeshoptimizer: "safe to use for untrusted input").
     const unsigned char* data = source + byteOffset;
     const int status = mode == "ATTRIBUTES" ? meshopt_decodeVertexBuffer(destination, count, stride, data, byteLength)
-                       : mode == "TRIANGLES" ? meshopt_decodeIndexBuffer(destination, count, stride, data, byteLength)
-                                             : meshopt_decodeIndexSequence(destination, count, stride, data, byteLength);
+                       : mode == "TRIANGLES"
+                           ? meshopt_decodeIndexBuffer(destination, count, stride, data, byteLength)
+                           : meshopt_decodeIndexSequence(destination, count, stride, data, byteLength);
     if (status != 0)
         throw SceneLoadError(what + ": EXT_meshopt_compression " + mode + " data (" + std::to_string(byteLength) +
-                             " bytes for " + std::to_string(count) + " elements) does not decode (libmeshoptimizer error " +
-                             std::to_string(status) + ": truncated, malformed or of an unknown version)");
+                             " bytes for " + std::to_string(count) +
+                             " elements) does not decode (libmeshoptimizer error " + std::to_string(status) +
+                             ": truncated, malformed or of an unknown version)");
     if (filter == "OCTAHEDRAL") meshopt_decodeFilterOct(destination, count, stride);
     if (filter == "QUATERNION") meshopt_decodeFilterQuat(destination, count, stride);
     if (filter == "EXPONENTIAL") meshopt_decodeFilterExp(destination, count, stride);

@@ -13,12 +13,12 @@
 //   bytes 5...:       the stream (tools/fuzz.sh's seeds: the streams of tests/data/compressed)
 // The expected outcomes are success or a SceneLoadError; anything else is a finding.
 
+#include <cstdint>
+#include <vector>
+
 #include "scene/GltfDraco.h"
 #include "scene/GltfLoader.h"
 #include "scene/GltfMeshopt.h"
-
-#include <cstdint>
-#include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 5) return 0;
@@ -55,12 +55,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             static const char* kModes[] = {"", "ATTRIBUTES", "TRIANGLES", "INDICES"};
             static const char* kFilters[] = {"NONE", "OCTAHEDRAL", "QUATERNION", "EXPONENTIAL"};
             const std::size_t stride = kind == 1 ? 4 * (1 + (data[0] >> 4)) : std::size_t(2) << ((data[0] >> 4) & 1);
-            const nlohmann::json extension = {{"buffer", 0},
-                                              {"byteLength", stream.size()},
-                                              {"byteStride", stride},
-                                              {"count", count},
-                                              {"mode", kModes[kind]},
-                                              {"filter", kFilters[(data[0] >> 2) & 3]}};
+            const nlohmann::json extension = {{"buffer", 0},          {"byteLength", stream.size()},
+                                              {"byteStride", stride}, {"count", count},
+                                              {"mode", kModes[kind]}, {"filter", kFilters[(data[0] >> 2) & 3]}};
             std::vector<unsigned char> destination(count * stride);
             lit::gltfimport::decodeMeshoptView("fuzz", extension, stream.data(), stream.size(), destination.data(),
                                                destination.size());

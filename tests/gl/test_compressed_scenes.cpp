@@ -3,10 +3,10 @@
 // tools/make-compressed-scenes.sh) give the same image with Lit's default settings, GI included,
 // within what the compressors' quantization moves (positions by up to 0.4 mm, normals by a few
 // degrees).
-#include "GlTestSupport.h"
-
 #include <cmath>
 #include <cstdio>
+
+#include "GlTestSupport.h"
 
 namespace lit::test {
 namespace {
@@ -42,9 +42,10 @@ TEST_P(CompressedScenesRender, LikeTheUncompressedFile) {
     ASSERT_GT(meanWant, 0.0) << "the scene is lit";
     std::size_t far = 0;
     for (double d : differences) far += d > 0.25 * meanWant;
-    std::printf("%s: mean luminance %.5f vs %.5f (ratio %.4f), mean |difference| %.2f%% of the mean, %zu of %zu "
-                "pixels differ by more than 25%% of the mean\n",
-                GetParam(), meanGot, meanWant, meanGot / meanWant, 100.0 * meanDifference / meanWant, far, pixels);
+    std::printf(
+        "%s: mean luminance %.5f vs %.5f (ratio %.4f), mean |difference| %.2f%% of the mean, %zu of %zu "
+        "pixels differ by more than 25%% of the mean\n",
+        GetParam(), meanGot, meanWant, meanGot / meanWant, 100.0 * meanDifference / meanWant, far, pixels);
     // Two bars: the whole image within 1 % of the mean (the geometry is the same within 0.4 mm
     // and the lighting the same), and at most 1 % of the pixels (92 of 9 216) far off, for the
     // silhouette pixels a sub-millimetre shift of an edge may flip. Measured on llvmpipe: Draco
@@ -54,8 +55,8 @@ TEST_P(CompressedScenesRender, LikeTheUncompressedFile) {
     EXPECT_LE(far, pixels / 100);
 }
 
-INSTANTIATE_TEST_SUITE_P(GltfTransform, CompressedScenesRender, ::testing::Values("point_draco.glb", "point_meshopt.glb"),
-                         [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(GltfTransform, CompressedScenesRender,
+                         ::testing::Values("point_draco.glb", "point_meshopt.glb"), [](const auto& info) {
                              return std::string(info.param).substr(0, std::string(info.param).find('.'));
                          });
 

@@ -6,20 +6,18 @@
 // and a damaged one must give a one-line SceneLoadError naming the problem.
 
 #include <gtest/gtest.h>
-
-#include "TempDir.h"
-
-#include <glm/glm.hpp>
 #include <meshoptimizer.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
 
 #include "Log.h"
+#include "TempDir.h"
 #include "scene/GltfLoader.h"
 #include "scene/GltfWriter.h"
 
@@ -93,7 +91,7 @@ float triangleDistance(const Triangle& a, const Triangle& b, int& rotation) {
 // The tolerances: both tools quantize positions to 14 bits over the mesh's extent (the scene is
 // 6 m across: 0.4 mm a step), normals to 8 (meshopt's octahedral) or 10 bits (Draco), UVs to 12.
 constexpr float kPositionTolerance = 2e-3f;  // m
-constexpr float kNormalCosine = 0.99f;        // 8°
+constexpr float kNormalCosine = 0.99f;       // 8°
 constexpr float kUvTolerance = 2e-3f;
 
 void expectSameGeometry(const Scene& expected, const Scene& actual, const std::string& label) {
@@ -215,7 +213,8 @@ INSTANTIATE_TEST_SUITE_P(GltfTransform, CompressedScenes,
                          ::testing::Values("point_draco.glb", "point_meshopt.glb", "gltf/point_meshopt.gltf"),
                          [](const auto& info) {
                              std::string name = info.param;
-                             std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(c); }, '_');
+                             std::replace_if(
+                                 name.begin(), name.end(), [](char c) { return !std::isalnum(c); }, '_');
                              return name;
                          });
 
@@ -389,21 +388,40 @@ TEST(GltfMeshopt, FieldsOutsideTheSpecAreClearErrors) {
         EXPECT_CONTAINS(loadError(writeGlb(dir / "edited.glb", glb)), phrase);
     };
     // More elements than the view holds.
-    expectError("ATTRIBUTES", [](json&, json& e) { e["count"] = e["count"].get<int>() * 4; }, "more than the buffer view's");
+    expectError(
+        "ATTRIBUTES", [](json&, json& e) { e["count"] = e["count"].get<int>() * 4; }, "more than the buffer view's");
     // Strides libmeshoptimizer would assert on.
-    expectError("ATTRIBUTES", [](json& v, json& e) { e["byteStride"] = 6; v["byteLength"] = 6 * e["count"].get<int>(); },
-                "ATTRIBUTES byteStride 6 is not a multiple of 4");
-    expectError("TRIANGLES", [](json&, json& e) { e["byteStride"] = 1; }, "TRIANGLES byteStride 1 is not 2 or 4");
-    expectError("TRIANGLES", [](json&, json& e) { e["count"] = e["count"].get<int>() - 1; }, "is not a multiple of 3");
-    expectError("ATTRIBUTES", [](json&, json& e) { e["mode"] = "POINTS"; }, "mode 'POINTS' is not");
-    expectError("ATTRIBUTES", [](json&, json& e) { e["filter"] = "QUATERNION"; e["byteStride"] = 4; },
-                "QUATERNION needs byteStride 8");
-    expectError("ATTRIBUTES", [](json&, json& e) { e["filter"] = "LOG"; }, "filter 'LOG' is not");
-    expectError("ATTRIBUTES", [](json&, json& e) { e.erase("count"); }, "EXT_meshopt_compression has no 'count'");
-    expectError("ATTRIBUTES", [](json&, json& e) { e["byteOffset"] = 1u << 30; }, "lies outside its buffer");
+    expectError(
+        "ATTRIBUTES",
+        [](json& v, json& e) {
+            e["byteStride"] = 6;
+            v["byteLength"] = 6 * e["count"].get<int>();
+        },
+        "ATTRIBUTES byteStride 6 is not a multiple of 4");
+    expectError(
+        "TRIANGLES", [](json&, json& e) { e["byteStride"] = 1; }, "TRIANGLES byteStride 1 is not 2 or 4");
+    expectError(
+        "TRIANGLES", [](json&, json& e) { e["count"] = e["count"].get<int>() - 1; }, "is not a multiple of 3");
+    expectError(
+        "ATTRIBUTES", [](json&, json& e) { e["mode"] = "POINTS"; }, "mode 'POINTS' is not");
+    expectError(
+        "ATTRIBUTES",
+        [](json&, json& e) {
+            e["filter"] = "QUATERNION";
+            e["byteStride"] = 4;
+        },
+        "QUATERNION needs byteStride 8");
+    expectError(
+        "ATTRIBUTES", [](json&, json& e) { e["filter"] = "LOG"; }, "filter 'LOG' is not");
+    expectError(
+        "ATTRIBUTES", [](json&, json& e) { e.erase("count"); }, "EXT_meshopt_compression has no 'count'");
+    expectError(
+        "ATTRIBUTES", [](json&, json& e) { e["byteOffset"] = 1u << 30; }, "lies outside its buffer");
     // The compressed data must not come from the fallback buffer itself.
-    expectError("ATTRIBUTES", [](json& v, json& e) { e["buffer"] = v["buffer"]; }, "a fallback buffer that holds no data");
-    expectError("ATTRIBUTES", [](json& v, json&) { v["byteOffset"] = 1u << 30; }, "lies outside buffer");
+    expectError(
+        "ATTRIBUTES", [](json& v, json& e) { e["buffer"] = v["buffer"]; }, "a fallback buffer that holds no data");
+    expectError(
+        "ATTRIBUTES", [](json& v, json&) { v["byteOffset"] = 1u << 30; }, "lies outside buffer");
 }
 
 // The INDICES mode (index sequences: gltf-transform writes it for non-triangle primitives),
@@ -417,27 +435,38 @@ TEST(GltfMeshopt, IndexSequencesDecode) {
     encoded.resize(meshopt_encodeIndexSequence(encoded.data(), encoded.size(), indices, 3));
     ASSERT_GT(encoded.size(), 0u);
     Glb glb;
-    glb.bin.assign(reinterpret_cast<const std::uint8_t*>(positions), reinterpret_cast<const std::uint8_t*>(positions) + 36);
+    glb.bin.assign(reinterpret_cast<const std::uint8_t*>(positions),
+                   reinterpret_cast<const std::uint8_t*>(positions) + 36);
     glb.bin.insert(glb.bin.end(), encoded.begin(), encoded.end());
-    glb.doc = {{"asset", {{"version", "2.0"}}},
-               {"extensionsUsed", {"EXT_meshopt_compression"}},
-               {"extensionsRequired", {"EXT_meshopt_compression"}},
-               {"buffers", json::array({{{"byteLength", glb.bin.size()}},
-                                        {{"byteLength", 8}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}})},
-               {"bufferViews", json::array({{{"buffer", 0}, {"byteLength", 36}},
-                                            {{"buffer", 1},
-                                             {"byteLength", 6},
-                                             {"extensions",
-                                              {{"EXT_meshopt_compression",
-                                                {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", encoded.size()},
-                                                 {"byteStride", 2}, {"count", 3}, {"mode", "INDICES"}}}}}}})},
-               {"accessors", json::array({{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-                                           {"min", {0, 0, 0}}, {"max", {1, 1, 0}}},
-                                          {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}})},
-               {"meshes", json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}})}}})},
-               {"nodes", json::array({{{"mesh", 0}}})},
-               {"scenes", json::array({{{"nodes", {0}}}})},
-               {"scene", 0}};
+    glb.doc = {
+        {"asset", {{"version", "2.0"}}},
+        {"extensionsUsed", {"EXT_meshopt_compression"}},
+        {"extensionsRequired", {"EXT_meshopt_compression"}},
+        {"buffers",
+         json::array({{{"byteLength", glb.bin.size()}},
+                      {{"byteLength", 8}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}})},
+        {"bufferViews", json::array({{{"buffer", 0}, {"byteLength", 36}},
+                                     {{"buffer", 1},
+                                      {"byteLength", 6},
+                                      {"extensions",
+                                       {{"EXT_meshopt_compression",
+                                         {{"buffer", 0},
+                                          {"byteOffset", 36},
+                                          {"byteLength", encoded.size()},
+                                          {"byteStride", 2},
+                                          {"count", 3},
+                                          {"mode", "INDICES"}}}}}}})},
+        {"accessors", json::array({{{"bufferView", 0},
+                                    {"componentType", 5126},
+                                    {"count", 3},
+                                    {"type", "VEC3"},
+                                    {"min", {0, 0, 0}},
+                                    {"max", {1, 1, 0}}},
+                                   {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}})},
+        {"meshes", json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}})}}})},
+        {"nodes", json::array({{{"mesh", 0}}})},
+        {"scenes", json::array({{{"nodes", {0}}}})},
+        {"scene", 0}};
     QuietLog log;
     const Scene scene = loadGltf(writeGlb(dir / "sequence.glb", glb), log);
     const Primitive& triangle = scene.meshes.at(0).primitives.at(0);
@@ -450,13 +479,14 @@ TEST(GltfMeshopt, IndexSequencesDecode) {
             << "corner " << c;
 
     glb.doc["bufferViews"][1]["extensions"]["EXT_meshopt_compression"]["byteLength"] = 1;
-    EXPECT_CONTAINS(loadError(writeGlb(dir / "short.glb", glb)), "INDICES data (1 bytes for 3 elements) does not decode");
+    EXPECT_CONTAINS(loadError(writeGlb(dir / "short.glb", glb)),
+                    "INDICES data (1 bytes for 3 elements) does not decode");
 }
 
 // ---------------------------------------------------------------------------------------------
 // With glTF-Transform installed (tools/install-gltf-transform.sh): the point scene compressed
-// now, with settings other than the committed files' (meshopt "medium": no filters; Draco with
-// 16-bit positions), loads to the same geometry.
+// at test time, with settings other than the committed files' (meshopt "medium": no filters;
+// Draco with 16-bit positions), loads to the same geometry.
 
 fs::path gltfTransformTool() {
     const char* env = std::getenv("LIT_GLTF_TRANSFORM_DIR");
@@ -468,7 +498,7 @@ fs::path gltfTransformTool() {
     return dir / "node_modules" / ".bin" / "gltf-transform";
 }
 
-TEST(GltfCompression, GltfTransformOutputLoadsNow) {
+TEST(GltfCompression, GltfTransformOutputLoadsAtTestTime) {
     const fs::path tool = gltfTransformTool();
     if (std::system("node --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "node is not installed: skipped";
     if (!fs::exists(tool))
@@ -477,8 +507,8 @@ TEST(GltfCompression, GltfTransformOutputLoadsNow) {
     TempDir dir;
     QuietLog log;
     const Scene expected = loadGltf(kUncompressed, log);
-    const std::vector<std::pair<std::string, std::string>> runs = {
-        {"meshopt --level medium", "medium.glb"}, {"draco --quantize-position 16", "draco16.gltf"}};
+    const std::vector<std::pair<std::string, std::string>> runs = {{"meshopt --level medium", "medium.glb"},
+                                                                   {"draco --quantize-position 16", "draco16.gltf"}};
     for (const auto& [command, output] : runs) {
         const std::string line = "'" + tool.string() + "' " + command.substr(0, command.find(' ')) + " '" +
                                  kUncompressed.string() + "' '" + (dir / output).string() + "'" +
@@ -497,8 +527,9 @@ TEST(GltfCompression, ValidatorAcceptsTheSourcesAndTheSaves) {
     const char* home = std::getenv("HOME");
     const char* cache = std::getenv("XDG_CACHE_HOME");
     const fs::path validatorDir =
-        env && *env ? fs::path(env)
-                    : (cache && *cache ? fs::path(cache) : fs::path(home ? home : "") / ".cache") / "lit" / "gltf-validator";
+        env && *env
+            ? fs::path(env)
+            : (cache && *cache ? fs::path(cache) : fs::path(home ? home : "") / ".cache") / "lit" / "gltf-validator";
     if (std::system("node --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "node is not installed: skipped";
     if (!fs::exists(validatorDir / "node_modules" / "gltf-validator"))
         GTEST_SKIP() << "gltf-validator not found in " << validatorDir.string()

@@ -3,14 +3,13 @@
 // before tinygltf can fail on the data the extension would have explained.
 
 #include <gtest/gtest.h>
-
-#include "TempDir.h"
 #include <stb/stb_image_write.h>
 
 #include <cstring>
 #include <nlohmann/json.hpp>
 
 #include "Log.h"
+#include "TempDir.h"
 #include "scene/GltfLoader.h"
 
 namespace lit {
@@ -58,20 +57,25 @@ json triangleDoc(const fs::path& dir) {
     std::memcpy(bin.data() + 36, uvs, 24);
     std::memcpy(bin.data() + 60, indices, 6);
     writeBytes(dir / "tri.bin", bin.data(), bin.size());
-    return {{"asset", {{"version", "2.0"}}},
-            {"buffers", json::array({{{"uri", "tri.bin"}, {"byteLength", 68}}})},
-            {"bufferViews", json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
-                                         {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 24}},
-                                         {{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 6}}})},
-            {"accessors", json::array({{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-                                        {"min", {0, 0, 0}}, {"max", {1, 1, 0}}},
-                                       {{"bufferView", 1}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}},
-                                       {{"bufferView", 2}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}})},
-            {"meshes", json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}},
-                                                                   {"indices", 2}}})}}})},
-            {"nodes", json::array({{{"mesh", 0}}})},
-            {"scenes", json::array({{{"nodes", {0}}}})},
-            {"scene", 0}};
+    return {
+        {"asset", {{"version", "2.0"}}},
+        {"buffers", json::array({{{"uri", "tri.bin"}, {"byteLength", 68}}})},
+        {"bufferViews", json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
+                                     {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 24}},
+                                     {{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 6}}})},
+        {"accessors", json::array({{{"bufferView", 0},
+                                    {"componentType", 5126},
+                                    {"count", 3},
+                                    {"type", "VEC3"},
+                                    {"min", {0, 0, 0}},
+                                    {"max", {1, 1, 0}}},
+                                   {{"bufferView", 1}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}},
+                                   {{"bufferView", 2}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}})},
+        {"meshes", json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}},
+                                                              {"indices", 2}}})}}})},
+        {"nodes", json::array({{{"mesh", 0}}})},
+        {"scenes", json::array({{{"nodes", {0}}}})},
+        {"scene", 0}};
 }
 
 fs::path writeScene(const fs::path& dir, const std::string& name, const json& doc) {
