@@ -7,6 +7,7 @@
 
 #include "SaveAsName.h"
 #include "panels/LoadingWindow.h"
+#include "scene/GltfWriter.h"
 
 namespace lit::editor {
 
@@ -256,7 +257,8 @@ std::string FileActions::saveTo(const std::filesystem::path& target) {
         return error.what();
     }
     recent_.add(path);
-    log_.info("saved " + path.string());
+    const std::string note = uncompressedSaveNote(doc_.scene);
+    log_.info("saved " + path.string() + (note.empty() ? "" : " (" + note + ")"));
     return "";
 }
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Fuzzing the glTF loader with libFuzzer (clang's -fsanitize=fuzzer with ASan and UBSan).
+# Fuzzing the glTF loader with libFuzzer (clang's -fsanitize=fuzzer with ASan and UBSan),
+# including the decoders of compressed geometry (Draco, meshopt) through the compressed seeds.
 # Not part of the normal build; the regression corpus it feeds (tests/fuzz/regressions) is
 # replayed by the normal test suite (GltfFuzzCorpus in lit_unit_tests).
 #
@@ -7,6 +8,10 @@
 #   tools/fuzz.sh run MINUTES [JOBS]  fuzz for MINUTES (default 1 job = one core); new inputs go to
 #                                     build-fuzz/corpus, crashes/timeouts/OOMs to build-fuzz/findings
 #   tools/fuzz.sh replay FILE...      run the harness once on each FILE (reproduce a finding)
+#   tools/fuzz.sh run-decoders MINUTES  fuzz the Draco and meshopt decoders alone
+#                                     (build-fuzz/fuzz_gltf_decoders, tests/fuzz/fuzz_gltf_decoders.cpp),
+#                                     seeded with the streams of tests/data/compressed; new inputs go
+#                                     to build-fuzz/decoder-corpus, findings to build-fuzz/findings
 #
 # A finding is fixed, then its input is copied to tests/fuzz/regressions/ (named after what it
 # found) so the suite replays it for ever. Environment: LIT_FUZZ_DIR (default build-fuzz/),
@@ -25,6 +30,8 @@ build() {
                  -I"$root/renderer" -I"$root/shaders/include" -I"$root/tests/fuzz" -isystem /usr/include/stb)
     # The loader's CPU part and what it needs; tinygltf and stb_image compiled in, instrumented.
     local sources=(renderer/scene/GltfLoader.cpp renderer/scene/GltfContainer.cpp renderer/scene/GltfParse.cpp
+                   renderer/scene/GltfExtensions.cpp renderer/scene/GltfCompression.cpp renderer/scene/GltfMeshopt.cpp
+                   renderer/scene/GltfDraco.cpp
                    renderer/scene/GltfValidate.cpp renderer/scene/GltfImport.cpp renderer/scene/GltfImportMeshes.cpp
                    renderer/scene/GltfImportImages.cpp renderer/scene/GltfImportKept.cpp renderer/scene/GltfKeep.cpp
                    renderer/io/GltfGuard.cpp renderer/io/GltfFile.cpp
@@ -44,7 +51,9 @@ build() {
                           renderer/scene/GltfValidate.h renderer/scene/GltfImport.h renderer/scene/GltfImportMeshes.h \
                           renderer/scene/GltfImportImages.h renderer/scene/GltfImportKept.h renderer/scene/GltfKeep.h \
                           renderer/io/AtomicFile.h renderer/scene/Scene.h renderer/Log.h tests/fuzz/GltfFuzzInput.h \
-                          renderer/animation/CameraPathIO.h renderer/animation/CameraPath.h; do
+                          renderer/animation/CameraPathIO.h renderer/animation/CameraPath.h \
+                          renderer/scene/GltfExtensions.h renderer/scene/GltfCompression.h renderer/scene/GltfMeshopt.h \
+                          renderer/scene/GltfDraco.h; do
                 [ "$root/$header" -nt "$object" ] && stale=1
             done
         fi
@@ -54,8 +63,56 @@ build() {
         fi
         objects+=("$object")
     done
-    "$cxx" "${flags[@]}" "${objects[@]}" -o "$binary" -lpthread
+    # libdraco and libmeshoptimizer as Debian builds them, uninstrumented: ASan checks what the
+    # loader does with their output and catches their crashes, not their own reads. libFuzzer
+    # mutates the compressed streams the seeds carry (tests/fuzz/seeds/*_draco.glb, *_meshopt.glb).
+    "$cxx" "${flags[@]}" "${objects[@]}" -o "$binary" -lpthread -ldraco -lmeshoptimizer
     echo "fuzz: built $binary" >&2
+}
+
+# The decoders alone: the harness and the decoders' sources, instrumented; libdraco and
+# libmeshoptimizer linked as above.
+build_decoders() {
+    mkdir -p "$out/obj"
+    local flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer,address,undefined
+                 -fno-sanitize-recover=undefined -I"$root/renderer" -isystem /usr/include/stb)
+    "$cxx" "${flags[@]}" "$root/tests/fuzz/fuzz_gltf_decoders.cpp" "$root/renderer/scene/GltfMeshopt.cpp" \
+        "$root/renderer/scene/GltfDraco.cpp" "$root/renderer/scene/GltfValidate.cpp" "$out/obj/tests_fuzz_tinygltf_impl.cpp.o" \
+        -o "$out/fuzz_gltf_decoders" -lpthread -ldraco -lmeshoptimizer
+    echo "fuzz: built $out/fuzz_gltf_decoders" >&2
+}
+
+# One seed per compressed stream of the committed Draco and meshopt files, with the header
+# fuzz_gltf_decoders.cpp reads (kind, counts) taken from the file's JSON.
+decoder_seeds() {
+    mkdir -p "$out/decoder-seeds"
+    python3 - "$root/tests/data/compressed" "$out/decoder-seeds" <<'PY'
+import json, struct, sys, pathlib
+source, target = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+def glb(path):
+    b = path.read_bytes()
+    n = struct.unpack_from('<I', b, 12)[0]
+    return json.loads(b[20:20 + n]), b[20 + n + 8:]
+doc, binary = glb(source / 'point_draco.glb')
+for m, mesh in enumerate(doc['meshes']):
+    p = mesh['primitives'][0]
+    view = doc['bufferViews'][p['extensions']['KHR_draco_mesh_compression']['bufferView']]
+    points = doc['accessors'][p['attributes']['POSITION']]['count']
+    faces = doc['accessors'][p['indices']]['count'] // 3
+    stream = binary[view.get('byteOffset', 0):view.get('byteOffset', 0) + view['byteLength']]
+    (target / f'draco_{m}').write_bytes(struct.pack('<BHH', 0, points, faces) + stream)
+doc, binary = glb(source / 'point_meshopt.glb')
+modes = {'ATTRIBUTES': 1, 'TRIANGLES': 2, 'INDICES': 3}
+filters = {'NONE': 0, 'OCTAHEDRAL': 1, 'QUATERNION': 2, 'EXPONENTIAL': 3}
+for v, view in enumerate(doc['bufferViews']):
+    e = view.get('extensions', {}).get('EXT_meshopt_compression')
+    if not e: continue
+    kind = modes[e['mode']]
+    stride = (e['byteStride'] // 4 - 1) if kind == 1 else (e['byteStride'] // 4)
+    head = kind | (filters[e.get('filter', 'NONE')] << 2) | (stride << 4)
+    stream = binary[e.get('byteOffset', 0):e.get('byteOffset', 0) + e['byteLength']]
+    (target / f'meshopt_{v}').write_bytes(struct.pack('<BHH', head, e['count'], 0) + stream)
+PY
 }
 
 command="${1:-}"
@@ -79,8 +136,19 @@ case "$command" in
         build
         exec "$binary" -runs=1 "$@"
         ;;
+    run-decoders)
+        minutes="${1:?usage: tools/fuzz.sh run-decoders MINUTES}"
+        build
+        build_decoders
+        decoder_seeds
+        mkdir -p "$out/decoder-corpus" "$out/findings"
+        cd "$out"
+        exec "$out/fuzz_gltf_decoders" -max_total_time=$((minutes * 60)) -timeout=10 -rss_limit_mb=2048 \
+            -max_len=65536 -artifact_prefix="$out/findings/decoders-" -print_final_stats=1 \
+            "$out/decoder-corpus" "$out/decoder-seeds"
+        ;;
     *)
-        sed -n '2,16p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+        sed -n '2,20p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
         exit 2
         ;;
 esac

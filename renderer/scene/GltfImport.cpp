@@ -515,7 +515,6 @@ void Importer::loadCameras(Scene& scene) const {
 Scene Importer::run() {
     Scene scene;
     scene.sourcePath = source_.path;
-    checkExtensions(source_);
     const std::vector<int> nodeRefs = loadNodes(scene);
     if (scene.name.empty()) {
         scene.name = source_.path.stem().string();

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace lit::gltfimport {
 
@@ -31,6 +32,8 @@ struct ParsedGltf {
     // The file's JSON (null when it does not parse as JSON here), for what tinygltf does not
     // tell: which optional fields the file wrote (materials, samplers, images).
     nlohmann::json doc;
+    // The compression extensions whose data was decoded into `model` (scene/GltfCompression.h).
+    std::vector<std::string> compression;
 };
 
 // The file being imported and where its messages and progress go. Every import step reads it;
@@ -41,6 +44,7 @@ struct GltfSource {
     const ImageDeduplicator& images;
     const SparseKept& sparseKept;
     const nlohmann::json& doc;
+    const std::vector<std::string>& compression;
     Log& log;
     const GltfLoadOptions& options;
 

@@ -287,7 +287,12 @@ void keepFileData(const GltfSource& source, const std::vector<int>& nodeRefs, Sc
         scene.buffers.push_back(KeptObject{buffer.name, gltfkeep::keep(buffer.extras, buffer.extensions)});
         scene.fileBufferSizes.push_back(buffer.data.size());
     }
+    // A compressed file's layout (compressed streams, fallback buffers) means nothing to the
+    // uncompressed save: its views are not kept, and a save lays the buffer out afresh.
+    scene.decodedCompression = source.compression;
+    if (!source.compression.empty()) scene.fileBufferSizes.clear();
     for (const tinygltf::BufferView& view : source.model.bufferViews) {
+        if (!source.compression.empty()) break;
         Scene::FileBufferView place{view.buffer, view.byteOffset, view.byteLength, 0};
         const std::vector<unsigned char>* data =
             view.buffer >= 0 && static_cast<std::size_t>(view.buffer) < source.model.buffers.size()

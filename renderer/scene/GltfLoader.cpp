@@ -22,7 +22,8 @@ Scene loadGltf(const std::filesystem::path& path, Log& log, const GltfLoadOption
     if (options.progress) options.progress({"file", 0, 1});
     const gltfimport::ParsedGltf parsed = gltfimport::parseGltf(path, log, options);
     if (options.progress) options.progress({"file", 1, 1});
-    const gltfimport::GltfSource source{path, parsed.model, parsed.images, parsed.sparseKept, parsed.doc, log, options};
+    const gltfimport::GltfSource source{path, parsed.model, parsed.images, parsed.sparseKept, parsed.doc,
+                                             parsed.compression, log, options};
     Scene scene = gltfimport::importScene(source);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     // The one summary line of a load, for every front end: "loaded Sponza.gltf: 1 mesh, 262k

@@ -6,7 +6,9 @@
 
 #include "Log.h"
 #include "io/GltfGuard.h"
+#include "scene/GltfCompression.h"
 #include "scene/GltfContainer.h"
+#include "scene/GltfExtensions.h"
 #include "scene/GltfKeep.h"
 
 #include <algorithm>
@@ -14,6 +16,7 @@
 #include <exception>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -120,6 +123,12 @@ ParsedGltf parseGltf(const std::filesystem::path& path, Log& log, const GltfLoad
     GuardedFileSystem files(path, options.limits, guarded.externalImages, guarded.absoluteFiles);
 
     ParsedGltf parsed;
+    // The JSON once more, for what tinygltf does not read or report (a few ms for Sponza's 0.3 MB),
+    // first of all the extensions: one Lit lacks is named before tinygltf stumbles on its data.
+    parsed.doc = nlohmann::json::parse(guarded.json.begin(), guarded.json.end(), nullptr, false);
+    checkExtensions(path, parsed.doc, log);
+    // Compressed geometry: the JSON rewritten for tinygltf, decoded after (scene/GltfCompression.h).
+    const std::vector<unsigned char> rewritten = tinygltfInput(guarded, parsed.doc);
     tinygltf::Model& model = parsed.model;
     tinygltf::TinyGLTF parser;
     parser.SetFsCallbacks(files.callbacks());
@@ -130,11 +139,17 @@ ParsedGltf parseGltf(const std::filesystem::path& path, Log& log, const GltfLoad
     bool ok = false;
     try {
         const std::string baseDir = path.parent_path().string();
-        ok = container == Container::Binary
-                 ? parser.LoadBinaryFromMemory(&model, &err, &warn, guarded.bytes.data(),
-                                               static_cast<unsigned int>(guarded.bytes.size()), baseDir)
-                 : parser.LoadASCIIFromString(&model, &err, &warn, guarded.json.data(),
-                                              static_cast<unsigned int>(guarded.json.size()), baseDir);
+        if (container == Container::Binary) {
+            const std::vector<unsigned char>& bytes = rewritten.empty() ? guarded.bytes : rewritten;
+            ok = parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
+                                             baseDir);
+        } else {
+            const std::string_view json =
+                rewritten.empty() ? guarded.json
+                                  : std::string_view(reinterpret_cast<const char*>(rewritten.data()), rewritten.size());
+            ok = parser.LoadASCIIFromString(&model, &err, &warn, json.data(), static_cast<unsigned int>(json.size()),
+                                            baseDir);
+        }
     } catch (const std::exception& e) {
         throw SceneLoadError(path.string() + ": tinygltf failed: " + e.what());
     }
@@ -153,8 +168,7 @@ ParsedGltf parseGltf(const std::filesystem::path& path, Log& log, const GltfLoad
     }
     for (std::size_t i = 0; i < model.images.size(); ++i)
         model.images[i].image = imageContext.images.take(static_cast<int>(i));
-    // The JSON once more, for what tinygltf does not read or report (a few ms for Sponza's 0.3 MB).
-    parsed.doc = nlohmann::json::parse(guarded.json.begin(), guarded.json.end(), nullptr, false);
+    parsed.compression = decodeCompressedGeometry(path, parsed.doc, options.limits, model);
     parsed.sparseKept = readWhatTinygltfSkips(model, parsed.doc);
     checkMemoryBudget(path, model, imageContext.images, options.limits);
     parsed.images = std::move(imageContext.images);

@@ -264,22 +264,6 @@ std::vector<int> checkNodeTree(const GltfSource& source) {
     return parent;
 }
 
-void checkExtensions(const GltfSource& source) {
-    // Extensions whose data the loader reads. KHR_mesh_quantization only widens the accessor
-    // types allowed for attributes, which the generic accessor reader handles.
-    static const std::array<std::string_view, 3> supported = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                              "KHR_mesh_quantization"};
-    const auto isSupported = [&](const std::string& e) {
-        return std::find(supported.begin(), supported.end(), e) != supported.end();
-    };
-    for (const std::string& e : source.model.extensionsRequired)
-        if (!isSupported(e)) source.fail("requires the glTF extension " + e + ", which Lit does not support");
-    for (const std::string& e : source.model.extensionsUsed)
-        if (!isSupported(e))
-            source.warn("ignores the glTF extension " + e +
-                        " (not supported; its data is kept and saved back as it was)");
-}
-
 int checkedTextureIndex(const GltfSource& source, int index, const std::string& what) {
     if (index < -1 || index >= static_cast<int>(source.model.textures.size()))
         source.fail(what + " refers to texture " + std::to_string(index) + ", which is out of range (the file has " +

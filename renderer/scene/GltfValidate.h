@@ -1,8 +1,9 @@
 #pragma once
 // The checks a glTF file's data must pass before the import reads it (internal to the glTF
-// import): accessors, buffer views, index values, node trees, texture references and required
-// extensions. tinygltf 2.7 checks little of what it hands over, and a bad file must give a
-// SceneLoadError naming the problem, never a crash or a read past a buffer.
+// import): accessors, buffer views, index values, node trees and texture references (extensions
+// are checked before parsing, scene/GltfExtensions.h). tinygltf 2.7 checks little of what it
+// hands over, and a bad file must give a SceneLoadError naming the problem, never a crash or a
+// read past a buffer.
 
 #include "scene/GltfImportDetail.h"
 
@@ -48,9 +49,6 @@ std::vector<std::uint32_t> readIndices(const GltfSource& source, int accessor, s
 // Every node's parent (-1 for none), with every child index checked, one parent per node and no
 // cycle.
 std::vector<int> checkNodeTree(const GltfSource& source);
-
-// Fails for a required extension Lit does not read; warns for a used one.
-void checkExtensions(const GltfSource& source);
 
 // A material's texture reference (-1 for none), checked against the file's textures.
 int checkedTextureIndex(const GltfSource& source, int index, const std::string& what);

@@ -67,4 +67,12 @@ void saveGltf(const Scene& scene, const fs::path& file, const GltfSaveOptions& o
     }
 }
 
+std::string uncompressedSaveNote(const Scene& scene) {
+    if (scene.decodedCompression.empty()) return {};
+    std::string names;
+    for (std::size_t i = 0; i < scene.decodedCompression.size(); ++i)
+        names += (i == 0 ? "" : " and ") + scene.decodedCompression[i];
+    return "written uncompressed: the source used " + names + ", which Lit reads but does not write";
+}
+
 }  // namespace lit

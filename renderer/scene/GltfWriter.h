@@ -46,4 +46,10 @@ struct GltfSaveOptions {
 // SceneSaveError naming the file and the reason; on error no existing file is changed.
 void saveGltf(const Scene& scene, const std::filesystem::path& file, const GltfSaveOptions& options = {});
 
+// The line a front end logs after saving `scene` when the save differs from its source in a way
+// the user should know: a scene loaded from compressed geometry (Scene::decodedCompression) is
+// saved uncompressed ("written uncompressed: the source used KHR_draco_mesh_compression, which
+// Lit reads but does not write"). Empty when there is nothing to say.
+std::string uncompressedSaveNote(const Scene& scene);
+
 }  // namespace lit

@@ -447,6 +447,10 @@ struct Scene {
     std::vector<OtherScene> otherScenes;
     int sceneIndex = 0;  // where the shown scene stands among the file's scenes
     std::vector<std::string> unknownExtensionsUsed;  // extensionsUsed Lit does not read; written back
+    // The compression extensions the file's geometry was decoded from (EXT_meshopt_compression,
+    // KHR_draco_mesh_compression). A save writes plain accessors: Lit has no encoders, and an
+    // uncompressed file is one every glTF reader takes (scene/GltfWriter.h: uncompressedSaveNote).
+    std::vector<std::string> decodedCompression;
     // The file's extensionsRequired (all ones Lit reads, or the load fails): a save declares each
     // again while the saved file still uses it.
     std::vector<std::string> extensionsRequired;
