@@ -1,0 +1,96 @@
+"""Compares renders of the sun room (tests/data/blender/sun_room) over the pixels lit only by
+bounced light; called by tools/room-accuracy.sh, which renders the Lit images.
+
+Usage: room_accuracy.py DIRECT.hdr REFERENCE.hdr NAME=IMAGE.hdr ...
+
+DIRECT is Lit with GI off: a pixel whose direct light is 0 (and whose 8 neighbours' is) is lit
+only by bounced light. REFERENCE is the truth the others are measured against. For each image, over
+those pixels, in luminance (Rec. 709):
+  mean       mean of the image ÷ mean of the reference;
+  RMSE       root mean square of image − reference, ÷ the reference's mean (noise included);
+  blotches   the image scaled to the reference's mean over those pixels (the level is the mean
+             column's business), then both box-filtered 7 × 7 over those pixels, and the RMS of
+             the difference ÷ the reference's mean: what is left of the error once pixel noise
+             is averaged away and the level matched. A cloud-like blotch tens of pixels wide
+             survives the filter, per-pixel noise mostly does not.
+Prints one markdown table row per image.
+"""
+
+import sys
+
+import numpy as np
+
+
+def read_hdr(path):
+    data = open(path, "rb").read()
+    end = data.index(b"\n\n") + 2
+    line_end = data.index(b"\n", end)
+    size = data[end:line_end].split()
+    height, width = int(size[1]), int(size[3])
+    p = line_end + 1
+    image = np.zeros((height, width, 4), np.uint8)
+    for y in range(height):
+        if data[p] == 2 and data[p + 1] == 2:  # new run-length encoding, one channel at a time
+            p += 4
+            for c in range(4):
+                x = 0
+                while x < width:
+                    n = data[p]
+                    p += 1
+                    if n > 128:
+                        n -= 128
+                        image[y, x:x + n, c] = data[p]
+                        p += 1
+                    else:
+                        image[y, x:x + n, c] = np.frombuffer(data[p:p + n], np.uint8)
+                        p += n
+                    x += n
+        else:
+            image[y] = np.frombuffer(data[p:p + 4 * width], np.uint8).reshape(width, 4)
+            p += 4 * width
+    exponent = image[..., 3].astype(np.int32)
+    scale = np.where(exponent > 0, np.ldexp(1.0, exponent - 136), 0.0)
+    rgb = image[..., :3] * scale[..., None]
+    return rgb @ np.array([0.2126, 0.7152, 0.0722])
+
+
+def box_filter(values, mask, radius):
+    """Mean of `values` over the masked pixels in each (2r+1)² window (0 where none)."""
+    v = np.where(mask, values, 0.0)
+    m = mask.astype(np.float64)
+    def window_sum(a):
+        padded = np.pad(a, radius)
+        integral = padded.cumsum(0).cumsum(1)
+        integral = np.pad(integral, ((1, 0), (1, 0)))
+        k = 2 * radius + 1
+        return integral[k:, k:] - integral[:-k, k:] - integral[k:, :-k] + integral[:-k, :-k]
+    counts = window_sum(m)
+    return np.where(counts > 0, window_sum(v) / np.maximum(counts, 1), 0.0)
+
+
+def main():
+    direct, reference = read_hdr(sys.argv[1]), read_hdr(sys.argv[2])
+    dark = direct <= 1e-6
+    eroded = dark.copy()
+    for dy in (-1, 0, 1):
+        for dx in (-1, 0, 1):
+            eroded &= np.roll(np.roll(dark, dy, 0), dx, 1)
+    mask = eroded & (reference > 0)
+    mask[0, :] = mask[-1, :] = False
+    mask[:, 0] = mask[:, -1] = False
+    ref_mean = reference[mask].mean()
+    ref_smooth = box_filter(reference, mask, 3)
+    print(f"pixels lit only by bounced light: {mask.sum()} of {mask.size}; reference mean {ref_mean:.4f}")
+    for arg in sys.argv[3:]:
+        name, path = arg.split("=", 1)
+        image = read_hdr(path)
+        if image.shape != reference.shape:
+            print(f"| {name} | size {image.shape} differs from the reference's {reference.shape} | | |")
+            continue
+        rmse = np.sqrt(((image - reference)[mask] ** 2).mean()) / ref_mean
+        smooth = box_filter(image * (ref_mean / max(image[mask].mean(), 1e-12)), mask, 3)
+        blotches = np.sqrt(((smooth - ref_smooth)[mask] ** 2).mean()) / ref_mean
+        print(f"| {name} | {image[mask].mean() / ref_mean:.3f} | {100 * rmse:.1f} % | {100 * blotches:.1f} % |")
+
+
+main()
