@@ -572,12 +572,15 @@ void checkMemoryBudget(const fs::path& file, const tinygltf::Model& model, const
     const std::optional<std::string> over =
         overMemoryLimit(memory, {limits.memoryBudgetBytes, limits.memoryBudgetSource});
     if (!over) return;
-    // Name the largest part's cause: the image or the primitives behind it.
+    // Where the file's images or geometry are the largest part, name what is behind it: the
+    // largest image, or the primitive count (the render settings' parts speak for themselves).
+    const std::uint64_t imageBytes = memory.textures + memory.decodedImages;
+    const std::uint64_t renderBytes = std::max({memory.voxels, memory.rayHits, memory.targets});
     std::string cause;
-    if (memory.textures + memory.decodedImages >= memory.geometry && !extents.empty())
+    if (imageBytes >= memory.geometry && imageBytes >= renderBytes && !extents.empty())
         cause = "; " + std::to_string(extents.size()) + " distinct images, the largest image " +
                 std::to_string(largestIndex) + " alone " + formatBytes(largestImage, memory.total()) + " with mipmaps";
-    else if (memory.geometry > 0)
+    else if (memory.geometry > imageBytes && memory.geometry >= renderBytes)
         cause = "; geometry of " + std::to_string(primitives) + " primitives";
     fail(file, *over + cause);
 }
