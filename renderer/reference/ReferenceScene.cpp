@@ -3,9 +3,6 @@
 #include "Log.h"
 #include "RenderSettings.h"
 #include "passes/LightSetup.h"
-#include "scene/TextureTransform.h"
-
-#include <shared.h>
 
 #include <embree3/rtcore.h>
 
@@ -17,13 +14,6 @@
 namespace lit::reference {
 
 namespace {
-
-// Material::textureExtensions' slot order (shared.h LIT_MATERIAL_SLOT_*).
-constexpr std::size_t kSlotBaseColor = LIT_MATERIAL_SLOT_BASE_COLOR;
-constexpr std::size_t kSlotMetallicRoughness = LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS;
-constexpr std::size_t kSlotNormal = LIT_MATERIAL_SLOT_NORMAL;
-constexpr std::size_t kSlotEmissive = LIT_MATERIAL_SLOT_EMISSIVE;
-constexpr std::size_t kSlotOcclusion = LIT_MATERIAL_SLOT_OCCLUSION;
 
 constexpr int kWrapRepeat = 10497;
 constexpr int kWrapMirroredRepeat = 33648;
@@ -71,9 +61,6 @@ struct ReferenceScene::Impl {
     std::vector<Geometry> geometries;
     std::vector<AlphaFilterData> alphaFilters;  // one per geometry; sized once, Embree keeps pointers
     std::vector<Material> materials;
-    // Per material, its slots' KHR_texture_transform (scene/TextureTransform.h), as GpuScene
-    // uploads them.
-    std::vector<std::array<TextureTransform, 5>> uvTransforms;
     std::vector<Texture> textures;
     std::vector<Image> images;
     std::array<float, 256> srgbToLinear{};
@@ -106,7 +93,6 @@ ReferenceScene::ReferenceScene(const Scene& scene, Log& log) : impl_(std::make_u
     Impl& s = *impl_;
     for (int i = 0; i < 256; ++i) s.srgbToLinear[static_cast<std::size_t>(i)] = srgbToLinear(static_cast<float>(i) / 255.0f);
     s.materials = scene.materials;
-    for (const Material& m : s.materials) s.uvTransforms.push_back(materialTextureTransforms(m));
     s.textures = scene.textures;
     s.images = scene.images;
     s.fallback.metallic = 0.0f;
@@ -226,10 +212,7 @@ bool ReferenceScene::alphaCutOut(unsigned geometry, unsigned primitive, float u,
     const glm::vec2 uv = (1.0f - u - v) * g.uvs[g.indices[t]] + u * g.uvs[g.indices[t + 1]] + v * g.uvs[g.indices[t + 2]];
     const Material& m = impl_->materials[static_cast<std::size_t>(g.material)];
     float alpha = m.baseColorFactor.a;
-    if (m.baseColorTexture >= 0)
-        alpha *= sampleTexture(m.baseColorTexture,
-                               impl_->uvTransforms[static_cast<std::size_t>(g.material)][kSlotBaseColor].apply(uv))
-                     .a;
+    if (m.baseColorTexture >= 0) alpha *= sampleTexture(m.baseColorTexture, uv).a;
     return alpha < m.alphaCutoff;
 }
 
@@ -288,13 +271,9 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
     const Material& m =
         (material >= 0 && static_cast<std::size_t>(material) < s.materials.size()) ? s.materials[static_cast<std::size_t>(material)]
                                                                                       : s.fallback;
-    // shaders/gbuffer.frag.glsl, line by line; each slot samples through its texture transform.
-    const bool own = material >= 0 && static_cast<std::size_t>(material) < s.materials.size();
-    const auto slotUv = [&](std::size_t slot) {
-        return own ? s.uvTransforms[static_cast<std::size_t>(material)][slot].apply(uv) : uv;
-    };
+    // shaders/gbuffer.frag.glsl, line by line.
     glm::vec4 baseColor = m.baseColorFactor;
-    if (m.baseColorTexture >= 0) baseColor *= sampleTexture(m.baseColorTexture, slotUv(kSlotBaseColor));
+    if (m.baseColorTexture >= 0) baseColor *= sampleTexture(m.baseColorTexture, uv);
 
     glm::vec3 n = glm::length(normal) > 0.0f ? glm::normalize(normal) : hit.geometricNormal;
     if (!frontFacing) n = -n;
@@ -303,7 +282,7 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
         if (glm::dot(t, t) > 1e-10f) {
             t = glm::normalize(t);
             const glm::vec3 b = glm::cross(n, t) * (tangent.w < 0.0f ? -1.0f : 1.0f);
-            glm::vec3 tn = glm::vec3(sampleTexture(m.normalTexture, slotUv(kSlotNormal))) * 2.0f - 1.0f;
+            glm::vec3 tn = glm::vec3(sampleTexture(m.normalTexture, uv)) * 2.0f - 1.0f;
             tn.x *= m.normalScale;
             tn.y *= m.normalScale;
             const glm::vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
@@ -313,14 +292,14 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
     float metalness = m.metallic;
     float roughness = m.roughness;
     if (m.metallicRoughnessTexture >= 0) {
-        const glm::vec4 mr = sampleTexture(m.metallicRoughnessTexture, slotUv(kSlotMetallicRoughness));
+        const glm::vec4 mr = sampleTexture(m.metallicRoughnessTexture, uv);
         roughness *= mr.g;
         metalness *= mr.b;
     }
     float occlusion = 1.0f;
-    if (m.occlusionTexture >= 0) occlusion = 1.0f + m.occlusionStrength * (sampleTexture(m.occlusionTexture, slotUv(kSlotOcclusion)).r - 1.0f);
+    if (m.occlusionTexture >= 0) occlusion = 1.0f + m.occlusionStrength * (sampleTexture(m.occlusionTexture, uv).r - 1.0f);
     glm::vec3 emissive = m.emissiveFactor * m.emissiveStrength;
-    if (m.emissiveTexture >= 0) emissive *= glm::vec3(sampleTexture(m.emissiveTexture, slotUv(kSlotEmissive)));
+    if (m.emissiveTexture >= 0) emissive *= glm::vec3(sampleTexture(m.emissiveTexture, uv));
 
     hit.baseColor = glm::vec3(baseColor);
     hit.normal = n;

@@ -266,11 +266,9 @@ std::vector<int> checkNodeTree(const GltfSource& source) {
 
 void checkExtensions(const GltfSource& source) {
     // Extensions whose data the loader reads. KHR_mesh_quantization only widens the accessor
-    // types allowed for attributes, which the generic accessor reader handles;
-    // KHR_texture_transform stays in each texture reference's extension text, which the renderer
-    // and the reference read (scene/TextureTransform.h) and a save writes back.
-    static const std::array<std::string_view, 4> supported = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                              "KHR_mesh_quantization", "KHR_texture_transform"};
+    // types allowed for attributes, which the generic accessor reader handles.
+    static const std::array<std::string_view, 3> supported = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                                              "KHR_mesh_quantization"};
     const auto isSupported = [&](const std::string& e) {
         return std::find(supported.begin(), supported.end(), e) != supported.end();
     };

@@ -4,14 +4,12 @@
 #include "gl/Shader.h"
 #include "scene/Scene.h"
 #include "scene/SceneMemory.h"
-#include "scene/TextureTransform.h"
 
 #include <shared.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cassert>
 #include <map>
 #include <stdexcept>
@@ -82,12 +80,6 @@ gpu::GpuMaterial toGpu(const Material& m) {
                                                             : LIT_ALPHA_OPAQUE;
     g.modes = glm::ivec4(m.occlusionTexture >= 0, alphaMode, m.doubleSided ? 1 : 0, 0);
     g.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
-    const std::array<TextureTransform, 5> transforms = materialTextureTransforms(m);
-    for (std::size_t slot = 0; slot < transforms.size(); ++slot) {
-        const std::array<glm::vec3, 2> rows = transforms[slot].rows();
-        g.uvTransform[2 * slot] = glm::vec4(rows[0], 0.0f);
-        g.uvTransform[2 * slot + 1] = glm::vec4(rows[1], 0.0f);
-    }
     return g;
 }
 

@@ -24,18 +24,11 @@ layout(binding = LIT_TEX_NORMAL) uniform sampler2D normalTexture;
 layout(binding = LIT_TEX_EMISSIVE) uniform sampler2D emissiveTexture;
 layout(binding = LIT_TEX_OCCLUSION) uniform sampler2D occlusionTexture;
 
-// The texture coordinates slot `slot` (LIT_MATERIAL_SLOT_*) samples at: TEXCOORD_0 through the
-// slot's KHR_texture_transform (the identity without one; scene/TextureTransform.h).
-vec2 materialUv(GpuMaterial m, int slot, vec2 uv) {
-    vec3 p = vec3(uv, 1.0);
-    return vec2(dot(m.uvTransform[2 * slot].xyz, p), dot(m.uvTransform[2 * slot + 1].xyz, p));
-}
-
 // Base colour × texture (linear; sRGB textures are decoded by the sampler).
 vec4 materialBaseColor(GpuMaterial m, vec2 uv) {
     vec4 c = m.baseColorFactor;
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_BASE_COLOR)
-    if (m.textures.x != 0) c *= texture(baseColorTexture, materialUv(m, LIT_MATERIAL_SLOT_BASE_COLOR, uv));
+    if (m.textures.x != 0) c *= texture(baseColorTexture, uv);
 #endif
     return c;
 }

@@ -246,13 +246,6 @@ struct GpuLight {
     mat4 shadowViewProjection;  // world → light clip space (directional, spot)
 };
 
-// A material's texture slots, in Material::textureExtensions' order (uvTransform rows).
-#define LIT_MATERIAL_SLOT_BASE_COLOR 0
-#define LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS 1
-#define LIT_MATERIAL_SLOT_NORMAL 2
-#define LIT_MATERIAL_SLOT_EMISSIVE 3
-#define LIT_MATERIAL_SLOT_OCCLUSION 4
-
 // One material. std430, binding LIT_SSBO_MATERIALS.
 struct GpuMaterial {
     vec4 baseColorFactor;     // linear RGBA
@@ -261,9 +254,6 @@ struct GpuMaterial {
     ivec4 textures;           // x base colour, y metallic-roughness, z normal, w emissive (1 = present)
     ivec4 modes;              // x occlusion texture present, y alpha mode (LIT_ALPHA_*), z double sided, w unused
     vec4 alpha;               // x alpha cutoff, yzw unused
-    // KHR_texture_transform per texture slot (LIT_MATERIAL_SLOT_*): rows 2·slot and 2·slot + 1 of
-    // the affine UV matrix, uv' = (dot(row0.xyz, (uv, 1)), dot(row1.xyz, (uv, 1))); w unused.
-    vec4 uvTransform[10];
 };
 
 // The light view a shadow pass renders. std140, binding LIT_UBO_SHADOW_PASS.
@@ -288,7 +278,7 @@ struct VoxelUniforms {
 static_assert(sizeof(VoxelUniforms) == 6 * 16);
 static_assert(sizeof(FrameUniforms) == 4 * 64 + 7 * 16);
 static_assert(sizeof(GpuLight) == 5 * 16 + 64);
-static_assert(sizeof(GpuMaterial) == 16 * 16);
+static_assert(sizeof(GpuMaterial) == 6 * 16);
 static_assert(sizeof(ShadowPassUniforms) == 64 + 16);
 inline const vec3 kDiffuseConeDirections[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_DIRECTIONS};
 inline const float kDiffuseConeWeights[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_WEIGHTS};

@@ -118,51 +118,5 @@ TEST_F(SharedTextures, MaterialsSharingAnImageSampleWithTheirOwnSampler) {
     EXPECT_TRUE(near(clampAt125, green)) << "clamp holds the last texel: " << clampAt125.r << " " << clampAt125.g;
 }
 
-// KHR_texture_transform in the rasterizer: two squares with u running 0..1, the same red | green
-// image, the second's base colour reference offset by half the image (0.5, 0). At u = 0.25 the
-// first shows red, the second green; at u = 0.75 the other way round.
-TEST_F(SharedTextures, ATextureTransformMovesTheTexture) {
-    if (HasFatalFailure()) return;
-    Scene scene;
-    Image image;
-    image.width = 2;
-    image.height = 1;
-    image.rgba = {255, 0, 0, 255, 0, 255, 0, 255};
-    scene.images.push_back(image);
-    Texture texture;
-    texture.image = 0;
-    texture.minFilter = texture.magFilter = 9728;  // NEAREST
-    scene.textures.push_back(texture);
-    for (const char* extensions : {"", R"({"KHR_texture_transform": {"offset": [0.5, 0]}})"}) {
-        const int material = addMaterial(scene, glm::vec3(1.0f));
-        scene.materials[static_cast<std::size_t>(material)].baseColorTexture = 0;
-        scene.materials[static_cast<std::size_t>(material)].textureExtensions[0] = extensions;
-        Mesh square = makePlaneMesh("square", 1.0f, material);
-        for (Vertex& v : square.primitives[0].vertices) v.uv = {v.position.x + 0.5f, v.position.z + 0.5f};
-        addMeshNode(scene, std::move(square), {material == 0 ? -0.6f : 0.6f, 0.0f, 0.0f});
-    }
-    scene.updateWorldTransforms();
-
-    RenderSettings settings = smallSettings(128);
-    settings.debug.view = View::Albedo;
-    const glm::mat4 world = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 3.0f, 0.0f)),
-                                        glm::radians(-90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
-    const CameraView camera = makeCameraView(world, 0.8f, 1.0f, 0.05f, 10.0f);
-    renderer_->setScene(scene);
-    renderer_->render(scene, camera, settings);
-    const HdrImage picture{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
-    const auto colourAt = [&](float x) {
-        const glm::ivec2 p = projectToPixel(camera, {x, 0.0f, 0.0f}, picture.width, picture.height);
-        return windowMean(picture, p.x, p.y, 1);
-    };
-    const glm::vec3 red(1.0f, 0.0f, 0.0f), green(0.0f, 1.0f, 0.0f);
-    const auto near = [](glm::vec3 a, glm::vec3 b) { return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(0.05f))); };
-    EXPECT_TRUE(near(colourAt(-0.6f - 0.25f), red));
-    EXPECT_TRUE(near(colourAt(-0.6f + 0.25f), green));
-    const glm::vec3 shiftedAt025 = colourAt(0.6f - 0.25f), shiftedAt075 = colourAt(0.6f + 0.25f);
-    EXPECT_TRUE(near(shiftedAt025, green)) << "u 0.25 + 0.5: " << shiftedAt025.r << " " << shiftedAt025.g;
-    EXPECT_TRUE(near(shiftedAt075, red)) << "u 0.75 + 0.5 repeats to 0.25: " << shiftedAt075.r << " " << shiftedAt075.g;
-}
-
 }  // namespace
 }  // namespace lit::test
