@@ -5,9 +5,11 @@
 #include <exception>
 #include <utility>
 
+#include "RenderSettings.h"
 #include "SaveAsName.h"
 #include "panels/LoadingWindow.h"
 #include "scene/GltfWriter.h"
+#include "scene/SceneMemory.h"
 
 namespace lit::editor {
 
@@ -24,10 +26,16 @@ std::string displayName(const std::filesystem::path& file) {
     return file.empty() ? std::string("untitled") : file.filename().string();
 }
 
-// What a scene opened in this run may make the loader read (--allow-external-uris).
+// What a scene opened in this run may make the loader read (--allow-external-uris), and the
+// memory it may need with the default render settings (its sidecar's come with it), under the
+// limit lit-render uses ($LIT_MAX_RENDER_MB or the default): checked before decoding.
 GltfLimits loadLimits(const EditorOptions& options) {
     GltfLimits limits;
     limits.allowExternalUris = options.allowExternalUris;
+    const MemoryLimit memory = renderMemoryLimit();
+    limits.memoryBudgetBytes = memory.bytes;
+    limits.memoryBudgetSource = memory.source;
+    limits.render = RenderFootprint::of(RenderSettings{});
     return limits;
 }
 

@@ -3,6 +3,7 @@
 #include "io/GltfFile.h"
 #include "scene/GltfLoader.h"
 #include "scene/Scene.h"
+#include "scene/SceneMemory.h"
 
 #include <stb_image.h>
 #include <tiny_gltf.h>
@@ -40,11 +41,6 @@ std::string megabytes(std::uint64_t bytes) {
 
 std::uint64_t saturatingAdd(std::uint64_t a, std::uint64_t b) {
     return a > std::numeric_limits<std::uint64_t>::max() - b ? std::numeric_limits<std::uint64_t>::max() : a + b;
-}
-
-std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b) {
-    if (a != 0 && b > std::numeric_limits<std::uint64_t>::max() / a) return std::numeric_limits<std::uint64_t>::max();
-    return a * b;
 }
 
 std::uint32_t readLittleEndian32(const unsigned char* p) {
@@ -536,7 +532,7 @@ void checkMemoryBudget(const fs::path& file, const tinygltf::Model& model, const
     };
     // Geometry as the scene builder makes it: every primitive on its own (primitives that share
     // accessors are built once each), unwelded to one vertex per index when normals are computed.
-    std::uint64_t geometryBytes = 0;
+    std::uint64_t geometryVertices = 0, geometryIndices = 0;
     std::size_t primitives = 0;
     for (const tinygltf::Mesh& mesh : model.meshes)
         for (const tinygltf::Primitive& primitive : mesh.primitives) {
@@ -544,13 +540,19 @@ void checkMemoryBudget(const fs::path& file, const tinygltf::Model& model, const
             const auto position = primitive.attributes.find("POSITION");
             const std::uint64_t vertices = position == primitive.attributes.end() ? 0 : count(position->second);
             const std::uint64_t indices = primitive.indices >= 0 ? count(primitive.indices) : vertices;
-            geometryBytes = saturatingAdd(geometryBytes, saturatingMul(std::max(vertices, indices), sizeof(Vertex)));
-            geometryBytes = saturatingAdd(geometryBytes, saturatingMul(indices, sizeof(std::uint32_t)));
+            geometryVertices = saturatingAdd(geometryVertices, std::max(vertices, indices));
+            geometryIndices = saturatingAdd(geometryIndices, indices);
         }
 
-    // Decoded images (RGBA8), each distinct image once; the size comes from its header.
-    std::uint64_t textureBytes = 0, largestImage = 0;
-    std::size_t decoded = 0, largestIndex = 0;
+    // Images Lit decodes (each distinct image once, its size from its header) and which of them a
+    // texture uses (then GpuScene uploads it, once however many textures share it).
+    std::vector<std::uint8_t> textured(model.images.size(), 0);
+    for (const tinygltf::Texture& texture : model.textures)
+        if (texture.source >= 0 && static_cast<std::size_t>(texture.source) < model.images.size())
+            textured[static_cast<std::size_t>(images.canonical(texture.source))] = 1;
+    std::vector<ImageExtent> extents;
+    std::uint64_t largestImage = 0;
+    std::size_t largestIndex = 0;
     for (std::size_t i = 0; i < model.images.size(); ++i) {
         if (images.canonical(static_cast<int>(i)) != static_cast<int>(i)) continue;
         const std::vector<unsigned char>& encoded = model.images[i].image;
@@ -558,28 +560,29 @@ void checkMemoryBudget(const fs::path& file, const tinygltf::Model& model, const
         if (encoded.empty() || encoded.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
             !stbi_info_from_memory(encoded.data(), static_cast<int>(encoded.size()), &width, &height, &channels))
             continue;  // not decodable: becomes 1×1 white
-        ++decoded;
-        const std::uint64_t bytes = saturatingMul(saturatingMul(static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(height)), 4);
+        extents.push_back({width, height, textured[i] != 0});
+        const std::uint64_t bytes = textureBytesWithMips(width, height);
         if (bytes > largestImage) {
             largestImage = bytes;
             largestIndex = i;
         }
-        textureBytes = saturatingAdd(textureBytes, bytes);
     }
 
-    const std::uint64_t total = saturatingAdd(geometryBytes, textureBytes);
-    if (total <= limits.memoryBudgetBytes) return;
-    std::string message = "the scene needs " + megabytes(total) + " of memory, more than the budget of " +
-                          megabytes(limits.memoryBudgetBytes) + ": ";
-    if (geometryBytes >= textureBytes) {
-        message += "geometry of " + std::to_string(primitives) + " primitives takes " + megabytes(geometryBytes) +
-                   " (decoded textures " + megabytes(textureBytes) + ")";
-    } else {
-        message += std::to_string(decoded) + " decoded textures take " + megabytes(textureBytes) + ", the largest image " +
-                   std::to_string(largestIndex) + " alone " + megabytes(largestImage) + " (geometry " +
-                   megabytes(geometryBytes) + ")";
-    }
-    fail(file, message);
+    const SceneMemory memory = estimateSceneMemory(extents, geometryVertices, geometryIndices, limits.render);
+    const std::optional<std::string> over =
+        overMemoryLimit(memory, {limits.memoryBudgetBytes, limits.memoryBudgetSource});
+    if (!over) return;
+    // Where the file's images or geometry are the largest part, name what is behind it: the
+    // largest image, or the primitive count (the render settings' parts speak for themselves).
+    const std::uint64_t imageBytes = memory.textures + memory.decodedImages;
+    const std::uint64_t renderBytes = std::max({memory.voxels, memory.rayHits, memory.targets});
+    std::string cause;
+    if (imageBytes >= memory.geometry && imageBytes >= renderBytes && !extents.empty())
+        cause = "; " + std::to_string(extents.size()) + " distinct images, the largest image " +
+                std::to_string(largestIndex) + " alone " + formatBytes(largestImage, memory.total()) + " with mipmaps";
+    else if (memory.geometry > imageBytes && memory.geometry >= renderBytes)
+        cause = "; geometry of " + std::to_string(primitives) + " primitives";
+    fail(file, *over + cause);
 }
 
 }  // namespace lit

@@ -15,6 +15,8 @@
 // Every failure throws SceneLoadError (scene/GltfLoader.h) whose one-line message starts with
 // the file's path. The numbers, and why they are what they are: docs/RELIABILITY.md.
 
+#include "scene/SceneMemory.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -45,11 +47,15 @@ struct GltfLimits {
     // about 100-200 bytes per value, so 8 M values bound their memory to ~1.5 GB. Real scenes
     // stay far below (Sponza: ~30 k, a 100 k-node city: ~3 M).
     std::uint64_t maxJsonValues = 8'000'000;
-    // Decoded textures (RGBA8) plus built geometry (48-byte vertices, 4-byte indices), and
-    // separately the bytes read for buffers and encoded images. Sponza needs ~0.3 GB; 4 GiB
-    // leaves room for large scenes and keeps an amplifying file (many entries, one blob of
-    // data) from exhausting memory.
-    std::uint64_t memoryBudgetBytes = 4ull << 30;
+    // Everything Lit allocates to show the scene (scene/SceneMemory.h: decoded images, their GL
+    // textures with mips, geometry on the CPU and in GL buffers, and what `render` adds), and
+    // separately the bytes read for buffers and encoded images. Front ends set it with
+    // renderMemoryLimit ($LIT_MAX_RENDER_MB) and name its source for the message.
+    std::uint64_t memoryBudgetBytes = kDefaultSceneMemoryLimit;
+    std::string memoryBudgetSource = kDefaultSceneMemoryLimitSource;
+    // What the front end's render settings add (voxel volumes, ray hits, render targets); zero
+    // counts the scene alone.
+    RenderFootprint render{};
     // Buffer and image URIs may point outside the scene's folder (absolute paths, "..", file:).
     // Off: a file from the internet cannot read arbitrary files of the user. (Images may still use
     // a relative path that goes up, "../textures/a.png", as Lit's Save As writes: see GltfGuard.cpp.)
@@ -119,9 +125,10 @@ private:
     std::size_t duplicates_ = 0;
 };
 
-// Step 5, part 2: the decoded size of every image that will be decoded (from its header, without
-// decoding) and of the geometry the builder will make, against limits.memoryBudgetBytes. Throws
-// SceneLoadError naming what exceeded the budget.
+// Step 5, part 2: everything the scene will take once loaded and uploaded (estimateSceneMemory:
+// image sizes from their headers, without decoding; the geometry the builder will make;
+// limits.render), against limits.memoryBudgetBytes. Throws SceneLoadError with the figures, the
+// limit and its source, and the largest image or the primitive count behind them.
 void checkMemoryBudget(const std::filesystem::path& file, const tinygltf::Model& model,
                        const ImageDeduplicator& images, const GltfLimits& limits);
 

@@ -73,6 +73,7 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
     } else {
         for (const DrawItem& item : items) drawOne(item);
     }
+    GpuScene::unbindMaterialSamplers();
     glDisable(GL_FRAMEBUFFER_SRGB);
 }
 

@@ -3,6 +3,7 @@
 #include "Log.h"
 #include "gl/Shader.h"
 #include "scene/Scene.h"
+#include "scene/SceneMemory.h"
 
 #include <shared.h>
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -17,7 +19,7 @@ namespace lit {
 
 namespace {
 
-gl::Texture uploadImage(const Image& image, const Texture& sampler, const std::string& label) {
+gl::Texture uploadImage(const Image& image, const std::string& label) {
     const int levels = gl::Texture::mipCount(image.width, image.height);
     gl::Texture texture(label, {GL_TEXTURE_2D, image.srgb ? GLenum(GL_SRGB8_ALPHA8) : GLenum(GL_RGBA8), image.width,
                                 image.height, 1, levels});
@@ -25,16 +27,45 @@ gl::Texture uploadImage(const Image& image, const Texture& sampler, const std::s
     glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
                         image.rgba.data());
     glGenerateTextureMipmap(texture.id());
-    // glTF sampler values are GL enums; always trilinear when minification asks for mipmaps.
-    const bool mipFilter = sampler.minFilter == GL_NEAREST_MIPMAP_NEAREST || sampler.minFilter == GL_LINEAR_MIPMAP_NEAREST ||
-                           sampler.minFilter == GL_NEAREST_MIPMAP_LINEAR || sampler.minFilter == GL_LINEAR_MIPMAP_LINEAR;
-    texture.setFilter(mipFilter || sampler.minFilter == 0 ? GL_LINEAR_MIPMAP_LINEAR : GLenum(sampler.minFilter),
-                      sampler.magFilter == GL_NEAREST ? GL_NEAREST : GL_LINEAR);
-    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, sampler.wrapS);
-    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, sampler.wrapT);
-    if (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
-        glTextureParameterf(texture.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
     return texture;
+}
+
+// The GL sampler state of a glTF sampler, as GpuScene sets it: always trilinear when
+// minification asks for mipmaps (or leaves it to the renderer), the file's choice otherwise.
+struct SamplerState {
+    GLint wrapS = GL_REPEAT, wrapT = GL_REPEAT;
+    GLint minFilter = GL_LINEAR_MIPMAP_LINEAR, magFilter = GL_LINEAR;
+    auto operator<=>(const SamplerState&) const = default;
+};
+
+GLint glWrap(int wrap) {
+    return wrap == GL_CLAMP_TO_EDGE || wrap == GL_MIRRORED_REPEAT ? GLint(wrap) : GLint(GL_REPEAT);
+}
+
+SamplerState samplerStateOf(const Texture& texture) {
+    const int min = texture.minFilter;
+    const bool mipFilter = min == GL_NEAREST_MIPMAP_NEAREST || min == GL_LINEAR_MIPMAP_NEAREST ||
+                           min == GL_NEAREST_MIPMAP_LINEAR || min == GL_LINEAR_MIPMAP_LINEAR;
+    SamplerState state;
+    state.wrapS = glWrap(texture.wrapS);
+    state.wrapT = glWrap(texture.wrapT);
+    state.minFilter = mipFilter || (min != GL_NEAREST && min != GL_LINEAR) ? GLint(GL_LINEAR_MIPMAP_LINEAR) : GLint(min);
+    state.magFilter = texture.magFilter == GL_NEAREST ? GL_NEAREST : GL_LINEAR;
+    return state;
+}
+
+gl::Sampler makeSampler(const SamplerState& state, std::size_t index) {
+    gl::Sampler sampler("material sampler " + std::to_string(index));
+    sampler.set(GL_TEXTURE_WRAP_S, state.wrapS);
+    sampler.set(GL_TEXTURE_WRAP_T, state.wrapT);
+    sampler.set(GL_TEXTURE_MIN_FILTER, state.minFilter);
+    sampler.set(GL_TEXTURE_MAG_FILTER, state.magFilter);
+    // Only for filtered samplers: a file that asks for nearest texels (pixel art, lookup tables)
+    // gets them, and llvmpipe's anisotropic filter blends texels even under GL_NEAREST.
+    if (state.magFilter == GL_LINEAR && state.minFilter == GL_LINEAR_MIPMAP_LINEAR &&
+        epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
+        glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
+    return sampler;
 }
 
 gpu::GpuMaterial toGpu(const Material& m) {
@@ -119,16 +150,19 @@ GpuScene::GpuScene(const Scene& scene, Log& log, std::uint32_t maxChunkTriangles
     attribute(2, 2, offsetof(Vertex, uv));
     attribute(3, 4, offsetof(Vertex, tangent));
 
-    // Textures.
+    // Textures: each image once, however many textures use it; each distinct sampler once.
     whiteTexture_ = gl::Texture("white 1x1", {GL_TEXTURE_2D, GL_RGBA8, 1, 1, 1, 1});
     const std::uint8_t white[4] = {255, 255, 255, 255};
     glTextureSubImage2D(whiteTexture_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
-    std::size_t textureBytes = 0;
     // An image wider or taller than the driver's limit cannot be a texture (glTextureStorage2D
     // fails with GL_INVALID_VALUE): checked here, before the upload, so that it is one warning
     // naming the image instead of a GL error.
     GLint maxTextureSide = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSide);
+    images_.resize(scene.images.size());
+    std::vector<std::uint8_t> imageTried(scene.images.size(), 0);
+    std::map<SamplerState, GLuint> samplerIds;
+    textures_.reserve(scene.textures.size());
     for (std::size_t t = 0; t < scene.textures.size(); ++t) {
         const Texture& tex = scene.textures[t];
         const bool valid = tex.image >= 0 && static_cast<std::size_t>(tex.image) < scene.images.size() &&
@@ -138,21 +172,37 @@ GpuScene::GpuScene(const Scene& scene, Log& log, std::uint32_t maxChunkTriangles
             textures_.emplace_back();
             continue;
         }
-        const Image& image = scene.images[static_cast<std::size_t>(tex.image)];
-        if (image.width > maxTextureSide || image.height > maxTextureSide) {
-            log.warning("texture " + std::to_string(t) + ": image " + std::to_string(tex.image) +
-                        (image.name.empty() ? "" : " ('" + image.name + "')") + " is " + std::to_string(image.width) +
-                        "x" + std::to_string(image.height) + ", larger than this GL's limit of " +
-                        std::to_string(maxTextureSide) + " pixels a side; using a neutral texture");
+        const auto imageIndex = static_cast<std::size_t>(tex.image);
+        const Image& image = scene.images[imageIndex];
+        if (!imageTried[imageIndex]) {
+            imageTried[imageIndex] = 1;
+            if (image.width > maxTextureSide || image.height > maxTextureSide) {
+                log.warning("image " + std::to_string(tex.image) + (image.name.empty() ? "" : " ('" + image.name + "')") +
+                            " is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                            ", larger than this GL's limit of " + std::to_string(maxTextureSide) +
+                            " pixels a side; its textures use a neutral texture");
+            } else {
+                images_[imageIndex] =
+                    uploadImage(image, image.name.empty() ? "image " + std::to_string(imageIndex) : image.name);
+                textureBytes_ += textureBytesWithMips(image.width, image.height);
+            }
+        }
+        if (!images_[imageIndex]) {
             textures_.emplace_back();
             continue;
         }
-        textures_.push_back(uploadImage(image, tex, image.name.empty() ? "texture " + std::to_string(t) : image.name));
-        textureBytes += image.rgba.size() * 4 / 3;
+        const SamplerState state = samplerStateOf(tex);
+        auto found = samplerIds.find(state);
+        if (found == samplerIds.end()) {
+            samplers_.push_back(makeSampler(state, samplers_.size()));
+            found = samplerIds.emplace(state, samplers_.back().id()).first;
+        }
+        textures_.push_back({images_[imageIndex].id(), found->second});
     }
     if (!scene.textures.empty())
-        log.info("uploaded " + std::to_string(scene.textures.size()) + " textures (" +
-                 std::to_string(textureBytes / (1024 * 1024)) + " MB with mipmaps)");
+        log.info("uploaded " + std::to_string(imageTextureCount()) + " images for " +
+                 std::to_string(scene.textures.size()) + " textures with " + std::to_string(samplers_.size()) +
+                 " samplers (" + std::to_string(textureBytes_ / (1024 * 1024)) + " MB with mipmaps)");
     updateMaterials(scene);
 }
 
@@ -160,17 +210,18 @@ void GpuScene::updateMaterials(const Scene& scene) {
     std::vector<gpu::GpuMaterial> table;
     table.reserve(scene.materials.size() + 1);
     materialTextures_.clear();
-    const auto textureId = [this](int index) -> GLuint {
-        if (index < 0 || static_cast<std::size_t>(index) >= textures_.size()) return 0;
-        return textures_[static_cast<std::size_t>(index)].id();
+    const auto textureId = [this](int index) -> TextureBinding {
+        if (index < 0 || static_cast<std::size_t>(index) >= textures_.size()) return {};
+        return textures_[static_cast<std::size_t>(index)];
     };
     for (const Material& m : scene.materials) {
         gpu::GpuMaterial g = toGpu(m);
         MaterialTextures t{textureId(m.baseColorTexture), textureId(m.metallicRoughnessTexture),
                            textureId(m.normalTexture), textureId(m.emissiveTexture), textureId(m.occlusionTexture)};
         // A texture that failed to load must not be sampled as if present.
-        g.textures = glm::ivec4(t.baseColor != 0, t.metallicRoughness != 0, t.normal != 0, t.emissive != 0);
-        g.modes.x = t.occlusion != 0;
+        g.textures = glm::ivec4(t.baseColor.texture != 0, t.metallicRoughness.texture != 0, t.normal.texture != 0,
+                                t.emissive.texture != 0);
+        g.modes.x = t.occlusion.texture != 0;
         table.push_back(g);
         materialTextures_.push_back(t);
     }
@@ -186,12 +237,28 @@ void GpuScene::updateMaterials(const Scene& scene) {
 void GpuScene::bindMaterialTextures(int material, Bind bind) const {
     const MaterialTextures& t = materialTextures_[static_cast<std::size_t>(material)];
     const GLuint white = whiteTexture_.id();
-    glBindTextureUnit(LIT_TEX_BASE_COLOR, t.baseColor ? t.baseColor : white);
+    // Sampler 0 leaves the white texture's own parameters in force.
+    const auto bindSlot = [white](GLuint unit, const TextureBinding& slot) {
+        glBindTextureUnit(unit, slot.texture ? slot.texture : white);
+        glBindSampler(unit, slot.texture ? slot.sampler : 0);
+    };
+    bindSlot(LIT_TEX_BASE_COLOR, t.baseColor);
     if (bind == Bind::AlphaOnly) return;
-    glBindTextureUnit(LIT_TEX_METALLIC_ROUGHNESS, t.metallicRoughness ? t.metallicRoughness : white);
-    glBindTextureUnit(LIT_TEX_NORMAL, t.normal ? t.normal : white);
-    glBindTextureUnit(LIT_TEX_EMISSIVE, t.emissive ? t.emissive : white);
-    glBindTextureUnit(LIT_TEX_OCCLUSION, t.occlusion ? t.occlusion : white);
+    bindSlot(LIT_TEX_METALLIC_ROUGHNESS, t.metallicRoughness);
+    bindSlot(LIT_TEX_NORMAL, t.normal);
+    bindSlot(LIT_TEX_EMISSIVE, t.emissive);
+    bindSlot(LIT_TEX_OCCLUSION, t.occlusion);
+}
+
+void GpuScene::unbindMaterialSamplers() {
+    for (const GLuint unit : {LIT_TEX_BASE_COLOR, LIT_TEX_METALLIC_ROUGHNESS, LIT_TEX_NORMAL, LIT_TEX_EMISSIVE,
+                              LIT_TEX_OCCLUSION})
+        glBindSampler(unit, 0);
+}
+
+std::size_t GpuScene::imageTextureCount() const {
+    return static_cast<std::size_t>(
+        std::count_if(images_.begin(), images_.end(), [](const gl::Texture& t) { return static_cast<bool>(t); }));
 }
 
 void GpuScene::drawList(const Scene& scene, const gl::Program& program, Bind bind, DrawCounters& counters,
@@ -202,6 +269,7 @@ void GpuScene::drawList(const Scene& scene, const gl::Program& program, Bind bin
         assert(index < items_.size() && "drawList: item index out of range (a culling result of another scene?)");
         if (index < items_.size()) drawItem(scene, items_[index], program, bind, counters);
     }
+    unbindMaterialSamplers();
 }
 
 int GpuScene::materialRow(const DrawItem& item) const {
@@ -213,10 +281,11 @@ int GpuScene::materialRow(const DrawItem& item) const {
 unsigned GpuScene::materialTextureMask(const DrawItem& item) const {
     if (materialTextures_.empty()) return 0;
     const MaterialTextures& t = materialTextures_[static_cast<std::size_t>(materialRow(item))];
-    return (t.baseColor ? LIT_MATERIAL_TEXTURE_BASE_COLOR : 0u) |
-           (t.metallicRoughness ? LIT_MATERIAL_TEXTURE_METALLIC_ROUGHNESS : 0u) |
-           (t.normal ? LIT_MATERIAL_TEXTURE_NORMAL : 0u) | (t.emissive ? LIT_MATERIAL_TEXTURE_EMISSIVE : 0u) |
-           (t.occlusion ? LIT_MATERIAL_TEXTURE_OCCLUSION : 0u);
+    return (t.baseColor.texture ? LIT_MATERIAL_TEXTURE_BASE_COLOR : 0u) |
+           (t.metallicRoughness.texture ? LIT_MATERIAL_TEXTURE_METALLIC_ROUGHNESS : 0u) |
+           (t.normal.texture ? LIT_MATERIAL_TEXTURE_NORMAL : 0u) |
+           (t.emissive.texture ? LIT_MATERIAL_TEXTURE_EMISSIVE : 0u) |
+           (t.occlusion.texture ? LIT_MATERIAL_TEXTURE_OCCLUSION : 0u);
 }
 
 void GpuScene::drawItem(const Scene& scene, const DrawItem& item, const gl::Program& program, Bind bind,

@@ -1,7 +1,10 @@
 #pragma once
-// The GPU copy of a Scene: one vertex and one index buffer for all primitives, one texture per
-// image (sRGB or linear by use, mipmapped), and the material table as an SSBO. Passes draw
-// through it; they never touch the CPU Scene's vectors directly.
+// The GPU copy of a Scene: one vertex and one index buffer for all primitives, one GL texture per
+// image that a texture uses (sRGB or linear by use, mipmapped), one GL sampler object per distinct
+// wrap/filter combination, and the material table as an SSBO. A glTF texture is an (image,
+// sampler) pair and costs no texture memory of its own: a file whose 100,000 textures share one
+// image uploads one image. Passes draw through it; they never touch the CPU Scene's vectors
+// directly.
 
 #include "gl/Objects.h"
 #include "scene/Aabb.h"
@@ -58,7 +61,8 @@ public:
     enum class Bind { Everything, AlphaOnly };
 
     // Draws every item (optionally filtered) with `program` bound by the caller. Sets the
-    // uniforms uModel, uNormalMatrix, uMaterialIndex and binds the material's textures.
+    // uniforms uModel, uNormalMatrix, uMaterialIndex and binds the material's textures and their
+    // samplers; the samplers are unbound again at the end (unbindMaterialSamplers).
     template <typename Filter>
     void draw(const Scene& scene, const gl::Program& program, Bind bind, DrawCounters& counters, Filter&& keep) const;
     void draw(const Scene& scene, const gl::Program& program, Bind bind, DrawCounters& counters) const {
@@ -80,9 +84,20 @@ public:
 
     // Binds the vertex array (call once before a batch of draws).
     void bindGeometry() const { vertexArray_.bind(); }
-    // Issues one draw with per-draw uniforms and textures.
+    // Issues one draw with per-draw uniforms, textures and samplers. A caller that draws items
+    // itself calls unbindMaterialSamplers() after its last one, so that a texture bound later to
+    // the material units samples with its own parameters.
     void drawItem(const Scene& scene, const DrawItem& item, const gl::Program& program, Bind bind,
                   DrawCounters& counters) const;
+
+    // Unbinds the sampler objects of the material texture units (LIT_TEX_BASE_COLOR..OCCLUSION).
+    static void unbindMaterialSamplers();
+
+    // What the upload made: GL textures (one per image a texture uses), sampler objects (one per
+    // distinct wrap/filter combination) and the bytes of the textures' mip chains.
+    std::size_t imageTextureCount() const;
+    std::size_t samplerCount() const { return samplers_.size(); }
+    std::uint64_t textureBytes() const { return textureBytes_; }
 
 private:
     void bindMaterialTextures(int material, Bind bind) const;
@@ -93,11 +108,20 @@ private:
     gl::Buffer indices_;
     gl::VertexArray vertexArray_;
     gl::Buffer materials_;
-    std::vector<gl::Texture> textures_;     // per Scene::textures entry (may be a fallback)
-    gl::Texture whiteTexture_;              // bound where a material has no texture
+    std::vector<gl::Texture> images_;      // per Scene::images entry; empty where no texture uses it or it is unusable
+    std::vector<gl::Sampler> samplers_;    // one per distinct wrap/filter combination
+    // Per Scene::textures entry: its GL texture (0: unusable, the material falls back) and sampler.
+    struct TextureBinding {
+        GLuint texture = 0;
+        GLuint sampler = 0;
+    };
+    std::vector<TextureBinding> textures_;
+    std::uint64_t textureBytes_ = 0;
+    gl::Texture whiteTexture_;             // bound where a material has no texture
     std::vector<DrawItem> items_;
+    // Per material slot, in the order base colour, metallic-roughness, normal, emissive, occlusion.
     struct MaterialTextures {
-        GLuint baseColor = 0, metallicRoughness = 0, normal = 0, emissive = 0, occlusion = 0;
+        TextureBinding baseColor, metallicRoughness, normal, emissive, occlusion;
     };
     std::vector<MaterialTextures> materialTextures_;  // per material, + default at the end
 };
@@ -109,6 +133,7 @@ void GpuScene::draw(const Scene& scene, const gl::Program& program, Bind bind, D
     bindGeometry();
     for (const DrawItem& item : items_)
         if (keep(item)) drawItem(scene, item, program, bind, counters);
+    unbindMaterialSamplers();
 }
 
 }  // namespace lit

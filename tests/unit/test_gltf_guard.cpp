@@ -366,8 +366,10 @@ TEST(GltfGuard, DecodedTexturesOverTheBudgetNameTheImage) {
     GltfLoadOptions options;
     options.limits.memoryBudgetBytes = 2'000'000;
     const std::string message = loadError(writeScene(dir, "budget.gltf", doc), options);
-    EXPECT_CONTAINS(message, "more than the budget of 2 MB");
-    EXPECT_CONTAINS(message, "the largest image 0 alone 4 MB");
+    // 4.2 MB decoded, 5.6 MB as a GL texture with its mips (scene/SceneMemory.h).
+    EXPECT_CONTAINS(message, "scene needs 9.8 MB of memory (textures 5.6 MB, decoded images 4.2 MB, geometry 0.0 MB)");
+    EXPECT_CONTAINS(message, "over the limit of 2.0 MB");
+    EXPECT_CONTAINS(message, "the largest image 0 alone 5.6 MB with mipmaps");
 }
 
 TEST(GltfGuard, GeometryOverTheBudgetNamesThePrimitives) {
@@ -375,7 +377,8 @@ TEST(GltfGuard, GeometryOverTheBudgetNamesThePrimitives) {
     GltfLoadOptions options;
     options.limits.memoryBudgetBytes = 100'000;  // one primitive: 3 × 48 + 3 × 4 = 156 bytes
     const std::string message = loadError(writeScene(dir, "prims.gltf", triangleDoc("tri.bin", 1000)), options);
-    EXPECT_CONTAINS(message, "geometry of 1000 primitives takes");
+    EXPECT_CONTAINS(message, "scene needs 312.0 kB of memory (geometry 312.0 kB), over the limit of 100.0 kB");
+    EXPECT_CONTAINS(message, "; geometry of 1000 primitives");
     QuietLog log;
     EXPECT_EQ(loadGltf(writeScene(dir, "few.gltf", triangleDoc("tri.bin", 100)), log, options).meshes[0].primitives.size(), 100u);
 }

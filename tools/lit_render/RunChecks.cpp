@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 namespace lit::cli {
@@ -15,17 +16,6 @@ namespace lit::cli {
 namespace fs = std::filesystem;
 
 namespace {
-
-// The memory a render at this size needs, estimated before any of it is allocated: 64 bytes per
-// pixel (G-buffer, lighting and output targets plus the read-back copies; a 16384² render
-// measured 17.5 GB) and 21 bytes per voxel (RGBA16F radiance with its mip chain plus the RGBA8
-// albedo, normal and emission volumes).
-std::uint64_t estimatedRenderBytes(const RenderSettings& settings) {
-    const auto pixels =
-        static_cast<std::uint64_t>(settings.output.width) * static_cast<std::uint64_t>(settings.output.height);
-    const auto side = static_cast<std::uint64_t>(settings.gi.voxelResolution);
-    return pixels * 64 + (settings.gi.enabled ? side * side * side * 21 : 0);
-}
 
 // Bytes the GL can still give: system memory for a software rasterizer (llvmpipe renders into
 // RAM), free video memory where the driver says (NVX_gpu_memory_info); 0 = unknown.
@@ -50,7 +40,7 @@ std::uint64_t availableRenderBytes() {
 
 }  // namespace
 
-void checkRenderLimits(const RenderSettings& settings) {
+void checkRenderLimits(const RenderSettings& settings, const Scene& scene) {
     GLint maxTexture = 0, maxRenderbuffer = 0, maxWidth = 0, maxHeight = 0, max3d = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
@@ -67,18 +57,17 @@ void checkRenderLimits(const RenderSettings& settings) {
         throw UsageError(std::to_string(settings.gi.voxelResolution) +
                          "^3 voxels are more than this GL's 3D textures hold (" + std::to_string(max3d) +
                          " per side, 2N needed)");
-    const std::uint64_t needed = estimatedRenderBytes(settings);
-    std::uint64_t available = availableRenderBytes();
-    // $LIT_MAX_RENDER_MB caps it further (a shared machine, a CI runner).
-    if (const char* cap = std::getenv("LIT_MAX_RENDER_MB"); cap && *cap) {
-        const std::uint64_t capBytes = std::strtoull(cap, nullptr, 10) * 1'000'000ull;
-        if (capBytes > 0 && (available == 0 || capBytes < available)) available = capBytes;
-    }
-    if (available > 0 && needed > available)
-        throw UsageError("a " + std::to_string(settings.output.width) + "x" + std::to_string(settings.output.height) +
-                         " render with " + std::to_string(settings.gi.voxelResolution) + "^3 voxels needs about " +
-                         std::to_string(needed / 1'000'000) + " MB, more than the " +
-                         std::to_string(available / 1'000'000) + " MB available; use a smaller --size or --voxels");
+    // Everything the scene and the render take (the loader checked the same figure against
+    // renderMemoryLimit() before decoding). What this GL can still give is compared with what is
+    // yet to be allocated: the decoded images and the CPU half of the geometry are already in
+    // memory (and no longer in MemAvailable).
+    const SceneMemory needed = estimateSceneMemory(scene, RenderFootprint::of(settings));
+    const std::uint64_t resident = needed.decodedImages + needed.geometry / 2;
+    MemoryLimit limit = renderMemoryLimit();
+    if (const std::uint64_t available = availableRenderBytes(); available > 0 && available + resident < limit.bytes)
+        limit = {available + resident, "this machine's available memory"};
+    if (const std::optional<std::string> over = overMemoryLimit(needed, limit))
+        throw UsageError(*over + "; use a smaller --size or --voxels");
 }
 
 void checkWritableFolder(const fs::path& file, const char* what) {

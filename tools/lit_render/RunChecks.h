@@ -6,12 +6,15 @@
 #include <filesystem>
 
 #include "Options.h"
+#include "scene/Scene.h"
+#include "scene/SceneMemory.h"
 
 namespace lit::cli {
 
-// Sizes checked against this GL's limits and memory (needs a current GL context).
-// $LIT_MAX_RENDER_MB caps the memory further (a shared machine, a CI runner).
-void checkRenderLimits(const RenderSettings& settings);
+// Sizes checked against this GL's limits, and what `scene` and the render need in all
+// (estimateSceneMemory, the loader's accounting) against renderMemoryLimit() and this machine's
+// available memory (needs a current GL context).
+void checkRenderLimits(const RenderSettings& settings, const Scene& scene);
 
 // The folder of `file` is created, and a file created and removed in it; `what` names the file
 // in the message ("the output").

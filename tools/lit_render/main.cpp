@@ -33,6 +33,7 @@
 #include "scene/GltfLoader.h"
 #include "scene/Scene.h"
 #include "scene/SceneBuilder.h"
+#include "scene/SceneMemory.h"
 
 namespace lit::cli {
 
@@ -59,10 +60,18 @@ private:
     LoadProgressLines lines_;
 };
 
-lit::Scene loadScene(const Options& options, lit::Log& log, LoadProgressPrinter& progress) {
+lit::Scene loadScene(const Options& options, const lit::RenderSettings& settings, lit::Log& log,
+                     LoadProgressPrinter& progress) {
     try {
         lit::GltfLoadOptions loadOptions;
         loadOptions.limits.allowExternalUris = options.allowExternalUris;
+        // The file is refused before decoding when it and this render need more memory than
+        // $LIT_MAX_RENDER_MB or the default limit (the reference makes no GL textures or voxels,
+        // so only the scene counts there).
+        const lit::MemoryLimit limit = lit::renderMemoryLimit();
+        loadOptions.limits.memoryBudgetBytes = limit.bytes;
+        loadOptions.limits.memoryBudgetSource = limit.source;
+        if (!options.reference) loadOptions.limits.render = lit::RenderFootprint::of(settings);
         loadOptions.progress = [&](const lit::LoadProgress& p) { progress(p); };
         return lit::loadGltf(options.scene, log, loadOptions);  // logs the summary line (meshes, triangles, MB, ms)
     } catch (const std::exception& e) {
@@ -97,7 +106,7 @@ int run(const Options& options) {
     checkOutputFolders(options);
 
     LoadProgressPrinter loadProgress;
-    lit::Scene scene = loadScene(options, log, loadProgress);
+    lit::Scene scene = loadScene(options, settings, log, loadProgress);
     lit::addDefaultCamera(scene, log);
     const int cameraIndex = resolveCamera(options, scene);
     const RunContext context{options, settings, compareTruth ? &*compareTruth : nullptr, log};
@@ -106,7 +115,7 @@ int run(const Options& options) {
 
     lit::HeadlessContext glContext;
     lit::gl::requireCapabilities();
-    checkRenderLimits(settings);
+    checkRenderLimits(settings, scene);
     // GL errors (debug output of high severity) are counted: a render that had any exits 1 and
     // writes nothing, instead of a wrong image with exit 0.
     std::size_t glErrors = 0;

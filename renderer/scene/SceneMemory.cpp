@@ -1,0 +1,161 @@
+#include "scene/SceneMemory.h"
+
+#include "RenderSettings.h"
+#include "gi/RayHitCache.h"
+#include "gi/VoxelVolume.h"
+#include "scene/Scene.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace lit {
+
+namespace {
+
+// Per output pixel: the G-buffer, the lighting terms, the reduced-resolution indirect targets, the
+// output and its read-back copies (a 16384² render measured 17.5 GB, 65 bytes a pixel).
+constexpr std::uint64_t kTargetBytesPerPixel = 64;
+
+std::uint64_t saturatingAdd(std::uint64_t a, std::uint64_t b) {
+    return a > std::numeric_limits<std::uint64_t>::max() - b ? std::numeric_limits<std::uint64_t>::max() : a + b;
+}
+
+std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b) {
+    return b != 0 && a > std::numeric_limits<std::uint64_t>::max() / b ? std::numeric_limits<std::uint64_t>::max() : a * b;
+}
+
+std::uint64_t positive(int n) { return n > 0 ? static_cast<std::uint64_t>(n) : 0; }
+
+}  // namespace
+
+std::uint64_t SceneMemory::total() const {
+    std::uint64_t sum = 0;
+    for (const std::uint64_t part : {decodedImages, textures, geometry, voxels, rayHits, targets})
+        sum = saturatingAdd(sum, part);
+    return sum;
+}
+
+std::string SceneMemory::describe() const {
+    std::array<std::pair<const char*, std::uint64_t>, 6> parts{{{"textures", textures},
+                                                                {"decoded images", decodedImages},
+                                                                {"geometry", geometry},
+                                                                {"voxel volumes", voxels},
+                                                                {"voxel ray hits", rayHits},
+                                                                {"render targets", targets}}};
+    std::stable_sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+    std::string text;
+    bool first = true;
+    for (const auto& [name, bytes] : parts) {
+        if (bytes == 0) continue;
+        text += (first ? "" : ", ") + std::string(name) + " " + formatBytes(bytes, total());
+        first = false;
+    }
+    return first ? "nothing" : text;
+}
+
+RenderFootprint RenderFootprint::of(const RenderSettings& settings) {
+    RenderFootprint footprint;
+    footprint.width = settings.output.width;
+    footprint.height = settings.output.height;
+    if (settings.gi.enabled) {
+        footprint.voxelResolution = settings.gi.voxelResolution;
+        footprint.radianceRgba8 = settings.gi.radianceRgba8;
+        footprint.bounceVolumes = settings.gi.bounces != 1;
+        footprint.voxelRays = std::min(settings.gi.voxelRays, kMaxVoxelRays);
+    }
+    return footprint;
+}
+
+std::uint64_t textureBytesWithMips(int width, int height) {
+    std::uint64_t bytes = 0;
+    std::uint64_t w = positive(width), h = positive(height);
+    if (w == 0 || h == 0) return 0;
+    for (;;) {
+        bytes = saturatingAdd(bytes, saturatingMul(saturatingMul(w, h), 4));
+        if (w == 1 && h == 1) return bytes;
+        w = std::max<std::uint64_t>(1, w / 2);
+        h = std::max<std::uint64_t>(1, h / 2);
+    }
+}
+
+SceneMemory estimateSceneMemory(std::span<const ImageExtent> images, std::uint64_t vertices, std::uint64_t indices,
+                                const RenderFootprint& render) {
+    SceneMemory memory;
+    for (const ImageExtent& image : images) {
+        const std::uint64_t pixels = saturatingMul(positive(image.width), positive(image.height));
+        memory.decodedImages = saturatingAdd(memory.decodedImages, saturatingMul(pixels, 4));
+        if (image.textured) memory.textures = saturatingAdd(memory.textures, textureBytesWithMips(image.width, image.height));
+    }
+    // The Scene keeps its vertices and indices after GpuScene copied them into GL buffers.
+    const std::uint64_t geometry =
+        saturatingAdd(saturatingMul(vertices, sizeof(Vertex)), saturatingMul(indices, sizeof(std::uint32_t)));
+    memory.geometry = saturatingMul(geometry, 2);
+    if (render.voxelResolution > 0) {
+        memory.voxels = voxelVolumeBytes(render.voxelResolution, render.radianceRgba8, render.bounceVolumes);
+        // The hit records grow with the occupied voxels, at most every voxel, and the cache
+        // allocates none beyond its cap (the passes then march instead).
+        if (render.voxelRays > 0) {
+            const std::uint64_t side = positive(render.voxelResolution);
+            const std::uint64_t everyVoxel =
+                saturatingMul(saturatingMul(saturatingMul(side, side), side), 2 * 4 * positive(render.voxelRays));
+            memory.rayHits = std::min<std::uint64_t>(everyVoxel, RayHitCache::kMaxBytes);
+        }
+    }
+    memory.targets = saturatingMul(saturatingMul(positive(render.width), positive(render.height)), kTargetBytesPerPixel);
+    return memory;
+}
+
+SceneMemory estimateSceneMemory(const Scene& scene, const RenderFootprint& render) {
+    std::vector<ImageExtent> images(scene.images.size());
+    for (std::size_t i = 0; i < scene.images.size(); ++i) {
+        images[i].width = scene.images[i].width;
+        images[i].height = scene.images[i].height;
+        images[i].textured = false;
+    }
+    for (const Texture& texture : scene.textures)
+        if (texture.image >= 0 && static_cast<std::size_t>(texture.image) < images.size())
+            images[static_cast<std::size_t>(texture.image)].textured = true;
+    std::uint64_t vertices = 0, indices = 0;
+    for (const Mesh& mesh : scene.meshes)
+        for (const Primitive& primitive : mesh.primitives) {
+            vertices += primitive.vertices.size();
+            indices += primitive.indices.size();
+        }
+    return estimateSceneMemory(images, vertices, indices, render);
+}
+
+MemoryLimit renderMemoryLimit() {
+    // Digits only: strtoull would read "-5" as a huge number.
+    if (const char* cap = std::getenv("LIT_MAX_RENDER_MB"); cap && *cap >= '0' && *cap <= '9') {
+        char* end = nullptr;
+        const unsigned long long megabytes = std::strtoull(cap, &end, 10);
+        if (end && *end == '\0' && megabytes > 0)
+            return {saturatingMul(megabytes, 1'000'000), "LIT_MAX_RENDER_MB"};
+    }
+    return {kDefaultSceneMemoryLimit, kDefaultSceneMemoryLimitSource};
+}
+
+std::optional<std::string> overMemoryLimit(const SceneMemory& memory, const MemoryLimit& limit) {
+    if (limit.bytes == 0 || memory.total() <= limit.bytes) return std::nullopt;
+    return "scene needs " + formatBytes(memory.total(), memory.total()) + " of memory (" + memory.describe() + "), over the limit of " + formatBytes(limit.bytes, limit.bytes) +
+           (limit.source.empty() ? std::string() : " (" + limit.source + ")");
+}
+
+std::string formatBytes(std::uint64_t bytes, std::uint64_t unitOf) {
+    char text[48];
+    const double value = static_cast<double>(bytes);
+    if (unitOf >= 1'000'000'000ull)
+        std::snprintf(text, sizeof text, "%.1f GB", value / 1e9);
+    else if (unitOf >= 1'000'000ull)
+        std::snprintf(text, sizeof text, "%.1f MB", value / 1e6);
+    else
+        std::snprintf(text, sizeof text, "%.1f kB", value / 1e3);
+    return text;
+}
+
+}  // namespace lit
