@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -71,6 +72,16 @@ inline glm::ivec2 projectToPixel(const CameraView& camera, const glm::vec3& worl
 }
 
 inline float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// Mean absolute per-channel difference between a and b, relative to b's mean.
+inline double relativeDifference(const HdrImage& a, const HdrImage& b) {
+    double difference = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+        difference += std::abs(double(a.rgb[i]) - b.rgb[i]);
+        total += b.rgb[i];
+    }
+    return difference / total;
+}
 
 // A headless GL 4.5 context for the duration of one test (each test case runs in its own
 // process). Fixtures that build passes derive from it and return early when it failed.

@@ -103,15 +103,6 @@ protected:
         const double stale = relativeDifference(changed, freshImage);
         return {std::move(freshImage), stale};
     }
-    // Mean absolute per-channel difference between a and b, relative to b's mean.
-    static double relativeDifference(const HdrImage& a, const HdrImage& b) {
-        double difference = 0.0, total = 0.0;
-        for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-            difference += std::abs(double(a.rgb[i]) - b.rgb[i]);
-            total += b.rgb[i];
-        }
-        return difference / total;
-    }
     // The cached mode at 64³, L_ID, 48², one bounce and cones (giSettings' pins).
     static RenderSettings cachedAt64() {
         RenderSettings settings = giSettings(64, View::IndirectDiffuse, 48);

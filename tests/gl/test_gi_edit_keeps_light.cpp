@@ -57,14 +57,6 @@ protected:
             }
         return double(darker) / pixels;
     }
-    static double relativeDifference(const HdrImage& a, const HdrImage& b) {
-        double difference = 0.0, total = 0.0;
-        for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-            difference += std::abs(double(a.rgb[i]) - b.rgb[i]);
-            total += b.rgb[i];
-        }
-        return difference / total;
-    }
 };
 
 // The tall block moved 0.15 m: re-voxelized, its update spread over 8 frames a pass (17 frames in
