@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "Log.h"
+#include "GltfValidator.h"
 #include "TempDir.h"
 #include "scene/GltfLoader.h"
 #include "scene/GltfWriter.h"
@@ -523,32 +524,21 @@ TEST(GltfCompression, GltfTransformOutputLoadsAtTestTime) {
 // The Khronos validator accepts the compressed sources and the uncompressed saves. Skipped
 // without node or the validator (tools/install-gltf-validator.sh).
 TEST(GltfCompression, ValidatorAcceptsTheSourcesAndTheSaves) {
-    const char* env = std::getenv("LIT_GLTF_VALIDATOR_DIR");
-    const char* home = std::getenv("HOME");
-    const char* cache = std::getenv("XDG_CACHE_HOME");
-    const fs::path validatorDir =
-        env && *env
-            ? fs::path(env)
-            : (cache && *cache ? fs::path(cache) : fs::path(home ? home : "") / ".cache") / "lit" / "gltf-validator";
-    if (std::system("node --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "node is not installed: skipped";
-    if (!fs::exists(validatorDir / "node_modules" / "gltf-validator"))
-        GTEST_SKIP() << "gltf-validator not found in " << validatorDir.string()
-                     << " (run tools/install-gltf-validator.sh): skipped";
+    std::string whyNot;
+    const auto validatorDir = lit::testing::findGltfValidator(whyNot);
+    if (validatorDir.empty()) GTEST_SKIP() << whyNot;
     TempDir dir;
     QuietLog log;
-    std::string files;
+    std::vector<fs::path> files;
     for (const char* source : {"point_draco.glb", "point_meshopt.glb", "gltf/point_meshopt.gltf"}) {
         const fs::path path = kData / "compressed" / source;
         std::string stem = path.stem().string();
         saveGltf(loadGltf(path, log), dir / (stem + "_saved.gltf"));
         saveGltf(loadGltf(path, log), dir / (stem + "_saved.glb"));
-        files += " '" + path.string() + "' '" + (dir / (stem + "_saved.gltf")).string() + "' '" +
-                 (dir / (stem + "_saved.glb")).string() + "'";
+        files.insert(files.end(), {path, dir / (stem + "_saved.gltf"), dir / (stem + "_saved.glb")});
     }
-    const std::string command = "node '" + (fs::path(LIT_SOURCE_DIR) / "tools" / "validate_gltf.cjs").string() + "' '" +
-                                validatorDir.string() + "'" + files + " > '" + (dir / "report.txt").string() + "' 2>&1";
-    const int status = std::system(command.c_str());
-    const std::string report = lit::testing::readText(dir / "report.txt");
+    std::string report;
+    const int status = lit::testing::runGltfValidator(validatorDir, files, report, dir / "report.txt");
     std::printf("%s", report.c_str());
     EXPECT_NE(report.find("point_draco.glb: 0 errors"), std::string::npos) << report;
     EXPECT_NE(report.find("point_meshopt.glb: 0 errors"), std::string::npos) << report;

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "GltfValidator.h"
 #include "TempDir.h"
 
 #include "Log.h"
@@ -1181,17 +1182,9 @@ TEST(GltfRoundTrip, SharedScenesComeBackAsTheyWere) {
 // The Khronos validator accepts the saved file (strides, min/max of morph POSITIONs, skins).
 // Skipped without node or the validator (tools/install-gltf-validator.sh). About 1 s.
 TEST(GltfRoundTrip, ValidatorAcceptsTheSavedFile) {
-    const char* env = std::getenv("LIT_GLTF_VALIDATOR_DIR");
-    const char* home = std::getenv("HOME");
-    const char* cache = std::getenv("XDG_CACHE_HOME");
-    const fs::path validatorDir =
-        env && *env
-            ? fs::path(env)
-            : (cache && *cache ? fs::path(cache) : fs::path(home ? home : "") / ".cache") / "lit" / "gltf-validator";
-    if (std::system("node --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "node is not installed: skipped";
-    if (!fs::exists(validatorDir / "node_modules" / "gltf-validator"))
-        GTEST_SKIP() << "gltf-validator not found in " << validatorDir.string()
-                     << " (run tools/install-gltf-validator.sh): skipped";
+    std::string whyNot;
+    const auto validatorDir = lit::testing::findGltfValidator(whyNot);
+    if (validatorDir.empty()) GTEST_SKIP() << whyNot;
     TempDir dir;
     QuietLog log;
     const fs::path source = riggedFile(dir);
@@ -1221,7 +1214,7 @@ TEST(GltfRoundTrip, ValidatorAcceptsTheSavedFile) {
             }
         saveGltf(edited, dir / "shuffled_edited.glb");
     }
-    std::string files;
+    std::vector<fs::path> files;
     for (const char* name : {"rigged.gltf",
                              "saved.gltf",
                              "saved.glb",
@@ -1243,11 +1236,9 @@ TEST(GltfRoundTrip, ValidatorAcceptsTheSavedFile) {
                              "shuffled.gltf",
                              "shuffled_saved.gltf",
                              "shuffled_edited.glb"})
-        files += " '" + (dir / name).string() + "'";
-    const std::string command = "node '" + (fs::path(LIT_SOURCE_DIR) / "tools" / "validate_gltf.cjs").string() + "' '" +
-                                validatorDir.string() + "'" + files + " > '" + (dir / "report.txt").string() + "' 2>&1";
-    const int status = std::system(command.c_str());
-    const std::string report = lit::testing::readText(dir / "report.txt");
+        files.push_back(dir / name);
+    std::string report;
+    const int status = lit::testing::runGltfValidator(validatorDir, files, report, dir / "report.txt");
     std::printf("%s", report.c_str());
     // The source itself must be valid, or the test proves nothing about the writer.
     EXPECT_NE(report.find("rigged.gltf: 0 errors"), std::string::npos) << report;

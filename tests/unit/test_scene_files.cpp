@@ -2,6 +2,7 @@
 // extras, unknown extensions, no invented tangents), camera animations as paths, the sky model
 // on the CPU, the exposure settings, depth ranges for a camera inside a scene, and the Khronos
 // glTF-Validator on what Lit saves (when node and the validator are installed).
+#include "GltfValidator.h"
 #include "TempDir.h"
 
 #include "Log.h"
@@ -291,17 +292,9 @@ TEST(DepthRange, InsideAStructureTheNearPlaneIsMillimetres) {
 // as .gltf and .glb, and the Cornell box. Skipped (with the reason) without node or the
 // validator (tools/install-gltf-validator.sh).
 TEST(GltfValidator, AcceptsSavedFiles) {
-    const char* env = std::getenv("LIT_GLTF_VALIDATOR_DIR");
-    const char* home = std::getenv("HOME");
-    const char* cache = std::getenv("XDG_CACHE_HOME");
-    const std::filesystem::path validatorDir =
-        env && *env ? std::filesystem::path(env)
-                    : (cache && *cache ? std::filesystem::path(cache) : std::filesystem::path(home ? home : "") / ".cache") /
-                          "lit" / "gltf-validator";
-    if (std::system("node --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "node is not installed: skipped";
-    if (!std::filesystem::exists(validatorDir / "node_modules" / "gltf-validator"))
-        GTEST_SKIP() << "gltf-validator not found in " << validatorDir.string()
-                     << " (run tools/install-gltf-validator.sh): skipped";
+    std::string whyNot;
+    const auto validatorDir = lit::testing::findGltfValidator(whyNot);
+    if (validatorDir.empty()) GTEST_SKIP() << whyNot;
     TempDir dir;
     QuietLog log;
     Scene point = loadGltf(blenderDir() / "point.gltf", log);
@@ -309,12 +302,9 @@ TEST(GltfValidator, AcceptsSavedFiles) {
     saveGltf(point, dir / "point.gltf");
     saveGltf(point, dir / "point.glb");
     saveGltf(loadGltf(std::filesystem::path(LIT_SOURCE_DIR) / "assets" / "cornell_box.gltf", log), dir / "cornell.gltf");
-    const std::string command = "node '" + (std::filesystem::path(LIT_SOURCE_DIR) / "tools" / "validate_gltf.cjs").string() +
-                                "' '" + validatorDir.string() + "' '" + (dir / "point.gltf").string() + "' '" +
-                                (dir / "point.glb").string() + "' '" + (dir / "cornell.gltf").string() + "' > '" +
-                                (dir / "report.txt").string() + "' 2>&1";
-    const int status = std::system(command.c_str());
-    const std::string report = readText(dir / "report.txt");
+    std::string report;
+    const int status = lit::testing::runGltfValidator(
+        validatorDir, {dir / "point.gltf", dir / "point.glb", dir / "cornell.gltf"}, report, dir / "report.txt");
     std::printf("%s", report.c_str());
     EXPECT_EQ(status, 0) << report;
     EXPECT_NE(report.find("point.glb: 0 errors"), std::string::npos) << report;
