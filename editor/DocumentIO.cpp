@@ -47,7 +47,7 @@ Document loadScene(const fs::path& sceneFile, const fs::path& documentFile, Log&
     options.progress = progress;
     options.limits = limits;
     Scene scene = loadGltf(sceneFile, log, options);  // logs the summary line
-    addDefaultCamera(scene, log);
+    addDefaultCamera(scene, log, DefaultCameraPlacement::InsideLargestSpace);
     CameraPath path;
     std::vector<std::string> names;
     std::string pathName = kDefaultCameraAnimation;

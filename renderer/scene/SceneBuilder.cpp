@@ -130,14 +130,27 @@ int addCameraNode(Scene& scene, const Camera& camera, const glm::vec3& position,
 
 #include "Log.h"
 #include "scene/CameraView.h"
+#include "scene/OpeningView.h"
 
 namespace lit {
 
-bool addDefaultCamera(Scene& scene, Log& log) {
+bool addDefaultCamera(Scene& scene, Log& log, DefaultCameraPlacement placement) {
     bool added = false;
     if (scene.cameras.empty()) {
         const Aabb bounds = scene.worldBounds();
-        if (!bounds.empty()) {
+        const std::optional<OpeningView> opening = placement == DefaultCameraPlacement::InsideLargestSpace && !bounds.empty()
+                                                       ? findOpeningView(scene)
+                                                       : std::nullopt;
+        if (opening) {
+            Camera camera;
+            camera.name = "default camera";
+            camera.yfov = 1.2f;  // 69°: a room seen from inside needs a wider view than an object
+            camera.znear = 0.05f;
+            camera.zfar = 0.0f;
+            addCameraNode(scene, camera, opening->position, opening->position + opening->forward);
+            log.info("the scene has no cameras: added a default camera inside its largest enclosed space");
+            added = true;
+        } else if (!bounds.empty()) {
             const CameraView framing = frameBounds(bounds, 16.0f / 9.0f);
             Camera camera;
             camera.name = "default camera";

@@ -29,10 +29,17 @@ glm::quat rotationLookingAlong(const glm::vec3& direction);
 namespace lit {
 class Log;
 
-// Gives a scene without cameras a camera framing its bounds (near plane 5 cm, far plane fitted
-// when rendering, so flying inside the scene clips nothing), reported in `log`. Returns true if
-// it added one. Front ends call it after loading. A scene without lights gets no light node: the
-// renderer lights it with a default sun and sky instead (RenderSettings sky fields, scene/Sky.h),
-// which a save does not write into the file.
-bool addDefaultCamera(Scene& scene, Log& log);
+// Where addDefaultCamera puts the camera.
+enum class DefaultCameraPlacement {
+    FramingBounds,       // outside, framing the scene's bounds
+    InsideLargestSpace,  // the opening view (scene/OpeningView.h) when the scene encloses a space, else framing
+};
+
+// Gives a scene without cameras a camera (near plane 5 cm, far plane fitted when rendering, so
+// flying inside the scene clips nothing), reported in `log`. Returns true if it added one. Front
+// ends call it after loading: the editor inside the largest space, lit-render framing. A scene
+// without lights gets no light node: the renderer lights it with a default sun and sky instead
+// (RenderSettings sky fields, scene/Sky.h), which a save does not write into the file.
+bool addDefaultCamera(Scene& scene, Log& log,
+                      DefaultCameraPlacement placement = DefaultCameraPlacement::FramingBounds);
 }  // namespace lit
