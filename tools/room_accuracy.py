@@ -1,7 +1,7 @@
 """Compares renders of the sun room (tests/data/blender/sun_room) over the pixels lit only by
 bounced light; called by tools/room-accuracy.sh, which renders the Lit images.
 
-Usage: room_accuracy.py DIRECT.hdr REFERENCE.hdr NAME=IMAGE.hdr ...
+Usage: room_accuracy.py DIRECT.hdr REFERENCE.hdr [--second-seed REFERENCE2.hdr] NAME=IMAGE.hdr ...
 
 DIRECT is Lit with GI off: a pixel whose direct light is 0 (and whose 8 neighbours' is) is lit
 only by bounced light. REFERENCE is the truth the others are measured against. For each image, over
@@ -13,7 +13,13 @@ those pixels, in luminance (Rec. 709):
              the difference ÷ the reference's mean: what is left of the error once pixel noise
              is averaged away and the level matched. A cloud-like blotch tens of pixels wide
              survives the filter, per-pixel noise mostly does not.
-Prints one markdown table row per image.
+With --second-seed (the reference rendered again with another seed), the reference's own pixel
+noise σ is estimated from the two (RMS of their difference ÷ √2), and each row gets a fourth
+column:
+  RMSE − noise  √(RMSE² − σ²): the image's RMSE against the noise-free truth, the reference's
+             noise taken out of it; and the first line says σ, and what a reference with a quarter
+             of the samples would score (2σ: noise falls as 1/√samples).
+Prints a line on the pixels compared, then one markdown table row per image.
 """
 
 import sys
@@ -69,7 +75,13 @@ def box_filter(values, mask, radius):
 
 
 def main():
-    direct, reference = read_hdr(sys.argv[1]), read_hdr(sys.argv[2])
+    args = sys.argv[1:]
+    second_seed = None
+    if "--second-seed" in args:
+        i = args.index("--second-seed")
+        second_seed = read_hdr(args[i + 1])
+        del args[i:i + 2]
+    direct, reference = read_hdr(args[0]), read_hdr(args[1])
     dark = direct <= 1e-6
     eroded = dark.copy()
     for dy in (-1, 0, 1):
@@ -80,8 +92,14 @@ def main():
     mask[:, 0] = mask[:, -1] = False
     ref_mean = reference[mask].mean()
     ref_smooth = box_filter(reference, mask, 3)
-    print(f"pixels lit only by bounced light: {mask.sum()} of {mask.size}; reference mean {ref_mean:.4f}")
-    for arg in sys.argv[3:]:
+    noise = None
+    line = f"pixels lit only by bounced light: {mask.sum()} of {mask.size}; reference mean {ref_mean:.4f}"
+    if second_seed is not None:
+        noise = np.sqrt(((reference - second_seed)[mask] ** 2).mean() / 2.0) / ref_mean
+        line += (f"; the reference's own noise {100 * noise:.1f} % of its mean (with a quarter of its samples "
+                 f"{200 * noise:.1f} %)")
+    print(line)
+    for arg in args[2:]:
         name, path = arg.split("=", 1)
         image = read_hdr(path)
         if image.shape != reference.shape:
@@ -90,7 +108,11 @@ def main():
         rmse = np.sqrt(((image - reference)[mask] ** 2).mean()) / ref_mean
         smooth = box_filter(image * (ref_mean / max(image[mask].mean(), 1e-12)), mask, 3)
         blotches = np.sqrt(((smooth - ref_smooth)[mask] ** 2).mean()) / ref_mean
-        print(f"| {name} | {image[mask].mean() / ref_mean:.3f} | {100 * rmse:.1f} % | {100 * blotches:.1f} % |")
+        row = f"| {name} | {image[mask].mean() / ref_mean:.3f} | {100 * rmse:.1f} % | {100 * blotches:.1f} % |"
+        if noise is not None:
+            row += f" {100 * np.sqrt(max(rmse ** 2 - noise ** 2, 0.0)):.1f} % |"
+        print(row)
 
 
-main()
+if __name__ == "__main__":
+    main()
