@@ -95,7 +95,7 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_NE(errorOf("setting gi 3\n").find("'gi'"), std::string::npos);
     EXPECT_EQ(errorOf("view shiny\n"), "s.txt:1: unknown view 'shiny'");
     EXPECT_EQ(errorOf("panel sidebar on\n"),
-              "s.txt:1: unknown panel 'sidebar' (hierarchy, inspector, settings, stats, camera, log, timeline)");
+              "s.txt:1: unknown panel 'sidebar' (hierarchy, inspector, settings, stats, stats-details, camera, log, timeline, legend)");
     EXPECT_EQ(errorOf("panel log maybe\n"), "s.txt:1: panel: expected on or off, got 'maybe'");
     EXPECT_EQ(errorOf("pick 10\n"), "s.txt:1: pick: expected X and Y window pixels, got 1 argument");
     EXPECT_EQ(errorOf("pick 10 -2\n"), "s.txt:1: pick: expected a pixel position, got '-2'");
