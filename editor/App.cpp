@@ -444,7 +444,7 @@ void App::drawUi(glm::ivec2 renderSize) {
 
 void App::drawViewLegend(std::string_view viewName) {
     const VoxelVolume* voxels = renderer_->voxels();
-    const ViewLegend legend = describeDebugView({
+    ViewLegend legend = describeDebugView({
         .view = viewName,
         .settings = doc_.settings,
         .scene = doc_.scene,
@@ -453,6 +453,9 @@ void App::drawViewLegend(std::string_view viewName) {
         .volume = voxels ? LegendVolume{voxels->resolution(), voxels->mipCount(), voxels->voxelSize()} : LegendVolume{},
         .coneSurfacePicked = input_.overlayOptions(false).coneSurface.has_value(),
     });
+    // The Difference view's own window carries its colour bar; the view's legend would describe
+    // the picture the difference replaced.
+    if (referenceViewer_.mode() == ReferenceMode::Difference) legend = {};
     uiReport_.area = viewportRect_;
     uiReport_.legendText = legendText(legend);
     uiReport_.legend = glm::vec4(0.0f);
