@@ -404,7 +404,6 @@ void App::drawUi(glm::ivec2 renderSize) {
     const bool keepRemembered = firstFrame && layoutDisplay_ == glm::vec2(display.x, display.y);
     const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(),
                                                   resized && !keepRemembered ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
-    const PanelVisibility shownBefore = visible_;
 
     if (visible_.hierarchy) hierarchyPanel_.draw(doc_, camera_.right(), layout.hierarchy, &visible_.hierarchy);
     if (visible_.inspector) inspectorPanel_.draw(doc_, layout.inspector, &visible_.inspector);
@@ -427,7 +426,6 @@ void App::drawUi(glm::ivec2 renderSize) {
                                     scaleAppliesTo(doc_.scene, doc_.selectedNode), viewName, doc_.selection().size());
     input_.setVisibleArea(viewportRect_);
     drawViewLegend(viewName);
-    if (visible_ != shownBefore) ImGuiLayer::layoutChanged();
     constexpr float kViewportMargin = 8.0f;
     referenceViewer_.drawWindow(ImVec2(viewportRect_.x + viewportRect_.z - kViewportMargin, viewportRect_.y + kViewportMargin),
                                 resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
@@ -440,6 +438,12 @@ void App::drawUi(glm::ivec2 renderSize) {
     handleShortcuts();
     files_.drawQuestions();
     carryOutMenuRequests(menu);
+    // A panel shown or hidden (menu, F2, a close button, the legend's x) is written to the
+    // layout file within seconds, not only at exit.
+    if (visible_ != layoutPanels_) {
+        ImGuiLayer::layoutChanged();
+        layoutPanels_ = visible_;
+    }
 }
 
 void App::drawViewLegend(std::string_view viewName) {

@@ -102,6 +102,7 @@ private:
     // layout file (LayoutFile.h), so declared before the ImGui layer that writes them at exit.
     PanelVisibility visible_;
     glm::vec2 layoutDisplay_{0.0f};
+    PanelVisibility layoutPanels_;  // visible_ as last marked for writing
 
     // GL context holders, in creation order (members are destroyed in reverse, so GL objects go
     // before ImGui, ImGui before the window, the window before glfwTerminate).
