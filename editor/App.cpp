@@ -7,13 +7,16 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <utility>
 
+#include "DebugViewLegend.h"
 #include "EditorViews.h"
 #include "EscapeKey.h"
 #include "FlyController.h"
 #include "GizmoChoice.h"
+#include "LayoutFile.h"
 #include "ProcessMemory.h"
 #include "SceneEdits.h"
 #include "ViewportOverlay.h"
@@ -21,6 +24,7 @@
 #include "panels/CameraPanel.h"
 #include "panels/ErrorPanel.h"
 #include "panels/Layout.h"
+#include "panels/LegendPanel.h"
 #include "panels/RenderSettingsPanel.h"
 #include "panels/StatsOverlay.h"
 #include "panels/ViewportBar.h"
@@ -82,6 +86,9 @@ App::App(const EditorOptions& options, std::vector<ScriptCommand> script)
       input_(window_, doc_, camera_, viewport_, gizmoTool_, *renderer_, log_),
       screenshots_(*renderer_, doc_, log_, sceneError_) {
     imgui_.emplace(window_.handle());
+    if (const auto layout = layoutFilePath(!options_.interactive(), [](const char* name) -> const char* { return std::getenv(name); }))
+        if (const std::string error = imgui_->rememberLayout(*layout, visible_, layoutDisplay_); !error.empty())
+            log_.warning(error);
     sceneUpload_.upload(doc_.scene);
     resetCamera();
     updateTitle();
@@ -99,6 +106,7 @@ App::App(const EditorOptions& options, std::vector<ScriptCommand> script)
                             .files = files_,
                             .screenshots = screenshots_,
                             .renderer = *renderer_,
+                            .ui = uiReport_,
                             .log = log_,
                             .exitCode = exitCode_,
                         });
@@ -286,12 +294,7 @@ FrameInputs App::frameInputs(const CameraView& view, bool cleanViewport) const {
         .sceneUploads = sceneUpload_.uploads(),
         .overlay = {},
     };
-    // The shadow map view follows the selected light; the saved setting stays as it was.
-    if (inputs.settings.debug.view == View::ShadowMap && doc_.selectedNode >= 0 &&
-        doc_.selectedNode < static_cast<int>(doc_.scene.nodes.size())) {
-        const int light = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].light;
-        if (light >= 0) inputs.settings.debug.shadowMapLight = light;
-    }
+    if (inputs.settings.debug.view == View::ShadowMap) inputs.settings.debug.shadowMapLight = shownShadowLight();
     // The shadow map and the voxel slice are 2D images, not the camera's view: world-space
     // markers and outlines would land on them at random.
     if (!isFlatView(doc_.settings.debug.view)) {
@@ -300,6 +303,15 @@ FrameInputs App::frameInputs(const CameraView& view, bool cleanViewport) const {
                                               input_.overlayOptions(cleanViewport));
     }
     return inputs;
+}
+
+int App::shownShadowLight() const {
+    // The shadow map view follows the selected light; the saved setting stays as it was.
+    if (doc_.selectedNode >= 0 && doc_.selectedNode < static_cast<int>(doc_.scene.nodes.size())) {
+        const int light = doc_.scene.nodes[static_cast<std::size_t>(doc_.selectedNode)].light;
+        if (light >= 0) return light;
+    }
+    return doc_.settings.debug.shadowMapLight;
 }
 
 GiBudget App::giBudget(double now) const {
@@ -383,18 +395,22 @@ void App::drawUi(glm::ivec2 renderSize) {
     const MenuRequests menu = mainMenu_.draw(visible_, menuContext, menuHeight);
 
     const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const bool firstFrame = lastDisplaySize_ == glm::vec2(0.0f);
     const bool resized = display.x != lastDisplaySize_.x || display.y != lastDisplaySize_.y;
     lastDisplaySize_ = {display.x, display.y};
-    // On the first frame and after a resize every panel goes to its place; otherwise only panels
-    // appearing for the first time do, and the user's arrangement stays.
+    // After a resize every panel goes to its place, and on the first frame too unless the layout
+    // file holds an arrangement made for this window size; otherwise only panels appearing for
+    // the first time do, and the user's arrangement stays.
+    const bool keepRemembered = firstFrame && layoutDisplay_ == glm::vec2(display.x, display.y);
     const PanelLayout layout = computePanelLayout(display, menuHeight, cameraPanelHeight(),
-                                                  resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
+                                                  resized && !keepRemembered ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
 
     if (visible_.hierarchy) hierarchyPanel_.draw(doc_, camera_.right(), layout.hierarchy, &visible_.hierarchy);
     if (visible_.inspector) inspectorPanel_.draw(doc_, layout.inspector, &visible_.inspector);
-    if (visible_.stats)
-        drawStatsOverlay(frameTimer_, renderer_->profiler(), renderer_->stats(), renderSize, imgui_->monoFont(),
-                         layout.stats, &visible_.stats, renderer_->voxels(), lastFrame_);
+    uiReport_.stats = visible_.stats ? drawStatsOverlay(frameTimer_, renderer_->profiler(), renderer_->stats(), renderSize,
+                                                        imgui_->monoFont(), layout.stats, &visible_.stats,
+                                                        &visible_.statsDetails, renderer_->voxels(), lastFrame_)
+                                     : glm::vec4(0.0f);
     if (visible_.renderSettings) {
         const RenderSettingsRequests requests =
             drawRenderSettingsPanel(doc_.settings, viewport_, static_cast<int>(doc_.scene.lights.size()),
@@ -409,6 +425,7 @@ void App::drawUi(glm::ivec2 renderSize) {
     viewportRect_ = drawViewportBar(menuHeight, gizmoTool_, input_.gizmoMode(),
                                     scaleAppliesTo(doc_.scene, doc_.selectedNode), viewName, doc_.selection().size());
     input_.setVisibleArea(viewportRect_);
+    drawViewLegend(viewName);
     constexpr float kViewportMargin = 8.0f;
     referenceViewer_.drawWindow(ImVec2(viewportRect_.x + viewportRect_.z - kViewportMargin, viewportRect_.y + kViewportMargin),
                                 resized ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
@@ -421,6 +438,35 @@ void App::drawUi(glm::ivec2 renderSize) {
     handleShortcuts();
     files_.drawQuestions();
     carryOutMenuRequests(menu);
+    // A panel shown or hidden (menu, F2, a close button, the legend's x) is written to the
+    // layout file within seconds, not only at exit.
+    if (visible_ != layoutPanels_) {
+        ImGuiLayer::layoutChanged();
+        layoutPanels_ = visible_;
+    }
+}
+
+void App::drawViewLegend(std::string_view viewName) {
+    const VoxelVolume* voxels = renderer_->voxels();
+    ViewLegend legend = describeDebugView({
+        .view = viewName,
+        .settings = doc_.settings,
+        .scene = doc_.scene,
+        .exposureEv = renderer_->exposureEv(doc_.settings),
+        .shadowMapLight = shownShadowLight(),
+        .volume = voxels ? LegendVolume{voxels->resolution(), voxels->mipCount(), voxels->voxelSize()} : LegendVolume{},
+        .coneSurfacePicked = input_.overlayOptions(false).coneSurface.has_value(),
+    });
+    // The Difference view's own window carries its colour bar; the view's legend would describe
+    // the picture the difference replaced.
+    if (referenceViewer_.mode() == ReferenceMode::Difference) legend = {};
+    uiReport_.area = viewportRect_;
+    uiReport_.legendText = legendText(legend);
+    uiReport_.legend = glm::vec4(0.0f);
+    if (!visible_.legend) return;
+    const LegendBox box =
+        drawLegend(legend, doc_.settings.debug, voxels ? voxels->mipCount() : 0, viewportRect_, &visible_.legend);
+    uiReport_.legend = box.rect;
 }
 
 void App::carryOutMenuRequests(const MenuRequests& menu) {

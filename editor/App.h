@@ -81,6 +81,10 @@ private:
     // Writes the screenshots due at this point of the frame (`withUi`: after the UI is drawn).
     void takeScreenshots(bool withUi, glm::ivec2 framebufferSize);
     void drawUi(glm::ivec2 renderSize);
+    // The debug view's legend in the free viewport area's corner (and uiReport_).
+    void drawViewLegend(std::string_view viewName);
+    // The light whose shadow map the shadow map view shows: the selected one, else the setting's.
+    int shownShadowLight() const;
     void carryOutMenuRequests(const MenuRequests& menu);
     void handleShortcuts();
     void logRefusal(const std::string& message);
@@ -94,6 +98,12 @@ private:
     std::string sceneError_;  // shown in the UI until dismissed
     Document doc_;
 
+    // Which panels are shown and the window size their positions were arranged for: kept in the
+    // layout file (LayoutFile.h), so declared before the ImGui layer that writes them at exit.
+    PanelVisibility visible_;
+    glm::vec2 layoutDisplay_{0.0f};
+    PanelVisibility layoutPanels_;  // visible_ as last marked for writing
+
     // GL context holders, in creation order (members are destroyed in reverse, so GL objects go
     // before ImGui, ImGui before the window, the window before glfwTerminate).
     GlfwLibrary glfw_;
@@ -104,7 +114,6 @@ private:
     ReferenceViewer referenceViewer_;     // Reference / Difference views (path tracer in the background)
 
     // Editor state edited by the panels, the input and the scripts.
-    PanelVisibility visible_;
     ViewportSettings viewport_;
     FlyCamera camera_;
     GizmoTool gizmoTool_;
@@ -128,6 +137,7 @@ private:
 
     // The free viewport area between the panels this frame, ImGui units: x, y, width, height.
     glm::vec4 viewportRect_{0.0f};
+    ViewportUiReport uiReport_;  // where the viewport's UI was drawn, for the script's "layout"
     glm::vec2 lastDisplaySize_{0.0f};  // re-apply the panel layout when it changes
     std::string title_;                // the window title last set
     // Interactive render scale (ViewportSettings::interactiveFpsTarget): the scale the viewport

@@ -94,7 +94,8 @@ std::string editorUsage() {
            "                     (select, select+, set, setting, view, panel, pick, camera,\n"
            "                     screenshot, save, open, undo, redo, add, delete, duplicate, parent,\n"
            "                     material unique, primitive, gizmo, space, snap, drag, frame, orbit,\n"
-           "                     animation, key, play, pause, time, wait N, quit; see docs/EDITOR.md)\n"
+           "                     animation, key, play, pause, time, wait N, layout, quit;\n"
+           "                     see docs/EDITOR.md)\n"
            "  --size WxH         window size in screen coordinates (default 1280x720)\n"
            "  --allow-external-uris  let scenes read buffers and images outside their folder\n"
            "                     (absolute paths, '..', file:); off: such a scene is refused\n"
@@ -107,7 +108,10 @@ std::string editorUsage() {
            "F frame selected, Del or X delete, Ctrl+D duplicate, 1-9 0 Shift+1 Shift+2 debug views,\n"
            "Ctrl+Z/Ctrl+Y undo/redo, Ctrl+S save, F12 screenshot, F2 performance overlay,\n"
            "Space play the camera path, Esc clear the selection. Add menu: empty, lights, camera,\n"
-           "box, plane, sphere; drag nodes in the hierarchy to parent them.\n";
+           "box, plane, sphere; drag nodes in the hierarchy to parent them.\n"
+           "Layout (panel positions, shown panels) is kept in $XDG_CONFIG_HOME/lit/imgui.ini\n"
+           "(~/.config/lit/imgui.ini); LIT_EDITOR_LAYOUT=FILE names another ('' none). --script and\n"
+           "--screenshot runs keep none unless LIT_EDITOR_LAYOUT is set.\n";
 }
 
 }  // namespace lit::editor

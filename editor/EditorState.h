@@ -2,6 +2,8 @@
 // Editor-only state that the panels edit besides the Scene and the RenderSettings: which
 // panels are shown and how the viewport is presented. None of it reaches the renderer.
 
+#include <glm/glm.hpp>
+#include <string>
 #include <string_view>
 
 namespace lit::editor {
@@ -14,10 +16,18 @@ struct PanelVisibility {
     bool camera = true;
     bool log = true;
     bool timeline = true;
+    bool legend = true;         // the debug view's legend in the viewport's corner
+    bool statsDetails = false;  // the performance overlay's graph and per-pass table (else two lines)
+    bool operator==(const PanelVisibility&) const = default;
 };
 
+// The names panelFlag knows, in the order of the View menu.
+inline constexpr const char* kPanelNames[] = {"hierarchy", "inspector", "settings", "stats",
+                                              "stats-details", "camera", "log", "timeline", "legend"};
+
 // The flag of the panel called `name` as scripts and the View menu name it (hierarchy,
-// inspector, settings, stats, camera, log, timeline), or nullptr for an unknown name.
+// inspector, settings, stats, stats-details, camera, log, timeline, legend), or nullptr for an
+// unknown name.
 inline bool* panelFlag(PanelVisibility& visible, std::string_view name) {
     if (name == "hierarchy") return &visible.hierarchy;
     if (name == "inspector") return &visible.inspector;
@@ -26,8 +36,20 @@ inline bool* panelFlag(PanelVisibility& visible, std::string_view name) {
     if (name == "camera") return &visible.camera;
     if (name == "log") return &visible.log;
     if (name == "timeline") return &visible.timeline;
+    if (name == "legend") return &visible.legend;
+    if (name == "stats-details") return &visible.statsDetails;
     return nullptr;
 }
+
+// Where the last frame drew the viewport's own UI, ImGui units (x, y, width, height; zero when
+// not drawn), and what the legend said (DebugViewLegend.h legendText): the script's "layout"
+// command logs it, so tests check the legend's text and place without reading pixels.
+struct ViewportUiReport {
+    glm::vec4 area{0.0f};    // the free viewport area between the docked panels
+    glm::vec4 legend{0.0f};  // the debug view's legend box
+    glm::vec4 stats{0.0f};   // the performance overlay
+    std::string legendText;
+};
 
 struct ViewportSettings {
     // Render resolution as a fraction of the window's framebuffer; the output is stretched

@@ -4,14 +4,17 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGuiSettingsHandler: the editor's own section of the layout file
 
 #include <algorithm>
 #include <array>
 #include <filesystem>
 #include <iterator>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
 
+#include "LayoutFile.h"
 #include "Window.h"
 
 namespace lit::editor {
@@ -40,9 +43,8 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
-    // The layout is computed from the window size each run; an imgui.ini written into whatever
-    // directory the editor was started from would override it and make screenshots depend on
-    // earlier sessions.
+    // No imgui.ini in whatever directory the editor was started from: rememberLayout names the
+    // user's file, and runs without one start from the computed layout.
     io.IniFilename = nullptr;
     // The first font added is the default one.
     uiFont_ = addFontIfPresent("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
@@ -103,6 +105,35 @@ void ImGuiLayer::latchShortKeyPresses() {
     io.KeyAlt = down(GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT);
     io.KeySuper = down(GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER);
 }
+
+std::string ImGuiLayer::rememberLayout(const std::filesystem::path& file, PanelVisibility& panels, glm::vec2& display) {
+    std::error_code error;
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), error);
+    if (error) return "cannot keep the layout in " + file.string() + ": " + error.message();
+    layoutFile_ = file.string();
+    layoutTarget_ = {&panels, &display};
+    ImGuiSettingsHandler handler;
+    handler.TypeName = "Lit";
+    handler.TypeHash = ImHashStr("Lit");
+    handler.UserData = &layoutTarget_;
+    handler.ReadOpenFn = [](ImGuiContext*, ImGuiSettingsHandler* self, const char* name) -> void* {
+        return std::string_view(name) == "Editor" ? self->UserData : nullptr;
+    };
+    handler.ReadLineFn = [](ImGuiContext*, ImGuiSettingsHandler*, void* entry, const char* line) {
+        auto* target = static_cast<LayoutTarget*>(entry);
+        readLayoutLine(line, *target->panels, *target->display);
+    };
+    handler.WriteAllFn = [](ImGuiContext*, ImGuiSettingsHandler* self, ImGuiTextBuffer* out) {
+        const auto* target = static_cast<const LayoutTarget*>(self->UserData);
+        const ImVec2 size = ImGui::GetIO().DisplaySize;
+        out->appendf("[Lit][Editor]\n%s\n", layoutSectionText(*target->panels, {size.x, size.y}).c_str());
+    };
+    ImGui::GetCurrentContext()->SettingsHandlers.push_back(handler);
+    ImGui::GetIO().IniFilename = layoutFile_.c_str();
+    return "";
+}
+
+void ImGuiLayer::layoutChanged() { ImGui::MarkIniSettingsDirty(); }
 
 ImGuiLayer::~ImGuiLayer() {
     Window::setCallbackUser(window_, nullptr);

@@ -2,6 +2,11 @@
 // Dear ImGui's context and its GLFW + OpenGL3 backends, created and destroyed together.
 
 #include <array>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <string>
+
+#include "EditorState.h"
 
 struct GLFWwindow;
 struct ImFont;
@@ -16,6 +21,14 @@ public:
     ~ImGuiLayer();
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+    // Keeps the layout in `file` (LayoutFile.h): ImGui's window positions plus which `panels`
+    // are shown and the `display` size they were arranged for, read at the first frame and
+    // written every few seconds after a change and at exit. Both must outlive this layer. Returns
+    // "" or why the file's folder cannot be made (the layout is then not kept).
+    std::string rememberLayout(const std::filesystem::path& file, PanelVisibility& panels, glm::vec2& display);
+    // Marks the layout changed (a panel shown or hidden), so it is written within seconds.
+    static void layoutChanged();
 
     // Proportional font for the UI and a monospaced one for numbers and logs. Both are
     // DejaVu (Debian's fonts-dejavu-core) when installed, else Dear ImGui's built-in font.
@@ -45,6 +58,11 @@ private:
     ImFont* uiFont_ = nullptr;
     ImFont* monoFont_ = nullptr;
     bool sawInput_ = false;
+    std::string layoutFile_;  // ImGuiIO::IniFilename points into it
+    struct LayoutTarget {
+        PanelVisibility* panels = nullptr;
+        glm::vec2* display = nullptr;
+    } layoutTarget_;
 };
 
 }  // namespace lit::editor

@@ -35,6 +35,7 @@ public:
     // The tracer is still adding samples the shown image lacks: the editor keeps refreshing it
     // (every kRefreshSeconds) although its own frame does not change.
     bool accumulating() const;
+    ReferenceMode mode() const { return mode_; }
     // A small window: mode, samples per pixel, samples/s, the colour bar and its range. Placed
     // with its top right corner at `topRight` (the free viewport area's corner, clear of the
     // panels) on first use, or always when `placeCondition` is ImGuiCond_Always (after a resize).

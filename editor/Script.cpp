@@ -134,7 +134,8 @@ std::string checkPanel(const ScriptCommand& c) {
     if (auto e = expectCount(c, 2, 2, "a panel name and on|off"); !e.empty()) return e;
     // The names the runner resolves with panelFlag.
     if (PanelVisibility probe; panelFlag(probe, c.args[0]) == nullptr)
-        return "unknown panel '" + c.args[0] + "' (hierarchy, inspector, settings, stats, camera, log, timeline)";
+        return "unknown panel '" + c.args[0] +
+               "' (hierarchy, inspector, settings, stats, stats-details, camera, log, timeline, legend)";
     return expectOnOff(c, c.args[1]);
 }
 
@@ -270,6 +271,7 @@ constexpr CommandSpec kCommands[] = {
     {"quit", ScriptVerb::Quit, Arguments::Words, checkNoArguments},
     {"loop", ScriptVerb::Loop, Arguments::Words, checkNoArguments},
     {"memory", ScriptVerb::Memory, Arguments::Words, checkNoArguments},
+    {"layout", ScriptVerb::Layout, Arguments::Words, checkNoArguments},
 };
 
 const CommandSpec* findCommand(std::string_view name) {

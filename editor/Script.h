@@ -24,7 +24,12 @@
 //   setting KEY VALUE            a RenderSettings field by its JSON name (e.g. setting gi false)
 //   view NAME                    the debug view, by the names parseView() takes, or
 //                                cone-directions (then "pick X Y" chooses the pixel)
-//   panel NAME on|off            hierarchy, inspector, settings, stats, camera, log, timeline
+//   panel NAME on|off            hierarchy, inspector, settings, stats, stats-details (the
+//                                overlay's graph and per-pass table), camera, log, timeline,
+//                                legend (the debug view's legend)
+//   layout                       log where the free viewport area, the legend and the performance
+//                                overlay were drawn last frame (ImGui units: x y width height) and
+//                                what the legend said
 //   pick X Y                     click the viewport at window pixel (X, Y), top-left origin
 //   screenshot PATH [ui|noui]    save the window (ui, default) or the viewport alone (noui)
 //   save [PATH]                  save the scene (to PATH: Save As)
@@ -106,6 +111,7 @@ enum class ScriptVerb {
     Quit,
     Loop,
     Memory,
+    Layout,
 };
 
 struct ScriptCommand {

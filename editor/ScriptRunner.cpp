@@ -164,6 +164,18 @@ std::string ScriptRunner::run(const ScriptCommand& command) {
             ProcessMemory::releaseFreeHeap();
             target_.log.info(ProcessMemory::query().describe());
             return "";
+        case ScriptVerb::Layout: {
+            const ViewportUiReport& ui = target_.ui;
+            auto rect = [](const char* name, glm::vec4 r) {
+                char text[96];
+                std::snprintf(text, sizeof text, "%s %.0f %.0f %.0f %.0f", name, static_cast<double>(r.x),
+                              static_cast<double>(r.y), static_cast<double>(r.z), static_cast<double>(r.w));
+                return std::string(text);
+            };
+            target_.log.info("layout: " + rect("area", ui.area) + "; " + rect("legend", ui.legend) + "; " +
+                             rect("stats", ui.stats) + "; legend text: " + ui.legendText);
+            return "";
+        }
     }
     return "unknown command '" + command.name + "'";
 }

@@ -37,6 +37,7 @@ struct ScriptTarget {
     FileActions& files;    // open, save
     Screenshots& screenshots;
     const Renderer& renderer;  // the last frame's GI progress (wait gi, wait refined)
+    const ViewportUiReport& ui;  // the last frame's legend and overlay (layout)
     Log& log;
     std::optional<int>& exitCode;  // 0 at the end or on quit, 1 on a failure
 };

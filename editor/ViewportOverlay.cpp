@@ -13,8 +13,6 @@ constexpr glm::vec4 kCameraMarkerColor{0.85f, 0.85f, 0.9f, 0.9f};
 constexpr glm::vec4 kPathColor{0.3f, 0.8f, 1.0f, 1.0f};
 constexpr glm::vec4 kKeyColor{0.7f, 0.9f, 1.0f, 0.9f};
 constexpr glm::vec4 kSelectedKeyColor{1.0f, 0.65f, 0.15f, 1.0f};
-constexpr glm::vec4 kDiffuseConeColor{0.4f, 1.0f, 0.5f, 0.9f};
-constexpr glm::vec4 kSpecularConeColor{1.0f, 0.5f, 0.9f, 0.9f};
 
 void append(std::vector<OverlayLine>& to, const std::vector<OverlayLine>& lines) {
     to.insert(to.end(), lines.begin(), lines.end());
@@ -132,7 +130,7 @@ void addCones(const Document& doc, const OverlayOptions& options, ViewportOverla
         // Specular samples on rough surfaces take their light from the diffuse cones instead of
         // marching (docs/GI.md): drawn faint, so the view shows what is really traced.
         glm::vec4 color = cone.specular ? kSpecularConeColor : kDiffuseConeColor;
-        if (!cone.marched) color.a *= 0.3f;
+        if (!cone.marched) color.a *= kUnmarchedConeAlpha;
         if (cone.footprintPerHeight > 0.0f && surface.voxelSize > 0.0f) {
             // A footprint-bounded cone (the accurate mode's stratified set) reads voxels no wider
             // than a third of its height above the surface: near the surface it is a pencil, not

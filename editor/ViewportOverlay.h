@@ -27,6 +27,13 @@ struct OverlayOptions {
     glm::vec3 coneCameraPosition{0.0f};
 };
 
+// The cone directions view's colours (the legend explains them with the same values): diffuse
+// cones green, specular cones pink, and a specular cone that is not marched (a rough surface
+// takes its light from the diffuse cones) at this fraction of its opacity.
+inline constexpr glm::vec4 kDiffuseConeColor{0.4f, 1.0f, 0.5f, 0.9f};
+inline constexpr glm::vec4 kSpecularConeColor{1.0f, 0.5f, 0.9f, 0.9f};
+inline constexpr float kUnmarchedConeAlpha = 0.3f;
+
 // Segments of the circles drawn at the samples of footprint-bounded cones (cone directions view,
 // accurate mode): ~30 samples per cone within the drawn quarter volume at 128³, so fewer than the
 // shapes' 32 keep the overlay at a few thousand lines.

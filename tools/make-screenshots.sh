@@ -96,6 +96,7 @@ setting gi.mode cached
 view final
 panel settings off
 panel camera off
+panel stats-details on
 wait refined
 wait 3
 screenshot $out/editor_performance.png ui

@@ -76,7 +76,9 @@ MenuRequests MainMenu::draw(PanelVisibility& visible, const MenuContext& context
             ImGui::MenuItem("Camera", nullptr, &visible.camera);
             ImGui::MenuItem("Timeline", nullptr, &visible.timeline);
             ImGui::MenuItem("Log", nullptr, &visible.log);
-            ImGui::MenuItem("Stats", nullptr, &visible.stats);
+            ImGui::MenuItem("Stats", "F2", &visible.stats);
+            ImGui::MenuItem("Stats details", nullptr, &visible.statsDetails);
+            ImGui::MenuItem("Legend", nullptr, &visible.legend);
             ImGui::EndMenu();
         }
         height = ImGui::GetWindowSize().y;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdio>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace lit::editor {
@@ -102,9 +103,35 @@ ImU32 passColor(const std::string& passName) {
     return IM_COL32(100 + hash % 130, 100 + (hash >> 8) % 130, 100 + (hash >> 16) % 130, 255);
 }
 
-void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
-                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels,
-                      const ViewportFrameInfo& frame) {
+namespace {
+
+// The compact overlay's second line: is the image this frame's, and is the light done.
+std::string frameState(const FrameStats& stats, const ViewportFrameInfo& frame) {
+    std::string state = frame.rendered ? "rendered (" + std::string(frame.reason) + ")"
+                                       : "idle, reused " + std::to_string(frame.framesReused);
+    char gi[64] = "";
+    if (stats.giUpdateDone < 1.0f)
+        std::snprintf(gi, sizeof gi, "  GI %.0f %%", 100.0 * static_cast<double>(stats.giUpdateDone));
+    else if (!stats.giUpdateStage.empty())
+        std::snprintf(gi, sizeof gi, "  GI %s", stats.giUpdateStage.c_str());
+    else if (stats.giBounces > 0 && !stats.giRefining)
+        std::snprintf(gi, sizeof gi, "  GI converged");
+    return state + gi;
+}
+
+// A small button at the end of the first line that shows or hides the details.
+void detailsButton(bool* details) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton(*details ? "-" : "+")) *details = !*details;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(*details ? "Back to the two-line summary" : "Frame-time graph, GPU time per pass, draws, voxels");
+}
+
+}  // namespace
+
+glm::vec4 drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats,
+                           glm::ivec2 renderSize, ImFont* monoFont, const Placement& placement, bool* open,
+                           bool* details, const VoxelVolume* voxels, const ViewportFrameInfo& frame) {
     placeNextWindow(placement);
     ImGui::SetNextWindowBgAlpha(0.72f);  // an overlay: the image stays visible behind it
     constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
@@ -112,11 +139,24 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
                                         ImGuiWindowFlags_NoSavedSettings;
     if (!ImGui::Begin("Performance", open, kFlags)) {
         ImGui::End();
-        return;
+        return glm::vec4(0.0f);
+    }
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    const glm::vec4 rect(pos.x, pos.y, size.x, size.y);
+    if (!*details) {
+        // By default two lines, so the overlay does not hide the scene it measures.
+        ImGui::PushFont(monoFont);
+        ImGui::Text("%5.1f FPS %7.1f ms  GPU %6.1f ms", timer.fps(), timer.averageMs(), profiler.totalGpuMs());
+        detailsButton(details);
+        ImGui::TextDisabled("%s", frameState(stats, frame).c_str());
+        ImGui::PopFont();
+        ImGui::End();
+        return rect;
     }
     ImGui::PushFont(monoFont);
     const float width = std::max(ImGui::CalcTextSize("Draws 000000  Triangles 00000000000").x, 260.0f);
     ImGui::Text("%6.1f FPS  frame %7.1f ms", timer.fps(), timer.averageMs());
+    detailsButton(details);
     ImGui::Text("CPU %7.1f ms  GPU %7.1f ms", profiler.lastCpuFrameMs(), profiler.totalGpuMs());
     drawFrameGraph(timer, width);
     // Redraw on demand: say whether the image and the numbers below come from this frame.
@@ -211,6 +251,7 @@ void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const F
     ImGui::TextDisabled("F2 hides this overlay");
     ImGui::PopFont();
     ImGui::End();
+    return rect;
 }
 
 }  // namespace lit::editor

@@ -1,8 +1,9 @@
 #pragma once
-// The performance overlay: FPS, a frame-time graph of the last few seconds, whether the 3D image
-// was rendered or reused, GPU time per pass as a stacked bar and a table, CPU frame time, draw
-// calls, triangles, culling and voxel memory.
-// Drawn semi-transparent in the viewport's corner so it reads over any scene.
+// The performance overlay, semi-transparent in the viewport's top-left corner. By default two
+// lines: FPS, frame and GPU time, whether the 3D image was rendered or reused and how far the GI
+// is. Its "+" button (or "panel stats-details on") adds a frame-time graph of the last few
+// seconds, GPU time per pass as a stacked bar and a table, CPU frame time, draw calls, triangles,
+// culling and voxel memory; the choice is kept with the layout (LayoutFile.h).
 
 #include <glm/glm.hpp>
 #include <string>
@@ -27,11 +28,12 @@ struct ViewportFrameInfo {
     double renderFrameMs = 0.0;  // how long the last frame that rendered took (update, render, present)
 };
 
-// `voxels`: the renderer's voxel volume (null before GI has run), whose per-texture memory
-// report is the tooltip of the voxel memory line.
-void drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats, glm::ivec2 renderSize,
-                      ImFont* monoFont, const Placement& placement, bool* open, const VoxelVolume* voxels,
-                      const ViewportFrameInfo& frame);
+// `details`: the long form (toggled by the overlay's button); `voxels`: the renderer's voxel
+// volume (null before GI has run), whose per-texture memory report is the tooltip of the voxel
+// memory line. Returns where the overlay was drawn (x, y, width, height; zero when not).
+glm::vec4 drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, const FrameStats& stats,
+                           glm::ivec2 renderSize, ImFont* monoFont, const Placement& placement, bool* open,
+                           bool* details, const VoxelVolume* voxels, const ViewportFrameInfo& frame);
 
 // The colour a pass has in the stacked bar and the table: fixed per pass name, so a pass keeps
 // its colour when others appear or vanish.

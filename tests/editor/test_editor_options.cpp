@@ -80,6 +80,12 @@ TEST(EditorOptions, AllowExternalUrisIsOffUnlessGiven) {
     EXPECT_NE(lit::editor::editorUsage().find("--allow-external-uris"), std::string::npos);
 }
 
+// The help names where the layout is kept and how to move it.
+TEST(EditorOptions, UsageNamesTheLayoutFile) {
+    EXPECT_NE(lit::editor::editorUsage().find("~/.config/lit/imgui.ini"), std::string::npos);
+    EXPECT_NE(lit::editor::editorUsage().find("LIT_EDITOR_LAYOUT"), std::string::npos);
+}
+
 TEST(EditorOptions, RejectsBadInputWithMessagesNamingTheProblem) {
     EXPECT_NE(errorOf({"--size", "640"}).find("WIDTHxHEIGHT"), std::string::npos);
     EXPECT_NE(errorOf({"--size", "0x360"}).find("--size"), std::string::npos);

@@ -95,7 +95,7 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_NE(errorOf("setting gi 3\n").find("'gi'"), std::string::npos);
     EXPECT_EQ(errorOf("view shiny\n"), "s.txt:1: unknown view 'shiny'");
     EXPECT_EQ(errorOf("panel sidebar on\n"),
-              "s.txt:1: unknown panel 'sidebar' (hierarchy, inspector, settings, stats, camera, log, timeline)");
+              "s.txt:1: unknown panel 'sidebar' (hierarchy, inspector, settings, stats, stats-details, camera, log, timeline, legend)");
     EXPECT_EQ(errorOf("panel log maybe\n"), "s.txt:1: panel: expected on or off, got 'maybe'");
     EXPECT_EQ(errorOf("pick 10\n"), "s.txt:1: pick: expected X and Y window pixels, got 1 argument");
     EXPECT_EQ(errorOf("pick 10 -2\n"), "s.txt:1: pick: expected a pixel position, got '-2'");
@@ -180,6 +180,7 @@ TEST(Script, MemoryAndLoopCommands) {
     EXPECT_EQ(commands[1].name, "loop");
     EXPECT_EQ(errorOf("wait 1\nmemory now\n"), "s.txt:2: memory: expected no arguments, got 1 argument");
     EXPECT_EQ(errorOf("loop 3\n"), "s.txt:1: loop: expected no arguments, got 1 argument");
+    EXPECT_EQ(errorOf("layout now\n"), "s.txt:1: layout: expected no arguments, got 1 argument");
 }
 
 }  // namespace
@@ -251,15 +252,15 @@ TEST(Script, EachCommandHasItsOwnVerb) {
         "gizmo rotate\nspace local\nsnap on\ndrag 1 2 3 4\nframe\norbit 1 2\nanimation a\nset node.name A\n"
         "setting gi false\nview final\npanel log on\npick 1 2\nscreenshot a.png\nsave\nopen a.gltf\n"
         "camera 0 0 0 1 1 1\nundo\nredo\ninteractive on\nwait 1\nkey add\nplay\npause\ntime 1\nduration 2\nquit\nloop\n"
-        "memory\n",
+        "memory\nlayout\n",
         "s.txt");
     std::set<ScriptVerb> verbs;
     for (const ScriptCommand& command : commands) verbs.insert(command.verb);
     EXPECT_EQ(verbs.size(), commands.size());
-    EXPECT_EQ(commands.size(), static_cast<std::size_t>(ScriptVerb::Memory) + 1);
+    EXPECT_EQ(commands.size(), static_cast<std::size_t>(ScriptVerb::Layout) + 1);
     EXPECT_EQ(commands[0].verb, ScriptVerb::Select);
     EXPECT_EQ(commands[1].verb, ScriptVerb::SelectToggle);
-    EXPECT_EQ(commands.back().verb, ScriptVerb::Memory);
+    EXPECT_EQ(commands.back().verb, ScriptVerb::Layout);
 }
 
 // Positions, pixels and steps are used as floats: a number beyond a float's range is refused

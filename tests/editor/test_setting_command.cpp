@@ -112,6 +112,9 @@ TEST(EditorPanelFlag, NamesEveryPanelAndRejectsOthers) {
     EXPECT_EQ(lit::editor::panelFlag(visible, "camera"), &visible.camera);
     EXPECT_EQ(lit::editor::panelFlag(visible, "log"), &visible.log);
     EXPECT_EQ(lit::editor::panelFlag(visible, "timeline"), &visible.timeline);
+    EXPECT_EQ(lit::editor::panelFlag(visible, "legend"), &visible.legend);
+    EXPECT_EQ(lit::editor::panelFlag(visible, "stats-details"), &visible.statsDetails);
+    for (const char* name : lit::editor::kPanelNames) EXPECT_NE(lit::editor::panelFlag(visible, name), nullptr) << name;
     EXPECT_EQ(lit::editor::panelFlag(visible, "Inspector"), nullptr);
     EXPECT_EQ(lit::editor::panelFlag(visible, "render"), nullptr);
 }
