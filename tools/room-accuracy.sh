@@ -39,14 +39,16 @@ start=$(date +%s)
 quiet "$render" "$scene" --size "$size" --reference --bounces all --spp "$spp" --hdr "$tmp/ref.hdr" --out "$tmp/ref.png"
 ref_seconds=$(( $(date +%s) - start ))
 quiet "$render" "$scene" --size "$size" --reference --bounces all --spp "$spp" --seed 2 --hdr "$tmp/ref2.hdr" --out "$tmp/ref2.png"
+# Which surface each pixel sees, for the per-surface tables.
+quiet "$render" "$scene" --size "$size" --reference --spp 1 --node-map "$tmp/nodes.txt" --out "$tmp/nodes.png"
 
-rows="$("$python" "$root/tools/room_accuracy.py" "$tmp/direct.hdr" "$scene_dir/sun_room_cycles.hdr" \
+rows="$("$python" "$root/tools/room_accuracy.py" "$tmp/direct.hdr" "$scene_dir/sun_room_cycles.hdr" --nodes "$tmp/nodes.txt" \
     "Lit, defaults (${voxels}³, converged)=$tmp/lit.hdr" \
     "Lit, one frame's GI (--single-frame)=$tmp/lit1f.hdr" \
     "Lit, two bounces=$tmp/lit2.hdr" \
     "Lit reference, every bounce, ${spp} spp=$tmp/ref.hdr" \
     "Cycles, Diffuse BSDF materials=$scene_dir/sun_room_cycles_diffuse.hdr")"
-rows_ref="$("$python" "$root/tools/room_accuracy.py" "$tmp/direct.hdr" "$tmp/ref.hdr" --second-seed "$tmp/ref2.hdr" \
+rows_ref="$("$python" "$root/tools/room_accuracy.py" "$tmp/direct.hdr" "$tmp/ref.hdr" --second-seed "$tmp/ref2.hdr" --nodes "$tmp/nodes.txt" \
     "Lit, defaults (${voxels}³, converged)=$tmp/lit.hdr" \
     "Lit, one frame's GI (--single-frame)=$tmp/lit1f.hdr" \
     "Lit reference, second seed=$tmp/ref2.hdr")"

@@ -1,7 +1,7 @@
 """Compares renders of the sun room (tests/data/blender/sun_room) over the pixels lit only by
 bounced light; called by tools/room-accuracy.sh, which renders the Lit images.
 
-Usage: room_accuracy.py DIRECT.hdr REFERENCE.hdr [--second-seed REFERENCE2.hdr] NAME=IMAGE.hdr ...
+Usage: room_accuracy.py DIRECT.hdr REFERENCE.hdr [--second-seed REFERENCE2.hdr] [--nodes MAP.txt] NAME=IMAGE.hdr ...
 
 DIRECT is Lit with GI off: a pixel whose direct light is 0 (and whose 8 neighbours' is) is lit
 only by bounced light. REFERENCE is the truth the others are measured against. For each image, over
@@ -19,6 +19,9 @@ column:
   RMSE − noise  √(RMSE² − σ²): the image's RMSE against the noise-free truth, the reference's
              noise taken out of it; and the first line says σ, and what a reference with a quarter
              of the samples would score (2σ: noise falls as 1/√samples).
+With --nodes (lit-render --reference --node-map: the node each pixel sees), a second table follows
+a blank line: per surface (scene node with at least 40 of those pixels), each image's mean ÷ the
+reference's there.
 Prints a line on the pixels compared, then one markdown table row per image.
 """
 
@@ -74,8 +77,27 @@ def box_filter(values, mask, radius):
     return np.where(counts > 0, window_sum(v) / np.maximum(counts, 1), 0.0)
 
 
+def read_node_map(path):
+    """(names by index, node index per pixel as an array, rows top first) of a lit-render node map."""
+    lines = open(path).read().split("\n")
+    width, height = (int(v) for v in lines[1].split())
+    count = int(lines[2].split()[1])
+    names = {}
+    for line in lines[3:3 + count]:
+        index, _, name = line.partition(" ")
+        names[int(index)] = name
+    rows = lines[4 + count:4 + count + height]
+    nodes = np.array([[int(t.rstrip("*")) for t in row.split()] for row in rows], np.int64)
+    return names, nodes.reshape(height, width)
+
+
 def main():
     args = sys.argv[1:]
+    node_map = None
+    if "--nodes" in args:
+        i = args.index("--nodes")
+        node_map = read_node_map(args[i + 1])
+        del args[i:i + 2]
     second_seed = None
     if "--second-seed" in args:
         i = args.index("--second-seed")
@@ -99,9 +121,11 @@ def main():
         line += (f"; the reference's own noise {100 * noise:.1f} % of its mean (with a quarter of its samples "
                  f"{200 * noise:.1f} %)")
     print(line)
+    images = []
     for arg in args[2:]:
         name, path = arg.split("=", 1)
         image = read_hdr(path)
+        images.append((name, image))
         if image.shape != reference.shape:
             print(f"| {name} | size {image.shape} differs from the reference's {reference.shape} | | |")
             continue
@@ -112,6 +136,21 @@ def main():
         if noise is not None:
             row += f" {100 * np.sqrt(max(rmse ** 2 - noise ** 2, 0.0)):.1f} % |"
         print(row)
+    if node_map is not None:
+        names, nodes = node_map
+        print()
+        print("Per surface (scene node): each image's mean ÷ the reference's over the surface's pixels lit only by "
+              "bounced light (surfaces with at least 40):")
+        print()
+        print("| surface | pixels | " + " | ".join(name for name, _ in images) + " |")
+        print("|---|---:|" + "---:|" * len(images))
+        for index in sorted(names):
+            surface = mask & (nodes == index)
+            if surface.sum() < 40:
+                continue
+            ref = reference[surface].mean()
+            cells = [f"{image[surface].mean() / ref:.2f}" if image.shape == reference.shape else "" for _, image in images]
+            print(f"| {names[index]} | {surface.sum()} | " + " | ".join(cells) + " |")
 
 
 if __name__ == "__main__":

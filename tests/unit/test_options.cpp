@@ -217,6 +217,7 @@ TEST(Options, ReferenceFlags) {
     EXPECT_EQ(applyOptions(parseOptions({"x.gltf", "--out", "x.png", "--bounces", "all"}), {}).gi.bounces,
               lit::kAllBounces);
     EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--seed", "1"}), "--seed needs --reference");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "x.png", "--node-map", "m.txt"}), "--node-map needs --reference");
     EXPECT_EQ(usageError({"x.gltf", "--reference", "--out", "x.png", "--spp", "0"}),
               "--spp expects samples per pixel from 1 to 1048576, got '0'");
     EXPECT_EQ(usageError({"x.gltf", "--reference", "--out", "x.png", "--bounces", "-1"}),

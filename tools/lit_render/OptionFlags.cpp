@@ -475,6 +475,14 @@ std::vector<Flag> flagTable() {
                              throw UsageError(got(flag, "a non-negative integer", text));
                          options.seed = seed;
                      }});
+    flags.push_back({.names = {"--node-map"},
+                     .value = "FILE.txt",
+                     .expects = "FILE.txt",
+                     .group = G::Reference,
+                     .help = "with --reference: also write which scene node each pixel sees (the first hit at its "
+                             "centre) and whether a light reaches it there, for per-surface comparisons "
+                             "(tools/room_accuracy.py --nodes)",
+                     .store = pathInto(&Options::nodeMap)});
     flags.push_back({.names = {"--compare"},
                      .value = "REF.hdr",
                      .expects = "REF.hdr",

@@ -135,6 +135,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     } else {
         if (options.spp) throw UsageError("--spp needs --reference");
         if (options.seed) throw UsageError("--seed needs --reference");
+        if (!options.nodeMap.empty()) throw UsageError("--node-map needs --reference");
     }
     if (options.benchFrames == 0 && !options.path && options.out.empty() && options.hdr.empty() &&
         options.compare.empty())

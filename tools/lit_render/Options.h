@@ -90,6 +90,7 @@ struct Options {
     std::optional<int> spp;            // --spp: samples per pixel (reference only)
     std::optional<int> bounces;        // --bounces N|all: indirect bounces of the reference and the voxel GI (all = -1)
     std::optional<std::uint64_t> seed; // --seed: random seed (reference only)
+    std::filesystem::path nodeMap;     // --node-map: the node each pixel sees (reference only)
 
     int referenceSpp() const { return spp.value_or(kDefaultReferenceSpp); }
 

@@ -11,6 +11,7 @@
 
 #include "Compare.h"
 #include "Log.h"
+#include "NodeMap.h"
 #include "image/ImageIO.h"
 #include "reference/DifferenceImage.h"
 #include "reference/PathTracer.h"
@@ -59,6 +60,15 @@ int runReference(const RunContext& run, const Scene& scene, int cameraIndex) {
     reference.environment = lit::makeSkyFunction(scene, settings, &skyError);
     if (!skyError.empty()) log.error(skyError + "; using the gradient sky");
     lit::reference::PathTracer tracer(referenceScene, camera, settings.output.width, settings.output.height, reference);
+    if (!options.nodeMap.empty()) {
+        std::string error;
+        const auto hits =
+            lit::reference::traceFirstHits(referenceScene, camera, settings.output.width, settings.output.height);
+        if (!writeNodeMap(options.nodeMap, scene, hits, settings.output.width, settings.output.height, error)) {
+            log.error(error);
+            return 1;
+        }
+    }
 
     interruptRequested().store(false);
     struct sigaction action {};
