@@ -20,6 +20,7 @@
 #include "ProcessMemory.h"
 #include "SceneEdits.h"
 #include "ViewportOverlay.h"
+#include "animation/NodeAnimation.h"
 #include "gl/Capabilities.h"
 #include "panels/CameraPanel.h"
 #include "panels/ErrorPanel.h"
@@ -189,6 +190,10 @@ int App::run() {
         input_.handleMouse(input_.currentView());
         const glm::ivec2 previousRenderSize{doc_.settings.output.width, doc_.settings.output.height};
         drawUi(previousRenderSize);
+        // The playhead poses the animated nodes: played, scrubbed, or after an undo or a load put
+        // the nodes' stored poses back. A changed pose bumps the geometry revision, as a gizmo
+        // move does, so the frame below re-voxelizes.
+        applyNodeAnimations(doc_.scene, playback_.time);
         // The 2D views fill the free area between the panels; the camera views the whole window
         // (the panels float over it).
         const glm::vec2 display(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);
@@ -367,7 +372,7 @@ float App::renderScaleFor(double now, const glm::mat4& view, bool edited) {
 
 void App::updatePlayback(double dtSeconds) {
     if (!playback_.playing) return;
-    playback_.advance(doc_.cameraPath, dtSeconds);
+    playback_.advance(doc_.cameraPath, dtSeconds, summarizeNodeAnimations(doc_.scene).endTime);
     if (!playback_.lookThrough) return;
     lookThroughPath(doc_.cameraPath, playback_.time, camera_);
 }
@@ -499,11 +504,12 @@ void App::handleShortcuts() {
     if (io.KeyCtrl && ((io.KeyShift && pressed(GLFW_KEY_Z)) || pressed(GLFW_KEY_Y))) doc_.redo();
     if (pressed(GLFW_KEY_F12)) screenshots_.requestTimestamped(/*withUi=*/false, 0);
     if (pressed(GLFW_KEY_F2)) visible_.stats = !visible_.stats;
-    if (pressed(GLFW_KEY_SPACE) && !doc_.cameraPath.empty()) {
+    const double animationEnd = summarizeNodeAnimations(doc_.scene).endTime;
+    if (pressed(GLFW_KEY_SPACE) && hasTimeline(doc_.cameraPath, animationEnd)) {
         if (playback_.playing)
             playback_.playing = false;
         else
-            playback_.play(doc_.cameraPath);
+            playback_.play(doc_.cameraPath, animationEnd);
     }
     if (pressed(GLFW_KEY_ESCAPE)) {
         const bool popupOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);

@@ -64,7 +64,8 @@ public:
 private:
     void resetCamera();
     void updateTitle();
-    // Plays the camera path and, when looking through it, moves the fly camera along.
+    // Plays the camera path and the node animations (one clock) and, when looking through the
+    // path, moves the fly camera along.
     void updatePlayback(double dtSeconds);
     // The viewport's render scale this frame: viewport_.renderScale when still, lower while
     // interacting so the frame time meets the target. `edited`: the camera, the scene or the

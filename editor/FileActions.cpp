@@ -7,6 +7,7 @@
 
 #include "RenderSettings.h"
 #include "SaveAsName.h"
+#include "animation/NodeAnimation.h"
 #include "panels/LoadingWindow.h"
 #include "scene/GltfWriter.h"
 #include "scene/SceneMemory.h"
@@ -48,6 +49,7 @@ Document loadInitialDocument(const EditorOptions& options, Log& log) {
     const std::filesystem::path path = initialScene(options);
     Document doc = openDocument(path, log, {}, loadLimits(options));
     log.info("opened scene " + path.string());
+    for (const std::string& problem : nodeAnimationProblems(doc.scene)) log.warning(problem);
     return doc;
 }
 
@@ -249,6 +251,7 @@ std::string FileActions::adoptDocument(Document loaded, const std::filesystem::p
     if (!path.empty()) recent_.add(path);  // a recovered untitled document has no file
     sceneError_.clear();
     log_.info("opened scene " + (path.empty() ? std::string("(untitled)") : path.string()));
+    for (const std::string& problem : nodeAnimationProblems(doc_.scene)) log_.warning(problem);
     documentReplaced_();
     return "";
 }

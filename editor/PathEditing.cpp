@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "TextParse.h"
+#include "animation/NodeAnimation.h"
 
 namespace lit::editor {
 
@@ -83,11 +84,19 @@ std::size_t addKeyFromView(Document& doc, PathPlayback& playback, const FlyCamer
     return index;
 }
 
-TimeSpan scrubSpan(const CameraPath& path) {
-    if (path.empty()) return {};
-    const double start = std::min(0.0, static_cast<double>(path.startTime()));
-    const double end = path.endTime();
-    return {start, end + std::max(0.25 * (end - start), static_cast<double>(kDefaultKeyInterval))};
+TimeSpan scrubSpan(const CameraPath& path, double animationEnd) {
+    if (!hasTimeline(path, animationEnd)) return {};
+    const TimeSpan span = playSpan(path, animationEnd);
+    const double start = std::min(0.0, span.start);
+    return {start, span.end + std::max(0.25 * (span.end - start), static_cast<double>(kDefaultKeyInterval))};
+}
+
+TimeSpan playSpan(const CameraPath& path, double animationEnd) {
+    const bool animated = animationEnd > 0.0;
+    if (path.empty()) return {0.0, animated ? animationEnd : 0.0};
+    const double start = path.startTime(), end = path.endTime();
+    if (!animated) return {start, end};
+    return {std::min(start, 0.0), std::max(end, animationEnd)};
 }
 
 bool scalePathDuration(Document& doc, float seconds) {
@@ -187,10 +196,14 @@ void setPathOptions(Document& doc, const CameraPathOptions& options) {
     doc.edit("Path Options", Change::CameraPath, [&](Scene&) { doc.cameraPath.setOptions(options); });
 }
 
-void PathPlayback::advance(const CameraPath& path, double dtSeconds) {
-    if (!playing || path.empty()) return;
+void PathPlayback::advance(const CameraPath& path, double dtSeconds, double animationEnd) {
+    if (!playing) return;
+    if (!hasTimeline(path, animationEnd)) {
+        playing = false;
+        return;
+    }
     time += dtSeconds * static_cast<double>(speed);
-    const double start = path.startTime(), end = path.endTime();
+    const auto [start, end] = playSpan(path, animationEnd);
     if (path.options().loop && end > start) {
         time = start + std::fmod(std::fmod(time - start, end - start) + (end - start), end - start);
     } else if (time >= end) {
@@ -202,9 +215,10 @@ void PathPlayback::advance(const CameraPath& path, double dtSeconds) {
     }
 }
 
-void PathPlayback::play(const CameraPath& path) {
-    if (path.empty()) return;
-    if (time < path.startTime() || (!path.options().loop && time >= path.endTime())) time = path.startTime();
+void PathPlayback::play(const CameraPath& path, double animationEnd) {
+    if (!hasTimeline(path, animationEnd)) return;
+    const TimeSpan span = playSpan(path, animationEnd);
+    if (time < span.start || (!path.options().loop && time >= span.end)) time = span.start;
     playing = true;
 }
 
@@ -214,13 +228,14 @@ std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& cam
     std::string error;
     std::size_t index = 0;
     if (name == "play") {
-        if (doc.cameraPath.empty()) return "the camera path has no keys to play";
+        const double animationEnd = summarizeNodeAnimations(doc.scene).endTime;
+        if (!hasTimeline(doc.cameraPath, animationEnd)) return "the camera path has no keys and no node is animated";
         if (!args.empty()) {
             const std::optional<float> speed = parseNumber<float>(args[0]);
             if (!speed || *speed < kMinPlaybackSpeed || *speed > kMaxPlaybackSpeed) return "play: expected a speed 0.1..4";
             playback.speed = *speed;
         }
-        playback.play(doc.cameraPath);
+        playback.play(doc.cameraPath, animationEnd);
         return "";
     }
     if (name == "duration") {

@@ -46,12 +46,19 @@ float nextKeyTime(const CameraPath& path, double playhead);
 // undo step; the playhead moves to it. Returns its index.
 std::size_t addKeyFromView(Document& doc, PathPlayback& playback, const FlyCamera& camera);
 // The seconds the ruler shows and the playhead can be scrubbed over: from the earlier of 0 and
-// the first key to past the last key by a quarter of the path (at least kDefaultKeyInterval),
-// so there is room to scrub beyond the end and add a key there.
+// the first key to past the end of playSpan by a quarter of it (at least kDefaultKeyInterval),
+// so there is room to scrub beyond the end and add a key there. `animationEnd` is the scene's
+// node animations' last key (animation/NodeAnimation.h; 0: none).
 struct TimeSpan {
     double start = 0.0, end = kDefaultKeyInterval;
 };
-TimeSpan scrubSpan(const CameraPath& path);
+TimeSpan scrubSpan(const CameraPath& path, double animationEnd = 0.0);
+// The seconds playback runs over, one clock for the camera path and the node animations: the
+// path's keys, joined with 0 s .. animationEnd when the scene has node animations (they start at
+// 0 s). {0, 0} when there is neither.
+TimeSpan playSpan(const CameraPath& path, double animationEnd = 0.0);
+// Whether there is anything to play: keys, or node animations.
+inline bool hasTimeline(const CameraPath& path, double animationEnd) { return !path.empty() || animationEnd > 0.0; }
 // The path's duration (last key − first key) made `seconds` by scaling every key's time about
 // the first key; the spacing stays at least kMinKeySpacing. Not an undo step by itself (a drag
 // of the Duration field is one). False with fewer than two keys or a duration that is not > 0.
@@ -76,8 +83,9 @@ bool updateKeyFromCamera(Document& doc, std::size_t index, const FlyCamera& came
 // Path options as one undo step ("Path Options").
 void setPathOptions(Document& doc, const CameraPathOptions& options);
 
-// Where the playhead is and whether it moves. The path's own `loop` option decides whether the
-// playhead wraps at the end; without it playback stops at the end.
+// Where the playhead is and whether it moves, over playSpan: the camera path and the scene's node
+// animations on one clock. The path's own `loop` option decides whether the playhead wraps at
+// the end; without it playback stops at the end.
 // Playback rates the timeline's Speed slider and the script's "play SPEED" take.
 inline constexpr float kMinPlaybackSpeed = 0.1f;
 inline constexpr float kMaxPlaybackSpeed = 4.0f;
@@ -88,16 +96,19 @@ struct PathPlayback {
     float speed = 1.0f;   // playback rate
     bool lookThrough = true;  // the viewport looks through the path camera while playing/scrubbing
 
-    // Advances by dtSeconds × speed when playing; wraps (loop) or stops at the end.
-    void advance(const CameraPath& path, double dtSeconds);
-    // Starts playing; from the start when the playhead is at (or past) the end of an open path,
-    // or before its first key.
-    void play(const CameraPath& path);
+    // Advances by dtSeconds × speed when playing; wraps (loop) or stops at the end of
+    // playSpan(path, animationEnd).
+    void advance(const CameraPath& path, double dtSeconds, double animationEnd = 0.0);
+    // Starts playing; from the start when the playhead is at (or past) the end of an open
+    // timeline, or before its start. Nothing without keys or node animations.
+    void play(const CameraPath& path, double animationEnd = 0.0);
 };
 
 // Applies one script command of the timeline family (key add|delete|select I|time I T|update I,
 // play [SPEED], pause, time T, duration T) to the document, playback and fly camera. Returns ""
-// or an error message. "key add" is the timeline's "+ Key" (addKeyFromView); "key select I"
+// or an error message. "play" plays the camera path and the scene's node animations together
+// (either alone when the scene has only one); "time T" moves the playhead, which poses the
+// animated nodes at T from the next frame (the App applies them every frame). "key add" is the timeline's "+ Key" (addKeyFromView); "key select I"
 // moves the playhead to the key and, like clicking it, points the camera there.
 std::string runPathCommand(Document& doc, PathPlayback& playback, FlyCamera& camera, const std::string& name,
                            const std::vector<std::string>& args);

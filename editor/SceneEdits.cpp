@@ -178,7 +178,15 @@ void decomposeTransform(const glm::mat4& matrix, glm::vec3& translation, glm::qu
 
 void setWorldMatrix(Scene& scene, int index, const glm::mat4& world) {
     Node& node = scene.nodes[static_cast<std::size_t>(index)];
-    decomposeTransform(glm::inverse(parentWorld(scene, index)) * world, node.translation, node.rotation, node.scale);
+    glm::vec3 translation, scale;
+    glm::quat rotation;
+    decomposeTransform(glm::inverse(parentWorld(scene, index)) * world, translation, rotation, scale);
+    // A channel a node animation drives shows the animation, not the rest transform: the edit goes
+    // to the rest transform's other channels, and the driven ones keep their rest values (taking
+    // the posed value would bake the time shown into the saved rest pose).
+    if (!node.pose.translation) node.translation = translation;
+    if (!node.pose.rotation) node.rotation = rotation;
+    if (!node.pose.scale) node.scale = scale;
 }
 
 std::vector<int> topLevelSelection(const Document& doc) {

@@ -103,7 +103,10 @@ void decomposeTransform(const glm::mat4& matrix, glm::vec3& translation, glm::qu
 // children already).
 std::vector<int> topLevelSelection(const Document& doc);
 
-// Sets node `index`'s local transform so its world matrix becomes `world` (parent kept).
+// Sets node `index`'s local transform so its world matrix becomes `world` (parent kept). On a
+// node an animation poses (Node::pose) only the channels the animation does not drive change: the
+// animation overrides the channels it drives, whose rest values stay (a door that swings can be
+// moved; its swing cannot be turned by hand while it plays).
 void setWorldMatrix(Scene& scene, int index, const glm::mat4& world);
 
 // Name not used by any node: `base`, else "base.001", "base.002", ... (Blender's scheme).

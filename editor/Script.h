@@ -42,13 +42,14 @@
 //                                at most 2000 frames
 //   wait refined                 the same, then until the cached GI mode's refinement rounds after it
 //                                are done too (FrameStats::giRefining), at most 20000 frames
-//   wait play                    let frames render until the camera path's playback stops (an
-//                                open path's end), at most 20000 frames
+//   wait play                    let frames render until the timeline's playback stops (the end
+//                                of an open path or of the node animations), at most 20000 frames
 //   interactive on|off           the interactive render scale (ViewportSettings::interactiveFpsTarget)
 //                                also in the script (off by default: scripts render at the
 //                                chosen scale, reproducibly)
 //   key add|delete|select I|time I T|update I   camera path keys (the timeline's actions)
-//   play [SPEED] | pause | time T   camera path playback (SPEED: the rate, 0.1..4)
+//   play [SPEED] | pause | time T   playback of the camera path and the node animations (SPEED:
+//                                the rate, 0.1..4); time T poses the animated nodes at T
 //   duration T                   the camera path's duration (keys spread in proportion)
 //   memory                       log what the process holds (after handing free heap back)
 //   loop                         start the script over from its first command

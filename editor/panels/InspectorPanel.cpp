@@ -129,6 +129,16 @@ void InspectorPanel::draw(Document& doc, const Placement& placement, bool* open)
 void InspectorPanel::drawTransform(Document& doc, int nodeIndex) {
     Node& node = doc.scene.nodes[static_cast<std::size_t>(nodeIndex)];
     ImGui::PushID("transform");
+    // The fields are the rest transform; say which of them an animation overrides in the viewport.
+    if (!node.pose.empty()) {
+        std::string driven;
+        if (node.pose.translation) driven += "translation";
+        if (node.pose.rotation) driven += std::string(driven.empty() ? "" : ", ") + "rotation";
+        if (node.pose.scale) driven += std::string(driven.empty() ? "" : ", ") + "scale";
+        ImGui::TextColored(ImVec4(0.55f, 0.8f, 0.55f, 1.0f), "Animated: %s", driven.c_str());
+        tooltip("A node animation drives these channels at the timeline's playhead and overrides them in the "
+                "viewport. The fields below are the rest transform, which edits change and a save writes");
+    }
 
     glm::vec3 translation = node.translation;
     bool changed = ImGui::DragFloat3("Translation", &translation.x, 0.01f, 0.0f, 0.0f, "%.3f");

@@ -11,6 +11,7 @@
 
 #include "DocumentIO.h"
 #include "animation/CameraPathIO.h"
+#include "animation/NodeAnimation.h"
 
 namespace lit::editor {
 
@@ -23,9 +24,10 @@ constexpr float kDegPerRad = 57.2957795f;
 using TimeRange = TimelinePanel::TimeRange;
 
 // Time shown across the ruler: the span the playhead can be scrubbed over (PathEditing's
-// scrubSpan, which reaches past the last key) with a small margin either side.
-TimeRange rangeOf(const CameraPath& path) {
-    const TimeSpan span = scrubSpan(path);
+// scrubSpan, which reaches past the last key and the node animations' end) with a small margin
+// either side.
+TimeRange rangeOf(const CameraPath& path, double animationEnd) {
+    const TimeSpan span = scrubSpan(path, animationEnd);
     const double margin = (span.end - span.start) * 0.03;
     return {span.start - margin, span.end + margin};
 }
@@ -51,13 +53,14 @@ void lookAtPlayhead(const Document& doc, const PathPlayback& playback, FlyCamera
 // ruler under the mouse, and the key would run away from it.
 void TimelinePanel::drawRuler(Document& doc, PathPlayback& playback, FlyCamera& camera) {
     int& draggedKey = draggedKey_;
+    const double animationEnd = summarizeNodeAnimations(doc.scene).endTime;
     const float width = std::max(ImGui::GetContentRegionAvail().x, 50.0f);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##ruler", ImVec2(width, kRulerHeight));
     const bool hovered = ImGui::IsItemHovered();
     const bool active = ImGui::IsItemActive();
     if (!active) heldRange_.reset();
-    const TimeRange range = heldRange_ ? *heldRange_ : rangeOf(doc.cameraPath);
+    const TimeRange range = heldRange_ ? *heldRange_ : rangeOf(doc.cameraPath, animationEnd);
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + kRulerHeight), IM_COL32(30, 30, 34, 255), 3.0f);
 
@@ -71,6 +74,12 @@ void TimelinePanel::drawRuler(Document& doc, PathPlayback& playback, FlyCamera& 
         draw->AddText(ImVec2(x + 2.0f, origin.y), IM_COL32(150, 150, 150, 255), label);
     }
 
+    // The node animations' span, a thin bar along the bottom: they play from 0 s on the same clock.
+    if (animationEnd > 0.0) {
+        const float startX = range.toX(0.0, origin.x, width), endX = range.toX(animationEnd, origin.x, width);
+        draw->AddRectFilled(ImVec2(startX, origin.y + kRulerHeight - 4.0f), ImVec2(endX, origin.y + kRulerHeight),
+                            IM_COL32(90, 150, 90, 255), 1.0f);
+    }
     // The path's own span, lighter: the ruler goes on past its end for scrubbing and adding keys.
     if (!doc.cameraPath.empty()) {
         const float startX = range.toX(doc.cameraPath.startTime(), origin.x, width);
@@ -98,7 +107,7 @@ void TimelinePanel::drawRuler(Document& doc, PathPlayback& playback, FlyCamera& 
                                   : -1;
 
     // Playhead.
-    if (!doc.cameraPath.empty()) {
+    if (hasTimeline(doc.cameraPath, animationEnd)) {
         const float x = range.toX(playback.time, origin.x, width);
         draw->AddLine(ImVec2(x, origin.y), ImVec2(x, origin.y + kRulerHeight), IM_COL32(80, 200, 255, 255), 2.0f);
     }
@@ -125,9 +134,9 @@ void TimelinePanel::drawRuler(Document& doc, PathPlayback& playback, FlyCamera& 
                 setKeyValues(doc, static_cast<std::size_t>(draggedKey), key);
                 playback.time = doc.cameraPath.keys()[static_cast<std::size_t>(draggedKey)].time;
             }
-        } else if (!doc.cameraPath.empty()) {
+        } else if (hasTimeline(doc.cameraPath, animationEnd)) {
             // The whole ruler scrubs, past the last key too (the camera stays at the last pose there).
-            const TimeSpan span = scrubSpan(doc.cameraPath);
+            const TimeSpan span = scrubSpan(doc.cameraPath, animationEnd);
             playback.playing = false;
             playback.time = std::clamp(t, span.start, span.end);
             lookAtPlayhead(doc, playback, camera);
@@ -233,14 +242,16 @@ void TimelinePanel::draw(Document& doc, PathPlayback& playback, FlyCamera& camer
         if (!chooseError_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", chooseError_.c_str());
     }
     CameraPath& path = doc.cameraPath;
+    const NodeAnimationSummary animations = summarizeNodeAnimations(doc.scene);
     // Transport and the key actions that need no selection.
     if (ImGui::Button(playback.playing ? "Pause" : "Play")) {
-        if (playback.playing) playback.playing = false; else playback.play(path);
+        if (playback.playing) playback.playing = false; else playback.play(path, animations.endTime);
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play the path from the playhead (Space)");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Play the path and the animated nodes from the playhead (Space)");
     ImGui::SameLine();
-    if (ImGui::Button("|<") && !path.empty()) {
-        playback.time = path.startTime();
+    if (ImGui::Button("|<") && hasTimeline(path, animations.endTime)) {
+        playback.time = playSpan(path, animations.endTime).start;
         lookAtPlayhead(doc, playback, camera);
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the start");
@@ -270,7 +281,15 @@ void TimelinePanel::draw(Document& doc, PathPlayback& playback, FlyCamera& camer
     ImGui::Checkbox("Look through", &playback.lookThrough);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The viewport follows the path while playing or scrubbing");
 
+    if (animations.channels > 0) {
+        ImGui::Text("%d animated node%s, 0 to %.2f s", animations.nodes, animations.nodes == 1 ? "" : "s",
+                    animations.endTime);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The file's node animations play with the path on one clock. They override the "
+                              "channels they drive: a gizmo edit of an animated node changes its other channels");
+    }
     if (path.empty()) {
+        if (animations.channels > 0) ImGui::Text("%.2f s%s", playback.time, playback.playing ? ", playing" : "");
         ImGui::TextDisabled("No keys: fly to a view, + Key; next view, + Key");
     } else {
         ImGui::Text("%.2f s, %zu keys%s", playback.time, path.keys().size(), playback.playing ? ", playing" : "");

@@ -1,6 +1,8 @@
 #pragma once
 // The camera path's timeline: keys as markers on a time ruler, a playhead to scrub, play/pause,
-// loop and speed, and the selected key's values. Every change to the path is one undo step on
+// loop and speed, and the selected key's values. The scene's node animations play on the same
+// clock: the ruler covers the longer of the path and the animations, and the playhead poses the
+// animated nodes (the App applies them each frame). Every change to the path is one undo step on
 // the Document (a key drag too); scrubbing and playing only move the playhead and, when
 // "look through" is on, the fly camera.
 

@@ -5,8 +5,8 @@
 namespace lit {
 
 glm::mat4 Node::localMatrix() const {
-    return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) *
-           glm::scale(glm::mat4(1.0f), scale);
+    return glm::translate(glm::mat4(1.0f), pose.translation.value_or(translation)) *
+           glm::mat4_cast(pose.rotation.value_or(rotation)) * glm::scale(glm::mat4(1.0f), pose.scale.value_or(scale));
 }
 
 void Scene::updateWorldTransforms() {

@@ -331,12 +331,27 @@ struct Node {
     // order, nodes Lit made after them, so a file keeps its node indices while none is deleted.
     int fileIndex = -1;
 
+    // The pose the scene's node animations give this node at the time shown
+    // (animation/NodeAnimation.h): each channel an animation drives replaces the rest transform's
+    // in localMatrix(). Translation, rotation and scale above stay the rest transform: edits
+    // change it and a save writes it, whatever the time shown.
+    struct AnimatedPose {
+        std::optional<glm::vec3> translation;
+        std::optional<glm::quat> rotation;
+        std::optional<glm::vec3> scale;
+        bool empty() const { return !translation && !rotation && !scale; }
+        bool operator==(const AnimatedPose&) const = default;
+    };
+    AnimatedPose pose{};
+
+    // The transform drawn: the rest transform with the animated channels of `pose` in its place.
     glm::mat4 localMatrix() const;
 };
 
-// A glTF animation as the file had it, kept so a save writes it back (Lit plays camera paths
-// through animation/CameraPathIO.h; it does not play other animations). Values are floats as
-// they were read (normalized integers converted).
+// A glTF animation as the file had it, kept so a save writes it back. Lit plays camera
+// animations as camera paths (animation/CameraPathIO.h) and the translation, rotation and scale
+// channels of other nodes as node animations (animation/NodeAnimation.h); morph weights are kept,
+// not played. Values are floats as they were read (normalized integers converted).
 struct Animation {
     struct Sampler {
         std::vector<float> input;   // key times, seconds

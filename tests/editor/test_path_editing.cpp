@@ -96,7 +96,7 @@ TEST(PathEditing, ScriptCommandsDriveKeysAndPlayback) {
     Document doc;
     PathPlayback playback;
     FlyCamera camera = cameraAt({0, 1, 3}, 0.0f);
-    EXPECT_EQ(runPathCommand(doc, playback, camera, "play", {}), "the camera path has no keys to play");
+    EXPECT_EQ(runPathCommand(doc, playback, camera, "play", {}), "the camera path has no keys and no node is animated");
     EXPECT_EQ(runPathCommand(doc, playback, camera, "key", {"add"}), "");
     camera.position = {1, 1, 1};
     EXPECT_EQ(runPathCommand(doc, playback, camera, "time", {"2"}), "");
@@ -157,6 +157,37 @@ TEST(PathEditing, NextKeyTimeFollowsTheMeanSpacingOrThePlayhead) {
     ASSERT_EQ(piled.cameraPath.keys().size(), 2u);
     EXPECT_FLOAT_EQ(nextKeyTime(piled.cameraPath, piled.cameraPath.endTime()),
                     piled.cameraPath.endTime() + kMinAddedKeyInterval);
+}
+
+// The node animations share the path's clock: playback and the ruler cover the later end, and a
+// scene with animated nodes and no keys plays too.
+TEST(PathEditing, PlaybackCoversTheNodeAnimations) {
+    const CameraPath empty;
+    PathPlayback playback;
+    playback.play(empty, 0.0);
+    EXPECT_FALSE(playback.playing);  // nothing to play
+    playback.time = 5.0;
+    playback.play(empty, 2.0);
+    ASSERT_TRUE(playback.playing);
+    EXPECT_DOUBLE_EQ(playback.time, 0.0);  // at the end: from the start again
+    playback.advance(empty, 1.5, 2.0);
+    EXPECT_DOUBLE_EQ(playback.time, 1.5);
+    EXPECT_TRUE(playback.playing);
+    playback.advance(empty, 1.0, 2.0);
+    EXPECT_DOUBLE_EQ(playback.time, 2.0);  // the animations' end
+    EXPECT_FALSE(playback.playing);
+
+    const Document doc = threeKeyDocument();  // keys at 0, 1, 2 s
+    EXPECT_DOUBLE_EQ(playSpan(doc.cameraPath, 5.0).end, 5.0);  // the animations run longer
+    EXPECT_DOUBLE_EQ(playSpan(doc.cameraPath, 1.0).end, 2.0);  // the path does
+    EXPECT_DOUBLE_EQ(playSpan(doc.cameraPath).end, 2.0);
+    EXPECT_DOUBLE_EQ(scrubSpan(doc.cameraPath, 5.0).end, 5.0 + 1.25);  // a quarter past the end
+    EXPECT_DOUBLE_EQ(scrubSpan(empty, 2.0).end, 3.0);                  // at least a second past it
+    playback.time = 0.0;
+    playback.play(doc.cameraPath, 5.0);
+    playback.advance(doc.cameraPath, 3.0, 5.0);
+    EXPECT_DOUBLE_EQ(playback.time, 3.0);  // past the path's last key, the animations play on
+    EXPECT_TRUE(playback.playing);
 }
 
 TEST(PathEditing, TheScrubSpanReachesPastTheLastKey) {

@@ -534,4 +534,23 @@ TEST(SceneEdits, DeleteAndAddKeepTheNodesOutsideTheShownScene) {
     EXPECT_GE(findNode(back.scene, "camera path"), 0);
 }
 
+// The animation overrides the channels it drives: a gizmo edit of a node whose rotation is
+// animated moves it (translation is not driven) and leaves its rest rotation as it was, rather
+// than baking the pose at the playhead into the saved rest transform.
+TEST(SceneEdits, AGizmoEditOfAnAnimatedNodeChangesOnlyTheChannelsTheAnimationLeaves) {
+    lit::Scene scene;
+    scene.nodes.resize(1);
+    scene.roots = {0};
+    const glm::quat posed = glm::angleAxis(1.0f, glm::vec3(0.0f, 1.0f, 0.0f));
+    scene.nodes[0].pose.rotation = posed;
+    scene.updateWorldTransforms();
+    const glm::mat4 world = glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 2.0f, 3.0f)) * glm::mat4_cast(posed);
+    setWorldMatrix(scene, 0, world);
+    EXPECT_NEAR(glm::distance(scene.nodes[0].translation, glm::vec3(1.0f, 2.0f, 3.0f)), 0.0f, 1e-5f);
+    EXPECT_EQ(scene.nodes[0].rotation, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));  // the rest rotation stays
+    scene.nodes[0].pose = {};
+    setWorldMatrix(scene, 0, world);  // not animated: every channel takes the edit
+    EXPECT_NEAR(std::abs(glm::dot(scene.nodes[0].rotation, posed)), 1.0f, 1e-5f);
+}
+
 }  // namespace

@@ -230,7 +230,27 @@ TEST(Options, ReferenceFlags) {
     EXPECT_EQ(usageError({"x.gltf", "--reference", "--bench", "3"}),
               "--reference and --bench do not go together (the reference prints its own rays/s)");
     EXPECT_EQ(usageError({"x.gltf", "--reference", "--path", "p.json", "--frames-out", "f"}),
-              "--reference renders a still image; it does not fly --path");
+              "--reference renders a still image; it does not fly --path (add --time SECONDS for the path's view at "
+              "that time)");
+}
+
+TEST(Options, TimeRendersAStillAtThatTime) {
+    Options o = parseOptions({"x.gltf", "--time", "1.5", "--out", "x.png"});
+    EXPECT_EQ(o.time, 1.5);
+    EXPECT_FALSE(o.pathStill());
+    o = parseOptions({"x.gltf", "--time", "2", "--path", "fly", "--out", "x.png"});
+    EXPECT_TRUE(o.pathStill()) << "--path with --time is one still through the path";
+    o = parseOptions({"x.gltf", "--time", "2", "--path", "fly", "--reference", "--out", "x.png"});
+    EXPECT_TRUE(o.pathStill());
+    EXPECT_FALSE(parseOptions({"x.gltf", "--out", "x.png"}).time);
+    EXPECT_EQ(usageError({"x.gltf", "--time", "soon", "--out", "x.png"}), "--time expects seconds, got 'soon'");
+    EXPECT_EQ(usageError({"x.gltf", "--time", "1", "--path", "fly", "--frames-out", "f"}),
+              "--time with --path renders one still (--out); --frames-out, --bench-path and --fps fly the whole path "
+              "(leave out --time)");
+    EXPECT_EQ(usageError({"x.gltf", "--time", "1", "--path", "fly", "--camera", "c", "--out", "x.png"}),
+              "--path and --camera both choose the camera; give one of them");
+    EXPECT_EQ(usageError({"x.gltf", "--time", "1", "--path", "fly"}),
+              "--out is required (unless --hdr, --bench, --path or --compare)");
 }
 
 TEST(Options, CompareFlags) {
@@ -488,7 +508,7 @@ TEST(Options, HelpListsEveryFlagUnderItsGroup) {
         return title.empty() ? help.find("\n\n") : help.find("\n" + title + ":\n");
     };
     for (const char* heading : {"Files", "Settings", "Output", "Sky", "Shadows", "GI", "Indirect", "Debug views",
-                                "Benchmarks", "Camera paths", "Reference"})
+                                "Benchmarks", "Camera paths and node animations", "Reference"})
         EXPECT_NE(help.find(std::string("\n") + heading + ":\n"), std::string::npos) << heading;
     for (const lit::cli::Flag& flag : lit::cli::flagTable()) {
         const std::size_t start = headingAt(flag.group);

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <stdexcept>
@@ -98,7 +99,7 @@ std::string_view title(FlagGroup group) {
         case FlagGroup::Benchmarks:
             return "Benchmarks";
         case FlagGroup::Paths:
-            return "Camera paths";
+            return "Camera paths and node animations";
         case FlagGroup::Reference:
             return "Reference";
     }
@@ -435,6 +436,18 @@ std::vector<Flag> flagTable() {
                          text));
              options.fps = *fps;
          }});
+    flags.push_back({.names = {"--time"},
+                     .value = "SECONDS",
+                     .expects = "seconds",
+                     .group = G::Paths,
+                     .help = "render the still at this time of the scene's node animations (they start at 0 s; "
+                             "before or after their keys they hold the first or last pose); with --path, the still "
+                             "is the path's view at this time. Without it a still shows the nodes at 0 s",
+                     .store = [](Options& options, const std::string& flag, const std::string& text) {
+                         const auto seconds = parseFloat(text);
+                         if (!seconds || !std::isfinite(*seconds)) throw UsageError(got(flag, "seconds", text));
+                         options.time = *seconds;
+                     }});
     flags.push_back({.names = {"--frames-out"},
                      .value = "DIR",
                      .expects = "DIR",

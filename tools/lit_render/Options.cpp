@@ -111,7 +111,13 @@ Options parseOptions(const std::vector<std::string>& args) {
     if (options.ev && options.exposure) throw UsageError("--ev and --exposure both set the exposure; give one of them");
     if (!options.skyHdr.empty() && options.sky && *options.sky != SkyMode::Hdr)
         throw UsageError("--sky-hdr needs --sky hdr (or no --sky)");
-    if (options.path) {
+    if (options.pathStill()) {
+        // One still through the path: the path is the camera, the outputs are a still's.
+        if (options.camera) throw UsageError("--path and --camera both choose the camera; give one of them");
+        if (!options.framesOut.empty() || options.benchPath || options.fps)
+            throw UsageError("--time with --path renders one still (--out); --frames-out, --bench-path and --fps fly "
+                             "the whole path (leave out --time)");
+    } else if (options.path) {
         // A path renders many frames: its outputs and its camera are its own.
         if (!options.out.empty()) throw UsageError("--out writes one image; with --path use --frames-out DIR");
         if (!options.hdr.empty()) throw UsageError("--hdr writes one image; with --path use --frames-out DIR");
@@ -126,7 +132,9 @@ Options parseOptions(const std::vector<std::string>& args) {
         if (options.fps) throw UsageError("--fps needs --path");
     }
     if (options.reference) {
-        if (options.path) throw UsageError("--reference renders a still image; it does not fly --path");
+        if (options.path && !options.time)
+            throw UsageError("--reference renders a still image; it does not fly --path (add --time SECONDS for the "
+                             "path's view at that time)");
         if (options.benchFrames > 0) throw UsageError("--reference and --bench do not go together (the reference prints its own rays/s)");
         if (options.frames) throw UsageError("--frames does not apply to --reference (use --spp)");
         if (options.view && !reference::referenceRendersView(*options.view))
@@ -137,7 +145,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         if (options.seed) throw UsageError("--seed needs --reference");
         if (!options.nodeMap.empty()) throw UsageError("--node-map needs --reference");
     }
-    if (options.benchFrames == 0 && !options.path && options.out.empty() && options.hdr.empty() &&
+    if (options.benchFrames == 0 && (!options.path || options.time) && options.out.empty() && options.hdr.empty() &&
         options.compare.empty())
         throw UsageError("--out is required (unless --hdr, --bench, --path or --compare)");
     if (!options.out.empty()) requireExtension(options.out, "--out", ".png");
@@ -230,6 +238,7 @@ std::string shortUsage() {
     return "usage: lit-render SCENE.gltf --out IMAGE.png [--hdr IMAGE.hdr] [OPTIONS]         a still\n"
            "       lit-render SCENE.gltf --bench FRAMES [--json FILE.json] [OPTIONS]         per-pass timings\n"
            "       lit-render SCENE.gltf --path FILE.json|ANIMATION --frames-out DIR|--bench-path [OPTIONS]\n"
+           "       lit-render SCENE.gltf --time SECONDS [--path FILE.json|ANIMATION] --out IMAGE.png   at a time\n"
            "       lit-render SCENE.gltf --reference --out IMAGE.png [--spp N] [--bounces N|all] [OPTIONS]\n"
            "       lit-render SCENE.gltf --compare REF.hdr [--difference FILE.png] [OPTIONS]\n"
            "       lit-render --help                                                         every option\n";

@@ -84,6 +84,9 @@ struct Options {
     std::optional<double> fps;         // --fps: frames per second along the path
     std::filesystem::path framesOut;   // --frames-out DIR: every frame as DIR/frame_00000.png, ...
     bool benchPath = false;            // --bench-path: per-frame times along the path (and a flicker figure)
+    // --time SECONDS: a still at that time of the scene's node animations (and, with --path, of the
+    // camera path, which is then the still's camera). Without it a still shows the nodes at 0 s.
+    std::optional<double> time;
     int giUpdateRounds = 0;            // --bench-gi-updates N: light edit vs re-voxelize, N interleaved rounds
     // --reference: path-trace the scene on the CPU (renderer/reference/) instead of rasterizing.
     bool reference = false;
@@ -97,6 +100,8 @@ struct Options {
     double pathFps() const { return fps.value_or(kDefaultPathFps); }
     // --path names a JSON file when it ends in .json (any case), else an animation in the scene.
     bool pathIsFile() const;
+    // --path with --time: one still through the path at that time, not a fly-through.
+    bool pathStill() const { return path && time; }
 
     int frameCount() const { return benchFrames > 0 ? benchFrames : frames.value_or(1); }
 };

@@ -14,6 +14,7 @@
 #include "FlickerMeter.h"
 #include "Renderer.h"
 #include "animation/CameraPathIO.h"
+#include "animation/NodeAnimation.h"
 #include "image/ImageIO.h"
 #include "scene/CameraView.h"
 #include "scene/Scene.h"
@@ -97,7 +98,7 @@ CameraPath loadPath(const Options& options) {
     }
 }
 
-int runPath(const RunContext& run, const CameraPath& path, const Scene& scene, const GlRun& gl) {
+int runPath(const RunContext& run, const CameraPath& path, Scene& scene, const GlRun& gl) {
     const Options& options = run.options;
     const RenderSettings& settings = run.settings;
     Renderer& renderer = gl.renderer;
@@ -107,6 +108,12 @@ int runPath(const RunContext& run, const CameraPath& path, const Scene& scene, c
     } catch (const std::invalid_argument& e) {
         throw RunError(std::string("cannot render the camera path: ") + e.what());
     }
+    // The node animations may run on after the path's last key: the frames go on with them.
+    const double animationEnd = summarizeNodeAnimations(scene).endTime;
+    const double frameStep = 1.0 / options.pathFps();
+    while (!times.empty() && times.back() + frameStep <= animationEnd + 1e-6 &&
+           times.size() <= static_cast<std::size_t>(kMaxFrames))
+        times.push_back(times.back() + frameStep);
     if (times.size() > static_cast<std::size_t>(kMaxFrames))
         throw RunError("the camera path is " + std::to_string(path.duration()) + " s long: " +
                        std::to_string(times.size()) + " frames at this --fps, more than " + std::to_string(kMaxFrames));
@@ -118,8 +125,12 @@ int runPath(const RunContext& run, const CameraPath& path, const Scene& scene, c
     }
 
     const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
-    const lit::Aabb bounds = scene.worldBounds();
-    const auto viewAt = [&](double t) { return *path.view(t, aspect, bounds); };
+    // Each frame poses the nodes at its time first: the view's near and far planes fit the
+    // bounds as posed.
+    const auto viewAt = [&](double t) {
+        applyNodeAnimations(scene, t);
+        return *path.view(t, aspect, scene.worldBounds());
+    };
 
     const Clock::time_point renderStart = Clock::now();
     if (options.benchPath) {

@@ -15,7 +15,9 @@ namespace lit::cli {
 // before any GL work so a bad path is reported at once (UsageError).
 CameraPath loadPath(const Options& options);
 
-// Renders every frame of `path` along it at --fps; returns the exit status.
-int runPath(const RunContext& run, const CameraPath& path, const Scene& scene, const GlRun& gl);
+// Renders every frame of `path` along it at --fps, with the scene's node animations posed at each
+// frame's time (one clock; frames go on past the path's last key, the camera resting there,
+// until the node animations' last key); returns the exit status.
+int runPath(const RunContext& run, const CameraPath& path, Scene& scene, const GlRun& gl);
 
 }  // namespace lit::cli

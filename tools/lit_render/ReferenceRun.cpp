@@ -35,7 +35,7 @@ extern "C" void onInterrupt(int) { interruptRequested().store(true); }
 
 }  // namespace
 
-int runReference(const RunContext& run, const Scene& scene, int cameraIndex) {
+int runReference(const RunContext& run, const Scene& scene, const CameraView& camera) {
     const Options& options = run.options;
     const RenderSettings& settings = run.settings;
     Log& log = run.log;
@@ -46,8 +46,6 @@ int runReference(const RunContext& run, const Scene& scene, int cameraIndex) {
     lit::addDefaultSun(withSun, settings);
     const lit::reference::ReferenceScene referenceScene(withSun, log);
     const double buildSeconds = secondsSince(buildStart);
-    const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
-    const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
 
     lit::reference::ReferenceSettings reference;
     // Without --bounces the reference follows --gi and the settings' bounces: the same light paths

@@ -7,11 +7,14 @@
 
 namespace lit {
 struct Scene;
+struct CameraView;
 }
 
 namespace lit::cli {
 
 // Returns the exit status: 0, or 130 when Ctrl+C stopped the render (the image so far was written).
-int runReference(const RunContext& run, const Scene& scene, int cameraIndex);
+// `scene` as posed at --time (its world transforms are what the tracer builds from); `camera`
+// the still's view, as the rasterized still's.
+int runReference(const RunContext& run, const Scene& scene, const CameraView& camera);
 
 }  // namespace lit::cli

@@ -18,12 +18,10 @@
 
 namespace lit::cli {
 
-int runStill(const RunContext& run, Scene& scene, int cameraIndex, const GlRun& gl) {
+int runStill(const RunContext& run, Scene& scene, const CameraView& camera, const GlRun& gl) {
     const Options& options = run.options;
     const RenderSettings& settings = run.settings;
     Renderer& renderer = gl.renderer;
-    const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
-    const lit::CameraView camera = lit::sceneCameraView(scene, cameraIndex, aspect);
 
     const Clock::time_point renderStart = Clock::now();
     BenchResult bench;

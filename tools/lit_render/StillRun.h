@@ -7,11 +7,13 @@
 
 namespace lit {
 struct Scene;
+struct CameraView;
 }
 
 namespace lit::cli {
 
-// Returns the exit status. `scene` is not const: --bench-gi-updates edits a light.
-int runStill(const RunContext& run, Scene& scene, int cameraIndex, const GlRun& gl);
+// Returns the exit status. `scene` is not const: --bench-gi-updates edits a light. `camera`: the
+// chosen scene camera's view, or the camera path's at --time.
+int runStill(const RunContext& run, Scene& scene, const CameraView& camera, const GlRun& gl);
 
 }  // namespace lit::cli

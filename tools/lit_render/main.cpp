@@ -27,9 +27,11 @@
 #include "RunContext.h"
 #include "SettingsFile.h"
 #include "StillRun.h"
+#include "animation/NodeAnimation.h"
 #include "context/HeadlessContext.h"
 #include "gl/Capabilities.h"
 #include "gl/GlError.h"
+#include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 #include "scene/Scene.h"
 #include "scene/SceneBuilder.h"
@@ -109,9 +111,23 @@ int run(const Options& options) {
     lit::Scene scene = loadScene(options, settings, log, loadProgress);
     lit::addDefaultCamera(scene, log);
     const int cameraIndex = resolveCamera(options, scene);
+    // Node animations: a still shows them at --time (0 s without it); a path poses them per frame.
+    for (const std::string& problem : lit::nodeAnimationProblems(scene)) log.warning(problem);
+    if (const lit::NodeAnimationSummary animated = lit::summarizeNodeAnimations(scene); animated.channels > 0) {
+        char line[128];
+        std::snprintf(line, sizeof line, "node animations: %d channels on %d nodes, 0 to %g s", animated.channels,
+                      animated.nodes, animated.endTime);
+        log.info(line);
+    }
+    lit::applyNodeAnimations(scene, options.time.value_or(0.0));
     const RunContext context{options, settings, compareTruth ? &*compareTruth : nullptr, log};
-    if (options.reference) return runReference(context, scene, cameraIndex);
     const std::optional<lit::CameraPath> path = options.path ? std::optional(loadPath(options)) : std::nullopt;
+    // The still's camera: the path's view at --time, else the scene camera's.
+    const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
+    const lit::CameraView stillCamera = options.pathStill()
+                                            ? *path->view(*options.time, aspect, scene.worldBounds())
+                                            : lit::sceneCameraView(scene, cameraIndex, aspect);
+    if (options.reference) return runReference(context, scene, stillCamera);
 
     lit::HeadlessContext glContext;
     lit::gl::requireCapabilities();
@@ -140,8 +156,8 @@ int run(const Options& options) {
                            " during the render (see above); nothing was written");
     };
     const GlRun gl{renderer, glContext.description(), requireNoGlErrors};
-    if (path) return runPath(context, *path, scene, gl);
-    return runStill(context, scene, cameraIndex, gl);
+    if (path && !options.pathStill()) return runPath(context, *path, scene, gl);
+    return runStill(context, scene, stillCamera, gl);
 }
 
 }  // namespace
