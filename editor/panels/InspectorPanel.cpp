@@ -173,8 +173,10 @@ void drawTextureTransforms(const Material& material) {
     for (std::size_t slot = 0; slot < kSlots.size(); ++slot) {
         const TextureTransform& t = material.textureTransforms[slot];
         if (textures[slot] < 0 || !t.present) continue;
+        ImGui::PushTextWrapPos(0.0f);  // the inspector is narrow: wrap rather than cut the numbers off
         ImGui::TextDisabled("%s UV: scale %.3g x %.3g, offset %.3g, %.3g, rotation %.1f deg", kSlots[slot], t.scale.x,
                             t.scale.y, t.offset.x, t.offset.y, t.rotation * kDegPerRad);
+        ImGui::PopTextWrapPos();
         tooltip("KHR_texture_transform from the file (saved back as it is)");
     }
 }
