@@ -32,7 +32,7 @@ void main() {
         if (dot(t, t) > 1e-10) {
             t = normalize(t);
             vec3 b = cross(n, t) * (fs.worldTangent.w < 0.0 ? -1.0 : 1.0);
-            vec3 tn = texture(normalTexture, fs.uv).xyz * 2.0 - 1.0;
+            vec3 tn = texture(normalTexture, materialUv(LIT_MATERIAL_SLOT_NORMAL, fs.uv)).xyz * 2.0 - 1.0;
             tn.xy *= m.params.z;
             n = normalize(mat3(t, b, n) * tn);
         }
@@ -43,18 +43,22 @@ void main() {
     float roughness = m.params.y;
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_METALLIC_ROUGHNESS)
     if (m.textures.y != 0) {
-        vec4 mr = texture(metallicRoughnessTexture, fs.uv);
+        vec4 mr = texture(metallicRoughnessTexture, materialUv(LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS, fs.uv));
         roughness *= mr.g;
         metalness *= mr.b;
     }
 #endif
     float occlusion = 1.0;
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_OCCLUSION)
-    if (m.modes.x != 0) occlusion = 1.0 + m.params.w * (texture(occlusionTexture, fs.uv).r - 1.0);
+    if (m.modes.x != 0) {
+        float ao = texture(occlusionTexture, materialUv(LIT_MATERIAL_SLOT_OCCLUSION, fs.uv)).r;
+        occlusion = 1.0 + m.params.w * (ao - 1.0);
+    }
 #endif
     vec3 emissive = m.emissive.rgb;
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_EMISSIVE)
-    if (m.textures.w != 0) emissive *= texture(emissiveTexture, fs.uv).rgb;
+    if (m.textures.w != 0)
+        emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;
 #endif
 
     outAlbedo = vec4(baseColor.rgb, occlusion);

@@ -58,7 +58,8 @@ void main() {
     vec4 baseColor = materialBaseColor(m, fs.uv);
     if (materialAlphaDiscard(m, baseColor.a)) discard;
     vec3 emissive = m.emissive.rgb;
-    if (m.textures.w != 0) emissive *= texture(emissiveTexture, fs.uv).rgb;
+    if (m.textures.w != 0)
+        emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;
     float len = length(fs.worldNormal);
     vec3 normal = len > 1e-12 ? fs.worldNormal / len : vec3(0.0);
 

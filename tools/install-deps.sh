@@ -14,6 +14,7 @@ packages=(
     libglfw3-dev libglm-dev libimgui-dev      # window, math, editor UI
     libstb-dev libtinygltf-dev nlohmann-json3-dev  # images, glTF, JSON
     libdraco-dev libmeshoptimizer-dev         # compressed glTF geometry (Draco, meshopt)
+    libwebp-dev                               # WebP textures (EXT_texture_webp)
     libepoxy-dev libegl-dev libgl-dev         # GL/EGL loading
     libegl-mesa0 libgl1-mesa-dri libglx-mesa0 # Mesa (llvmpipe) for machines without a GPU driver
     libembree-dev libtbb-dev                  # reference path tracer: ray queries, threads

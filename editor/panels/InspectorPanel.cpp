@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -172,6 +173,26 @@ void InspectorPanel::drawTransform(Document& doc, int nodeIndex) {
     ImGui::PopID();
 }
 
+namespace {
+
+// Read-only: the KHR_texture_transform of each texture reference that has one.
+void drawTextureTransforms(const Material& material) {
+    static constexpr std::array<const char*, 5> kSlots = {"Albedo", "Metal-rough", "Normal", "Emissive", "Occlusion"};
+    const std::array<int, 5> textures = {material.baseColorTexture, material.metallicRoughnessTexture,
+                                         material.normalTexture, material.emissiveTexture, material.occlusionTexture};
+    for (std::size_t slot = 0; slot < kSlots.size(); ++slot) {
+        const TextureTransform& t = material.textureTransforms[slot];
+        if (textures[slot] < 0 || !t.present) continue;
+        ImGui::PushTextWrapPos(0.0f);  // the inspector is narrow: wrap rather than cut the numbers off
+        ImGui::TextDisabled("%s UV: scale %.3g x %.3g, offset %.3g, %.3g, rotation %.1f deg", kSlots[slot], t.scale.x,
+                            t.scale.y, t.offset.x, t.offset.y, t.rotation * kDegPerRad);
+        ImGui::PopTextWrapPos();
+        tooltip("KHR_texture_transform from the file (saved back as it is)");
+    }
+}
+
+}  // namespace
+
 void InspectorPanel::drawMaterial(Document& doc, int materialIndex) {
     Material& material = doc.scene.materials[static_cast<std::size_t>(materialIndex)];
     ImGui::PushID("material");
@@ -197,6 +218,7 @@ void InspectorPanel::drawMaterial(Document& doc, int materialIndex) {
     }
     ImGui::EndDisabled();
     if (remembered < 0 && !textured) tooltip("This material has no base colour texture");
+    drawTextureTransforms(material);
 
     float roughness = material.roughness;
     changed = ImGui::SliderFloat("Roughness", &roughness, 0.0f, 1.0f, "%.3f");

@@ -34,6 +34,17 @@ int wrapTexel(int i, int size, int mode) {
     return std::clamp(i, 0, size - 1);  // CLAMP_TO_EDGE and anything unknown
 }
 
+// Material's texture references (scene/Scene.h order; shared.h's LIT_MATERIAL_SLOT_*).
+constexpr std::size_t kSlotBaseColor = 0, kSlotMetallicRoughness = 1, kSlotNormal = 2, kSlotEmissive = 3,
+                      kSlotOcclusion = 4;
+
+// The UVs reference `slot` samples at mesh UV `uv`: its KHR_texture_transform, as
+// material.glsl's materialUv applies it.
+glm::vec2 slotUv(const Material& m, std::size_t slot, glm::vec2 uv) {
+    const TextureTransform& t = m.textureTransforms[slot];
+    return t.present ? applyUvTransform(uvTransformRows(t), uv) : uv;
+}
+
 // What Embree hands the alpha-mask filter of one geometry.
 struct AlphaFilterData {
     const ReferenceScene* scene = nullptr;
@@ -212,7 +223,7 @@ bool ReferenceScene::alphaCutOut(unsigned geometry, unsigned primitive, float u,
     const glm::vec2 uv = (1.0f - u - v) * g.uvs[g.indices[t]] + u * g.uvs[g.indices[t + 1]] + v * g.uvs[g.indices[t + 2]];
     const Material& m = impl_->materials[static_cast<std::size_t>(g.material)];
     float alpha = m.baseColorFactor.a;
-    if (m.baseColorTexture >= 0) alpha *= sampleTexture(m.baseColorTexture, uv).a;
+    if (m.baseColorTexture >= 0) alpha *= sampleTexture(m.baseColorTexture, slotUv(m, kSlotBaseColor, uv)).a;
     return alpha < m.alphaCutoff;
 }
 
@@ -273,7 +284,7 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
                                                                                       : s.fallback;
     // shaders/gbuffer.frag.glsl, line by line.
     glm::vec4 baseColor = m.baseColorFactor;
-    if (m.baseColorTexture >= 0) baseColor *= sampleTexture(m.baseColorTexture, uv);
+    if (m.baseColorTexture >= 0) baseColor *= sampleTexture(m.baseColorTexture, slotUv(m, kSlotBaseColor, uv));
 
     glm::vec3 n = glm::length(normal) > 0.0f ? glm::normalize(normal) : hit.geometricNormal;
     if (!frontFacing) n = -n;
@@ -282,7 +293,7 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
         if (glm::dot(t, t) > 1e-10f) {
             t = glm::normalize(t);
             const glm::vec3 b = glm::cross(n, t) * (tangent.w < 0.0f ? -1.0f : 1.0f);
-            glm::vec3 tn = glm::vec3(sampleTexture(m.normalTexture, uv)) * 2.0f - 1.0f;
+            glm::vec3 tn = glm::vec3(sampleTexture(m.normalTexture, slotUv(m, kSlotNormal, uv))) * 2.0f - 1.0f;
             tn.x *= m.normalScale;
             tn.y *= m.normalScale;
             const glm::vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
@@ -292,14 +303,16 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
     float metalness = m.metallic;
     float roughness = m.roughness;
     if (m.metallicRoughnessTexture >= 0) {
-        const glm::vec4 mr = sampleTexture(m.metallicRoughnessTexture, uv);
+        const glm::vec4 mr = sampleTexture(m.metallicRoughnessTexture, slotUv(m, kSlotMetallicRoughness, uv));
         roughness *= mr.g;
         metalness *= mr.b;
     }
     float occlusion = 1.0f;
-    if (m.occlusionTexture >= 0) occlusion = 1.0f + m.occlusionStrength * (sampleTexture(m.occlusionTexture, uv).r - 1.0f);
+    if (m.occlusionTexture >= 0)
+        occlusion =
+            1.0f + m.occlusionStrength * (sampleTexture(m.occlusionTexture, slotUv(m, kSlotOcclusion, uv)).r - 1.0f);
     glm::vec3 emissive = m.emissiveFactor * m.emissiveStrength;
-    if (m.emissiveTexture >= 0) emissive *= glm::vec3(sampleTexture(m.emissiveTexture, uv));
+    if (m.emissiveTexture >= 0) emissive *= glm::vec3(sampleTexture(m.emissiveTexture, slotUv(m, kSlotEmissive, uv)));
 
     hit.baseColor = glm::vec3(baseColor);
     hit.normal = n;

@@ -18,6 +18,11 @@
 //   is written with its own bytes and MIME type (Image::encoded: 16-bit PNGs and KTX2 stay as
 //   they were); any other image (generated, or from a file that is gone) is encoded as PNG into
 //   the buffer. The loader's white stand-in (Image::generated) is not written.
+// - A WebP image (EXT_texture_webp) keeps its bytes and goes back into the extension's `source`,
+//   with the file's fallback image (if any) as the texture's `source`. Once its pixels are
+//   edited it is written as a PNG through the plain `source`.
+// - KHR_texture_transform is written from Material::textureTransforms (the fields that differ
+//   from the identity) on every texture reference that had it or was given one.
 // - Every glTF scene of the source is written, in its order (Scene::otherScenes around the
 //   shown one, which keeps its index as `scene`).
 // - Light intensities are written in glTF's photometric units: Scene's W/sr and W/m² times
@@ -31,6 +36,7 @@
 #include "io/GltfFile.h"
 #include "scene/GltfExportDetail.h"
 #include "scene/GltfKeep.h"
+#include "scene/GltfTextureTransform.h"
 #include "scene/LightUnits.h"
 
 #include <nlohmann/json.hpp>
@@ -51,6 +57,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* kLightsExtension = "KHR_lights_punctual";
 constexpr const char* kEmissiveStrengthExtension = "KHR_materials_emissive_strength";
+constexpr const char* kWebpExtension = "EXT_texture_webp";
 constexpr const char* kCastsShadowKey = "litCastsShadow";
 constexpr const char* kGenerator = "Lit";
 constexpr const char* kSourceGeneratorKey = "litSourceGenerator";
@@ -67,6 +74,13 @@ std::vector<double> fileOr(const FileNumbers& numbers, const char* prefix, const
     std::vector<double> out(N);
     for (int i = 0; i < N; ++i) out[static_cast<std::size_t>(i)] = fileOr(numbers, prefix + std::to_string(i), v[i]);
     return out;
+}
+
+// Whether the written image `out` (of scene image `image`) holds WebP: the source's own bytes,
+// or a file by URI (addImages re-encodes anything else as PNG).
+bool writtenAsWebp(const tinygltf::Image& out, const Image& image) {
+    if (out.bufferView >= 0) return out.mimeType == "image/webp";
+    return !out.uri.empty() && (image.mimeType == "image/webp" || out.uri.ends_with(".webp"));
 }
 
 // A node's translation, rotation and scale, only what differs from the glTF defaults (as other
@@ -340,9 +354,21 @@ void ModelBuilder::addTextures() {
         if (texture.fileImage >= 0 && static_cast<std::size_t>(texture.fileImage) < scene_.images.size() &&
             texture.image >= 0 && scene_.images[static_cast<std::size_t>(texture.fileImage)].sameAs == texture.image)
             image = texture.fileImage;
-        out.source = image >= 0 && static_cast<std::size_t>(image) < imageIndex_.size()
-                         ? imageIndex_[static_cast<std::size_t>(image)]
-                         : -1;
+        const auto writtenImage = [&](int i) {
+            return i >= 0 && static_cast<std::size_t>(i) < imageIndex_.size() ? imageIndex_[static_cast<std::size_t>(i)]
+                                                                              : -1;
+        };
+        out.source = writtenImage(image);
+        // A WebP image goes back into EXT_texture_webp (with the file's fallback as `source`)
+        // while it is still the file's WebP bytes; one re-encoded as PNG is a plain source.
+        if (texture.webp && out.source >= 0 && writtenAsWebp(model_.images[static_cast<std::size_t>(out.source)],
+                                                              scene_.images[static_cast<std::size_t>(image)])) {
+            tinygltf::Value::Object webp;
+            webp["source"] = tinygltf::Value(out.source);
+            out.extensions[kWebpExtension] = tinygltf::Value(std::move(webp));
+            useExtension(kWebpExtension);
+            out.source = writtenImage(texture.fallbackImage);
+        }
         out.sampler = samplerIndex;
         restore(texture.kept, out.extras, out.extensions);
         model_.textures.push_back(std::move(out));
@@ -394,6 +420,19 @@ void ModelBuilder::addMaterials() {
         restore(material.kept, out.extras, out.extensions);
         const auto& extras = material.textureExtras;
         const auto& extensions = material.textureExtensions;
+        // KHR_texture_transform first: restore() keeps an extension already present.
+        const std::array<tinygltf::ExtensionMap*, 5> referenceExtensions = {
+            &pbr.baseColorTexture.extensions, &pbr.metallicRoughnessTexture.extensions, &out.normalTexture.extensions,
+            &out.emissiveTexture.extensions, &out.occlusionTexture.extensions};
+        const std::array<int, 5> textures = {material.baseColorTexture, material.metallicRoughnessTexture,
+                                             material.normalTexture, material.emissiveTexture,
+                                             material.occlusionTexture};
+        for (std::size_t slot = 0; slot < 5; ++slot) {
+            if (textures[slot] < 0 || !material.textureTransforms[slot].present) continue;
+            (*referenceExtensions[slot])[gltfkeep::kTextureTransformExtension] =
+                gltfkeep::textureTransformValue(material.textureTransforms[slot]);
+            useExtension(gltfkeep::kTextureTransformExtension);
+        }
         restoreTextureInfo(extras[0], extensions[0], pbr.baseColorTexture.extras, pbr.baseColorTexture.extensions);
         restoreTextureInfo(extras[1], extensions[1], pbr.metallicRoughnessTexture.extras,
                            pbr.metallicRoughnessTexture.extensions);

@@ -16,6 +16,8 @@ namespace {
 
 // KTX2 textures (Basis Universal): Lit has no transcoder.
 constexpr std::string_view kBasisu = "KHR_texture_basisu";
+// WebP textures: decoded when Lit is built with libwebp (LIT_HAS_WEBP).
+constexpr std::string_view kWebp = "EXT_texture_webp";
 
 // The names in the file's top-level array `key`, once each, in file order (non-strings skipped).
 std::vector<std::string> namesIn(const nlohmann::json& doc, const char* key) {
@@ -44,9 +46,10 @@ bool isSupportedExtension(std::string_view name) {
     // KHR_mesh_quantization only widens the accessor types allowed for attributes, which the
     // generic accessor reader handles; the compressed geometry is decoded before the import
     // (scene/GltfCompression.h).
-    static constexpr std::array<std::string_view, 5> supported = {
-        "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_mesh_quantization", "EXT_meshopt_compression",
-        "KHR_draco_mesh_compression"};
+    static constexpr std::array<std::string_view, 6> supported = {
+        "KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_mesh_quantization",
+        "EXT_meshopt_compression",    "KHR_draco_mesh_compression",      "KHR_texture_transform"};
+    if (name == kWebp) return LIT_HAS_WEBP != 0;
     return std::find(supported.begin(), supported.end(), name) != supported.end();
 }
 
@@ -63,6 +66,9 @@ void checkExtensions(const std::filesystem::path& path, const nlohmann::json& do
         std::string message = path.string() + ": requires " + names + ", which Lit does not support";
         if (std::find(missing.begin(), missing.end(), kBasisu) != missing.end())
             message += " (KHR_texture_basisu: KTX2 textures, which Lit does not decode)";
+        if (std::find(missing.begin(), missing.end(), kWebp) != missing.end())
+            message += " (EXT_texture_webp: WebP textures; this build of Lit has no libwebp, configure with "
+                       "-DLIT_WEBP=ON)";
         throw SceneLoadError(message);
     }
     const std::string file = path.filename().string();
@@ -76,6 +82,12 @@ void checkExtensions(const std::filesystem::path& path, const nlohmann::json& do
                         (bare == 0 ? std::string()
                                    : " (" + std::to_string(bare) + (bare == 1 ? " texture has" : " textures have") +
                                          " none and " + (bare == 1 ? "is" : "are") + " drawn without it)"));
+            continue;
+        }
+        if (name == kWebp) {
+            log.warning(file +
+                        ": uses EXT_texture_webp (WebP textures), which this build of Lit does not decode (no "
+                        "libwebp); textures use their fallback source, or white where they have none");
             continue;
         }
         log.warning(file + ": uses " + name +

@@ -15,6 +15,7 @@
 #include "scene/GltfImportKept.h"
 #include "scene/GltfImportMeshes.h"
 #include "scene/GltfKeep.h"
+#include "scene/GltfTextureTransform.h"
 #include "scene/GltfValidate.h"
 #include "scene/LightUnits.h"
 
@@ -326,11 +327,27 @@ void Importer::loadMaterials(Scene& scene) const {
         out.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_materials_emissive_strength"});
         out.textureTexCoord = {pbr.baseColorTexture.texCoord, pbr.metallicRoughnessTexture.texCoord,
                                in.normalTexture.texCoord, in.emissiveTexture.texCoord, in.occlusionTexture.texCoord};
-        out.textureExtensions = {gltfkeep::extensionsText(pbr.baseColorTexture.extensions),
-                                 gltfkeep::extensionsText(pbr.metallicRoughnessTexture.extensions),
-                                 gltfkeep::extensionsText(in.normalTexture.extensions),
-                                 gltfkeep::extensionsText(in.emissiveTexture.extensions),
-                                 gltfkeep::extensionsText(in.occlusionTexture.extensions)};
+        // KHR_texture_transform is read into textureTransforms (and written from there); the
+        // references' other extensions are kept as text.
+        const std::array<const tinygltf::ExtensionMap*, 5> referenceExtensions = {
+            &pbr.baseColorTexture.extensions, &pbr.metallicRoughnessTexture.extensions, &in.normalTexture.extensions,
+            &in.emissiveTexture.extensions, &in.occlusionTexture.extensions};
+        static constexpr std::array<const char*, 5> kSlotNames = {"baseColorTexture", "metallicRoughnessTexture",
+                                                                  "normalTexture", "emissiveTexture",
+                                                                  "occlusionTexture"};
+        for (std::size_t slot = 0; slot < 5; ++slot) {
+            const tinygltf::ExtensionMap& extensions = *referenceExtensions[slot];
+            out.textureExtensions[slot] = gltfkeep::extensionsText(extensions, {gltfkeep::kTextureTransformExtension});
+            const std::string reference = what + " " + kSlotNames[slot];
+            TextureTransform& transform = out.textureTransforms[slot];
+            transform = gltfkeep::readTextureTransform(
+                extensions, [&](const std::string& problem) { warn(reference + ": " + problem); });
+            const std::array<int, 5> textures = {out.baseColorTexture, out.metallicRoughnessTexture,
+                                                 out.normalTexture, out.emissiveTexture, out.occlusionTexture};
+            if (textures[slot] >= 0 && transform.texCoord > 0 && out.textureTexCoord[slot] == 0)
+                warn(reference + " uses TEXCOORD_" + std::to_string(transform.texCoord) +
+                     " (KHR_texture_transform texCoord); Lit draws it with TEXCOORD_0 (the file's choice is saved back)");
+        }
         out.textureExtras = {
             gltfkeep::extrasText(pbr.baseColorTexture.extras),
             gltfkeep::extrasText(pbr.metallicRoughnessTexture.extras), gltfkeep::extrasText(in.normalTexture.extras),
@@ -399,7 +416,22 @@ void Importer::loadTextures(Scene& scene) const {
         } else {
             out.hasSampler = false;
         }
-        out.kept = gltfkeep::keep(in.extras, in.extensions);
+        // EXT_texture_webp: its image replaces `source`, which stays the file's fallback.
+        const auto webp = in.extensions.find("EXT_texture_webp");
+        const bool readWebp = LIT_HAS_WEBP != 0 && webp != in.extensions.end();
+        if (readWebp) {
+            const tinygltf::Value& source = webp->second.Get("source");
+            const int image = source.IsInt() ? source.Get<int>() : -1;
+            if (image < 0 || static_cast<std::size_t>(image) >= model_.images.size())
+                fail("texture " + std::to_string(t) + " has an EXT_texture_webp source that is not an image of the file (" +
+                     std::to_string(model_.images.size()) + " images)");
+            out.fallbackImage = out.fileImage;
+            out.image = source_.images.canonical(image);
+            out.fileImage = image;
+            out.webp = true;
+        }
+        out.kept = readWebp ? gltfkeep::keep(in.extras, in.extensions, {"EXT_texture_webp"})
+                            : gltfkeep::keep(in.extras, in.extensions);
         scene.textures.push_back(out);
     }
 }

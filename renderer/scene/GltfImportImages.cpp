@@ -7,6 +7,9 @@
 #include "scene/GltfKeep.h"
 
 #include <stb_image.h>
+#if LIT_HAS_WEBP
+#include <webp/decode.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -32,6 +35,34 @@ struct DecodedImage {
     std::string error;  // empty on success
 };
 
+// A WebP file starts "RIFF", a 4-byte size, "WEBP" (RFC 9649, 2.5).
+bool isWebp(const std::vector<unsigned char>& bytes) {
+    return bytes.size() >= 12 && std::equal(bytes.begin(), bytes.begin() + 4, "RIFF") &&
+           std::equal(bytes.begin() + 8, bytes.begin() + 12, "WEBP");
+}
+
+// WebP (EXT_texture_webp) through libwebp; stb_image does not read it.
+DecodedImage decodeWebp(const std::vector<unsigned char>& encoded) {
+    DecodedImage out;
+#if LIT_HAS_WEBP
+    int width = 0, height = 0;
+    std::unique_ptr<std::uint8_t, void (*)(void*)> pixels(
+        WebPDecodeRGBA(encoded.data(), encoded.size(), &width, &height), WebPFree);
+    if (!pixels) {
+        out.error = "libwebp could not decode it (not a valid WebP image)";
+        return out;
+    }
+    out.width = width;
+    out.height = height;
+    out.rgba.assign(pixels.get(),
+                    pixels.get() + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4u);
+#else
+    (void)encoded;
+    out.error = "it is WebP, and this build of Lit has no libwebp (configure with -DLIT_WEBP=ON)";
+#endif
+    return out;
+}
+
 DecodedImage decodeImage(const std::vector<unsigned char>& encoded) {
     DecodedImage out;
     if (encoded.empty()) {
@@ -42,6 +73,7 @@ DecodedImage decodeImage(const std::vector<unsigned char>& encoded) {
         out.error = "the image is larger than 2 GiB";
         return out;
     }
+    if (isWebp(encoded)) return decodeWebp(encoded);
     int width = 0, height = 0, channels = 0;
     // stb_image's failure reason is thread-local in stb 2.27, so workers do not race on it.
     std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
@@ -72,7 +104,7 @@ std::string mimeTypeOf(const std::string& uri, const std::vector<unsigned char>&
     if (starts({0x89, 'P', 'N', 'G'})) return "image/png";
     if (starts({0xFF, 0xD8, 0xFF})) return "image/jpeg";
     if (starts({0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB})) return "image/ktx2";
-    if (bytes.size() >= 12 && std::equal(bytes.begin() + 8, bytes.begin() + 12, "WEBP")) return "image/webp";
+    if (isWebp(bytes)) return "image/webp";
     return "application/octet-stream";
 }
 

@@ -1,9 +1,10 @@
 #pragma once
-// The glTF import's images (internal to the glTF import): decoded by stb_image to RGBA8 on up to
-// hardware_concurrency threads (or GltfLoadOptions::decodeThreads), progress reported on the
-// calling thread. An image that is missing or cannot be decoded becomes 1x1 white with a
-// warning, and materials that used it as a normal map drop the normal map (normalTexture = -1)
-// so they fall back to vertex normals. Embedded images keep their encoded bytes for a save.
+// The glTF import's images (internal to the glTF import): decoded by stb_image (WebP by libwebp,
+// when built with it) to RGBA8 on up to hardware_concurrency threads (or
+// GltfLoadOptions::decodeThreads), progress reported on the calling thread. An image that is
+// missing or cannot be decoded becomes 1x1 white with a warning, and materials that used it as a
+// normal map drop the normal map (normalTexture = -1) so they fall back to vertex normals.
+// Embedded images keep their encoded bytes for a save.
 
 #include "scene/GltfImportDetail.h"
 

@@ -68,6 +68,19 @@ gl::Sampler makeSampler(const SamplerState& state, std::size_t index) {
     return sampler;
 }
 
+// The material's texture transforms as material.glsl's uUvTransforms wants them.
+GpuScene::UvTransforms uvTransformsOf(const Material& m) {
+    static_assert(2 * LIT_MATERIAL_SLOTS == std::tuple_size_v<GpuScene::UvTransforms>);
+    static_assert(LIT_MATERIAL_SLOTS == std::tuple_size_v<decltype(m.textureTransforms)>);
+    GpuScene::UvTransforms out{};
+    for (std::size_t slot = 0; slot < m.textureTransforms.size(); ++slot) {
+        const std::array<glm::vec3, 2> rows = uvTransformRows(m.textureTransforms[slot]);
+        out[2 * slot] = glm::vec4(rows[0], 0.0f);
+        out[2 * slot + 1] = glm::vec4(rows[1], 0.0f);
+    }
+    return out;
+}
+
 gpu::GpuMaterial toGpu(const Material& m) {
     gpu::GpuMaterial g{};
     g.baseColorFactor = m.baseColorFactor;
@@ -210,6 +223,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
     std::vector<gpu::GpuMaterial> table;
     table.reserve(scene.materials.size() + 1);
     materialTextures_.clear();
+    materialUvTransforms_.clear();
     const auto textureId = [this](int index) -> TextureBinding {
         if (index < 0 || static_cast<std::size_t>(index) >= textures_.size()) return {};
         return textures_[static_cast<std::size_t>(index)];
@@ -224,6 +238,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
         g.modes.x = t.occlusion.texture != 0;
         table.push_back(g);
         materialTextures_.push_back(t);
+        materialUvTransforms_.push_back(uvTransformsOf(m));
     }
     // The default material (glTF spec: white, metallic 1, roughness 1; we use metallic 0 so
     // untextured test geometry is visible as diffuse white).
@@ -231,6 +246,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
     fallback.metallic = 0.0f;
     table.push_back(toGpu(fallback));
     materialTextures_.push_back({});
+    materialUvTransforms_.push_back(uvTransformsOf(fallback));
     materials_ = gl::Buffer::fromSpan<gpu::GpuMaterial>("materials", table);
 }
 
@@ -296,6 +312,8 @@ void GpuScene::drawItem(const Scene& scene, const DrawItem& item, const gl::Prog
     glProgramUniformMatrix4fv(program.id(), LIT_LOC_NORMAL_MATRIX, 1, GL_FALSE, glm::value_ptr(normalMatrix));
     const int material = materialRow(item);
     glProgramUniform1i(program.id(), LIT_LOC_MATERIAL, material);
+    glProgramUniform4fv(program.id(), LIT_LOC_UV_TRANSFORMS, 2 * LIT_MATERIAL_SLOTS,
+                        glm::value_ptr(materialUvTransforms_[static_cast<std::size_t>(material)][0]));
     bindMaterialTextures(material, bind);
     glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(item.indexCount), GL_UNSIGNED_INT,
                              reinterpret_cast<const void*>(static_cast<std::uintptr_t>(item.firstIndex) * 4u),

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -48,6 +49,10 @@ struct DrawCounters {
 
 class GpuScene {
 public:
+    // A material's KHR_texture_transform rows, two per texture reference (material.glsl's
+    // uUvTransforms, set per draw).
+    using UvTransforms = std::array<glm::vec4, 10>;
+
     GpuScene() = default;
     // Primitives of more than `maxChunkTriangles` triangles are split into chunks of at most that
     // many (their indices reordered on the GPU, the Scene unchanged), one draw item each, so
@@ -124,6 +129,7 @@ private:
         TextureBinding baseColor, metallicRoughness, normal, emissive, occlusion;
     };
     std::vector<MaterialTextures> materialTextures_;  // per material, + default at the end
+    std::vector<UvTransforms> materialUvTransforms_;  // per material, + default at the end
 };
 
 template <typename Filter>

@@ -5,6 +5,7 @@
 // knows what to redo (geometry → re-voxelize, lights → re-inject).
 
 #include "scene/Aabb.h"
+#include "scene/TextureTransform.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -215,6 +216,10 @@ struct Texture {
     // `image` at an identical earlier image (Image::sameAs), a save writes the file's own while
     // `image` is still that one, so the file keeps its texture sources.
     int fileImage = -1;
+    // Whether `image` is the texture's EXT_texture_webp source (a save writes it there again);
+    // `fallbackImage` is then the file's plain `source` (-1: none), which Lit does not draw.
+    bool webp = false;
+    int fallbackImage = -1;
 };
 
 enum class AlphaMode { Opaque, Mask, Blend };
@@ -238,11 +243,14 @@ struct Material {
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
     KeptGltf kept{};
-    // Extensions of each texture reference (KHR_texture_transform, ...), JSON object text, in the
-    // order base colour, metallic-roughness, normal, emissive, occlusion.
+    // Extensions of each texture reference other than KHR_texture_transform, JSON object text, in
+    // the order base colour, metallic-roughness, normal, emissive, occlusion.
     std::array<std::string, 5> textureExtensions{};
+    // KHR_texture_transform of each texture reference, same order (identity when absent).
+    std::array<TextureTransform, 5> textureTransforms{};
     // The TEXCOORD_n set each texture reference reads, same order. Lit draws with TEXCOORD_0
-    // (the loader warns); the file's number is saved back.
+    // (the loader warns, also for a KHR_texture_transform texCoord override); the file's number
+    // is saved back.
     std::array<int, 5> textureTexCoord{};
     // Extras of each texture reference (JSON text, "" when absent), same order, and the extras and
     // extensions of pbrMetallicRoughness.

@@ -32,6 +32,7 @@ using mat4 = glm::mat4;
 #define LIT_LOC_NORMAL_MATRIX 1    // mat4 inverse transpose of the model matrix
 #define LIT_LOC_MATERIAL 2         // int index into GpuMaterial[]
 #define LIT_LOC_NODE_ID 3          // uint node index + 1 the G-buffer writes to its ID target (0 = background)
+#define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS]: the draw's texture transforms (material.glsl)
 
 // ---- Texture units -----------------------------------------------------------------------
 // Material textures (G-buffer, shadow alpha test, voxelization).
@@ -220,6 +221,16 @@ using mat4 = glm::mat4;
 #define LIT_MATERIAL_TEXTURE_EMISSIVE 8
 #define LIT_MATERIAL_TEXTURE_OCCLUSION 16
 #define LIT_MATERIAL_TEXTURES_ALL 31
+
+// A material's texture references in the order of Material's per-reference arrays (scene/Scene.h);
+// elements 2 × slot and 2 × slot + 1 of the LIT_LOC_UV_TRANSFORMS uniform are that reference's
+// KHR_texture_transform.
+#define LIT_MATERIAL_SLOT_BASE_COLOR 0
+#define LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS 1
+#define LIT_MATERIAL_SLOT_NORMAL 2
+#define LIT_MATERIAL_SLOT_EMISSIVE 3
+#define LIT_MATERIAL_SLOT_OCCLUSION 4
+#define LIT_MATERIAL_SLOTS 5
 
 // ---- Structs ------------------------------------------------------------------------------
 // Per-frame camera and output parameters. std140, binding LIT_UBO_FRAME.

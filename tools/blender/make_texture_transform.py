@@ -1,0 +1,125 @@
+# Makes the texture-transform test scene: two planes seen from above, each with a red/blue checker
+# (a 2×2 image, Closest interpolation) placed by a Mapping node, as a user tiles a texture in
+# Blender. The exporter writes the Mapping node as KHR_texture_transform on the base colour and
+# emissive textures (the image drives both, so the planes show their texture without lights).
+#
+#   tools/install-deps.sh --scene-tools
+#   blender -b --factory-startup --python tools/blender/make_texture_transform.py -- [OUT_DIR]
+#
+# Writes OUT_DIR (default tests/data/blender/texture_transform):
+#   texture_transform.gltf + .bin   the Mapping nodes as exported (KHR_texture_transform)
+#   texture_transform_baked.gltf    the same scene with each Mapping node applied to the mesh's
+#                                   UVs by this script and removed: what the first must look like
+#   checker.png                     the texture both use
+# The left plane's Mapping is scale (3, 2) and location (0.25, 0): a row across it crosses six
+# checker edges (u from 0.25 to 3.25, an edge every 0.5). The right plane's adds a 30° rotation.
+
+import math
+import os
+import sys
+
+import bpy
+from mathutils import Euler, Vector
+
+try:
+    import numpy
+
+    numpy.bool = bool  # Blender 3.4's glTF exporter still uses the alias numpy removed
+except ImportError:
+    sys.exit("make_texture_transform.py: Blender's glTF exporter needs numpy: run tools/install-deps.sh --scene-tools")
+
+WIDTH, HEIGHT = 256, 128
+RED, BLUE = (1.0, 0.0, 0.0, 1.0), (0.0, 0.0, 1.0, 1.0)
+# Each plane's Mapping node (Point type): location (u, v), rotation about Z (degrees), scale (u, v).
+MAPPINGS = {
+    "left": ((0.25, 0.0), 0.0, (3.0, 2.0)),
+    "right": ((0.1, 0.2), 30.0, (2.0, 2.0)),
+}
+
+
+def arguments():
+    args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    return os.path.abspath(args[0] if args else "tests/data/blender/texture_transform")
+
+
+def checker(folder):
+    image = bpy.data.images.new("checker", 2, 2, alpha=False)
+    # Rows bottom-up: red, blue / blue, red.
+    image.pixels = [*RED, *BLUE, *BLUE, *RED]
+    image.filepath_raw = os.path.join(folder, "checker.png")
+    image.file_format = "PNG"
+    image.save()
+    return image
+
+
+def material(name, image, mapping):
+    (lu, lv), rotation, (su, sv) = mapping
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    nodes, links = m.node_tree.nodes, m.node_tree.links
+    bsdf = nodes["Principled BSDF"]
+    bsdf.inputs["Roughness"].default_value = 1.0
+    bsdf.inputs["Emission Strength"].default_value = 1.0
+    tex = nodes.new("ShaderNodeTexImage")
+    tex.image = image
+    tex.interpolation = "Closest"
+    coords = nodes.new("ShaderNodeTexCoord")
+    node = nodes.new("ShaderNodeMapping")
+    node.vector_type = "POINT"
+    node.inputs["Location"].default_value = (lu, lv, 0.0)
+    node.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(rotation))
+    node.inputs["Scale"].default_value = (su, sv, 1.0)
+    links.new(coords.outputs["UV"], node.inputs["Vector"])
+    links.new(node.outputs["Vector"], tex.inputs["Vector"])
+    links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+    links.new(tex.outputs["Color"], bsdf.inputs["Emission"])
+    return m
+
+
+def build(image):
+    for name, x in (("left", -1.1), ("right", 1.1)):
+        bpy.ops.mesh.primitive_plane_add(size=2.0, location=(x, 0.0, 0.0))
+        plane = bpy.context.object
+        plane.name = name
+        plane.data.materials.append(material("checker_" + name, image, MAPPINGS[name]))
+    bpy.ops.object.camera_add(location=(0.0, 0.0, 4.0), rotation=(0.0, 0.0, 0.0))  # looks down −Z, +Y up
+    cam = bpy.context.object
+    cam.name = "camera"
+    cam.data.lens_unit = "FOV"
+    cam.data.sensor_fit = "HORIZONTAL"
+    cam.data.angle = math.radians(62)  # both planes (x from −2.1 to 2.1 m) with a margin
+    bpy.context.scene.camera = cam
+    bpy.context.scene.render.resolution_x = WIDTH
+    bpy.context.scene.render.resolution_y = HEIGHT
+
+
+def bake_mappings():
+    """Applies each Mapping node to its plane's UVs (Blender's Point mapping: T · R · S) and removes it."""
+    for name, ((lu, lv), rotation, (su, sv)) in MAPPINGS.items():
+        plane = bpy.data.objects[name]
+        turn = Euler((0.0, 0.0, math.radians(rotation))).to_matrix()
+        for loop_uv in plane.data.uv_layers.active.data:
+            mapped = turn @ Vector((su * loop_uv.uv.x, sv * loop_uv.uv.y, 0.0)) + Vector((lu, lv, 0.0))
+            loop_uv.uv = (mapped.x, mapped.y)
+        nodes = plane.active_material.node_tree.nodes
+        nodes.remove(nodes["Mapping"])
+        nodes.remove(nodes["Texture Coordinate"])
+
+
+def export(path):
+    bpy.ops.export_scene.gltf(filepath=path, export_format="GLTF_SEPARATE", export_cameras=True,
+                              export_apply=True)
+
+
+def main():
+    folder = arguments()
+    os.makedirs(folder, exist_ok=True)
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    image = checker(folder)
+    build(image)
+    export(os.path.join(folder, "texture_transform.gltf"))
+    bake_mappings()
+    export(os.path.join(folder, "texture_transform_baked.gltf"))
+
+
+main()
