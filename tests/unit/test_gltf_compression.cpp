@@ -21,6 +21,7 @@
 #include "TempDir.h"
 #include "scene/GltfLoader.h"
 #include "scene/GltfWriter.h"
+#include "QuietLog.h"
 
 namespace lit {
 namespace {
@@ -32,12 +33,7 @@ struct TempDir : lit::testing::TempDir {
     TempDir() : lit::testing::TempDir("lit_compression") {}
 };
 
-struct QuietLog : Log {
-    QuietLog() {
-        setSink([](const LogMessage&) {});
-    }
-    std::size_t warnings() const { return countAtLeast(LogLevel::Warning); }
-};
+using lit::testing::QuietLog;
 
 const fs::path kData = fs::path(LIT_SOURCE_DIR) / "tests" / "data";
 const fs::path kUncompressed = kData / "blender" / "point.gltf";

@@ -19,6 +19,7 @@
 
 #include "Log.h"
 #include "scene/GltfLoader.h"
+#include "QuietLog.h"
 
 namespace lit {
 namespace {
@@ -39,11 +40,7 @@ void writeText(const fs::path& path, const std::string& text) {
     writeBytes(path, std::vector<std::uint8_t>(text.begin(), text.end()));
 }
 
-struct QuietLog : Log {
-    QuietLog() {
-        setSink([](const LogMessage&) {});
-    }
-};
+using lit::testing::QuietLog;
 
 // One triangle: positions (36 bytes) then uint16 indices (6 bytes) in "tri.bin".
 std::vector<std::uint8_t> triangleBin() {

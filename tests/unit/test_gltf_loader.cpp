@@ -24,6 +24,7 @@
 #include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 #include "scene/Tangents.h"
+#include "QuietLog.h"
 
 namespace lit {
 namespace {
@@ -195,11 +196,7 @@ GltfBuilder triangle(bool normals = true, bool uvs = true) {
 }
 
 // A Log that keeps messages for the test to inspect but prints nothing.
-struct QuietLog : Log {
-    QuietLog() {
-        setSink([](const LogMessage&) {});
-    }
-};
+using lit::testing::QuietLog;
 
 bool hasWarningContaining(const Log& log, const std::string& text) {
     for (const LogMessage& m : log.recent())

@@ -15,6 +15,7 @@
 #include "io/GltfFile.h"
 #include "scene/GltfLoader.h"
 #include "scene/GltfWriter.h"
+#include "QuietLog.h"
 
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
@@ -31,9 +32,7 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-struct QuietLog : Log {
-    QuietLog() { setSink(nullptr); }
-};
+using lit::testing::QuietLog;
 
 struct TempDir : lit::testing::TempDir {
     TempDir() : lit::testing::TempDir("lit_gltf_round_trip") {}

@@ -8,6 +8,7 @@
 #include "scene/GltfWriter.h"
 #include "scene/Scene.h"
 #include "scene/TextureTransform.h"
+#include "QuietLog.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -25,11 +26,7 @@ namespace fs = std::filesystem;
 using lit::testing::readText;
 using lit::testing::TempDir;
 
-struct QuietLog : Log {
-    QuietLog() {
-        setSink(nullptr);
-    }
-};
+using lit::testing::QuietLog;
 
 constexpr std::size_t kBaseColor = 0, kEmissive = 3;
 

@@ -20,6 +20,7 @@
 #include "Log.h"
 #include "TempDir.h"
 #include "scene/GltfLoader.h"
+#include "QuietLog.h"
 
 namespace lit {
 namespace {
@@ -280,10 +281,7 @@ std::vector<Kind> catalogue() {
 // gtest names a failing parameter by this instead of its bytes.
 void PrintTo(const Kind& kind, std::ostream* out) { *out << kind.name; }
 
-class QuietLog : public Log {
-public:
-    QuietLog() { setSink([](const LogMessage&) {}); }
-};
+using lit::testing::QuietLog;
 
 class MalformedScene : public ::testing::TestWithParam<Kind> {};
 

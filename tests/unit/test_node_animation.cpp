@@ -14,6 +14,7 @@
 #include "scene/GltfLoader.h"
 #include "scene/GltfWriter.h"
 #include "scene/Scene.h"
+#include "QuietLog.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -25,9 +26,7 @@ namespace {
 constexpr float kTolerance = 1e-5f;
 const float kSin45 = std::sqrt(0.5f);
 
-struct QuietLog : Log {
-    QuietLog() { setSink(nullptr); }
-};
+using lit::testing::QuietLog;
 
 void expectNear(glm::vec4 actual, glm::vec4 expected) {
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(actual[i], expected[i], kTolerance) << "component " << i;

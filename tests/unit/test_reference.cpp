@@ -11,6 +11,7 @@
 #include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 #include "scene/SceneBuilder.h"
+#include "QuietLog.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -24,10 +25,7 @@
 namespace lit::reference {
 namespace {
 
-class QuietLog : public Log {
-public:
-    QuietLog() { setSink([](const LogMessage&) {}); }
-};
+using lit::testing::QuietLog;
 
 // ---- Twins of the shaders' math, written independently of the reference's own code --------
 

@@ -13,6 +13,7 @@
 #include "scene/GltfWriter.h"
 #include "scene/LightUnits.h"
 #include "scene/Sky.h"
+#include "QuietLog.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -33,9 +34,7 @@ using lit::testing::readText;
 std::filesystem::path blenderDir() { return std::filesystem::path(LIT_SOURCE_DIR) / "tests" / "data" / "blender"; }
 
 // A Log that keeps its messages to itself.
-struct QuietLog : Log {
-    QuietLog() { setSink(nullptr); }
-};
+using lit::testing::QuietLog;
 
 json readJson(const std::filesystem::path& file) { return json::parse(readText(file)); }
 

@@ -12,6 +12,7 @@
 #include "scene/GltfLoader.h"
 #include "scene/GltfWriter.h"
 #include "scene/SceneMemory.h"
+#include "QuietLog.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,9 +25,7 @@ namespace {
 
 using json = nlohmann::json;
 
-struct QuietLog : Log {
-    QuietLog() { setSink(nullptr); }
-};
+using lit::testing::QuietLog;
 
 struct TempDir : lit::testing::TempDir {
     TempDir() : lit::testing::TempDir("lit_shared_images") {}
