@@ -21,6 +21,9 @@ import sys
 
 import bpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scene_parts import box, principled  # noqa: E402  (this folder, put on the path above)
+
 try:
     import numpy
 
@@ -35,28 +38,6 @@ END_FRAME = 2 * FPS  # 2 s
 def arguments():
     args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     return os.path.abspath(args[0] if args else "tests/data/blender/animated")
-
-
-def principled(name, color, roughness=0.8):
-    m = bpy.data.materials.new(name)
-    m.use_nodes = True
-    bsdf = m.node_tree.nodes["Principled BSDF"]
-    bsdf.inputs["Base Color"].default_value = (*color, 1.0)
-    bsdf.inputs["Roughness"].default_value = roughness
-    bsdf.inputs["Specular"].default_value = 0.5  # F0 = 0.04, glTF's dielectric
-    return m
-
-
-def box(name, lo, hi, mat):
-    centre = [(a + b) / 2 for a, b in zip(lo, hi)]
-    size = [b - a for a, b in zip(lo, hi)]
-    bpy.ops.mesh.primitive_cube_add(size=1.0, location=centre)
-    obj = bpy.context.object
-    obj.scale = size
-    bpy.ops.object.transform_apply(location=False, rotation=False, scale=True)
-    obj.name = name
-    obj.data.materials.append(mat)
-    return obj
 
 
 def linear_keys(obj):

@@ -21,6 +21,9 @@ import sys
 import bpy
 from mathutils import Vector
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scene_parts import box, principled  # noqa: E402  (this folder, put on the path above)
+
 try:
     import numpy
 
@@ -38,35 +41,18 @@ def arguments():
     return folder, samples
 
 
-def principled(name, color, roughness=0.8, metallic=0.0):
-    m = bpy.data.materials.new(name)
-    m.use_nodes = True
-    bsdf = m.node_tree.nodes["Principled BSDF"]
-    bsdf.inputs["Base Color"].default_value = (*color, 1.0)
-    bsdf.inputs["Roughness"].default_value = roughness
-    bsdf.inputs["Metallic"].default_value = metallic
-    bsdf.inputs["Specular"].default_value = 0.5  # F0 = 0.04, glTF's dielectric
+def material(name, color, roughness=0.8, metallic=0.0):
+    """principled(), remembering its colour for the pure Diffuse BSDF variant."""
+    m = principled(name, color, roughness, metallic)
     m["litColor"] = list(color)  # for the diffuse variant
     return m
 
 
-def box(name, lo, hi, mat):
-    centre = [(a + b) / 2 for a, b in zip(lo, hi)]
-    size = [b - a for a, b in zip(lo, hi)]
-    bpy.ops.mesh.primitive_cube_add(size=1.0, location=centre)
-    obj = bpy.context.object
-    obj.scale = size
-    bpy.ops.object.transform_apply(location=False, rotation=False, scale=True)
-    obj.name = name
-    obj.data.materials.append(mat)
-    return obj
-
-
 def build():
-    white = principled("white_plaster", (0.8, 0.8, 0.8))
-    floor = principled("floor", (0.55, 0.5, 0.45), roughness=0.7)
-    blue = principled("blue_paint", (0.1, 0.2, 0.65), roughness=0.5)
-    gold = principled("gold", (1.0, 0.77, 0.34), roughness=0.35, metallic=1.0)
+    white = material("white_plaster", (0.8, 0.8, 0.8))
+    floor = material("floor", (0.55, 0.5, 0.45), roughness=0.7)
+    blue = material("blue_paint", (0.1, 0.2, 0.65), roughness=0.5)
+    gold = material("gold", (1.0, 0.77, 0.34), roughness=0.35, metallic=1.0)
     t = 0.3  # wall thickness, m
     # Inside: x in [-3, 3], y in [-2, 2], z in [0, 3]; the window in the wall at y = +2.
     box("floor", (-3 - t, -2 - t, -t), (3 + t, 2 + t, 0), floor)
