@@ -108,6 +108,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("gi", "enabled", gi.enabled);
     visit("gi", "mode", gi.mode);
     visit("gi", "voxelResolution", gi.voxelResolution);
+    visit("gi", "voxelizeChangesOnly", gi.voxelizeChangesOnly);
     visit("gi", "radianceRgba8", gi.radianceRgba8);
     visit("gi", "radianceRange", gi.radianceRange);
     visit("gi", "indirectIntensity", gi.indirectIntensity);

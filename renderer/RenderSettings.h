@@ -134,6 +134,9 @@ struct GiSettings {
     bool enabled = true;
     GiMode mode = GiMode::Cached;
     int voxelResolution = 128;       // voxels per side (power of two, 64..512)
+    // A moved node (gizmo, node animation) voxelizes again only the boxes it covered and covers
+    // (VoxelChangeTracker), and the voxel rays that miss them keep their hits; off: the whole volume.
+    bool voxelizeChangesOnly = true;
     bool radianceRgba8 = false;      // store radiance as RGBA8 (512³ fits in 512 MiB) instead of RGBA16F
     float radianceRange = 4.0f;      // RGBA8 only: radiance that maps to 1.0 (W/(sr·m²))
     float indirectIntensity = 1.0f;  // multiplier of the indirect light (1 = physically based)

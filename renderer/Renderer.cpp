@@ -348,6 +348,7 @@ void Renderer::Impl::updateGi(const Scene& scene, const RenderSettings& settings
         {scene, *gpuScene, bounds, ShadowKinds::of(lights), shadowsDirty, frameIndex}, settings, budget, counters);
     if (report.lightChanged) resolve.resetHistory();  // accumulated indirect light is stale
     stats.voxelized = report.voxelized;
+    stats.voxelizedBoxes = report.voxelizedBoxes;
     stats.injected = report.injected;
     stats.occupiedVoxels = report.occupiedVoxels;
     stats.giUpdateDone = report.updateDone;

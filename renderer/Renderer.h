@@ -34,9 +34,12 @@ struct FrameStats {
     int drawCalls = 0;          // draw calls issued this frame (all passes)
     std::size_t triangles = 0;  // triangles drawn in the G-buffer pass
     bool voxelized = false;     // the voxel volume was rebuilt this frame
+    int voxelizedBoxes = 0;     // ... in this many changed boxes only (0: the whole volume)
     bool injected = false;      // radiance was re-injected this frame
     std::size_t voxelBytes = 0; // GPU memory of the voxel volumes
-    std::uint32_t occupiedVoxels = 0;  // voxels the last voxelization occupied (inject runs over these)
+    // Entries of the occupied-voxel list (inject runs over these): the voxels the last voxelization
+    // of the whole volume occupied, plus those voxelizations of changed boxes added since.
+    std::uint32_t occupiedVoxels = 0;
     // The GI update after the last light or geometry edit, which a GiBudget may spread over
     // frames: the share of it done after this frame (1: every voxel holds the current light) and
     // what it is at ("bounce 2".."bounce N", "irradiance"; "refining" while the refinement rounds

@@ -43,6 +43,11 @@ LIT_OCCUPIED_VOXELS_BLOCK();
 // (u, v, depth) of the projection along `axis` → voxel space: undoes voxelize.geom.glsl's swizzleForAxis.
 vec3 fromAxisSpace(vec3 s, int axis) { return axis == 0 ? s.zxy : (axis == 1 ? s.yzx : s); }
 uniform uint uOccupiedCapacity;  // entries the list can hold (VoxelVolume::occupiedCapacity)
+// The voxels this draw writes, [min, max): the whole volume, or one box of a voxelization of
+// changed boxes (VoxelizePass), whose items also cover voxels outside it that were not cleared.
+uniform ivec3 uRegionMin, uRegionMax;
+// A bit per voxel: listed already (VoxelVolume::listedVoxels).
+layout(std430, binding = LIT_SSBO_LISTED_VOXELS) coherent buffer ListedVoxels { uint listedBits[]; };
 
 void main() {
     // The enlarged triangle overshoots at acute corners: keep pixels that touch its true bounds.
@@ -52,7 +57,7 @@ void main() {
     // (u, v, depth) in voxels; undo the geometry shader's swizzle.
     ivec3 s = ivec3(ivec2(gl_FragCoord.xy), int(floor(gl_FragCoord.z * float(n))));
     ivec3 v = ivec3(fromAxisSpace(vec3(s), fs.axis));
-    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(n)))) discard;
+    if (any(lessThan(v, max(uRegionMin, ivec3(0)))) || any(greaterThanEqual(v, min(uRegionMax, ivec3(n))))) discard;
 
     GpuMaterial m = materials[uMaterialIndex];
     vec4 baseColor = materialBaseColor(m, fs.uv);
@@ -64,13 +69,18 @@ void main() {
     vec3 normal = len > 1e-12 ? fs.worldNormal / len : vec3(0.0);
 
     // The first fragment of a voxel (the albedo's compare-and-swap from 0 succeeds, as the first
-    // try of atomicAverageRgb would) appends it to the occupied-voxel list; later ones average.
+    // try of atomicAverageRgb would) appends it to the occupied-voxel list unless it is listed
+    // already (a voxelization of changed boxes keeps the list); later ones average.
     vec3 albedo = clamp(baseColor.rgb, 0.0, 1.0);
+    uint voxelIndex = uint(v.x) + uint(n) * (uint(v.y) + uint(n) * uint(v.z));
+    uint listedBit = 1u << (voxelIndex & 31u);
     if (imageAtomicCompSwap(voxelAlbedo, v, 0u, averageRgbAdd(0u, albedo)) == 0u) {
-        uint index = atomicAdd(occupiedCount, 1u);
-        if (index < uOccupiedCapacity) {
-            occupiedVoxels[index] = packVoxelCoord(v);
-            atomicMax(dispatchX, index / uint(LIT_INJECT_LIST_GROUP_SIZE) + 1u);
+        if ((atomicOr(listedBits[voxelIndex >> 5u], listedBit) & listedBit) == 0u) {
+            uint index = atomicAdd(occupiedCount, 1u);
+            if (index < uOccupiedCapacity) {
+                occupiedVoxels[index] = packVoxelCoord(v);
+                atomicMax(dispatchX, index / uint(LIT_INJECT_LIST_GROUP_SIZE) + 1u);
+            }
         }
     } else {
         atomicAverageRgb(voxelAlbedo, v, albedo);

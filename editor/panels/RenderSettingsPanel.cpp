@@ -201,6 +201,11 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
             "through gaps and at grazing angles comes out right where cones blur it (docs/GI.md, \"Voxel rays\").\n"
             "0 = the accurate mode's cones. 32 (the default) cost about what the cones cost; more are smoother\n"
             "and slower");
+    changed |= ImGui::Checkbox("Voxelize changes only", &s.gi.voxelizeChangesOnly);
+    tooltip("A moved object (gizmo drag, node animation) voxelizes again only the voxels it covered and\n"
+            "covers, and the voxel rays that miss them replay their recorded hits instead of marching.\n"
+            "Off: every geometry edit voxelizes the whole volume and marches every ray (docs/GI.md,\n"
+            "\"Incremental voxelization\")");
     changed |= ImGui::SliderFloat("Footprint / height", &s.gi.coneFootprintPerHeight, 0.0f, 2.0f, "%.2f");
     tooltip(
         "Largest voxel a cone leaving a surface samples, as a multiple of its height above that\n"

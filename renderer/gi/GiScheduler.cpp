@@ -74,12 +74,12 @@ GiScheduler::Changes GiScheduler::changes(const VoxelKey& voxels, const GiLightK
     return c;
 }
 
-void GiScheduler::voxelized(const VoxelKey& voxels, std::uint32_t occupied, bool listComplete) {
+void GiScheduler::voxelized(const VoxelKey& voxels, std::uint32_t occupied, bool listComplete, bool keptRayHits) {
     state_.voxels = voxels;
     state_.voxelsValid = true;
     state_.occupied = occupied;
     state_.listComplete = listComplete;
-    state_.rayHitsValid = false;  // other voxels: other hits
+    state_.rayHitsValid = state_.rayHitsValid && keptRayHits && listComplete;  // other voxels: other hits
 }
 
 std::uint32_t GiScheduler::voxelsPerFrame(const GiBudget& budget, int rays) const {

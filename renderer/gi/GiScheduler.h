@@ -121,8 +121,10 @@ public:
     Changes changes(const VoxelKey& voxels, const GiLightKey& light, bool volumeReallocated, bool volumeMoved,
                     bool shadowsDirty) const;
 
-    // The volume was voxelized from `voxels`: `occupied` voxels, all in the list or not.
-    void voxelized(const VoxelKey& voxels, std::uint32_t occupied, bool listComplete);
+    // The volume was voxelized from `voxels`: `occupied` list entries, all in the list or not.
+    // `keptRayHits`: only changed boxes were voxelized and the ray-hit cache stays valid (its
+    // entries check the boxes themselves, RayHitCache::markChanged).
+    void voxelized(const VoxelKey& voxels, std::uint32_t occupied, bool listComplete, bool keptRayHits = false);
     // A new scene: the next update voxelizes again.
     void invalidate() { state_.voxelsValid = false; }
     // The directional chains were freed (anisotropic voxels off): switching them on re-injects.

@@ -2,7 +2,13 @@
 
 #include <shared.h>
 
+#include <algorithm>
+#include <array>
+#include <limits>
+
 namespace lit {
+
+static_assert(VoxelChangeTracker::kMaxBoxes == LIT_RAY_CHANGED_BOXES);
 
 bool RayHitCache::ensure(int rays, std::uint32_t entries) {
     reallocated_ = false;
@@ -11,25 +17,69 @@ bool RayHitCache::ensure(int rays, std::uint32_t entries) {
     if (needed > kMaxBytes) {
         reallocated_ = static_cast<bool>(buffer_);
         buffer_ = {};
+        epochs_ = {};
         return false;
     }
     // Kept while it fits and is not more than twice what is needed (a voxelization that changes
-    // the count a little reallocates nothing).
-    if (buffer_.size() < needed || buffer_.size() > 2 * needed) {
-        buffer_ = gl::Buffer("voxel ray hits", needed, nullptr, 0);
+    // the count a little reallocates nothing); made with a quarter more entries than needed, for
+    // the entries a voxelization of changed boxes appends.
+    const std::size_t hitBytes = static_cast<std::size_t>(entries) * 2 * static_cast<std::size_t>(rays) * 4;
+    if (buffer_.size() < hitBytes || buffer_.size() > 2 * hitBytes) {
+        const std::size_t room = std::min<std::size_t>(entries + entries / 4, std::numeric_limits<std::uint32_t>::max());
+        buffer_ = gl::Buffer("voxel ray hits", room * 2 * static_cast<std::size_t>(rays) * 4, nullptr, 0);
+        epochs_ = gl::Buffer("voxel ray hit epochs", room * 4, nullptr, 0);
+        glClearNamedBufferData(epochs_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+        changed_.clear();
         reallocated_ = true;
     }
     return true;
+}
+
+void RayHitCache::markChanged(const std::vector<VoxelBox>& boxes) {
+    ++epoch_;
+    for (const VoxelBox& box : boxes) changed_.push_back({box, epoch_});
+    // Too many boxes: the pair whose joined box adds the fewest voxels becomes one, with the later
+    // epoch (an entry recorded before it must test both; one recorded after both tests neither).
+    while (changed_.size() > VoxelChangeTracker::kMaxBoxes) {
+        std::size_t bestI = 0, bestJ = 1;
+        std::int64_t bestGrowth = std::numeric_limits<std::int64_t>::max();
+        for (std::size_t i = 0; i < changed_.size(); ++i)
+            for (std::size_t j = i + 1; j < changed_.size(); ++j) {
+                const std::int64_t growth = changed_[i].box.joined(changed_[j].box).voxels() -
+                                            changed_[i].box.voxels() - changed_[j].box.voxels();
+                if (growth < bestGrowth) {
+                    bestGrowth = growth;
+                    bestI = i;
+                    bestJ = j;
+                }
+            }
+        changed_[bestI] = {changed_[bestI].box.joined(changed_[bestJ].box),
+                           std::max(changed_[bestI].epoch, changed_[bestJ].epoch)};
+        changed_.erase(changed_.begin() + static_cast<std::ptrdiff_t>(bestJ));
+    }
+}
+
+void RayHitCache::endPass() {
+    std::erase_if(changed_, [&](const ChangedBox& c) { return c.epoch <= passEpoch_; });
 }
 
 void RayHitCache::bind(const gl::Program& program, ConeFeatures features, RayHits hits) const {
     if (features.voxelRays <= 0) return;
     const bool cached = hits != RayHits::Off && static_cast<bool>(buffer_);
     glProgramUniform1i(program.id(), program.location("uRayHits"), !cached ? 0 : (hits == RayHits::Record ? 1 : 2));
-    if (cached) {
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_VOXEL_RAY_HITS);
+    if (!cached) return;
+    glProgramUniform1ui(program.id(), program.location("uRayEpoch"), epoch_);
+    std::array<glm::ivec4, LIT_RAY_CHANGED_BOXES> lo{}, hi{};
+    for (std::size_t i = 0; i < changed_.size(); ++i) {
+        lo[i] = glm::ivec4(changed_[i].box.min, static_cast<int>(changed_[i].epoch));
+        hi[i] = glm::ivec4(changed_[i].box.max, 0);
     }
+    glProgramUniform1i(program.id(), program.location("uChangedBoxCount"), static_cast<GLint>(changed_.size()));
+    glProgramUniform4iv(program.id(), program.location("uChangedBoxMin"), LIT_RAY_CHANGED_BOXES, &lo[0].x);
+    glProgramUniform4iv(program.id(), program.location("uChangedBoxMax"), LIT_RAY_CHANGED_BOXES, &hi[0].x);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_VOXEL_RAY_HITS);
+    epochs_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_VOXEL_RAY_EPOCHS);
 }
 
 }  // namespace lit

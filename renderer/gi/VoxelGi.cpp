@@ -40,6 +40,23 @@ RayHits VoxelGi::rayHitsFor(int rays) {
     return scheduler_.rayHits(rays, fits, rayHitCache_.reallocated());
 }
 
+std::optional<std::vector<VoxelBox>> VoxelGi::changedBoxes(const Frame& frame, const VoxelKey& voxels,
+                                                           const RenderSettings& settings, bool reallocated,
+                                                           bool moved) {
+    const GiState& state = scheduler_.state();
+    if (!settings.gi.voxelizeChangesOnly || reallocated || moved || !state.voxelsValid || !state.listComplete ||
+        voxels.scene != state.voxels.scene || voxels.materials != state.voxels.materials ||
+        state.occupied > 2 * std::max(wholeVolumeEntries_, 1u))
+        return std::nullopt;
+    return changes_.voxelizeChanged(itemPoses(frame.scene, frame.gpuScene),
+                                    {volume_.minCorner(), volume_.voxelSize(), volume_.resolution()});
+}
+
+void VoxelGi::listTraced(RayHits hits) {
+    scheduler_.listTraced(hits);
+    if (hits != RayHits::Off) rayHitCache_.endPass();
+}
+
 GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings, const GiBudget& budget,
                               DrawCounters& counters) {
     GiFrameReport report;
@@ -71,10 +88,22 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         Profiler::Scope scope(profiler_, "bounces");
         bounce_.keepIndirect(volume_);
     }
+    const std::optional<std::vector<VoxelBox>> boxes =
+        changes.voxelize ? changedBoxes(frame, voxels, settings, reallocated, moved) : std::nullopt;
     if (changes.voxelize) {
         {
             Profiler::Scope scope(profiler_, "voxelize");
-            voxelize_.execute(frame.scene, frame.gpuScene, volume_, counters);
+            if (boxes) {
+                voxelize_.executeBoxes(frame.scene, frame.gpuScene, volume_, *boxes, counters);
+                report.voxelizedBoxes = static_cast<int>(boxes->size());
+                for (const VoxelBox& box : *boxes) report.voxelizedVoxels += box.voxels();
+            } else {
+                voxelize_.execute(frame.scene, frame.gpuScene, volume_, counters);
+                changes_.voxelizedAll(itemPoses(frame.scene, frame.gpuScene),
+                                      {volume_.minCorner(), volume_.voxelSize(), volume_.resolution()});
+                const std::int64_t n = volume_.resolution();
+                report.voxelizedVoxels = n * n * n;
+            }
         }
         {
             // Once per voxelization: the mip chain is then built over these (light edits too).
@@ -93,7 +122,13 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                          "); injecting the whole grid until the next voxelization");
             volume_.growOccupiedList(occupied + occupied / 4);
         }
-        scheduler_.voxelized(voxels, occupied, complete);
+        scheduler_.voxelized(voxels, occupied, complete, boxes.has_value());
+        if (boxes) {
+            rayHitCache_.markChanged(*boxes);
+        } else {
+            rayHitCache_.forgetChanges();
+            wholeVolumeEntries_ = occupied;
+        }
     }
     const bool overList = scheduler_.state().listComplete;
     warmStart = warmStart && overList;
@@ -125,9 +160,10 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             for (int b = 2; b <= start.bouncesNow + 1; ++b) {
                 const RayHits hits = rayHitsFor(features.voxelRays);
                 if (light.untilConverged) bounce_.resetChange();
+                rayHitCache_.beginPass();
                 bounce_.trace(volume_, rayHitCache_, {features, b == 2 && !warmStart_, overList, {}, hits, light.untilConverged});
                 bounce_.finish(volume_, overList);
-                scheduler_.listTraced(hits);
+                listTraced(hits);
                 const bool last = b == start.bouncesNow + 1 ||
                                   (light.untilConverged && convergence_.add(bounce_.readChange().relative()));
                 // Voxel rays read level 0 where they end and only the mips' occupancy, which a
@@ -154,6 +190,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         pendingReason_ = changes.reason;
         pendingFrame_ = profiler_.currentFrame();
         pendingVoxelize_ = changes.voxelize;
+        pendingBoxes_ = report.voxelizedBoxes;
+        pendingBoxVoxels_ = report.voxelizedVoxels;
     }
     continueUpdate(settings, light, budget, report);
 
@@ -187,13 +225,14 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         const VoxelRange range = scheduler_.bounceShare(scheduler_.voxelsPerFrame(budget, light.voxelRays));
         const RayHits hits = rayHitsFor(features.voxelRays);
         if (light.untilConverged && range.first == 0) bounce_.resetChange();
+        if (range.first == 0) rayHitCache_.beginPass();
         bounce_.trace(volume_, rayHitCache_, {features, progress.bounce == 2 && !warmStart_, true, range, hits, light.untilConverged});
         const bool passEnds = range.first + range.count >= scheduler_.state().occupied;
         const bool converged = passEnds && light.untilConverged && convergence_.add(bounce_.readChange().relative());
         if (light.untilConverged && convergence_.expectedBounces() > 0)
             scheduler_.estimateBounces(converged ? progress.bounce : convergence_.expectedBounces());
         if (scheduler_.advanceBounce(range, converged)) {
-            scheduler_.listTraced(hits);  // the pass ran over the whole list from 0
+            listTraced(hits);  // the pass ran over the whole list from 0
             bounce_.finish(volume_, true);
             // Voxel rays need the mips' occupancy only (see update()): rebuilt after the last bounce.
             if (features.voxelRays == 0 || scheduler_.state().progress.bounce == 0)
@@ -203,11 +242,14 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         Profiler::Scope scope(profiler_, "voxel irradiance");
         if (!scheduler_.spreadsOverFrames(light, budget)) {
             const RayHits hits = rayHitsFor(features.voxelRays);
+            rayHitCache_.beginPass();
             irradiance_.trace(volume_, irradianceCache_, rayHitCache_, {features, overList, {}, 0, hits});
-            scheduler_.listTraced(hits);
+            listTraced(hits);
             scheduler_.irradianceDone();
         } else {
             const std::uint32_t perFrame = scheduler_.voxelsPerFrame(budget, light.voxelRays);
+            // The first share of a pass over the whole list (from where the round robin stands).
+            if (scheduler_.state().progress.irradianceLeft >= scheduler_.state().occupied) rayHitCache_.beginPass();
             const std::vector<VoxelRange> ranges = scheduler_.takeIrradiance(perFrame);
             const RayHits hits = rayHitsFor(features.voxelRays);
             for (const VoxelRange& range : ranges) {
@@ -219,7 +261,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             // reached yet): the frame after it starts the history afresh.
             if (scheduler_.state().progress.irradianceLeft == 0) {
                 report.lightChanged = true;
-                scheduler_.listTraced(hits);
+                listTraced(hits);
                 if (scheduler_.restartIfAsked()) convergence_ = {};
             }
         }
@@ -267,6 +309,9 @@ void VoxelGi::reportUpdate() {
     const PassTiming* voxelizeTiming = profiler_.lastRun("voxelize");
     const PassTiming* mipTiming = profiler_.lastRun("mipmap");
     std::string text = pendingVoxelize_ ? "re-voxelized " : "re-injected ";
+    if (pendingVoxelize_ && pendingBoxes_ > 0)
+        text += std::to_string(pendingBoxes_) + (pendingBoxes_ > 1 ? " changed boxes (" : " changed box (") +
+                std::to_string(pendingBoxVoxels_) + " voxels) of ";
     text += std::to_string(volume_.resolution()) + "³ (" + pendingReason_ + "): ";
     if (pendingVoxelize_ && voxelizeTiming) text += "voxelize " + formatMs(voxelizeTiming->gpuMs) + ", ";
     const PassTiming* listsTiming = profiler_.lastRun("mip lists");

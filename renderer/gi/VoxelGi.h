@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include "gi/RayHitCache.h"
 #include "gi/VoxelIrradianceCache.h"
 #include "gi/VoxelIrradiancePass.h"
+#include "gi/VoxelRegions.h"
 #include "gi/VoxelVolume.h"
 #include "gi/VoxelizePass.h"
 #include "scene/Aabb.h"
@@ -37,6 +39,8 @@ struct Scene;
 // What a GI frame did, for FrameStats and the editor's overlay.
 struct GiFrameReport {
     bool voxelized = false;            // the volume was voxelized again
+    int voxelizedBoxes = 0;            // ... in this many changed boxes only (0: the whole volume)
+    std::int64_t voxelizedVoxels = 0;  // voxels those boxes hold (the whole volume's N³ otherwise)
     bool injected = false;             // the light was injected again
     bool lightChanged = false;         // the voxels' light changed: accumulated indirect light is stale
     std::uint32_t occupiedVoxels = 0;  // voxels the last voxelization occupied
@@ -95,6 +99,12 @@ public:
 private:
     // A trace over the occupied-voxel list with `rays` rays: what it does with the ray-hit cache.
     RayHits rayHitsFor(int rays);
+    // The changed boxes to voxelize instead of the whole volume, if a voxelization of them is
+    // possible and asked for (RenderSettings: voxelizeChangesOnly).
+    std::optional<std::vector<VoxelBox>> changedBoxes(const Frame& frame, const VoxelKey& voxels,
+                                                      const RenderSettings& settings, bool reallocated, bool moved);
+    // A pass over the whole list ended: the scheduler and the ray-hit cache say so.
+    void listTraced(RayHits hits);
     // The work of the update after the injection frame: this frame's share of a spread bounce, of
     // the irradiance and of the refinement, and the filter after them.
     void continueUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget,
@@ -112,6 +122,10 @@ private:
     VoxelIrradianceCache irradianceCache_;
     RayHitCache rayHitCache_;
     GiScheduler scheduler_;
+    VoxelChangeTracker changes_;
+    // List entries after the last voxelization of the whole volume: a list that grew to twice that
+    // by voxelizations of changed boxes (entries of voxels that became empty stay) is rebuilt.
+    std::uint32_t wholeVolumeEntries_ = 0;
     BounceConvergence convergence_;  // every bounce: the update's bounces so far
     // The update's bounces started from the last update's light (level 0 holds it): its second
     // bounce reads level 0, not the direct volume.
@@ -121,6 +135,8 @@ private:
     std::string pendingReason_;
     std::uint64_t pendingFrame_ = 0;
     bool pendingVoxelize_ = false;
+    int pendingBoxes_ = 0;  // the voxelization's changed boxes (0: the whole volume)
+    std::int64_t pendingBoxVoxels_ = 0;
     int pendingBounces_ = 1;
 };
 

@@ -29,7 +29,8 @@ std::string mib(std::size_t bytes) {
 std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
     const std::size_t texel = rgba8 ? 4 : 8;
-    const std::size_t material = voxels * 4 * VoxelVolume::kMaterialVolumeCount;  // r32ui each
+    const std::size_t material = voxels * 4 * VoxelVolume::kMaterialVolumeCount  // r32ui each
+                                 + voxels / 8;                                   // listed bits
     // A full 3D mip chain adds 1/8 + 1/64 + ... ≈ 1/7 of the base level; each directional volume
     // (one per axis, its two faces and a gap between them side by side) starts at 3·(N/2)³, 3/8 of
     // the base, so the three add 9/7 of it.
@@ -118,6 +119,8 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     parentListsValid_ = false;  // the chains above are zero: nothing stale
     directionalStale_ = false;
     clearMaterials();
+    listed_ = gl::Buffer("listed voxels", std::max<std::size_t>(static_cast<std::size_t>(n) * n * n / 8, 4), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
     // A surface crosses about N² voxels per N² of area; 16·N² holds the Cornell box (≈ 6·N²) and
     // Sponza at 256³ with room. An overflow is detected (readOccupiedCount) and grows the list.
     growOccupiedList(static_cast<std::uint32_t>(
@@ -173,6 +176,16 @@ void VoxelVolume::clearMaterials() const {
         if (*t) glClearTexImage(t->id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
+void VoxelVolume::clearMaterials(const VoxelBox& box) const {
+    if (box.empty()) return;
+    const GLuint zero = 0;
+    const glm::ivec3 size = box.max - box.min;
+    for (const gl::Texture* t : materialVolumes())
+        if (*t)
+            glClearTexSubImage(t->id(), 0, box.min.x, box.min.y, box.min.z, size.x, size.y, size.z, GL_RED_INTEGER,
+                               GL_UNSIGNED_INT, &zero);
+}
+
 void VoxelVolume::growOccupiedList(std::uint32_t count) {
     // Indirect dispatch: at most 65535 groups along x.
     const std::uint32_t limit = 65535u * LIT_INJECT_LIST_GROUP_SIZE;
@@ -188,7 +201,10 @@ void VoxelVolume::resetOccupiedList() const {
     if (!occupied_) return;
     const std::uint32_t header[4] = {0u, 0u, 1u, 1u};
     glNamedBufferSubData(occupied_.id(), 0, sizeof header, header);
+    if (listed_) glClearNamedBufferData(listed_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
 }
+
+std::size_t VoxelVolume::listBytes() const { return occupied_.size() + listed_.size(); }
 
 std::uint32_t VoxelVolume::readOccupiedCount() const {
     if (!occupied_) return 0;

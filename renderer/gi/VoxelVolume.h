@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "RenderSettings.h"
+#include "gi/VoxelRegions.h"
 #include "gl/Objects.h"
 #include "scene/Aabb.h"
 
@@ -48,8 +49,9 @@ public:
     // Uploads VoxelUniforms from the volume placement and `settings`, binds it to LIT_UBO_VOXEL.
     void updateUniforms(const RenderSettings& settings, int frameIndex);
 
-    // Zeroes the material volumes (before voxelization).
+    // Zeroes the material volumes (before voxelization), or only the voxels of `box`.
     void clearMaterials() const;
+    void clearMaterials(const VoxelBox& box) const;
 
     // The occupied-voxel list (SSBO at LIT_SSBO_OCCUPIED_VOXELS, std430): uint count, a
     // DispatchIndirectCommand (groups of LIT_INJECT_LIST_GROUP_SIZE over the list), then up to
@@ -58,8 +60,13 @@ public:
     const gl::Buffer& occupiedList() const { return occupied_; }
     std::uint32_t occupiedCapacity() const { return occupiedCapacity_; }
     static constexpr std::size_t kOccupiedHeaderBytes = 16;  // count + dispatch x, y, z
-    // Empties the list (before voxelization): count 0, dispatch 0 × 1 × 1.
+    // Empties the list (before voxelization): count 0, dispatch 0 × 1 × 1, no voxel listed.
     void resetOccupiedList() const;
+    // Which voxels the list holds (SSBO at LIT_SSBO_LISTED_VOXELS: one bit per voxel). A
+    // voxelization of changed boxes keeps the list and its bits: it appends only voxels not
+    // listed yet, so entries keep their places (and their recorded ray hits), and a voxel that
+    // became empty stays listed as an empty entry, which every pass over the list skips.
+    const gl::Buffer& listedVoxels() const { return listed_; }
     // Voxels appended since the reset; more than occupiedCapacity() when the list overflowed (the
     // excess was not stored). Reads one uint back: waits for the voxelization.
     std::uint32_t readOccupiedCount() const;
@@ -134,7 +141,8 @@ public:
     std::size_t materialBytes() const;  // albedo + normal + emission + surface
     std::size_t radianceBytes() const;  // isotropic chain + the six directional chains while they exist
     std::size_t bounceBytes() const;    // direct + bounce volumes (0 until allocated)
-    std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes(); }
+    std::size_t listBytes() const;      // the occupied-voxel list and its bit per voxel
+    std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes() + listBytes(); }
     std::string memoryReport() const;  // "albedo 8.0 MiB, normal 8.0 MiB, ... total 54.9 MiB"
 
     // The r32ui material volumes: albedo, normal, emission, surface (4 bytes per voxel each).
@@ -157,6 +165,7 @@ private:
     gl::Texture direct_, bounce_;
     gl::Buffer uniforms_;
     gl::Buffer occupied_;
+    gl::Buffer listed_;
     std::uint32_t occupiedCapacity_ = 0;
     gl::Buffer parents_;
     ParentLayout parentLayout_;

@@ -4,6 +4,7 @@
 
 #include "gi/VoxelVolume.h"
 #include "scene/GpuScene.h"
+#include "scene/Scene.h"
 
 namespace lit {
 
@@ -17,15 +18,11 @@ VoxelizePass::VoxelizePass(const std::filesystem::path& shaderRoot)
                 {GL_FRAGMENT_SHADER, "voxelize.frag.glsl"}}),
       framebuffer_("voxelize (no attachments)") {}
 
-void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume, DrawCounters& counters) {
-    volume.clearMaterials();
-    volume.resetOccupiedList();
-    volume.clearRadianceLevel0();  // injection over the list writes occupied voxels only
-    volume.clearRadianceMips();    // and the mip chain is built over their parents only
+bool VoxelizePass::begin(const GpuScene& gpuScene, const VoxelVolume& volume) {
     const int n = volume.resolution();
     if (n <= 0 || gpuScene.empty()) {
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-        return;
+        return false;
     }
     if (framebufferSize_ != n) {
         // Rasterization without attachments takes its size from these defaults (GL 4.3).
@@ -44,21 +41,74 @@ void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVo
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
     volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
+    volume.listedVoxels().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_LISTED_VOXELS);
     glProgramUniform1ui(program_.id(), program_.location("uOccupiedCapacity"), volume.occupiedCapacity());
     // Image atomics need an integer format; the volumes are 3D, so bind all slices (layered).
     glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_EMISSION, volume.emission().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_SURFACE, volume.surface().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+    return true;
+}
 
-    gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters);
+void VoxelizePass::setRegion(const VoxelBox& box) const {
+    glProgramUniform3i(program_.id(), program_.location("uRegionMin"), box.min.x, box.min.y, box.min.z);
+    glProgramUniform3i(program_.id(), program_.location("uRegionMax"), box.max.x, box.max.y, box.max.z);
+}
 
+void VoxelizePass::end() const {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     // Injection reads the volumes as images and the list as a buffer and dispatch command; debug
     // views and tests read the volumes as textures.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
                     GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume, DrawCounters& counters) {
+    volume.clearMaterials();
+    volume.resetOccupiedList();
+    volume.clearRadianceLevel0();  // injection over the list writes occupied voxels only
+    volume.clearRadianceMips();    // and the mip chain is built over their parents only
+    if (!begin(gpuScene, volume)) return;
+    const int n = volume.resolution();
+    setRegion({glm::ivec3(0), glm::ivec3(n)});
+    gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters);
+    end();
+}
+
+void VoxelizePass::executeBoxes(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume,
+                                const std::vector<VoxelBox>& boxes, DrawCounters& counters) {
+    for (const VoxelBox& box : boxes) volume.clearMaterials(box);
+    volume.clearRadianceLevel0();
+    volume.clearRadianceMips();
+    if (!begin(gpuScene, volume)) return;
+    const VoxelPlacement placement{volume.minCorner(), volume.voxelSize(), volume.resolution()};
+    // Each item's voxels, padded as the tracker pads its boxes.
+    std::vector<VoxelBox> itemBoxes;
+    itemBoxes.reserve(gpuScene.items().size());
+    for (const ItemPose& pose : itemPoses(scene, gpuScene))
+        itemBoxes.push_back(voxelBoxOf(pose.bounds, placement, VoxelChangeTracker::kPadding));
+    for (const VoxelBox& box : boxes) {
+        setRegion(box);
+        gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters, [&](const DrawItem& item) {
+            return itemBoxes[static_cast<std::size_t>(&item - gpuScene.items().data())].overlaps(box);
+        });
+    }
+    end();
+}
+
+std::vector<ItemPose> itemPoses(const Scene& scene, const GpuScene& gpuScene) {
+    std::vector<ItemPose> poses;
+    poses.reserve(gpuScene.items().size());
+    for (const DrawItem& item : gpuScene.items()) {
+        const bool placed = item.node >= 0 && static_cast<std::size_t>(item.node) < scene.nodes.size();
+        ItemPose pose;
+        pose.world = placed ? scene.nodes[static_cast<std::size_t>(item.node)].world : glm::mat4(1.0f);
+        pose.bounds = item.localBounds.transformed(pose.world);
+        poses.push_back(pose);
+    }
+    return poses;
 }
 
 std::vector<std::uint32_t> readMaterialVoxels(const gl::Texture& materialVolume) {

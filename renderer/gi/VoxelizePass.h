@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "gi/VoxelRegions.h"
 #include "passes/Pass.h"
 
 namespace lit {
@@ -34,14 +35,28 @@ public:
     // Changes GL state: viewport (N×N), draw framebuffer (0 afterwards), depth test and face
     // culling off. Ends with an image-access + texture-fetch barrier.
     void execute(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume, DrawCounters& counters);
+    // Voxelizes only the voxels of `boxes` (disjoint; VoxelChangeTracker) again: zeroes their
+    // material voxels and draws the items whose boxes reach them, writing inside the boxes only.
+    // The occupied-voxel list is kept: voxels new to it are appended (VoxelVolume::listedVoxels).
+    // Level 0 and the mips of the radiance volume are cleared as by execute(). Same GL state after.
+    void executeBoxes(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume,
+                      const std::vector<VoxelBox>& boxes, DrawCounters& counters);
 
     std::vector<gl::Program*> programs() override { return {&program_}; }
 
 private:
+    // Binds what the draws read and write; false when there is nothing to draw.
+    bool begin(const GpuScene& gpuScene, const VoxelVolume& volume);
+    void setRegion(const VoxelBox& box) const;
+    void end() const;
+
     gl::Program program_;
     gl::Framebuffer framebuffer_;  // no attachments: its default size is the volume's N
     int framebufferSize_ = 0;
 };
+
+// Each item of `gpuScene` as the voxelization draws it: its node's world transform and world box.
+std::vector<ItemPose> itemPoses(const Scene& scene, const GpuScene& gpuScene);
 
 // Packed RGBA8 values of one material volume (albedo, normal or emission), x fastest, then y,
 // then z: index = x + N·(y + N·z). Unpack with unpackVoxel.

@@ -122,6 +122,11 @@ using mat4 = glm::mat4;
 // Occupied-voxel list (VoxelizePass appends, InjectPass runs over it with an indirect dispatch).
 #define LIT_SSBO_OCCUPIED_VOXELS 2     // OccupiedVoxels: count, dispatch size, packed coordinates
 #define LIT_INJECT_LIST_GROUP_SIZE 512 // inject.comp.glsl work group over the list: its 8³ group as 512 entries (65535 groups = 33.5 M voxels)
+// Which voxels the occupied-voxel list holds: one bit per voxel of the N³ volume (index x + N(y +
+// Nz)), set by the voxelization when it appends a voxel, so that a voxelization of changed boxes
+// only (VoxelChangeTracker) appends the voxels new to the list and keeps its order. The outline
+// pass's slot: never bound with it.
+#define LIT_SSBO_LISTED_VOXELS 4
 // Occupied parents (MipmapPass::listOccupiedParents): per mip level k ≥ 1 the voxels of level k
 // with an occupied voxel below them, listed once each, so the mip chain is built over them only.
 // Header: LIT_MIP_LIST_LEVELS × uvec4 (count, indirect dispatch x, y, z; index = level, 0 unused),
@@ -131,6 +136,12 @@ using mat4 = glm::mat4;
 // The voxel rays' first hits (RayHitCache, bounce.comp.glsl): one uint per occupied-
 // list entry, side (front, back) and ray, recorded by a trace and replayed while the voxels stay.
 #define LIT_SSBO_VOXEL_RAY_HITS 6
+// The ray-hit cache's epochs (RayHitCache): per list entry, the epoch its hits were recorded in;
+// a hit recorded before a changed box's epoch whose ray crosses that box is marched again. At most
+// LIT_RAY_CHANGED_BOXES boxes (uniforms uChangedBoxMin/Max). The mip parents' slot: never bound
+// with the traces.
+#define LIT_SSBO_VOXEL_RAY_EPOCHS 5
+#define LIT_RAY_CHANGED_BOXES 8
 // How much a bounce changed the voxels' light (bounce.comp.glsl with uMeasureChange, VoxelGi when
 // GiSettings::bounces is every bounce): LIT_BOUNCE_CHANGE_BINS uints summing the luminance of the
 // bounce's bounced light (radiance − direct), then as many summing its change from the bounce

@@ -1157,12 +1157,14 @@ TEST_F(GiAccuracy, CachedModeRefinementConvergesToAllConeSetsPerVoxel) {
 
 // The voxel rays' hit cache (RayHitCache): the first trace after a voxelization
 // records every ray's hit, and the traces after a light edit replay them instead of marching. The
-// replayed light must be the marched light exactly: after a light edit, and after a geometry edit
-// (which must record afresh: the old hits would be the old geometry's), the image equals that of
-// the variant that always marches (LIT_RAY_HIT_CACHE 0). Without the cache a light edit costs a
+// replayed light must be the marched light exactly: after a light edit; after a move, which
+// voxelizes only the changed boxes and marches again only the rays that cross them
+// (VoxelChangeTracker, RayHitCache::markChanged); and after a move with that off, which records
+// every hit afresh. Each time the image equals that of the variant that always marches
+// (LIT_RAY_HIT_CACHE 0). Without the cache a light edit costs a
 // re-voxelization's trace (Sponza 256³: ratio 0.88-1.02, the bar ≤ ¼); with it 0.18-0.23
 // (docs/PERFORMANCE.md, "GI update"). Cornell box, 64³, the defaults (two bounces, 32 rays), L_ID.
-// ~4 s.
+// ~6 s.
 TEST_F(GiAccuracy, VoxelRayHitCacheReplaysTheMarchedLight) {
     Scene scene = loadCornellBox();
     RenderSettings settings = twoBouncesWithRays();
@@ -1170,8 +1172,9 @@ TEST_F(GiAccuracy, VoxelRayHitCacheReplaysTheMarchedLight) {
     const CameraView camera = cameraFor(scene, settings);
     const HdrImage before = renderFrom(scene, camera, settings);
     const BounceShaderVariant marching(sourceDir() / "shaders", "lit_ray_hits_off", "#define LIT_RAY_HIT_CACHE 0");
-    const auto againstMarching = [&](const char* what) {
+    const auto againstMarching = [&](const char* what, int expectedBoxes) {
         renderer_->render(scene, camera, settings);
+        EXPECT_EQ(renderer_->stats().voxelizedBoxes, expectedBoxes) << what;
         const HdrImage cached{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
         Renderer reference(marching.root, log_);
         reference.setScene(scene);
@@ -1187,13 +1190,21 @@ TEST_F(GiAccuracy, VoxelRayHitCacheReplaysTheMarchedLight) {
     scene.lights[0].intensity *= 2.0f;
     scene.lights[0].color = glm::vec3(1.0f, 0.6f, 0.3f);
     ++scene.lightRevision;
-    againstMarching("light edit (hits replayed)");
-    // Move the tall box: the voxels change, so must the hits.
-    for (Node& node : scene.nodes)
-        if (node.name == "tall_box") node.translation += glm::vec3(0.25f, 0.0f, 0.15f);
-    scene.updateWorldTransforms();
-    ++scene.geometryRevision;
-    againstMarching("the tall box moved (hits recorded again)");
+    againstMarching("light edit (hits replayed)", 0);
+    const auto moveTallBox = [&](glm::vec3 by) {
+        for (Node& node : scene.nodes)
+            if (node.name == "tall_box") node.translation += by;
+        scene.updateWorldTransforms();
+        ++scene.geometryRevision;
+    };
+    // Move the tall box: the voxels change, so must the hits of the rays that cross them.
+    moveTallBox(glm::vec3(0.25f, 0.0f, 0.15f));
+    againstMarching("the tall box moved (its boxes voxelized, the rays crossing them marched)", 1);
+    moveTallBox(glm::vec3(-0.1f, 0.0f, 0.2f));
+    againstMarching("moved again (a second epoch of changed boxes)", 1);
+    settings.gi.voxelizeChangesOnly = false;
+    moveTallBox(glm::vec3(0.0f, 0.0f, -0.3f));
+    againstMarching("moved with changes only off (the whole volume voxelized, every hit recorded)", 0);
 }
 
 // The cached mode's low-resolution trace is two programs (ConeTracePass::executeReduced): a gather

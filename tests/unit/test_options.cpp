@@ -385,6 +385,8 @@ TEST(Options, FastGiFlags) {
     EXPECT_EQ(lit::renderSettingsFromJson(lit::toJson(noSubsets)), noSubsets);  // saved and read back
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--bench-gi-updates", "2"}),
               "--bench-gi-updates needs --bench (the steady frames come first)");
+    EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--bench-gi-moves", "2"}),
+              "--bench-gi-moves needs --bench (the steady frames come first)");
 }
 
 // The GI work per frame: a still converges by default (the editor's refined light), --single-frame

@@ -404,6 +404,14 @@ std::vector<Flag> flagTable() {
                              "cached mode's voxel irradiance that follow it; with --gi-update-per-frame, each update "
                              "is let finish over frames before the next is timed (its frames are printed)",
                      .store = integerInto(&Options::giUpdateRounds, 1, 1000, "a round count from 1 to 1000")});
+    flags.push_back({.names = {"--bench-gi-moves"},
+                     .value = "N",
+                     .expects = "a round count",
+                     .group = G::Benchmarks,
+                     .help = "after the frames, time N interleaved rounds of moving the smallest mesh node with only "
+                             "its changed boxes voxelized again against the same move with the whole volume "
+                             "voxelized; each update (and its refinement) is let finish before the next",
+                     .store = integerInto(&Options::giMoveRounds, 1, 1000, "a round count from 1 to 1000")});
     flags.push_back({.names = {"--json"},
                      .value = "FILE.json",
                      .expects = "FILE.json",

@@ -165,6 +165,8 @@ Options parseOptions(const std::vector<std::string>& args) {
             "--single-frame sets the GI work per frame; give it or --gi-update-per-frame / --gi-refine-per-frame");
     if (options.giUpdateRounds > 0 && options.benchFrames == 0)
         throw UsageError("--bench-gi-updates needs --bench (the steady frames come first)");
+    if (options.giMoveRounds > 0 && options.benchFrames == 0)
+        throw UsageError("--bench-gi-moves needs --bench (the steady frames come first)");
     return options;
 }
 

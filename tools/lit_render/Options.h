@@ -88,6 +88,7 @@ struct Options {
     // camera path, which is then the still's camera). Without it a still shows the nodes at 0 s.
     std::optional<double> time;
     int giUpdateRounds = 0;            // --bench-gi-updates N: light edit vs re-voxelize, N interleaved rounds
+    int giMoveRounds = 0;              // --bench-gi-moves N: a move's changed boxes vs the whole volume, N rounds
     // --reference: path-trace the scene on the CPU (renderer/reference/) instead of rasterizing.
     bool reference = false;
     std::optional<int> spp;            // --spp: samples per pixel (reference only)

@@ -9,6 +9,7 @@
 
 #include "Bench.h"
 #include "Compare.h"
+#include "GiMoveBench.h"
 #include "GiUpdateBench.h"
 #include "Renderer.h"
 #include "gl/Capabilities.h"
@@ -47,6 +48,8 @@ int runStill(const RunContext& run, Scene& scene, const CameraView& camera, cons
     if (options.benchFrames > 0 && settings.gi.enabled) bench.mipmaps = renderer.benchmarkMipmaps(7);
     if (options.giUpdateRounds > 0 && settings.gi.enabled)
         benchGiUpdates(options.giUpdateRounds, scene, camera, renderer, settings, giBudgetFor(options));
+    if (options.giMoveRounds > 0 && settings.gi.enabled)
+        benchGiMoves(options.giMoveRounds, scene, camera, renderer, settings, giBudgetFor(options));
 
     if (options.benchFrames > 0) {
         printBench(bench, settings, renderer.stats());

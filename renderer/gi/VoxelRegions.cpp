@@ -1,0 +1,85 @@
+#include "gi/VoxelRegions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lit {
+
+VoxelBox voxelBoxOf(const Aabb& world, const VoxelPlacement& placement, int padding) {
+    if (world.empty() || placement.resolution <= 0) return {};
+    const glm::vec3 lo = glm::floor((world.min - placement.min) / placement.voxelSize);
+    const glm::vec3 hi = glm::floor((world.max - placement.min) / placement.voxelSize) + 1.0f;
+    const glm::vec3 limit(static_cast<float>(placement.resolution));
+    const glm::vec3 pad(static_cast<float>(padding));
+    VoxelBox box;
+    box.min = glm::ivec3(glm::clamp(lo - pad, glm::vec3(0.0f), limit));
+    box.max = glm::ivec3(glm::clamp(hi + pad, glm::vec3(0.0f), limit));
+    return box;
+}
+
+namespace {
+// Joins overlapping boxes until none overlap: a voxel in two boxes would be cleared and drawn twice.
+void joinOverlapping(std::vector<VoxelBox>& boxes) {
+    for (bool joined = true; joined;) {
+        joined = false;
+        for (std::size_t i = 0; i < boxes.size() && !joined; ++i)
+            for (std::size_t j = i + 1; j < boxes.size() && !joined; ++j)
+                if (boxes[i].overlaps(boxes[j])) {
+                    boxes[i] = boxes[i].joined(boxes[j]);
+                    boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
+                    joined = true;
+                }
+    }
+}
+}  // namespace
+
+std::vector<VoxelBox> mergeVoxelBoxes(std::vector<VoxelBox> boxes, std::size_t maxBoxes) {
+    std::erase_if(boxes, [](const VoxelBox& b) { return b.empty(); });
+    joinOverlapping(boxes);
+    while (boxes.size() > std::max<std::size_t>(maxBoxes, 1)) {
+        std::size_t bestI = 0, bestJ = 1;
+        std::int64_t bestGrowth = std::numeric_limits<std::int64_t>::max();
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+                const std::int64_t growth =
+                    boxes[i].joined(boxes[j]).voxels() - boxes[i].voxels() - boxes[j].voxels();
+                if (growth < bestGrowth) {
+                    bestGrowth = growth;
+                    bestI = i;
+                    bestJ = j;
+                }
+            }
+        boxes[bestI] = boxes[bestI].joined(boxes[bestJ]);
+        boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(bestJ));
+        joinOverlapping(boxes);  // the joined box may now overlap another
+    }
+    return boxes;
+}
+
+void VoxelChangeTracker::voxelizedAll(std::vector<ItemPose> items, const VoxelPlacement& placement) {
+    items_ = std::move(items);
+    placement_ = placement;
+    valid_ = true;
+}
+
+std::optional<std::vector<VoxelBox>> VoxelChangeTracker::voxelizeChanged(const std::vector<ItemPose>& items,
+                                                                         const VoxelPlacement& placement) {
+    if (!valid_ || !(placement == placement_) || items.size() != items_.size()) return std::nullopt;
+    std::vector<VoxelBox> boxes;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (items[i] == items_[i]) continue;
+        boxes.push_back(voxelBoxOf(items_[i].bounds, placement, kPadding));
+        boxes.push_back(voxelBoxOf(items[i].bounds, placement, kPadding));
+    }
+    if (boxes.empty()) return std::nullopt;  // a re-voxelization asked for without a move
+    boxes = mergeVoxelBoxes(std::move(boxes), kMaxBoxes);
+    std::int64_t voxels = 0;
+    for (const VoxelBox& box : boxes) voxels += box.voxels();
+    const double n = placement.resolution;
+    if (static_cast<double>(voxels) > kMaxShare * n * n * n) return std::nullopt;
+    items_ = items;
+    return boxes;
+}
+
+}  // namespace lit

@@ -1,0 +1,84 @@
+#pragma once
+// Which voxels a geometry edit changed (no GL here, so it is tested without a context). A node
+// that moves (a gizmo drag, a node animation) changes only the voxels its items covered before and
+// cover now: VoxelGi voxelizes those boxes again instead of the whole volume, and the voxel rays
+// that do not cross them keep their recorded hits (RayHitCache). docs/GI.md, "Incremental
+// voxelization".
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/Aabb.h"
+
+namespace lit {
+
+// Voxels [min, max) of a volume, in voxel coordinates.
+struct VoxelBox {
+    glm::ivec3 min{0}, max{0};
+    bool empty() const { return min.x >= max.x || min.y >= max.y || min.z >= max.z; }
+    std::int64_t voxels() const {
+        if (empty()) return 0;
+        const glm::ivec3 s = max - min;
+        return std::int64_t{s.x} * s.y * s.z;
+    }
+    bool overlaps(const VoxelBox& o) const {
+        return min.x < o.max.x && o.min.x < max.x && min.y < o.max.y && o.min.y < max.y && min.z < o.max.z &&
+               o.min.z < max.z;
+    }
+    // The smallest box holding both.
+    VoxelBox joined(const VoxelBox& o) const { return {glm::min(min, o.min), glm::max(max, o.max)}; }
+    bool operator==(const VoxelBox&) const = default;
+};
+
+// Where a volume lies: its corner (m), voxel size (m) and voxels per side.
+struct VoxelPlacement {
+    glm::vec3 min{0.0f};
+    float voxelSize = 1.0f;
+    int resolution = 0;
+    bool operator==(const VoxelPlacement&) const = default;
+};
+
+// The voxels a world box touches, with `padding` voxels around it (the voxelization's conservative
+// rasterization writes up to a voxel beyond a triangle), clamped to the volume.
+VoxelBox voxelBoxOf(const Aabb& world, const VoxelPlacement& placement, int padding);
+
+// Merges overlapping boxes, then the pair whose joined box adds the fewest voxels, until at most
+// `maxBoxes` are left.
+std::vector<VoxelBox> mergeVoxelBoxes(std::vector<VoxelBox> boxes, std::size_t maxBoxes);
+
+// One draw item as the last voxelization saw it: its node's world transform and world box.
+struct ItemPose {
+    glm::mat4 world{1.0f};
+    Aabb bounds;
+    bool operator==(const ItemPose& o) const { return world == o.world; }
+};
+
+class VoxelChangeTracker {
+public:
+    static constexpr std::size_t kMaxBoxes = 8;  // = LIT_RAY_CHANGED_BOXES
+    // A partial voxelization pays only while its boxes are a small share of the volume; beyond
+    // this share the whole volume is voxelized.
+    static constexpr double kMaxShare = 0.25;
+    // Voxels padded around each item's box (voxelize.geom.glsl's enlarged triangles reach one
+    // voxel beyond the triangle; one more for rounding).
+    static constexpr int kPadding = 2;
+
+    // The whole volume was voxelized from `items` placed at `placement`.
+    void voxelizedAll(std::vector<ItemPose> items, const VoxelPlacement& placement);
+    // The boxes to voxelize again for the items as they are now: each moved item's box before and
+    // after, merged; nullopt when the whole volume must be voxelized instead (nothing voxelized yet,
+    // other items or another placement, no item moved: the edit is not a move, or the boxes cover
+    // more than kMaxShare of the volume). On success the poses are taken as voxelized.
+    std::optional<std::vector<VoxelBox>> voxelizeChanged(const std::vector<ItemPose>& items,
+                                                         const VoxelPlacement& placement);
+
+private:
+    std::vector<ItemPose> items_;
+    VoxelPlacement placement_;
+    bool valid_ = false;
+};
+
+}  // namespace lit

@@ -1,0 +1,96 @@
+// VoxelChangeTracker: which voxels a move changed, and when the whole volume is voxelized instead.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gi/VoxelRegions.h"
+
+namespace lit {
+namespace {
+
+// A 1 m cube at `at`, as an item pose.
+ItemPose cubeAt(glm::vec3 at) {
+    ItemPose pose;
+    pose.world = glm::translate(glm::mat4(1.0f), at);
+    pose.bounds = Aabb{at - glm::vec3(0.5f), at + glm::vec3(0.5f)};
+    return pose;
+}
+
+// A 64³ volume of 0.25 m voxels with its corner at (−8, −8, −8).
+const VoxelPlacement kPlacement{glm::vec3(-8.0f), 0.25f, 64};
+
+TEST(VoxelRegions, BoxOfAWorldBoxIsPaddedAndClamped) {
+    const VoxelBox box = voxelBoxOf(Aabb{glm::vec3(-0.5f), glm::vec3(0.5f)}, kPlacement, 2);
+    // −0.5 m is voxel 30; 0.5 m is voxel 34, the last it touches (exclusive end 35), ±2.
+    EXPECT_EQ(box.min, glm::ivec3(28));
+    EXPECT_EQ(box.max, glm::ivec3(37));
+    const VoxelBox edge = voxelBoxOf(Aabb{glm::vec3(-9.0f), glm::vec3(-7.0f)}, kPlacement, 2);
+    EXPECT_EQ(edge.min, glm::ivec3(0));
+    EXPECT_EQ(edge.max, glm::ivec3(7));
+    EXPECT_TRUE(voxelBoxOf(Aabb{}, kPlacement, 2).empty());
+}
+
+TEST(VoxelRegions, MergingJoinsOverlapsAndKeepsAtMostTheLimit) {
+    const VoxelBox a{glm::ivec3(0), glm::ivec3(4)}, b{glm::ivec3(2), glm::ivec3(6)}, far{glm::ivec3(40), glm::ivec3(44)};
+    const std::vector<VoxelBox> joined = mergeVoxelBoxes({a, b, far}, 8);
+    ASSERT_EQ(joined.size(), 2u);
+    EXPECT_EQ(joined[0], (VoxelBox{glm::ivec3(0), glm::ivec3(6)}));
+    EXPECT_EQ(joined[1], far);
+    // Ten separate boxes along x, merged down to three: no two overlap, every voxel still covered.
+    std::vector<VoxelBox> row;
+    for (int i = 0; i < 10; ++i) row.push_back({glm::ivec3(6 * i, 0, 0), glm::ivec3(6 * i + 3, 3, 3)});
+    const std::vector<VoxelBox> three = mergeVoxelBoxes(row, 3);
+    ASSERT_EQ(three.size(), 3u);
+    for (std::size_t i = 0; i < three.size(); ++i)
+        for (std::size_t j = i + 1; j < three.size(); ++j) EXPECT_FALSE(three[i].overlaps(three[j]));
+    for (const VoxelBox& box : row) {
+        bool covered = false;
+        for (const VoxelBox& m : three)
+            covered = covered || (glm::all(glm::greaterThanEqual(box.min, m.min)) && glm::all(glm::lessThanEqual(box.max, m.max)));
+        EXPECT_TRUE(covered);
+    }
+}
+
+TEST(VoxelRegions, AMovedItemChangesItsOldAndNewBoxOnly) {
+    VoxelChangeTracker tracker;
+    const std::vector<ItemPose> before{cubeAt(glm::vec3(0.0f)), cubeAt(glm::vec3(4.0f, 0.0f, 0.0f))};
+    EXPECT_FALSE(tracker.voxelizeChanged(before, kPlacement)) << "nothing voxelized yet";
+    tracker.voxelizedAll(before, kPlacement);
+    std::vector<ItemPose> after = before;
+    after[1] = cubeAt(glm::vec3(4.0f, 0.5f, 0.0f));
+    const auto boxes = tracker.voxelizeChanged(after, kPlacement);
+    ASSERT_TRUE(boxes);
+    ASSERT_EQ(boxes->size(), 1u) << "the old and new box overlap: one box";
+    const VoxelBox expected = voxelBoxOf(before[1].bounds, kPlacement, VoxelChangeTracker::kPadding)
+                                  .joined(voxelBoxOf(after[1].bounds, kPlacement, VoxelChangeTracker::kPadding));
+    EXPECT_EQ((*boxes)[0], expected);
+    EXPECT_FALSE((*boxes)[0].overlaps(voxelBoxOf(before[0].bounds, kPlacement, 0))) << "the still cube is not redone";
+    // The poses are now the voxelized ones: the same poses again change nothing and ask for the
+    // whole volume (a re-voxelization asked for without a move).
+    EXPECT_FALSE(tracker.voxelizeChanged(after, kPlacement));
+    // A rotation in place keeps the box but changes the voxels.
+    std::vector<ItemPose> turned = after;
+    turned[0].world = glm::rotate(turned[0].world, 0.3f, glm::vec3(0.0f, 1.0f, 0.0f));
+    ASSERT_TRUE(tracker.voxelizeChanged(turned, kPlacement));
+}
+
+TEST(VoxelRegions, TheWholeVolumeWhenThePlacementOrTheItemsChangeOrTheBoxesAreLarge) {
+    VoxelChangeTracker tracker;
+    const std::vector<ItemPose> before{cubeAt(glm::vec3(0.0f))};
+    tracker.voxelizedAll(before, kPlacement);
+    const std::vector<ItemPose> moved{cubeAt(glm::vec3(1.0f))};
+    VoxelPlacement shifted = kPlacement;
+    shifted.min.x += 0.25f;
+    EXPECT_FALSE(tracker.voxelizeChanged(moved, shifted));
+    EXPECT_FALSE(tracker.voxelizeChanged({cubeAt(glm::vec3(1.0f)), cubeAt(glm::vec3(2.0f))}, kPlacement));
+    // A 12 m item moved: its boxes cover more than a quarter of the volume.
+    ItemPose big = cubeAt(glm::vec3(0.0f));
+    big.bounds = Aabb{glm::vec3(-6.0f), glm::vec3(6.0f)};
+    tracker.voxelizedAll({big}, kPlacement);
+    ItemPose bigMoved = big;
+    bigMoved.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0.0f, 0.0f));
+    EXPECT_FALSE(tracker.voxelizeChanged({bigMoved}, kPlacement));
+}
+
+}  // namespace
+}  // namespace lit

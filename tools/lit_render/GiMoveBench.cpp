@@ -1,0 +1,149 @@
+#include "GiMoveBench.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <vector>
+
+#include "RenderSettings.h"
+#include "animation/NodeAnimation.h"
+#include "Renderer.h"
+#include "scene/CameraView.h"
+#include "scene/Scene.h"
+
+namespace lit::cli {
+
+namespace {
+
+// The mesh node with the smallest world box (a prop, not the room), or -1.
+int smallestMeshNode(const Scene& scene) {
+    int best = -1;
+    float bestSize = std::numeric_limits<float>::max();
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+        const Node& node = scene.nodes[i];
+        if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= scene.meshes.size()) continue;
+        Aabb bounds;
+        for (const Primitive& p : scene.meshes[static_cast<std::size_t>(node.mesh)].primitives)
+            bounds.extend(p.bounds.transformed(node.world));
+        if (bounds.empty()) continue;
+        const float size = bounds.radius();
+        if (size < bestSize) {
+            bestSize = size;
+            best = static_cast<int>(i);
+        }
+    }
+    return best;
+}
+
+double passMs(Renderer& renderer, const char* name) {
+    for (const PassTiming& t : renderer.profiler().timings())
+        if (t.name == name && t.ran) return t.gpuMs;
+    return 0.0;
+}
+
+double giMs(Renderer& renderer) {
+    double sum = 0.0;
+    for (const char* name : {"voxelize", "mip lists", "inject", "mipmap", "bounces", "voxel irradiance",
+                             "voxel irradiance filter"})
+        sum += passMs(renderer, name);
+    return sum;
+}
+
+struct MoveCost {
+    double editFrameMs = 0.0;  // the edit's frame: voxelize, lists, inject, mipmaps, traces
+    double voxelizeMs = 0.0;
+    double totalMs = 0.0;      // every frame's GI passes up to the final light (refinement included)
+    int frames = 0;
+    int boxes = 0;
+};
+
+}  // namespace
+
+void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& renderer,
+                  const RenderSettings& settings, const GiBudget& budget) {
+    const int node = smallestMeshNode(scene);
+    if (node < 0) {
+        std::printf("gi-move: the scene has no mesh node to move\n");
+        return;
+    }
+    Node& moved = scene.nodes[static_cast<std::size_t>(node)];
+    Aabb bounds;
+    for (const Primitive& p : scene.meshes[static_cast<std::size_t>(moved.mesh)].primitives)
+        bounds.extend(p.bounds.transformed(moved.world));
+    const float step = 0.1f * std::max(bounds.size().x, std::max(bounds.size().y, bounds.size().z));
+    // Until the update and the refinement (when the budget runs one) are done: the next edit
+    // starts from settled light.
+    const auto settle = [&](MoveCost& cost) {
+        constexpr int kMaxFrames = 20000;
+        const auto pending = [&] {
+            return renderer.stats().giUpdateDone < 1.0f || (budget.refineVoxels > 0 && renderer.stats().giRefining);
+        };
+        while (pending() && cost.frames < kMaxFrames) {
+            renderer.render(scene, camera, settings, budget);
+            renderer.profiler().flush();
+            ++cost.frames;
+            cost.totalMs += giMs(renderer);
+        }
+    };
+    // A scene with node animations moves as they play, a frame (1/30 s) at a time; another scene
+    // moves its smallest mesh node.
+    const bool animated = summarizeNodeAnimations(scene).nodes > 0;
+    double seconds = 0.0;
+    const auto move = [&](bool changesOnly, float by) {
+        RenderSettings s = settings;
+        s.gi.voxelizeChangesOnly = changesOnly;
+        if (animated) {
+            seconds += 1.0 / 30.0;
+            applyNodeAnimations(scene, seconds);
+        } else {
+            moved.translation.x += by;
+            scene.updateWorldTransforms();
+            ++scene.geometryRevision;
+        }
+        MoveCost cost;
+        renderer.render(scene, camera, s, budget);
+        renderer.profiler().flush();
+        cost.boxes = renderer.stats().voxelizedBoxes;
+        cost.editFrameMs = giMs(renderer);
+        cost.voxelizeMs = passMs(renderer, "voxelize");
+        cost.totalMs = cost.editFrameMs;
+        settle(cost);
+        return cost;
+    };
+    MoveCost warm;
+    settle(warm);
+    if (animated)
+        std::printf("GI moves at %d³: the node animations advance 1/30 s a move, %d rounds:\n",
+                    settings.gi.voxelResolution, rounds);
+    else
+        std::printf("GI moves at %d³: node '%s' moves %.3f m along x and back, %d rounds:\n",
+                    settings.gi.voxelResolution, moved.name.c_str(), static_cast<double>(step), rounds);
+    std::vector<double> frameRatios, totalRatios;
+    for (int round = 1; round <= rounds; ++round) {
+        const float sign = (round % 2) ? 1.0f : -1.0f;
+        // Interleaved, the order turned each round: the one that runs second starts from the first's light.
+        const bool boxesFirst = round % 2 == 1;
+        MoveCost boxes, whole;
+        if (boxesFirst) {
+            boxes = move(true, sign * step);
+            whole = move(false, -sign * step);
+        } else {
+            whole = move(false, sign * step);
+            boxes = move(true, -sign * step);
+        }
+        frameRatios.push_back(boxes.editFrameMs / whole.editFrameMs);
+        totalRatios.push_back(boxes.totalMs / whole.totalMs);
+        std::printf(
+            "gi-move round %d: changed boxes (%d) edit frame %.1f ms (voxelize %.2f), to the final light %.1f ms in %d "
+            "frames | whole volume edit frame %.1f ms (voxelize %.2f), to the final light %.1f ms in %d frames | "
+            "ratios %.3f / %.3f\n",
+            round, boxes.boxes, boxes.editFrameMs, boxes.voxelizeMs, boxes.totalMs, boxes.frames + 1, whole.editFrameMs,
+            whole.voxelizeMs, whole.totalMs, whole.frames + 1, frameRatios.back(), totalRatios.back());
+    }
+    std::sort(frameRatios.begin(), frameRatios.end());
+    std::sort(totalRatios.begin(), totalRatios.end());
+    std::printf("gi-move median ratios (changed boxes / whole volume): edit frame %.3f, to the final light %.3f\n",
+                frameRatios[frameRatios.size() / 2], totalRatios[totalRatios.size() / 2]);
+}
+
+}  // namespace lit::cli
