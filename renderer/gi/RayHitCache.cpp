@@ -41,18 +41,9 @@ void RayHitCache::markChanged(const std::vector<VoxelBox>& boxes) {
     // Too many boxes: the pair whose joined box adds the fewest voxels becomes one, with the later
     // epoch (an entry recorded before it must test both; one recorded after both tests neither).
     while (changed_.size() > VoxelChangeTracker::kMaxBoxes) {
-        std::size_t bestI = 0, bestJ = 1;
-        std::int64_t bestGrowth = std::numeric_limits<std::int64_t>::max();
-        for (std::size_t i = 0; i < changed_.size(); ++i)
-            for (std::size_t j = i + 1; j < changed_.size(); ++j) {
-                const std::int64_t growth = changed_[i].box.joined(changed_[j].box).voxels() -
-                                            changed_[i].box.voxels() - changed_[j].box.voxels();
-                if (growth < bestGrowth) {
-                    bestGrowth = growth;
-                    bestI = i;
-                    bestJ = j;
-                }
-            }
+        std::vector<VoxelBox> kept;
+        for (const ChangedBox& c : changed_) kept.push_back(c.box);
+        const auto [bestI, bestJ] = cheapestJoin(kept);
         changed_[bestI] = {changed_[bestI].box.joined(changed_[bestJ].box),
                            std::max(changed_[bestI].epoch, changed_[bestJ].epoch)};
         changed_.erase(changed_.begin() + static_cast<std::ptrdiff_t>(bestJ));

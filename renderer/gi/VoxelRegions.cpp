@@ -34,22 +34,25 @@ void joinOverlapping(std::vector<VoxelBox>& boxes) {
 }
 }  // namespace
 
+std::pair<std::size_t, std::size_t> cheapestJoin(const std::vector<VoxelBox>& boxes) {
+    std::pair<std::size_t, std::size_t> best{0, 1};
+    std::int64_t bestGrowth = std::numeric_limits<std::int64_t>::max();
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+            const std::int64_t growth = boxes[i].joined(boxes[j]).voxels() - boxes[i].voxels() - boxes[j].voxels();
+            if (growth < bestGrowth) {
+                bestGrowth = growth;
+                best = {i, j};
+            }
+        }
+    return best;
+}
+
 std::vector<VoxelBox> mergeVoxelBoxes(std::vector<VoxelBox> boxes, std::size_t maxBoxes) {
     std::erase_if(boxes, [](const VoxelBox& b) { return b.empty(); });
     joinOverlapping(boxes);
     while (boxes.size() > std::max<std::size_t>(maxBoxes, 1)) {
-        std::size_t bestI = 0, bestJ = 1;
-        std::int64_t bestGrowth = std::numeric_limits<std::int64_t>::max();
-        for (std::size_t i = 0; i < boxes.size(); ++i)
-            for (std::size_t j = i + 1; j < boxes.size(); ++j) {
-                const std::int64_t growth =
-                    boxes[i].joined(boxes[j]).voxels() - boxes[i].voxels() - boxes[j].voxels();
-                if (growth < bestGrowth) {
-                    bestGrowth = growth;
-                    bestI = i;
-                    bestJ = j;
-                }
-            }
+        const auto [bestI, bestJ] = cheapestJoin(boxes);
         boxes[bestI] = boxes[bestI].joined(boxes[bestJ]);
         boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(bestJ));
         joinOverlapping(boxes);  // the joined box may now overlap another

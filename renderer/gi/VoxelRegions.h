@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -44,6 +45,9 @@ struct VoxelPlacement {
 // The voxels a world box touches, with `padding` voxels around it (the voxelization's conservative
 // rasterization writes up to a voxel beyond a triangle), clamped to the volume.
 VoxelBox voxelBoxOf(const Aabb& world, const VoxelPlacement& placement, int padding);
+
+// The two boxes whose joined box adds the fewest voxels (needs at least two).
+std::pair<std::size_t, std::size_t> cheapestJoin(const std::vector<VoxelBox>& boxes);
 
 // Merges overlapping boxes, then the pair whose joined box adds the fewest voxels, until at most
 // `maxBoxes` are left.

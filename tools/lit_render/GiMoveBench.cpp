@@ -1,4 +1,4 @@
-#include "GiMoveBench.h"
+#include "GiUpdateBench.h"
 
 #include <algorithm>
 #include <cstdio>

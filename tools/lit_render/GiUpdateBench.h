@@ -5,6 +5,12 @@
 // every edit (the whole list in the edit's frame unless --gi-update-per-frame; else only
 // that frame's share). Both also re-render the shadow maps (the light or geometry changed); that
 // is printed separately.
+//
+// --bench-gi-moves (GiMoveBench.cpp): moving one object (the scene's node animations a frame on,
+// else the smallest mesh node) with only its changed boxes voxelized again
+// (GiSettings::voxelizeChangesOnly) against the same move with the whole volume voxelized,
+// interleaved. Each move's update is let finish (over frames with --gi-update-per-frame) before
+// the next: printed are the edit frame's GI passes and those of every frame to the final light.
 
 #include "gi/GiBudget.h"
 
@@ -21,5 +27,9 @@ namespace lit::cli {
 // state they left; `scene`'s first light is nudged and restored in turn.
 void benchGiUpdates(int rounds, Scene& scene, const CameraView& camera, Renderer& renderer,
                     const RenderSettings& settings, const GiBudget& budget);
+// One line per round and the median ratios; a moved node moves by a tenth of its size along x and
+// back in turn, so the scene ends as it began.
+void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& renderer,
+                  const RenderSettings& settings, const GiBudget& budget);
 
 }  // namespace lit::cli

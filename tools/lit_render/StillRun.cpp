@@ -9,7 +9,6 @@
 
 #include "Bench.h"
 #include "Compare.h"
-#include "GiMoveBench.h"
 #include "GiUpdateBench.h"
 #include "Renderer.h"
 #include "gl/Capabilities.h"
