@@ -139,13 +139,15 @@ layout(std430, binding = LIT_SSBO_VOXEL_RAY_HITS) buffer VoxelRayHits { uint ray
 uniform int uRayHits;
 // After a voxelization of changed boxes (VoxelChangeTracker) the hits stay: a list entry's hits
 // were recorded in epoch rayEpochs[entry], a box changed in epoch uChangedBoxMin[i].w, and a replay
-// marches (and records) again only the rays of an entry older than a box that cross it.
+// marches (and records) again only the rays of an entry older than a box whose voxel lies in it
+// (voxelChanged) or that cross it before their hits (rayCrossesChange).
 layout(std430, binding = LIT_SSBO_VOXEL_RAY_EPOCHS) buffer VoxelRayEpochs { uint rayEpochs[]; };
 uniform uint uRayEpoch;  // the epoch this trace records in
 uniform int uChangedBoxCount;
 uniform ivec4 uChangedBoxMin[LIT_RAY_CHANGED_BOXES];  // xyz first voxel, w the epoch of the change
 uniform ivec4 uChangedBoxMax[LIT_RAY_CHANGED_BOXES];  // xyz one past the last voxel
-uint gRecordedEpoch = 0u;  // this invocation's entry's epoch (main)
+uint gRecordedEpoch = 0u;    // this invocation's entry's epoch (main)
+bool gVoxelChanged = false;  // its voxel changed since (main): every ray is marched again
 #ifndef LIT_RAY_HIT_CACHE
 #define LIT_RAY_HIT_CACHE 1  // 0: always march (the GL test's yardstick for the cache)
 #endif
@@ -203,16 +205,27 @@ uint marchVoxelRay(vec3 origin, vec3 dir) {
     return kRayHitSky;
 }
 
-// Whether the ray from `origin` along `dir` (world space, unit) crosses a box that changed after
-// its hit was recorded: then its hit may be another now. A box counts as the empty-space blocks
-// (2^kRaySkipLevelCoarse voxels) around it: a march steps by those blocks where they are empty, so
-// a block that a change emptied or filled changes the steps (and which grazed voxels are visited) of
-// every ray through it, even away from the changed voxels themselves. The whole line ahead of the
-// origin is tested, not only up to the recorded hit: ending the test at the hit voxel missed rays
-// whose replayed light then differed from a march (1.6 % of L_ID on the Cornell box test,
-// GiAccuracy.VoxelRayHitCacheReplaysTheMarchedLight), for a reason not understood yet.
-bool rayCrossesChange(vec3 origin, vec3 dir) {
+// Whether voxel v lies in a box that changed after its entry's hits were recorded: then its own
+// normal and surface point may be others, and with them its rays' origins and directions.
+bool voxelChanged(ivec3 v) {
+    for (int i = 0; i < uChangedBoxCount; ++i)
+        if (uint(uChangedBoxMin[i].w) > gRecordedEpoch && all(greaterThanEqual(v, uChangedBoxMin[i].xyz)) &&
+            all(lessThan(v, uChangedBoxMax[i].xyz)))
+            return true;
+    return false;
+}
+
+// Whether the ray from `origin` along `dir` (world space, unit), which ended at `hit` when it was
+// recorded, crosses a box that changed since, before its hit (or before it left the volume): then
+// its hit may be another now. A box counts as the empty-space blocks (2^kRaySkipLevelCoarse voxels)
+// around it: a march steps by those blocks where they are empty, so a block that a change emptied or
+// filled changes the steps (and which grazed voxels are visited) of every ray through it. The hit
+// voxel's centre bounds the segment, with 1.5 voxels to spare (a ray meets its hit voxel within
+// √3/2 of the centre's projection).
+bool rayCrossesChange(vec3 origin, vec3 dir, uint hit) {
+    float n = voxel.voxelInfo.x;
     vec3 g0 = (origin - voxel.volumeMin.xyz) / voxel.voxelInfo.z;
+    float tEnd = hit == kRayHitSky ? 2.0 * n : dot(vec3(unpackVoxelCoord(hit & ~kRayHitBack)) + 0.5 - g0, dir) + 1.5;
     vec3 d = mix(dir, vec3(1e-7), lessThan(abs(dir), vec3(1e-7)));
     vec3 inv = 1.0 / d;
     const float block = float(1 << kRaySkipLevelCoarse);
@@ -223,7 +236,7 @@ bool rayCrossesChange(vec3 origin, vec3 dir) {
         vec3 t1 = (lo - g0) * inv, t2 = (hi - g0) * inv;
         float tIn = max(max(min(t1.x, t2.x), min(t1.y, t2.y)), min(t1.z, t2.z));
         float tOut = min(min(max(t1.x, t2.x), max(t1.y, t2.y)), max(t1.z, t2.z));
-        if (tIn <= tOut && tOut >= 0.0) return true;
+        if (tIn <= tOut && tOut >= 0.0 && tIn <= tEnd) return true;
     }
     return false;
 }
@@ -272,7 +285,7 @@ vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
         uint hit;
         if (rayHitMode() == 2) {
             hit = rayHits[slot];
-            if (gRecordedEpoch < uRayEpoch && rayCrossesChange(origin, dir)) {
+            if (gRecordedEpoch < uRayEpoch && (gVoxelChanged || rayCrossesChange(origin, dir, hit))) {
                 hit = marchVoxelRay(origin, dir);
                 rayHits[slot] = hit;
             }
@@ -341,7 +354,10 @@ void main() {
     }
 #endif
 #if LIT_VOXEL_RAYS
-    if (rayHitMode() != 0) gRecordedEpoch = rayEpochs[gListIndex];
+    if (rayHitMode() != 0) {
+        gRecordedEpoch = rayEpochs[gListIndex];
+        gVoxelChanged = voxelChanged(v);
+    }
 #endif
     vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, v).r);
     float agreement = length(averaged);

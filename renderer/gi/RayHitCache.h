@@ -7,7 +7,8 @@
 //
 // After a voxelization of changed boxes (VoxelChangeTracker) the hits stay: each entry carries the
 // epoch its hits were recorded in, each changed box the epoch of its change, and a replaying trace
-// marches again (and records) only the rays of older entries that cross a newer box.
+// marches again (and records) only the rays of older entries whose voxel lies in a newer box or
+// that cross one before their hits.
 
 #include <cstddef>
 #include <cstdint>
