@@ -50,7 +50,7 @@ public:
 
     // Latest completed timings, in first-use pass order.
     const std::vector<PassTiming>& timings() const { return latest_; }
-    double gpuMs(const std::string& pass) const;  // 0 when unknown
+    double gpuMs(const std::string& pass) const;  // in the latest completed frame; 0 when it did not run or is unknown
     // The timing of the most recent completed frame in which `pass` ran (passes that run only
     // when something changed, like voxelization, keep their last cost here); nullptr if never.
     const PassTiming* lastRun(const std::string& pass) const;

@@ -40,7 +40,7 @@ RayHits VoxelGi::rayHitsFor(int rays) {
     return scheduler_.rayHits(rays, fits, rayHitCache_.reallocated());
 }
 
-std::optional<std::vector<VoxelBox>> VoxelGi::changedBoxes(const Frame& frame, const VoxelKey& voxels,
+std::optional<std::vector<VoxelBox>> VoxelGi::changedBoxes(const std::vector<ItemPose>& items, const VoxelKey& voxels,
                                                            const RenderSettings& settings, bool reallocated,
                                                            bool moved) {
     const GiState& state = scheduler_.state();
@@ -48,8 +48,7 @@ std::optional<std::vector<VoxelBox>> VoxelGi::changedBoxes(const Frame& frame, c
         voxels.scene != state.voxels.scene || voxels.materials != state.voxels.materials ||
         state.occupied > 2 * std::max(wholeVolumeEntries_, 1u))
         return std::nullopt;
-    return changes_.voxelizeChanged(itemPoses(frame.scene, frame.gpuScene),
-                                    {volume_.minCorner(), volume_.voxelSize(), volume_.resolution()});
+    return changes_.voxelizeChanged(items, volume_.placement());
 }
 
 void VoxelGi::listTraced(RayHits hits) {
@@ -88,19 +87,20 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         Profiler::Scope scope(profiler_, "bounces");
         bounce_.keepIndirect(volume_);
     }
-    const std::optional<std::vector<VoxelBox>> boxes =
-        changes.voxelize ? changedBoxes(frame, voxels, settings, reallocated, moved) : std::nullopt;
+    std::vector<ItemPose> items;
+    std::optional<std::vector<VoxelBox>> boxes;
     if (changes.voxelize) {
+        items = itemPoses(frame.scene, frame.gpuScene);
+        boxes = changedBoxes(items, voxels, settings, reallocated, moved);
         {
             Profiler::Scope scope(profiler_, "voxelize");
             if (boxes) {
-                voxelize_.executeBoxes(frame.scene, frame.gpuScene, volume_, *boxes, counters);
+                voxelize_.executeBoxes(frame.scene, frame.gpuScene, volume_, *boxes, items, counters);
                 report.voxelizedBoxes = static_cast<int>(boxes->size());
                 for (const VoxelBox& box : *boxes) report.voxelizedVoxels += box.voxels();
             } else {
                 voxelize_.execute(frame.scene, frame.gpuScene, volume_, counters);
-                changes_.voxelizedAll(itemPoses(frame.scene, frame.gpuScene),
-                                      {volume_.minCorner(), volume_.voxelSize(), volume_.resolution()});
+                changes_.voxelizedAll(items, volume_.placement());
                 const std::int64_t n = volume_.resolution();
                 report.voxelizedVoxels = n * n * n;
             }
@@ -111,8 +111,9 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             mipmap_.listOccupiedParents(volume_);
         }
         ++generation_;
-        // One uint read back per voxelization (rare and slow anyway): a list that overflowed is
-        // grown for the next voxelization while this one runs over the whole grid.
+        // One uint read back per voxelization, a stall (every frame while a node animation plays:
+        // the list ranges the traces take need the count): a list that overflowed is grown for the
+        // next voxelization while this one runs over the whole grid.
         const std::uint32_t occupied = volume_.readOccupiedCount();
         const bool complete = occupied <= volume_.occupiedCapacity();
         if (!complete) {

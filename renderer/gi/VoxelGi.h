@@ -101,7 +101,7 @@ private:
     RayHits rayHitsFor(int rays);
     // The changed boxes to voxelize instead of the whole volume, if a voxelization of them is
     // possible and asked for (RenderSettings: voxelizeChangesOnly).
-    std::optional<std::vector<VoxelBox>> changedBoxes(const Frame& frame, const VoxelKey& voxels,
+    std::optional<std::vector<VoxelBox>> changedBoxes(const std::vector<ItemPose>& items, const VoxelKey& voxels,
                                                       const RenderSettings& settings, bool reallocated, bool moved);
     // A pass over the whole list ended: the scheduler and the ray-hit cache say so.
     void listTraced(RayHits hits);

@@ -113,6 +113,7 @@ public:
     glm::vec3 minCorner() const { return min_; }
     float side() const { return side_; }
     float voxelSize() const { return side_ / static_cast<float>(resolution_); }
+    VoxelPlacement placement() const { return {min_, voxelSize(), resolution_}; }
     bool radianceRgba8() const { return rgba8_; }
     GLenum radianceFormat() const { return rgba8_ ? GL_RGBA8 : GL_RGBA16F; }
 

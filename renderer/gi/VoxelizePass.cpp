@@ -78,17 +78,17 @@ void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVo
 }
 
 void VoxelizePass::executeBoxes(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume,
-                                const std::vector<VoxelBox>& boxes, DrawCounters& counters) {
+                                const std::vector<VoxelBox>& boxes, const std::vector<ItemPose>& items,
+                                DrawCounters& counters) {
     for (const VoxelBox& box : boxes) volume.clearMaterials(box);
     volume.clearRadianceLevel0();
     volume.clearRadianceMips();
     if (!begin(gpuScene, volume)) return;
-    const VoxelPlacement placement{volume.minCorner(), volume.voxelSize(), volume.resolution()};
     // Each item's voxels, padded as the tracker pads its boxes.
     std::vector<VoxelBox> itemBoxes;
-    itemBoxes.reserve(gpuScene.items().size());
-    for (const ItemPose& pose : itemPoses(scene, gpuScene))
-        itemBoxes.push_back(voxelBoxOf(pose.bounds, placement, VoxelChangeTracker::kPadding));
+    itemBoxes.reserve(items.size());
+    for (const ItemPose& pose : items)
+        itemBoxes.push_back(voxelBoxOf(pose.bounds, volume.placement(), VoxelChangeTracker::kPadding));
     for (const VoxelBox& box : boxes) {
         setRegion(box);
         gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters, [&](const DrawItem& item) {

@@ -37,10 +37,12 @@ public:
     void execute(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume, DrawCounters& counters);
     // Voxelizes only the voxels of `boxes` (disjoint; VoxelChangeTracker) again: zeroes their
     // material voxels and draws the items whose boxes reach them, writing inside the boxes only.
+    // `items`: itemPoses(scene, gpuScene).
     // The occupied-voxel list is kept: voxels new to it are appended (VoxelVolume::listedVoxels).
     // Level 0 and the mips of the radiance volume are cleared as by execute(). Same GL state after.
     void executeBoxes(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume,
-                      const std::vector<VoxelBox>& boxes, DrawCounters& counters);
+                      const std::vector<VoxelBox>& boxes, const std::vector<ItemPose>& items,
+                      DrawCounters& counters);
 
     std::vector<gl::Program*> programs() override { return {&program_}; }
 

@@ -14,6 +14,15 @@ require_xvfb() {
     fi
 }
 
+# prepare_run SCENE OUT: skips without xvfb-run, fails without SCENE, and empties the output
+# folder OUT (an earlier run's files must not pass for this run's).
+prepare_run() {
+    require_xvfb
+    [ -f "$1" ] || fail "scene $1 not found"
+    rm -rf "$2"
+    mkdir -p "$2" || fail "cannot create $2"
+}
+
 # xvfb_editor ARGS...: runs $editor with ARGS on an Xvfb screen of the size every editor test
 # uses, returning its exit status. Every run is bounded: $editor_timeout seconds (default 240;
 # a script whose runs take longer sets it, below its CTest TIMEOUT divided by its runs). timeout

@@ -19,9 +19,7 @@ out=$5
 
 . "$(dirname "$0")/common.sh"
 editor_timeout=140  # two runs; CTest TIMEOUT 300
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 saved=$out/authored.gltf
 resaved=$out/authored_again.glb
 rm -f "$saved" "$out/authored.bin" "$resaved"

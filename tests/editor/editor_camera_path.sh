@@ -13,10 +13,7 @@ scene=$3
 out=$4
 
 . "$(dirname "$0")/common.sh"
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-rm -rf "$out"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 log=$out/frames.csv
 
 # Three views of the Cornell box, metres (its floor is at y 0, the opening faces +Z).

@@ -12,9 +12,7 @@ out=$3
 
 . "$(dirname "$0")/common.sh"
 editor_timeout=100  # one short run; CTest TIMEOUT 120
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 printf 'setting gi.enabled false\nwait 1\nquit\n' >"$out/gl_error.txt"
 messages=$(export LIT_TEST_GL_ERROR=1; xvfb_editor "$scene" --script "$out/gl_error.txt" --size 160x90 2>&1)
 status=$?

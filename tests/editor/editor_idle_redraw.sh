@@ -13,9 +13,7 @@ scene=$2
 out=$3
 
 . "$(dirname "$0")/common.sh"
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 log=$out/frames.csv
 rm -f "$log"
 

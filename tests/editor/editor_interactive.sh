@@ -14,9 +14,7 @@ out=$3
 
 . "$(dirname "$0")/common.sh"
 editor_timeout=540  # one run; CTest TIMEOUT 600
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 log=$out/frames.csv
 rm -f "$log"
 

@@ -18,9 +18,7 @@ out=$4
 
 . "$(dirname "$0")/common.sh"
 editor_timeout=400  # the longest of three runs; CTest TIMEOUT 900
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-rm -rf "$out"
+prepare_run "$scene" "$out"
 mkdir -p "$out/home"
 
 views="direct-diffuse direct-specular indirect-diffuse indirect-specular albedo normal roughness-metalness shadow-map voxels voxel-slice cone-directions"

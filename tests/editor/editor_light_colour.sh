@@ -13,9 +13,7 @@ out=$4
 
 . "$(dirname "$0")/common.sh"
 editor_timeout=540  # one run; CTest TIMEOUT 600
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 before=$out/light_white.png
 after=$out/light_red.png
 rm -f "$before" "$after"

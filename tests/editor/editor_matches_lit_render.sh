@@ -16,9 +16,7 @@ out=$5
 
 . "$(dirname "$0")/common.sh"
 editor_timeout=540  # one run; CTest TIMEOUT 600
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 rm -f "$out/lit_render.png" "$out/editor.png"
 
 "$render" "$scene" --out "$out/lit_render.png" >"$out/lit_render.txt" 2>&1 || {

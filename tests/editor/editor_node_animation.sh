@@ -17,10 +17,7 @@ scene=$3
 out=$4
 
 . "$(dirname "$0")/common.sh"
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-rm -rf "$out"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 log=$out/frames.csv
 
 cat >"$out/animation.txt" <<SCRIPT

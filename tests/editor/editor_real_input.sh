@@ -20,9 +20,7 @@ out=$3
 require_xvfb
 command -v xdotool >/dev/null 2>&1 || { echo "SKIP: xdotool not found (Debian: apt-get install xdotool)"; exit 77; }
 [ -f /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ] || { echo "SKIP: DejaVu Sans missing: the UI's layout differs"; exit 77; }
-[ -f "$scene" ] || fail "scene $scene not found"
-rm -rf "$out"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 log=$out/frames.csv
 
 # The script holds the editor in "wait" while the input arrives, then reads the keys back.

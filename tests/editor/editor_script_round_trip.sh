@@ -12,9 +12,7 @@ out=$4
 
 . "$(dirname "$0")/common.sh"
 editor_timeout=280  # two runs; CTest TIMEOUT 600
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 saved=$out/round_trip.gltf
 resaved=$out/round_trip_again.glb
 rm -f "$saved" "$out/round_trip.bin" "$resaved"

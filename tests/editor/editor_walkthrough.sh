@@ -12,10 +12,7 @@ out=$4
 
 . "$(dirname "$0")/common.sh"
 editor_timeout=840  # one run; CTest TIMEOUT 900
-require_xvfb
-[ -f "$scene" ] || fail "scene $scene not found"
-rm -rf "$out"
-mkdir -p "$out"
+prepare_run "$scene" "$out"
 
 views="final direct-diffuse indirect-diffuse direct-specular indirect-specular albedo normal roughness-metalness shadow-map voxels voxel-slice"
 panels="hierarchy inspector settings stats camera log timeline"

@@ -148,7 +148,7 @@ TEST_F(OccupiedVoxels, VoxelizingTheChangedBoxesEqualsTheWholeVolume) {
     Scene scene = loadGltf(sourceDir() / "assets" / "cornell_box.gltf", log_);
     voxelize(scene, 64);
     const std::vector<glm::ivec3> listBefore = volume_->readOccupiedList();
-    const VoxelPlacement placement{volume_->minCorner(), volume_->voxelSize(), volume_->resolution()};
+    const VoxelPlacement placement = volume_->placement();
     VoxelChangeTracker tracker;
     tracker.voxelizedAll(itemPoses(scene, *gpuScene_), placement);
     bool moved = false;
@@ -159,12 +159,13 @@ TEST_F(OccupiedVoxels, VoxelizingTheChangedBoxesEqualsTheWholeVolume) {
         }
     ASSERT_TRUE(moved);
     scene.updateWorldTransforms();
-    const auto boxes = tracker.voxelizeChanged(itemPoses(scene, *gpuScene_), placement);
+    const std::vector<ItemPose> items = itemPoses(scene, *gpuScene_);
+    const auto boxes = tracker.voxelizeChanged(items, placement);
     ASSERT_TRUE(boxes) << "a moved box: its boxes only";
     std::int64_t boxVoxels = 0;
     for (const VoxelBox& box : *boxes) boxVoxels += box.voxels();
     DrawCounters counters;
-    voxelize_->executeBoxes(scene, *gpuScene_, *volume_, *boxes, counters);
+    voxelize_->executeBoxes(scene, *gpuScene_, *volume_, *boxes, items, counters);
     std::vector<std::vector<std::uint32_t>> partial;
     for (const gl::Texture* t : {&volume_->albedo(), &volume_->normal(), &volume_->emission(), &volume_->surface()})
         partial.push_back(readMaterialVoxels(*t));

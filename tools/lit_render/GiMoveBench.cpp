@@ -35,17 +35,11 @@ int smallestMeshNode(const Scene& scene) {
     return best;
 }
 
-double passMs(Renderer& renderer, const char* name) {
-    for (const PassTiming& t : renderer.profiler().timings())
-        if (t.name == name && t.ran) return t.gpuMs;
-    return 0.0;
-}
-
 double giMs(Renderer& renderer) {
     double sum = 0.0;
     for (const char* name : {"voxelize", "mip lists", "inject", "mipmap", "bounces", "voxel irradiance",
                              "voxel irradiance filter"})
-        sum += passMs(renderer, name);
+        sum += renderer.profiler().gpuMs(name);
     return sum;
 }
 
@@ -105,7 +99,7 @@ void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& 
         renderer.profiler().flush();
         cost.boxes = renderer.stats().voxelizedBoxes;
         cost.editFrameMs = giMs(renderer);
-        cost.voxelizeMs = passMs(renderer, "voxelize");
+        cost.voxelizeMs = renderer.profiler().gpuMs("voxelize");
         cost.totalMs = cost.editFrameMs;
         settle(cost);
         return cost;

@@ -14,11 +14,7 @@ namespace lit::cli {
 
 void benchGiUpdates(int rounds, lit::Scene& scene, const lit::CameraView& camera, lit::Renderer& renderer,
                     const lit::RenderSettings& settings, const lit::GiBudget& budget) {
-    const auto passMs = [&](const char* name) {
-        for (const lit::PassTiming& t : renderer.profiler().timings())
-            if (t.name == name && t.ran) return t.gpuMs;
-        return 0.0;
-    };
+    const auto passMs = [&](const char* name) { return renderer.profiler().gpuMs(name); };
     std::printf(
         "GI updates at %d³, %u occupied voxels (%.2f %% of the grid), %d rounds:\n", settings.gi.voxelResolution,
         renderer.stats().occupiedVoxels,
