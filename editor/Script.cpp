@@ -163,13 +163,14 @@ std::string checkInteractive(const ScriptCommand& c) {
 }
 
 std::string checkWait(const ScriptCommand& c) {
-    if (auto e = expectCount(c, 1, 1, "a number of frames, gi, refined or play"); !e.empty()) return e;
+    if (auto e = expectCount(c, 1, 1, "a number of frames, seconds, gi, refined or play"); !e.empty()) return e;
     const std::string& a = c.args[0];
     // A frame count is an int (the runner counts frames in one).
     const std::optional<int> frames = parseNumber<int>(a);
-    return a == "gi" || a == "refined" || a == "play" || (frames && *frames >= 1)
+    return a == "gi" || a == "refined" || a == "play" || (frames && *frames >= 1) || waitSeconds(a)
                ? ""
-               : "wait: expected a whole number of frames (1 or more), gi, refined or play, got '" + a + "'";
+               : "wait: expected a whole number of frames (1 or more), seconds (0 < N ≤ 3600, as 2.5s), gi, "
+                 "refined or play, got '" + a + "'";
 }
 
 std::string checkTime(const ScriptCommand& c) {
@@ -332,6 +333,12 @@ std::vector<ScriptCommand> loadScript(const std::filesystem::path& file) {
     text << in.rdbuf();
     if (in.bad()) throw ScriptError(file.string() + ": cannot read the script");
     return parseScript(text.str(), file.string());
+}
+
+std::optional<double> waitSeconds(const std::string& word) {
+    if (word.size() < 2 || word.back() != 's') return std::nullopt;
+    const std::optional<double> seconds = parseNumber<double>(word.substr(0, word.size() - 1));
+    return seconds && *seconds > 0.0 && *seconds <= 3600.0 ? seconds : std::nullopt;
 }
 
 }  // namespace lit::editor

@@ -59,6 +59,7 @@
 // with an error naming the file and line ("script.txt:7: unknown command 'selec'").
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -130,6 +131,9 @@ struct ScriptCommand {
 // `source` names the file in messages. Throws ScriptError.
 std::vector<ScriptCommand> parseScript(std::string_view text, const std::string& source);
 std::vector<ScriptCommand> loadScript(const std::filesystem::path& file);
+
+// The seconds of a "wait 2.5s" (0 < N ≤ 3600), else nullopt.
+std::optional<double> waitSeconds(const std::string& word);
 
 // "script.txt:7: <message>" for an error found while running a command.
 std::string scriptErrorAt(const ScriptCommand& command, const std::string& source, const std::string& message);

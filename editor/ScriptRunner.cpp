@@ -31,6 +31,10 @@ void ScriptRunner::step() {
         --waitFrames_;
         return;
     }
+    if (waitUntil_) {
+        if (std::chrono::steady_clock::now() < *waitUntil_) return;
+        waitUntil_.reset();
+    }
     if (waitForGi_ > 0) {
         // The frame just rendered tells how far the update is (renderer stats of the last frame).
         const FrameStats& stats = target_.renderer.stats();
@@ -290,6 +294,11 @@ std::string ScriptRunner::wait(const ScriptCommand& command) {
     if (what == "gi" || what == "refined") {
         waitForRefinement_ = what == "refined";
         waitForGi_ = waitForRefinement_ ? kRefineWaitFrames : kGiWaitFrames;
+        return "";
+    }
+    if (const std::optional<double> seconds = waitSeconds(what)) {
+        waitUntil_ = std::chrono::steady_clock::now() +
+                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(*seconds));
         return "";
     }
     waitFrames_ = parseNumber<int>(what).value_or(1) - 1;  // this frame is the first

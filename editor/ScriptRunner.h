@@ -6,6 +6,7 @@
 // checked here. The first failure ends the editor with status 1 and "script.txt:7: message" on
 // stderr.
 
+#include <chrono>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -73,6 +74,9 @@ private:
     ScriptTarget target_;
     std::size_t next_ = 0;
     int waitFrames_ = 0;  // frames still to let pass before the next command
+    // wait Ns: the next command runs in the first frame at or after this time (input from outside
+    // the script, as a test's real mouse and keyboard, takes wall time whatever the frame rate).
+    std::optional<std::chrono::steady_clock::time_point> waitUntil_;
     // wait gi / wait refined: frames still allowed for the GI update (with "refined", and then its
     // refinement rounds: ~180 frames at 128³ with the editor's budget) to finish (0: not waiting).
     static constexpr int kGiWaitFrames = 2000;

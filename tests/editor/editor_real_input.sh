@@ -29,7 +29,7 @@ setting gi.enabled false
 panel stats off
 select tall_box
 screenshot $out/ready.png noui
-wait 600
+wait 20s
 screenshot $out/after_ui.png ui
 key select 1
 key select 2

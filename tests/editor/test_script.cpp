@@ -78,13 +78,20 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(errorOf("wait 1\n\nselec Box\n"), "s.txt:3: unknown command 'selec'");
     EXPECT_EQ(errorOf("select\n"), "s.txt:1: select: expected a node name (or - for none), got 0 arguments");
     EXPECT_EQ(errorOf("undo now\n"), "s.txt:1: undo: expected no arguments, got 1 argument");
-    EXPECT_EQ(errorOf("\nwait\n"), "s.txt:2: wait: expected a number of frames, gi, refined or play, got 0 arguments");
-    EXPECT_EQ(errorOf("wait 1.5x\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got '1.5x'");
-    EXPECT_EQ(errorOf("wait 0\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got '0'");
+    EXPECT_EQ(errorOf("\nwait\n"), "s.txt:2: wait: expected a number of frames, seconds, gi, refined or play, got 0 arguments");
+    EXPECT_EQ(errorOf("wait 1.5x\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), seconds (0 < N ≤ 3600, as 2.5s), gi, refined or play, got '1.5x'");
+    EXPECT_EQ(errorOf("wait 0\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), seconds (0 < N ≤ 3600, as 2.5s), gi, refined or play, got '0'");
     EXPECT_EQ(errorOf("wait refine\n"),
-              "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got 'refine'");
+              "s.txt:1: wait: expected a whole number of frames (1 or more), seconds (0 < N ≤ 3600, as 2.5s), gi, refined or play, got 'refine'");
     EXPECT_EQ(parseScript("wait refined\n", "s.txt").at(0).args, std::vector<std::string>{"refined"});
-    EXPECT_EQ(errorOf("wait GI\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got 'GI'");
+    EXPECT_EQ(parseScript("wait 2.5s\n", "s.txt").at(0).args, std::vector<std::string>{"2.5s"});
+    EXPECT_EQ(waitSeconds("2.5s"), 2.5);
+    EXPECT_FALSE(waitSeconds("0s"));
+    EXPECT_FALSE(waitSeconds("s"));
+    EXPECT_FALSE(waitSeconds("2.5"));
+    EXPECT_EQ(errorOf("wait -1s\n"),
+              "s.txt:1: wait: expected a whole number of frames (1 or more), seconds (0 < N ≤ 3600, as 2.5s), gi, refined or play, got '-1s'");
+    EXPECT_EQ(errorOf("wait GI\n"), "s.txt:1: wait: expected a whole number of frames (1 or more), seconds (0 < N ≤ 3600, as 2.5s), gi, refined or play, got 'GI'");
     EXPECT_EQ(errorOf("set light.intensity\n"), "s.txt:1: set: expected a property and a value");
     EXPECT_EQ(errorOf("set light.intensity 1.5x\n"), "s.txt:1: light.intensity: expected 1 number, got '1.5x'");
     EXPECT_EQ(errorOf("set light.colour 1 1 1\n"), "s.txt:1: unknown property 'light.colour'");
@@ -114,7 +121,7 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(errorOf("play 1 2\n"), "s.txt:1: play: expected at most a speed, got 2 arguments");
     EXPECT_EQ(errorOf("duration 0\n"), "s.txt:1: duration: expected seconds > 0, got '0'");
     EXPECT_EQ(errorOf("wait playing\n"),
-              "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got 'playing'");
+              "s.txt:1: wait: expected a whole number of frames (1 or more), seconds (0 < N ≤ 3600, as 2.5s), gi, refined or play, got 'playing'");
     EXPECT_EQ(errorOf("play 0.5\nwait play\nduration 3\n"), "");
 }
 
@@ -269,7 +276,7 @@ TEST(Script, NumbersUsedAsFloatsMustFitOne) {
     EXPECT_EQ(errorOf("add box 1e300 0 0\n"), "s.txt:1: add: expected a number, got '1e300'");
     EXPECT_EQ(errorOf("orbit 1e300 0\n"), "s.txt:1: orbit: expected a number, got '1e300'");
     EXPECT_EQ(errorOf("wait 3000000000\n"),
-              "s.txt:1: wait: expected a whole number of frames (1 or more), gi, refined or play, got '3000000000'");
+              "s.txt:1: wait: expected a whole number of frames (1 or more), seconds (0 < N ≤ 3600, as 2.5s), gi, refined or play, got '3000000000'");
 }
 
 }  // namespace
