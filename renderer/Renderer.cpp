@@ -349,6 +349,7 @@ void Renderer::Impl::updateGi(const Scene& scene, const RenderSettings& settings
     if (report.lightChanged) resolve.resetHistory();  // accumulated indirect light is stale
     stats.voxelized = report.voxelized;
     stats.voxelizedBoxes = report.voxelizedBoxes;
+    stats.giUpdateCompleted = report.updateCompleted;
     stats.injected = report.injected;
     stats.occupiedVoxels = report.occupiedVoxels;
     stats.giUpdateDone = report.updateDone;

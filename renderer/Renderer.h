@@ -58,6 +58,8 @@ struct FrameStats {
     // The indirect diffuse light shown is the last complete update's while the update after a
     // geometry edit is traced (GiFrameReport::showingPrevious).
     bool giShowingPrevious = false;
+    // An update completed this frame (GiFrameReport::updateCompleted).
+    bool giUpdateCompleted = false;
     // Frustum culling, over the views rendered this frame: the camera's G-buffer pass and the
     // shadow views when shadow maps were re-rendered (voxelization draws everything, uncounted).
     int drawsSubmitted = 0;     // scene draws those views issued

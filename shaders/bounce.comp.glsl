@@ -144,8 +144,8 @@ uniform int uRayHits;
 layout(std430, binding = LIT_SSBO_VOXEL_RAY_EPOCHS) buffer VoxelRayEpochs { uint rayEpochs[]; };
 uniform uint uRayEpoch;  // the epoch this trace records in
 uniform int uChangedBoxCount;
-uniform ivec4 uChangedBoxMin[LIT_RAY_CHANGED_BOXES];  // xyz first voxel, w the epoch of the change
-uniform ivec4 uChangedBoxMax[LIT_RAY_CHANGED_BOXES];  // xyz one past the last voxel
+uniform ivec4 uChangedBoxMin[LIT_CHANGED_BOXES];  // xyz first voxel, w the epoch of the change
+uniform ivec4 uChangedBoxMax[LIT_CHANGED_BOXES];  // xyz one past the last voxel
 uint gRecordedEpoch = 0u;    // this invocation's entry's epoch (main)
 bool gVoxelChanged = false;  // its voxel changed since (main): every ray is marched again
 #ifndef LIT_RAY_HIT_CACHE

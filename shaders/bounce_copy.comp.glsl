@@ -12,9 +12,17 @@ LIT_VOXEL_LIST_READER
 
 layout(binding = LIT_IMG_VOXEL_BOUNCE, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelBounce;
 layout(binding = LIT_IMG_VOXEL_RADIANCE) uniform writeonly image3D voxelRadiance;
+layout(binding = LIT_IMG_VOXEL_ALBEDO, r32ui) uniform readonly uimage3D voxelAlbedo;
+layout(binding = LIT_IMG_VOXEL_DIRECT, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelDirect;
 
 void main() {
     ivec3 v;
     if (!listedVoxel(v)) return;
-    imageStore(voxelRadiance, v, imageLoad(voxelBounce, v));
+    // A voxelization of changed boxes while the pass ran (the update ran on, VoxelGi) may have
+    // emptied a voxel traced while occupied, or filled one traced while empty (its bounce holds
+    // nothing: its direct light stands in). Level 0 must be occupied where the material is: the
+    // voxel rays and their recorded hits take occupancy from it.
+    vec4 bounce = imageLoad(voxelBounce, v);
+    bool occupied = unpackVoxel(imageLoad(voxelAlbedo, v).r).a > 0.0;
+    imageStore(voxelRadiance, v, !occupied ? vec4(0.0) : (bounce.a > 0.0 ? bounce : imageLoad(voxelDirect, v)));
 }

@@ -30,9 +30,19 @@ uniform int uWriteDirect;
 // 0 (with uWriteDirect): level 0 keeps the last update's light, which the bounces replace once
 // they are done (a light edit with voxel rays: VoxelGi, InjectOptions::writeLevel0).
 uniform int uWriteLevel0;
+// ... but level 0 is written in these boxes all the same: a voxelization of changed boxes cleared
+// their voxels' light (InjectOptions::level0Boxes; xyz first voxel, one past the last).
+uniform int uLevel0BoxCount;
+uniform ivec4 uLevel0BoxMin[LIT_CHANGED_BOXES], uLevel0BoxMax[LIT_CHANGED_BOXES];
+
+bool inLevel0Box(ivec3 v) {
+    for (int i = 0; i < uLevel0BoxCount; ++i)
+        if (all(greaterThanEqual(v, uLevel0BoxMin[i].xyz)) && all(lessThan(v, uLevel0BoxMax[i].xyz))) return true;
+    return false;
+}
 
 void storeRadiance(ivec3 v, vec4 value) {
-    if (uWriteLevel0 != 0) imageStore(voxelRadiance, v, value);
+    if (uWriteLevel0 != 0 || inLevel0Box(v)) imageStore(voxelRadiance, v, value);
     if (uWriteDirect != 0) imageStore(voxelDirect, v, value);
 }
 

@@ -92,6 +92,9 @@ void BouncePass::finish(const VoxelVolume& volume, bool overList) {
                            volume.radianceFormat());
         glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                            volume.radianceFormat());
+        glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+        glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY,
+                           volume.radianceFormat());
         dispatchOverVoxels(volume, program, true);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         return;

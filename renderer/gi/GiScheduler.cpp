@@ -66,7 +66,8 @@ GiScheduler::Changes GiScheduler::changes(const VoxelKey& voxels, const GiLightK
     const bool directionalMissing = light.anisotropic && !state_.light.anisotropic;
     const bool rangeChanged = light.radianceRange != state_.light.radianceRange;
     c.inject = c.voxelize || shadowsDirty || rangeChanged || c.retrace || directionalMissing;
-    c.onlyLight = !c.voxelize && !c.retrace && !directionalMissing && !rangeChanged;
+    c.onlyScene = !c.retrace && !directionalMissing && !rangeChanged;
+    c.onlyLight = !c.voxelize && c.onlyScene;
     if (!c.voxelize && c.inject)
         c.reason = c.retrace            ? "bounce settings changed"
                    : directionalMissing ? "anisotropic voxels switched on"
@@ -105,13 +106,19 @@ void GiScheduler::restartIrradiance() {
     p.refineNext = 0;
 }
 
+bool GiScheduler::keepsLastUpdate(const Changes& changes, const GiLightKey& light) {
+    return (changes.onlyLight || (changes.changedBoxesOnly && changes.onlyScene)) && light.bounces > 1 &&
+           light.voxelRays > 0;
+}
+
 GiScheduler::UpdateStart GiScheduler::startUpdate(const Changes& changes, const GiLightKey& light,
                                                   const GiBudget& budget) {
     UpdateStart u;
     GiProgress& p = state_.progress;
-    u.keepLastUpdate = changes.onlyLight && light.bounces > 1 && light.voxelRays > 0;
-    // A light dragged in the editor edits every frame: starting the spread update again at each
-    // edit would keep it from ever reaching the irradiance, so it runs on and another follows.
+    u.keepLastUpdate = keepsLastUpdate(changes, light);
+    // A light dragged in the editor, a node dragged or animated, edits every frame: starting the
+    // spread update again at each edit would keep it from ever reaching the irradiance, so it runs
+    // on and another follows.
     const bool updateRunning = p.bounce > 0 || (state_.light.voxelIrradiance && p.irradianceLeft > 0);
     u.runOn = u.keepLastUpdate && updateRunning && spreadsOverFrames(light, budget) &&
               light.voxelIrradiance == state_.light.voxelIrradiance;
@@ -162,7 +169,11 @@ bool GiScheduler::advanceBounce(VoxelRange range, bool converged) {
     p.bounceNext += range.count;
     if (p.bounceNext < state_.occupied) return false;
     p.bounceNext = 0;
-    const bool last = p.bounce >= state_.light.bounces || (state_.light.untilConverged && converged);
+    const bool settled = state_.light.untilConverged && converged;
+    if (settled) p.settledBounces = p.bounce;
+    const int ranOnLimit = p.settledBounces > 0 ? p.settledBounces : kFirstBounceEstimate;
+    const bool last = p.bounce >= state_.light.bounces || settled ||
+                      (state_.light.untilConverged && p.updateAgain && p.bounce >= ranOnLimit);
     p.bounce = last ? 0 : p.bounce + 1;
     return true;
 }

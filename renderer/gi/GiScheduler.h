@@ -57,7 +57,11 @@ struct GiProgress {
     std::uint32_t irradianceLeft = 0;  // entries still to trace since the last edit (0: all hold its light)
     int refineRound = 0;               // the refinement round under way (1..kConeSets − 1; kConeSets: done)
     std::uint32_t refineNext = 0;      // its next list entry
-    bool updateAgain = false;          // a light edit came while a spread update ran: one more follows it
+    bool updateAgain = false;          // an edit came while a spread update ran: one more follows it
+    // Every bounce: the bounces the last update that converged took (0 before one). An update that
+    // runs on through edits stops there: the light it bounces changes under it (a light dragged, a
+    // node animated), so its bounces never look converged, and the next update follows anyway.
+    int settledBounces = 0;
     bool operator==(const GiProgress&) const = default;
 };
 
@@ -115,6 +119,12 @@ public:
         // Only the scene's lights changed: with voxel rays, level 0 can keep the last update's
         // light while the bounces run (VoxelGi, keepLastUpdate).
         bool onlyLight = false;
+        // Only the lights and the geometry changed, no setting the voxels' light depends on.
+        bool onlyScene = false;
+        // Set by VoxelGi once it knows: the geometry edit voxelized only changed boxes
+        // (VoxelChangeTracker). With onlyScene, level 0 keeps the last update's light outside them
+        // as after a light edit, and a running update runs on.
+        bool changedBoxesOnly = false;
         std::string reason;
     };
     // `volumeReallocated` / `volumeMoved`: VoxelVolume::ensure / fitTo said so this frame.
@@ -133,18 +143,21 @@ public:
     // A new update after `changes` (inject set), with `light` and `budget`: what the injection
     // frame does. The state records `light` as what the voxels hold.
     struct UpdateStart {
-        // Level 0 and its mips keep the last update's light until the last bounce replaces them
-        // (only the light changed and the bounces gather with voxel rays, which read the direct
-        // volume's light where they end and only the mips' occupancy while they march).
+        // Level 0 keeps the last update's light until the last bounce replaces it (only the light
+        // changed, or the geometry in changed boxes, whose voxels get their direct light; the
+        // bounces gather with voxel rays, which read the direct volume's light where they end and
+        // only the mips' occupancy while they march).
         bool keepLastUpdate = false;
-        // A spread update is running and only the light changed: it runs on, the voxels not
-        // traced yet taking the new light, and one more update follows it (updateAgain).
+        // A spread update is running and only the light changed or nodes moved: it runs on, the
+        // voxels not traced yet taking the new light, and one more update follows it (updateAgain).
         bool runOn = false;
         int bouncesNow = 0;              // bounces 2..N traced whole in this frame (0: none or spread)
         bool prepareIrradiance = false;  // the irradiance starts again over the whole list
         bool clearIrradiance = false;    // ... and forgets the old values (after a voxelization)
     };
     UpdateStart startUpdate(const Changes& changes, const GiLightKey& light, const GiBudget& budget);
+    // UpdateStart::keepLastUpdate for `changes` and `light` (known before the update starts).
+    static bool keepsLastUpdate(const Changes& changes, const GiLightKey& light);
 
     // Voxels a frame of the update may trace with `budget` (0: all at once); voxels that replay
     // recorded ray hits take kReplayVoxelsPerFrameFactor times as many.

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "gi/VoxelRegions.h"
 #include "gl/ProgramVariants.h"
 #include "passes/LightSetup.h"
 #include "passes/Pass.h"
@@ -25,6 +26,9 @@ struct InjectOptions {
     // With writeDirect: false writes only the direct volume and level 0 keeps what it holds (the
     // last update's light, while a light edit's bounces run).
     bool writeLevel0 = true;
+    // With writeLevel0 false: level 0 is written all the same in these boxes (at most
+    // LIT_CHANGED_BOXES), whose voxels a voxelization of changed boxes left without light.
+    std::vector<VoxelBox> level0Boxes;
     ShadowKinds shadows;  // the shadow map kinds the light table uses (program variant)
 };
 

@@ -28,12 +28,22 @@ void IrradianceFilterPass::execute(const VoxelVolume& volume, const VoxelIrradia
 
 void IrradianceFilterPass::pruneShown(const VoxelVolume& volume, const VoxelIrradianceCache& cache) {
     if (!cache.matches(volume) || !cache.showingPrevious()) return;
+    prune(volume, cache.shownTexels());
+}
+
+void IrradianceFilterPass::pruneBoth(const VoxelVolume& volume, const VoxelIrradianceCache& cache) {
+    if (!cache.matches(volume)) return;
+    prune(volume, cache.shownTexels());
+    if (cache.showingPrevious()) prune(volume, cache.gatherTexels());
+}
+
+void IrradianceFilterPass::prune(const VoxelVolume& volume, const gl::Texture& texels) {
     if (!prune_)
         prune_ = gl::Program(shaderRoot_, "voxel irradiance prune", {{GL_COMPUTE_SHADER, "voxel_irradiance_prune.comp.glsl"}});
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     prune_.use();
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, cache.shownTexels().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32UI);
+    glBindImageTexture(LIT_IMG_VOXEL_DIRECT, texels.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32UI);
     const auto groups = static_cast<GLuint>((volume.resolution() + LIT_INJECT_GROUP_SIZE - 1) / LIT_INJECT_GROUP_SIZE);
     glDispatchCompute(groups, groups, groups);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -28,6 +28,9 @@ public:
     // After a voxelization: empties the shown texels (VoxelIrradianceCache::showingPrevious) of
     // voxels the new voxelization left empty or turned (voxel_irradiance_prune.comp.glsl).
     void pruneShown(const VoxelVolume& volume, const VoxelIrradianceCache& cache);
+    // The same for both sets of texels, shown and written (a voxelization of changed boxes while
+    // an update runs on and goes on writing its set).
+    void pruneBoth(const VoxelVolume& volume, const VoxelIrradianceCache& cache);
 
     std::vector<gl::Program*> programs() override {
         std::vector<gl::Program*> built;
@@ -37,6 +40,8 @@ public:
     }
 
 private:
+    void prune(const VoxelVolume& volume, const gl::Texture& texels);
+
     std::filesystem::path shaderRoot_;
     gl::Program program_;  // one program for both radiance formats, built on first use
     gl::Program prune_;    // built by the first pruneShown

@@ -8,7 +8,7 @@
 
 namespace lit {
 
-static_assert(VoxelChangeTracker::kMaxBoxes == LIT_RAY_CHANGED_BOXES);
+static_assert(VoxelChangeTracker::kMaxBoxes == LIT_CHANGED_BOXES);
 
 bool RayHitCache::ensure(int rays, std::uint32_t entries) {
     reallocated_ = false;
@@ -60,14 +60,14 @@ void RayHitCache::bind(const gl::Program& program, ConeFeatures features, RayHit
     glProgramUniform1i(program.id(), program.location("uRayHits"), !cached ? 0 : (hits == RayHits::Record ? 1 : 2));
     if (!cached) return;
     glProgramUniform1ui(program.id(), program.location("uRayEpoch"), epoch_);
-    std::array<glm::ivec4, LIT_RAY_CHANGED_BOXES> lo{}, hi{};
+    std::array<glm::ivec4, LIT_CHANGED_BOXES> lo{}, hi{};
     for (std::size_t i = 0; i < changed_.size(); ++i) {
         lo[i] = glm::ivec4(changed_[i].box.min, static_cast<int>(changed_[i].epoch));
         hi[i] = glm::ivec4(changed_[i].box.max, 0);
     }
     glProgramUniform1i(program.id(), program.location("uChangedBoxCount"), static_cast<GLint>(changed_.size()));
-    glProgramUniform4iv(program.id(), program.location("uChangedBoxMin"), LIT_RAY_CHANGED_BOXES, &lo[0].x);
-    glProgramUniform4iv(program.id(), program.location("uChangedBoxMax"), LIT_RAY_CHANGED_BOXES, &hi[0].x);
+    glProgramUniform4iv(program.id(), program.location("uChangedBoxMin"), LIT_CHANGED_BOXES, &lo[0].x);
+    glProgramUniform4iv(program.id(), program.location("uChangedBoxMax"), LIT_CHANGED_BOXES, &hi[0].x);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_VOXEL_RAY_HITS);
     epochs_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_VOXEL_RAY_EPOCHS);

@@ -65,7 +65,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     const VoxelKey voxels{frame.scene.geometryRevision, frame.scene.materialRevision, &frame.scene};
     const GiLightKey light = GiLightKey::of(settings);
     const ConeFeatures features = ConeFeatures::of(settings);
-    const GiScheduler::Changes changes = scheduler_.changes(voxels, light, reallocated, moved, frame.shadowsDirty);
+    GiScheduler::Changes changes = scheduler_.changes(voxels, light, reallocated, moved, frame.shadowsDirty);
     // Switched off: the directional volumes' memory goes back (0.6-1.3 GiB at 512³).
     if (!light.anisotropic && volume_.directional(0)) {
         volume_.releaseDirectionalVolumes();
@@ -77,21 +77,25 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     // or was made again) or belong to another scene.
     const bool keepShownLight = !reallocated && !moved && scheduler_.state().voxelsValid &&
                                 scheduler_.state().voxels.scene == &frame.scene;
-    // Every bounce after a geometry edit, spread over frames: the bounces start from the last
-    // update's light (BouncePass::keepIndirect; the old list is read before the voxelization
-    // replaces it).
-    const GiState& before = scheduler_.state();
-    bool warmStart = changes.voxelize && keepShownLight && light.untilConverged && before.light.bounces > 1 &&
-                     before.listComplete && volume_.direct() && scheduler_.spreadsOverFrames(light, budget);
-    if (warmStart) {
-        Profiler::Scope scope(profiler_, "bounces");
-        bounce_.keepIndirect(volume_);
-    }
     std::vector<ItemPose> items;
     std::optional<std::vector<VoxelBox>> boxes;
     if (changes.voxelize) {
         items = itemPoses(frame.scene, frame.gpuScene);
         boxes = changedBoxes(items, voxels, settings, reallocated, moved);
+        changes.changedBoxesOnly = boxes.has_value();
+    }
+    // Every bounce after a geometry edit, spread over frames: the bounces start from the last
+    // update's light (BouncePass::keepIndirect; the old list is read before the voxelization
+    // replaces it), unless level 0 keeps that light (changed boxes only: keepLastUpdate).
+    const GiState& before = scheduler_.state();
+    bool warmStart = changes.voxelize && !GiScheduler::keepsLastUpdate(changes, light) && keepShownLight &&
+                     light.untilConverged && before.light.bounces > 1 && before.listComplete && volume_.direct() &&
+                     scheduler_.spreadsOverFrames(light, budget);
+    if (warmStart) {
+        Profiler::Scope scope(profiler_, "bounces");
+        bounce_.keepIndirect(volume_);
+    }
+    if (changes.voxelize) {
         {
             Profiler::Scope scope(profiler_, "voxelize");
             if (boxes) {
@@ -143,18 +147,25 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             inject_.execute(volume_, {.overList = overList,
                                       .writeDirect = light.bounces > 1,
                                       .writeLevel0 = !start.keepLastUpdate,
+                                      .level0Boxes = boxes ? *boxes : std::vector<VoxelBox>{},
                                       .shadows = frame.shadows});
         }
-        if (!start.runOn) warmStart_ = warmStart;
+        // Every bounce starts from level 0: the warm-started light, or after a voxelization of
+        // changed boxes the last update's light it kept outside them (their voxels hold direct
+        // light), which leaves less for the bounces to do than the direct light alone. (A fixed
+        // bounce count starts from the direct light: its second bounce is one bounce.)
+        if (!start.runOn) warmStart_ = warmStart || (boxes && start.keepLastUpdate && light.untilConverged);
         if (warmStart) bounce_.addKeptIndirect(volume_);
         // With the last update's light kept in level 0 its mips stand too (the bounces' rays read
         // only their occupancy): the direct light's own mip build is saved (docs/PERFORMANCE.md,
-        // "GI update").
-        if (!start.keepLastUpdate) {
+        // "GI update"). A voxelization of changed boxes cleared them.
+        if (!start.keepLastUpdate || boxes) {
             Profiler::Scope scope(profiler_, "mipmap");
             mipmap_.execute(volume_, light.anisotropic, overList);
         }
-        convergence_ = {};
+        // An update that runs on keeps measuring its bounces' convergence (reset at every edit of a
+        // drag or an animation, it never saw two bounces in a row and ran to the bounce limit).
+        if (!start.runOn) convergence_ = {};
         pendingBounces_ = light.untilConverged ? 0 : light.bounces;
         if (start.bouncesNow > 0) {
             Profiler::Scope scope(profiler_, "bounces");
@@ -185,6 +196,11 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             irradianceCache_.prepare(volume_, start.clearIrradiance,
                                      keepShownLight && scheduler_.spreadsOverFrames(light, budget));
             if (changes.voxelize) filter_.pruneShown(volume_, irradianceCache_);
+        } else if (boxes && irradianceCache_.matches(volume_)) {
+            // The update runs on over changed boxes: their voxels' traced irradiance belongs to
+            // surfaces that moved, and neither set of texels may keep light where a surface is gone.
+            irradianceCache_.forget(*boxes);
+            filter_.pruneBoth(volume_, irradianceCache_);
         }
         report.injected = true;
         report.lightChanged = true;
@@ -247,6 +263,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             irradiance_.trace(volume_, irradianceCache_, rayHitCache_, {features, overList, {}, 0, hits});
             listTraced(hits);
             scheduler_.irradianceDone();
+            report.updateCompleted = true;
         } else {
             const std::uint32_t perFrame = scheduler_.voxelsPerFrame(budget, light.voxelRays);
             // The first share of a pass over the whole list (from where the round robin stands).
@@ -262,11 +279,14 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             // reached yet): the frame after it starts the history afresh.
             if (scheduler_.state().progress.irradianceLeft == 0) {
                 report.lightChanged = true;
+                report.updateCompleted = true;
                 listTraced(hits);
+                // An edit came while it ran (a light or node dragged, an animation playing): the
+                // next update starts now, and the pixels gather this one's light meanwhile (below).
                 if (scheduler_.restartIfAsked()) convergence_ = {};
             }
         }
-        filterAll = scheduler_.state().progress.irradianceLeft == 0;
+        filterAll = report.updateCompleted;
     }
     // The refinement once the update is done, in the same frame when the budget allows (a still
     // converges in its one frame). Round k traces every voxel's set + k once over the list; each
@@ -293,7 +313,8 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         }
     }
     // Every voxel holds the update's light: the pixels gather it from now on.
-    if (scheduler_.state().progress.irradianceLeft == 0 && scheduler_.state().progress.bounce == 0)
+    if (report.updateCompleted ||
+        (scheduler_.state().progress.irradianceLeft == 0 && scheduler_.state().progress.bounce == 0))
         irradianceCache_.showWritten();
 }
 

@@ -48,6 +48,9 @@ struct GiFrameReport {
     std::string updateStage;           // "bounce 2".."bounce N", "irradiance", "refining k/15", ""
     std::uint32_t refinedVoxels = 0;   // voxels the refinement traced this frame
     bool refining = false;             // refinement rounds are still to run
+    // An update's last voxel was traced this frame: the pixels gather its light from now on (also
+    // when another update follows at once: GiScheduler::restartIfAsked).
+    bool updateCompleted = false;
     // The bounces the voxels' light holds (with every bounce: those it took to converge, or the
     // count expected while the update runs).
     int bounces = 0;

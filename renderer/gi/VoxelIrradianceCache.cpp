@@ -50,6 +50,17 @@ void VoxelIrradianceCache::prepare(const VoxelVolume& volume, bool clear, bool k
     clearGatherTexels(gatherTexels_[written_]);
 }
 
+void VoxelIrradianceCache::forget(const std::vector<VoxelBox>& boxes) const {
+    if (!traced_) return;
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (const VoxelBox& box : boxes) {
+        const glm::ivec3 size = box.max - box.min;
+        for (int side = 0; side < 2; ++side)  // both sides, stacked in z (otherSideTexel, voxel.glsl)
+            glClearTexSubImage(traced_.id(), 0, box.min.x, box.min.y, box.min.z + side * resolution_, size.x, size.y,
+                               size.z, GL_RGBA, GL_FLOAT, zero);
+    }
+}
+
 bool VoxelIrradianceCache::matches(const VoxelVolume& volume) const {
     return volume.resolution() > 0 && resolution_ == volume.resolution() && rgba8_ == volume.radianceRgba8() && traced_;
 }

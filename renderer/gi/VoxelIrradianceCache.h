@@ -10,6 +10,9 @@
 
 #include <cstddef>
 
+#include <vector>
+
+#include "gi/VoxelRegions.h"
 #include "gl/Objects.h"
 
 namespace lit {
@@ -32,6 +35,9 @@ public:
     void showWritten() { shown_ = written_; }
     // The pixels gather the last complete update's texels, not those being written.
     bool showingPrevious() const { return shown_ != written_; }
+    // The voxels of `boxes` were voxelized again while an update runs on: their traced values
+    // are forgotten (alpha 0, which the filter skips), the rest kept.
+    void forget(const std::vector<VoxelBox>& boxes) const;
     // Whether the volumes match `volume` (prepare ran for its resolution and format).
     bool matches(const VoxelVolume& volume) const;
 

@@ -62,7 +62,7 @@ struct ItemPose {
 
 class VoxelChangeTracker {
 public:
-    static constexpr std::size_t kMaxBoxes = 8;  // = LIT_RAY_CHANGED_BOXES
+    static constexpr std::size_t kMaxBoxes = 8;  // = LIT_CHANGED_BOXES
     // A partial voxelization pays only while its boxes are a small share of the volume; beyond
     // this share the whole volume is voxelized.
     static constexpr double kMaxShare = 0.25;

@@ -231,6 +231,14 @@ void VoxelVolume::clearRadianceLevel0() const {
     if (radiance_) glClearTexImage(radiance_.id(), 0, GL_RGBA, GL_FLOAT, transparent);
 }
 
+void VoxelVolume::clearRadianceLevel0(const VoxelBox& box) const {
+    if (!radiance_ || box.empty()) return;
+    const float transparent[4] = {0, 0, 0, 0};
+    const glm::ivec3 size = box.max - box.min;
+    glClearTexSubImage(radiance_.id(), 0, box.min.x, box.min.y, box.min.z, size.x, size.y, size.z, GL_RGBA, GL_FLOAT,
+                       transparent);
+}
+
 void VoxelVolume::clearRadianceMips() {
     const float transparent[4] = {0, 0, 0, 0};
     if (radiance_)

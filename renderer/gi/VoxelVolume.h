@@ -75,7 +75,9 @@ public:
     // Grows the list to hold at least `count` voxels (after an overflow; the next voxelization fills it).
     void growOccupiedList(std::uint32_t count);
     // Zeroes level 0 of the radiance volume: injection over the list writes occupied voxels only.
+    // With a box: only its voxels (a voxelization of changed boxes).
     void clearRadianceLevel0() const;
+    void clearRadianceLevel0(const VoxelBox& box) const;
     // Zeroes levels 1.. of the radiance volume (before voxelization: the mip chain is built over
     // the occupied parents only, so the parents of voxels that are empty now must read as empty),
     // marks the directional chains stale (MipmapPass zeroes them before it next builds them over

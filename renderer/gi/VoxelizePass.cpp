@@ -80,8 +80,10 @@ void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVo
 void VoxelizePass::executeBoxes(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume,
                                 const std::vector<VoxelBox>& boxes, const std::vector<ItemPose>& items,
                                 DrawCounters& counters) {
-    for (const VoxelBox& box : boxes) volume.clearMaterials(box);
-    volume.clearRadianceLevel0();
+    for (const VoxelBox& box : boxes) {
+        volume.clearMaterials(box);
+        volume.clearRadianceLevel0(box);  // outside the boxes level 0 keeps its light
+    }
     volume.clearRadianceMips();
     if (!begin(gpuScene, volume)) return;
     // Each item's voxels, padded as the tracker pads its boxes.

@@ -39,7 +39,8 @@ public:
     // material voxels and draws the items whose boxes reach them, writing inside the boxes only.
     // `items`: itemPoses(scene, gpuScene).
     // The occupied-voxel list is kept: voxels new to it are appended (VoxelVolume::listedVoxels).
-    // Level 0 and the mips of the radiance volume are cleared as by execute(). Same GL state after.
+    // Level 0 of the radiance volume is cleared in the boxes only (outside them it keeps its light,
+    // which a running update goes on reading), its mips wholly as by execute(). Same GL state after.
     void executeBoxes(const Scene& scene, const GpuScene& gpuScene, VoxelVolume& volume,
                       const std::vector<VoxelBox>& boxes, const std::vector<ItemPose>& items,
                       DrawCounters& counters);

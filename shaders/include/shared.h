@@ -137,11 +137,12 @@ using mat4 = glm::mat4;
 // list entry, side (front, back) and ray, recorded by a trace and replayed while the voxels stay.
 #define LIT_SSBO_VOXEL_RAY_HITS 6
 // The ray-hit cache's epochs (RayHitCache): per list entry, the epoch its hits were recorded in;
-// a hit recorded before a changed box's epoch whose ray crosses that box is marched again. At most
-// LIT_RAY_CHANGED_BOXES boxes (uniforms uChangedBoxMin/Max). The mip parents' slot: never bound
-// with the traces.
+// a hit recorded before a changed box's epoch whose ray crosses that box is marched again
+// (uniforms uChangedBoxMin/Max). The mip parents' slot: never bound with the traces.
 #define LIT_SSBO_VOXEL_RAY_EPOCHS 5
-#define LIT_RAY_CHANGED_BOXES 8
+// The most boxes a voxelization of changed boxes passes to the shaders (VoxelChangeTracker::kMaxBoxes):
+// the ray-hit cache's changed boxes, the injection's boxes of new level-0 light.
+#define LIT_CHANGED_BOXES 8
 // How much a bounce changed the voxels' light (bounce.comp.glsl with uMeasureChange, VoxelGi when
 // GiSettings::bounces is every bounce): LIT_BOUNCE_CHANGE_BINS uints summing the luminance of the
 // bounce's bounced light (radiance − direct), then as many summing its change from the bounce

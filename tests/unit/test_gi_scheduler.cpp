@@ -171,6 +171,47 @@ TEST(GiScheduler, ALightDragLetsTheRunningUpdateFinishAndOneMoreFollow) {
     EXPECT_FALSE(s.state().progress.updateAgain);
 }
 
+// A node moved (or animated) while a spread update runs: with only changed boxes voxelized the
+// update runs on as after a light drag, level 0 keeping its light and the ray hits their records;
+// a voxelization of the whole volume starts the update again and forgets the hits.
+TEST(GiScheduler, AMoveInChangedBoxesLetsTheRunningUpdateRunOn) {
+    GiScheduler s = injected(4000);
+    const GiLightKey light = cachedTwoBounces();
+    s.rayHits(light.voxelRays, true, true);
+    s.listTraced(RayHits::Record);
+    s.irradianceDone();
+    const GiBudget budget{500, 0};
+    GiScheduler::Changes edit = s.changes(s.state().voxels, light, false, false, true);
+    s.startUpdate(edit, light, budget);
+    s.advanceBounce(s.bounceShare(s.voxelsPerFrame(budget, light.voxelRays)));
+    ASSERT_EQ(s.state().progress.bounceNext, 2000u);
+
+    VoxelKey moved = s.state().voxels;
+    ++moved.geometry;
+    GiScheduler::Changes move = s.changes(moved, light, false, false, true);
+    ASSERT_TRUE(move.voxelize);
+    EXPECT_TRUE(move.onlyScene);
+    move.changedBoxesOnly = true;
+    s.voxelized(moved, 4100, true, true);
+    EXPECT_TRUE(s.replaysRayHits(light.voxelRays)) << "the hits stay: the shaders test the changed boxes";
+    GiScheduler::UpdateStart start = s.startUpdate(move, light, budget);
+    EXPECT_TRUE(start.keepLastUpdate);
+    EXPECT_TRUE(start.runOn);
+    EXPECT_TRUE(s.state().progress.updateAgain);
+    EXPECT_EQ(s.state().progress.bounceNext, 2000u) << "the bounce went on where it stood";
+    EXPECT_EQ(s.bounceShare(s.voxelsPerFrame(budget, light.voxelRays)), (VoxelRange{2000, 2000}));
+    EXPECT_EQ(s.bounceShare(100000), (VoxelRange{2000, 2100})) << "the appended entries are in the pass";
+
+    ++moved.geometry;
+    GiScheduler::Changes whole = s.changes(moved, light, false, false, true);
+    s.voxelized(moved, 4000, true);
+    EXPECT_FALSE(s.replaysRayHits(light.voxelRays));
+    start = s.startUpdate(whole, light, budget);
+    EXPECT_FALSE(start.keepLastUpdate);
+    EXPECT_FALSE(start.runOn);
+    EXPECT_EQ(s.state().progress.bounceNext, 0u) << "started again";
+}
+
 // The refinement: 15 rounds over the list with the set offsets 1..15, in the budget's shares; a
 // budget of 0 waits; after the last round nothing is left.
 TEST(GiScheduler, RefinementTracesTheOtherConeSetsRoundByRound) {

@@ -82,8 +82,10 @@ void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& 
     // A scene with node animations moves as they play, a frame (1/30 s) at a time; another scene
     // moves its smallest mesh node.
     const bool animated = summarizeNodeAnimations(scene).nodes > 0;
+    const std::vector<Node> restNodes = scene.nodes;
     double seconds = 0.0;
-    const auto move = [&](bool changesOnly, float by) {
+    // One move and its frame (the edit's GI passes run in it), with or without changed boxes.
+    const auto moveAndRender = [&](bool changesOnly, float by) {
         RenderSettings s = settings;
         s.gi.voxelizeChangesOnly = changesOnly;
         if (animated) {
@@ -94,9 +96,12 @@ void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& 
             scene.updateWorldTransforms();
             ++scene.geometryRevision;
         }
-        MoveCost cost;
         renderer.render(scene, camera, s, budget);
         renderer.profiler().flush();
+    };
+    const auto move = [&](bool changesOnly, float by) {
+        moveAndRender(changesOnly, by);
+        MoveCost cost;
         cost.boxes = renderer.stats().voxelizedBoxes;
         cost.editFrameMs = giMs(renderer);
         cost.voxelizeMs = renderer.profiler().gpuMs("voxelize");
@@ -138,6 +143,34 @@ void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& 
     std::sort(totalRatios.begin(), totalRatios.end());
     std::printf("gi-move median ratios (changed boxes / whole volume): edit frame %.3f, to the final light %.3f\n",
                 frameRatios[frameRatios.size() / 2], totalRatios[totalRatios.size() / 2]);
+
+    // Playback: a move every frame without waiting for the light, as the editor plays an animation
+    // (the node there and back). Counted: the updates completed while it plays (each brings the
+    // pixels' GI up to the poses it was traced at; with none, the GI stays at the pose before).
+    constexpr int kPlaybackFrames = 30;
+    const auto playback = [&](bool changesOnly) {
+        int completed = 0, firstCompleted = 0;
+        double ms = 0.0, worstMs = 0.0;
+        for (int f = 0; f < kPlaybackFrames; ++f) {
+            moveAndRender(changesOnly, f < kPlaybackFrames / 2 ? step : -step);
+            if (renderer.stats().giUpdateCompleted && completed++ == 0) firstCompleted = f + 1;
+            ms += giMs(renderer);
+            worstMs = std::max(worstMs, giMs(renderer));
+        }
+        MoveCost rest;
+        settle(rest);
+        std::printf(
+            "gi-move playback, %d frames, %s: %d updates completed while playing (the first in frame %d), GI passes "
+            "%.1f ms a frame (at most %.1f)\n",
+            kPlaybackFrames, changesOnly ? "changed boxes" : "whole volume", completed, firstCompleted,
+            ms / kPlaybackFrames, worstMs);
+    };
+    playback(true);
+    playback(false);
+
+    scene.nodes = restNodes;
+    scene.updateWorldTransforms();
+    ++scene.geometryRevision;
 }
 
 }  // namespace lit::cli

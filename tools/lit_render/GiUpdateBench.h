@@ -11,6 +11,8 @@
 // (GiSettings::voxelizeChangesOnly) against the same move with the whole volume voxelized,
 // interleaved. Each move's update is let finish (over frames with --gi-update-per-frame) before
 // the next: printed are the edit frame's GI passes and those of every frame to the final light.
+// Then playback: 30 moves in a row, one a frame, in each mode: how many frames' pixels gather the
+// GI of their own poses, and the GI passes a frame.
 
 #include "gi/GiBudget.h"
 
@@ -27,8 +29,8 @@ namespace lit::cli {
 // state they left; `scene`'s first light is nudged and restored in turn.
 void benchGiUpdates(int rounds, Scene& scene, const CameraView& camera, Renderer& renderer,
                     const RenderSettings& settings, const GiBudget& budget);
-// One line per round and the median ratios; a moved node moves by a tenth of its size along x and
-// back in turn, so the scene ends as it began.
+// One line per round, the median ratios and the two playbacks; a moved node moves by a tenth of
+// its size along x and back in turn. The scene's nodes end as they began.
 void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& renderer,
                   const RenderSettings& settings, const GiBudget& budget);
 
