@@ -32,6 +32,15 @@ GiScheduler injected(std::uint32_t occupied, const GiLightKey& light = cachedTwo
     return s;
 }
 
+// The same, its update done and the voxel rays' hits recorded: a light or node edit replays them.
+GiScheduler settledWithRayHits(std::uint32_t occupied) {
+    GiScheduler s = injected(occupied);
+    s.rayHits(cachedTwoBounces().voxelRays, true, true);
+    s.listTraced(RayHits::Record);
+    s.irradianceDone();
+    return s;
+}
+
 TEST(GiScheduler, TheFirstFrameVoxelizesAndInjectsEverythingAtOnce) {
     GiScheduler s;
     const GiLightKey light = cachedTwoBounces();
@@ -145,11 +154,8 @@ TEST(GiScheduler, RayHitsAreRecordedThenReplayed) {
 // the new light) and one more follows it, instead of starting again at every edit and never
 // reaching the irradiance.
 TEST(GiScheduler, ALightDragLetsTheRunningUpdateFinishAndOneMoreFollow) {
-    GiScheduler s = injected(4000);
+    GiScheduler s = settledWithRayHits(4000);
     const GiLightKey light = cachedTwoBounces();
-    s.rayHits(light.voxelRays, true, true);
-    s.listTraced(RayHits::Record);
-    s.irradianceDone();
     const GiBudget budget{500, 0};  // replayed: 2000 a frame, two frames a pass
     GiScheduler::Changes edit = s.changes(s.state().voxels, light, false, false, true);
     GiScheduler::UpdateStart start = s.startUpdate(edit, light, budget);
@@ -175,11 +181,8 @@ TEST(GiScheduler, ALightDragLetsTheRunningUpdateFinishAndOneMoreFollow) {
 // update runs on as after a light drag, level 0 keeping its light and the ray hits their records;
 // a voxelization of the whole volume starts the update again and forgets the hits.
 TEST(GiScheduler, AMoveInChangedBoxesLetsTheRunningUpdateRunOn) {
-    GiScheduler s = injected(4000);
+    GiScheduler s = settledWithRayHits(4000);
     const GiLightKey light = cachedTwoBounces();
-    s.rayHits(light.voxelRays, true, true);
-    s.listTraced(RayHits::Record);
-    s.irradianceDone();
     const GiBudget budget{500, 0};
     GiScheduler::Changes edit = s.changes(s.state().voxels, light, false, false, true);
     s.startUpdate(edit, light, budget);
