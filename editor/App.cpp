@@ -226,10 +226,14 @@ int App::run() {
             .shadersReloaded = std::exchange(shadersReloaded_, false),
         };
         const RedrawReason reason = redraw_.decide(inputs, pending, viewport_.redrawOnDemand);
-        const bool render = reason != RedrawReason::None;
+        const FrameWork work = redraw_.work(reason, now, lastRenderSeconds_);
+        const bool render = work == FrameWork::Render;
         if (render) {
             renderer_->setOverlay(inputs.overlay);
             renderer_->render(doc_.scene, view, inputs.settings, budget);
+        } else if (work == FrameWork::GiOnly) {
+            renderer_->advanceGi(doc_.scene, view, inputs.settings, budget);
+            redraw_.advancedGi(renderer_->stats().giUpdateCompleted);
         } else {
             // The last frame's GPU timings arrive without a new frame to collect them.
             renderer_->profiler().poll();
@@ -247,8 +251,9 @@ int App::run() {
         };
         if (options_.frameLog) {
             frameLog_.add({now, renderScale, renderSize, cameraMoved_});
-            frameLog_.last().refinedVoxels = render ? renderer_->stats().refinedVoxels : 0;
+            frameLog_.last().refinedVoxels = work != FrameWork::Show ? renderer_->stats().refinedVoxels : 0;
             frameLog_.last().rendered = render;
+            frameLog_.last().giOnly = work == FrameWork::GiOnly;
             frameLog_.last().playhead = playback_.time;
             frameLog_.last().playing = playback_.playing;
             frameLog_.last().camera = camera_.position;
@@ -322,7 +327,8 @@ int App::shownShadowLight() const {
 GiBudget App::giBudget(double now) const {
     GiBudget budget{viewport_.giUpdateVoxelsPerFrame > 0 ? static_cast<std::uint32_t>(viewport_.giUpdateVoxelsPerFrame)
                                                          : GiBudget::kAll,
-                    static_cast<std::uint32_t>(std::max(viewport_.giRefineVoxelsPerFrame, 0))};
+                    static_cast<std::uint32_t>(std::max(viewport_.giRefineVoxelsPerFrame, 0)),
+                    std::max(static_cast<double>(viewport_.giMillisecondsPerFrame), 0.0)};
     // The cached mode's refinement (more cone sets per voxel after an update) improves light
     // that is already right and costs the same at any render scale: while the camera moves or a
     // value is dragged, and for the interactive scale's grace period after, it waits, so the

@@ -164,8 +164,42 @@ void Document::restore(const EditableState& state) {
     if (selectedKey >= static_cast<int>(cameraPath.keys().size())) selectedKey = -1;
 }
 
+int Document::primitiveCount(int node) const {
+    if (node < 0 || node >= static_cast<int>(scene.nodes.size())) return 0;
+    const int mesh = scene.nodes[static_cast<std::size_t>(node)].mesh;
+    if (mesh < 0 || mesh >= static_cast<int>(scene.meshes.size())) return 0;
+    return static_cast<int>(scene.meshes[static_cast<std::size_t>(mesh)].primitives.size());
+}
+
+std::string Document::primitiveLabel(int node, int primitive) const {
+    if (primitive < 0 || primitive >= primitiveCount(node)) return {};
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(scene.nodes[static_cast<std::size_t>(node)].mesh)];
+    const int m = mesh.primitives[static_cast<std::size_t>(primitive)].material;
+    const std::string name = m >= 0 && m < static_cast<int>(scene.materials.size())
+                                 ? scene.materials[static_cast<std::size_t>(m)].name
+                                 : std::string("default material");
+    return "Primitive " + std::to_string(primitive) + ": " + name;
+}
+
+void Document::selectPrimitive(int node, int primitive) {
+    if (primitive < 0 || primitive >= primitiveCount(node)) {
+        select(-1);
+        return;
+    }
+    select(node);
+    selectedPrimitive = primitive;
+    primitivePicked = true;
+}
+
+void Document::clickPrimitive(int node, int primitive) {
+    const bool part = node == selectedNode && alsoSelected.empty() && primitiveCount(node) > 1;
+    selectPrimitive(node, primitive);
+    primitivePicked = primitivePicked && part;
+}
+
 void Document::select(int node, bool additive) {
     selectedPrimitive = 0;
+    primitivePicked = false;
     if (node < 0 || node >= static_cast<int>(scene.nodes.size())) {
         if (!additive) {
             selectedNode = -1;

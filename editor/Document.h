@@ -77,10 +77,25 @@ public:
     // Which primitive of the active node's mesh the inspector's material section (and the
     // "material.*" properties) edit.
     int selectedPrimitive = 0;
+    // The selection is that one primitive of the active node, not the whole node: a click on a
+    // part of the active node's mesh, a primitive's row in the hierarchy, the inspector's choice.
+    // The outline then shows the primitive alone (a part of a one-node scene such as Sponza).
+    bool primitivePicked = false;
 
     // Selects `node` (-1: nothing). additive (Shift): toggles `node` in the selection and makes
-    // it the active node when it is added. Always resets selectedPrimitive.
+    // it the active node when it is added. Always resets selectedPrimitive and primitivePicked.
     void select(int node, bool additive = false);
+    // Selects primitive `primitive` of `node`'s mesh alone (nothing when either is out of range).
+    void selectPrimitive(int node, int primitive);
+    // A click (no Shift) on primitive `primitive` of `node` in the viewport: the first click on a
+    // node selects it whole, with the part clicked as the inspector's primitive; a click on the
+    // active node picks the part under the cursor when its mesh has several (as Unity's second
+    // click selects a child), so a one-node scene's parts can be picked.
+    void clickPrimitive(int node, int primitive);
+    // "Primitive 3: <material name>" for the inspector and the hierarchy.
+    std::string primitiveLabel(int node, int primitive) const;
+    // The primitives of `node`'s mesh; 0 for a node without one or out of range.
+    int primitiveCount(int node) const;
     // The active node first, then the others; empty when nothing is selected.
     std::vector<int> selection() const;
     bool isSelected(int node) const;

@@ -74,6 +74,10 @@ struct ViewportSettings {
     // image as lit-render's still.
     int giUpdateVoxelsPerFrame = 16384;
     int giRefineVoxelsPerFrame = 8192;
+    // GPU time the spread GI work (the update's shares, the refinement) may take per frame, ms;
+    // the two counts above are then the most a frame traces, and the GI paces itself by what the
+    // work cost in the frames before (gi/GiPacer.h). 0: the counts alone.
+    float giMillisecondsPerFrame = 25.0f;
 };
 
 }  // namespace lit::editor

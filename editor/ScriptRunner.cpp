@@ -222,6 +222,7 @@ std::string ScriptRunner::primitive(const ScriptCommand& command) {
     if (index < 0 || index >= count)
         return "primitive: the selected node has " + std::to_string(count) + " primitives, not " + command.args[0];
     target_.doc.selectedPrimitive = index;
+    target_.doc.primitivePicked = true;
     return "";
 }
 

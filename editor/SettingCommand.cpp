@@ -54,6 +54,13 @@ std::optional<std::string> applyEditorSetting(ViewportSettings& viewport, std::s
         viewport.interactiveFpsTarget = *fps;
         return "";
     }
+    if (name == "editor.giMillisecondsPerFrame") {
+        const std::optional<float> ms = parseNumber<float>(std::string(value));
+        if (!ms || !(*ms >= 0.0f))
+            return "setting " + name + ": expected milliseconds from 0 (got '" + std::string(value) + "')";
+        viewport.giMillisecondsPerFrame = *ms;
+        return "";
+    }
     if (name == "editor.redrawOnDemand") {
         if (value != "true" && value != "false")
             return "setting " + name + ": expected true or false (got '" + std::string(value) + "')";

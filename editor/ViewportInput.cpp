@@ -221,9 +221,13 @@ std::string ViewportInput::pickAt(glm::vec2 windowPixel) {
         if (!coneSurface_) log_.info("cone directions: no surface under the cursor");
         return "";
     }
-    const int node = renderer_.pickNode(pixel);
+    const std::optional<PickedPrimitive> picked = renderer_.pickPrimitive(pixel);
     // Shift+click adds to (or takes from) the selection; a click on nothing with Shift keeps it.
-    doc_.select(node, ImGui::GetIO().KeyShift);
+    if (ImGui::GetIO().KeyShift || !picked) {
+        doc_.select(picked ? picked->node : -1, ImGui::GetIO().KeyShift);
+        return "";
+    }
+    doc_.clickPrimitive(picked->node, picked->primitive);
     return "";
 }
 

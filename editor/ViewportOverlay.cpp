@@ -72,6 +72,8 @@ bool subtreeHasMesh(const Scene& scene, int node) {
 // the other selected nodes with theirs in darker orange.
 void addSelectionOutline(const Document& doc, ViewportOverlay& overlay) {
     appendSubtree(doc.scene, doc.selectedNode, overlay.activeOutline);
+    if (doc.primitivePicked && doc.selectedNode >= 0)
+        overlay.activePrimitive = PickedPrimitive{doc.selectedNode, doc.selectedPrimitive};
     for (const int node : doc.selection())
         if (node != doc.selectedNode) appendSubtree(doc.scene, node, overlay.selectedOutline);
 }

@@ -90,7 +90,16 @@ RedrawReason ViewportRedraw::decide(const FrameInputs& inputs, const PendingWork
     return RedrawReason::None;
 }
 
+FrameWork ViewportRedraw::work(RedrawReason reason, double now, double renderSeconds) const {
+    if (reason == RedrawReason::None) return FrameWork::Show;
+    if (reason != RedrawReason::GiUpdate && reason != RedrawReason::GiRefine) return FrameWork::Render;
+    if (giLightChanged_ || now - lastRenderAt_ >= kGiImageIntervalRenders * std::max(renderSeconds, 0.0))
+        return FrameWork::Render;
+    return FrameWork::GiOnly;
+}
+
 void ViewportRedraw::rendered(FrameInputs inputs, RedrawReason reason, double now) {
+    giLightChanged_ = false;
     const RenderSettings& settings = inputs.settings;
     const bool temporal = settings.indirect.temporalAccumulation && settings.gi.enabled;
     const bool exposure = settings.output.autoExposure;

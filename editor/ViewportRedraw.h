@@ -11,6 +11,15 @@
 // few more settle what accumulates over frames: temporal accumulation until its history is full
 // (IndirectSettings::temporalMaxFrames frames) and auto exposure until it has adapted (to 1 % of
 // the step, a time that follows from OutputSettings::autoExposureSpeed).
+//
+// A frame that would render only for the GI work in flight (GiUpdate, GiRefine) advances the GI
+// alone (Renderer::advanceGi) and shows the last image again, unless the image is due: an update
+// completed since the last render (the light shown changed), or the time since the last render
+// reached kGiImageIntervalRenders renders' time. A render at 1280×720 costs 250-350 ms on
+// llvmpipe while the GI's share of a frame is 25 ms (ViewportSettings::giMillisecondsPerFrame):
+// rendering every frame made the refinement's frames 320 ms each; now the image takes at most a
+// quarter of the time and the UI answers in the frames between. On a GPU, where a render costs
+// a few ms, every frame renders.
 // Window-free (lit_editor_core): tests/editor/test_viewport_redraw.cpp.
 
 #include <cstdint>
@@ -43,6 +52,13 @@ struct PendingWork {
     bool playing = false;     // camera path playback
     bool screenshot = false;  // a viewport screenshot is taken this frame (a clean render)
     bool shadersReloaded = false;
+};
+
+// What a frame does with the 3D image.
+enum class FrameWork : std::uint8_t {
+    Show,    // shows the last image again
+    GiOnly,  // advances the GI (Renderer::advanceGi) and shows the last image again
+    Render,  // renders the image (Renderer::render, with the GI work)
 };
 
 // Why a frame renders; None: the last image is shown again.
@@ -80,8 +96,17 @@ public:
     // click that changes nothing, or only the selection, does not lower the scale.
     bool editedSinceRender(const FrameInputs& inputs) const;
 
+    // The time since the last render, in renders' time, after which a frame that works on the GI
+    // renders the image again: the image's share of the time is then at most 1 / (this + 1).
+    static constexpr double kGiImageIntervalRenders = 3.0;
+
     // This frame's decision; `onDemand` false renders every frame.
     RedrawReason decide(const FrameInputs& inputs, const PendingWork& pending, bool onDemand) const;
+    // What the frame does for `reason` at `now` (s), the last render having taken `renderSeconds`.
+    FrameWork work(RedrawReason reason, double now, double renderSeconds) const;
+    // The frame advanced the GI alone; `updateCompleted`: an update completed in it
+    // (FrameStats::giUpdateCompleted), so the next frame that works on the GI renders.
+    void advancedGi(bool updateCompleted) { giLightChanged_ = giLightChanged_ || updateCompleted; }
     // The frame rendered from `inputs` for `reason` (not None) at `now` (s on a steady clock:
     // auto exposure's adaptation time).
     void rendered(FrameInputs inputs, RedrawReason reason, double now);
@@ -93,6 +118,7 @@ public:
 private:
     std::optional<FrameInputs> last_;  // the last rendered frame's
     double lastRenderAt_ = 0.0;        // s, when it rendered
+    bool giLightChanged_ = false;      // an update completed in a GI-only frame since then
     int temporalFramesLeft_ = 0;
     double exposureSecondsLeft_ = 0.0;  // adaptation time, s
 };

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace lit {
@@ -16,6 +17,13 @@ struct OverlayLine {
     bool operator==(const OverlayLine&) const = default;
 };
 
+// What a click hit: a node and the primitive of its mesh (index into Mesh::primitives).
+struct PickedPrimitive {
+    int node = -1;
+    int primitive = 0;
+    bool operator==(const PickedPrimitive&) const = default;
+};
+
 struct ViewportOverlay {
     // Nodes whose visible pixels get an outline (2 px, outside them), as Blender outlines a
     // selection: the active node in light orange, the other selected nodes in a darker orange.
@@ -24,6 +32,9 @@ struct ViewportOverlay {
     // is drawn as active.
     std::vector<int> activeOutline;
     std::vector<int> selectedOutline;
+    // One primitive of a node picked (a part of a one-node scene): of that node only the
+    // primitive is outlined, as active. nullopt: the nodes above whole.
+    std::optional<PickedPrimitive> activePrimitive;
     // Depth-tested against the scene: the parts behind geometry are drawn faint, not hidden, so
     // markers inside walls stay findable.
     std::vector<OverlayLine> lines;

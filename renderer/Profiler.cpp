@@ -81,6 +81,8 @@ bool Profiler::collect(Frame& frame, bool wait) {
     for (std::size_t i = 0; i < timings.size(); ++i)
         if (timings[i].ran) lastRun_[i] = timings[i];
     latest_ = std::move(timings);
+    recent_.push_back(latest_);
+    if (recent_.size() > static_cast<std::size_t>(kFramesInFlight)) recent_.pop_front();
     ++completedFrames_;
     return true;
 }

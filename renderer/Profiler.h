@@ -50,6 +50,9 @@ public:
 
     // Latest completed timings, in first-use pass order.
     const std::vector<PassTiming>& timings() const { return latest_; }
+    // The timings of the last kFramesInFlight completed frames, oldest first (a beginFrame may
+    // complete several at once; timings() holds only the newest of them).
+    const std::deque<std::vector<PassTiming>>& recentFrames() const { return recent_; }
     double gpuMs(const std::string& pass) const;  // in the latest completed frame; 0 when it did not run or is unknown
     // The timing of the most recent completed frame in which `pass` ran (passes that run only
     // when something changed, like voxelization, keep their last cost here); nullptr if never.
@@ -87,6 +90,7 @@ private:
     std::array<Frame, kFramesInFlight> frames_;
     int current_ = 0;
     std::vector<PassTiming> latest_;
+    std::deque<std::vector<PassTiming>> recent_;
     std::vector<PassTiming> lastRun_;
     std::uint64_t frameNumber_ = 0;
     std::uint64_t completedFrames_ = 0;

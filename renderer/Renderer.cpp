@@ -272,6 +272,21 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     r.stats.drawCalls = r.counters.drawCalls;
 }
 
+void Renderer::advanceGi(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+                         const GiBudget& budget) {
+    Impl& r = *impl_;
+    if (!settings.gi.enabled || !r.gpuScene) return;
+    r.profiler.beginFrame();
+    r.gi.reportUpdate();
+    r.syncScene(scene);
+    const bool shadowsDirty = r.updateLights(scene, settings);
+    r.bindFrame(scene, camera, settings);
+    if (shadowsDirty) r.drawShadowMaps(scene, settings);
+    r.updateGi(scene, settings, budget, shadowsDirty);
+    r.stats.voxelBytes = r.gi.bytes();
+    r.profiler.endFrame();
+}
+
 void Renderer::Impl::syncScene(const Scene& scene) {
     if (scene.materialRevision != uploadedMaterialRevision) {
         gpuScene->updateMaterials(scene);
@@ -518,10 +533,16 @@ bool readTexel(const gl::Texture& texture, glm::ivec2 pixel, GLenum format, GLen
 }  // namespace
 
 int Renderer::pickNode(glm::ivec2 pixel) const {
-    if (!impl_->lastFrame) return -1;
-    GLuint id = 0;
-    if (!readTexel(impl_->gbuffer.nodeId(), pixel, GL_RED_INTEGER, GL_UNSIGNED_INT, sizeof id, &id)) return -1;
-    return static_cast<int>(id) - 1;
+    const std::optional<PickedPrimitive> picked = pickPrimitive(pixel);
+    return picked ? picked->node : -1;
+}
+
+std::optional<PickedPrimitive> Renderer::pickPrimitive(glm::ivec2 pixel) const {
+    if (!impl_->lastFrame) return std::nullopt;
+    GLuint id[2] = {0, 0};
+    if (!readTexel(impl_->gbuffer.nodeId(), pixel, GL_RG_INTEGER, GL_UNSIGNED_INT, sizeof id, id) || id[0] == 0)
+        return std::nullopt;
+    return PickedPrimitive{static_cast<int>(id[0]) - 1, static_cast<int>(id[1])};
 }
 
 std::optional<SurfaceSample> Renderer::surfaceAt(glm::ivec2 pixel) const {

@@ -85,6 +85,12 @@ public:
     // this frame and leaves the refinement waiting.
     void render(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
                 const GiBudget& budget = GiBudget::updateOnly());
+    // The GI work of a frame without the frame: the scene's changes, the lights and their shadow
+    // maps, and the GI update under `budget`. The output images stay the last render()'s; the
+    // GI fields of stats() are this call's, the others the last render()'s. A front end that
+    // spreads the GI over frames calls it where rendering the image each time would cost more
+    // than the work (the editor while the GI converges: editor/ViewportRedraw.h).
+    void advanceGi(const Scene& scene, const CameraView& camera, const RenderSettings& settings, const GiBudget& budget);
 
     // Output of the last frame: tone-mapped sRGB (GL_SRGB8_ALPHA8) and linear HDR (GL_RGBA16F
     // → GL_RGBA32F on read) of settings.debug.view.
@@ -104,6 +110,9 @@ public:
     // left (as windows report the mouse). Both read one G-buffer texel back (a GPU stall: call on
     // a click, not every frame).
     int pickNode(glm::ivec2 pixel) const;  // node index drawn there; -1 for background, out of range or no frame
+    // The node and the primitive of its mesh drawn there (a one-node scene's parts); nullopt where
+    // pickNode is -1.
+    std::optional<PickedPrimitive> pickPrimitive(glm::ivec2 pixel) const;
     std::optional<SurfaceSample> surfaceAt(glm::ivec2 pixel) const;  // nullopt where pickNode is -1
 
     // Recompiles shaders whose files changed; on error the log says so and the last good

@@ -14,9 +14,11 @@ layout(location = 0) out vec4 outAlbedo;    // rgb base colour (linear, stored s
 layout(location = 1) out vec4 outNormal;    // rgb world normal
 layout(location = 2) out vec4 outMaterial;  // r roughness, g metalness
 layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance
-layout(location = 4) out uint outNodeId;    // scene node index + 1 (0 = background)
+// r: scene node index + 1 (0 = background); g: the primitive's index within the node's mesh.
+layout(location = 4) out uvec2 outNodeId;
 
 layout(location = LIT_LOC_NODE_ID) uniform uint uNodeId;
+layout(location = LIT_LOC_PRIMITIVE) uniform uint uPrimitive;
 
 void main() {
     GpuMaterial m = materials[uMaterialIndex];
@@ -65,5 +67,5 @@ void main() {
     outNormal = vec4(n, 1.0);
     outMaterial = vec4(clamp(roughness, 0.0, 1.0), clamp(metalness, 0.0, 1.0), 0.0, 1.0);
     outEmissive = vec4(emissive, 1.0);
-    outNodeId = uNodeId;
+    outNodeId = uvec2(uNodeId, uPrimitive);
 }

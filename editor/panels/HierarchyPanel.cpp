@@ -127,8 +127,11 @@ bool HierarchyPanel::drawNode(Document& doc, int index, int depth) {
     const Node& node = scene.nodes[static_cast<std::size_t>(index)];
     ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_OpenOnDoubleClick |
                                ImGuiTreeNodeFlags_SpanAvailWidth | ImGuiTreeNodeFlags_DefaultOpen;
-    if (node.children.empty()) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
-    if (doc.isSelected(index)) flags |= ImGuiTreeNodeFlags_Selected;
+    // A mesh of several primitives (a one-node scene's parts) lists them as rows below its node.
+    const int primitives = doc.primitiveCount(index);
+    const bool listsPrimitives = primitives > 1;
+    if (node.children.empty() && !listsPrimitives) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
+    if (doc.isSelected(index) && !(doc.primitivePicked && index == doc.selectedNode)) flags |= ImGuiTreeNodeFlags_Selected;
     // A selection made elsewhere (script, viewport) opens the tree down to it, once.
     if (doc.selectedNode != revealedSelection_ && doc.selectedNode >= 0 && index != doc.selectedNode &&
         isAncestorOrSelf(scene, index, doc.selectedNode))
@@ -164,10 +167,38 @@ bool HierarchyPanel::drawNode(Document& doc, int index, int depth) {
     }
     changed |= acceptNodeDrop(doc, index);
     if (const NodeAction action = nodeContextMenu(doc, index); action != NodeAction::None) pendingAction_ = action;
-    if (opened && !node.children.empty()) {
+    if (opened && (listsPrimitives || !node.children.empty())) {
+        if (listsPrimitives) changed |= drawPrimitives(doc, index, primitives);
         for (const int child : node.children) changed |= drawNode(doc, child, depth + 1);
         ImGui::TreePop();
     }
+    return changed;
+}
+
+bool HierarchyPanel::drawPrimitives(Document& doc, int index, int primitives) {
+    bool changed = false;
+    ImGui::PushID(index);
+    for (int p = 0; p < primitives; ++p) {
+        const bool picked = doc.primitivePicked && doc.selectedNode == index && doc.selectedPrimitive == p;
+        ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen |
+                                   ImGuiTreeNodeFlags_SpanAvailWidth;
+        if (picked) flags |= ImGuiTreeNodeFlags_Selected;
+        ImGui::PushID(p);
+        ImGui::TreeNodeEx("primitive", flags, "%s", doc.primitiveLabel(index, p).c_str());
+        ImGui::PopID();
+        // A part picked in the viewport is scrolled to, once.
+        if (picked && revealedPrimitive_ != p) {
+            ImGui::SetScrollHereY();
+            revealedPrimitive_ = p;
+        }
+        if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
+            doc.selectPrimitive(index, p);
+            revealedPrimitive_ = p;
+            changed = true;
+        }
+    }
+    if (!doc.primitivePicked) revealedPrimitive_ = -1;
+    ImGui::PopID();
     return changed;
 }
 

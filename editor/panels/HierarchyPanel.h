@@ -23,11 +23,14 @@ public:
 
 private:
     bool drawNode(Document& doc, int index, int depth);
+    // The rows of a node whose mesh has several primitives, one per primitive: a click selects it.
+    bool drawPrimitives(Document& doc, int index, int primitives);
     bool carryOut(Document& doc, NodeAction action, glm::vec3 viewRight);
     bool drawFlatList(Document& doc);
 
     ImGuiTextFilter filter_;
     int revealedSelection_ = -1;  // the selection the tree was last opened up to
+    int revealedPrimitive_ = -1;  // the picked primitive of it last scrolled to (-1: none)
     NodeAction pendingAction_ = NodeAction::None;  // a row's menu choice, done after the tree
 };
 

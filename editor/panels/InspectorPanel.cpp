@@ -79,17 +79,14 @@ void InspectorPanel::draw(Document& doc, const Placement& placement, bool* open)
                     const int primitives = static_cast<int>(mesh.primitives.size());
                     if (doc.selectedPrimitive >= primitives) doc.selectedPrimitive = 0;
                     if (primitives > 1) {
-                        auto primitiveLabel = [&](int p) {
-                            const int m = mesh.primitives[static_cast<std::size_t>(p)].material;
-                            const std::string name = m >= 0 && m < static_cast<int>(scene.materials.size())
-                                                         ? scene.materials[static_cast<std::size_t>(m)].name
-                                                         : std::string("default material");
-                            return "Primitive " + std::to_string(p) + ": " + name;
-                        };
+                        auto primitiveLabel = [&](int p) { return doc.primitiveLabel(selected, p); };
                         if (ImGui::BeginCombo("Primitive", primitiveLabel(doc.selectedPrimitive).c_str())) {
                             for (int p = 0; p < primitives; ++p)
                                 if (ImGui::Selectable(primitiveLabel(p).c_str(), p == doc.selectedPrimitive))
+                                {
                                     doc.selectedPrimitive = p;
+                                    doc.primitivePicked = true;  // outlined alone, the selection kept
+                                }
                             ImGui::EndCombo();
                         }
                         tooltip("This mesh has several parts with their own materials: the one edited below");

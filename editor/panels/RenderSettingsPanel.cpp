@@ -226,6 +226,12 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
         tooltip("Once the light is traced, occupied voxels traced again per frame with the other cone sets\n"
                 "(count; 0 = off) until each holds all 16: 15 more passes over the voxels, spread over frames.\n"
                 "Removes the bands a few voxels wide that one set per voxel leaves");
+        ImGui::DragFloat("GI ms / frame", &viewport.giMillisecondsPerFrame, 0.5f, 0.0f, 1000.0f,
+                         viewport.giMillisecondsPerFrame == 0.0f ? "voxel counts only" : "%.1f ms");
+        tooltip("GPU time the spread GI work may take per frame (ms; 0 = the voxel counts alone). The two\n"
+                "counts above are then the most a frame traces: the GI measures what its voxels cost and\n"
+                "traces what fits. While only the GI works, the 3D image is rendered again when an update\n"
+                "completes and otherwise at most a quarter of the time, so the UI stays responsive");
     }
     changed |= comboInt("Indirect scale", s.indirect.scale, std::array{1, 2, 4});
     tooltip("Trace indirect light for one pixel in N x N and upsample edge-aware (1 = every pixel)");

@@ -19,11 +19,15 @@ struct GiBudget {
     std::uint32_t updateVoxels = kAll;
     // Voxels the refinement may trace this frame once the update is done; 0: it waits.
     std::uint32_t refineVoxels = 0;
+    // GPU time the spread work (the update's shares and the refinement) may take this frame, ms;
+    // the voxel counts above are then the most it may trace (GiPacer). 0: the counts alone. The
+    // frame after an edit still voxelizes and injects whole: that work is not spread.
+    double milliseconds = 0.0;
 
     // The whole update and every refinement round in one frame: a still's converged light.
-    static constexpr GiBudget converge() { return {kAll, kAll}; }
+    static constexpr GiBudget converge() { return {kAll, kAll, 0.0}; }
     // The whole update in one frame, no refinement: the single-frame steady state benchmarks time.
-    static constexpr GiBudget updateOnly() { return {kAll, 0}; }
+    static constexpr GiBudget updateOnly() { return {kAll, 0, 0.0}; }
     bool operator==(const GiBudget&) const = default;
 };
 

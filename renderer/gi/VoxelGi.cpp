@@ -1,6 +1,7 @@
 #include "gi/VoxelGi.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "scene/Scene.h"
@@ -56,9 +57,23 @@ void VoxelGi::listTraced(RayHits hits) {
     if (hits != RayHits::Off) rayHitCache_.endPass();
 }
 
-GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings, const GiBudget& budget,
+void VoxelGi::measureSpreadWork() {
+    for (const std::vector<PassTiming>& timings : profiler_.recentFrames()) {
+        if (timings.empty() || timings.front().frame <= lastMeasuredFrame_) continue;
+        lastMeasuredFrame_ = timings.front().frame;
+        double ms = 0.0;
+        for (const PassTiming& t : timings)
+            if (t.ran && (t.name == "bounces" || t.name == "voxel irradiance" || t.name == "voxel irradiance filter"))
+                ms += t.gpuMs;
+        pacer_.measured(lastMeasuredFrame_, ms);
+    }
+}
+
+GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings, const GiBudget& asked,
                               DrawCounters& counters) {
     GiFrameReport report;
+    if (asked.milliseconds > 0.0) measureSpreadWork();
+    const GiBudget budget = pacer_.paced(asked);
     const bool reallocated = volume_.ensure(settings.gi.voxelResolution, settings.gi.radianceRgba8, log_);
     const bool moved = volume_.fitTo(frame.bounds);
     volume_.updateUniforms(settings, frame.frameIndex);
@@ -210,7 +225,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         pendingBoxes_ = report.voxelizedBoxes;
         pendingBoxVoxels_ = report.voxelizedVoxels;
     }
-    continueUpdate(settings, light, budget, report);
+    continueUpdate(settings, light, budget, changes.inject, report);
 
     const GiState& state = scheduler_.state();
     report.voxelized = changes.voxelize;
@@ -225,7 +240,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
 }
 
 void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget,
-                             GiFrameReport& report) {
+                             bool injected, GiFrameReport& report) {
     const ConeFeatures features = ConeFeatures::of(settings);
     const bool overList = scheduler_.state().listComplete;
     // The list ranges traced this frame, and whether the frame completed an update or a
@@ -234,12 +249,19 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
     // the trace it follows at 256³; docs/PERFORMANCE.md, "GI update").
     std::vector<VoxelRange> traced;
     bool filterAll = false;
+    // The update's voxels traced this frame in the budget's units (the pacer's measure).
+    double updateVoxels = 0.0;
+    const auto countUpdate = [&](std::uint32_t entries, std::uint32_t perFrame) {
+        if (perFrame > 0) updateVoxels += static_cast<double>(budget.updateVoxels) * entries / perFrame;
+    };
     const GiProgress& progress = scheduler_.state().progress;
     if (progress.bounce > 0) {
         // A spread bounce: the last share ends it (level 0 and its mips); after the last bounce
         // the irradiance starts in the next frame.
         Profiler::Scope scope(profiler_, "bounces");
-        const VoxelRange range = scheduler_.bounceShare(scheduler_.voxelsPerFrame(budget, light.voxelRays));
+        const std::uint32_t perFrame = scheduler_.voxelsPerFrame(budget, light.voxelRays);
+        const VoxelRange range = scheduler_.bounceShare(perFrame);
+        countUpdate(range.count, perFrame);
         const RayHits hits = rayHitsFor(features.voxelRays);
         if (light.untilConverged && range.first == 0) bounce_.resetChange();
         if (range.first == 0) rayHitCache_.beginPass();
@@ -273,6 +295,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             for (const VoxelRange& range : ranges) {
                 irradiance_.trace(volume_, irradianceCache_, rayHitCache_, {features, true, range, 0, hits});
                 traced.push_back(range);
+                countUpdate(range.count, perFrame);
             }
             // Every entry was traced once since the edit: recorded, if that is what it did. The
             // accumulated indirect light holds the update's frames (old light in the voxels not
@@ -289,10 +312,13 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         filterAll = report.updateCompleted;
     }
     // The refinement once the update is done, in the same frame when the budget allows (a still
-    // converges in its one frame). Round k traces every voxel's set + k once over the list; each
-    // voxel then averages k + 1 sets. The light is right throughout: only its sampling improves.
+    // converges in its one frame; a time budget the update used waits for the next frame). Round k
+    // traces every voxel's set + k once over the list; each voxel then averages k + 1 sets. The
+    // light is right throughout: only its sampling improves.
     const GiProgress& after = scheduler_.state().progress;
-    if (after.bounce == 0 && after.irradianceLeft == 0 && scheduler_.refinementLeft(light) && budget.refineVoxels > 0) {
+    const bool timeLeft = !(budget.milliseconds > 0.0 && updateVoxels > 0.0);
+    if (after.bounce == 0 && after.irradianceLeft == 0 && scheduler_.refinementLeft(light) && budget.refineVoxels > 0 &&
+        timeLeft) {
         Profiler::Scope scope(profiler_, "voxel irradiance");
         int rounds = 0;
         for (const GiScheduler::RefineShare& share : scheduler_.takeRefinement(budget.refineVoxels, rounds)) {
@@ -310,6 +336,14 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             filter_.execute(volume_, irradianceCache_, overList);
         } else {
             for (const VoxelRange& range : traced) filter_.execute(volume_, irradianceCache_, true, range);
+        }
+    }
+    if (budget.milliseconds > 0.0 && !injected) {
+        const std::uint64_t frame = profiler_.currentFrame();
+        if (updateVoxels > 0.0) {
+            pacer_.traced(frame, GiPacer::Work::Update, static_cast<std::uint32_t>(std::ceil(updateVoxels)));
+        } else if (report.refinedVoxels > 0) {
+            pacer_.traced(frame, GiPacer::Work::Refine, report.refinedVoxels);
         }
     }
     // Every voxel holds the update's light: the pixels gather it from now on.

@@ -16,6 +16,7 @@
 #include "RenderSettings.h"
 #include "gi/BouncePass.h"
 #include "gi/GiBudget.h"
+#include "gi/GiPacer.h"
 #include "gi/GiScheduler.h"
 #include "gi/InjectPass.h"
 #include "gi/IrradianceFilterPass.h"
@@ -73,7 +74,8 @@ public:
         bool shadowsDirty = false;  // the lights or their shadow maps changed this frame
         int frameIndex = 0;         // sample pattern index (turns with temporal accumulation)
     };
-    // Brings the volumes up to date with `settings` as far as `budget` allows this frame. The
+    // Brings the volumes up to date with `settings` as far as `budget` allows this frame (a time
+    // budget is turned into voxel counts by what the spread work cost in earlier frames). The
     // caller has bound the frame UBO (LIT_UBO_FRAME), the light table (LIT_SSBO_LIGHTS) and the
     // shadow maps (ShadowPass::bindMaps), which the injection reads. Leaves the voxel UBO bound.
     GiFrameReport update(const Frame& frame, const RenderSettings& settings, const GiBudget& budget,
@@ -106,12 +108,16 @@ private:
     // possible and asked for (RenderSettings: voxelizeChangesOnly).
     std::optional<std::vector<VoxelBox>> changedBoxes(const std::vector<ItemPose>& items, const VoxelKey& voxels,
                                                       const RenderSettings& settings, bool reallocated, bool moved);
+    // Gives the pacer the GPU time of the spread passes of each frame whose timings came in since
+    // the last call.
+    void measureSpreadWork();
     // A pass over the whole list ended: the scheduler and the ray-hit cache say so.
     void listTraced(RayHits hits);
     // The work of the update after the injection frame: this frame's share of a spread bounce, of
     // the irradiance and of the refinement, and the filter after them.
+    // Records the voxels it traced with the pacer unless `injected` (the frame did other work).
     void continueUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget,
-                        GiFrameReport& report);
+                        bool injected, GiFrameReport& report);
 
     Profiler& profiler_;
     Log& log_;
@@ -125,6 +131,8 @@ private:
     VoxelIrradianceCache irradianceCache_;
     RayHitCache rayHitCache_;
     GiScheduler scheduler_;
+    GiPacer pacer_;
+    std::uint64_t lastMeasuredFrame_ = 0;  // the profiler frame the pacer last heard of
     VoxelChangeTracker changes_;
     // List entries after the last voxelization of the whole volume: a list that grew to twice that
     // by voxelizations of changed boxes (entries of voxels that became empty stay) is rebuilt.

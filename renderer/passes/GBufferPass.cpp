@@ -21,7 +21,7 @@ void GBufferPass::resize(int width, int height) {
     t.normal = gl::Texture("gbuffer normal", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
     t.material = gl::Texture("gbuffer material", {GL_TEXTURE_2D, GL_RGBA8, width, height, 1, 1});
     t.emissive = gl::Texture("gbuffer emissive", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
-    t.nodeId = gl::Texture("gbuffer node id", {GL_TEXTURE_2D, GL_R32UI, width, height, 1, 1});
+    t.nodeId = gl::Texture("gbuffer node id", {GL_TEXTURE_2D, GL_RG32UI, width, height, 1, 1});
     t.depth = gl::Texture("gbuffer depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, 1});
     for (const gl::Texture* texture : {&t.albedo, &t.normal, &t.material, &t.emissive, &t.nodeId, &t.depth})
         texture->setFilter(GL_NEAREST, GL_NEAREST);
@@ -42,8 +42,8 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
     glViewport(0, 0, targets_->width, targets_->height);
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(targets_->framebuffer.id(), GL_COLOR, i, zero);
-    const GLuint background = 0;
-    glClearNamedFramebufferuiv(targets_->framebuffer.id(), GL_COLOR, 4, &background);
+    const GLuint background[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferuiv(targets_->framebuffer.id(), GL_COLOR, 4, background);
     const float one = 1.0f;
     glClearNamedFramebufferfv(targets_->framebuffer.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
@@ -64,6 +64,7 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
             bound = &itemProgram;
         }
         glProgramUniform1ui(itemProgram.id(), LIT_LOC_NODE_ID, static_cast<GLuint>(item.node + 1));
+        glProgramUniform1ui(itemProgram.id(), LIT_LOC_PRIMITIVE, static_cast<GLuint>(item.primitive));
         gpuScene.drawItem(scene, item, itemProgram, GpuScene::Bind::Everything, counters);
     };
     gpuScene.bindGeometry();

@@ -110,6 +110,9 @@ void OverlayPass::execute(const ViewportOverlay& overlay, const GBufferPass& gbu
         outline_.use();
         glProgramUniform4fv(outline_.id(), outline_.location("uActiveColor"), 1, kOutlineColor);
         glProgramUniform4fv(outline_.id(), outline_.location("uSelectedColor"), 1, kSelectedOutlineColor);
+        const PickedPrimitive picked = overlay.activePrimitive.value_or(PickedPrimitive{});
+        glProgramUniform1ui(outline_.id(), outline_.location("uPrimitiveNode"), static_cast<GLuint>(picked.node + 1));
+        glProgramUniform1ui(outline_.id(), outline_.location("uPrimitive"), static_cast<GLuint>(picked.primitive));
         glEnable(GL_SCISSOR_TEST);
         glScissor(rect.x, rect.y, rect.z, rect.w);
         triangle_.draw();

@@ -143,7 +143,7 @@ GpuScene::GpuScene(const Scene& scene, Log& log, std::uint32_t maxChunkTriangles
             for (const Range& r : meshRanges[static_cast<std::size_t>(node.mesh)][p]) {
                 if (r.indexCount == 0) continue;
                 items_.push_back({static_cast<int>(n), mesh.primitives[p].material, r.baseVertex, r.firstIndex,
-                                  r.indexCount, r.bounds});
+                                  r.indexCount, r.bounds, static_cast<int>(p)});
             }
         }
     }

@@ -35,6 +35,7 @@ struct DrawItem {
     std::uint32_t firstIndex = 0;
     std::uint32_t indexCount = 0;
     Aabb localBounds;          // of this item's triangles (a chunk's own box), object space
+    int primitive = 0;         // the primitive of the node's mesh the item draws (a chunk of it)
 };
 
 // Chooses the items one view draws: fills `visibleItems` with indices into GpuScene::items() of

@@ -297,4 +297,42 @@ TEST(Document, RenderSettingsChangesAreUnsavedButNotTheOutputSize) {
     EXPECT_TRUE(doc.dirty());
 }
 
+// A one-node scene's parts: the first click on a node selects it whole, a click on the active
+// node picks the part under the cursor; a node of one primitive is never picked in parts.
+TEST(Document, ASecondClickOnTheActiveNodePicksThePartUnderTheCursor) {
+    Document doc = fixtureDocument();
+    Mesh& box = doc.scene.meshes[static_cast<std::size_t>(doc.scene.nodes[kBox].mesh)];
+    box.primitives.push_back(box.primitives.front());  // two parts, same material
+    ASSERT_EQ(doc.primitiveCount(kBox), 2);
+    EXPECT_EQ(doc.primitiveCount(1), 1);
+    EXPECT_EQ(doc.primitiveCount(4), 0) << "the empty node";
+    EXPECT_EQ(doc.primitiveLabel(kBox, 1), "Primitive 1: Red");
+
+    doc.clickPrimitive(kBox, 1);
+    EXPECT_EQ(doc.selectedNode, kBox);
+    EXPECT_EQ(doc.selectedPrimitive, 1) << "the inspector edits the part clicked";
+    EXPECT_FALSE(doc.primitivePicked) << "the first click selects the node whole";
+    doc.clickPrimitive(kBox, 0);
+    EXPECT_TRUE(doc.primitivePicked);
+    EXPECT_EQ(doc.selectedPrimitive, 0);
+    doc.clickPrimitive(kBox, 1);
+    EXPECT_TRUE(doc.primitivePicked) << "the next part of the same node";
+    EXPECT_EQ(doc.selectedPrimitive, 1);
+
+    doc.clickPrimitive(1, 0);  // another node: whole again
+    EXPECT_EQ(doc.selectedNode, 1);
+    EXPECT_FALSE(doc.primitivePicked);
+    doc.clickPrimitive(1, 0);
+    EXPECT_FALSE(doc.primitivePicked) << "one primitive is the node";
+
+    doc.selectPrimitive(kBox, 1);  // the hierarchy's row of the part
+    EXPECT_TRUE(doc.primitivePicked);
+    doc.select(kBox);
+    EXPECT_FALSE(doc.primitivePicked);
+    EXPECT_EQ(doc.selectedPrimitive, 0);
+    doc.selectPrimitive(kBox, 2);  // out of range: nothing
+    EXPECT_EQ(doc.selectedNode, -1);
+    EXPECT_FALSE(doc.primitivePicked);
+}
+
 }  // namespace

@@ -81,6 +81,29 @@ TEST(ViewportRedraw, PendingWorkRendersWithUnchangedInputs) {
     EXPECT_EQ(redraw.decide(inputs, {.shadersReloaded = true}, true), RedrawReason::Shaders);
 }
 
+TEST(ViewportRedraw, GiWorkRendersTheImageOnlyNowAndThen) {
+    const FrameInputs inputs = someInputs();
+    ViewportRedraw redraw = renderedOnce(inputs, 10.0);
+    const double render = 0.3;  // s, the last render (llvmpipe at 1280×720)
+    EXPECT_EQ(redraw.work(RedrawReason::None, 10.1, render), FrameWork::Show);
+    EXPECT_EQ(redraw.work(RedrawReason::Camera, 10.1, render), FrameWork::Render);
+    EXPECT_EQ(redraw.work(RedrawReason::Scene, 10.1, render), FrameWork::Render);
+    // GI work alone until three renders' time has passed since the last render.
+    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.1, render), FrameWork::GiOnly);
+    EXPECT_EQ(redraw.work(RedrawReason::GiUpdate, 10.85, render), FrameWork::GiOnly);
+    EXPECT_EQ(redraw.work(RedrawReason::GiUpdate, 10.9, render), FrameWork::Render);
+    // An update that completed in a GI-only frame changed the light shown: the next GI frame renders.
+    redraw.advancedGi(false);
+    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.2, render), FrameWork::GiOnly);
+    redraw.advancedGi(true);
+    redraw.advancedGi(false);
+    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.2, render), FrameWork::Render);
+    redraw.rendered(inputs, RedrawReason::GiRefine, 10.2);
+    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.3, render), FrameWork::GiOnly);
+    // Where a render costs a few ms (a GPU), every GI frame renders.
+    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.217, 0.005), FrameWork::Render);
+}
+
 TEST(ViewportRedraw, TemporalAccumulationRendersUntilItsHistoryIsFull) {
     FrameInputs inputs = someInputs();
     inputs.settings.indirect.temporalAccumulation = true;

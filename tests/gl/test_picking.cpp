@@ -63,6 +63,94 @@ TEST_F(Picking, ObjectCentresPickTheirNodes) {
         EXPECT_EQ(renderer_->pickNode(outside), -1) << outside.x << "," << outside.y;
 }
 
+// The Cornell box with both boxes as two primitives of one node's mesh (a one-node scene's parts):
+// the tall box's node draws the short box too (its vertices moved into the tall box's frame), and
+// the short box's node draws nothing.
+Scene boxesAsOneMesh(Scene scene) {
+    Node& tall = scene.nodes[5];
+    Node& shortBox = scene.nodes[6];
+    const glm::mat4 toTall = glm::inverse(tall.world) * shortBox.world;
+    const glm::mat3 normalToTall = glm::mat3(toTall);  // rotations only in this scene
+    std::vector<Primitive> moved = scene.meshes[static_cast<std::size_t>(shortBox.mesh)].primitives;
+    for (Primitive& p : moved) {
+        p.bounds = {};
+        for (Vertex& v : p.vertices) {
+            v.position = glm::vec3(toTall * glm::vec4(v.position, 1.0f));
+            v.normal = glm::normalize(normalToTall * v.normal);
+            v.tangent = glm::vec4(glm::normalize(normalToTall * glm::vec3(v.tangent)), v.tangent.w);
+            p.bounds.extend(v.position);
+        }
+    }
+    Mesh& mesh = scene.meshes[static_cast<std::size_t>(tall.mesh)];
+    EXPECT_EQ(mesh.primitives.size(), 1u);
+    mesh.primitives.insert(mesh.primitives.end(), moved.begin(), moved.end());
+    shortBox.mesh = -1;
+    return scene;
+}
+
+TEST_F(Picking, APrimitiveOfAOneNodeMeshIsPickedAndOutlinedAlone) {
+    const Scene scene = boxesAsOneMesh(loadCornellBox());
+    const RenderSettings settings = smallSettings(96);
+    renderer_->setScene(scene);
+    const std::vector<std::uint8_t> plain = renderRgba8(scene, settings);
+    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(scene.nodes[5].mesh)];
+    const Aabb tallBounds = mesh.primitives[0].bounds.transformed(scene.nodes[5].world);
+    const Aabb shortBounds = mesh.primitives[1].bounds.transformed(scene.nodes[5].world);
+    const glm::ivec2 tallPixel = topLeftPixel(scene, settings, tallBounds.center());
+    const glm::ivec2 shortPixel = topLeftPixel(scene, settings, shortBounds.center());
+    EXPECT_EQ(renderer_->pickPrimitive(tallPixel), (PickedPrimitive{5, 0}));
+    EXPECT_EQ(renderer_->pickPrimitive(shortPixel), (PickedPrimitive{5, 1}));
+    EXPECT_EQ(renderer_->pickNode(shortPixel), 5);
+    EXPECT_EQ(renderer_->pickPrimitive(topLeftPixel(scene, settings, {-0.6f, 0.0f, 0.6f})), (PickedPrimitive{0, 0}));
+    // The whole node outlined, then its second primitive alone: the ring moves off the tall box.
+    const int w = settings.output.width, h = settings.output.height;
+    std::vector<std::optional<PickedPrimitive>> ids(static_cast<std::size_t>(w * h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) ids[static_cast<std::size_t>(y * w + x)] = renderer_->pickPrimitive({x, y});
+    // Pixels of the background walls within 2 px of exactly one of the two primitives.
+    const auto ringOf = [&](int primitive) {
+        std::vector<int> ring;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::optional<PickedPrimitive>& id = ids[static_cast<std::size_t>(y * w + x)];
+                if (id && id->node == 5) continue;
+                bool near[2] = {false, false};
+                for (int dy = -2; dy <= 2; ++dy)
+                    for (int dx = -2; dx <= 2; ++dx) {
+                        if (dx * dx + dy * dy > 5 || x + dx < 0 || y + dy < 0 || x + dx >= w || y + dy >= h) continue;
+                        const std::optional<PickedPrimitive>& q = ids[static_cast<std::size_t>((y + dy) * w + x + dx)];
+                        if (q && q->node == 5) near[q->primitive] = true;
+                    }
+                if (near[primitive] && !near[1 - primitive]) ring.push_back(y * w + x);
+            }
+        return ring;
+    };
+    const auto changedAt = [&](const std::vector<std::uint8_t>& image, const std::vector<int>& pixels) {
+        int changed = 0;
+        for (const int p : pixels) {
+            const int x = p % w, y = h - 1 - p / w;  // readOutputRgba8 rows are bottom-up
+            const std::size_t i = 4 * static_cast<std::size_t>(y * w + x);
+            changed += std::abs(int(image[i]) - int(plain[i])) + std::abs(int(image[i + 1]) - int(plain[i + 1])) > 20;
+        }
+        return changed;
+    };
+    const std::vector<int> tallRing = ringOf(0), shortRing = ringOf(1);
+    ASSERT_GT(tallRing.size(), 20u);
+    ASSERT_GT(shortRing.size(), 20u);
+    ViewportOverlay overlay;
+    overlay.activeOutline = {5};
+    renderer_->setOverlay(overlay);
+    const std::vector<std::uint8_t> whole = renderRgba8(scene, settings);
+    EXPECT_GT(changedAt(whole, tallRing), static_cast<int>(tallRing.size()) * 9 / 10);
+    EXPECT_GT(changedAt(whole, shortRing), static_cast<int>(shortRing.size()) * 9 / 10);
+    overlay.activePrimitive = PickedPrimitive{5, 1};
+    renderer_->setOverlay(overlay);
+    const std::vector<std::uint8_t> part = renderRgba8(scene, settings);
+    EXPECT_EQ(changedAt(part, tallRing), 0) << "the tall box is not the picked primitive";
+    EXPECT_GT(changedAt(part, shortRing), static_cast<int>(shortRing.size()) * 9 / 10);
+    renderer_->setOverlay({});
+}
+
 TEST_F(Picking, BackgroundPicksNothing) {
     const Scene scene = loadCornellBox();
     const RenderSettings settings = smallSettings(64);
