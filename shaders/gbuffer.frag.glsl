@@ -33,7 +33,11 @@ void main() {
         vec3 t = fs.worldTangent.xyz - n * dot(n, fs.worldTangent.xyz);
         if (dot(t, t) > 1e-10) {
             t = normalize(t);
-            vec3 b = cross(n, t) * (fs.worldTangent.w < 0.0 ? -1.0 : 1.0);
+            float handedness = fs.worldTangent.w < 0.0 ? -1.0 : 1.0;
+            // The map's frame follows its KHR_texture_transform (identity: t itself).
+            vec3 frame = materialUvTangent(LIT_MATERIAL_SLOT_NORMAL);
+            t = normalize(t * frame.x + cross(n, t) * handedness * frame.y);
+            vec3 b = cross(n, t) * handedness * frame.z;
             vec3 tn = texture(normalTexture, materialUv(LIT_MATERIAL_SLOT_NORMAL, fs.uv)).xyz * 2.0 - 1.0;
             tn.xy *= m.params.z;
             n = normalize(mat3(t, b, n) * tn);

@@ -292,7 +292,11 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
         glm::vec3 t = glm::vec3(tangent) - n * glm::dot(n, glm::vec3(tangent));
         if (glm::dot(t, t) > 1e-10f) {
             t = glm::normalize(t);
-            const glm::vec3 b = glm::cross(n, t) * (tangent.w < 0.0f ? -1.0f : 1.0f);
+            const float handedness = tangent.w < 0.0f ? -1.0f : 1.0f;
+            // The map's frame follows its KHR_texture_transform (identity: t itself).
+            const glm::vec3 frame = uvTangentOfTransform(uvTransformRows(m.textureTransforms[kSlotNormal]));
+            t = glm::normalize(t * frame.x + glm::cross(n, t) * handedness * frame.y);
+            const glm::vec3 b = glm::cross(n, t) * handedness * frame.z;
             glm::vec3 tn = glm::vec3(sampleTexture(m.normalTexture, slotUv(m, kSlotNormal, uv))) * 2.0f - 1.0f;
             tn.x *= m.normalScale;
             tn.y *= m.normalScale;

@@ -30,6 +30,17 @@ inline std::array<glm::vec3, 2> uvTransformRows(const TextureTransform& t) {
             glm::vec3(glm::dvec3(-s * t.scale.x, c * t.scale.y, t.offset.y))};
 }
 
+// The tangent of the transformed UVs in a normal map's frame (t, b) of the mesh UVs (b points to
+// decreasing v, the image's up, as glTF's green does): xy the direction u' grows in, (∂u/∂u',
+// −∂v/∂u') up to a positive factor (the first column of the inverse of the matrix's 2×2 part, v
+// negated); z the sign of its determinant (a mirrored transform turns the bitangent). A normal map
+// is painted in the frame of the UVs it is sampled with (material.glsl's materialUvTangent).
+inline glm::vec3 uvTangentOfTransform(const std::array<glm::vec3, 2>& rows) {
+    const float det = rows[0].x * rows[1].y - rows[0].y * rows[1].x;
+    const float s = det < 0.0f ? -1.0f : 1.0f;
+    return {rows[1].y * s, rows[1].x * s, s};
+}
+
 inline glm::vec2 applyUvTransform(const std::array<glm::vec3, 2>& rows, glm::vec2 uv) {
     const glm::vec3 h(uv, 1.0f);
     return {glm::dot(rows[0], h), glm::dot(rows[1], h)};

@@ -38,6 +38,17 @@ vec2 materialUv(int slot, vec2 uv) {
     return vec2(dot(uUvTransforms[2 * slot].xyz, h), dot(uUvTransforms[2 * slot + 1].xyz, h));
 }
 
+// The tangent of texture reference `slot`'s transformed UVs in a normal map's frame (t, b) of the
+// mesh UVs (b points to decreasing v, the image's up, as glTF's green does): xy the direction u'
+// grows in, (∂u/∂u', −∂v/∂u') up to a positive factor; z the sign of the transform's determinant
+// (a mirrored transform turns the bitangent). A normal map is painted in the frame of the UVs it
+// is sampled with: scene/TextureTransform.h's uvTangentOfTransform, the reference's.
+vec3 materialUvTangent(int slot) {
+    vec2 r0 = uUvTransforms[2 * slot].xy, r1 = uUvTransforms[2 * slot + 1].xy;
+    float s = r0.x * r1.y - r0.y * r1.x < 0.0 ? -1.0 : 1.0;
+    return vec3(vec2(r1.y, r1.x) * s, s);  // the first column of the inverse of the 2×2 part, v negated
+}
+
 // Base colour × texture (linear; sRGB textures are decoded by the sampler).
 vec4 materialBaseColor(GpuMaterial m, vec2 uv) {
     vec4 c = m.baseColorFactor;

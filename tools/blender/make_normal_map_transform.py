@@ -1,0 +1,130 @@
+# Makes the normal-map texture-transform test scene: a plane seen from above with a tangent-space
+# normal map (4×4 texels, each tilted 35° in its own direction, Closest interpolation) placed by a
+# Mapping node that rotates and scales it, as a user tiles a bump texture in Blender. The exporter
+# writes the Mapping node as KHR_texture_transform on the normal texture.
+#
+#   tools/install-deps.sh --scene-tools
+#   blender -b --factory-startup --python tools/blender/make_normal_map_transform.py -- [OUT_DIR]
+#
+# Writes OUT_DIR (default tests/data/blender/normal_map_transform):
+#   normal_map_transform.gltf + .bin   the Mapping node as exported (KHR_texture_transform)
+#   normal_map_transform_baked.gltf    the same plane with the Mapping applied to its UVs by this
+#                                      script and removed: the tangents Lit derives from those UVs
+#                                      are the frame the normal map was painted in, so this is
+#                                      what the first must look like
+#   tilts.png                          the normal map both use
+# The Mapping is rotation 60°, scale (2, 1.5), location (0.1, 0.3).
+
+import math
+import os
+import sys
+
+import bpy
+from mathutils import Euler, Vector
+
+try:
+    import numpy
+
+    numpy.bool = bool  # Blender 3.4's glTF exporter still uses the alias numpy removed
+except ImportError:
+    sys.exit("make_normal_map_transform.py: Blender's glTF exporter needs numpy: run tools/install-deps.sh --scene-tools")
+
+WIDTH, HEIGHT = 128, 128
+SIDE = 4  # texels per side of the normal map
+TILT = math.radians(35.0)
+MAPPING = ((0.1, 0.3), 60.0, (2.0, 1.5))  # location (u, v), rotation about Z (degrees), scale (u, v)
+
+
+def arguments():
+    args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    return os.path.abspath(args[0] if args else "tests/data/blender/normal_map_transform")
+
+
+def tilts(folder):
+    """Texel k tilts the normal by TILT towards azimuth k · 360° / 16 + 10° (tangent space)."""
+    image = bpy.data.images.new("tilts", SIDE, SIDE, alpha=False)
+    image.colorspace_settings.name = "Non-Color"
+    pixels = []
+    for k in range(SIDE * SIDE):
+        azimuth = math.radians(10.0 + 360.0 * ((k * 7) % (SIDE * SIDE)) / (SIDE * SIDE))
+        n = (math.sin(TILT) * math.cos(azimuth), math.sin(TILT) * math.sin(azimuth), math.cos(TILT))
+        pixels += [0.5 + 0.5 * n[0], 0.5 + 0.5 * n[1], 0.5 + 0.5 * n[2], 1.0]
+    image.pixels = pixels
+    image.filepath_raw = os.path.join(folder, "tilts.png")
+    image.file_format = "PNG"
+    image.save()
+    return image
+
+
+def material(image):
+    (lu, lv), rotation, (su, sv) = MAPPING
+    m = bpy.data.materials.new("tilted")
+    m.use_nodes = True
+    nodes, links = m.node_tree.nodes, m.node_tree.links
+    bsdf = nodes["Principled BSDF"]
+    bsdf.inputs["Roughness"].default_value = 1.0
+    bsdf.inputs["Base Color"].default_value = (0.8, 0.8, 0.8, 1.0)
+    tex = nodes.new("ShaderNodeTexImage")
+    tex.image = image
+    tex.interpolation = "Closest"
+    normal_map = nodes.new("ShaderNodeNormalMap")
+    coords = nodes.new("ShaderNodeTexCoord")
+    node = nodes.new("ShaderNodeMapping")
+    node.vector_type = "POINT"
+    node.inputs["Location"].default_value = (lu, lv, 0.0)
+    node.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(rotation))
+    node.inputs["Scale"].default_value = (su, sv, 1.0)
+    links.new(coords.outputs["UV"], node.inputs["Vector"])
+    links.new(node.outputs["Vector"], tex.inputs["Vector"])
+    links.new(tex.outputs["Color"], normal_map.inputs["Color"])
+    links.new(normal_map.outputs["Normal"], bsdf.inputs["Normal"])
+    return m
+
+
+def build(image):
+    bpy.ops.mesh.primitive_plane_add(size=2.0, location=(0.0, 0.0, 0.0))
+    plane = bpy.context.object
+    plane.name = "plane"
+    plane.data.materials.append(material(image))
+    bpy.ops.object.light_add(type="SUN", location=(0.0, 0.0, 3.0), rotation=(math.radians(40.0), 0.0, math.radians(30.0)))
+    bpy.context.object.data.energy = 3.0
+    bpy.ops.object.camera_add(location=(0.0, 0.0, 3.0), rotation=(0.0, 0.0, 0.0))  # looks down −Z, +Y up
+    cam = bpy.context.object
+    cam.name = "camera"
+    cam.data.lens_unit = "FOV"
+    cam.data.angle = math.radians(36)  # the plane (2 m) fills most of the view
+    bpy.context.scene.camera = cam
+    bpy.context.scene.render.resolution_x = WIDTH
+    bpy.context.scene.render.resolution_y = HEIGHT
+
+
+def bake_mapping():
+    """Applies the Mapping node to the plane's UVs (Blender's Point mapping: T · R · S) and removes it."""
+    (lu, lv), rotation, (su, sv) = MAPPING
+    plane = bpy.data.objects["plane"]
+    turn = Euler((0.0, 0.0, math.radians(rotation))).to_matrix()
+    for loop_uv in plane.data.uv_layers.active.data:
+        mapped = turn @ Vector((su * loop_uv.uv.x, sv * loop_uv.uv.y, 0.0)) + Vector((lu, lv, 0.0))
+        loop_uv.uv = (mapped.x, mapped.y)
+    nodes = plane.active_material.node_tree.nodes
+    nodes.remove(nodes["Mapping"])
+    nodes.remove(nodes["Texture Coordinate"])
+
+
+def export(path):
+    bpy.ops.export_scene.gltf(filepath=path, export_format="GLTF_SEPARATE", export_cameras=True,
+                              export_lights=True, export_apply=True)
+
+
+def main():
+    folder = arguments()
+    os.makedirs(folder, exist_ok=True)
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    image = tilts(folder)
+    build(image)
+    export(os.path.join(folder, "normal_map_transform.gltf"))
+    bake_mapping()
+    export(os.path.join(folder, "normal_map_transform_baked.gltf"))
+
+
+main()
