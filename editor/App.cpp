@@ -254,6 +254,7 @@ int App::run() {
             frameLog_.last().refinedVoxels = work != FrameWork::Show ? renderer_->stats().refinedVoxels : 0;
             frameLog_.last().rendered = render;
             frameLog_.last().giOnly = work == FrameWork::GiOnly;
+            frameLog_.last().giUpdateDone = renderer_->stats().giUpdateDone;
             frameLog_.last().playhead = playback_.time;
             frameLog_.last().playing = playback_.playing;
             frameLog_.last().camera = camera_.position;

@@ -2,7 +2,7 @@
 // --frame-log FILE: one row per frame of the editor's loop (when it began, the render scale and
 // size, whether the camera moved, the voxels the GI refined, whether the 3D image was rendered or
 // the last one shown again, the camera path's playhead, where the camera was, the active node,
-// whether the frame worked on the GI alone),
+// whether the frame worked on the GI alone and how far the GI update is),
 // written as CSV
 // when the editor ends. The editor_interactive, editor_camera_path and editor_real_input tests and
 // the frame-rate
@@ -28,6 +28,7 @@ struct FrameLogRow {
     glm::vec3 camera{0.0f};           // m, the fly camera's position the frame renders from
     int selectedNode = -1;            // the active node (Document::selectedNode), -1: none
     bool giOnly = false;              // the frame advanced the GI without rendering (Renderer::advanceGi)
+    float giUpdateDone = 1.0f;        // FrameStats::giUpdateDone after the frame: share of the GI update done
 };
 
 class FrameLog {
@@ -37,7 +38,7 @@ public:
     FrameLogRow& last() { return rows_.back(); }
 
     // frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,
-    // rendered,playhead_s,playing,camera_x,camera_y,camera_z,selected_node,gi_only: a frame lasts until the next one begins (the loop's own frame time: update, render,
+    // rendered,playhead_s,playing,camera_x,camera_y,camera_z,selected_node,gi_only,gi_update_done: a frame lasts until the next one begins (the loop's own frame time: update, render,
     // present), the last one until `endSeconds`; start_s counts from the first frame.
     std::string csv(double endSeconds) const;
     // Writes csv() atomically; throws when it cannot.

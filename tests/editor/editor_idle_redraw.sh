@@ -36,7 +36,7 @@ cat "$out/editor.txt"
 head -1 "$log" | grep -q ',refined_voxels,rendered,' || fail "unexpected frame log header: $(head -1 "$log")"
 
 # Columns: frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered,
-# playhead_s,playing,camera_x,camera_y,camera_z,selected_node,gi_only
+# playhead_s,playing,camera_x,camera_y,camera_z,selected_node,gi_only,gi_update_done
 # The last 40 rows are the frames of "wait 40" (quit ends the loop before its frame).
 rows=$(($(wc -l <"$log") - 1))
 [ "$rows" -gt 40 ] || fail "only $rows frames in the log"

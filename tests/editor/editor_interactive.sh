@@ -48,7 +48,7 @@ head -1 "$log" | grep -q ',camera_moved,refined_voxels,rendered,' || fail "unexp
 cat "$log"
 
 # Columns: frame,start_s,duration_ms,render_width,render_height,render_scale,camera_moved,refined_voxels,rendered,
-# playhead_s,playing,camera_x,camera_y,camera_z,selected_node
+# playhead_s,playing,camera_x,camera_y,camera_z,selected_node,gi_only,gi_update_done
 awk -F, -v occupied="$occupied" -v rounds=15 'NR > 1 {
     total += $8; lastTwo = prev + $8; prev = $8
     if ($7 == 1) {

@@ -71,7 +71,7 @@ status=$?
 cat "$out/editor.txt"
 [ "$status" -eq 0 ] || fail "lit-editor (or the input around it) exited with status $status"
 [ -f "$log" ] || fail "no frame log"
-head -1 "$log" | grep -q ',playhead_s,playing,camera_x,camera_y,camera_z,selected_node,gi_only$' || fail "unexpected frame log header: $(head -1 "$log")"
+head -1 "$log" | grep -q ',playhead_s,playing,camera_x,camera_y,camera_z,selected_node,gi_only,gi_update_done$' || fail "unexpected frame log header: $(head -1 "$log")"
 
 # Columns: 1 frame, ..., 10 playhead_s, 11 playing, 12-14 camera, 15 selected_node. The rows
 # where the playhead changes:
