@@ -93,8 +93,8 @@ RedrawReason ViewportRedraw::decide(const FrameInputs& inputs, const PendingWork
 FrameWork ViewportRedraw::work(RedrawReason reason, double now, double renderSeconds) const {
     if (reason == RedrawReason::None) return FrameWork::Show;
     if (reason != RedrawReason::GiUpdate && reason != RedrawReason::GiRefine) return FrameWork::Render;
-    if (giLightChanged_ || now - lastRenderAt_ >= kGiImageIntervalRenders * std::max(renderSeconds, 0.0))
-        return FrameWork::Render;
+    const double renders = reason == RedrawReason::GiRefine ? kRefineImageRenders : kUpdateImageRenders;
+    if (giLightChanged_ || now - lastRenderAt_ >= renders * std::max(renderSeconds, 0.0)) return FrameWork::Render;
     return FrameWork::GiOnly;
 }
 

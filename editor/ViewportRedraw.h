@@ -15,11 +15,13 @@
 // A frame that would render only for the GI work in flight (GiUpdate, GiRefine) advances the GI
 // alone (Renderer::advanceGi) and shows the last image again, unless the image is due: an update
 // completed since the last render (the light shown changed), or the time since the last render
-// reached kGiImageIntervalRenders renders' time. A render at 1280×720 costs 250-350 ms on
-// llvmpipe while the GI's share of a frame is 25 ms (ViewportSettings::giMillisecondsPerFrame):
-// rendering every frame made the refinement's frames 320 ms each; now the image takes at most a
-// quarter of the time and the UI answers in the frames between. On a GPU, where a render costs
-// a few ms, every frame renders.
+// began reached kUpdateImageRenders (kRefineImageRenders while refining) times that render's
+// duration, so rendering takes at most a quarter of the time while an update runs and a tenth
+// while the refinement does (its light changes little from one image to the next). A render at
+// 1280×720 costs 170-350 ms on llvmpipe while the GI's share of a frame is 25 ms
+// (ViewportSettings::giMillisecondsPerFrame): rendering every frame made the refinement's frames
+// 320 ms each; now the UI answers in the frames between. On a GPU, where a render costs a few ms,
+// every frame renders.
 // Window-free (lit_editor_core): tests/editor/test_viewport_redraw.cpp.
 
 #include <cstdint>
@@ -96,9 +98,10 @@ public:
     // click that changes nothing, or only the selection, does not lower the scale.
     bool editedSinceRender(const FrameInputs& inputs) const;
 
-    // The time since the last render, in renders' time, after which a frame that works on the GI
-    // renders the image again: the image's share of the time is then at most 1 / (this + 1).
-    static constexpr double kGiImageIntervalRenders = 3.0;
+    // The time since the last render began, in its durations, after which a frame that works on
+    // the GI renders the image again: the image's share of the time is at most 1 / this.
+    static constexpr double kUpdateImageRenders = 4.0;
+    static constexpr double kRefineImageRenders = 10.0;
 
     // This frame's decision; `onDemand` false renders every frame.
     RedrawReason decide(const FrameInputs& inputs, const PendingWork& pending, bool onDemand) const;

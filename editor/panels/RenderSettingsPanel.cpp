@@ -231,7 +231,7 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
         tooltip("GPU time the spread GI work may take per frame (ms; 0 = the voxel counts alone). The two\n"
                 "counts above are then the most a frame traces: the GI measures what its voxels cost and\n"
                 "traces what fits. While only the GI works, the 3D image is rendered again when an update\n"
-                "completes and otherwise at most a quarter of the time, so the UI stays responsive");
+                "completes and otherwise in at most a quarter of the time, so the UI stays responsive");
     }
     changed |= comboInt("Indirect scale", s.indirect.scale, std::array{1, 2, 4});
     tooltip("Trace indirect light for one pixel in N x N and upsample edge-aware (1 = every pixel)");

@@ -88,10 +88,13 @@ TEST(ViewportRedraw, GiWorkRendersTheImageOnlyNowAndThen) {
     EXPECT_EQ(redraw.work(RedrawReason::None, 10.1, render), FrameWork::Show);
     EXPECT_EQ(redraw.work(RedrawReason::Camera, 10.1, render), FrameWork::Render);
     EXPECT_EQ(redraw.work(RedrawReason::Scene, 10.1, render), FrameWork::Render);
-    // GI work alone until three renders' time has passed since the last render.
+    // GI work alone until four renders' time has passed since the last render began (ten while
+    // refining).
     EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.1, render), FrameWork::GiOnly);
-    EXPECT_EQ(redraw.work(RedrawReason::GiUpdate, 10.85, render), FrameWork::GiOnly);
-    EXPECT_EQ(redraw.work(RedrawReason::GiUpdate, 10.9, render), FrameWork::Render);
+    EXPECT_EQ(redraw.work(RedrawReason::GiUpdate, 11.15, render), FrameWork::GiOnly);
+    EXPECT_EQ(redraw.work(RedrawReason::GiUpdate, 11.21, render), FrameWork::Render);
+    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 12.95, render), FrameWork::GiOnly);
+    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 13.01, render), FrameWork::Render);
     // An update that completed in a GI-only frame changed the light shown: the next GI frame renders.
     redraw.advancedGi(false);
     EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.2, render), FrameWork::GiOnly);
@@ -101,7 +104,7 @@ TEST(ViewportRedraw, GiWorkRendersTheImageOnlyNowAndThen) {
     redraw.rendered(inputs, RedrawReason::GiRefine, 10.2);
     EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.3, render), FrameWork::GiOnly);
     // Where a render costs a few ms (a GPU), every GI frame renders.
-    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.217, 0.005), FrameWork::Render);
+    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.251, 0.005), FrameWork::Render);
 }
 
 TEST(ViewportRedraw, TemporalAccumulationRendersUntilItsHistoryIsFull) {
