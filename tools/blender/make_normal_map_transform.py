@@ -20,7 +20,9 @@ import os
 import sys
 
 import bpy
-from mathutils import Euler, Vector
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scene_parts import bake_mapping, mapped_image  # noqa: E402  (this folder, put on the path above)
 
 try:
     import numpy
@@ -57,25 +59,14 @@ def tilts(folder):
 
 
 def material(image):
-    (lu, lv), rotation, (su, sv) = MAPPING
     m = bpy.data.materials.new("tilted")
     m.use_nodes = True
     nodes, links = m.node_tree.nodes, m.node_tree.links
     bsdf = nodes["Principled BSDF"]
     bsdf.inputs["Roughness"].default_value = 1.0
     bsdf.inputs["Base Color"].default_value = (0.8, 0.8, 0.8, 1.0)
-    tex = nodes.new("ShaderNodeTexImage")
-    tex.image = image
-    tex.interpolation = "Closest"
+    tex = mapped_image(m, image, MAPPING)
     normal_map = nodes.new("ShaderNodeNormalMap")
-    coords = nodes.new("ShaderNodeTexCoord")
-    node = nodes.new("ShaderNodeMapping")
-    node.vector_type = "POINT"
-    node.inputs["Location"].default_value = (lu, lv, 0.0)
-    node.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(rotation))
-    node.inputs["Scale"].default_value = (su, sv, 1.0)
-    links.new(coords.outputs["UV"], node.inputs["Vector"])
-    links.new(node.outputs["Vector"], tex.inputs["Vector"])
     links.new(tex.outputs["Color"], normal_map.inputs["Color"])
     links.new(normal_map.outputs["Normal"], bsdf.inputs["Normal"])
     return m
@@ -98,19 +89,6 @@ def build(image):
     bpy.context.scene.render.resolution_y = HEIGHT
 
 
-def bake_mapping():
-    """Applies the Mapping node to the plane's UVs (Blender's Point mapping: T · R · S) and removes it."""
-    (lu, lv), rotation, (su, sv) = MAPPING
-    plane = bpy.data.objects["plane"]
-    turn = Euler((0.0, 0.0, math.radians(rotation))).to_matrix()
-    for loop_uv in plane.data.uv_layers.active.data:
-        mapped = turn @ Vector((su * loop_uv.uv.x, sv * loop_uv.uv.y, 0.0)) + Vector((lu, lv, 0.0))
-        loop_uv.uv = (mapped.x, mapped.y)
-    nodes = plane.active_material.node_tree.nodes
-    nodes.remove(nodes["Mapping"])
-    nodes.remove(nodes["Texture Coordinate"])
-
-
 def export(path):
     bpy.ops.export_scene.gltf(filepath=path, export_format="GLTF_SEPARATE", export_cameras=True,
                               export_lights=True, export_apply=True)
@@ -123,7 +101,7 @@ def main():
     image = tilts(folder)
     build(image)
     export(os.path.join(folder, "normal_map_transform.gltf"))
-    bake_mapping()
+    bake_mapping(bpy.data.objects["plane"], MAPPING)
     export(os.path.join(folder, "normal_map_transform_baked.gltf"))
 
 

@@ -19,7 +19,9 @@ import os
 import sys
 
 import bpy
-from mathutils import Euler, Vector
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scene_parts import bake_mapping, mapped_image  # noqa: E402  (this folder, put on the path above)
 
 try:
     import numpy
@@ -53,26 +55,14 @@ def checker(folder):
 
 
 def material(name, image, mapping):
-    (lu, lv), rotation, (su, sv) = mapping
     m = bpy.data.materials.new(name)
     m.use_nodes = True
-    nodes, links = m.node_tree.nodes, m.node_tree.links
-    bsdf = nodes["Principled BSDF"]
+    bsdf = m.node_tree.nodes["Principled BSDF"]
     bsdf.inputs["Roughness"].default_value = 1.0
     bsdf.inputs["Emission Strength"].default_value = 1.0
-    tex = nodes.new("ShaderNodeTexImage")
-    tex.image = image
-    tex.interpolation = "Closest"
-    coords = nodes.new("ShaderNodeTexCoord")
-    node = nodes.new("ShaderNodeMapping")
-    node.vector_type = "POINT"
-    node.inputs["Location"].default_value = (lu, lv, 0.0)
-    node.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(rotation))
-    node.inputs["Scale"].default_value = (su, sv, 1.0)
-    links.new(coords.outputs["UV"], node.inputs["Vector"])
-    links.new(node.outputs["Vector"], tex.inputs["Vector"])
-    links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
-    links.new(tex.outputs["Color"], bsdf.inputs["Emission"])
+    tex = mapped_image(m, image, mapping)
+    m.node_tree.links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+    m.node_tree.links.new(tex.outputs["Color"], bsdf.inputs["Emission"])
     return m
 
 
@@ -94,16 +84,9 @@ def build(image):
 
 
 def bake_mappings():
-    """Applies each Mapping node to its plane's UVs (Blender's Point mapping: T · R · S) and removes it."""
-    for name, ((lu, lv), rotation, (su, sv)) in MAPPINGS.items():
-        plane = bpy.data.objects[name]
-        turn = Euler((0.0, 0.0, math.radians(rotation))).to_matrix()
-        for loop_uv in plane.data.uv_layers.active.data:
-            mapped = turn @ Vector((su * loop_uv.uv.x, sv * loop_uv.uv.y, 0.0)) + Vector((lu, lv, 0.0))
-            loop_uv.uv = (mapped.x, mapped.y)
-        nodes = plane.active_material.node_tree.nodes
-        nodes.remove(nodes["Mapping"])
-        nodes.remove(nodes["Texture Coordinate"])
+    """Applies each Mapping node to its plane's UVs and removes it."""
+    for name, mapping in MAPPINGS.items():
+        bake_mapping(bpy.data.objects[name], mapping)
 
 
 def export(path):

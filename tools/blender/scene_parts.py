@@ -1,7 +1,11 @@
 # What the scene makers in this folder build scenes from, as a user builds them in Blender: a
-# Principled BSDF material and a box made from the default cube. Imported by make_sun_room.py and
-# make_animated_scene.py (which put this folder on sys.path; Blender runs them as scripts).
+# Principled BSDF material, a box made from the default cube, a Mapping node placing an image and
+# the same Mapping baked into a mesh's UVs. Imported by the make_*.py scripts here (which put this
+# folder on sys.path; Blender runs them as scripts).
+import math
+
 import bpy
+from mathutils import Euler, Vector
 
 
 def principled(name, color, roughness=0.8, metallic=0.0):
@@ -27,3 +31,36 @@ def box(name, lo, hi, mat):
     obj.name = name
     obj.data.materials.append(mat)
     return obj
+
+
+def mapped_image(material, image, mapping):
+    """An Image Texture node (Closest) of `image` sampled through a Mapping node (Point type) from
+    the UVs, as a user tiles a texture: mapping = ((location u, v), rotation about Z in degrees,
+    (scale u, v)). Returns the image node; the exporter writes the Mapping as KHR_texture_transform."""
+    (lu, lv), rotation, (su, sv) = mapping
+    nodes, links = material.node_tree.nodes, material.node_tree.links
+    tex = nodes.new("ShaderNodeTexImage")
+    tex.image = image
+    tex.interpolation = "Closest"
+    coords = nodes.new("ShaderNodeTexCoord")
+    node = nodes.new("ShaderNodeMapping")
+    node.vector_type = "POINT"
+    node.inputs["Location"].default_value = (lu, lv, 0.0)
+    node.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(rotation))
+    node.inputs["Scale"].default_value = (su, sv, 1.0)
+    links.new(coords.outputs["UV"], node.inputs["Vector"])
+    links.new(node.outputs["Vector"], tex.inputs["Vector"])
+    return tex
+
+
+def bake_mapping(obj, mapping):
+    """Applies `mapping` (as mapped_image takes it; Blender's Point mapping: T · R · S) to the
+    object's active UVs and removes its material's Mapping and Texture Coordinate nodes."""
+    (lu, lv), rotation, (su, sv) = mapping
+    turn = Euler((0.0, 0.0, math.radians(rotation))).to_matrix()
+    for loop_uv in obj.data.uv_layers.active.data:
+        mapped = turn @ Vector((su * loop_uv.uv.x, sv * loop_uv.uv.y, 0.0)) + Vector((lu, lv, 0.0))
+        loop_uv.uv = (mapped.x, mapped.y)
+    nodes = obj.active_material.node_tree.nodes
+    nodes.remove(nodes["Mapping"])
+    nodes.remove(nodes["Texture Coordinate"])
