@@ -1,6 +1,7 @@
 #include "GiUpdateBench.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <vector>
@@ -167,6 +168,80 @@ void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& 
     };
     playback(true);
     playback(false);
+
+    // Recovery: after one move of half the object's size (changed boxes; with node animations,
+    // from their pose at 0.5 s to the one at 1 s), how far each of the next frames' indirect diffuse
+    // term is from the light it settles to, over the pixels the move changed (by more than 1 % of
+    // the image's mean between the settled images before and after): Σ|frame − settled| / Σ settled
+    // there (the bar: within 10 % by the 8th frame), and the share of the move's change not shown
+    // yet, Σ|frame − settled| / Σ|settled before − settled|.
+    {
+        constexpr int kRecoveryFrames = 8;
+        RenderSettings s = settings;
+        s.debug.view = View::IndirectDiffuse;
+        s.gi.voxelizeChangesOnly = true;
+        if (animated) applyNodeAnimations(scene, 0.5);
+        MoveCost before;
+        renderer.render(scene, camera, s, budget);
+        settle(before);
+        renderer.render(scene, camera, s, budget);
+        const std::vector<float> settledBefore = renderer.readHdrRgb();
+        std::vector<std::vector<float>> frames;
+        for (int f = 0; f < kRecoveryFrames; ++f) {
+            if (f == 0) {
+                if (animated) {
+                    applyNodeAnimations(scene, 1.0);
+                } else {
+                    moved.translation.x += 5.0f * step;
+                    scene.updateWorldTransforms();
+                    ++scene.geometryRevision;
+                }
+            }
+            renderer.render(scene, camera, s, budget);
+            frames.push_back(renderer.readHdrRgb());
+        }
+        MoveCost after;
+        settle(after);
+        renderer.render(scene, camera, s, budget);
+        const std::vector<float> settled = renderer.readHdrRgb();
+        double mean = 0.0;
+        for (const float v : settled) mean += v;
+        mean /= std::max<std::size_t>(settled.size(), 1);
+        std::vector<bool> changed(settled.size() / 3, false);
+        std::size_t changedPixels = 0;
+        for (std::size_t p = 0; p < changed.size(); ++p) {
+            double d = 0.0;
+            for (int c = 0; c < 3; ++c) d += std::abs(settled[3 * p + c] - settledBefore[3 * p + c]);
+            changed[p] = d > 0.03 * mean;  // 1 % of the mean per channel
+            changedPixels += changed[p];
+        }
+        std::printf("gi-move recovery (changed boxes, %zu pixels changed by the move), error against the settled light:",
+                    changedPixels);
+        int within = -1;
+        std::vector<double> missing;
+        for (int f = 0; f < kRecoveryFrames; ++f) {
+            double error = 0.0, total = 0.0, change = 0.0;
+            for (std::size_t p = 0; p < changed.size(); ++p) {
+                if (!changed[p]) continue;
+                for (int c = 0; c < 3; ++c) {
+                    error += std::abs(frames[static_cast<std::size_t>(f)][3 * p + c] - settled[3 * p + c]);
+                    total += settled[3 * p + c];
+                    change += std::abs(settledBefore[3 * p + c] - settled[3 * p + c]);
+                }
+            }
+            const double relative = total > 0.0 ? error / total : 0.0;
+            if (within < 0 && relative <= 0.1) within = f + 1;
+            missing.push_back(change > 0.0 ? error / change : 0.0);
+            std::printf(" %.1f %%", 100.0 * relative);
+        }
+        std::printf("; the move's change not shown yet:");
+        for (const double m : missing) std::printf(" %.0f %%", 100.0 * m);
+        if (within > 0)
+            std::printf("; within 10 %% from frame %d (bar: 8)\n", within);
+        else
+            std::printf("; not within 10 %% in %d frames (bar: 8), settled after %d more\n", kRecoveryFrames,
+                        after.frames);
+    }
 
     scene.nodes = restNodes;
     scene.updateWorldTransforms();
