@@ -183,6 +183,7 @@ int App::run() {
         previousTime = now;
         frameTimer_.add(workSeconds);
         if (previousRendered_) lastRenderSeconds_ = workSeconds;
+        if (previousRendered_ && !previousInjected_) renderEstimateSeconds_ = workSeconds;
 
         imgui_->beginFrame();
         input_.updateFlyCamera(std::min(static_cast<float>(workSeconds), kMaxCameraStep));
@@ -226,7 +227,7 @@ int App::run() {
             .shadersReloaded = std::exchange(shadersReloaded_, false),
         };
         const RedrawReason reason = redraw_.decide(inputs, pending, viewport_.redrawOnDemand);
-        const FrameWork work = redraw_.work(reason, now, lastRenderSeconds_);
+        const FrameWork work = redraw_.work(reason, now, renderEstimateSeconds_);
         const bool render = work == FrameWork::Render;
         if (render) {
             renderer_->setOverlay(inputs.overlay);
@@ -242,9 +243,11 @@ int App::run() {
         referenceViewer_.update(doc_.scene, view, inputs.settings, *renderer_);
         if (render) redraw_.rendered(std::move(inputs), reason, now);
         previousRendered_ = render;
+        previousInjected_ = render && (renderer_->stats().injected || renderer_->stats().voxelized);
         lastFrame_ = {
             .renderScale = renderScale,
             .rendered = render,
+            .giOnly = work == FrameWork::GiOnly,
             .reason = redrawReasonName(reason),
             .framesReused = render ? 0 : lastFrame_.framesReused + 1,
             .renderFrameMs = lastRenderSeconds_ * 1000.0,

@@ -108,6 +108,7 @@ namespace {
 // The compact overlay's second line: is the image this frame's, and is the light done.
 std::string frameState(const FrameStats& stats, const ViewportFrameInfo& frame) {
     std::string state = frame.rendered ? "rendered (" + std::string(frame.reason) + ")"
+                        : frame.giOnly ? "GI only, image reused " + std::to_string(frame.framesReused)
                                        : "idle, reused " + std::to_string(frame.framesReused);
     char gi[64] = "";
     if (stats.giUpdateDone < 1.0f)
@@ -162,6 +163,12 @@ glm::vec4 drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, co
     // Redraw on demand: say whether the image and the numbers below come from this frame.
     if (frame.rendered) {
         ImGui::Text("3D frame rendered (%.*s)", static_cast<int>(frame.reason.size()), frame.reason.data());
+    } else if (frame.giOnly) {
+        ImGui::TextDisabled("GI only: last image reused (%d)", frame.framesReused);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "The GI worked under its time budget (GI ms / frame) without rendering the image;\n"
+                "it is rendered again when the update completes, and now and then meanwhile.");
     } else {
         ImGui::TextDisabled("idle: last frame reused (%d)", frame.framesReused);
         if (ImGui::IsItemHovered())

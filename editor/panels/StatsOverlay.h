@@ -23,6 +23,7 @@ namespace lit::editor {
 struct ViewportFrameInfo {
     float renderScale = 1.0f;    // lowered while the camera moves (ViewportSettings::interactiveFpsTarget)
     bool rendered = true;        // the 3D image was rendered, else the last one was shown again
+    bool giOnly = false;         // not rendered, but the GI worked (Renderer::advanceGi)
     std::string_view reason;     // why it was rendered (redrawReasonName)
     int framesReused = 0;        // frames in a row that showed the last rendered image again
     double renderFrameMs = 0.0;  // how long the last frame that rendered took (update, render, present)
