@@ -19,9 +19,9 @@
 // duration, so rendering takes at most a quarter of the time while an update runs and a tenth
 // while the refinement does (its light changes little from one image to the next). A render at
 // 1280×720 costs 170-350 ms on llvmpipe while the GI's share of a frame is 25 ms
-// (ViewportSettings::giMillisecondsPerFrame): rendering every frame made the refinement's frames
-// 320 ms each; now the UI answers in the frames between. On a GPU, where a render costs a few ms,
-// every frame renders.
+// (ViewportSettings::giMillisecondsPerFrame): an image in every such frame would make each of
+// them cost a render, so the UI answers in the frames between. On a GPU, where a render costs a
+// few ms, every frame renders.
 // Window-free (lit_editor_core): tests/editor/test_viewport_redraw.cpp.
 
 #include <cstdint>
