@@ -251,6 +251,7 @@ int App::run() {
             .reason = redrawReasonName(reason),
             .framesReused = render ? 0 : lastFrame_.framesReused + 1,
             .renderFrameMs = lastRenderSeconds_ * 1000.0,
+            .giBudgetMs = std::max(static_cast<double>(viewport_.giMillisecondsPerFrame), 0.0),
         };
         if (options_.frameLog) {
             frameLog_.add({now, renderScale, renderSize, cameraMoved_});

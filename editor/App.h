@@ -154,9 +154,9 @@ private:
     ViewportFrameInfo lastFrame_;     // the last frame, for the performance overlay
     bool previousRendered_ = false;   // the previous frame rendered the 3D image
     double lastRenderSeconds_ = 0.0;  // how long the last frame that rendered took, s
-    // What a render costs, s: the last rendered frame that did not voxelize or inject (whose GI
-    // work of an edit, 1.8 s on opening the Cornell box at 128³, would space the images that
-    // frames working on the GI render far apart: ViewportRedraw::work). 0 until one.
+    // What a render costs, s: the last rendered frame that did not voxelize or inject (an edit's
+    // GI work, seconds on opening a scene, would space the images that frames working on the GI
+    // render far apart: ViewportRedraw::work). 0 until one.
     double renderEstimateSeconds_ = 0.0;
     bool previousInjected_ = false;  // the previous frame rendered and voxelized or injected
     bool shadersReloaded_ = false;    // changed shader files were reloaded after the last frame

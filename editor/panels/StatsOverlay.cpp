@@ -1,5 +1,7 @@
 #include "panels/StatsOverlay.h"
 
+#include "gi/GiPacer.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -193,17 +195,25 @@ glm::vec4 drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, co
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(stats.giShowingPrevious
                                   ? "The light of the edited geometry is traced a part of the voxels a frame (Render "
-                                    "settings, Update voxels / frame); the indirect diffuse light shown is the last "
+                                    "settings, GI ms / frame); the indirect diffuse light shown is the last "
                                     "complete one until then, and swaps to the new one at 100 %%"
                                   : "The light of the last edit is traced a part of the voxels a frame (Render "
-                                    "settings, Update voxels / frame); until 100 %% some voxels hold the light from "
+                                    "settings, GI ms / frame); until 100 %% some voxels hold the light from "
                                     "before the edit");
     } else if (!stats.giUpdateStage.empty()) {
         ImGui::TextDisabled("GI %s", stats.giUpdateStage.c_str());
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("The light is right; each round traces every voxel again with other directions, "
                               "averaging out the faint bands of a one-frame trace");
-    } else if (stats.giBounces > 0 && !stats.giRefining) {
+    }
+    // While GI work is in flight: how much of its time budget the last measured frame used.
+    if ((stats.giUpdateDone < 1.0f || !stats.giUpdateStage.empty()) && frame.giBudgetMs > 0.0) {
+        ImGui::TextDisabled("GI work %.1f of %.1f ms a frame", spreadGiMs(profiler.timings()), frame.giBudgetMs);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("GPU time of the bounces, the voxel irradiance and its filter in the last measured frame,\n"
+                              "against Render settings, GI ms / frame (the edit's own voxelization and injection\n"
+                              "are not spread and not counted)");
+    } else if (stats.giBounces > 0 && !stats.giRefining && stats.giUpdateDone >= 1.0f && stats.giUpdateStage.empty()) {
         if (stats.giEveryBounce)
             ImGui::TextDisabled("GI converged: every bounce (%d)", stats.giBounces);
         else

@@ -27,6 +27,7 @@ struct ViewportFrameInfo {
     std::string_view reason;     // why it was rendered (redrawReasonName)
     int framesReused = 0;        // frames in a row that showed the last rendered image again
     double renderFrameMs = 0.0;  // how long the last frame that rendered took (update, render, present)
+    double giBudgetMs = 0.0;     // the GI's time budget a frame (ViewportSettings::giMillisecondsPerFrame; 0: none)
 };
 
 // `details`: the long form (toggled by the overlay's button); `voxels`: the renderer's voxel

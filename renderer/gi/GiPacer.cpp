@@ -11,6 +11,14 @@ namespace {
 constexpr std::size_t kMaxWaiting = 16;
 }  // namespace
 
+double spreadGiMs(const std::vector<PassTiming>& timings) {
+    double ms = 0.0;
+    for (const PassTiming& t : timings)
+        if (t.ran && (t.name == "bounces" || t.name == "voxel irradiance" || t.name == "voxel irradiance filter"))
+            ms += t.gpuMs;
+    return ms;
+}
+
 GiBudget GiPacer::paced(const GiBudget& budget) const {
     if (!(budget.milliseconds > 0.0)) return budget;
     GiBudget out = budget;

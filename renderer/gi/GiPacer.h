@@ -13,10 +13,16 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <vector>
 
+#include "Profiler.h"
 #include "gi/GiBudget.h"
 
 namespace lit {
+
+// The GPU time of the spread GI passes (the bounces, the voxel irradiance and its filter) among
+// one frame's timings: what GiBudget::milliseconds bounds.
+double spreadGiMs(const std::vector<PassTiming>& timings);
 
 class GiPacer {
 public:

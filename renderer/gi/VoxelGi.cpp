@@ -61,11 +61,7 @@ void VoxelGi::measureSpreadWork() {
     for (const std::vector<PassTiming>& timings : profiler_.recentFrames()) {
         if (timings.empty() || timings.front().frame <= lastMeasuredFrame_) continue;
         lastMeasuredFrame_ = timings.front().frame;
-        double ms = 0.0;
-        for (const PassTiming& t : timings)
-            if (t.ran && (t.name == "bounces" || t.name == "voxel irradiance" || t.name == "voxel irradiance filter"))
-                ms += t.gpuMs;
-        pacer_.measured(lastMeasuredFrame_, ms);
+        pacer_.measured(lastMeasuredFrame_, spreadGiMs(timings));
     }
 }
 
