@@ -44,10 +44,10 @@ spp="${LIT_SCREENSHOT_SPP:-512}"
 
 # The editor. Keys of a camera path in front of the box, seen from further back and to the side
 # so the curve and its key frusta show; the tall box selected (outline, gizmo) in the inspector.
-# "wait refined" lets the cached mode's update finish (spread over frames: at 128³ about 6 frames
-# for the bounce and 6 for the irradiance) and then its refinement rounds (about 180 frames), so the
-# GI is captured converged and the overlay shows the steady frame, as a user sees them once the
-# light has settled.
+# "wait refined" lets the cached mode's update finish (spread over frames under the editor's GI
+# time budget: about 10 s at 128³ on llvmpipe) and then its refinement rounds (about a minute), so
+# the GI is captured converged and the overlay shows the steady frame, as a user sees them once
+# the light has settled.
 script="$tmpdir/script.txt"
 cat >"$script" <<SCRIPT
 camera 0.9 1.0 4.1 0 1 0
