@@ -109,6 +109,13 @@ struct Renderer::Impl {
     bool updateLights(const Scene& scene, const RenderSettings& settings);  // true: the lights changed
     gpu::FrameUniforms bindFrame(const Scene& scene, const CameraView& camera, const RenderSettings& settings);
     void drawShadowMaps(const Scene& scene, const RenderSettings& settings);
+    // What every frame does first, a GI-only one too: the scene's changes, the light table and
+    // the frame's uniforms bound, the shadow maps when the lights changed (then shadowsDirty).
+    struct SceneFrame {
+        gpu::FrameUniforms uniforms;
+        bool shadowsDirty = false;
+    };
+    SceneFrame beginScene(const Scene& scene, const CameraView& camera, const RenderSettings& settings);
     void drawGBuffer(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
     void updateGi(const Scene& scene, const RenderSettings& settings, const GiBudget& budget, bool shadowsDirty);
     void lightTerms(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
@@ -246,10 +253,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     r.stats = {};
     r.counters = {};
 
-    r.syncScene(scene);
-    const bool shadowsDirty = r.updateLights(scene, settings);
-    const gpu::FrameUniforms frame = r.bindFrame(scene, camera, settings);
-    if (shadowsDirty) r.drawShadowMaps(scene, settings);
+    const auto [frame, shadowsDirty] = r.beginScene(scene, camera, settings);
     r.drawGBuffer(scene, settings, frame);
     // GI: the voxel volume follows the scene; nothing is allocated while GI is off.
     if (settings.gi.enabled) r.updateGi(scene, settings, budget, shadowsDirty);
@@ -278,13 +282,19 @@ void Renderer::advanceGi(const Scene& scene, const CameraView& camera, const Ren
     if (!settings.gi.enabled || !r.gpuScene) return;
     r.profiler.beginFrame();
     r.gi.reportUpdate();
-    r.syncScene(scene);
-    const bool shadowsDirty = r.updateLights(scene, settings);
-    r.bindFrame(scene, camera, settings);
-    if (shadowsDirty) r.drawShadowMaps(scene, settings);
-    r.updateGi(scene, settings, budget, shadowsDirty);
+    r.updateGi(scene, settings, budget, r.beginScene(scene, camera, settings).shadowsDirty);
     r.stats.voxelBytes = r.gi.bytes();
     r.profiler.endFrame();
+}
+
+Renderer::Impl::SceneFrame Renderer::Impl::beginScene(const Scene& scene, const CameraView& camera,
+                                                       const RenderSettings& settings) {
+    syncScene(scene);
+    SceneFrame f;
+    f.shadowsDirty = updateLights(scene, settings);
+    f.uniforms = bindFrame(scene, camera, settings);
+    if (f.shadowsDirty) drawShadowMaps(scene, settings);
+    return f;
 }
 
 void Renderer::Impl::syncScene(const Scene& scene) {

@@ -30,15 +30,7 @@ void InjectPass::execute(const VoxelVolume& volume, const InjectOptions& options
     const bool writeLevel0 = options.writeLevel0 || !writeDirect;
     glProgramUniform1i(program.id(), program.location("uWriteDirect"), writeDirect ? 1 : 0);
     glProgramUniform1i(program.id(), program.location("uWriteLevel0"), writeLevel0 ? 1 : 0);
-    std::array<glm::ivec4, LIT_CHANGED_BOXES> lo{}, hi{};
-    const std::size_t boxes = writeLevel0 ? 0 : std::min<std::size_t>(options.level0Boxes.size(), LIT_CHANGED_BOXES);
-    for (std::size_t i = 0; i < boxes; ++i) {
-        lo[i] = glm::ivec4(options.level0Boxes[i].min, 0);
-        hi[i] = glm::ivec4(options.level0Boxes[i].max, 0);
-    }
-    glProgramUniform1i(program.id(), program.location("uLevel0BoxCount"), static_cast<GLint>(boxes));
-    glProgramUniform4iv(program.id(), program.location("uLevel0BoxMin"), LIT_CHANGED_BOXES, &lo[0].x);
-    glProgramUniform4iv(program.id(), program.location("uLevel0BoxMax"), LIT_CHANGED_BOXES, &hi[0].x);
+    setBoxUniforms(program, "uLevel0Box", writeLevel0 ? std::span<const VoxelBox>{} : std::span(options.level0Boxes));
     if (writeDirect)
         glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                            volume.radianceFormat());

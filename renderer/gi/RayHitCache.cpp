@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <vector>
+
+#include "gi/VoxelDispatch.h"
 
 namespace lit {
 
@@ -60,14 +63,13 @@ void RayHitCache::bind(const gl::Program& program, ConeFeatures features, RayHit
     glProgramUniform1i(program.id(), program.location("uRayHits"), !cached ? 0 : (hits == RayHits::Record ? 1 : 2));
     if (!cached) return;
     glProgramUniform1ui(program.id(), program.location("uRayEpoch"), epoch_);
-    std::array<glm::ivec4, LIT_CHANGED_BOXES> lo{}, hi{};
-    for (std::size_t i = 0; i < changed_.size(); ++i) {
-        lo[i] = glm::ivec4(changed_[i].box.min, static_cast<int>(changed_[i].epoch));
-        hi[i] = glm::ivec4(changed_[i].box.max, 0);
+    std::vector<VoxelBox> boxes;
+    std::vector<int> epochs;  // in w: the epoch of each change
+    for (const ChangedBox& c : changed_) {
+        boxes.push_back(c.box);
+        epochs.push_back(static_cast<int>(c.epoch));
     }
-    glProgramUniform1i(program.id(), program.location("uChangedBoxCount"), static_cast<GLint>(changed_.size()));
-    glProgramUniform4iv(program.id(), program.location("uChangedBoxMin"), LIT_CHANGED_BOXES, &lo[0].x);
-    glProgramUniform4iv(program.id(), program.location("uChangedBoxMax"), LIT_CHANGED_BOXES, &hi[0].x);
+    setBoxUniforms(program, "uChangedBox", boxes, epochs);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_VOXEL_RAY_HITS);
     epochs_.bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_VOXEL_RAY_EPOCHS);

@@ -2,6 +2,10 @@
 
 #include <shared.h>
 
+#include <algorithm>
+#include <array>
+#include <string>
+
 #include "gi/VoxelVolume.h"
 
 namespace lit {
@@ -37,6 +41,20 @@ void dispatchListRange(const VoxelVolume& volume, const gl::Program& program, bo
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
     glDispatchCompute((range.count + LIT_INJECT_LIST_GROUP_SIZE - 1) / LIT_INJECT_LIST_GROUP_SIZE, 1, 1);
+}
+
+void setBoxUniforms(const gl::Program& program, const char* name, std::span<const VoxelBox> boxes,
+                    std::span<const int> boxW) {
+    std::array<glm::ivec4, LIT_CHANGED_BOXES> lo{}, hi{};
+    const std::size_t count = std::min<std::size_t>(boxes.size(), LIT_CHANGED_BOXES);
+    for (std::size_t i = 0; i < count; ++i) {
+        lo[i] = glm::ivec4(boxes[i].min, i < boxW.size() ? boxW[i] : 0);
+        hi[i] = glm::ivec4(boxes[i].max, 0);
+    }
+    const std::string prefix(name);
+    glProgramUniform1i(program.id(), program.location((prefix + "Count").c_str()), static_cast<GLint>(count));
+    glProgramUniform4iv(program.id(), program.location((prefix + "Min").c_str()), LIT_CHANGED_BOXES, &lo[0].x);
+    glProgramUniform4iv(program.id(), program.location((prefix + "Max").c_str()), LIT_CHANGED_BOXES, &hi[0].x);
 }
 
 void useWithVoxelSurfaces(const gl::Program& program, const VoxelVolume& volume, ConeFeatures features) {

@@ -4,8 +4,10 @@
 // over the whole N³ grid when the list overflowed.
 
 #include <cstdint>
+#include <span>
 
 #include "gi/ConeProgram.h"
+#include "gi/VoxelRegions.h"
 #include "gl/Shader.h"
 
 namespace lit {
@@ -27,6 +29,12 @@ void dispatchOverVoxels(const VoxelVolume& volume, const gl::Program& program, b
 // The list range `range` when `overList` and range.count > 0 (a direct dispatch sized for it),
 // else the whole list or grid as dispatchOverVoxels; for programs with LIT_VOXEL_LIST_RANGE_READER.
 void dispatchListRange(const VoxelVolume& volume, const gl::Program& program, bool overList, VoxelRange range);
+
+// Sets `program`'s box list: <name>Count, <name>Min[LIT_CHANGED_BOXES] (xyz first voxel, w
+// boxW[i] when given) and <name>Max (xyz one past the last). Boxes past LIT_CHANGED_BOXES are
+// dropped (the tracker never makes more).
+void setBoxUniforms(const gl::Program& program, const char* name, std::span<const VoxelBox> boxes,
+                    std::span<const int> boxW = {});
 
 // Makes `program` current with what the voxel passes that gather light read: the voxel
 // uniforms, the radiance volume (and its directional chains with anisotropic features), the

@@ -22,14 +22,9 @@ import sys
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import box, principled  # noqa: E402  (this folder, put on the path above)
+from scene_parts import box, enable_gltf_exporter, principled  # noqa: E402  (this folder, put on the path above)
 
-try:
-    import numpy
-
-    numpy.bool = bool  # Blender 3.4's glTF exporter still uses the alias numpy removed
-except ImportError:
-    sys.exit("make_animated_scene.py: Blender's glTF exporter needs numpy: run tools/install-deps.sh --scene-tools")
+enable_gltf_exporter()
 
 FPS = 24
 END_FRAME = 2 * FPS  # 2 s

@@ -21,14 +21,9 @@ import sys
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import bake_mapping, mapped_image  # noqa: E402  (this folder, put on the path above)
+from scene_parts import bake_mapping, enable_gltf_exporter, mapped_image  # noqa: E402  (this folder, put on the path above)
 
-try:
-    import numpy
-
-    numpy.bool = bool  # Blender 3.4's glTF exporter still uses the alias numpy removed
-except ImportError:
-    sys.exit("make_texture_transform.py: Blender's glTF exporter needs numpy: run tools/install-deps.sh --scene-tools")
+enable_gltf_exporter()
 
 WIDTH, HEIGHT = 256, 128
 RED, BLUE = (1.0, 0.0, 0.0, 1.0), (0.0, 0.0, 1.0, 1.0)

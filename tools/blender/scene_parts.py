@@ -3,9 +3,23 @@
 # the same Mapping baked into a mesh's UVs. Imported by the make_*.py scripts here (which put this
 # folder on sys.path; Blender runs them as scripts).
 import math
+import os
+import sys
 
 import bpy
 from mathutils import Euler, Vector
+
+
+def enable_gltf_exporter():
+    """Blender 3.4's glTF exporter still uses numpy's removed `numpy.bool` alias: set it, or exit
+    with what to install when Blender's Python has no numpy."""
+    try:
+        import numpy
+
+        numpy.bool = bool
+    except ImportError:
+        script = os.path.basename(sys.argv[sys.argv.index("--python") + 1]) if "--python" in sys.argv else "scene maker"
+        sys.exit(script + ": Blender's glTF exporter needs numpy: run tools/install-deps.sh --scene-tools")
 
 
 def principled(name, color, roughness=0.8, metallic=0.0):

@@ -85,18 +85,22 @@ void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& 
     const bool animated = summarizeNodeAnimations(scene).nodes > 0;
     const std::vector<Node> restNodes = scene.nodes;
     double seconds = 0.0;
-    // One move and its frame (the edit's GI passes run in it), with or without changed boxes.
-    const auto moveAndRender = [&](bool changesOnly, float by) {
-        RenderSettings s = settings;
-        s.gi.voxelizeChangesOnly = changesOnly;
+    // A move: the node animations posed at `at` s, or the node moved `by` m along x.
+    const auto moveTo = [&](double at, float by) {
         if (animated) {
-            seconds += 1.0 / 30.0;
-            applyNodeAnimations(scene, seconds);
+            applyNodeAnimations(scene, at);
         } else {
             moved.translation.x += by;
             scene.updateWorldTransforms();
             ++scene.geometryRevision;
         }
+    };
+    // One move and its frame (the edit's GI passes run in it), with or without changed boxes.
+    const auto moveAndRender = [&](bool changesOnly, float by) {
+        RenderSettings s = settings;
+        s.gi.voxelizeChangesOnly = changesOnly;
+        seconds += 1.0 / 30.0;
+        moveTo(seconds, by);
         renderer.render(scene, camera, s, budget);
         renderer.profiler().flush();
     };
@@ -180,7 +184,7 @@ void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& 
         RenderSettings s = settings;
         s.debug.view = View::IndirectDiffuse;
         s.gi.voxelizeChangesOnly = true;
-        if (animated) applyNodeAnimations(scene, 0.5);
+        if (animated) moveTo(0.5, 0.0f);
         MoveCost before;
         renderer.render(scene, camera, s, budget);
         settle(before);
@@ -188,15 +192,7 @@ void benchGiMoves(int rounds, Scene& scene, const CameraView& camera, Renderer& 
         const std::vector<float> settledBefore = renderer.readHdrRgb();
         std::vector<std::vector<float>> frames;
         for (int f = 0; f < kRecoveryFrames; ++f) {
-            if (f == 0) {
-                if (animated) {
-                    applyNodeAnimations(scene, 1.0);
-                } else {
-                    moved.translation.x += 5.0f * step;
-                    scene.updateWorldTransforms();
-                    ++scene.geometryRevision;
-                }
-            }
+            if (f == 0) moveTo(1.0, 5.0f * step);
             renderer.render(scene, camera, s, budget);
             frames.push_back(renderer.readHdrRgb());
         }
