@@ -118,6 +118,19 @@ void setMaterial(Parser& p, std::string_view name, Material& m, int rememberedTe
         if (auto v = p.vec3(); v && p.require(allIn(*v, 0.0f, 1.0f), "values must be in [0, 1]")) m.emissiveFactor = *v;
     } else if (name == "material.emissiveStrength") {
         if (auto v = p.number(); v && p.require(*v >= 0.0f, "must not be negative")) m.emissiveStrength = *v;
+    } else if (name == "material.ior") {
+        if (auto v = p.number(); v && p.require(*v == 0.0f || *v >= 1.0f, "must be at least 1 (or 0, a mirror)"))
+            m.ior = *v;
+    } else if (name == "material.specular") {
+        if (auto v = p.number(); v && p.require(*v >= 0.0f && *v <= 1.0f, "must be in [0, 1]")) m.specularFactor = *v;
+    } else if (name == "material.specularTint") {
+        if (auto v = p.vec3(); v && p.require(allIn(*v, 0.0f, std::numeric_limits<float>::max()), "values must not be negative"))
+            m.specularColorFactor = *v;
+    } else if (name == "material.clearcoat") {
+        if (auto v = p.number(); v && p.require(*v >= 0.0f && *v <= 1.0f, "must be in [0, 1]")) m.clearcoatFactor = *v;
+    } else if (name == "material.clearcoatRoughness") {
+        if (auto v = p.number(); v && p.require(*v >= 0.0f && *v <= 1.0f, "must be in [0, 1]"))
+            m.clearcoatRoughness = *v;
     }
 }
 
@@ -177,7 +190,8 @@ const std::vector<std::string>& propertyNames() {
     static const std::vector<std::string> names{
         "node.translation",  "node.rotation",      "node.scale",       "node.name",
         "material.albedo",   "material.albedoTexture", "material.roughness", "material.metalness",
-        "material.emissive", "material.emissiveStrength",
+        "material.emissive", "material.emissiveStrength", "material.ior", "material.specular",
+        "material.specularTint", "material.clearcoat", "material.clearcoatRoughness",
         "light.type",        "light.color",        "light.intensity",  "light.range",
         "light.inner",       "light.outer",        "light.shadow",
         "camera.fov",        "camera.near",        "camera.far",

@@ -389,9 +389,11 @@ void Renderer::Impl::updateGi(const Scene& scene, const RenderSettings& settings
 // L_DD + L_DS from the lights and their shadow maps, then L_ID + L_IS from the voxel GI.
 void Renderer::Impl::lightTerms(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame) {
     shadow.bindMaps();
+    // The lighting passes read each pixel's specular layers from the material table (gbuffer.glsl).
+    gpuScene->materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
     {
         Profiler::Scope scope(profiler, "lighting");
-        direct.execute(terms, settings, ShadowKinds::of(lights));
+        direct.execute(terms, settings, {ShadowKinds::of(lights), {gpuScene->hasMaterialLayers()}});
     }
     if (settings.gi.enabled) {
         traceIndirect(scene, settings, frame);
@@ -406,7 +408,7 @@ void Renderer::Impl::traceIndirect(const Scene& scene, const RenderSettings& set
     const VoxelVolume& volume = gi.volume();
     if (!ConeTracePass::reducedPath(settings)) {  // every pixel at full resolution
         Profiler::Scope scope(profiler, "cone trace");
-        coneTrace.execute(terms, volume, settings);
+        coneTrace.execute(terms, volume, settings, gpuScene->hasMaterialLayers());
         resolve.resetHistory();
         return;
     }
@@ -433,17 +435,20 @@ void Renderer::Impl::traceIndirect(const Scene& scene, const RenderSettings& set
     {
         Profiler::Scope scope(profiler, "cone trace");
         gi.bindGather(settings);
-        coneTrace.executeReduced(volume, settings, sampling);
+        coneTrace.executeReduced(volume, settings, sampling, gpuScene->hasMaterialLayers());
     }
     waitForQueuedPasses();  // the resolve samples the low-resolution trace
     {
         Profiler::Scope scope(profiler, "indirect resolve");
         gbuffer.bindTargets();
-        resolve.execute(terms, coneTrace, volume, settings, sampling, frame.viewProjection);
+        resolve.execute(terms, coneTrace, volume, settings, sampling, frame.viewProjection,
+                        gpuScene->hasMaterialLayers());
     }
     {
         Profiler::Scope scope(profiler, "indirect fallback");
-        fallback.execute(resolve, ConeFeatures::of(settings));
+        ConeFeatures features = ConeFeatures::of(settings);
+        features.materialLayers = gpuScene->hasMaterialLayers();
+        fallback.execute(resolve, features);
     }
     if (settings.indirect.temporalAccumulation) ++temporalFrame;
 }

@@ -1,8 +1,10 @@
 #version 450 core
 // Cone-tracing pass: the two indirect terms of every pixel from the radiance volume.
-//   L_ID = albedo_d · Σ_i W_i/π · C_i                      (six diffuse cones, cone.glsl)
-//   L_IS = E(F0, roughness, n·v) · Σ_k w_k C(l_k) / Σ_k w_k   (N GGX-sampled cones, split sum, cone.glsl;
+//   L_ID = albedo_d · b · Σ_i W_i/π · C_i                  (six diffuse cones, cone.glsl)
+//   L_IS = E · Σ_k w_k C(l_k) / Σ_k w_k      (N GGX-sampled cones, split sum, cone.glsl;
 //          on rough diffuse surfaces C(l_k) is blended from the six diffuse cones instead)
+// with b = 1 − cc·Fc(n·v) what a clear coat lets through and E = indirectSpecularWeight, the
+// lobe traced at specularLobeRoughness (docs/MATERIALS.md).
 // both × indirect intensity (traceParams.x) × the material's ambient occlusion (G-buffer albedo.a).
 // Background pixels write 0. docs/GI.md derives the weights.
 #include "frame.glsl"
@@ -31,12 +33,14 @@ void main() {
     float maxDistance = voxel.traceParams.y;
 
     int count = clamp(voxel.traceOptions.x, 1, 8);
-    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);
+    float NdotV = max(dot(n, v), 0.0);
+    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness) * clearcoatBaseScale(s.clearcoat, NdotV);
     bool diffuseSurface = max(albedo.r, max(albedo.g, albedo.b)) > 0.0;
+    float lobeRoughness = specularLobeRoughness(s);
     // Rough specular on a surface with diffuse cones reuses them (cone.glsl). It does so also when
     // only L_IS is shown, so that the term views add up to the final image.
     bool reuse = uTraceTerms.y != 0 && diffuseSurface &&
-                 specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
+                 specularCanReuseDiffuseCones(alphaFromRoughness(lobeRoughness), count, voxel.traceParams.w);
     vec3 diffuse = vec3(0.0);
     vec3 cones[kDiffuseConeCount];
     if ((uTraceTerms.x != 0 || reuse) && diffuseSurface) {
@@ -46,8 +50,9 @@ void main() {
 
     vec3 specular = vec3(0.0);
     if (uTraceTerms.y != 0)
-        specular = traceSpecular(origin, n, v, specularF0(s.baseColor, s.metalness), s.roughness, count,
-                                 gl_FragCoord.xy, voxel.traceOptions.y, maxDistance, reuse, cones);
+        specular = indirectSpecularWeight(s.f0, s.f90, s.roughness, s.clearcoat, s.clearcoatRoughness, NdotV) *
+                   traceSpecular(origin, n, v, lobeRoughness, count, gl_FragCoord.xy, voxel.traceOptions.y,
+                                 maxDistance, reuse, cones);
     outIndirectDiffuse = vec4(diffuse * scale, 1.0);
     outIndirectSpecular = vec4(specular * scale, 1.0);
 }

@@ -1,9 +1,11 @@
 #version 450 core
 // Direct lighting pass: for every pixel, the two direct terms from all punctual lights.
-//   L_DD = Σ V · E · (albedo_d / π) · max(n·l, 0)                      (Lambert)
-//   L_DS = Σ V · E · D·G·F / (4 (n·l)(n·v)) · max(n·l, 0)              (GGX microfacet)
-// where E is the light's irradiance at normal incidence (docs/UNITS.md) and V the shadow-map
-// visibility. Emission is added to L_DD so that the four terms still sum to the final image.
+//   L_DD = Σ V · E · (albedo_d / π) · max(n·l, 0) · b                  (Lambert)
+//   L_DS = Σ V · E · (D·G·F / (4 (n·l)(n·v)) · b + cc · f_coat) · max(n·l, 0)   (GGX microfacet)
+// where E is the light's irradiance at normal incidence (docs/UNITS.md), V the shadow-map
+// visibility, b = 1 − cc·Fc(n·v) what a clear coat of weight cc lets through and f_coat its lobe
+// (docs/MATERIALS.md; the coat shares the shading normal here). Emission is added to L_DD so
+// that the four terms still sum to the final image.
 #include "frame.glsl"
 #include "gbuffer.glsl"
 #include "brdf.glsl"
@@ -28,7 +30,8 @@ void main() {
     vec3 n = shadingNormal(s.normal, v);
     float alpha = alphaFromRoughness(s.roughness);
     vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);
-    vec3 f0 = specularF0(s.baseColor, s.metalness);
+    float base = clearcoatBaseScale(s.clearcoat, max(dot(n, v), 0.0));
+    float coatAlpha = alphaFromRoughness(s.clearcoatRoughness);
 
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
@@ -41,8 +44,9 @@ void main() {
         float visibility = shadowVisibility(light, s.position, n, frame.exposure.y, uShadowNormalOffset);
         if (visibility <= 0.0) continue;
         vec3 E = ls.radiance * visibility * NdotL;
-        diffuse += E * albedo / PI;
-        specular += E * specularBrdf(n, v, ls.l, f0, alpha);
+        diffuse += E * albedo * (base / PI);
+        specular += E * specularBrdf(n, v, ls.l, s.f0, s.f90, alpha) * base;
+        if (s.clearcoat > 0.0) specular += E * s.clearcoat * specularBrdf(n, v, ls.l, kClearcoatF0, 1.0, coatAlpha);
     }
     outDirectDiffuse = vec4(diffuse + s.emissive, 1.0);
     outDirectSpecular = vec4(specular, 1.0);

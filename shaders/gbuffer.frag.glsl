@@ -14,8 +14,9 @@ layout(location = 0) out vec4 outAlbedo;    // rgb base colour (linear, stored s
 layout(location = 1) out vec4 outNormal;    // rgb world normal
 layout(location = 2) out vec4 outMaterial;  // r roughness, g metalness
 layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance
-// r: scene node index + 1 (0 = background); g: the primitive's index within the node's mesh.
-layout(location = 4) out uvec2 outNodeId;
+// r: scene node index + 1 (0 = background); g: the primitive's index within the node's mesh;
+// b: the material index (the lighting passes read the material's specular layers by it).
+layout(location = 4) out uvec4 outNodeId;
 
 layout(location = LIT_LOC_NODE_ID) uniform uint uNodeId;
 layout(location = LIT_LOC_PRIMITIVE) uniform uint uPrimitive;
@@ -71,5 +72,5 @@ void main() {
     outNormal = vec4(n, 1.0);
     outMaterial = vec4(clamp(roughness, 0.0, 1.0), clamp(metalness, 0.0, 1.0), 0.0, 1.0);
     outEmissive = vec4(emissive, 1.0);
-    outNodeId = uvec2(uNodeId, uPrimitive);
+    outNodeId = uvec4(uNodeId, uPrimitive, uint(uMaterialIndex), 0u);
 }

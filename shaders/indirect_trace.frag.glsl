@@ -95,6 +95,9 @@ void main() {
     ivec2 pixel = tracedPixel(ivec2(gl_FragCoord.xy));
     vec2 uv = (vec2(pixel) + 0.5) * frame.viewport.zw;
     Surface s = readSurface(pixel, uv);
+    // This pass traces the specular lobe's radiance only (the resolve weighs it): a smoother
+    // clear coat sets the lobe's roughness (docs/MATERIALS.md).
+    s.roughness = specularLobeRoughness(s);
     vec4 outDiffuse = vec4(0.0), outSpecular = vec4(0.0);
     outPacked = uvec4(0u);
     outGuide = uvec4(0u);

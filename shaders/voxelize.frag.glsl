@@ -4,6 +4,7 @@
 // that lands in a voxel counts equally, whatever the order.
 #include "voxel.glsl"
 #include "material.glsl"
+#include "brdf.glsl"
 
 in VoxelFragment {
     vec3 worldNormal;
@@ -71,7 +72,9 @@ void main() {
     // The first fragment of a voxel (the albedo's compare-and-swap from 0 succeeds, as the first
     // try of atomicAverageRgb would) appends it to the occupied-voxel list unless it is listed
     // already (a voxelization of changed boxes keeps the list); later ones average.
-    vec3 albedo = clamp(baseColor.rgb, 0.0, 1.0);
+    // A clear coat passes 1 − weight·Fc of the light to the base and back: its mean over the
+    // hemisphere here, since a voxel's light leaves in every direction (docs/MATERIALS.md).
+    vec3 albedo = clamp(baseColor.rgb, 0.0, 1.0) * (1.0 - m.clearcoat.x * kClearcoatMeanFresnel);
     uint voxelIndex = uint(v.x) + uint(n) * (uint(v.y) + uint(n) * uint(v.z));
     uint listedBit = 1u << (voxelIndex & 31u);
     if (imageAtomicCompSwap(voxelAlbedo, v, 0u, averageRgbAdd(0u, albedo)) == 0u) {

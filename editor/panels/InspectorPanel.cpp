@@ -235,7 +235,40 @@ void InspectorPanel::drawMaterial(Document& doc, int materialIndex) {
     changed = ImGui::DragFloat("Emissive strength", &strength, 0.05f, 0.0f, 1000.0f, "%.2f");
     tooltip("Multiplier on the emissive colour (KHR_materials_emissive_strength)");
     track(doc, "Emissive Strength", Change::Material, changed, [&] { material.emissiveStrength = strength; });
+    drawSpecularLayers(doc, material);
     ImGui::PopID();
+}
+
+// KHR_materials_ior, _specular and _clearcoat (docs/MATERIALS.md): their factors.
+void InspectorPanel::drawSpecularLayers(Document& doc, Material& material) {
+    if (!ImGui::TreeNodeEx("Specular and clear coat", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    float ior = material.ior;
+    bool changed = ImGui::DragFloat("IOR", &ior, 0.005f, 1.0f, 3.0f, "%.3f");
+    tooltip("Index of refraction of the dielectric (KHR_materials_ior): F0 = ((IOR - 1)/(IOR + 1))^2, 0.04 at 1.5");
+    track(doc, "IOR", Change::Material, changed, [&] { material.ior = std::max(ior, 1.0f); });
+
+    float specular = material.specularFactor;
+    changed = ImGui::SliderFloat("Specular", &specular, 0.0f, 1.0f, "%.3f");
+    tooltip("Strength of the dielectric's specular reflection, F0 and F90 alike (KHR_materials_specular)");
+    track(doc, "Specular", Change::Material, changed, [&] { material.specularFactor = specular; });
+
+    glm::vec3 tint = material.specularColorFactor;
+    changed = ImGui::ColorEdit3("Specular tint", &tint.x, kColourFlags | ImGuiColorEditFlags_HDR);
+    tooltip("Colour of the dielectric's F0, linear RGB, may exceed 1 (KHR_materials_specular); F0 is capped at 1");
+    track(doc, "Specular Tint", Change::Material, changed,
+          [&] { material.specularColorFactor = glm::max(tint, glm::vec3(0.0f)); });
+
+    float coat = material.clearcoatFactor;
+    changed = ImGui::SliderFloat("Clear coat", &coat, 0.0f, 1.0f, "%.3f");
+    tooltip("Weight of a clear dielectric coat (IOR 1.5) over the material (KHR_materials_clearcoat)");
+    track(doc, "Clear Coat", Change::Material, changed, [&] { material.clearcoatFactor = coat; });
+
+    float coatRoughness = material.clearcoatRoughness;
+    changed = ImGui::SliderFloat("Coat roughness", &coatRoughness, 0.0f, 1.0f, "%.3f");
+    tooltip("Perceptual roughness of the clear coat");
+    track(doc, "Clear Coat Roughness", Change::Material, changed,
+          [&] { material.clearcoatRoughness = coatRoughness; });
+    ImGui::TreePop();
 }
 
 void InspectorPanel::drawLight(Document& doc, int lightIndex) {

@@ -19,6 +19,7 @@ public:
 private:
     void drawTransform(Document& doc, int nodeIndex);
     void drawMaterial(Document& doc, int materialIndex);
+    void drawSpecularLayers(Document& doc, Material& material);
     void drawLight(Document& doc, int lightIndex);
     void drawCamera(Document& doc, int cameraIndex);
 

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "RenderSettings.h"
+#include "passes/MaterialLayersVariant.h"
 
 namespace lit {
 
@@ -17,7 +18,8 @@ std::string ConeFeatures::defines() const {
         return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
     };
     return define("LIT_CONE_ANISOTROPIC", anisotropic) + define("LIT_CONE_FOOTPRINT", footprint) +
-           define("LIT_VOXEL_IRRADIANCE", voxelIrradiance) + define("LIT_VOXEL_RAYS", voxelRays > 0);
+           define("LIT_VOXEL_IRRADIANCE", voxelIrradiance) + define("LIT_VOXEL_RAYS", voxelRays > 0) +
+           MaterialLayersVariant{materialLayers}.defines();
 }
 
 ConeProgram::ConeProgram(std::filesystem::path root, std::string label, std::vector<gl::ShaderStageSource> stages,
@@ -31,7 +33,7 @@ std::string ConeFeatures::label() const {
     if (anisotropic) suffix += " (anisotropic)";
     if (footprint) suffix += " (footprint)";
     if (voxelRays > 0) suffix += " (voxel rays)";
-    return suffix;
+    return suffix + MaterialLayersVariant{materialLayers}.label();
 }
 
 const gl::Program& ConeProgram::get(ConeFeatures features) { return variants_.get(features); }

@@ -28,12 +28,16 @@ struct ConeFeatures {
     // bounces 2..N; GiSettings::voxelRays): > 0 compiles the per-voxel passes with rays marched
     // through the voxel grid (LIT_VOXEL_RAYS) instead of cones; the count itself is a uniform.
     int voxelRays = 0;
+    // The passes that light the G-buffer: whether the scene's materials have specular layers
+    // (MaterialLayersVariant, passes/MaterialLayersVariant.h); the voxel passes leave it on.
+    bool materialLayers = true;
 
     static ConeFeatures of(const RenderSettings& settings);
     std::string defines() const;
     std::string label() const;  // " (anisotropic)" ..., for the program's name
     int index() const {
-        return (anisotropic ? 1 : 0) + (footprint ? 2 : 0) + (voxelIrradiance ? 4 : 0) + (voxelRays > 0 ? 8 : 0);
+        return (anisotropic ? 1 : 0) + (footprint ? 2 : 0) + (voxelIrradiance ? 4 : 0) + (voxelRays > 0 ? 8 : 0) +
+               (materialLayers ? 16 : 0);
     }
     bool operator==(const ConeFeatures&) const = default;
 };
@@ -53,7 +57,7 @@ public:
     void appendBuilt(std::vector<gl::Program*>& out) { variants_.appendBuilt(out); }
 
 private:
-    gl::ProgramVariants<16> variants_;  // by ConeFeatures::index()
+    gl::ProgramVariants<32> variants_;  // by ConeFeatures::index()
 };
 
 }  // namespace lit

@@ -68,7 +68,8 @@ ConeTracePass::Work ConeTracePass::workFor(const RenderSettings& settings) {
     return work;
 }
 
-void ConeTracePass::execute(const LightingTerms& terms, const VoxelVolume& volume, const RenderSettings& settings) {
+void ConeTracePass::execute(const LightingTerms& terms, const VoxelVolume& volume, const RenderSettings& settings,
+                            bool materialLayers) {
     const Work work = workFor(settings);
     if ((!work.diffuse && !work.specular) || !volume.radiance()) {
         terms.clearIndirect();
@@ -80,7 +81,8 @@ void ConeTracePass::execute(const LightingTerms& terms, const VoxelVolume& volum
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-    const ConeFeatures features = ConeFeatures::of(settings);
+    ConeFeatures features = ConeFeatures::of(settings);
+    features.materialLayers = materialLayers;
     if (features.anisotropic) volume.bindDirectional();
     const gl::Program& program = program_.get(features);
     program.use();
@@ -126,7 +128,7 @@ ConeTracePass::Sampling ConeTracePass::samplingFor(std::uint64_t frame, int scal
 }
 
 void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettings& settings,
-                                   const Sampling& sampling) {
+                                   const Sampling& sampling, bool materialLayers) {
     const int scale = indirectScale(settings);
     const int w = (settings.output.width + scale - 1) / scale, h = (settings.output.height + scale - 1) / scale;
     if (low_.select(w, h) == TargetsBySize<LowTargets>::Selected::Empty) {
@@ -141,7 +143,8 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         t.target.checkComplete("indirect (reduced)");
     }
     LowTargets& t = low_.current();
-    const ConeFeatures features = ConeFeatures::of(settings);
+    ConeFeatures features = ConeFeatures::of(settings);
+    features.materialLayers = materialLayers;
     // The strata filter averages the texels' stratified cone sets (the accurate mode). The
     // voxel-irradiance gather traces no sets per texel (the voxels averaged them) and is already a
     // 27-voxel average; rough lobes read the same gather. Filtering it would only blur it, and

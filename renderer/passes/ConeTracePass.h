@@ -36,7 +36,10 @@ public:
     // radiance volume whose mip chain is up to date. Binds volume.radiance() to
     // LIT_TEX_VOXEL_RADIANCE and its albedo table to LIT_TEX_SPECULAR_ALBEDO itself. Terms that
     // are neither shown (settings.debug.view) nor switched on are written as 0 without tracing them.
-    void execute(const LightingTerms& terms, const VoxelVolume& volume, const RenderSettings& settings);
+    // `materialLayers`: whether the scene's materials have specular layers (GpuScene::hasMaterialLayers;
+    // then the material table must be bound too).
+    void execute(const LightingTerms& terms, const VoxelVolume& volume, const RenderSettings& settings,
+                 bool materialLayers = true);
 
     // Which pixel of each block is traced and how the cone sets are turned this frame (temporal
     // accumulation varies both; a still without it uses the defaults).
@@ -67,7 +70,8 @@ public:
     // demodulated L_ID and rough L_IS and of the traced pixels' positions and normals, packed
     // (indirect.glsl), read by IndirectResolvePass. With footprint-bounded cones each texel traces
     // its stratified cone set and lowPacked() holds the trace after ConeStrataFilterPass.
-    void executeReduced(const VoxelVolume& volume, const RenderSettings& settings, const Sampling& sampling);
+    void executeReduced(const VoxelVolume& volume, const RenderSettings& settings, const Sampling& sampling,
+                        bool materialLayers = true);
     const gl::Texture& lowPacked() const { return low_->packed; }  // RGBA32UI
     const gl::Texture& lowGuide() const { return low_->guide; }    // RGBA32UI
 

@@ -15,7 +15,10 @@ IndirectResolvePass::IndirectResolvePass(const std::filesystem::path& shaderRoot
                {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_resolve.frag.glsl"}}),
       plainProgram_(shaderRoot, "indirect resolve (no history)",
                     {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "indirect_resolve.frag.glsl"}},
-                    "#define LIT_RESOLVE_HISTORY 0\n") {}
+                    "#define LIT_RESOLVE_HISTORY 0\n") {
+    program_.get(MaterialLayersVariant{});  // a broken shader fails at start-up
+    plainProgram_.get(MaterialLayersVariant{});
+}
 
 IndirectResolvePass::Targets& IndirectResolvePass::targetsFor(const LightingTerms& terms, bool temporal) {
     targets_.select(terms.width(), terms.height());
@@ -103,7 +106,7 @@ float IndirectResolvePass::clampMargin(const RenderSettings& settings, const Con
 
 void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& cone, const VoxelVolume& volume,
                                   const RenderSettings& settings, const ConeTracePass::Sampling& sampling,
-                                  const glm::mat4& viewProjection) {
+                                  const glm::mat4& viewProjection, bool materialLayers) {
     last_.ran = false;
     const ConeTracePass::Work work = ConeTracePass::workFor(settings);
     if ((!work.diffuse && !work.specular) || !volume.radiance()) {
@@ -133,7 +136,7 @@ void IndirectResolvePass::execute(const LightingTerms& terms, ConeTracePass& con
     last_.sampling = sampling;
     last_.maxFrames = std::max(settings.indirect.temporalMaxFrames, 1);
     last_.clampMargin = clampMargin(settings, sampling);
-    const gl::Program& program = temporal ? program_ : plainProgram_;
+    const gl::Program& program = (temporal ? program_ : plainProgram_).get(MaterialLayersVariant{materialLayers});
     bindInputs(program);
     // Every pixel writes the trace mask (gl_FragDepth): the depth test must be on to write it.
     glEnable(GL_DEPTH_TEST);

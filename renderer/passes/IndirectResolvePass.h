@@ -19,7 +19,9 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "gl/ProgramVariants.h"
 #include "passes/ConeTracePass.h"
+#include "passes/MaterialLayersVariant.h"
 #include "passes/Pass.h"
 #include "passes/TargetsBySize.h"
 
@@ -40,15 +42,21 @@ public:
     // settings.indirect.temporalAccumulation the history of the last temporal frame at this size is blended
     // in when it is valid (no reset since), reprojected with the view-projection of the frame that
     // wrote it; `viewProjection` is this frame's (world → clip), kept with the history it writes.
+    // `materialLayers`: as ConeTracePass::execute.
     void execute(const LightingTerms& terms, ConeTracePass& cone, const VoxelVolume& volume,
                  const RenderSettings& settings, const ConeTracePass::Sampling& sampling,
-                 const glm::mat4& viewProjection);
+                 const glm::mat4& viewProjection, bool materialLayers = true);
 
     // The next frame starts without history (scene edit, settings that change the terms), at
     // every size.
     void resetHistory() { ++generation_; }
 
-    std::vector<gl::Program*> programs() override { return {&program_, &plainProgram_}; }
+    std::vector<gl::Program*> programs() override {
+        std::vector<gl::Program*> out;
+        program_.appendBuilt(out);
+        plainProgram_.appendBuilt(out);
+        return out;
+    }
 
     // How far the history's clamp box (this frame's low-resolution neighbours) is widened, as a
     // fraction of its bounds: 10 %, or kSubsetClampMargin when the accurate mode traces cone
@@ -108,8 +116,9 @@ private:
     }
     void bindInputs(const gl::Program& program) const;
 
-    gl::Program program_;
-    gl::Program plainProgram_;  // without temporal accumulation: no history code (LIT_RESOLVE_HISTORY 0)
+    gl::ProgramVariants<MaterialLayersVariant::kVariants> program_;
+    // Without temporal accumulation: no history code (LIT_RESOLVE_HISTORY 0).
+    gl::ProgramVariants<MaterialLayersVariant::kVariants> plainProgram_;
     FullscreenTriangle triangle_;
     TargetsBySize<Targets> targets_;
     Inputs last_;

@@ -7,6 +7,8 @@
 // Visible Normals" (JCGT 7(4)); Schlick 1994 (Fresnel approximation).
 // Roughness is glTF's perceptual roughness; α = roughness². Keep every function identical to its
 // GLSL namesake: the GL consistency test (tests/gl/test_reference.cpp) compares the two renderers.
+// The material model, with KHR_materials_ior, KHR_materials_specular and KHR_materials_clearcoat,
+// is docs/MATERIALS.md; the path tracer's Bsdf (ReferenceBsdf.h) puts these terms together.
 
 #include <glm/glm.hpp>
 
@@ -38,16 +40,43 @@ inline float G1_SmithGGX(float NdotV, float alpha) {
     return 2.0f * NdotV / (NdotV + std::sqrt(a2 + (1.0f - a2) * NdotV * NdotV));
 }
 
-// Schlick's Fresnel approximation F(v, h).
-inline glm::vec3 F_Schlick(const glm::vec3& f0, float VdotH) {
+// Schlick's Fresnel approximation F(v, h) = F0 + (F90 − F0)(1 − v·h)⁵.
+inline glm::vec3 F_Schlick(const glm::vec3& f0, float f90, float VdotH) {
     const float f = std::pow(1.0f - std::clamp(VdotH, 0.0f, 1.0f), 5.0f);
-    return f0 + (glm::vec3(1.0f) - f0) * f;
+    return f0 + (f90 - f0) * f;
 }
+// The same with F90 = 1 (every metal; a dielectric of specular weight 1).
+inline glm::vec3 F_Schlick(const glm::vec3& f0, float VdotH) { return F_Schlick(f0, 1.0f, VdotH); }
 
-// Metalness workflow: dielectrics reflect 4 % at normal incidence, metals their base colour.
-inline glm::vec3 specularF0(const glm::vec3& baseColor, float metalness) {
-    return glm::mix(glm::vec3(0.04f), baseColor, metalness);
+// The clear coat's Fresnel term: a dielectric of η 1.5, Fc(x) = 0.04 + 0.96 (1 − x)⁵.
+inline float F_Clearcoat(float VdotH) {
+    const float f = std::pow(1.0f - std::clamp(VdotH, 0.0f, 1.0f), 5.0f);
+    return 0.04f + 0.96f * f;
 }
+// The share of the base's light that the coat lets through: 1 − cc·Fc(n_c·v) (brdf.glsl).
+inline float clearcoatBaseScale(float weight, float NdotV) { return 1.0f - weight * F_Clearcoat(NdotV); }
+
+// A dielectric's normal-incidence reflectance (KHR_materials_ior, KHR_materials_specular):
+// min(((η − 1)/(η + 1))² · k, 1) · s per channel. Computed in double so that η 1.5 gives exactly
+// 0.04f (the metalness workflow's constant). η 0 is a mirror (F0 = 1), as the extension defines.
+inline glm::vec3 dielectricF0(float ior, float specularFactor, const glm::vec3& specularColor) {
+    const double r = (static_cast<double>(ior) - 1.0) / (static_cast<double>(ior) + 1.0);
+    const auto f0 = static_cast<float>(r * r);
+    return glm::min(f0 * specularColor, glm::vec3(1.0f)) * specularFactor;
+}
+// A dielectric's grazing reflectance: the specular weight s.
+inline float dielectricF90(float specularFactor) { return specularFactor; }
+
+// Metalness workflow: dielectrics reflect their dielectric F0 at normal incidence (0.04 for η 1.5,
+// s = 1, k = 1), metals their base colour; at grazing dielectrics reach F90 = s, metals 1.
+inline glm::vec3 specularF0(const glm::vec3& baseColor, float metalness, const glm::vec3& dielectricF0) {
+    return glm::mix(dielectricF0, baseColor, metalness);
+}
+inline glm::vec3 specularF0(const glm::vec3& baseColor, float metalness) {
+    return specularF0(baseColor, metalness, glm::vec3(0.04f));
+}
+// mix(F90_dielectric, 1, m), written so that F90_dielectric = 1 gives exactly 1.
+inline float specularF90(float metalness, float dielectricF90) { return dielectricF90 + metalness * (1.0f - dielectricF90); }
 inline glm::vec3 diffuseAlbedo(const glm::vec3& baseColor, float metalness) { return baseColor * (1.0f - metalness); }
 
 // Roughness clamped so α never reaches 0 (brdf.glsl: a perfect mirror makes D a delta).
@@ -57,15 +86,30 @@ inline float alphaFromRoughness(float roughness) {
 }
 
 // The specular microfacet BRDF f_s = D·G·F / (4 (n·l)(n·v)), with brdf.glsl's clamps.
-inline glm::vec3 specularBrdf(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l, const glm::vec3& f0,
+inline glm::vec3 specularBrdf(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l, const glm::vec3& f0, float f90,
                               float alpha) {
     const glm::vec3 h = glm::normalize(v + l);
     const float NdotL = std::max(glm::dot(n, l), 1e-4f);
     const float NdotV = std::max(glm::dot(n, v), 1e-4f);
     const float NdotH = std::max(glm::dot(n, h), 0.0f);
     const float VdotH = std::max(glm::dot(v, h), 0.0f);
-    return D_GGX(NdotH, alpha) * G_SmithGGXCorrelated(NdotL, NdotV, alpha) * F_Schlick(f0, VdotH) /
+    return D_GGX(NdotH, alpha) * G_SmithGGXCorrelated(NdotL, NdotV, alpha) * F_Schlick(f0, f90, VdotH) /
            (4.0f * NdotL * NdotV);
+}
+inline glm::vec3 specularBrdf(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l, const glm::vec3& f0,
+                              float alpha) {
+    return specularBrdf(n, v, l, f0, 1.0f, alpha);
+}
+
+// The clear coat's microfacet lobe around the coat normal nc, without the coat weight cc:
+// D(nc·h; α_c)·G2(nc·l, nc·v; α_c)·Fc(v·h) / (4 (nc·l)(nc·v)), with specularBrdf's clamps.
+inline float clearcoatBrdf(const glm::vec3& nc, const glm::vec3& v, const glm::vec3& l, float alpha) {
+    const glm::vec3 h = glm::normalize(v + l);
+    const float NdotL = std::max(glm::dot(nc, l), 1e-4f);
+    const float NdotV = std::max(glm::dot(nc, v), 1e-4f);
+    const float NdotH = std::max(glm::dot(nc, h), 0.0f);
+    const float VdotH = std::max(glm::dot(v, h), 0.0f);
+    return D_GGX(NdotH, alpha) * G_SmithGGXCorrelated(NdotL, NdotV, alpha) * F_Clearcoat(VdotH) / (4.0f * NdotL * NdotV);
 }
 
 // ---- Sampling (path tracer only) ----------------------------------------------------------

@@ -3,6 +3,7 @@
 #include "reference/DifferenceImage.h"
 #include "reference/MicrofacetBrdf.h"
 #include "reference/PunctualLights.h"
+#include "reference/ReferenceBsdf.h"
 
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
@@ -54,14 +55,7 @@ private:
 
 // ---- Shading helpers -----------------------------------------------------------------------
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-float maxComponent(const glm::vec3& c) { return std::max(c.r, std::max(c.g, c.b)); }
-
-// gbuffer.glsl shadingNormal: a normal facing away from v is bent just past perpendicular.
-glm::vec3 shadingNormal(const glm::vec3& n, const glm::vec3& v) {
-    const float nv = glm::dot(n, v);
-    return nv < 0.0f ? glm::normalize(n - v * (nv * 1.01f)) : n;
-}
+float maxComponent(const glm::vec3& c) { return bsdfMaxComponent(c); }
 
 // Ray origin just off the surface on the side `side` points to (metres; relative to the
 // position's magnitude so far-away scenes keep float precision).
@@ -75,57 +69,12 @@ float powerHeuristic(float a, float b) {
     return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
 }
 
-// The BRDF of one surface point as Lit's passes evaluate it: Lambert + GGX (brdf.glsl).
-struct Bsdf {
-    glm::vec3 n{0.0f}, v{0.0f}, ng{0.0f};
-    glm::vec3 albedo{0.0f}, f0{0.0f};
-    float alpha = 1.0f;
-    float specularProbability = 0.0f;  // chance of sampling the GGX lobe rather than the cosine lobe
-
-    Bsdf(const SurfaceHit& hit, const glm::vec3& view) {
-        v = view;
-        n = shadingNormal(hit.normal, v);
-        ng = hit.geometricNormal;
-        albedo = diffuseAlbedo(hit.baseColor, hit.metalness);
-        f0 = specularF0(hit.baseColor, hit.metalness);
-        alpha = alphaFromRoughness(hit.roughness);
-        // Lobe choice by each lobe's rough share of the reflected energy.
-        const float specular = luminance(F_Schlick(f0, std::max(glm::dot(n, v), 0.0f)));
-        const float diffuse = luminance(albedo);
-        specularProbability = specular + diffuse > 0.0f ? specular / (specular + diffuse) : 0.0f;
-    }
-    glm::vec3 diffuse(const glm::vec3& l) const { return glm::dot(n, l) > 0.0f ? albedo / kPi : glm::vec3(0.0f); }
-    glm::vec3 specular(const glm::vec3& l) const {
-        return glm::dot(n, l) > 0.0f ? specularBrdf(n, v, l, f0, alpha) : glm::vec3(0.0f);
-    }
-    float pdf(const glm::vec3& l) const {
-        const float NdotL = glm::dot(n, l);
-        if (NdotL <= 0.0f) return 0.0f;
-        return (1.0f - specularProbability) * NdotL / kPi + specularProbability * ggxVisibleNormalReflectionPdf(n, v, l, alpha);
-    }
-    bool reflects() const { return maxComponent(albedo) > 0.0f || maxComponent(f0) > 0.0f; }
-    // A direction drawn from pdf(); false when it falls below the surface (the path ends).
-    bool sample(Random& random, glm::vec3& l) const {
-        const Frame frame(n);
-        const float choice = random.uniform();
-        const glm::vec2 u = random.uniform2();
-        if (choice < specularProbability) {
-            glm::vec3 localV = frame.toLocal(v);
-            localV.z = std::max(localV.z, 1e-4f);
-            localV = glm::normalize(localV);
-            const glm::vec3 h = frame.toWorld(sampleGgxVisibleNormal(localV, alpha, u));
-            l = 2.0f * glm::dot(v, h) * h - v;
-        } else {
-            l = frame.toWorld(sampleCosineHemisphere(u));
-        }
-        return glm::dot(n, l) > 0.0f && glm::dot(ng, l) > 0.0f;
-    }
-};
-
-// Light reflected towards v at a surface, split by lobe (diffuse, specular).
-struct Split {
-    glm::vec3 diffuse{0.0f}, specular{0.0f};
-};
+// A direction drawn from the Bsdf's mixture (ReferenceBsdf.h) with this sample's random numbers.
+bool sampleBsdf(const Bsdf& bsdf, Random& random, glm::vec3& l) {
+    const float choice = random.uniform();
+    const glm::vec2 u = random.uniform2();
+    return bsdf.sample(choice, u, l);
+}
 
 struct Contribution {
     glm::vec3 terms[kTermCount]{};
@@ -144,14 +93,21 @@ public:
         const glm::vec3 origin = offsetOrigin(hit.position, hit.geometricNormal);
         for (const gpu::GpuLight& light : scene_.punctualLights()) {
             const PunctualSample ls = samplePunctualLight(light, hit.position);
-            const float NdotL = glm::dot(bsdf.n, ls.l);
-            if (NdotL <= 0.0f || maxComponent(ls.irradiance) <= 0.0f) continue;
+            if (!bsdf.above(ls.l) || maxComponent(ls.irradiance) <= 0.0f) continue;
             Ray shadow{origin, ls.l, 0.0f, std::isinf(ls.distance) ? INFINITY : ls.distance * (1.0f - 1e-4f)};
             ++rays;
             if (scene_.occluded(shadow)) continue;
-            const glm::vec3 E = ls.irradiance * NdotL;
-            out.diffuse += E * bsdf.albedo / kPi;
-            out.specular += E * specularBrdf(bsdf.n, bsdf.v, ls.l, bsdf.f0, bsdf.alpha);
+            // Each lobe with its own cosine: the base's n·l, the coat's n_c·l.
+            const float NdotL = glm::dot(bsdf.n, ls.l);
+            if (NdotL > 0.0f) {
+                const glm::vec3 E = ls.irradiance * NdotL;
+                out.diffuse += E * bsdf.albedo / kPi * bsdf.baseScale;
+                out.specular += E * specularBrdf(bsdf.n, bsdf.v, ls.l, bsdf.f0, bsdf.f90, bsdf.alpha) * bsdf.baseScale;
+            }
+            if (bsdf.hasCoat()) {
+                const float NcdotL = glm::dot(bsdf.nc, ls.l);
+                if (NcdotL > 0.0f) out.specular += ls.irradiance * NcdotL * bsdf.coatLobe(ls.l);
+            }
         }
         if (!scene_.emitters().empty()) {
             const float u = random.uniform();
@@ -163,15 +119,21 @@ public:
                 const glm::vec3 l = toLight / distance;
                 const float cosLight = std::abs(glm::dot(es.normal, l));
                 const float NdotL = glm::dot(bsdf.n, l);
-                if (cosLight > 0.0f && NdotL > 0.0f && maxComponent(es.emission) > 0.0f) {
+                if (cosLight > 0.0f && bsdf.above(l) && maxComponent(es.emission) > 0.0f) {
                     Ray shadow{origin, l, 0.0f, distance * (1.0f - 1e-3f)};
                     ++rays;
                     if (!scene_.occluded(shadow)) {
                         const float pdfLight = es.pdfArea * distance2 / cosLight;
                         const float weight = powerHeuristic(pdfLight, bsdf.pdf(l));
-                        const glm::vec3 scale = es.emission * (weight * NdotL / pdfLight);
-                        out.diffuse += scale * bsdf.diffuse(l);
-                        out.specular += scale * bsdf.specular(l);
+                        if (NdotL > 0.0f) {
+                            const glm::vec3 scale = es.emission * (weight * NdotL / pdfLight);
+                            out.diffuse += scale * bsdf.diffuse(l);
+                            out.specular += scale * bsdf.specular(l);
+                        }
+                        if (bsdf.hasCoat()) {
+                            const float NcdotL = glm::dot(bsdf.nc, l);
+                            if (NcdotL > 0.0f) out.specular += es.emission * (weight * NcdotL / pdfLight) * bsdf.coatLobe(l);
+                        }
                     }
                 }
             }
@@ -216,13 +178,14 @@ public:
         // everything found along the rest of the path: each share is an unbiased estimate of its
         // own lobe's integral, whichever lobe the direction was drawn from.
         if (maxBounces == 0 && !hasEmitters && !hasEnvironment) return;
+        // The coat's reflection is part of the specular share.
         glm::vec3 l;
-        if (!bsdf.sample(random, l)) return;
+        if (!sampleBsdf(bsdf, random, l)) return;
         float pdf = bsdf.pdf(l);
         if (pdf <= 0.0f) return;
-        const float NdotL = glm::dot(bsdf.n, l);
-        glm::vec3 throughputD = bsdf.diffuse(l) * (NdotL / pdf);
-        glm::vec3 throughputS = bsdf.specular(l) * (NdotL / pdf);
+        const Split first = bsdf.weight(l, pdf);
+        glm::vec3 throughputD = first.diffuse;
+        glm::vec3 throughputS = first.specular;
 
         // Follows `ray` one segment: the sky it escapes to, or the emission of the surface it
         // meets (into `next`), weighted by the two throughputs into the diffuse/specular terms.
@@ -263,10 +226,11 @@ public:
             // (still `bounce` bounces), or a further bounce when allowed.
             const bool moreBounces = bounce < maxBounces && bounce + 1 < kMaxPathVertices;
             if (!moreBounces && !hasEmitters && !hasEnvironment) return;
-            if (!b.sample(random, l)) return;
+            if (!sampleBsdf(b, random, l)) return;
             pdf = b.pdf(l);
             if (pdf <= 0.0f) return;
-            const glm::vec3 weight = (b.diffuse(l) + b.specular(l)) * (glm::dot(b.n, l) / pdf);
+            glm::vec3 weight = (b.diffuse(l) + b.specular(l)) * (glm::dot(b.n, l) / pdf);
+            if (b.hasCoat()) weight += b.coatLobe(l) * (glm::dot(b.nc, l) / pdf);
             throughputD *= weight;
             throughputS *= weight;
             if (moreBounces && bounce >= settings_.russianRouletteStart) {

@@ -8,7 +8,8 @@
 //   indirect diffuse / indirect specular light → (≥ 1 more surface) → first surface → eye, split by
 //                                        the lobe of the first surface's BRDF
 // Next-event estimation for punctual lights and emissive triangles, multiple importance sampling
-// (power heuristic) between emitter and BRDF sampling, cosine / GGX visible-normal sampling,
+// (power heuristic) between emitter and BRDF sampling, cosine / GGX visible-normal sampling of
+// the BRDF's three lobes (docs/MATERIALS.md: diffuse, specular, clear coat; ReferenceBsdf.h),
 // Russian roulette past 3 bounces. Deterministic: a pixel's sample s under seed S always draws the
 // same random numbers, whatever the thread count or tile order. docs/REFERENCE.md has the details
 // and every place where the reference differs from the rasterizer on purpose.

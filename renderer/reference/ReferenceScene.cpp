@@ -3,6 +3,7 @@
 #include "Log.h"
 #include "RenderSettings.h"
 #include "passes/LightSetup.h"
+#include "reference/MicrofacetBrdf.h"
 
 #include <embree3/rtcore.h>
 
@@ -288,6 +289,7 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
 
     glm::vec3 n = glm::length(normal) > 0.0f ? glm::normalize(normal) : hit.geometricNormal;
     if (!frontFacing) n = -n;
+    const glm::vec3 interpolatedNormal = n;  // the clear coat's normal: no normal map
     if (m.normalTexture >= 0) {
         glm::vec3 t = glm::vec3(tangent) - n * glm::dot(n, glm::vec3(tangent));
         if (glm::dot(t, t) > 1e-10f) {
@@ -324,6 +326,13 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
     hit.metalness = std::clamp(metalness, 0.0f, 1.0f);
     hit.occlusion = occlusion;
     hit.emission = emissive;
+    // docs/MATERIALS.md: the dielectric's F0 and F90, and the clear coat (its factors only; the
+    // extensions' textures are not drawn).
+    hit.dielectricF0 = dielectricF0(m.ior, m.specularFactor, m.specularColorFactor);
+    hit.dielectricF90 = dielectricF90(m.specularFactor);
+    hit.clearcoat = std::clamp(m.clearcoatFactor, 0.0f, 1.0f);
+    hit.clearcoatRoughness = std::clamp(m.clearcoatRoughness, 0.0f, 1.0f);
+    hit.clearcoatNormal = interpolatedNormal;
     return baseColor.a;
 }
 

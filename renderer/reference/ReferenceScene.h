@@ -1,7 +1,8 @@
 #pragma once
 // A lit::Scene made ready for path tracing: its triangles in world space in an Embree scene,
 // materials resolved at a hit the way the G-buffer pass resolves them (shaders/gbuffer.frag.glsl:
-// base colour, metal-rough, normal, emissive and occlusion textures, alpha mask), the punctual
+// base colour, metal-rough, normal, emissive and occlusion textures, alpha mask; the ior, specular
+// and clear-coat factors of docs/MATERIALS.md), the punctual
 // lights of passes/LightSetup, and the emissive triangles as area lights with a power CDF.
 // Built once per scene (or per edit); read-only while rendering, so many threads share it.
 
@@ -39,6 +40,15 @@ struct SurfaceHit {
     float metalness = 0.0f;
     float roughness = 1.0f;         // perceptual
     float occlusion = 1.0f;         // material ambient occlusion (applies to indirect light only, as in Lit)
+    // The dielectric reflectance of docs/MATERIALS.md (KHR_materials_ior, KHR_materials_specular):
+    // F0 = min(((η − 1)/(η + 1))² · k, 1) · s per channel, F90 = s. Metals replace both (specularF0/F90).
+    glm::vec3 dielectricF0{0.04f};
+    float dielectricF90 = 1.0f;
+    // KHR_materials_clearcoat: the coat's weight cc (0 = no coat), its perceptual roughness, and its
+    // normal n_c: the interpolated normal flipped like the others, without the normal map.
+    float clearcoat = 0.0f;
+    float clearcoatRoughness = 0.0f;
+    glm::vec3 clearcoatNormal{0.0f};  // unit; zero where unresolved (the Bsdf then takes `normal`)
     glm::vec3 emission{0.0f};       // W/(sr·m²)
     int node = -1;                  // scene node index
     int emitter = -1;               // index into emitters() when the triangle emits, else -1
@@ -86,8 +96,9 @@ public:
     // sampler's wrap modes, sRGB images decoded to linear before filtering. RGBA in [0,1].
     glm::vec4 sampleTexture(int texture, glm::vec2 uv) const;
     // The material at a surface point from its interpolated attributes (world normal and tangent
-    // already transformed; `frontFacing` as gl_FrontFacing). Fills baseColor ... emission and
-    // `normal`; returns the base colour alpha (for the mask test).
+    // already transformed; `frontFacing` as gl_FrontFacing). Fills baseColor ... emission, the
+    // dielectric F0/F90, the clear coat, `normal` and `clearcoatNormal`; returns the base colour
+    // alpha (for the mask test).
     float resolveMaterial(int material, const glm::vec2& uv, glm::vec3 normal, const glm::vec4& tangent,
                           bool frontFacing, SurfaceHit& hit) const;
 

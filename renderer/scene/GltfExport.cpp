@@ -36,6 +36,7 @@
 #include "io/GltfFile.h"
 #include "scene/GltfExportDetail.h"
 #include "scene/GltfKeep.h"
+#include "scene/GltfMaterialLayers.h"
 #include "scene/GltfTextureTransform.h"
 #include "scene/LightUnits.h"
 
@@ -417,6 +418,8 @@ void ModelBuilder::addMaterials() {
         out.alphaCutoff = fileOr(n, "alphaCutoff", material.alphaCutoff);
         out.doubleSided = material.doubleSided;
         keepMaterialFields(material, out, model_.materials.size());
+        // Before restore(): the layer extensions are written from the file's objects in `kept`.
+        gltfkeep::writeMaterialLayers(material, out.extensions, [&](const std::string& name) { useExtension(name); });
         restore(material.kept, out.extras, out.extensions);
         const auto& extras = material.textureExtras;
         const auto& extensions = material.textureExtensions;

@@ -15,6 +15,7 @@
 #include "scene/GltfImportKept.h"
 #include "scene/GltfImportMeshes.h"
 #include "scene/GltfKeep.h"
+#include "scene/GltfMaterialLayers.h"
 #include "scene/GltfTextureTransform.h"
 #include "scene/GltfValidate.h"
 #include "scene/LightUnits.h"
@@ -324,6 +325,7 @@ void Importer::loadMaterials(Scene& scene) const {
         }
         out.alphaCutoff = static_cast<float>(in.alphaCutoff);
         out.doubleSided = in.doubleSided;
+        gltfkeep::readMaterialLayers(in.extensions, out, [&](const std::string& problem) { warn(what + " " + problem); });
         out.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_materials_emissive_strength"});
         out.textureTexCoord = {pbr.baseColorTexture.texCoord, pbr.metallicRoughnessTexture.texCoord,
                                in.normalTexture.texCoord, in.emissiveTexture.texCoord, in.occlusionTexture.texCoord};

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -93,6 +94,12 @@ gpu::GpuMaterial toGpu(const Material& m) {
                                                             : LIT_ALPHA_OPAQUE;
     g.modes = glm::ivec4(m.occlusionTexture >= 0, alphaMode, m.doubleSided ? 1 : 0, 0);
     g.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
+    // docs/MATERIALS.md: F0 = min(((η − 1)/(η + 1))² · k, 1) · s, F90 = s.
+    const float reflectance = (m.ior - 1.0f) / (m.ior + 1.0f);  // η = 0 (a mirror) gives 1
+    const float f0FromIor = reflectance * reflectance;
+    g.specular = glm::vec4(glm::min(glm::vec3(f0FromIor) * m.specularColorFactor, glm::vec3(1.0f)) * m.specularFactor,
+                           m.specularFactor);
+    g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughness, 0.0f, 0.0f);
     return g;
 }
 
@@ -224,6 +231,10 @@ void GpuScene::updateMaterials(const Scene& scene) {
     table.reserve(scene.materials.size() + 1);
     materialTextures_.clear();
     materialUvTransforms_.clear();
+    materialLayers_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
+        return m.ior != 1.5f || m.specularFactor != 1.0f || m.specularColorFactor != glm::vec3(1.0f) ||
+               m.clearcoatFactor != 0.0f;
+    });
     const auto textureId = [this](int index) -> TextureBinding {
         if (index < 0 || static_cast<std::size_t>(index) >= textures_.size()) return {};
         return textures_[static_cast<std::size_t>(index)];

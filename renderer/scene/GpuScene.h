@@ -83,6 +83,9 @@ public:
     const std::vector<DrawItem>& items() const { return items_; }
     bool empty() const { return items_.empty(); }
     const gl::Buffer& materials() const { return materials_; }
+    // Whether a material has KHR_materials_ior / _specular / _clearcoat values other than the
+    // defaults (the lighting passes' MaterialLayersVariant).
+    bool hasMaterialLayers() const { return materialLayers_; }
 
     // The textures `item`'s material samples, as LIT_MATERIAL_TEXTURES bits (material.glsl): the
     // ones that loaded, which the material table's flags also say.
@@ -114,6 +117,7 @@ private:
     gl::Buffer indices_;
     gl::VertexArray vertexArray_;
     gl::Buffer materials_;
+    bool materialLayers_ = false;
     std::vector<gl::Texture> images_;      // per Scene::images entry; empty where no texture uses it or it is unusable
     std::vector<gl::Sampler> samplers_;    // one per distinct wrap/filter combination
     // Per Scene::textures entry: its GL texture (0: unusable, the material falls back) and sampler.

@@ -22,14 +22,16 @@ float G_SmithGGXCorrelated(float NdotL, float NdotV, float alpha) {
     return 2.0 * NdotL * NdotV / max(lambdaV + lambdaL, 1e-7);
 }
 
-// Schlick's Fresnel approximation F(v, h).
-vec3 F_Schlick(vec3 f0, float VdotH) {
+// Schlick's Fresnel approximation F(v, h) between F0 (normal incidence) and F90 (grazing).
+vec3 F_Schlick(vec3 f0, float f90, float VdotH) {
     float f = pow(1.0 - clamp(VdotH, 0.0, 1.0), 5.0);
-    return f0 + (1.0 - f0) * f;
+    return f0 + (f90 - f0) * f;
 }
 
-// Metalness workflow: dielectrics reflect 4% at normal incidence, metals their base colour.
-vec3 specularF0(vec3 baseColor, float metalness) { return mix(vec3(0.04), baseColor, metalness); }
+// Metalness workflow (docs/MATERIALS.md): dielectrics reflect their F0 (4 % without
+// KHR_materials_ior / _specular) and F90 at grazing, metals their base colour and 1.
+vec3 specularF0(vec3 baseColor, float metalness, vec3 dielectricF0) { return mix(dielectricF0, baseColor, metalness); }
+float specularF90(float metalness, float dielectricF90) { return mix(dielectricF90, 1.0, metalness); }
 vec3 diffuseAlbedo(vec3 baseColor, float metalness) { return baseColor * (1.0 - metalness); }
 
 // Clamp roughness so α never reaches 0 (a perfect mirror makes D a delta: infinite highlights).
@@ -39,12 +41,20 @@ float alphaFromRoughness(float roughness) {
 }
 
 // The specular microfacet BRDF f_s = D·G·F / (4 (n·l)(n·v)).
-vec3 specularBrdf(vec3 n, vec3 v, vec3 l, vec3 f0, float alpha) {
+vec3 specularBrdf(vec3 n, vec3 v, vec3 l, vec3 f0, float f90, float alpha) {
     vec3 h = normalize(v + l);
     float NdotL = max(dot(n, l), 1e-4);
     float NdotV = max(dot(n, v), 1e-4);
     float NdotH = max(dot(n, h), 0.0);
     float VdotH = max(dot(v, h), 0.0);
-    return D_GGX(NdotH, alpha) * G_SmithGGXCorrelated(NdotL, NdotV, alpha) * F_Schlick(f0, VdotH) /
+    return D_GGX(NdotH, alpha) * G_SmithGGXCorrelated(NdotL, NdotV, alpha) * F_Schlick(f0, f90, VdotH) /
            (4.0 * NdotL * NdotV);
 }
+
+// KHR_materials_clearcoat: a dielectric coat of η 1.5 (F0 0.04) over the base. The base's light
+// is scaled by 1 − weight · Fc(n·v) (clearcoatBaseScale), and the coat adds its GGX lobe
+// weight · D·G·Fc / (4 (n·l)(n·v)) (docs/MATERIALS.md).
+const vec3 kClearcoatF0 = vec3(0.04);
+float clearcoatBaseScale(float weight, float NdotV) { return 1.0 - weight * F_Schlick(kClearcoatF0, 1.0, NdotV).x; }
+// The hemispherical mean of Fc under a cosine-weighted view: 0.04 + 0.96 · ∫(1 − μ)⁵ 2μ dμ = 0.04 + 0.96/21.
+const float kClearcoatMeanFresnel = 0.04 + 0.96 / 21.0;

@@ -420,12 +420,22 @@ float ggxSampleWeight(vec3 n, vec3 v, vec3 h, float alpha, out vec3 l) {
     return G_SmithGGXCorrelated(NdotL, NdotV, alpha) * VdotH / (NdotH * NdotV);
 }
 
-// Directional albedo E = ∫ f_s (n·l) dl of the GGX lobe with Schlick's F: E = F0·A + B, where
+// Directional albedo E = ∫ f_s (n·l) dl of the GGX lobe with Schlick's F: E = F0·A + F90·B, where
 // A = ∫ w·(1 − (1 − v·h)^5) and B = ∫ w·(1 − v·h)^5 are read from the table (`roughness`
 // perceptual, the table's texel centres at (i + ½)/size).
-vec3 specularAlbedo(vec3 f0, float roughness, float NdotV) {
+vec3 specularAlbedo(vec3 f0, float f90, float roughness, float NdotV) {
     vec2 ab = textureLod(specularAlbedoTable, vec2(NdotV, roughness), 0.0).rg;
-    return f0 * ab.x + ab.y;
+    return f0 * ab.x + f90 * ab.y;
+}
+
+// What multiplies the traced indirect specular radiance (docs/MATERIALS.md): the base lobe's
+// directional albedo, through what a clear coat of weight `clearcoat` lets pass, plus the coat's.
+vec3 indirectSpecularWeight(vec3 f0, float f90, float roughness, float clearcoat, float clearcoatRoughness,
+                            float NdotV) {
+    vec3 base = specularAlbedo(f0, f90, roughness, NdotV);
+    if (clearcoat <= 0.0) return base;
+    return base * clearcoatBaseScale(clearcoat, NdotV) +
+           clearcoat * specularAlbedo(kClearcoatF0, 1.0, clearcoatRoughness, NdotV);
 }
 
 // Cones narrower than this march half a voxel per step for the whole volume; 0.02 rad is about
@@ -486,13 +496,13 @@ vec3 traceSpecularLobe(vec3 origin, vec3 n, mat3 basis, vec3 v, float roughness,
     return weightedRadiance / weightSum;
 }
 
-// Indirect specular radiance L_IS for a surface with normal n (unit, facing v), view vector v
-// (unit, towards the eye), F0 and perceptual roughness, from `count` (1..8) importance-sampled
-// cones, or when `reuseDiffuse` from the diffuse cones' radiance `cones` in the same directions
-// (see specularCanReuseDiffuseCones; the diffuse cones must be traced around the same n).
-vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, vec3 f0, float roughness, int count, vec2 pixel, int frameIndex,
+// The radiance of the indirect specular lobe of perceptual roughness `roughness` for a surface
+// with normal n (unit, facing v) and view vector v (unit, towards the eye), from `count` (1..8)
+// importance-sampled cones, or when `reuseDiffuse` from the diffuse cones' radiance `cones` in
+// the same directions (see specularCanReuseDiffuseCones; the diffuse cones must be traced around
+// the same n). L_IS is it times indirectSpecularWeight.
+vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, float roughness, int count, vec2 pixel, int frameIndex,
                    float maxDistance, bool reuseDiffuse, vec3 cones[kDiffuseConeCount]) {
-    vec3 lobe = traceSpecularLobe(origin, n, tangentFrame(n), v, roughness, count, pixel, frameIndex, maxDistance,
-                                  reuseDiffuse, cones);
-    return specularAlbedo(f0, roughness, max(dot(n, v), 0.0)) * lobe;
+    return traceSpecularLobe(origin, n, tangentFrame(n), v, roughness, count, pixel, frameIndex, maxDistance,
+                             reuseDiffuse, cones);
 }

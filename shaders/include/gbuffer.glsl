@@ -1,11 +1,15 @@
-// Reading the G-buffer in full-screen passes.
+// Reading the G-buffer in full-screen passes. The material table must be bound
+// (Renderer: lightTerms binds it for the lighting passes).
 #include "shared.h"
+#include "material_table.glsl"
+#include "brdf.glsl"
 
 layout(binding = LIT_TEX_GBUFFER_ALBEDO) uniform sampler2D gbufferAlbedo;
 layout(binding = LIT_TEX_GBUFFER_NORMAL) uniform sampler2D gbufferNormal;
 layout(binding = LIT_TEX_GBUFFER_MATERIAL) uniform sampler2D gbufferMaterial;
 layout(binding = LIT_TEX_GBUFFER_EMISSIVE) uniform sampler2D gbufferEmissive;
 layout(binding = LIT_TEX_GBUFFER_DEPTH) uniform sampler2D gbufferDepth;
+layout(binding = LIT_TEX_GBUFFER_ID) uniform usampler2D gbufferId;
 
 struct Surface {
     bool valid;        // false for background pixels
@@ -16,7 +20,41 @@ struct Surface {
     float roughness;
     float metalness;
     vec3 emissive;
+    vec3 f0;                  // specular reflectance at normal incidence (metal or dielectric)
+    float f90;                // and at grazing incidence
+    float clearcoat;          // the coat's weight (0: none)
+    float clearcoatRoughness; // perceptual
 };
+
+// Whether any material of the scene has a specular layer (MaterialLayersVariant): without, the
+// metal-rough defaults are taken and neither the ID target nor the table is read.
+#ifndef LIT_MATERIAL_LAYERS
+#define LIT_MATERIAL_LAYERS 1
+#endif
+
+// The specular parameters of the pixel's material (docs/MATERIALS.md), from the material table
+// entry the ID target names; `s` needs baseColor and metalness.
+void readMaterialLayers(ivec2 pixel, inout Surface s) {
+#if LIT_MATERIAL_LAYERS
+    uint index = texelFetch(gbufferId, pixel, 0).b;
+    GpuMaterial m = materials[index];
+    s.f0 = specularF0(s.baseColor, s.metalness, m.specular.rgb);
+    s.f90 = specularF90(s.metalness, m.specular.a);
+    s.clearcoat = m.clearcoat.x;
+    s.clearcoatRoughness = m.clearcoat.y;
+#else
+    s.f0 = specularF0(s.baseColor, s.metalness, vec3(0.04));
+    s.f90 = 1.0;
+    s.clearcoat = 0.0;
+    s.clearcoatRoughness = 0.0;
+#endif
+}
+
+// The roughness the indirect specular lobe is traced with: a coat smoother than the base
+// reflects the sharper lobe, which the base's rougher one is drawn with (docs/MATERIALS.md).
+float specularLobeRoughness(Surface s) {
+    return s.clearcoat > 0.0 ? min(s.roughness, s.clearcoatRoughness) : s.roughness;
+}
 
 Surface readSurface(ivec2 pixel, vec2 uv) {
     Surface s;
@@ -31,6 +69,7 @@ Surface readSurface(ivec2 pixel, vec2 uv) {
     s.roughness = material.r;
     s.metalness = material.g;
     s.emissive = texelFetch(gbufferEmissive, pixel, 0).rgb;
+    readMaterialLayers(pixel, s);
     return s;
 }
 

@@ -3,8 +3,9 @@
 // indirect_trace.frag.glsl to every pixel with depth- and normal-aware (joint bilateral) weights,
 // traces at full resolution what they cannot stand for, optionally accumulates over frames, and
 // writes the terms:
-//   L_ID = albedo_d · D · intensity · AO,   L_IS = E(F0, roughness, n·v) · S · intensity · AO
-// with D the irradiance/π and S the lobe-averaged radiance of this pixel (indirect.glsl).
+//   L_ID = albedo_d · b · D · intensity · AO,   L_IS = E · S · intensity · AO
+// with D the irradiance/π and S the lobe-averaged radiance of this pixel (indirect.glsl), b what a
+// clear coat lets through and E = indirectSpecularWeight (docs/MATERIALS.md).
 //
 // Upsampling. The pixel sits among the four low-resolution texels whose traced pixels surround
 // it; each is weighted by its bilinear weight (plus a small floor, so a neighbour on the same
@@ -114,11 +115,17 @@ void main() {
     vec2 material = texelFetch(gbufferMaterial, pixel, 0).rg;
     s.roughness = material.r;
     s.metalness = material.g;
+    readMaterialLayers(pixel, s);
+    // The lobe is traced, upsampled and accumulated at the lobe's roughness (a smoother clear coat
+    // sets it); the base's own roughness weighs it at the end.
+    float baseRoughness = s.roughness;
+    s.roughness = specularLobeRoughness(s);
     float scale = voxel.traceParams.x * s.occlusion;
     float clipW = (frame.viewProjection * vec4(s.position, 1.0)).w;
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
     vec3 n = shadingNormal(s.normal, v);
-    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);
+    float NdotV = max(dot(n, v), 0.0);
+    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness) * clearcoatBaseScale(s.clearcoat, NdotV);
     bool diffuseSurface = max(albedo.r, max(albedo.g, albedo.b)) > 0.0;
     bool smoothSurface = s.roughness < uSmoothRoughness;
 
@@ -248,5 +255,6 @@ void main() {
     if (wantDiffuse) outIndirectDiffuse = vec4(albedo * diffuse * scale, 1.0);
     if (wantSpecular)
         outIndirectSpecular =
-            vec4(specularAlbedo(specularF0(s.baseColor, s.metalness), s.roughness, max(dot(n, v), 0.0)) * specular * scale, 1.0);
+            vec4(indirectSpecularWeight(s.f0, s.f90, baseRoughness, s.clearcoat, s.clearcoatRoughness, NdotV) *
+                     specular * scale, 1.0);
 }

@@ -1,9 +1,5 @@
 // Material table and textures for passes that draw scene geometry.
-#include "shared.h"
-
-layout(std430, binding = LIT_SSBO_MATERIALS) readonly buffer MaterialBlock {
-    GpuMaterial materials[];
-};
+#include "material_table.glsl"
 
 layout(location = LIT_LOC_MATERIAL) uniform int uMaterialIndex;
 

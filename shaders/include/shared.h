@@ -66,7 +66,8 @@ using mat4 = glm::mat4;
 // y = roughness, E = F0·r + g (cone.glsl, specularAlbedo).
 #define LIT_TEX_SPECULAR_ALBEDO 22
 #define LIT_SPECULAR_ALBEDO_SIZE 32    // texels per side of that table
-// Viewport overlay (OverlayPass): the G-buffer's R32UI node IDs (node index + 1, 0 = background).
+// The G-buffer's RGBA32UI IDs: r node index + 1 (0 = background), g the primitive within the
+// node's mesh, b the material index (the lighting passes read its table, gbuffer.glsl).
 #define LIT_TEX_GBUFFER_ID 23
 #define LIT_SSBO_OUTLINE_CLASSES 4      // uint per node ID (index + 1): 0 not outlined, 1 selected, 2 active (overlay_outline.frag.glsl)
 #define LIT_OUTLINE_RADIUS 2           // selection outline width (pixels outside the silhouette)
@@ -279,6 +280,8 @@ struct GpuMaterial {
     ivec4 textures;           // x base colour, y metallic-roughness, z normal, w emissive (1 = present)
     ivec4 modes;              // x occlusion texture present, y alpha mode (LIT_ALPHA_*), z double sided, w unused
     vec4 alpha;               // x alpha cutoff, yzw unused
+    vec4 specular;            // rgb dielectric F0, a dielectric F90 (KHR_materials_ior, _specular; docs/MATERIALS.md)
+    vec4 clearcoat;           // x coat weight, y coat roughness (perceptual), zw unused (KHR_materials_clearcoat)
 };
 
 // The light view a shadow pass renders. std140, binding LIT_UBO_SHADOW_PASS.
@@ -303,7 +306,7 @@ struct VoxelUniforms {
 static_assert(sizeof(VoxelUniforms) == 6 * 16);
 static_assert(sizeof(FrameUniforms) == 4 * 64 + 7 * 16);
 static_assert(sizeof(GpuLight) == 5 * 16 + 64);
-static_assert(sizeof(GpuMaterial) == 6 * 16);
+static_assert(sizeof(GpuMaterial) == 8 * 16);
 static_assert(sizeof(ShadowPassUniforms) == 64 + 16);
 inline const vec3 kDiffuseConeDirections[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_DIRECTIONS};
 inline const float kDiffuseConeWeights[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_WEIGHTS};

@@ -1,0 +1,163 @@
+// KHR_materials_ior / _specular / _clearcoat factors in and out (scene/GltfMaterialLayers.h).
+
+#include "scene/GltfMaterialLayers.h"
+
+#include "scene/GltfKeep.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace lit::gltfkeep {
+
+namespace {
+
+// The number `key` of an extension object, if it is one (non-numbers are reported).
+std::optional<double> numberIn(const tinygltf::Value& object, const char* key, const std::string& where,
+                               const std::function<void(const std::string&)>& warn) {
+    if (!object.Has(key)) return std::nullopt;
+    const tinygltf::Value& value = object.Get(key);
+    if (!value.IsNumber()) {
+        warn(where + " " + key + " is not a number; Lit uses the default");
+        return std::nullopt;
+    }
+    const double number = value.GetNumberAsDouble();
+    if (!std::isfinite(number)) {
+        warn(where + " " + key + " is not finite; Lit uses the default");
+        return std::nullopt;
+    }
+    return number;
+}
+
+// A factor in [lo, hi], clamped with a warning; `fallback` when absent.
+float factorIn(const tinygltf::Value& object, const char* key, float fallback, double lo, double hi,
+               const std::string& where, const std::function<void(const std::string&)>& warn) {
+    const std::optional<double> number = numberIn(object, key, where, warn);
+    if (!number) return fallback;
+    const double clamped = std::clamp(*number, lo, hi);
+    if (clamped != *number)
+        warn(where + " " + key + " " + std::to_string(*number) + " is outside its range; Lit uses " +
+             std::to_string(clamped));
+    return static_cast<float>(clamped);
+}
+
+void warnTextures(const tinygltf::Value& object, std::initializer_list<const char*> keys, const std::string& where,
+                  const std::function<void(const std::string&)>& warn) {
+    for (const char* key : keys)
+        if (object.Has(key))
+            warn(where + " " + key + " is not drawn (Lit draws the extension's factors; the texture is kept and saved)");
+}
+
+// The extension object the file had for `name` (Material::kept), if any.
+std::optional<nlohmann::json> keptObject(const nlohmann::json& kept, const char* name) {
+    if (!kept.is_object()) return std::nullopt;
+    const auto found = kept.find(name);
+    if (found == kept.end() || !found->is_object()) return std::nullopt;
+    return *found;
+}
+
+// Sets `object[key]` to `value` unless the file's number there already rounds to it, or the key
+// is absent and `value` is the extension's default.
+void setFactor(nlohmann::json& object, const char* key, float value, float defaultValue) {
+    const auto found = object.find(key);
+    if (found != object.end() && found->is_number() && static_cast<float>(found->get<double>()) == value) return;
+    if (found == object.end() && value == defaultValue) return;
+    object[key] = static_cast<double>(value);
+}
+
+void setColor(nlohmann::json& object, const char* key, const glm::vec3& value, const glm::vec3& defaultValue) {
+    const auto found = object.find(key);
+    if (found != object.end() && found->is_array() && found->size() == 3) {
+        bool same = true;
+        for (int c = 0; c < 3; ++c)
+            same = same && (*found)[static_cast<std::size_t>(c)].is_number() &&
+                   static_cast<float>((*found)[static_cast<std::size_t>(c)].get<double>()) == value[c];
+        if (same) return;
+    }
+    if (found == object.end() && value == defaultValue) return;
+    object[key] = nlohmann::json::array({static_cast<double>(value.x), static_cast<double>(value.y),
+                                         static_cast<double>(value.z)});
+}
+
+}  // namespace
+
+void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& material,
+                        const std::function<void(const std::string&)>& warn) {
+    const auto object = [&](const char* name) -> const tinygltf::Value* {
+        const auto it = extensions.find(name);
+        if (it == extensions.end()) return nullptr;
+        if (!it->second.IsObject()) {
+            warn(std::string(name) + " is not an object; ignored");
+            return nullptr;
+        }
+        return &it->second;
+    };
+    if (const tinygltf::Value* ior = object(kIorExtension)) {
+        const std::string where = kIorExtension;
+        // The schema allows 0 (a perfect mirror) or at least 1.
+        if (const std::optional<double> value = numberIn(*ior, "ior", where, warn)) {
+            double used = *value;
+            if (used != 0.0 && used < 1.0) used = 1.0;
+            if (used != *value)
+                warn(where + " ior " + std::to_string(*value) + " is below 1; Lit uses " + std::to_string(used));
+            material.ior = static_cast<float>(used);
+        }
+    }
+    if (const tinygltf::Value* specular = object(kSpecularExtension)) {
+        const std::string where = kSpecularExtension;
+        material.specularFactor = factorIn(*specular, "specularFactor", 1.0f, 0.0, 1.0, where, warn);
+        if (specular->Has("specularColorFactor")) {
+            const tinygltf::Value& color = specular->Get("specularColorFactor");
+            bool valid = color.IsArray() && color.ArrayLen() == 3;
+            glm::vec3 c(1.0f);
+            for (int i = 0; valid && i < 3; ++i) {
+                const tinygltf::Value& e = color.Get(i);
+                valid = e.IsNumber() && std::isfinite(e.GetNumberAsDouble());
+                if (valid) c[i] = static_cast<float>(std::max(0.0, e.GetNumberAsDouble()));
+                if (valid && e.GetNumberAsDouble() < 0.0) warn(where + " specularColorFactor has a negative value; Lit uses 0");
+            }
+            if (valid)
+                material.specularColorFactor = c;
+            else
+                warn(where + " specularColorFactor is not three finite numbers; Lit uses [1, 1, 1]");
+        }
+        warnTextures(*specular, {"specularTexture", "specularColorTexture"}, where, warn);
+    }
+    if (const tinygltf::Value* clearcoat = object(kClearcoatExtension)) {
+        const std::string where = kClearcoatExtension;
+        material.clearcoatFactor = factorIn(*clearcoat, "clearcoatFactor", 0.0f, 0.0, 1.0, where, warn);
+        material.clearcoatRoughness = factorIn(*clearcoat, "clearcoatRoughnessFactor", 0.0f, 0.0, 1.0, where, warn);
+        warnTextures(*clearcoat, {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}, where,
+                     warn);
+    }
+}
+
+void writeMaterialLayers(const Material& material, tinygltf::ExtensionMap& extensions,
+                         const std::function<void(const std::string&)>& use) {
+    const nlohmann::json kept = material.kept.extensions.empty()
+                                    ? nlohmann::json::object()
+                                    : nlohmann::json::parse(material.kept.extensions, nullptr, false);
+    const auto write = [&](const char* name, const auto& setFactors) {
+        const std::optional<nlohmann::json> file = keptObject(kept, name);
+        nlohmann::json object = file.value_or(nlohmann::json::object());
+        setFactors(object);
+        if (object.empty() && !file) return;
+        extensions[name] = toValue(object);
+        use(name);
+    };
+    write(kIorExtension, [&](nlohmann::json& o) { setFactor(o, "ior", material.ior, 1.5f); });
+    write(kSpecularExtension, [&](nlohmann::json& o) {
+        setFactor(o, "specularFactor", material.specularFactor, 1.0f);
+        setColor(o, "specularColorFactor", material.specularColorFactor, glm::vec3(1.0f));
+    });
+    write(kClearcoatExtension, [&](nlohmann::json& o) {
+        setFactor(o, "clearcoatFactor", material.clearcoatFactor, 0.0f);
+        setFactor(o, "clearcoatRoughnessFactor", material.clearcoatRoughness, 0.0f);
+    });
+}
+
+}  // namespace lit::gltfkeep
