@@ -126,6 +126,10 @@ void setMaterial(Parser& p, std::string_view name, Material& m, int rememberedTe
     } else if (name == "material.specularTint") {
         if (auto v = p.vec3(); v && p.require(allIn(*v, 0.0f, std::numeric_limits<float>::max()), "values must not be negative"))
             m.specularColorFactor = *v;
+    } else if (name == "material.sheen") {
+        if (auto v = p.vec3(); v && p.require(allIn(*v, 0.0f, 1.0f), "values must be in [0, 1]")) m.sheenColorFactor = *v;
+    } else if (name == "material.sheenRoughness") {
+        if (auto v = p.number(); v && p.require(*v >= 0.0f && *v <= 1.0f, "must be in [0, 1]")) m.sheenRoughness = *v;
     } else if (name == "material.clearcoat") {
         if (auto v = p.number(); v && p.require(*v >= 0.0f && *v <= 1.0f, "must be in [0, 1]")) m.clearcoatFactor = *v;
     } else if (name == "material.clearcoatRoughness") {
@@ -191,7 +195,8 @@ const std::vector<std::string>& propertyNames() {
         "node.translation",  "node.rotation",      "node.scale",       "node.name",
         "material.albedo",   "material.albedoTexture", "material.roughness", "material.metalness",
         "material.emissive", "material.emissiveStrength", "material.ior", "material.specular",
-        "material.specularTint", "material.clearcoat", "material.clearcoatRoughness",
+        "material.specularTint", "material.sheen", "material.sheenRoughness", "material.clearcoat",
+        "material.clearcoatRoughness",
         "light.type",        "light.color",        "light.intensity",  "light.range",
         "light.inner",       "light.outer",        "light.shadow",
         "camera.fov",        "camera.near",        "camera.far",

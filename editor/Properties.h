@@ -7,8 +7,8 @@
 //   node.name TEXT
 //   material.albedo R G B [A] | material.albedoTexture on|off | material.roughness V
 //   material.metalness V | material.emissive R G B | material.emissiveStrength V
-//   material.ior V | material.specular V | material.specularTint R G B | material.clearcoat V
-//   material.clearcoatRoughness V   (docs/MATERIALS.md)
+//   material.ior V | material.specular V | material.specularTint R G B | material.sheen R G B
+//   material.sheenRoughness V | material.clearcoat V | material.clearcoatRoughness V   (docs/MATERIALS.md)
 //   light.type directional|point|spot | light.color R G B | light.intensity V | light.range V
 //   light.inner DEG | light.outer DEG | light.shadow on|off
 //   camera.fov DEG | camera.near V | camera.far V

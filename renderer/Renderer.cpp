@@ -32,6 +32,7 @@
 #include "scene/Frustum.h"
 #include "scene/GpuScene.h"
 #include "scene/Scene.h"
+#include "scene/SheenAlbedo.h"
 #include "scene/Sky.h"
 
 namespace lit {
@@ -119,6 +120,7 @@ struct Renderer::Impl {
     void drawGBuffer(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
     void updateGi(const Scene& scene, const RenderSettings& settings, const GiBudget& budget, bool shadowsDirty);
     void lightTerms(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
+    void bindSheenAlbedo();
     void traceIndirect(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
     void composite(const RenderSettings& settings);
     void drawOverlay(const gpu::FrameUniforms& frame);
@@ -164,6 +166,7 @@ struct Renderer::Impl {
     std::optional<gpu::FrameUniforms> lastFrame;
     float lastVoxelSize = 0.0f, lastVolumeSide = 0.0f;  // m; 0 when that frame had no GI
     LightingTerms terms;
+    gl::Texture sheenAlbedo;  // E_s of KHR_materials_sheen (scene/SheenAlbedo.h), made for the first scene with layers
     gl::Buffer frameUniforms;
     gl::Buffer lightBuffer;
     std::unique_ptr<GpuScene> gpuScene;
@@ -387,10 +390,22 @@ void Renderer::Impl::updateGi(const Scene& scene, const RenderSettings& settings
 }
 
 // L_DD + L_DS from the lights and their shadow maps, then L_ID + L_IS from the voxel GI.
+void Renderer::Impl::bindSheenAlbedo() {
+    if (!sheenAlbedo) {
+        sheenAlbedo = gl::Texture("sheen albedo", {GL_TEXTURE_2D, GL_R32F, kSheenAlbedoSize, kSheenAlbedoSize, 1, 1});
+        glTextureSubImage2D(sheenAlbedo.id(), 0, 0, 0, kSheenAlbedoSize, kSheenAlbedoSize, GL_RED, GL_FLOAT,
+                            sheenAlbedoTable().data());
+        sheenAlbedo.setFilter(GL_LINEAR, GL_LINEAR);
+        sheenAlbedo.setWrap(GL_CLAMP_TO_EDGE);
+    }
+    sheenAlbedo.bind(LIT_TEX_SHEEN_ALBEDO);
+}
+
 void Renderer::Impl::lightTerms(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame) {
     shadow.bindMaps();
     // The lighting passes read each pixel's specular layers from the material table (gbuffer.glsl).
     gpuScene->materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
+    if (gpuScene->hasMaterialLayers()) bindSheenAlbedo();
     {
         Profiler::Scope scope(profiler, "lighting");
         direct.execute(terms, settings, {ShadowKinds::of(lights), {gpuScene->hasMaterialLayers()}});

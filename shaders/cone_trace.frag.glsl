@@ -1,10 +1,11 @@
 #version 450 core
 // Cone-tracing pass: the two indirect terms of every pixel from the radiance volume.
-//   L_ID = albedo_d · b · Σ_i W_i/π · C_i                  (six diffuse cones, cone.glsl)
+//   L_ID = a · Σ_i W_i/π · C_i                              (six diffuse cones, cone.glsl)
 //   L_IS = E · Σ_k w_k C(l_k) / Σ_k w_k      (N GGX-sampled cones, split sum, cone.glsl;
 //          on rough diffuse surfaces C(l_k) is blended from the six diffuse cones instead)
-// with b = 1 − cc·Fc(n·v) what a clear coat lets through and E = indirectSpecularWeight, the
-// lobe traced at specularLobeRoughness (docs/MATERIALS.md).
+// with a = indirectDiffuseAlbedo (the base's albedo and the sheen's, under a clear coat) and
+// E = indirectSpecularWeight times what a sheen leaves of the base, the lobe traced at
+// specularLobeRoughness (docs/MATERIALS.md).
 // both × indirect intensity (traceParams.x) × the material's ambient occlusion (G-buffer albedo.a).
 // Background pixels write 0. docs/GI.md derives the weights.
 #include "frame.glsl"
@@ -34,7 +35,7 @@ void main() {
 
     int count = clamp(voxel.traceOptions.x, 1, 8);
     float NdotV = max(dot(n, v), 0.0);
-    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness) * clearcoatBaseScale(s.clearcoat, NdotV);
+    vec3 albedo = indirectDiffuseAlbedo(s, NdotV);
     bool diffuseSurface = max(albedo.r, max(albedo.g, albedo.b)) > 0.0;
     float lobeRoughness = specularLobeRoughness(s);
     // Rough specular on a surface with diffuse cones reuses them (cone.glsl). It does so also when
@@ -50,7 +51,8 @@ void main() {
 
     vec3 specular = vec3(0.0);
     if (uTraceTerms.y != 0)
-        specular = indirectSpecularWeight(s.f0, s.f90, s.roughness, s.clearcoat, s.clearcoatRoughness, NdotV) *
+        specular = indirectSpecularWeight(s.f0, s.f90, s.roughness, sheenBaseScale(s, NdotV), s.clearcoat,
+                                          s.clearcoatRoughness, NdotV) *
                    traceSpecular(origin, n, v, lobeRoughness, count, gl_FragCoord.xy, voxel.traceOptions.y,
                                  maxDistance, reuse, cones);
     outIndirectDiffuse = vec4(diffuse * scale, 1.0);

@@ -1,9 +1,10 @@
 #version 450 core
 // Direct lighting pass: for every pixel, the two direct terms from all punctual lights.
-//   L_DD = Σ V · E · (albedo_d / π) · max(n·l, 0) · b                  (Lambert)
-//   L_DS = Σ V · E · (D·G·F / (4 (n·l)(n·v)) · b + cc · f_coat) · max(n·l, 0)   (GGX microfacet)
+//   L_DD = Σ V · E · (albedo_d / π · t + f_sheen) · max(n·l, 0) · b          (Lambert, sheen)
+//   L_DS = Σ V · E · (D·G·F / (4 (n·l)(n·v)) · t · b + cc · f_coat) · max(n·l, 0)   (GGX microfacet)
 // where E is the light's irradiance at normal incidence (docs/UNITS.md), V the shadow-map
-// visibility, b = 1 − cc·Fc(n·v) what a clear coat of weight cc lets through and f_coat its lobe
+// visibility, t = 1 − max(s_c)·E_s(n·v) what a sheen leaves of the base, f_sheen its lobe,
+// b = 1 − cc·Fc(n·v) what a clear coat of weight cc lets through and f_coat its lobe
 // (docs/MATERIALS.md; the coat shares the shading normal here). Emission is added to L_DD so
 // that the four terms still sum to the final image.
 #include "frame.glsl"
@@ -30,8 +31,12 @@ void main() {
     vec3 n = shadingNormal(s.normal, v);
     float alpha = alphaFromRoughness(s.roughness);
     vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);
-    float base = clearcoatBaseScale(s.clearcoat, max(dot(n, v), 0.0));
+    float NdotV = max(dot(n, v), 0.0);
+    float coatScale = clearcoatBaseScale(s.clearcoat, NdotV);
+    float base = coatScale * sheenBaseScale(s, NdotV);
     float coatAlpha = alphaFromRoughness(s.clearcoatRoughness);
+    bool sheen = max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b)) > 0.0;
+    float alphaSheen = sheenAlpha(s.sheenRoughness);
 
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
@@ -45,6 +50,11 @@ void main() {
         if (visibility <= 0.0) continue;
         vec3 E = ls.radiance * visibility * NdotL;
         diffuse += E * albedo * (base / PI);
+        if (sheen) {
+            vec3 h = normalize(v + ls.l);
+            diffuse += E * s.sheenColor *
+                       (D_Charlie(max(dot(n, h), 0.0), alphaSheen) * V_Neubelt(NdotL, max(NdotV, 1e-4)) * coatScale);
+        }
         specular += E * specularBrdf(n, v, ls.l, s.f0, s.f90, alpha) * base;
         if (s.clearcoat > 0.0) specular += E * s.clearcoat * specularBrdf(n, v, ls.l, kClearcoatF0, 1.0, coatAlpha);
     }

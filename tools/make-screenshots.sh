@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the images under screenshots/ that the README shows, from the current build:
-# the Cornell box with GI off and on, each lighting term alone, the voxel view, and the editor
+# the Cornell box with GI off and on, each lighting term alone, the voxel view, the material
+# layers scene against its reference, and the editor
 # (its panels with a selection and a camera path, the voxel slice view, the cone directions view
 # in the fast and in the accurate GI mode,
 # and the performance overlay), the editor ones driven by a --script run, and Sponza lit by the
@@ -41,6 +42,15 @@ spp="${LIT_SCREENSHOT_SPP:-512}"
 "$render" "$scene" --size "$size" --gi on --voxels 128 --gi-mode fast \
     --out "$out/cornell_gi_fast.png" --compare "$tmpdir/reference_all.hdr" \
     --difference "$out/cornell_gi_fast_difference.png"
+
+# The material layers scene (tools/blender/make_material_layers.py, docs/MATERIALS.md): plain,
+# clear-coated smooth and rough, specular, IOR with a tint, clear-coated gold, sheen; Lit's defaults at
+# 128³, the every-bounce reference, and the Difference view of the first against the second.
+layers="$root/tests/data/blender/material_layers/material_layers.gltf"
+"$render" "$layers" --reference --bounces all --spp "$spp" --size 640x360 --out "$out/material_layers_reference.png" \
+    --hdr "$tmpdir/layers_reference.hdr"
+"$render" "$layers" --size 640x360 --gi on --voxels 128 --out "$out/material_layers.png" \
+    --compare "$tmpdir/layers_reference.hdr" --difference "$out/material_layers_difference.png"
 
 # The editor. Keys of a camera path in front of the box, seen from further back and to the side
 # so the curve and its key frusta show; the tall box selected (outline, gizmo) in the inspector.

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The material layers against the reference: the Blender scene of
-# tools/blender/make_material_layers.py (six spheres: plain, clear-coated smooth and rough,
-# Blender's Specular 1, IOR 2.2 with a specular tint, clear-coated gold) rendered with Lit's
+# tools/blender/make_material_layers.py (seven spheres: plain, clear-coated smooth and rough,
+# Blender's Specular 1, IOR 2.2 with a specular tint, clear-coated gold, a sheen from a Velvet
+# BSDF) rendered with Lit's
 # defaults and with Lit's reference path tracer (every bounce), each sphere's mean per term
 # (tools/material_accuracy.py). Writes docs/tables/material-accuracy.md, headed by the date, the
 # commit and the machine; docs/MATERIALS.md explains it.
@@ -64,8 +65,8 @@ mkdir -p "$(dirname "$out")"
     echo
     echo "Each sphere's mean over its inner pixels, Lit ÷ the reference, per term (— where the reference's is 0: a metal has no diffuse term):"
     echo
-    echo "| term | plain | clearcoat (1, rough. 0.05) | clearcoat_rough (0.6, 0.35) | specular (F0 0.08) | ior (2.2, tinted to F0 0.04) | coated_metal (gold, coat 1, 0.1) |"
-    echo "|---|---:|---:|---:|---:|---:|---:|"
+    echo "| term | plain | clearcoat (1, rough. 0.05) | clearcoat_rough (0.6, 0.35) | specular (F0 0.08) | ior (2.2, tinted to F0 0.04) | coated_metal (gold, coat 1, 0.1) | sheen (0.8, rough. 0.5) |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|"
     echo "$rows"
 } > "$out"
 echo "wrote $out"

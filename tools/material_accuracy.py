@@ -15,7 +15,7 @@ import numpy as np
 
 from room_accuracy import read_hdr, read_node_map
 
-SPHERES = ["plain", "clearcoat", "clearcoat_rough", "specular", "ior", "coated_metal"]
+SPHERES = ["plain", "clearcoat", "clearcoat_rough", "specular", "ior", "coated_metal", "sheen"]
 
 
 def inner_masks(nodes, names):

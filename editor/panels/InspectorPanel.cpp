@@ -239,9 +239,9 @@ void InspectorPanel::drawMaterial(Document& doc, int materialIndex) {
     ImGui::PopID();
 }
 
-// KHR_materials_ior, _specular and _clearcoat (docs/MATERIALS.md): their factors.
+// KHR_materials_ior, _specular, _sheen and _clearcoat (docs/MATERIALS.md): their factors.
 void InspectorPanel::drawSpecularLayers(Document& doc, Material& material) {
-    if (!ImGui::TreeNodeEx("Specular and clear coat", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!ImGui::TreeNodeEx("Specular, sheen and clear coat", ImGuiTreeNodeFlags_DefaultOpen)) return;
     float ior = material.ior;
     bool changed = ImGui::DragFloat("IOR", &ior, 0.005f, 1.0f, 3.0f, "%.3f");
     tooltip("Index of refraction of the dielectric (KHR_materials_ior): F0 = ((IOR - 1)/(IOR + 1))^2, 0.04 at 1.5");
@@ -257,6 +257,16 @@ void InspectorPanel::drawSpecularLayers(Document& doc, Material& material) {
     tooltip("Colour of the dielectric's F0, linear RGB, may exceed 1 (KHR_materials_specular); F0 is capped at 1");
     track(doc, "Specular Tint", Change::Material, changed,
           [&] { material.specularColorFactor = glm::max(tint, glm::vec3(0.0f)); });
+
+    glm::vec3 sheen = material.sheenColorFactor;
+    changed = ImGui::ColorEdit3("Sheen", &sheen.x, kColourFlags);
+    tooltip("Sheen colour, linear RGB; black = no sheen (KHR_materials_sheen: cloth, velvet)");
+    track(doc, "Sheen", Change::Material, changed, [&] { material.sheenColorFactor = sheen; });
+
+    float sheenRoughness = material.sheenRoughness;
+    changed = ImGui::SliderFloat("Sheen roughness", &sheenRoughness, 0.0f, 1.0f, "%.3f");
+    tooltip("Perceptual roughness of the sheen: low keeps it at grazing angles, high spreads it");
+    track(doc, "Sheen Roughness", Change::Material, changed, [&] { material.sheenRoughness = sheenRoughness; });
 
     float coat = material.clearcoatFactor;
     changed = ImGui::SliderFloat("Clear coat", &coat, 0.0f, 1.0f, "%.3f");

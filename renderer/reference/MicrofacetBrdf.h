@@ -7,8 +7,12 @@
 // Visible Normals" (JCGT 7(4)); Schlick 1994 (Fresnel approximation).
 // Roughness is glTF's perceptual roughness; α = roughness². Keep every function identical to its
 // GLSL namesake: the GL consistency test (tests/gl/test_reference.cpp) compares the two renderers.
-// The material model, with KHR_materials_ior, KHR_materials_specular and KHR_materials_clearcoat,
-// is docs/MATERIALS.md; the path tracer's Bsdf (ReferenceBsdf.h) puts these terms together.
+// The material model, with KHR_materials_ior, KHR_materials_specular, KHR_materials_sheen and
+// KHR_materials_clearcoat, is docs/MATERIALS.md; the path tracer's Bsdf (ReferenceBsdf.h) puts
+// these terms together. The sheen's terms and its albedo table are scene/SheenAlbedo.h's, shared
+// with the rasterizer.
+
+#include "scene/SheenAlbedo.h"
 
 #include <glm/glm.hpp>
 
@@ -110,6 +114,23 @@ inline float clearcoatBrdf(const glm::vec3& nc, const glm::vec3& v, const glm::v
     const float NdotH = std::max(glm::dot(nc, h), 0.0f);
     const float VdotH = std::max(glm::dot(v, h), 0.0f);
     return D_GGX(NdotH, alpha) * G_SmithGGXCorrelated(NdotL, NdotV, alpha) * F_Clearcoat(VdotH) / (4.0f * NdotL * NdotV);
+}
+
+// The sheen lobe f_sheen = s_c·D_s(n·h; α_s)·V_s(n·l, n·v) (KHR_materials_sheen: Charlie
+// distribution, Neubelt visibility), with direct_lighting.frag.glsl's clamps; `alpha` is
+// sheenAlpha(r_s). Multiply by n·l.
+inline glm::vec3 sheenBrdf(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l, const glm::vec3& sheenColor,
+                           float alpha) {
+    const glm::vec3 h = glm::normalize(v + l);
+    const float NdotL = std::max(glm::dot(n, l), 0.0f);
+    const float NdotV = std::max(glm::dot(n, v), 1e-4f);
+    const float NdotH = std::max(glm::dot(n, h), 0.0f);
+    return sheenColor * (sheenDistribution(NdotH, alpha) * sheenVisibility(NdotL, NdotV));
+}
+// What a sheen leaves of the base under it: 1 − max(s_c)·E_s(n·v, r_s), exactly 1 without a sheen.
+inline float sheenBaseScale(const glm::vec3& sheenColor, float sheenRoughness, float NdotV) {
+    const float strength = std::max(sheenColor.r, std::max(sheenColor.g, sheenColor.b));
+    return strength > 0.0f ? 1.0f - strength * sheenAlbedo(std::max(NdotV, 0.0f), sheenRoughness) : 1.0f;
 }
 
 // ---- Sampling (path tracer only) ----------------------------------------------------------

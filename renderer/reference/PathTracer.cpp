@@ -97,12 +97,15 @@ public:
             Ray shadow{origin, ls.l, 0.0f, std::isinf(ls.distance) ? INFINITY : ls.distance * (1.0f - 1e-4f)};
             ++rays;
             if (scene_.occluded(shadow)) continue;
-            // Each lobe with its own cosine: the base's n·l, the coat's n_c·l.
+            // Each lobe with its own cosine: the base's and the sheen's n·l, the coat's n_c·l. The
+            // sheen's light is diffuse.
             const float NdotL = glm::dot(bsdf.n, ls.l);
             if (NdotL > 0.0f) {
                 const glm::vec3 E = ls.irradiance * NdotL;
-                out.diffuse += E * bsdf.albedo / kPi * bsdf.baseScale;
-                out.specular += E * specularBrdf(bsdf.n, bsdf.v, ls.l, bsdf.f0, bsdf.f90, bsdf.alpha) * bsdf.baseScale;
+                out.diffuse += E * bsdf.albedo / kPi * bsdf.sheenScale * bsdf.baseScale;
+                if (bsdf.hasSheen()) out.diffuse += E * bsdf.sheenLobe(ls.l);
+                out.specular += E * specularBrdf(bsdf.n, bsdf.v, ls.l, bsdf.f0, bsdf.f90, bsdf.alpha) * bsdf.sheenScale *
+                                bsdf.baseScale;
             }
             if (bsdf.hasCoat()) {
                 const float NcdotL = glm::dot(bsdf.nc, ls.l);

@@ -1,11 +1,13 @@
 #pragma once
 // The BRDF of one surface point as the path tracer evaluates, samples and weighs it: the material
-// model of docs/MATERIALS.md (MicrofacetBrdf.h's terms) with its three lobes,
-//   f = f_base · (1 − cc·Fc(n_c·v)) + cc · f_coat,   f_base = f_diffuse + f_specular,
-// each lobe with its own cosine (f_base × n·l, f_coat × n_c·l). Split by lobe for Lit's terms:
-// the base's diffuse lobe is "diffuse", the base's specular lobe and the coat are "specular".
-// Sampling draws one lobe (cosine hemisphere around n, GGX visible normals around n with α, GGX
-// visible normals around n_c with α_c) and pdf() is the density of the whole mixture.
+// model of docs/MATERIALS.md (MicrofacetBrdf.h's terms) with its four lobes,
+//   f = (f_sheen + f_base · t_s) · (1 − cc·Fc(n_c·v)) + cc · f_coat,   f_base = f_diffuse + f_specular,
+//   t_s = 1 − max(s_c)·E_s(n·v, r_s)   (what the sheen leaves of the base; 1 without a sheen),
+// each lobe with its own cosine (f_sheen and f_base × n·l, f_coat × n_c·l). Split by lobe for
+// Lit's terms: the base's diffuse lobe and the sheen are "diffuse", the base's specular lobe and
+// the coat are "specular". Sampling draws one lobe (cosine hemisphere around n, which also covers
+// the sheen, GGX visible normals around n with α, GGX visible normals around n_c with α_c) and
+// pdf() is the density of the whole mixture.
 
 #include "reference/MicrofacetBrdf.h"
 #include "reference/ReferenceScene.h"
@@ -40,6 +42,11 @@ struct Bsdf {
     // 1 − cc·Fc(n_c·v) (exactly 1 without a coat).
     glm::vec3 nc{0.0f};
     float coat = 0.0f, coatAlpha = 1.0f, baseScale = 1.0f;
+    // The sheen: colour s_c (0: no sheen lobe), α_s, and what it leaves of the base under it,
+    // sheenScale = 1 − max(s_c)·E_s(n·v, r_s) (exactly 1 without a sheen). The sheen lies under the
+    // coat: baseScale applies to it, sheenScale does not.
+    glm::vec3 sheen{0.0f};
+    float sheenAlpha = 1.0f, sheenScale = 1.0f;
     // Chances of sampling each lobe: GGX base, GGX coat, and the rest the cosine lobe.
     float specularProbability = 0.0f, coatProbability = 0.0f, diffuseProbability = 1.0f;
 
@@ -60,10 +67,20 @@ struct Bsdf {
             coatShare = coat * F_Clearcoat(NcdotV);
             baseScale = clearcoatBaseScale(coat, NcdotV);
         }
+        const float NdotV = std::max(glm::dot(n, v), 0.0f);
+        float sheenShare = 0.0f;
+        if (bsdfMaxComponent(hit.sheenColor) > 0.0f) {
+            sheen = hit.sheenColor;
+            sheenAlpha = lit::sheenAlpha(hit.sheenRoughness);
+            sheenScale = sheenBaseScale(sheen, hit.sheenRoughness, NdotV);
+            sheenShare = bsdfLuminance(sheen) * sheenAlbedo(NdotV, hit.sheenRoughness) * baseScale;
+        }
         // Lobe choice by each lobe's rough share of the reflected energy: the Fresnel factors at
-        // the view angle and the diffuse albedo, the base's lobes times the coat's 1 − cc·Fc.
-        const float specular = bsdfLuminance(F_Schlick(f0, f90, std::max(glm::dot(n, v), 0.0f))) * baseScale;
-        const float diffuse = bsdfLuminance(albedo) * baseScale;
+        // the view angle and the diffuse albedo, the base's lobes times the sheen's t_s and the
+        // coat's 1 − cc·Fc. The cosine lobe also draws the sheen's directions: its share adds the
+        // sheen's directional albedo lum(s_c)·E_s(n·v) (under the coat).
+        const float specular = bsdfLuminance(F_Schlick(f0, f90, NdotV)) * sheenScale * baseScale;
+        const float diffuse = bsdfLuminance(albedo) * sheenScale * baseScale + sheenShare;
         const float total = specular + diffuse + coatShare;
         if (total > 0.0f) {
             specularProbability = specular / total;
@@ -73,13 +90,23 @@ struct Bsdf {
     }
 
     bool hasCoat() const { return coat > 0.0f; }
+    bool hasSheen() const { return bsdfMaxComponent(sheen) > 0.0f; }
 
-    // The base lobes, each already scaled by the coat's 1 − cc·Fc; multiply by n·l.
+    // The diffuse share: the base's Lambert lobe × t_s plus the sheen lobe, both scaled by the
+    // coat's 1 − cc·Fc; multiply by n·l.
     glm::vec3 diffuse(const glm::vec3& l) const {
-        return glm::dot(n, l) > 0.0f ? albedo / kPi * baseScale : glm::vec3(0.0f);
+        if (glm::dot(n, l) <= 0.0f) return glm::vec3(0.0f);
+        glm::vec3 f = albedo / kPi * sheenScale * baseScale;
+        if (hasSheen()) f += sheenLobe(l);
+        return f;
     }
+    // The base's specular lobe × t_s × (1 − cc·Fc); multiply by n·l.
     glm::vec3 specular(const glm::vec3& l) const {
-        return glm::dot(n, l) > 0.0f ? specularBrdf(n, v, l, f0, f90, alpha) * baseScale : glm::vec3(0.0f);
+        return glm::dot(n, l) > 0.0f ? specularBrdf(n, v, l, f0, f90, alpha) * sheenScale * baseScale : glm::vec3(0.0f);
+    }
+    // The sheen lobe alone, s_c·D_s·V_s × (1 − cc·Fc) (part of diffuse()); multiply by n·l.
+    glm::vec3 sheenLobe(const glm::vec3& l) const {
+        return hasSheen() && glm::dot(n, l) > 0.0f ? sheenBrdf(n, v, l, sheen, sheenAlpha) * baseScale : glm::vec3(0.0f);
     }
     // The coat lobe with its weight, cc·f_coat; multiply by n_c·l.
     glm::vec3 coatLobe(const glm::vec3& l) const {
@@ -99,7 +126,8 @@ struct Bsdf {
     // True when some lobe reflects light towards l (so that light from l counts).
     bool above(const glm::vec3& l) const { return glm::dot(n, l) > 0.0f || (hasCoat() && glm::dot(nc, l) > 0.0f); }
 
-    // Density (per solid angle) with which sample() draws l: the three lobes' mixture. Each GGX
+    // Density (per solid angle) with which sample() draws l: the three sampled lobes' mixture (the
+    // cosine lobe stands for the Lambert lobe and the sheen, both on n's hemisphere). Each GGX
     // lobe's density counts wherever its reflected directions land (n·h > 0), also below the other
     // normal's horizon, because sample() keeps a direction any lobe reflects into.
     float pdf(const glm::vec3& l) const {
@@ -116,10 +144,11 @@ struct Bsdf {
         return p;
     }
 
-    // False for a surface that reflects nothing (black, no specular and no coat): the path ends.
+    // False for a surface that reflects nothing (black, no specular, no sheen and no coat): the
+    // path ends.
     bool reflects() const {
         return bsdfMaxComponent(albedo) > 0.0f || bsdfMaxComponent(f0) > 0.0f || f90 > 0.0f ||
-               hasCoat();
+               hasSheen() || hasCoat();
     }
 
     // A direction drawn from pdf() with `choice` ∈ [0,1) picking the lobe and u ∈ [0,1)² the

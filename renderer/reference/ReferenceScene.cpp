@@ -326,10 +326,12 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
     hit.metalness = std::clamp(metalness, 0.0f, 1.0f);
     hit.occlusion = occlusion;
     hit.emission = emissive;
-    // docs/MATERIALS.md: the dielectric's F0 and F90, and the clear coat (its factors only; the
-    // extensions' textures are not drawn).
+    // docs/MATERIALS.md: the dielectric's F0 and F90, the sheen and the clear coat (their factors
+    // only; the extensions' textures are not drawn).
     hit.dielectricF0 = dielectricF0(m.ior, m.specularFactor, m.specularColorFactor);
     hit.dielectricF90 = dielectricF90(m.specularFactor);
+    hit.sheenColor = glm::clamp(m.sheenColorFactor, glm::vec3(0.0f), glm::vec3(1.0f));
+    hit.sheenRoughness = std::clamp(m.sheenRoughness, 0.0f, 1.0f);
     hit.clearcoat = std::clamp(m.clearcoatFactor, 0.0f, 1.0f);
     hit.clearcoatRoughness = std::clamp(m.clearcoatRoughness, 0.0f, 1.0f);
     hit.clearcoatNormal = interpolatedNormal;

@@ -1,8 +1,8 @@
 #pragma once
 // A lit::Scene made ready for path tracing: its triangles in world space in an Embree scene,
 // materials resolved at a hit the way the G-buffer pass resolves them (shaders/gbuffer.frag.glsl:
-// base colour, metal-rough, normal, emissive and occlusion textures, alpha mask; the ior, specular
-// and clear-coat factors of docs/MATERIALS.md), the punctual
+// base colour, metal-rough, normal, emissive and occlusion textures, alpha mask; the ior, specular,
+// sheen and clear-coat factors of docs/MATERIALS.md), the punctual
 // lights of passes/LightSetup, and the emissive triangles as area lights with a power CDF.
 // Built once per scene (or per edit); read-only while rendering, so many threads share it.
 
@@ -44,6 +44,9 @@ struct SurfaceHit {
     // F0 = min(((η − 1)/(η + 1))² · k, 1) · s per channel, F90 = s. Metals replace both (specularF0/F90).
     glm::vec3 dielectricF0{0.04f};
     float dielectricF90 = 1.0f;
+    // KHR_materials_sheen: the sheen colour s_c (linear; 0 = no sheen) and its perceptual roughness r_s.
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
     // KHR_materials_clearcoat: the coat's weight cc (0 = no coat), its perceptual roughness, and its
     // normal n_c: the interpolated normal flipped like the others, without the normal map.
     float clearcoat = 0.0f;
@@ -97,8 +100,8 @@ public:
     glm::vec4 sampleTexture(int texture, glm::vec2 uv) const;
     // The material at a surface point from its interpolated attributes (world normal and tangent
     // already transformed; `frontFacing` as gl_FrontFacing). Fills baseColor ... emission, the
-    // dielectric F0/F90, the clear coat, `normal` and `clearcoatNormal`; returns the base colour
-    // alpha (for the mask test).
+    // dielectric F0/F90, the sheen, the clear coat, `normal` and `clearcoatNormal`; returns the
+    // base colour alpha (for the mask test).
     float resolveMaterial(int material, const glm::vec2& uv, glm::vec3 normal, const glm::vec4& tangent,
                           bool frontFacing, SurfaceHit& hit) const;
 

@@ -324,9 +324,9 @@ void keepFileData(const GltfSource& source, const std::vector<int>& nodeRefs, Sc
         }
         scene.otherScenes.push_back(std::move(other));
     }
-    static const std::array<std::string_view, 7> own = {
+    static const std::array<std::string_view, 8> own = {
         "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform", "EXT_texture_webp",
-        "KHR_materials_ior",   "KHR_materials_specular",          "KHR_materials_clearcoat"};
+        "KHR_materials_ior",   "KHR_materials_specular",          "KHR_materials_clearcoat", "KHR_materials_sheen"};
     for (const std::string& e : source.model.extensionsUsed)
         if (std::find(own.begin(), own.end(), e) == own.end()) scene.unknownExtensionsUsed.push_back(e);
     scene.extensionsRequired = source.model.extensionsRequired;

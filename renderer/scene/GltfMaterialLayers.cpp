@@ -1,4 +1,4 @@
-// KHR_materials_ior / _specular / _clearcoat factors in and out (scene/GltfMaterialLayers.h).
+// KHR_materials_ior / _specular / _sheen / _clearcoat factors in and out (scene/GltfMaterialLayers.h).
 
 #include "scene/GltfMaterialLayers.h"
 
@@ -43,6 +43,32 @@ float factorIn(const tinygltf::Value& object, const char* key, float fallback, d
         warn(where + " " + key + " " + std::to_string(*number) + " is outside its range; Lit uses " +
              std::to_string(clamped));
     return static_cast<float>(clamped);
+}
+
+// A colour of three numbers in [0, hi], clamped with a warning; `fallback` when absent or not
+// three finite numbers (with a warning).
+glm::vec3 colorIn(const tinygltf::Value& object, const char* key, const glm::vec3& fallback, double hi,
+                  const std::string& where, const std::function<void(const std::string&)>& warn) {
+    if (!object.Has(key)) return fallback;
+    const tinygltf::Value& color = object.Get(key);
+    glm::vec3 out = fallback;
+    bool valid = color.IsArray() && color.ArrayLen() == 3;
+    bool clamped = false;
+    for (int i = 0; valid && i < 3; ++i) {
+        const tinygltf::Value& e = color.Get(i);
+        valid = e.IsNumber() && std::isfinite(e.GetNumberAsDouble());
+        if (!valid) break;
+        const double value = std::clamp(e.GetNumberAsDouble(), 0.0, hi);
+        clamped = clamped || value != e.GetNumberAsDouble();
+        out[i] = static_cast<float>(value);
+    }
+    if (!valid) {
+        warn(where + " " + key + " is not three finite numbers; Lit uses [" + std::to_string(fallback.x) + ", " +
+             std::to_string(fallback.y) + ", " + std::to_string(fallback.z) + "]");
+        return fallback;
+    }
+    if (clamped) warn(where + " " + key + " has a value outside its range; Lit clamps it");
+    return out;
 }
 
 void warnTextures(const tinygltf::Value& object, std::initializer_list<const char*> keys, const std::string& where,
@@ -110,22 +136,15 @@ void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& mate
     if (const tinygltf::Value* specular = object(kSpecularExtension)) {
         const std::string where = kSpecularExtension;
         material.specularFactor = factorIn(*specular, "specularFactor", 1.0f, 0.0, 1.0, where, warn);
-        if (specular->Has("specularColorFactor")) {
-            const tinygltf::Value& color = specular->Get("specularColorFactor");
-            bool valid = color.IsArray() && color.ArrayLen() == 3;
-            glm::vec3 c(1.0f);
-            for (int i = 0; valid && i < 3; ++i) {
-                const tinygltf::Value& e = color.Get(i);
-                valid = e.IsNumber() && std::isfinite(e.GetNumberAsDouble());
-                if (valid) c[i] = static_cast<float>(std::max(0.0, e.GetNumberAsDouble()));
-                if (valid && e.GetNumberAsDouble() < 0.0) warn(where + " specularColorFactor has a negative value; Lit uses 0");
-            }
-            if (valid)
-                material.specularColorFactor = c;
-            else
-                warn(where + " specularColorFactor is not three finite numbers; Lit uses [1, 1, 1]");
-        }
+        material.specularColorFactor =
+            colorIn(*specular, "specularColorFactor", glm::vec3(1.0f), std::numeric_limits<double>::max(), where, warn);
         warnTextures(*specular, {"specularTexture", "specularColorTexture"}, where, warn);
+    }
+    if (const tinygltf::Value* sheen = object(kSheenExtension)) {
+        const std::string where = kSheenExtension;
+        material.sheenColorFactor = colorIn(*sheen, "sheenColorFactor", glm::vec3(0.0f), 1.0, where, warn);
+        material.sheenRoughness = factorIn(*sheen, "sheenRoughnessFactor", 0.0f, 0.0, 1.0, where, warn);
+        warnTextures(*sheen, {"sheenColorTexture", "sheenRoughnessTexture"}, where, warn);
     }
     if (const tinygltf::Value* clearcoat = object(kClearcoatExtension)) {
         const std::string where = kClearcoatExtension;
@@ -153,6 +172,10 @@ void writeMaterialLayers(const Material& material, tinygltf::ExtensionMap& exten
     write(kSpecularExtension, [&](nlohmann::json& o) {
         setFactor(o, "specularFactor", material.specularFactor, 1.0f);
         setColor(o, "specularColorFactor", material.specularColorFactor, glm::vec3(1.0f));
+    });
+    write(kSheenExtension, [&](nlohmann::json& o) {
+        setColor(o, "sheenColorFactor", material.sheenColorFactor, glm::vec3(0.0f));
+        setFactor(o, "sheenRoughnessFactor", material.sheenRoughness, 0.0f);
     });
     write(kClearcoatExtension, [&](nlohmann::json& o) {
         setFactor(o, "clearcoatFactor", material.clearcoatFactor, 0.0f);

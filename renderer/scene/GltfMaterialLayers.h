@@ -1,5 +1,5 @@
 #pragma once
-// KHR_materials_ior, KHR_materials_specular and KHR_materials_clearcoat: reading their factors
+// KHR_materials_ior, _specular, _sheen and _clearcoat: reading their factors
 // into a Material, and writing them back into the file's extension objects (internal to the
 // glTF import and export).
 
@@ -15,13 +15,14 @@ namespace lit::gltfkeep {
 inline constexpr const char* kIorExtension = "KHR_materials_ior";
 inline constexpr const char* kSpecularExtension = "KHR_materials_specular";
 inline constexpr const char* kClearcoatExtension = "KHR_materials_clearcoat";
+inline constexpr const char* kSheenExtension = "KHR_materials_sheen";
 
-// Reads the factors of the three extensions in `extensions` into `material`. A value outside its
+// Reads the factors of the four extensions in `extensions` into `material`. A value outside its
 // range is clamped and reported through `warn`, as is a texture of theirs (kept, not drawn).
 void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& material,
                         const std::function<void(const std::string&)>& warn);
 
-// Writes the three extensions of `material` into `extensions`: each starts from the object the
+// Writes the four extensions of `material` into `extensions`: each starts from the object the
 // file had (Material::kept: textures and unknown fields stay), with the factors set where they
 // differ from the file's value (or, where the file had none, from the extension's default). An
 // extension the file did not have is written only when a factor differs from its default.

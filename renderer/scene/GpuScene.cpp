@@ -100,6 +100,7 @@ gpu::GpuMaterial toGpu(const Material& m) {
     g.specular = glm::vec4(glm::min(glm::vec3(f0FromIor) * m.specularColorFactor, glm::vec3(1.0f)) * m.specularFactor,
                            m.specularFactor);
     g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughness, 0.0f, 0.0f);
+    g.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughness);
     return g;
 }
 
@@ -233,7 +234,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
     materialUvTransforms_.clear();
     materialLayers_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
         return m.ior != 1.5f || m.specularFactor != 1.0f || m.specularColorFactor != glm::vec3(1.0f) ||
-               m.clearcoatFactor != 0.0f;
+               m.clearcoatFactor != 0.0f || m.sheenColorFactor != glm::vec3(0.0f);
     });
     const auto textureId = [this](int index) -> TextureBinding {
         if (index < 0 || static_cast<std::size_t>(index) >= textures_.size()) return {};

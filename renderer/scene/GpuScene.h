@@ -83,7 +83,7 @@ public:
     const std::vector<DrawItem>& items() const { return items_; }
     bool empty() const { return items_.empty(); }
     const gl::Buffer& materials() const { return materials_; }
-    // Whether a material has KHR_materials_ior / _specular / _clearcoat values other than the
+    // Whether a material has KHR_materials_ior / _specular / _sheen / _clearcoat values other than the
     // defaults (the lighting passes' MaterialLayersVariant).
     bool hasMaterialLayers() const { return materialLayers_; }
 

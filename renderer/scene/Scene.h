@@ -242,12 +242,14 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
-    // Dielectric reflectance and the clear coat (docs/UNITS.md, "Materials"). Lit draws these
+    // Dielectric reflectance, sheen and the clear coat (docs/MATERIALS.md). Lit draws these
     // extensions' factors; their objects stay in `kept` (textures included, which Lit does not
     // draw) and a save writes the factors into them, keeping the file's number where unchanged.
     float ior = 1.5f;                       // KHR_materials_ior: dielectric F0 = ((ior − 1)/(ior + 1))²
     float specularFactor = 1.0f;            // KHR_materials_specular: F90 and a scale of the dielectric F0
     glm::vec3 specularColorFactor{1.0f};    // KHR_materials_specular: tint of the dielectric F0 (may exceed 1)
+    glm::vec3 sheenColorFactor{0.0f};       // KHR_materials_sheen: linear RGB, 0..1 (0: no sheen)
+    float sheenRoughness = 0.0f;            // KHR_materials_sheen: perceptual, 0..1
     float clearcoatFactor = 0.0f;           // KHR_materials_clearcoat: the coat's weight, 0..1
     float clearcoatRoughness = 0.0f;        // KHR_materials_clearcoat: perceptual, 0..1
     KeptGltf kept{};

@@ -51,6 +51,19 @@ vec3 specularBrdf(vec3 n, vec3 v, vec3 l, vec3 f0, float f90, float alpha) {
            (4.0 * NdotL * NdotV);
 }
 
+// KHR_materials_sheen (docs/MATERIALS.md; scene/SheenAlbedo.h on the CPU): the Charlie
+// distribution and Neubelt & Pettineo's visibility; α_s of perceptual roughness clamped to 0.07.
+float sheenAlpha(float roughness) {
+    float r = clamp(roughness, 0.07, 1.0);
+    return r * r;
+}
+float D_Charlie(float NdotH, float alpha) {
+    float invAlpha = 1.0 / alpha;
+    float sin2 = max(1.0 - NdotH * NdotH, 0.0);
+    return (2.0 + invAlpha) * pow(sin2, 0.5 * invAlpha) / (2.0 * PI);
+}
+float V_Neubelt(float NdotL, float NdotV) { return 1.0 / max(4.0 * (NdotL + NdotV - NdotL * NdotV), 1e-6); }
+
 // KHR_materials_clearcoat: a dielectric coat of η 1.5 (F0 0.04) over the base. The base's light
 // is scaled by 1 − weight · Fc(n·v) (clearcoatBaseScale), and the coat adds its GGX lobe
 // weight · D·G·Fc / (4 (n·l)(n·v)) (docs/MATERIALS.md).

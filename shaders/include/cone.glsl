@@ -429,10 +429,11 @@ vec3 specularAlbedo(vec3 f0, float f90, float roughness, float NdotV) {
 }
 
 // What multiplies the traced indirect specular radiance (docs/MATERIALS.md): the base lobe's
-// directional albedo, through what a clear coat of weight `clearcoat` lets pass, plus the coat's.
-vec3 indirectSpecularWeight(vec3 f0, float f90, float roughness, float clearcoat, float clearcoatRoughness,
-                            float NdotV) {
-    vec3 base = specularAlbedo(f0, f90, roughness, NdotV);
+// directional albedo times `baseScale` (what a sheen leaves of it), through what a clear coat of
+// weight `clearcoat` lets pass, plus the coat's.
+vec3 indirectSpecularWeight(vec3 f0, float f90, float roughness, float baseScale, float clearcoat,
+                            float clearcoatRoughness, float NdotV) {
+    vec3 base = specularAlbedo(f0, f90, roughness, NdotV) * baseScale;
     if (clearcoat <= 0.0) return base;
     return base * clearcoatBaseScale(clearcoat, NdotV) +
            clearcoat * specularAlbedo(kClearcoatF0, 1.0, clearcoatRoughness, NdotV);

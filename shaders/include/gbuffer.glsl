@@ -24,12 +24,17 @@ struct Surface {
     float f90;                // and at grazing incidence
     float clearcoat;          // the coat's weight (0: none)
     float clearcoatRoughness; // perceptual
+    vec3 sheenColor;          // 0: no sheen
+    float sheenRoughness;     // perceptual
 };
 
 // Whether any material of the scene has a specular layer (MaterialLayersVariant): without, the
 // metal-rough defaults are taken and neither the ID target nor the table is read.
 #ifndef LIT_MATERIAL_LAYERS
 #define LIT_MATERIAL_LAYERS 1
+#endif
+#if LIT_MATERIAL_LAYERS
+layout(binding = LIT_TEX_SHEEN_ALBEDO) uniform sampler2D sheenAlbedoTable;
 #endif
 
 // The specular parameters of the pixel's material (docs/MATERIALS.md), from the material table
@@ -42,12 +47,40 @@ void readMaterialLayers(ivec2 pixel, inout Surface s) {
     s.f90 = specularF90(s.metalness, m.specular.a);
     s.clearcoat = m.clearcoat.x;
     s.clearcoatRoughness = m.clearcoat.y;
+    s.sheenColor = m.sheen.rgb;
+    s.sheenRoughness = m.sheen.a;
 #else
     s.f0 = specularF0(s.baseColor, s.metalness, vec3(0.04));
     s.f90 = 1.0;
     s.clearcoat = 0.0;
     s.clearcoatRoughness = 0.0;
+    s.sheenColor = vec3(0.0);
+    s.sheenRoughness = 0.0;
 #endif
+}
+
+// E_s(n·v, r_s): the directional albedo of a white sheen (scene/SheenAlbedo.h's table).
+float sheenAlbedo(float NdotV, float roughness) {
+#if LIT_MATERIAL_LAYERS
+    return textureLod(sheenAlbedoTable, vec2(NdotV, roughness), 0.0).r;
+#else
+    return 0.0;
+#endif
+}
+
+// What the sheen leaves of the base under it: 1 − max(s_c)·E_s(n·v).
+float sheenBaseScale(Surface s, float NdotV) {
+    float strength = max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b));
+    return strength > 0.0 ? 1.0 - strength * sheenAlbedo(NdotV, s.sheenRoughness) : 1.0;
+}
+
+// What multiplies the irradiance/π a pixel gathers to give L_ID (docs/MATERIALS.md): the diffuse
+// albedo under the sheen, plus the sheen's own directional albedo (the gather stands for the
+// light over its lobe), all under what a clear coat lets through.
+vec3 indirectDiffuseAlbedo(Surface s, float NdotV) {
+    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness) * sheenBaseScale(s, NdotV) +
+                  s.sheenColor * sheenAlbedo(NdotV, s.sheenRoughness);
+    return albedo * clearcoatBaseScale(s.clearcoat, NdotV);
 }
 
 // The roughness the indirect specular lobe is traced with: a coat smoother than the base

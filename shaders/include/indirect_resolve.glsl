@@ -3,9 +3,10 @@
 // indirect_trace.frag.glsl to every pixel with depth- and normal-aware (joint bilateral) weights,
 // traces at full resolution what they cannot stand for, optionally accumulates over frames, and
 // writes the terms:
-//   L_ID = albedo_d · b · D · intensity · AO,   L_IS = E · S · intensity · AO
-// with D the irradiance/π and S the lobe-averaged radiance of this pixel (indirect.glsl), b what a
-// clear coat lets through and E = indirectSpecularWeight (docs/MATERIALS.md).
+//   L_ID = a · D · intensity · AO,   L_IS = E · S · intensity · AO
+// with D the irradiance/π and S the lobe-averaged radiance of this pixel (indirect.glsl),
+// a = indirectDiffuseAlbedo and E = indirectSpecularWeight times what a sheen leaves of the base
+// (docs/MATERIALS.md).
 //
 // Upsampling. The pixel sits among the four low-resolution texels whose traced pixels surround
 // it; each is weighted by its bilinear weight (plus a small floor, so a neighbour on the same
@@ -125,7 +126,7 @@ void main() {
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
     vec3 n = shadingNormal(s.normal, v);
     float NdotV = max(dot(n, v), 0.0);
-    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness) * clearcoatBaseScale(s.clearcoat, NdotV);
+    vec3 albedo = indirectDiffuseAlbedo(s, NdotV);
     bool diffuseSurface = max(albedo.r, max(albedo.g, albedo.b)) > 0.0;
     bool smoothSurface = s.roughness < uSmoothRoughness;
 
@@ -255,6 +256,7 @@ void main() {
     if (wantDiffuse) outIndirectDiffuse = vec4(albedo * diffuse * scale, 1.0);
     if (wantSpecular)
         outIndirectSpecular =
-            vec4(indirectSpecularWeight(s.f0, s.f90, baseRoughness, s.clearcoat, s.clearcoatRoughness, NdotV) *
+            vec4(indirectSpecularWeight(s.f0, s.f90, baseRoughness, sheenBaseScale(s, NdotV), s.clearcoat,
+                                        s.clearcoatRoughness, NdotV) *
                      specular * scale, 1.0);
 }

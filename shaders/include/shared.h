@@ -95,6 +95,9 @@ using mat4 = glm::mat4;
 // the side of their averaged normal (z < N) and the other (z + N, otherSideTexel in voxel.glsl).
 // The cone passes read the filtered one: N³ RGBA32UI gather texels (packGatherTexel, voxel.glsl).
 #define LIT_TEX_VOXEL_IRRADIANCE 32
+// The lighting passes with material layers: E_s(n·v, sheen roughness), R32F, the sheen lobe's
+// directional albedo (scene/SheenAlbedo.h, texel centres at (i + ½)/size).
+#define LIT_TEX_SHEEN_ALBEDO 33
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
@@ -282,6 +285,7 @@ struct GpuMaterial {
     vec4 alpha;               // x alpha cutoff, yzw unused
     vec4 specular;            // rgb dielectric F0, a dielectric F90 (KHR_materials_ior, _specular; docs/MATERIALS.md)
     vec4 clearcoat;           // x coat weight, y coat roughness (perceptual), zw unused (KHR_materials_clearcoat)
+    vec4 sheen;               // rgb sheen colour, a sheen roughness (perceptual) (KHR_materials_sheen)
 };
 
 // The light view a shadow pass renders. std140, binding LIT_UBO_SHADOW_PASS.
@@ -306,7 +310,7 @@ struct VoxelUniforms {
 static_assert(sizeof(VoxelUniforms) == 6 * 16);
 static_assert(sizeof(FrameUniforms) == 4 * 64 + 7 * 16);
 static_assert(sizeof(GpuLight) == 5 * 16 + 64);
-static_assert(sizeof(GpuMaterial) == 8 * 16);
+static_assert(sizeof(GpuMaterial) == 9 * 16);
 static_assert(sizeof(ShadowPassUniforms) == 64 + 16);
 inline const vec3 kDiffuseConeDirections[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_DIRECTIONS};
 inline const float kDiffuseConeWeights[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_WEIGHTS};

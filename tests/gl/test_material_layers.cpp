@@ -1,7 +1,8 @@
-// KHR_materials_ior, _specular and _clearcoat drawn (label gl): the Blender scene of
-// tools/blender/make_material_layers.py (six spheres under a sun and a point light: a plain red
+// KHR_materials_ior, _specular, _clearcoat and _sheen drawn (label gl): the Blender scene of
+// tools/blender/make_material_layers.py (seven spheres under a sun and a point light: a plain red
 // dielectric, the same with a smooth and a rough clear coat, a white dielectric with Blender's
-// Specular 1 (F0 0.08), one with IOR 2.2 and a specular tint, a clear-coated gold metal), with
+// Specular 1 (F0 0.08), one with IOR 2.2 and a specular tint, a clear-coated gold metal, a dark
+// blue cloth with a Velvet BSDF that the exporter writes as a sheen), with
 // the rasterizer's light per sphere against the reference path tracer's, which evaluates the
 // BRDF of docs/MATERIALS.md exactly. Each sphere's mean over its inner pixels (those whose four
 // neighbours see the same sphere) is compared, term by term.
@@ -65,6 +66,17 @@ protected:
         }
         return out;
     }
+    // The reference's terms of `scene` from the fixture's camera, sampled at pixel centres as the
+    // rasterizer samples.
+    reference::ReferenceImage traced(const Scene& scene, int bounces, int samples) {
+        const ReferenceScene rs(scene, quiet_);
+        ReferenceSettings settings;
+        settings.bounces = bounces;
+        settings.pixelCentres = true;
+        PathTracer tracer(rs, camera_, kWidth, kHeight, settings);
+        tracer.addSamples(samples);
+        return tracer.image();
+    }
     std::vector<float> rasterImage(const Scene& scene, RenderSettings s, View view, int frames = 1) {
         s.debug.view = view;
         return render(scene, s, frames).rgb;
@@ -77,7 +89,8 @@ protected:
     inline static const std::map<std::string, const char*> kSpheres = {
         {"plain", "no extension"},           {"clearcoat", "clear coat 1, roughness 0.05"},
         {"clearcoat_rough", "coat 0.6, roughness 0.35"}, {"specular", "specular colour 2 (F0 0.08)"},
-        {"ior", "IOR 2.2, specular colour 0.284"},        {"coated_metal", "gold with a clear coat"}};
+        {"ior", "IOR 2.2, specular colour 0.284"},        {"coated_metal", "gold with a clear coat"},
+        {"sheen", "blue cloth, sheen 0.8, roughness 0.5"}};
 
     Log quiet_;
     Scene scene_;
@@ -98,6 +111,8 @@ TEST_F(MaterialLayers, TheExtensionsAreRead) {
     EXPECT_NEAR(material("specular").specularColorFactor.g, 2.0f, 1e-6f);
     EXPECT_NEAR(material("ior").ior, 2.2f, 1e-6f);
     EXPECT_EQ(material("plain").clearcoatFactor, 0.0f);
+    EXPECT_NEAR(material("sheen").sheenColorFactor.g, 0.8f, 1e-6f);
+    EXPECT_NEAR(material("sheen").sheenRoughness, 0.5f, 1e-6f);
 }
 
 // Direct light only (GI off, the reference without bounces): the rasterizer's BRDF is exact here,
@@ -106,15 +121,10 @@ TEST_F(MaterialLayers, TheExtensionsAreRead) {
 TEST_F(MaterialLayers, DirectLightMatchesTheReferencePerSphere) {
     RenderSettings s = settings_;
     s.gi.enabled = false;
-    ReferenceSettings referenceSettings;
-    referenceSettings.bounces = 0;
-    referenceSettings.pixelCentres = true;
-    const ReferenceScene rs(scene_, quiet_);
-    PathTracer tracer(rs, camera_, kWidth, kHeight, referenceSettings);
-    tracer.addSamples(64);
+    const reference::ReferenceImage image = traced(scene_, 0, 64);
     for (const View view : {View::DirectDiffuse, View::DirectSpecular}) {
         const std::map<std::string, double> lit = raster(scene_, s, view);
-        const std::map<std::string, double> ref = perSphere(tracer.image().viewRgb(view, s));
+        const std::map<std::string, double> ref = perSphere(image.viewRgb(view, s));
         for (const auto& [name, what] : kSpheres) {
             std::printf("%-16s %-15s Lit %.5f reference %.5f ratio %.4f  (%s)\n", name.c_str(),
                         std::string(toString(view)).c_str(), lit.at(name), ref.at(name), lit.at(name) / ref.at(name),
@@ -136,6 +146,7 @@ TEST_F(MaterialLayers, DirectLightMatchesTheReferencePerSphere) {
         m.specularFactor = 1.0f;
         m.specularColorFactor = glm::vec3(1.0f);
         m.clearcoatFactor = 0.0f;
+        m.sheenColorFactor = glm::vec3(0.0f);
     }
     const std::map<std::string, double> diffuse = raster(scene_, s, View::DirectDiffuse);
     const std::map<std::string, double> bareDiffuse = raster(bare, s, View::DirectDiffuse);
@@ -163,19 +174,52 @@ TEST_F(MaterialLayers, IorAloneSetsTheDielectricsReflectance) {
         if (m.name == "ior") m.ior = 1.5f;
     RenderSettings s = settings_;
     s.gi.enabled = false;
-    ReferenceSettings referenceSettings;
-    referenceSettings.bounces = 0;
-    referenceSettings.pixelCentres = true;
-    const ReferenceScene rs(scene, quiet_);
-    PathTracer tracer(rs, camera_, kWidth, kHeight, referenceSettings);
-    tracer.addSamples(16);
     const double lit = raster(scene, s, View::DirectSpecular).at("ior");
-    const double ref = perSphere(tracer.image().viewRgb(View::DirectSpecular, s)).at("ior");
+    const double ref = perSphere(traced(scene, 0, 16).viewRgb(View::DirectSpecular, s)).at("ior");
     const double without = raster(bare, s, View::DirectSpecular).at("ior");
     std::printf("IOR 2.2: direct specular Lit %.5f reference %.5f (ratio %.4f); at IOR 1.5 %.5f\n", lit, ref,
                 lit / ref, without);
     EXPECT_NEAR(lit / ref, 1.0, 0.05);
     EXPECT_GT(lit, 2.0 * without);
+}
+
+// KHR_materials_sheen beyond the exported `sheen` sphere (Blender 3.4 writes a sheen only from a
+// Velvet BSDF): a white sheen of roughness 0.6 on the plain red sphere, and a warm sheen of
+// roughness 0.3 alone on the `ior` sphere made black. The sheen counts as diffuse light; direct
+// and full light per sphere against the reference.
+TEST_F(MaterialLayers, SheenMatchesTheReference) {
+    Scene scene = scene_;
+    for (Material& m : scene.materials) {
+        if (m.name == "plain") {
+            m.sheenColorFactor = glm::vec3(0.8f);
+            m.sheenRoughness = 0.6f;
+        } else if (m.name == "ior") {
+            m.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+            m.sheenColorFactor = glm::vec3(1.0f, 0.5f, 0.25f);
+            m.sheenRoughness = 0.3f;
+        }
+    }
+    RenderSettings direct = settings_;
+    direct.gi.enabled = false;
+    RenderSettings full = settings_;
+    full.gi.enabled = true;
+    full.gi.voxelResolution = 128;
+    const std::map<std::string, double> litDirect = raster(scene, direct, View::DirectDiffuse);
+    const std::map<std::string, double> refDirect = perSphere(traced(scene, 0, 64).viewRgb(View::DirectDiffuse, direct));
+    const std::map<std::string, double> litFull = raster(scene, full, View::Final);
+    const std::map<std::string, double> refFull =
+        perSphere(traced(scene, reference::kAllBounces, 256).viewRgb(View::Final, full));
+    const std::map<std::string, double> bare = raster(scene_, direct, View::DirectDiffuse);
+    for (const char* name : {"plain", "ior"}) {
+        std::printf("%-6s sheen: direct diffuse Lit %.5f reference %.5f (ratio %.4f; without the sheen %.5f), final "
+                    "Lit %.5f reference %.5f (ratio %.4f)\n",
+                    name, litDirect.at(name), refDirect.at(name), litDirect.at(name) / refDirect.at(name),
+                    bare.at(name), litFull.at(name), refFull.at(name), litFull.at(name) / refFull.at(name));
+        EXPECT_NEAR(litDirect.at(name) / refDirect.at(name), 1.0, 0.05) << name;
+        EXPECT_NEAR(litFull.at(name) / refFull.at(name), 1.0, 0.10) << name;
+    }
+    EXPECT_GT(litDirect.at("ior"), 0.02) << "a sheen on black must show";
+    EXPECT_GT(std::abs(litDirect.at("plain") / bare.at("plain") - 1.0), 0.03) << "the sheen must change the sphere";
 }
 
 // Every term at the editor's defaults (GI on, every bounce, converged) against the reference with
@@ -185,16 +229,11 @@ TEST_F(MaterialLayers, FullLightMatchesTheReferencePerSphere) {
     RenderSettings s = settings_;
     s.gi.enabled = true;
     s.gi.voxelResolution = 128;
-    ReferenceSettings referenceSettings;
-    referenceSettings.bounces = reference::kAllBounces;
-    referenceSettings.pixelCentres = true;
-    const ReferenceScene rs(scene_, quiet_);
-    PathTracer tracer(rs, camera_, kWidth, kHeight, referenceSettings);
-    tracer.addSamples(256);
+    const reference::ReferenceImage image = traced(scene_, reference::kAllBounces, 256);
     std::map<View, std::map<std::string, double>> ratios;
     for (const View view : {View::Final, View::IndirectDiffuse, View::IndirectSpecular}) {
         const std::map<std::string, double> lit = raster(scene_, s, view);
-        const std::map<std::string, double> ref = perSphere(tracer.image().viewRgb(view, s));
+        const std::map<std::string, double> ref = perSphere(image.viewRgb(view, s));
         for (const auto& [name, what] : kSpheres) {
             ratios[view][name] = lit.at(name) / ref.at(name);
             std::printf("%-16s %-17s Lit %.5f reference %.5f ratio %.4f  (%s)\n", name.c_str(),

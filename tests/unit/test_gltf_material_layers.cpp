@@ -1,4 +1,4 @@
-// KHR_materials_ior, _specular and _clearcoat (label cpu): their factors read into the Material,
+// KHR_materials_ior, _specular, _sheen and _clearcoat (label cpu): their factors read into the Material,
 // their textures named and kept, out-of-range values clamped with a warning, and a save that
 // writes edited factors into the file's objects.
 #include "Log.h"
@@ -60,6 +60,7 @@ TEST(MaterialLayers, FactorsAreRead) {
     addExtension(doc, "KHR_materials_specular",
                  {{"specularFactor", 0.5}, {"specularColorFactor", {2.0, 1.0, 0.5}}});
     addExtension(doc, "KHR_materials_clearcoat", {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.2}});
+    addExtension(doc, "KHR_materials_sheen", {{"sheenColorFactor", {0.9, 0.5, 0.1}}, {"sheenRoughnessFactor", 0.4}});
     const Loaded loaded = loadDoc(dir, doc);
     EXPECT_EQ(loaded.warnings.find("which Lit does not support"), std::string::npos) << loaded.warnings;
     const Material& m = loaded.scene.materials.at(0);
@@ -68,10 +69,13 @@ TEST(MaterialLayers, FactorsAreRead) {
     EXPECT_EQ(m.specularColorFactor, glm::vec3(2.0f, 1.0f, 0.5f));
     EXPECT_FLOAT_EQ(m.clearcoatFactor, 0.75f);
     EXPECT_FLOAT_EQ(m.clearcoatRoughness, 0.2f);
+    EXPECT_EQ(m.sheenColorFactor, glm::vec3(0.9f, 0.5f, 0.1f));
+    EXPECT_FLOAT_EQ(m.sheenRoughness, 0.4f);
     const Material& other = loaded.scene.materials.at(1);
     EXPECT_EQ(other.ior, 1.5f) << "defaults where the file has no extension";
     EXPECT_EQ(other.specularFactor, 1.0f);
     EXPECT_EQ(other.clearcoatFactor, 0.0f);
+    EXPECT_EQ(other.sheenColorFactor, glm::vec3(0.0f));
 }
 
 TEST(MaterialLayers, TexturesAreNamedAndOutOfRangeFactorsClamped) {
@@ -81,16 +85,20 @@ TEST(MaterialLayers, TexturesAreNamedAndOutOfRangeFactorsClamped) {
                  {{"clearcoatFactor", 2.0}, {"clearcoatRoughnessFactor", -1.0}, {"clearcoatTexture", {{"index", 0}}}});
     addExtension(doc, "KHR_materials_ior", {{"ior", 0.5}});
     addExtension(doc, "KHR_materials_specular", {{"specularColorFactor", {1.0, "red", 1.0}}});
+    addExtension(doc, "KHR_materials_sheen", {{"sheenColorFactor", {2.0, 0.5, 0.5}}, {"sheenRoughnessTexture", {{"index", 0}}}});
     const Loaded loaded = loadDoc(dir, doc);
     const Material& m = loaded.scene.materials.at(0);
     EXPECT_EQ(m.clearcoatFactor, 1.0f);
     EXPECT_EQ(m.clearcoatRoughness, 0.0f);
     EXPECT_EQ(m.ior, 1.0f);
     EXPECT_EQ(m.specularColorFactor, glm::vec3(1.0f));
+    EXPECT_EQ(m.sheenColorFactor, glm::vec3(1.0f, 0.5f, 0.5f));
     for (const char* expected :
          {"KHR_materials_clearcoat clearcoatFactor 2.000000 is outside its range; Lit uses 1.000000",
           "KHR_materials_clearcoat clearcoatTexture is not drawn", "KHR_materials_ior ior 0.500000 is below 1",
-          "KHR_materials_specular specularColorFactor is not three finite numbers"})
+          "KHR_materials_specular specularColorFactor is not three finite numbers",
+          "KHR_materials_sheen sheenColorFactor has a value outside its range; Lit clamps it",
+          "KHR_materials_sheen sheenRoughnessTexture is not drawn"})
         EXPECT_NE(loaded.warnings.find(expected), std::string::npos) << expected << "\n" << loaded.warnings;
 }
 
@@ -117,6 +125,7 @@ TEST(MaterialLayers, SaveWritesTheFactorsIntoTheFilesObjects) {
     loaded.scene.materials[0].ior = 1.5f;
     loaded.scene.materials[1].clearcoatFactor = 0.5f;
     loaded.scene.materials[1].specularColorFactor = glm::vec3(1.0f, 0.5f, 0.25f);
+    loaded.scene.materials[1].sheenColorFactor = glm::vec3(0.5f);
     saveGltf(loaded.scene, dir / "edited.gltf");
     const nlohmann::json edited = nlohmann::json::parse(readText(dir / "edited.gltf"));
     const nlohmann::json& first = edited["materials"][0]["extensions"];
@@ -129,8 +138,10 @@ TEST(MaterialLayers, SaveWritesTheFactorsIntoTheFilesObjects) {
     EXPECT_FALSE(second["KHR_materials_specular"].contains("specularFactor"));
     EXPECT_FLOAT_EQ(second["KHR_materials_specular"]["specularColorFactor"][1].get<float>(), 0.5f);
     EXPECT_FALSE(second.contains("KHR_materials_ior"));
+    EXPECT_FLOAT_EQ(second["KHR_materials_sheen"]["sheenColorFactor"][2].get<float>(), 0.5f);
+    EXPECT_FALSE(second["KHR_materials_sheen"].contains("sheenRoughnessFactor")) << "default, not written";
     std::vector<std::string> used = edited["extensionsUsed"].get<std::vector<std::string>>();
-    for (const char* name : {"KHR_materials_clearcoat", "KHR_materials_ior", "KHR_materials_specular"})
+    for (const char* name : {"KHR_materials_clearcoat", "KHR_materials_ior", "KHR_materials_specular", "KHR_materials_sheen"})
         EXPECT_EQ(std::count(used.begin(), used.end(), name), 1) << name;
 
     // What was saved loads back to the same factors.

@@ -1,21 +1,26 @@
-// The reference path tracer's BRDF with KHR_materials_ior, KHR_materials_specular and
-// KHR_materials_clearcoat (docs/MATERIALS.md), label cpu: the default factors give the
-// metal-rough BRDF bit for bit, the three-lobe sampling density against a histogram of its own
-// samples, white furnaces, the dielectric F0, and a render against the closed form at normal
-// incidence. About a second on 2 cores.
+// The reference path tracer's BRDF with KHR_materials_ior, KHR_materials_specular,
+// KHR_materials_sheen and KHR_materials_clearcoat (docs/MATERIALS.md), label cpu: the default
+// factors give the metal-rough BRDF bit for bit, the three-lobe sampling density against a
+// histogram of its own samples (with and without a sheen), white furnaces (under a coat; the
+// sheen lobe against its albedo table, and the base's albedo scaling under a sheen), the
+// dielectric F0, and renders against closed forms. A few seconds on 2 cores.
 #include "reference/MicrofacetBrdf.h"
 #include "reference/PathTracer.h"
 #include "reference/ReferenceBsdf.h"
 #include "reference/ReferenceScene.h"
 #include "scene/CameraView.h"
 #include "scene/SceneBuilder.h"
+#include "scene/SheenAlbedo.h"
 #include "QuietLog.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace lit::reference {
@@ -90,7 +95,7 @@ struct MetalRough {
 };
 
 TEST(ReferenceBrdf, DefaultExtensionFactorsGiveTheMetalRoughBrdf) {
-    Material material;  // ior 1.5, specular 1, specular colour 1, no clear coat
+    Material material;  // ior 1.5, specular 1, specular colour 1, no sheen, no clear coat
     Uniform random(7);
     int compared = 0;
     for (const float metalness : {0.0f, 0.3f, 1.0f})
@@ -103,6 +108,8 @@ TEST(ReferenceBrdf, DefaultExtensionFactorsGiveTheMetalRoughBrdf) {
             EXPECT_EQ(hit.dielectricF0, glm::vec3(0.04f)) << "η 1.5 must give 0.04 exactly";
             EXPECT_EQ(hit.dielectricF90, 1.0f);
             EXPECT_EQ(hit.clearcoat, 0.0f);
+            EXPECT_EQ(hit.sheenColor, glm::vec3(0.0f));
+            EXPECT_EQ(hit.sheenRoughness, 0.0f);
             for (int k = 0; k < 40; ++k) {
                 const glm::vec3 v = unitFromAngles(std::acos(0.02f + 0.98f * random()), 2.0f * kPi * random());
                 const glm::vec3 l = unitFromAngles(std::acos(0.02f + 0.98f * random()), 2.0f * kPi * random());
@@ -112,11 +119,19 @@ TEST(ReferenceBrdf, DefaultExtensionFactorsGiveTheMetalRoughBrdf) {
                 EXPECT_EQ(bsdf.f0, specularF0(hit.baseColor, hit.metalness));
                 EXPECT_EQ(bsdf.f90, 1.0f);
                 EXPECT_EQ(bsdf.baseScale, 1.0f);
+                EXPECT_EQ(bsdf.sheenScale, 1.0f);
+                EXPECT_FALSE(bsdf.hasSheen());
                 EXPECT_EQ(bsdf.coatProbability, 0.0f);
                 EXPECT_EQ(bsdf.diffuseProbability, 1.0f - bsdf.specularProbability);
+                // The lobe choice of the two metal-rough lobes, bit for bit.
+                const float specularShare = bsdfLuminance(
+                    F_Schlick(specularF0(hit.baseColor, hit.metalness), 1.0f, std::max(glm::dot(hit.normal, v), 0.0f)));
+                const float diffuseShare = bsdfLuminance(diffuseAlbedo(hit.baseColor, hit.metalness));
+                EXPECT_EQ(bsdf.specularProbability, specularShare / (specularShare + diffuseShare));
                 EXPECT_EQ(bsdf.specular(l), specularBrdf(hit.normal, v, l, specularF0(hit.baseColor, hit.metalness), metalRough.alpha));
                 EXPECT_EQ(bsdf.diffuse(l), diffuseAlbedo(hit.baseColor, hit.metalness) / kPi);
                 EXPECT_EQ(bsdf.coatLobe(l), glm::vec3(0.0f));
+                EXPECT_EQ(bsdf.sheenLobe(l), glm::vec3(0.0f));
                 const glm::vec3 f = bsdf.diffuse(l) + bsdf.specular(l), expected = metalRough.f(l);
                 for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[c], expected[c], 2e-5f * expected[c] + 1e-7f);
                 EXPECT_NEAR(bsdf.pdf(l), metalRough.pdf(l), 2e-5f * metalRough.pdf(l));
@@ -209,6 +224,37 @@ double chiSquarePerBin(const std::vector<int>& counts, const std::vector<double>
     return chi2 / std::max(bins - 1, 1);
 }
 
+// A histogram of the Bsdf's samples over the bins, and how many of them land where pdf() counts
+// them (above some lobe's horizon) and below the shading normal's horizon.
+struct SampleHistogram {
+    static constexpr int kSamples = 4 << 20;
+    std::vector<int> counts = std::vector<int>(kBinsTheta * kBinsPhi, 0);
+    int inside = 0, belowShadingHorizon = 0;
+    double fraction() const { return static_cast<double>(inside) / kSamples; }
+};
+
+SampleHistogram sampleHistogram(const Bsdf& bsdf, std::uint32_t seed) {
+    SampleHistogram h;
+    Uniform random(seed);
+    for (int s = 0; s < SampleHistogram::kSamples; ++s) {
+        const float choice = random();
+        const glm::vec2 u(random(), random());
+        glm::vec3 l;
+        bsdf.sample(choice, u, l);
+        if (!bsdf.above(l)) continue;  // where pdf() is 0: the sampler's lost mass
+        ++h.inside;
+        if (glm::dot(bsdf.n, l) <= 0.0f) ++h.belowShadingHorizon;
+        ++h.counts[static_cast<std::size_t>(binOf(glm::normalize(l)))];
+    }
+    return h;
+}
+
+double sum(const std::vector<double>& xs) {
+    double total = 0.0;
+    for (const double x : xs) total += x;
+    return total;
+}
+
 TEST(ReferenceBrdf, ClearcoatSamplingDensityMatchesItsSamples) {
     const SurfaceHit hit = coatedHit();
     const glm::vec3 v = unitFromAngles(1.047f, 0.0f);  // 60° from the coat normal, on +x
@@ -217,24 +263,13 @@ TEST(ReferenceBrdf, ClearcoatSamplingDensityMatchesItsSamples) {
     ASSERT_GT(bsdf.coatProbability, 0.05f);
     ASSERT_GT(bsdf.specularProbability, 0.05f);
 
-    constexpr int kSamples = 4 << 20;
-    Uniform random(11);
-    std::vector<int> counts(kBinsTheta * kBinsPhi, 0);
-    int inside = 0, belowShadingHorizon = 0;
-    for (int s = 0; s < kSamples; ++s) {
-        const float choice = random();
-        const glm::vec2 u(random(), random());
-        glm::vec3 l;
-        bsdf.sample(choice, u, l);
-        if (!bsdf.above(l)) continue;  // where pdf() is 0: the sampler's lost mass
-        ++inside;
-        if (glm::dot(bsdf.n, l) <= 0.0f) ++belowShadingHorizon;
-        ++counts[static_cast<std::size_t>(binOf(glm::normalize(l)))];
-    }
+    constexpr int kSamples = SampleHistogram::kSamples;
+    const SampleHistogram histogram = sampleHistogram(bsdf, 11);
+    const std::vector<int>& counts = histogram.counts;
+    const int belowShadingHorizon = histogram.belowShadingHorizon;
     const std::vector<double> integrals = binIntegrals([&](const glm::vec3& l) { return bsdf.pdf(l); });
-    double total = 0.0;
-    for (const double x : integrals) total += x;
-    const double fraction = static_cast<double>(inside) / kSamples;
+    const double total = sum(integrals);
+    const double fraction = histogram.fraction();
     // The density integrates to the share of samples it covers (GGX reflections below both
     // horizons are lost): within 0.3 %.
     EXPECT_NEAR(total, fraction, 0.003) << "∫pdf " << total << ", samples inside " << fraction;
@@ -255,6 +290,51 @@ TEST(ReferenceBrdf, ClearcoatSamplingDensityMatchesItsSamples) {
                 total, fraction, chi2, chi2Wrong);
 }
 
+// The same clear-coated hit with a dark base (a coated velvet) under a sheen: the cosine lobe
+// also draws the sheen's directions, so its share grows by the sheen's albedo and the base's
+// lobes shrink by t_s; pdf() is the same mixture with those chances, and it still matches the
+// samples.
+TEST(ReferenceBrdf, SheenSamplingDensityMatchesItsSamples) {
+    SurfaceHit hit = coatedHit();
+    hit.baseColor = glm::vec3(0.1f, 0.06f, 0.04f);
+    hit.metalness = 0.0f;
+    const glm::vec3 v = unitFromAngles(1.047f, 0.0f);
+    const Bsdf plain(hit, v);
+    hit.sheenColor = glm::vec3(0.9f, 0.6f, 0.8f);
+    hit.sheenRoughness = 0.8f;
+    const Bsdf bsdf(hit, v);
+    ASSERT_TRUE(bsdf.hasSheen());
+    ASSERT_TRUE(bsdf.reflects());
+    const float NdotV = glm::dot(bsdf.n, v);
+    EXPECT_FLOAT_EQ(bsdf.sheenScale, 1.0f - 0.9f * sheenAlbedo(NdotV, 0.8f));
+    EXPECT_EQ(bsdf.sheenAlpha, 0.8f * 0.8f);
+    EXPECT_GT(bsdf.diffuseProbability, plain.diffuseProbability + 0.05f) << "the sheen's share is drawn by the cosine lobe";
+    EXPECT_LT(bsdf.specularProbability, plain.specularProbability);
+    EXPECT_LT(bsdf.coatProbability, plain.coatProbability);
+
+    constexpr int kSamples = SampleHistogram::kSamples;
+    const SampleHistogram histogram = sampleHistogram(bsdf, 13);
+    const std::vector<double> integrals = binIntegrals([&](const glm::vec3& l) { return bsdf.pdf(l); });
+    const double total = sum(integrals), fraction = histogram.fraction();
+    EXPECT_NEAR(total, fraction, 0.003) << "∫pdf " << total << ", samples inside " << fraction;
+    EXPECT_GT(fraction, 0.9);
+    const double chi2 = chiSquarePerBin(histogram.counts, integrals, kSamples);
+    EXPECT_LT(chi2, 1.3) << "χ²/bin of the sample histogram against pdf()";
+
+    // Against the density with the lobe chances of the hit without a sheen, the histogram fails:
+    // the test sees the chances that pdf() weighs its lobes with.
+    Bsdf wrongChances = bsdf;
+    wrongChances.specularProbability = plain.specularProbability;
+    wrongChances.coatProbability = plain.coatProbability;
+    wrongChances.diffuseProbability = plain.diffuseProbability;
+    const double chi2Wrong =
+        chiSquarePerBin(histogram.counts, binIntegrals([&](const glm::vec3& l) { return wrongChances.pdf(l); }), kSamples);
+    EXPECT_GT(chi2Wrong, 20.0);
+    std::printf("[ measured ] sheen: lobe chances diffuse %.3f (%.3f without the sheen), ∫pdf %.5f, samples inside %.5f, "
+                "χ²/bin %.3f (with the chances of the hit without a sheen: %.1f)\n",
+                bsdf.diffuseProbability, plain.diffuseProbability, total, fraction, chi2, chi2Wrong);
+}
+
 // ---- White furnaces ------------------------------------------------------------------------------
 
 struct Albedo {
@@ -262,13 +342,12 @@ struct Albedo {
     double total() const { return diffuse + specular; }
 };
 
-// ∫ f cos dω split by lobe (the coat in specular), by the Bsdf's own sampling and pdf.
-Albedo directionalAlbedo(const SurfaceHit& hit, const glm::vec3& v, std::uint32_t seed) {
-    const Bsdf bsdf(hit, v);
-    constexpr int kSamples = 1 << 16;
+// ∫ f cos dω split by lobe (the coat in specular, the sheen in diffuse), by the Bsdf's own
+// sampling and pdf.
+Albedo directionalAlbedo(const Bsdf& bsdf, std::uint32_t seed, int samples = 1 << 16) {
     Uniform random(seed);
     Albedo a;
-    for (int s = 0; s < kSamples; ++s) {
+    for (int s = 0; s < samples; ++s) {
         const float choice = random();
         const glm::vec2 u(random(), random());
         glm::vec3 l;
@@ -279,9 +358,12 @@ Albedo directionalAlbedo(const SurfaceHit& hit, const glm::vec3& v, std::uint32_
         a.diffuse += w.diffuse.g;
         a.specular += w.specular.g;
     }
-    a.diffuse /= kSamples;
-    a.specular /= kSamples;
+    a.diffuse /= samples;
+    a.specular /= samples;
     return a;
+}
+Albedo directionalAlbedo(const SurfaceHit& hit, const glm::vec3& v, std::uint32_t seed) {
+    return directionalAlbedo(Bsdf(hit, v), seed);
 }
 
 TEST(ReferenceFurnace, ClearcoatOnWhiteDoesNotCreateLight) {
@@ -335,6 +417,89 @@ TEST(ReferenceFurnace, ClearcoatOnWhiteDoesNotCreateLight) {
     std::printf("[ measured ] white Lambert base under a coat: largest directional albedo %.4f; white dielectric: "
                 "largest gain of the coated over the bare albedo %.4f\n",
                 worst, worstGain);
+}
+
+// A surface at the origin with normal +z, seen from v in the xz plane at n·v, reflecting only
+// through the lobes set: base colour `base`, specular weight 0 (no dielectric reflection), and a
+// sheen of colour `sheen` and roughness `sheenRoughness`.
+SurfaceHit sheenedHit(float base, float sheen, float sheenRoughness) {
+    SurfaceHit hit;
+    hit.geometricNormal = hit.normal = hit.clearcoatNormal = glm::vec3(0, 0, 1);
+    hit.baseColor = glm::vec3(base);
+    hit.metalness = 0.0f;
+    hit.dielectricF0 = dielectricF0(1.5f, 0.0f, glm::vec3(1.0f));
+    hit.dielectricF90 = dielectricF90(0.0f);
+    hit.sheenColor = glm::vec3(sheen);
+    hit.sheenRoughness = sheenRoughness;
+    return hit;
+}
+glm::vec3 viewAt(float NdotV) { return {std::sqrt(1.0f - NdotV * NdotV), 0.0f, NdotV}; }
+
+// The sheen lobe alone (a black base without specular reflection under a white sheen): its
+// directional albedo, integrated by the path tracer's own sampling of the lobe it evaluates, is
+// the shared table's E_s(n·v, r_s) (scene/SheenAlbedo.h), so the base's scaling by
+// 1 − max(s_c)·E_s removes what the lobe reflects. All of it is diffuse. (Below r_s 0.3 the
+// lobe is a grazing ridge and E_s far from grazing falls under 0.06, where the bilinear table
+// departs from it by up to 0.003.)
+TEST(ReferenceFurnace, SheenLobeAlbedoIsTheSheenAlbedoTable) {
+    double worst = 0.0;
+    for (const float NdotV : {0.1f, 0.3f, 0.6f, 0.9f})
+        for (const float roughness : {0.3f, 0.5f, 0.8f, 1.0f}) {
+            const Bsdf bsdf(sheenedHit(0.0f, 1.0f, roughness), viewAt(NdotV));
+            ASSERT_TRUE(bsdf.reflects());
+            ASSERT_EQ(bsdf.diffuseProbability, 1.0f);
+            const Albedo a = directionalAlbedo(bsdf, 21, 1 << 17);
+            const double table = sheenAlbedo(NdotV, roughness);
+            const std::string where = "n·v " + std::to_string(NdotV) + ", sheen roughness " + std::to_string(roughness);
+            EXPECT_EQ(a.specular, 0.0) << where;
+            EXPECT_NEAR(a.diffuse, table, 0.02 * table + 0.001) << where << ": lobe " << a.diffuse << ", table " << table;
+            worst = std::max(worst, std::abs(a.diffuse / table - 1.0));
+        }
+    // The black base with no sheen reflects nothing: the path ends there.
+    EXPECT_FALSE(Bsdf(sheenedHit(0.0f, 0.0f, 0.5f), viewAt(0.5f)).reflects());
+    std::printf("[ measured ] sheen lobe's directional albedo against E_s: largest relative difference %.4f\n", worst);
+}
+
+// A white Lambertian base under a white sheen reflects E_s + (1 − E_s) = 1: the albedo scaling
+// keeps the energy (2 % allowed for the table's interpolation and the estimate's noise), and all of
+// it is diffuse. Without the scaling the sum would exceed 1 by E_s (checked, so that the test sees
+// a missing scale). Under a clear coat the sum stays below 1.02 as well.
+TEST(ReferenceFurnace, SheenOnWhiteDoesNotCreateLight) {
+    double worst = 0.0, leastUnscaled = 1e9;
+    for (const float NdotV : {0.1f, 0.3f, 0.6f, 1.0f})
+        for (const float roughness : {0.3f, 0.6f, 1.0f}) {
+            const std::string where = "n·v " + std::to_string(NdotV) + ", sheen roughness " + std::to_string(roughness);
+            SurfaceHit hit = sheenedHit(1.0f, 1.0f, roughness);
+            const Bsdf bsdf(hit, viewAt(NdotV));
+            const float table = sheenAlbedo(NdotV, roughness);
+            EXPECT_FLOAT_EQ(bsdf.sheenScale, 1.0f - table) << where;
+            const Albedo a = directionalAlbedo(bsdf, 31, 1 << 17);
+            EXPECT_EQ(a.specular, 0.0) << where;
+            EXPECT_LE(a.total(), 1.02) << where;
+            EXPECT_GE(a.total(), 0.98) << where;
+            worst = std::max(worst, a.total());
+
+            // The same lobes with the base left whole: E_s more light than arrives.
+            Bsdf unscaled = bsdf;
+            unscaled.sheenScale = 1.0f;
+            const Albedo u = directionalAlbedo(unscaled, 31, 1 << 17);
+            if (table > 0.05f) {
+                EXPECT_GT(u.total(), 1.02) << where;
+                EXPECT_NEAR(u.total() - a.total(), table, 0.01) << where;
+                leastUnscaled = std::min(leastUnscaled, u.total());
+            }
+
+            // Under a clear coat of roughness 0.3.
+            hit.clearcoat = 1.0f;
+            hit.clearcoatRoughness = 0.3f;
+            const Albedo coated = directionalAlbedo(Bsdf(hit, viewAt(NdotV)), 32, 1 << 17);
+            EXPECT_LE(coated.total(), 1.02) << where << ", under a coat";
+            worst = std::max(worst, coated.total());
+        }
+    ASSERT_LT(leastUnscaled, 1e9);
+    std::printf("[ measured ] white Lambert base under a white sheen: largest directional albedo %.4f (under a coat "
+                "included); without the base's scaling at least %.4f\n",
+                worst, leastUnscaled);
 }
 
 // The path tracer end to end: a convex box (it never sees itself) of a white Lambertian base
@@ -485,8 +650,39 @@ TEST(ReferenceBrdf, ClearcoatNormalIsTheInterpolatedNormal) {
 
 // ---- A render at normal incidence ------------------------------------------------------------------
 
-// A plane seen from straight above through a narrow camera (±0.1° across the image) under a sun
-// straight above: every pixel sees v = l = n, where D = 1/(πα²), G2 = 1, F = F0 and Fc = 0.04.
+// The mean direct terms (diffuse, specular) seen straight down on the plane of `scene` (its one
+// material, already set) from 5 m above through a narrow camera (±0.1° across 8 × 8 pixels: v = n
+// in every pixel), under a sun of `sun` W/m² shining from direction `towardsSun`. A punctual light
+// and pixel centres: no noise, one sample.
+std::pair<glm::dvec3, glm::dvec3> directTermsFromAbove(Scene& scene, float sun, const glm::vec3& towardsSun) {
+    addMeshNode(scene, makePlaneMesh("plane", 20.0f, 0), glm::vec3(0.0f));
+    Light light;
+    light.type = LightType::Directional;
+    light.intensity = sun;
+    addLightNode(scene, light, glm::vec3(0.0f, 5.0f, 0.0f), -towardsSun);
+    Camera camera;
+    camera.yfov = 0.0035f;
+    camera.znear = 0.5f;
+    camera.zfar = 20.0f;
+    addCameraNode(scene, camera, glm::vec3(0.0f, 5.0f, 0.0f), glm::vec3(0.0f));
+    scene.updateWorldTransforms();
+    QuietLog log;
+    const ReferenceScene reference(scene, log);
+    ReferenceSettings settings;
+    settings.bounces = 0;
+    settings.pixelCentres = true;
+    PathTracer tracer(reference, sceneCameraView(scene, 0, 1.0f), 8, 8, settings);
+    tracer.addSamples(1);
+    glm::dvec3 diffuse(0.0), specular(0.0);
+    for (std::size_t p = 0; p < 64; ++p) {
+        diffuse += glm::dvec3(tracer.image().mean(Term::DirectDiffuse, p));
+        specular += glm::dvec3(tracer.image().mean(Term::DirectSpecular, p));
+    }
+    return {diffuse / 64.0, specular / 64.0};
+}
+
+// A plane seen from straight above under a sun straight above (directTermsFromAbove): every
+// pixel sees v = l = n, where D = 1/(πα²), G2 = 1, F = F0 and Fc = 0.04.
 TEST(ReferenceClosedForm, ClearcoatedPlaneAtNormalIncidence) {
     constexpr float kSun = 3.0f;  // W/m² (Light::intensity of a directional light)
     const glm::vec3 base(0.5f, 0.3f, 0.2f);
@@ -497,28 +693,11 @@ TEST(ReferenceClosedForm, ClearcoatedPlaneAtNormalIncidence) {
     glm::vec3 plainDiffuse(0.0f);
     for (const Case c : {Case{1.5f, 0.0f}, Case{1.5f, 1.0f}, Case{2.0f, 0.5f}}) {
         Scene scene;
-        const int material = addMaterial(scene, base, kRoughness, 0.0f, "plane");
+        addMaterial(scene, base, kRoughness, 0.0f, "plane");
         scene.materials[0].ior = c.ior;
         scene.materials[0].clearcoatFactor = c.clearcoat;
         scene.materials[0].clearcoatRoughness = kCoatRoughness;
-        addMeshNode(scene, makePlaneMesh("plane", 20.0f, material), glm::vec3(0.0f));
-        Light sun;
-        sun.type = LightType::Directional;
-        sun.intensity = kSun;
-        addLightNode(scene, sun, glm::vec3(0.0f, 5.0f, 0.0f), glm::vec3(0, -1, 0));
-        Camera camera;
-        camera.yfov = 0.0035f;
-        camera.znear = 0.5f;
-        camera.zfar = 20.0f;
-        addCameraNode(scene, camera, glm::vec3(0.0f, 5.0f, 0.0f), glm::vec3(0.0f));
-        scene.updateWorldTransforms();
-        QuietLog log;
-        const ReferenceScene reference(scene, log);
-        ReferenceSettings settings;
-        settings.bounces = 0;
-        settings.pixelCentres = true;
-        PathTracer tracer(reference, sceneCameraView(scene, 0, 1.0f), 8, 8, settings);
-        tracer.addSamples(1);  // a punctual light and pixel centres: no noise
+        const auto [meanDiffuse, meanSpecular] = directTermsFromAbove(scene, kSun, glm::vec3(0, 1, 0));
 
         const float f0 = std::pow((c.ior - 1.0f) / (c.ior + 1.0f), 2.0f);
         const float alpha = kRoughness * kRoughness, alphaC = kCoatRoughness * kCoatRoughness;
@@ -526,13 +705,6 @@ TEST(ReferenceClosedForm, ClearcoatedPlaneAtNormalIncidence) {
         const glm::vec3 diffuse = kSun * base / kPi * baseScale;
         const float specular = kSun * (f0 / (kPi * alpha * alpha * 4.0f) * baseScale +
                                        c.clearcoat * 0.04f / (kPi * alphaC * alphaC * 4.0f));
-        glm::dvec3 meanDiffuse(0.0), meanSpecular(0.0);
-        for (std::size_t p = 0; p < 64; ++p) {
-            meanDiffuse += glm::dvec3(tracer.image().mean(Term::DirectDiffuse, p));
-            meanSpecular += glm::dvec3(tracer.image().mean(Term::DirectSpecular, p));
-        }
-        meanDiffuse /= 64.0;
-        meanSpecular /= 64.0;
         for (int k = 0; k < 3; ++k) {
             EXPECT_NEAR(meanDiffuse[k], diffuse[k], 1e-4 * diffuse[k]) << "ior " << c.ior << ", coat " << c.clearcoat;
             EXPECT_NEAR(meanSpecular[k], specular, 1e-3 * specular) << "ior " << c.ior << ", coat " << c.clearcoat;
@@ -545,6 +717,111 @@ TEST(ReferenceClosedForm, ClearcoatedPlaneAtNormalIncidence) {
         std::printf("[ measured ] ior %.1f, coat %.1f: L_DD %.6f (closed form %.6f), L_DS %.6f (closed form %.6f)\n",
                     c.ior, c.clearcoat, meanDiffuse.r, diffuse.r, meanSpecular.r, specular);
     }
+}
+
+// The path tracer end to end with a sheen: a convex box of a white Lambertian base (specular
+// weight 0) under a white sheen, all bounces, under a uniform white sky. Every visible point
+// reflects E_s + (1 − E_s) = the sky's radiance, all of it into the diffuse terms.
+TEST(ReferenceFurnace, SheenedConvexBoxUnderUniformSky) {
+    Scene scene;
+    const int material = addMaterial(scene, glm::vec3(1.0f), 0.7f, 0.0f, "sheened");
+    scene.materials[0].specularFactor = 0.0f;
+    scene.materials[0].sheenColorFactor = glm::vec3(1.0f);
+    scene.materials[0].sheenRoughness = 0.5f;
+    addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), material), glm::vec3(0.0f));
+    Camera camera;
+    camera.yfov = 0.8f;
+    camera.znear = 0.05f;
+    camera.zfar = 50.0f;
+    addCameraNode(scene, camera, glm::vec3(1.6f, 1.3f, 1.9f), glm::vec3(0.0f));
+    scene.updateWorldTransforms();
+    QuietLog log;
+    const ReferenceScene reference(scene, log);
+    ReferenceSettings settings;
+    settings.bounces = kAllBounces;
+    settings.environment = [](const glm::vec3&) { return glm::vec3(1.0f); };
+    constexpr int kSize = 32;
+    PathTracer tracer(reference, sceneCameraView(scene, 0, 1.0f), kSize, kSize, settings);
+    tracer.addSamples(128);
+    const std::vector<FirstHit> hits = traceFirstHits(reference, sceneCameraView(scene, 0, 1.0f), kSize, kSize);
+    double diffuse = 0.0, specular = 0.0;
+    int count = 0;
+    for (int y = 1; y + 1 < kSize; ++y)
+        for (int x = 1; x + 1 < kSize; ++x) {
+            bool inside = true;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) inside &= hits[static_cast<std::size_t>((y + dy) * kSize + x + dx)].node >= 0;
+            if (!inside) continue;
+            const std::size_t p = static_cast<std::size_t>(y * kSize + x);
+            diffuse += tracer.image().mean(Term::DirectDiffuse, p).g + tracer.image().mean(Term::IndirectDiffuse, p).g;
+            specular += tracer.image().mean(Term::DirectSpecular, p).g + tracer.image().mean(Term::IndirectSpecular, p).g;
+            ++count;
+        }
+    ASSERT_GT(count, 100);
+    diffuse /= count;
+    specular /= count;
+    EXPECT_NEAR(diffuse, 1.0, 0.015);
+    EXPECT_EQ(specular, 0.0) << "the sheen's light is diffuse";
+    std::printf("[ measured ] sheened box under a white sky: diffuse %.4f, specular %.4f\n", diffuse, specular);
+}
+
+// A sheened plane seen from straight above (directTermsFromAbove: v = n in every pixel) under a
+// sun 60° from the normal: h lies 30° from n, so D_s = (2 + 1/α_s)·0.5^(1/α_s)/(2π) and
+// V_s = 1/(4(½ + 1 − ½)). Direct diffuse is E·(c/π·t_s + s_c·D_s·V_s), direct specular the
+// base's GGX lobe × t_s, with t_s = 1 − max(s_c)·E_s(1, r_s) and E = sun·cos 60°.
+TEST(ReferenceClosedForm, SheenedPlaneUnderAnObliqueSun) {
+    constexpr float kSun = 3.0f;  // W/m²
+    const glm::vec3 base(0.5f, 0.3f, 0.2f), sheenColor(0.9f, 0.5f, 0.2f);
+    constexpr float kRoughness = 0.5f, kSheenRoughness = 0.6f;
+    const glm::vec3 l(std::sin(kPi / 3.0f), std::cos(kPi / 3.0f), 0.0f);  // towards the sun
+    glm::vec3 plainSpecular(0.0f);
+    for (const bool withSheen : {false, true}) {
+        Scene scene;
+        addMaterial(scene, base, kRoughness, 0.0f, "plane");
+        if (withSheen) {
+            scene.materials[0].sheenColorFactor = sheenColor;
+            scene.materials[0].sheenRoughness = kSheenRoughness;
+        }
+        const auto [meanDiffuse, meanSpecular] = directTermsFromAbove(scene, kSun, l);
+
+        const float E = kSun * 0.5f;
+        const float alphaS = kSheenRoughness * kSheenRoughness;
+        const float sheenD = (2.0f + 1.0f / alphaS) * std::pow(0.5f, 1.0f / alphaS) / (2.0f * kPi);
+        const float sheenV = 1.0f / 4.0f;
+        const float scale = withSheen ? 1.0f - 0.9f * sheenAlbedo(1.0f, kSheenRoughness) : 1.0f;
+        const glm::vec3 sheenF = withSheen ? sheenColor * sheenD * sheenV : glm::vec3(0.0f);
+        const glm::vec3 diffuse = E * (base / kPi * scale + sheenF);
+        const glm::vec3 n(0, 1, 0), v(0, 1, 0);
+        const glm::vec3 specular = E * specularBrdf(n, v, l, glm::vec3(0.04f), kRoughness * kRoughness) * scale;
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(meanDiffuse[k], diffuse[k], 1e-3 * diffuse[k]) << "sheen " << withSheen << ", channel " << k;
+            EXPECT_NEAR(meanSpecular[k], specular[k], 1e-3 * specular[k]) << "sheen " << withSheen << ", channel " << k;
+        }
+        if (!withSheen) {
+            plainSpecular = glm::vec3(meanSpecular);
+        } else {
+            EXPECT_NEAR(meanSpecular.g / plainSpecular.g, scale, 1e-5) << "the sheen keeps t_s of the base's specular";
+            EXPECT_GT(sheenF.r / (base.r / kPi * scale), 0.1f) << "the sheen must show in the diffuse term";
+        }
+        std::printf("[ measured ] sheen %d: L_DD %.6f %.6f %.6f (closed form %.6f %.6f %.6f), L_DS %.6f (closed form %.6f)\n",
+                    withSheen ? 1 : 0, meanDiffuse.r, meanDiffuse.g, meanDiffuse.b, diffuse.r, diffuse.g, diffuse.b,
+                    meanSpecular.g, specular.g);
+    }
+}
+
+// The sheen's factors reach the hit, clamped to their ranges (the extension's textures are not drawn).
+TEST(ReferenceBrdf, SheenFactorsReachTheHit) {
+    Material material;
+    material.sheenColorFactor = glm::vec3(0.25f, 0.5f, 1.0f);
+    material.sheenRoughness = 0.4f;
+    const auto resolved = resolve(material);
+    EXPECT_EQ(resolved->hit.sheenColor, glm::vec3(0.25f, 0.5f, 1.0f));
+    EXPECT_EQ(resolved->hit.sheenRoughness, 0.4f);
+    material.sheenColorFactor = glm::vec3(-0.5f, 0.5f, 3.0f);
+    material.sheenRoughness = 2.0f;
+    const auto clamped = resolve(material);
+    EXPECT_EQ(clamped->hit.sheenColor, glm::vec3(0.0f, 0.5f, 1.0f));
+    EXPECT_EQ(clamped->hit.sheenRoughness, 1.0f);
 }
 
 }  // namespace

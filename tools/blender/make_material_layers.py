@@ -1,7 +1,8 @@
 # Makes the material layers scene, as a user makes one in Blender to show off the layers of the
-# Principled BSDF that the glTF exporter writes as extensions: six spheres in a row on a matte grey
-# floor before a matte back wall, lit by a sun from the front-left above and a point light from
-# the front-right, black world. From left to right (each sphere and its material share the name):
+# Principled BSDF that the glTF exporter writes as extensions: seven spheres in a row on a matte
+# grey floor before a matte back wall, lit by a sun from the front-left above and a point light
+# from the front-right, black world. From left to right (each sphere and its material share the
+# name):
 #   plain            red dielectric (0.6, 0.1, 0.1), roughness 0.6, no extension: the control
 #   clearcoat        the same base under Clearcoat 1.0, Clearcoat Roughness 0.05
 #   clearcoat_rough  the same base under Clearcoat 0.6, Clearcoat Roughness 0.35
@@ -11,11 +12,19 @@
 #                    (KHR_materials_specular with a colour and KHR_materials_ior 2.2)
 #   coated_metal     gold (1.0, 0.77, 0.34), metallic 1, roughness 0.4, under Clearcoat 1.0,
 #                    Clearcoat Roughness 0.1
+#   sheen            dark blue dielectric cloth (0.05, 0.08, 0.25), roughness 0.9, with a
+#                    Velvet BSDF (Color (0.8, 0.8, 0.8), Sigma 0.5) added to the Principled BSDF
+#                    by an Add Shader (KHR_materials_sheen: sheenColorFactor 0.8,
+#                    sheenRoughnessFactor 0.5)
 # The other spheres have IOR 1.5 (glTF's default; Blender's is 1.45), so that only `ior` gets
 # KHR_materials_ior: the exporter writes it with any KHR_materials_specular when IOR is not 1.5.
 # Blender 3.x's Principled BSDF takes its dielectric F0 from Specular (0.08 × Specular), not from
 # IOR, and the exporter keeps that F0: `ior`'s specularColorFactor 0.284 times F0(2.2) = 0.1406
 # gives 0.04 again, as `plain`'s.
+# Blender 3.4's exporter reads KHR_materials_sheen from a Velvet BSDF that reaches the Material
+# Output (Color: sheenColorFactor, Sigma: sheenRoughnessFactor), as its importer builds the
+# extension: Velvet and Principled into an Add Shader; a "glTF Material Output" group does not
+# carry sheen.
 #
 #   tools/install-deps.sh --scene-tools
 #   blender -b --factory-startup --python tools/blender/make_material_layers.py -- [OUT_DIR] [--render SAMPLES]
@@ -28,7 +37,9 @@
 #                                 with by eye. Cycles' Principled BSDF (Blender 3.x) weights its
 #                                 clear coat by 0.25 × Clearcoat and does not dim the base under it,
 #                                 where glTF's coat has full weight and dims the base by its Fresnel
-#                                 term: the coats look weaker there than in a glTF viewer.
+#                                 term: the coats look weaker there than in a glTF viewer. The
+#                                 Add Shader sums the Velvet and the base, where glTF's sheen
+#                                 dims the base by the sheen's albedo: `sheen` looks brighter.
 
 import math
 import os
@@ -38,16 +49,17 @@ import bpy
 from mathutils import Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import box, enable_gltf_exporter, principled  # noqa: E402  (this folder, put on the path above)
+from scene_parts import box, cycles_on_cpu, enable_gltf_exporter, principled  # noqa: E402  (this folder, put on the path above)
 
 enable_gltf_exporter()
 
 WIDTH, HEIGHT = 320, 180
 RADIUS = 0.35   # sphere radius, m
-SPACING = 0.85  # between sphere centres along x, m
+SPACING = 0.8   # between sphere centres along x, m
 RED = (0.6, 0.1, 0.1)
 WHITE = (0.8, 0.8, 0.8)
 GOLD = (1.0, 0.77, 0.34)
+CLOTH = (0.05, 0.08, 0.25)
 
 
 def arguments():
@@ -74,6 +86,21 @@ def layered(name, color, roughness, metallic=0.0, clearcoat=0.0, clearcoat_rough
     return m
 
 
+def sheened(name, color, roughness, sheen_color, sheen_roughness):
+    """layered() with a Velvet BSDF added to the Principled BSDF (Add Shader into the Material
+    Output), as the glTF importer builds KHR_materials_sheen and the exporter reads it back."""
+    m = layered(name, color, roughness)
+    nodes, links = m.node_tree.nodes, m.node_tree.links
+    velvet = nodes.new("ShaderNodeBsdfVelvet")
+    velvet.inputs["Color"].default_value = (*sheen_color, 1.0)
+    velvet.inputs["Sigma"].default_value = sheen_roughness
+    add = nodes.new("ShaderNodeAddShader")
+    links.new(velvet.outputs["BSDF"], add.inputs[0])
+    links.new(nodes["Principled BSDF"].outputs["BSDF"], add.inputs[1])
+    links.new(add.outputs["Shader"], nodes["Material Output"].inputs["Surface"])
+    return m
+
+
 def spheres():
     """The row of spheres along x, left to right as the camera sees them, resting on the floor."""
     row = [
@@ -83,6 +110,7 @@ def spheres():
         layered("specular", WHITE, 0.3, specular=1.0),
         layered("ior", WHITE, 0.3, specular=0.5, specular_tint=0.5, ior=2.2),
         layered("coated_metal", GOLD, 0.4, metallic=1.0, clearcoat=1.0, clearcoat_roughness=0.1),
+        sheened("sheen", CLOTH, 0.9, sheen_color=WHITE, sheen_roughness=0.5),
     ]
     for i, m in enumerate(row):
         x = (i - (len(row) - 1) / 2) * SPACING
@@ -126,12 +154,12 @@ def add_lights():
 
 
 def add_camera():
-    bpy.ops.object.camera_add(location=(0.0, -5.5, 1.6))
+    bpy.ops.object.camera_add(location=(0.0, -6.0, 1.6))
     cam = bpy.context.object
     cam.name = "camera"
     cam.data.lens_unit = "FOV"
     cam.data.sensor_fit = "HORIZONTAL"
-    cam.data.angle = math.radians(55)  # horizontal; the row (5.0 m) fills most of the width
+    cam.data.angle = math.radians(55)  # horizontal; the row (5.5 m) fills most of the width
     direction = Vector((0.0, 0.0, 0.45)) - cam.location
     cam.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
     scene = bpy.context.scene
@@ -151,15 +179,7 @@ def black_world():
 
 
 def render(path, samples):
-    scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
-    scene.cycles.device = "CPU"
-    scene.cycles.samples = samples
-    scene.cycles.use_adaptive_sampling = False
-    scene.cycles.use_denoising = False
-    scene.cycles.seed = 1
-    scene.view_settings.view_transform = "Standard"
-    scene.view_settings.look = "None"
+    scene = cycles_on_cpu(samples)
     scene.view_settings.exposure = 0.0
     scene.view_settings.gamma = 1.0
     scene.render.image_settings.file_format = "PNG"

@@ -22,7 +22,7 @@ import bpy
 from mathutils import Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import box, enable_gltf_exporter, principled  # noqa: E402  (this folder, put on the path above)
+from scene_parts import box, cycles_on_cpu, enable_gltf_exporter, principled  # noqa: E402  (this folder, put on the path above)
 
 enable_gltf_exporter()
 
@@ -94,13 +94,7 @@ def add_camera():
 
 
 def setup_cycles(samples):
-    scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
-    scene.cycles.device = "CPU"
-    scene.cycles.samples = samples
-    scene.cycles.use_adaptive_sampling = False
-    scene.cycles.use_denoising = False
-    scene.cycles.seed = 1
+    scene = cycles_on_cpu(samples)
     # Every bounce, as Lit's default and its reference's --bounces all (Blender's default stops
     # diffuse light after 4).
     scene.cycles.max_bounces = 128
@@ -112,8 +106,6 @@ def setup_cycles(samples):
     scene.render.resolution_x = WIDTH
     scene.render.resolution_y = HEIGHT
     scene.render.resolution_percentage = 100
-    scene.view_settings.view_transform = "Standard"
-    scene.view_settings.look = "None"
     world = bpy.data.worlds.new("black")
     scene.world = world
     world.use_nodes = True

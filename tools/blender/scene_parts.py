@@ -1,6 +1,6 @@
 # What the scene makers in this folder build scenes from, as a user builds them in Blender: a
 # Principled BSDF material, a box made from the default cube, a Mapping node placing an image and
-# the same Mapping baked into a mesh's UVs. Imported by the make_*.py scripts here (which put this
+# the same Mapping baked into a mesh's UVs; and the fixed Cycles settings the comparison renders use. Imported by the make_*.py scripts here (which put this
 # folder on sys.path; Blender runs them as scripts).
 import math
 import os
@@ -78,3 +78,18 @@ def bake_mapping(obj, mapping):
     nodes = obj.active_material.node_tree.nodes
     nodes.remove(nodes["Mapping"])
     nodes.remove(nodes["Texture Coordinate"])
+
+
+def cycles_on_cpu(samples):
+    """Cycles on the CPU with `samples` samples a pixel, fixed: no adaptive sampling, no
+    denoising, seed 1, the Standard view transform without a look (the linear light as it is)."""
+    scene = bpy.context.scene
+    scene.render.engine = "CYCLES"
+    scene.cycles.device = "CPU"
+    scene.cycles.samples = samples
+    scene.cycles.use_adaptive_sampling = False
+    scene.cycles.use_denoising = False
+    scene.cycles.seed = 1
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    return scene
