@@ -2,7 +2,7 @@
 # lit_render_node_animation.sh LIT_RENDER IMAGE_STATS SCENE OUTDIR
 # The Blender scene tests/data/blender/animated (tools/blender/make_animated_scene.py) rendered
 # with --time at 0 s and 2 s, rasterized and path-traced (--reference), through its own camera at
-# 160×100. Each object is looked for where its keys put it, by projecting its known position with
+# 160×100, and along a camera path (--path), rasterized and path-traced. Each object is looked for where its keys put it, by projecting its known position with
 # the camera (at (0, 1.5, 6) looking down −Z, vertical field of view 40°, tan 20° = 0.364, aspect
 # 1.6): x_px = 80 (1 + x / (d · 0.364 · 1.6)), y_px = 50 (1 − (y − 1.5) / (d · 0.364)), d the depth.
 #   the red box, centre y 0.3 m, depth 6 m: x −1.5 m at 0 s → column 45.7; +1.5 m at 2 s → 114.3;
@@ -87,6 +87,15 @@ JSON
     { ls "$out/frames"; fail "--path did not render the frames at 0, 1 and 2 s"; }
 check "$out/frames/frame_00000.png" "path frame at 0 s" 1 1
 check "$out/frames/frame_00002.png" "path frame at 2 s" 0 0
+# --reference --path: every frame path-traced at its time, the objects where the rasterized path
+# has them.
+"$render" "$scene" --size 160x100 --gi off --reference --spp 4 --path "$out/hold.path.json" --fps 1 \
+    --frames-out "$out/reference_frames" >"$out/reference_path.txt" 2>&1 ||
+    { cat "$out/reference_path.txt"; fail "lit-render --reference --path failed"; }
+[ -f "$out/reference_frames/frame_00002.png" ] && [ ! -f "$out/reference_frames/frame_00003.png" ] ||
+    { ls "$out/reference_frames"; fail "--reference --path did not trace the frames at 0, 1 and 2 s"; }
+check "$out/reference_frames/frame_00000.png" "reference path frame at 0 s" 1 1
+check "$out/reference_frames/frame_00002.png" "reference path frame at 2 s" 0 0
 # --time with --path: one still through the path at that time.
 "$render" "$scene" --size 160x100 --gi off --path "$out/hold.path.json" --time 2 --out "$out/path_still.png" >"$out/path_still.txt" 2>&1 ||
     { cat "$out/path_still.txt"; fail "lit-render --path --time failed"; }

@@ -229,9 +229,11 @@ TEST(Options, ReferenceFlags) {
               "indirect-specular, not 'albedo'");
     EXPECT_EQ(usageError({"x.gltf", "--reference", "--bench", "3"}),
               "--reference and --bench do not go together (the reference prints its own rays/s)");
-    EXPECT_EQ(usageError({"x.gltf", "--reference", "--path", "p.json", "--frames-out", "f"}),
-              "--reference renders a still image; it does not fly --path (add --time SECONDS for the path's view at "
-              "that time)");
+    EXPECT_EQ(usageError({"x.gltf", "--reference", "--path", "p.json", "--bench-path"}),
+              "--reference and --bench-path do not go together (the reference is not timed per frame)");
+    const Options tracedPath = parseOptions({"x.gltf", "--reference", "--path", "p.json", "--frames-out", "f"});
+    EXPECT_TRUE(tracedPath.reference && tracedPath.path && !tracedPath.pathStill())
+        << "--reference --path --frames-out traces every frame of the path";
 }
 
 TEST(Options, TimeRendersAStillAtThatTime) {

@@ -460,7 +460,8 @@ std::vector<Flag> flagTable() {
                      .value = "DIR",
                      .expects = "DIR",
                      .group = G::Paths,
-                     .help = "write every frame of the path to DIR/frame_00000.png, ... (creates DIR)",
+                     .help = "write every frame of the path to DIR/frame_00000.png, ... (creates DIR); with "
+                             "--reference each frame is path-traced with --spp samples",
                      .store = pathInto(&Options::framesOut, "a folder")});
     flags.push_back({.names = {"--bench-path"},
                      .group = G::Paths,
@@ -474,7 +475,8 @@ std::vector<Flag> flagTable() {
                      .group = G::Reference,
                      .help = "path-trace the scene on the CPU (Embree): Lit's ground truth, same scene, camera, BRDF "
                              "and light units; writes the same --out/--hdr/--view images; --bounces (under GI) sets "
-                             "its bounces. Ctrl+C writes the image so far (see docs/REFERENCE.md)",
+                             "its bounces; with --path and --frames-out every frame of the path, node animations in "
+                             "step. Ctrl+C writes the image so far (see docs/REFERENCE.md)",
                      .store = &Options::reference});
     flags.push_back(
         {.names = {"--spp"},

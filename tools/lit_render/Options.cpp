@@ -132,9 +132,8 @@ Options parseOptions(const std::vector<std::string>& args) {
         if (options.fps) throw UsageError("--fps needs --path");
     }
     if (options.reference) {
-        if (options.path && !options.time)
-            throw UsageError("--reference renders a still image; it does not fly --path (add --time SECONDS for the "
-                             "path's view at that time)");
+        if (options.benchPath)
+            throw UsageError("--reference and --bench-path do not go together (the reference is not timed per frame)");
         if (options.benchFrames > 0) throw UsageError("--reference and --bench do not go together (the reference prints its own rays/s)");
         if (options.frames) throw UsageError("--frames does not apply to --reference (use --spp)");
         if (options.view && !reference::referenceRendersView(*options.view))

@@ -98,10 +98,7 @@ CameraPath loadPath(const Options& options) {
     }
 }
 
-int runPath(const RunContext& run, const CameraPath& path, Scene& scene, const GlRun& gl) {
-    const Options& options = run.options;
-    const RenderSettings& settings = run.settings;
-    Renderer& renderer = gl.renderer;
+std::vector<double> pathFrameTimes(const Options& options, const CameraPath& path, const Scene& scene) {
     std::vector<double> times;
     try {
         times = path.frameTimes(options.pathFps());
@@ -117,12 +114,28 @@ int runPath(const RunContext& run, const CameraPath& path, Scene& scene, const G
     if (times.size() > static_cast<std::size_t>(kMaxFrames))
         throw RunError("the camera path is " + std::to_string(path.duration()) + " s long: " +
                        std::to_string(times.size()) + " frames at this --fps, more than " + std::to_string(kMaxFrames));
-    if (!options.framesOut.empty()) {
-        std::error_code ec;
-        fs::create_directories(options.framesOut, ec);
-        if (ec || !fs::is_directory(options.framesOut))
-            throw RunError("cannot create the folder " + options.framesOut.string() + ": " + ec.message());
-    }
+    return times;
+}
+
+void makeFramesFolder(const fs::path& folder) {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec || !fs::is_directory(folder))
+        throw RunError("cannot create the folder " + folder.string() + ": " + ec.message());
+}
+
+fs::path frameFile(const fs::path& folder, std::size_t index) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05zu.png", index);
+    return folder / name;
+}
+
+int runPath(const RunContext& run, const CameraPath& path, Scene& scene, const GlRun& gl) {
+    const Options& options = run.options;
+    const RenderSettings& settings = run.settings;
+    Renderer& renderer = gl.renderer;
+    const std::vector<double> times = pathFrameTimes(options, path, scene);
+    if (!options.framesOut.empty()) makeFramesFolder(options.framesOut);
 
     const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
     // Each frame poses the nodes at its time first: the view's near and far planes fit the
@@ -155,10 +168,8 @@ int runPath(const RunContext& run, const CameraPath& path, Scene& scene, const G
         }
         if (!options.framesOut.empty()) {
             gl.requireNoGlErrors();  // before each frame is written: no wrong frame on disk
-            char name[32];
-            std::snprintf(name, sizeof name, "frame_%05zu.png", i);
             rgba = renderer.readOutputRgba8();
-            lit::writePng(options.framesOut / name, settings.output.width, settings.output.height, rgba);
+            lit::writePng(frameFile(options.framesOut, i), settings.output.width, settings.output.height, rgba);
         }
         progress.update(i + 1);
     }

@@ -6,12 +6,15 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "Compare.h"
 #include "Log.h"
 #include "NodeMap.h"
+#include "PathRun.h"
+#include "animation/NodeAnimation.h"
 #include "image/ImageIO.h"
 #include "reference/DifferenceImage.h"
 #include "reference/PathTracer.h"
@@ -33,6 +36,48 @@ std::atomic<bool>& interruptRequested() {
 }
 extern "C" void onInterrupt(int) { interruptRequested().store(true); }
 
+// The tracer's settings for this run. Without --bounces the reference follows --gi and the
+// settings' bounces: the same light paths as the VCT, or direct light only. Rays that leave the
+// scene see the same sky as the rasterizer's background and cones.
+lit::reference::ReferenceSettings referenceSettingsFor(const RunContext& run, const Scene& scene) {
+    const Options& options = run.options;
+    const RenderSettings& settings = run.settings;
+    lit::reference::ReferenceSettings reference;
+    const int giBounces = settings.gi.bounces == lit::kAllBounces ? lit::reference::kAllBounces : settings.gi.bounces;
+    reference.bounces = options.bounces.value_or(settings.gi.enabled ? giBounces : 0);
+    reference.seed = options.seed.value_or(0);
+    std::string skyError;
+    reference.environment = lit::makeSkyFunction(scene, settings, &skyError);
+    if (!skyError.empty()) run.log.error(skyError + "; using the gradient sky");
+    return reference;
+}
+
+// A scene without lights is lit by the rasterizer's default sun (scene/Sky.h); the reference gets
+// the same sun as a light of its own copy of the scene.
+lit::Scene withDefaultSun(const Scene& scene, const RenderSettings& settings) {
+    lit::Scene withSun = scene;
+    lit::addDefaultSun(withSun, settings);
+    return withSun;
+}
+
+// Ctrl+C is caught while `this` lives (interruptRequested), then handled as before.
+class InterruptScope {
+public:
+    InterruptScope() {
+        interruptRequested().store(false);
+        struct sigaction action {};
+        action.sa_handler = onInterrupt;
+        sigemptyset(&action.sa_mask);
+        sigaction(SIGINT, &action, &previous_);
+    }
+    ~InterruptScope() { sigaction(SIGINT, &previous_, nullptr); }
+    InterruptScope(const InterruptScope&) = delete;
+    InterruptScope& operator=(const InterruptScope&) = delete;
+
+private:
+    struct sigaction previous_ {};
+};
+
 }  // namespace
 
 int runReference(const RunContext& run, const Scene& scene, const CameraView& camera) {
@@ -40,23 +85,11 @@ int runReference(const RunContext& run, const Scene& scene, const CameraView& ca
     const RenderSettings& settings = run.settings;
     Log& log = run.log;
     const Clock::time_point buildStart = Clock::now();
-    // A scene without lights is lit by the rasterizer's default sun (scene/Sky.h); give the
-    // reference the same sun as a light of its own copy of the scene.
-    lit::Scene withSun = scene;
-    lit::addDefaultSun(withSun, settings);
+    const lit::Scene withSun = withDefaultSun(scene, settings);
     const lit::reference::ReferenceScene referenceScene(withSun, log);
     const double buildSeconds = secondsSince(buildStart);
 
-    lit::reference::ReferenceSettings reference;
-    // Without --bounces the reference follows --gi and the settings' bounces: the same light paths
-    // as the VCT, or direct light only.
-    const int giBounces = settings.gi.bounces == lit::kAllBounces ? lit::reference::kAllBounces : settings.gi.bounces;
-    reference.bounces = options.bounces.value_or(settings.gi.enabled ? giBounces : 0);
-    reference.seed = options.seed.value_or(0);
-    // Rays that leave the scene see the same sky as the rasterizer's background and cones.
-    std::string skyError;
-    reference.environment = lit::makeSkyFunction(scene, settings, &skyError);
-    if (!skyError.empty()) log.error(skyError + "; using the gradient sky");
+    const lit::reference::ReferenceSettings reference = referenceSettingsFor(run, scene);
     lit::reference::PathTracer tracer(referenceScene, camera, settings.output.width, settings.output.height, reference);
     if (!options.nodeMap.empty()) {
         std::string error;
@@ -68,13 +101,7 @@ int runReference(const RunContext& run, const Scene& scene, const CameraView& ca
         }
     }
 
-    interruptRequested().store(false);
-    struct sigaction action {};
-    action.sa_handler = onInterrupt;
-    sigemptyset(&action.sa_mask);
-    struct sigaction previous {};
-    sigaction(SIGINT, &action, &previous);
-
+    std::optional<InterruptScope> interruptible(std::in_place);
     const int spp = options.referenceSpp();
     const bool terminal = isatty(fileno(stderr)) != 0;
     const Clock::time_point renderStart = Clock::now();
@@ -103,7 +130,7 @@ int runReference(const RunContext& run, const Scene& scene, const CameraView& ca
             std::fflush(stderr);
         }
     }
-    sigaction(SIGINT, &previous, nullptr);
+    interruptible.reset();
     if (printed && terminal) std::fputc('\n', stderr);
     const double seconds = secondsSince(renderStart);
 
@@ -135,6 +162,42 @@ int runReference(const RunContext& run, const Scene& scene, const CameraView& ca
                      tracer.samplesDone(), spp);
         return 130;  // the shell's status for a SIGINT
     }
+    return 0;
+}
+
+int runReferencePath(const RunContext& run, const CameraPath& path, Scene& scene) {
+    const Options& options = run.options;
+    const RenderSettings& settings = run.settings;
+    const std::vector<double> times = pathFrameTimes(options, path, scene);
+    makeFramesFolder(options.framesOut);
+    const lit::reference::ReferenceSettings reference = referenceSettingsFor(run, scene);
+    const float aspect = static_cast<float>(settings.output.width) / static_cast<float>(settings.output.height);
+    const int spp = options.referenceSpp();
+    const InterruptScope interruptible;
+    const Clock::time_point start = Clock::now();
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        // Posed at the frame's time as the rasterized path is: the tracer builds from this pose.
+        lit::applyNodeAnimations(scene, times[i]);
+        const lit::CameraView view = *path.view(times[i], aspect, scene.worldBounds());
+        const lit::Scene withSun = withDefaultSun(scene, settings);
+        const lit::reference::ReferenceScene referenceScene(withSun, run.log);
+        lit::reference::PathTracer tracer(referenceScene, view, settings.output.width, settings.output.height,
+                                          reference);
+        const bool complete = tracer.addSamples(spp, &interruptRequested());
+        const std::vector<float> rgb = tracer.image().viewRgb(settings.debug.view, settings);
+        lit::writePng(frameFile(options.framesOut, i), settings.output.width, settings.output.height,
+                      lit::reference::toneMapToRgba8(rgb, settings.output.exposureScale()));
+        std::fprintf(stderr, "reference path: frame %zu of %zu (%.3f s), %u spp, %.1f s elapsed\n", i + 1, times.size(),
+                     times[i], tracer.image().minSamples(), secondsSince(start));
+        if (!complete) {
+            std::fprintf(stderr, "lit-render: interrupted in frame %zu of %zu; it was written with the samples so far\n",
+                         i + 1, times.size());
+            return 130;
+        }
+    }
+    std::printf("wrote %zu reference frames to %s (%dx%d, %g fps, %d spp, %.2f s)\n", times.size(),
+                options.framesOut.string().c_str(), settings.output.width, settings.output.height, options.pathFps(),
+                spp, secondsSince(start));
     return 0;
 }
 

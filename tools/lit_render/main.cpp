@@ -127,6 +127,7 @@ int run(const Options& options) {
     const lit::CameraView stillCamera = options.pathStill()
                                             ? *path->view(*options.time, aspect, scene.worldBounds())
                                             : lit::sceneCameraView(scene, cameraIndex, aspect);
+    if (options.reference && path && !options.pathStill()) return runReferencePath(context, *path, scene);
     if (options.reference) return runReference(context, scene, stillCamera);
 
     lit::HeadlessContext glContext;
