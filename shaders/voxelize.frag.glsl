@@ -72,9 +72,13 @@ void main() {
     // The first fragment of a voxel (the albedo's compare-and-swap from 0 succeeds, as the first
     // try of atomicAverageRgb would) appends it to the occupied-voxel list unless it is listed
     // already (a voxelization of changed boxes keeps the list); later ones average.
-    // A clear coat passes 1 − weight·Fc of the light to the base and back: its mean over the
-    // hemisphere here, since a voxel's light leaves in every direction (docs/MATERIALS.md).
-    vec3 albedo = clamp(baseColor.rgb, 0.0, 1.0) * (1.0 - m.clearcoat.x * kClearcoatMeanFresnel);
+    // A sheen reflects its colour × its mean albedo Ē_s and leaves 1 − max(colour)·Ē_s of the
+    // base; a clear coat passes 1 − weight·Fc of the light to both and back. Means over the
+    // hemisphere, since a voxel's light leaves in every direction (docs/MATERIALS.md).
+    vec3 sheen = m.sheen.rgb * m.clearcoat.z;
+    vec3 albedo = (clamp(baseColor.rgb, 0.0, 1.0) * (1.0 - max(m.sheen.r, max(m.sheen.g, m.sheen.b)) * m.clearcoat.z) +
+                   sheen) *
+                  (1.0 - m.clearcoat.x * kClearcoatMeanFresnel);
     uint voxelIndex = uint(v.x) + uint(n) * (uint(v.y) + uint(n) * uint(v.z));
     uint listedBit = 1u << (voxelIndex & 31u);
     if (imageAtomicCompSwap(voxelAlbedo, v, 0u, averageRgbAdd(0u, albedo)) == 0u) {

@@ -4,6 +4,7 @@
 #include "gl/Shader.h"
 #include "scene/Scene.h"
 #include "scene/SceneMemory.h"
+#include "scene/SheenAlbedo.h"
 
 #include <shared.h>
 
@@ -99,7 +100,9 @@ gpu::GpuMaterial toGpu(const Material& m) {
     const float f0FromIor = reflectance * reflectance;
     g.specular = glm::vec4(glm::min(glm::vec3(f0FromIor) * m.specularColorFactor, glm::vec3(1.0f)) * m.specularFactor,
                            m.specularFactor);
-    g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughness, 0.0f, 0.0f);
+    const bool sheen = m.sheenColorFactor != glm::vec3(0.0f);
+    g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughness, sheen ? sheenMeanAlbedo(m.sheenRoughness) : 0.0f,
+                            0.0f);
     g.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughness);
     return g;
 }

@@ -83,4 +83,14 @@ float sheenAlbedo(float NdotV, float roughness) {
     return top + (bottom - top) * fy;
 }
 
+float sheenMeanAlbedo(float roughness) {
+    constexpr int kSteps = 64;
+    float sum = 0.0f;
+    for (int i = 0; i < kSteps; ++i) {
+        const float mu = (static_cast<float>(i) + 0.5f) / kSteps;
+        sum += sheenAlbedo(mu, roughness) * mu;
+    }
+    return 2.0f * sum / kSteps;
+}
+
 }  // namespace lit

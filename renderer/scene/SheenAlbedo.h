@@ -22,5 +22,8 @@ float sheenVisibility(float NdotL, float NdotV);
 const std::array<float, kSheenAlbedoSize * kSheenAlbedoSize>& sheenAlbedoTable();
 // The table read as GL's bilinear filter with clamp to edge reads the texture.
 float sheenAlbedo(float NdotV, float roughness);
+// Its cosine-weighted mean over the view directions, 2∫ E_s(μ, r_s) μ dμ: the share of light from
+// everywhere a white sheen reflects (what a voxel's sheen sends back, having no view direction).
+float sheenMeanAlbedo(float roughness);
 
 }  // namespace lit

@@ -284,7 +284,8 @@ struct GpuMaterial {
     ivec4 modes;              // x occlusion texture present, y alpha mode (LIT_ALPHA_*), z double sided, w unused
     vec4 alpha;               // x alpha cutoff, yzw unused
     vec4 specular;            // rgb dielectric F0, a dielectric F90 (KHR_materials_ior, _specular; docs/MATERIALS.md)
-    vec4 clearcoat;           // x coat weight, y coat roughness (perceptual), zw unused (KHR_materials_clearcoat)
+    vec4 clearcoat;           // x coat weight, y coat roughness (perceptual) (KHR_materials_clearcoat),
+                              // z the sheen's mean albedo (scene/SheenAlbedo.h sheenMeanAlbedo; the voxels' sheen), w unused
     vec4 sheen;               // rgb sheen colour, a sheen roughness (perceptual) (KHR_materials_sheen)
 };
 

@@ -219,6 +219,13 @@ TEST_F(MaterialLayers, SheenMatchesTheReference) {
         EXPECT_NEAR(litFull.at(name) / refFull.at(name), 1.0, 0.10) << name;
     }
     EXPECT_GT(litDirect.at("ior"), 0.02) << "a sheen on black must show";
+    // The voxels reflect the sheen too: the black sphere's voxelized albedo is its sheen's mean.
+    RenderSettings voxels = full;
+    voxels.debug.view = View::Voxels;
+    voxels.debug.voxelChannel = VoxelChannel::Albedo;
+    const double sheenVoxels = raster(scene, voxels, View::Voxels).at("ior");
+    std::printf("black sphere with a sheen: voxel albedo (display value) %.4f\n", sheenVoxels);
+    EXPECT_GT(sheenVoxels, 0.03) << "the voxels of a black sphere with a sheen must not be black (0 without)";
     EXPECT_GT(std::abs(litDirect.at("plain") / bare.at("plain") - 1.0), 0.03) << "the sheen must change the sphere";
 }
 

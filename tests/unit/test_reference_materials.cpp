@@ -441,6 +441,28 @@ glm::vec3 viewAt(float NdotV) { return {std::sqrt(1.0f - NdotV * NdotV), 0.0f, N
 // 1 − max(s_c)·E_s removes what the lobe reflects. All of it is diffuse. (Below r_s 0.3 the
 // lobe is a grazing ridge and E_s far from grazing falls under 0.06, where the bilinear table
 // departs from it by up to 0.003.)
+// What the voxels reflect of a sheen (voxelize.frag.glsl): the table's cosine-weighted mean over
+// the view directions, between the table's extremes, and growing with roughness as E_s does
+// at normal incidence.
+TEST(SheenAlbedo, MeanAlbedoIsTheCosineWeightedMeanOfTheTable) {
+    float previous = 0.0f;
+    for (const float roughness : {0.2f, 0.5f, 0.8f, 1.0f}) {
+        double mean = 0.0;
+        constexpr int kSteps = 4000;
+        for (int i = 0; i < kSteps; ++i) {
+            const float mu = (static_cast<float>(i) + 0.5f) / kSteps;
+            mean += 2.0 * sheenAlbedo(mu, roughness) * mu / kSteps;
+        }
+        const float got = sheenMeanAlbedo(roughness);
+        std::printf("[ measured ] sheen roughness %.1f: mean albedo %.4f (fine quadrature %.4f)\n", roughness, got, mean);
+        EXPECT_NEAR(got, mean, 1e-3);
+        EXPECT_GT(got, 0.0f);
+        EXPECT_LT(got, 1.0f);
+        EXPECT_GT(got, previous) << "rougher sheens reflect more";
+        previous = got;
+    }
+}
+
 TEST(ReferenceFurnace, SheenLobeAlbedoIsTheSheenAlbedoTable) {
     double worst = 0.0;
     for (const float NdotV : {0.1f, 0.3f, 0.6f, 0.9f})
