@@ -40,11 +40,9 @@ trap 'rm -f "$table"' EXIT
 
 # The commit checked out when the run ends (build lit-gi-accuracy from that tree), "+ uncommitted
 # changes" when files other than docs/ and *.md differ from it.
-commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "not recorded")"
-if [ "$commit" != "not recorded" ] && [ -n "$(git -C "$root" status --porcelain -- . ':!docs' ':!*.md' 2>/dev/null)" ]; then
-    commit="$commit + uncommitted changes"
-fi
-cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//') ($(nproc) cores)"
+. "$root/tools/table-stamp.sh"
+commit="$(table_commit "$root")"
+cpu="$(table_cpu)"
 mkdir -p "$(dirname "$out")"
 {
     echo "# GI accuracy against the reference"
@@ -54,7 +52,7 @@ mkdir -p "$(dirname "$out")"
     echo
     echo "- Date: $(date -u '+%Y-%m-%d %H:%M UTC')"
     echo "- Commit: $commit"
-    echo "- Machine: $cpu; load average at the end of the run: $(uptime | sed 's/.*load average: //')"
+    echo "- Machine: $cpu; load average at the end of the run: $(table_load)"
     echo
     cat "$table"
 } > "$out.tmp"

@@ -46,11 +46,9 @@ pairs=()
 for view in "${views[@]}"; do pairs+=("$view=$tmp/lit-$view.hdr:$tmp/ref-$view.hdr"); done
 rows="$(cd "$root/tools" && "$python" material_accuracy.py "$tmp/nodes.txt" "${pairs[@]}")"
 
-commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "not recorded")"
-if [ "$commit" != "not recorded" ] && [ -n "$(git -C "$root" status --porcelain -- . ':!docs' ':!*.md' 2>/dev/null)" ]; then
-    commit="$commit + uncommitted changes"
-fi
-cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//') ($(nproc) cores)"
+. "$root/tools/table-stamp.sh"
+commit="$(table_commit "$root")"
+cpu="$(table_cpu)"
 mkdir -p "$(dirname "$out")"
 {
     echo "# The material layers against the reference"
@@ -59,7 +57,7 @@ mkdir -p "$(dirname "$out")"
     echo
     echo "- Date: $(date -u '+%Y-%m-%d %H:%M UTC')"
     echo "- Commit: $commit"
-    echo "- Machine: $cpu; load average at the end of the run: $(cut -d' ' -f1-3 /proc/loadavg | sed 's/ /, /g')"
+    echo "- Machine: $cpu; load average at the end of the run: $(table_load)"
     echo "- Scene: \`tests/data/blender/material_layers\` (tools/blender/make_material_layers.py), ${size/x/×} pixels"
     echo "- Lit: the defaults at ${voxels}³ (converged, every bounce); reference: $spp spp, every bounce, ${ref_seconds} s for the five views"
     echo

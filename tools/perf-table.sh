@@ -162,14 +162,10 @@ if [[ -n "$compareRev" ]]; then
     done
 fi
 
-cpu="$(awk -F': ' '/model name/ {print $2; exit}' /proc/cpuinfo) ($(nproc) cores)"
-# The commit checked out when the run ends (build lit-render from that tree), "+ uncommitted
-# changes" when files other than docs/ and *.md differ from it.
-commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "not recorded")"
-if [[ "$commit" != "not recorded" && -n "$(git -C "$root" status --porcelain -- . ':!docs' ':!*.md' 2>/dev/null)" ]]; then
-    commit="$commit + uncommitted changes"
-fi
-python3 - "$results" "$out" "$size" "$cpu" "$(date -u '+%Y-%m-%d %H:%M UTC')" "$compareRev" "$(uptime | sed 's/.*load average: //')" "$compareFiles" "$commit" <<'PY'
+. "$root/tools/table-stamp.sh"
+cpu="$(table_cpu)"
+commit="$(table_commit "$root")"
+python3 - "$results" "$out" "$size" "$cpu" "$(date -u '+%Y-%m-%d %H:%M UTC')" "$compareRev" "$(table_load)" "$compareFiles" "$commit" <<'PY'
 import json, os, sys
 results, out, size, cpu, date, compare_rev, load, compare_files, commit = sys.argv[1:10]
 

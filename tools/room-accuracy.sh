@@ -56,11 +56,9 @@ rows_ref="$("$python" "$root/tools/room_accuracy.py" "$tmp/direct.hdr" "$tmp/ref
 rows_self="$("$python" "$root/tools/room_accuracy.py" "$tmp/direct.hdr" "$tmp/lit.hdr" \
     "Lit, one frame's GI (--single-frame)=$tmp/lit1f.hdr")"
 
-commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "not recorded")"
-if [ "$commit" != "not recorded" ] && [ -n "$(git -C "$root" status --porcelain -- . ':!docs' ':!*.md' 2>/dev/null)" ]; then
-    commit="$commit + uncommitted changes"
-fi
-cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//') ($(nproc) cores)"
+. "$root/tools/table-stamp.sh"
+commit="$(table_commit "$root")"
+cpu="$(table_cpu)"
 cycles="$("$python" -c "import json,sys; d=json.load(open(sys.argv[1])); c=d['cycles']; print(f\"Blender {d['blender']}, Cycles {c['samples']} samples, {c['bounces']}\")" "$scene_dir/sun_room_cycles.json")"
 mkdir -p "$(dirname "$out")"
 {
@@ -71,7 +69,7 @@ mkdir -p "$(dirname "$out")"
     echo
     echo "- Date: $(date -u '+%Y-%m-%d %H:%M UTC')"
     echo "- Commit: $commit"
-    echo "- Machine: $cpu; load average at the end of the run: $(cut -d' ' -f1-3 /proc/loadavg | sed 's/ /, /g')"
+    echo "- Machine: $cpu; load average at the end of the run: $(table_load)"
     echo "- Scene: \`tests/data/blender/sun_room\` (tools/blender/make_sun_room.py), ${size/x/×} pixels; truth: $cycles"
     echo "- Lit's reference: $spp spp, every bounce, ${ref_seconds} s"
     echo

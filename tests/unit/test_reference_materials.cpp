@@ -524,17 +524,17 @@ TEST(ReferenceFurnace, SheenOnWhiteDoesNotCreateLight) {
                 worst, leastUnscaled);
 }
 
-// The path tracer end to end: a convex box (it never sees itself) of a white Lambertian base
-// (specular weight 0) under a near-mirror coat, all bounces, under a uniform white sky. Every
-// visible point sends (1 − Fc(n·v)) into the diffuse terms and the coat's albedo ≈ Fc(n·v) into
-// the specular terms: the coat's reflection is specular, and the sum is the sky's radiance.
-TEST(ReferenceFurnace, ClearcoatedConvexBoxUnderUniformSky) {
-    Scene scene;
-    const int material = addMaterial(scene, glm::vec3(1.0f), 0.7f, 0.0f, "coated");
-    scene.materials[0].specularFactor = 0.0f;
-    scene.materials[0].clearcoatFactor = 1.0f;
-    scene.materials[0].clearcoatRoughness = 0.0f;
-    addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), material), glm::vec3(0.0f));
+// A unit box of the scene's one material (already added) seen from (1.6, 1.3, 1.9) under a
+// uniform white sky, every bounce, `samples` per pixel at the pixel centres (the view directions
+// of traceFirstHits): the mean diffuse (L_DD + L_ID) and specular (L_DS + L_IS) radiance over the
+// pixels whose 3 × 3 neighbourhood lies on the box. `perPixel(hit, eye)` sees each of them.
+struct BoxUnderSky {
+    double diffuse = 0.0, specular = 0.0;
+    int pixels = 0;
+};
+template <typename PerPixel>
+BoxUnderSky boxUnderWhiteSky(Scene& scene, int samples, PerPixel&& perPixel) {
+    addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), 0), glm::vec3(0.0f));
     Camera camera;
     camera.yfov = 0.8f;
     camera.znear = 0.05f;
@@ -547,13 +547,12 @@ TEST(ReferenceFurnace, ClearcoatedConvexBoxUnderUniformSky) {
     ReferenceSettings settings;
     settings.bounces = kAllBounces;
     settings.environment = [](const glm::vec3&) { return glm::vec3(1.0f); };
-    settings.pixelCentres = true;  // the view direction of traceFirstHits
+    settings.pixelCentres = true;
     constexpr int kSize = 32;
     PathTracer tracer(reference, view, kSize, kSize, settings);
-    tracer.addSamples(256);
+    tracer.addSamples(samples);
     const std::vector<FirstHit> hits = traceFirstHits(reference, view, kSize, kSize);
-    double diffuse = 0.0, specular = 0.0, expectedDiffuse = 0.0, expectedSpecular = 0.0;
-    int count = 0;
+    BoxUnderSky out;
     for (int y = 1; y + 1 < kSize; ++y)
         for (int x = 1; x + 1 < kSize; ++x) {
             bool inside = true;
@@ -561,27 +560,46 @@ TEST(ReferenceFurnace, ClearcoatedConvexBoxUnderUniformSky) {
                 for (int dx = -1; dx <= 1; ++dx) inside &= hits[static_cast<std::size_t>((y + dy) * kSize + x + dx)].node >= 0;
             if (!inside) continue;
             const std::size_t p = static_cast<std::size_t>(y * kSize + x);
-            const float NdotV = glm::dot(hits[p].normal, glm::normalize(view.position - hits[p].position));
-            const float fc = 0.04f + 0.96f * std::pow(1.0f - NdotV, 5.0f);
-            expectedDiffuse += 1.0f - fc;
-            expectedSpecular += fc;
+            perPixel(hits[p], view.position);
             const ReferenceImage& image = tracer.image();
-            diffuse += image.mean(Term::DirectDiffuse, p).g + image.mean(Term::IndirectDiffuse, p).g;
-            specular += image.mean(Term::DirectSpecular, p).g + image.mean(Term::IndirectSpecular, p).g;
-            ++count;
+            out.diffuse += image.mean(Term::DirectDiffuse, p).g + image.mean(Term::IndirectDiffuse, p).g;
+            out.specular += image.mean(Term::DirectSpecular, p).g + image.mean(Term::IndirectSpecular, p).g;
+            ++out.pixels;
         }
-    ASSERT_GT(count, 100);
-    diffuse /= count;
-    specular /= count;
-    expectedDiffuse /= count;
-    expectedSpecular /= count;
+    EXPECT_GT(out.pixels, 100) << "the box must fill the view";
+    if (out.pixels > 0) {
+        out.diffuse /= out.pixels;
+        out.specular /= out.pixels;
+    }
+    return out;
+}
+
+// The path tracer end to end: a convex box (it never sees itself) of a white Lambertian base
+// (specular weight 0) under a near-mirror coat, all bounces, under a uniform white sky. Every
+// visible point sends (1 − Fc(n·v)) into the diffuse terms and the coat's albedo ≈ Fc(n·v) into
+// the specular terms: the coat's reflection is specular, and the sum is the sky's radiance.
+TEST(ReferenceFurnace, ClearcoatedConvexBoxUnderUniformSky) {
+    Scene scene;
+    addMaterial(scene, glm::vec3(1.0f), 0.7f, 0.0f, "coated");
+    scene.materials[0].specularFactor = 0.0f;
+    scene.materials[0].clearcoatFactor = 1.0f;
+    scene.materials[0].clearcoatRoughness = 0.0f;
+    double expectedDiffuse = 0.0, expectedSpecular = 0.0;
+    const BoxUnderSky box = boxUnderWhiteSky(scene, 256, [&](const FirstHit& hit, const glm::vec3& eye) {
+        const float NdotV = glm::dot(hit.normal, glm::normalize(eye - hit.position));
+        const float fc = 0.04f + 0.96f * std::pow(1.0f - NdotV, 5.0f);
+        expectedDiffuse += 1.0f - fc;
+        expectedSpecular += fc;
+    });
+    expectedDiffuse /= box.pixels;
+    expectedSpecular /= box.pixels;
     // 1 % of the sky for the sum and the diffuse share, 5 % of the coat's share (the lobe choice
     // makes the split noisy: one standard deviation is about 0.1 % of the sky at 256 spp).
-    EXPECT_NEAR(diffuse + specular, 1.0, 0.01);
-    EXPECT_NEAR(diffuse, expectedDiffuse, 0.01);
-    EXPECT_NEAR(specular, expectedSpecular, 0.05 * expectedSpecular);
+    EXPECT_NEAR(box.diffuse + box.specular, 1.0, 0.01);
+    EXPECT_NEAR(box.diffuse, expectedDiffuse, 0.01);
+    EXPECT_NEAR(box.specular, expectedSpecular, 0.05 * expectedSpecular);
     std::printf("[ measured ] coated box under a white sky: diffuse %.4f (1 − Fc: %.4f), specular %.4f (Fc: %.4f)\n",
-                diffuse, expectedDiffuse, specular, expectedSpecular);
+                box.diffuse, expectedDiffuse, box.specular, expectedSpecular);
 }
 
 // ---- ior and specular ----------------------------------------------------------------------------
@@ -746,45 +764,14 @@ TEST(ReferenceClosedForm, ClearcoatedPlaneAtNormalIncidence) {
 // reflects E_s + (1 − E_s) = the sky's radiance, all of it into the diffuse terms.
 TEST(ReferenceFurnace, SheenedConvexBoxUnderUniformSky) {
     Scene scene;
-    const int material = addMaterial(scene, glm::vec3(1.0f), 0.7f, 0.0f, "sheened");
+    addMaterial(scene, glm::vec3(1.0f), 0.7f, 0.0f, "sheened");
     scene.materials[0].specularFactor = 0.0f;
     scene.materials[0].sheenColorFactor = glm::vec3(1.0f);
     scene.materials[0].sheenRoughness = 0.5f;
-    addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), material), glm::vec3(0.0f));
-    Camera camera;
-    camera.yfov = 0.8f;
-    camera.znear = 0.05f;
-    camera.zfar = 50.0f;
-    addCameraNode(scene, camera, glm::vec3(1.6f, 1.3f, 1.9f), glm::vec3(0.0f));
-    scene.updateWorldTransforms();
-    QuietLog log;
-    const ReferenceScene reference(scene, log);
-    ReferenceSettings settings;
-    settings.bounces = kAllBounces;
-    settings.environment = [](const glm::vec3&) { return glm::vec3(1.0f); };
-    constexpr int kSize = 32;
-    PathTracer tracer(reference, sceneCameraView(scene, 0, 1.0f), kSize, kSize, settings);
-    tracer.addSamples(128);
-    const std::vector<FirstHit> hits = traceFirstHits(reference, sceneCameraView(scene, 0, 1.0f), kSize, kSize);
-    double diffuse = 0.0, specular = 0.0;
-    int count = 0;
-    for (int y = 1; y + 1 < kSize; ++y)
-        for (int x = 1; x + 1 < kSize; ++x) {
-            bool inside = true;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) inside &= hits[static_cast<std::size_t>((y + dy) * kSize + x + dx)].node >= 0;
-            if (!inside) continue;
-            const std::size_t p = static_cast<std::size_t>(y * kSize + x);
-            diffuse += tracer.image().mean(Term::DirectDiffuse, p).g + tracer.image().mean(Term::IndirectDiffuse, p).g;
-            specular += tracer.image().mean(Term::DirectSpecular, p).g + tracer.image().mean(Term::IndirectSpecular, p).g;
-            ++count;
-        }
-    ASSERT_GT(count, 100);
-    diffuse /= count;
-    specular /= count;
-    EXPECT_NEAR(diffuse, 1.0, 0.015);
-    EXPECT_EQ(specular, 0.0) << "the sheen's light is diffuse";
-    std::printf("[ measured ] sheened box under a white sky: diffuse %.4f, specular %.4f\n", diffuse, specular);
+    const BoxUnderSky box = boxUnderWhiteSky(scene, 128, [](const FirstHit&, const glm::vec3&) {});
+    EXPECT_NEAR(box.diffuse, 1.0, 0.015);
+    EXPECT_EQ(box.specular, 0.0) << "the sheen's light is diffuse";
+    std::printf("[ measured ] sheened box under a white sky: diffuse %.4f, specular %.4f\n", box.diffuse, box.specular);
 }
 
 // A sheened plane seen from straight above (directTermsFromAbove: v = n in every pixel) under a
