@@ -121,7 +121,9 @@ struct Renderer::Impl {
     void updateGi(const Scene& scene, const RenderSettings& settings, const GiBudget& budget, bool shadowsDirty);
     void lightTerms(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
     void bindSheenAlbedo();
-    void traceIndirect(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
+    // `layers`: whether the scene's materials have specular layers (GpuScene::hasMaterialLayers).
+    void traceIndirect(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame,
+                       bool layers);
     void composite(const RenderSettings& settings);
     void drawOverlay(const gpu::FrameUniforms& frame);
 
@@ -405,13 +407,14 @@ void Renderer::Impl::lightTerms(const Scene& scene, const RenderSettings& settin
     shadow.bindMaps();
     // The lighting passes read each pixel's specular layers from the material table (gbuffer.glsl).
     gpuScene->materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
-    if (gpuScene->hasMaterialLayers()) bindSheenAlbedo();
+    const bool layers = gpuScene->hasMaterialLayers();
+    if (layers) bindSheenAlbedo();
     {
         Profiler::Scope scope(profiler, "lighting");
-        direct.execute(terms, settings, {ShadowKinds::of(lights), {gpuScene->hasMaterialLayers()}});
+        direct.execute(terms, settings, {ShadowKinds::of(lights), {layers}});
     }
     if (settings.gi.enabled) {
-        traceIndirect(scene, settings, frame);
+        traceIndirect(scene, settings, frame, layers);
     } else {
         terms.clearIndirect();
         resolve.resetHistory();
@@ -419,11 +422,11 @@ void Renderer::Impl::lightTerms(const Scene& scene, const RenderSettings& settin
 }
 
 void Renderer::Impl::traceIndirect(const Scene& scene, const RenderSettings& settings,
-                                   const gpu::FrameUniforms& frame) {
+                                   const gpu::FrameUniforms& frame, bool layers) {
     const VoxelVolume& volume = gi.volume();
     if (!ConeTracePass::reducedPath(settings)) {  // every pixel at full resolution
         Profiler::Scope scope(profiler, "cone trace");
-        coneTrace.execute(terms, volume, settings, gpuScene->hasMaterialLayers());
+        coneTrace.execute(terms, volume, settings, layers);
         resolve.resetHistory();
         return;
     }
@@ -450,20 +453,17 @@ void Renderer::Impl::traceIndirect(const Scene& scene, const RenderSettings& set
     {
         Profiler::Scope scope(profiler, "cone trace");
         gi.bindGather(settings);
-        coneTrace.executeReduced(volume, settings, sampling, gpuScene->hasMaterialLayers());
+        coneTrace.executeReduced(volume, settings, sampling, layers);
     }
     waitForQueuedPasses();  // the resolve samples the low-resolution trace
     {
         Profiler::Scope scope(profiler, "indirect resolve");
         gbuffer.bindTargets();
-        resolve.execute(terms, coneTrace, volume, settings, sampling, frame.viewProjection,
-                        gpuScene->hasMaterialLayers());
+        resolve.execute(terms, coneTrace, volume, settings, sampling, frame.viewProjection, layers);
     }
     {
         Profiler::Scope scope(profiler, "indirect fallback");
-        ConeFeatures features = ConeFeatures::of(settings);
-        features.materialLayers = gpuScene->hasMaterialLayers();
-        fallback.execute(resolve, features);
+        fallback.execute(resolve, ConeFeatures::of(settings, layers));
     }
     if (settings.indirect.temporalAccumulation) ++temporalFrame;
 }

@@ -8,9 +8,9 @@
 
 namespace lit {
 
-ConeFeatures ConeFeatures::of(const RenderSettings& settings) {
+ConeFeatures ConeFeatures::of(const RenderSettings& settings, bool materialLayers) {
     return {settings.gi.anisotropicVoxels(), settings.gi.footprintPerHeight() > 0.0f, settings.gi.voxelIrradiance(),
-            std::clamp(settings.gi.voxelRays, 0, kMaxVoxelRays)};
+            std::clamp(settings.gi.voxelRays, 0, kMaxVoxelRays), materialLayers};
 }
 
 std::string ConeFeatures::defines() const {

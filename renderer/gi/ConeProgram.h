@@ -32,7 +32,8 @@ struct ConeFeatures {
     // (MaterialLayersVariant, passes/MaterialLayersVariant.h); the voxel passes leave it on.
     bool materialLayers = true;
 
-    static ConeFeatures of(const RenderSettings& settings);
+    // `materialLayers`: the scene's (GpuScene::hasMaterialLayers), for the passes that light the G-buffer.
+    static ConeFeatures of(const RenderSettings& settings, bool materialLayers = true);
     std::string defines() const;
     std::string label() const;  // " (anisotropic)" ..., for the program's name
     int index() const {

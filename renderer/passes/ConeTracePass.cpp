@@ -81,8 +81,7 @@ void ConeTracePass::execute(const LightingTerms& terms, const VoxelVolume& volum
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     volume.radiance().bind(LIT_TEX_VOXEL_RADIANCE);
-    ConeFeatures features = ConeFeatures::of(settings);
-    features.materialLayers = materialLayers;
+    const ConeFeatures features = ConeFeatures::of(settings, materialLayers);
     if (features.anisotropic) volume.bindDirectional();
     const gl::Program& program = program_.get(features);
     program.use();
@@ -143,8 +142,7 @@ void ConeTracePass::executeReduced(const VoxelVolume& volume, const RenderSettin
         t.target.checkComplete("indirect (reduced)");
     }
     LowTargets& t = low_.current();
-    ConeFeatures features = ConeFeatures::of(settings);
-    features.materialLayers = materialLayers;
+    const ConeFeatures features = ConeFeatures::of(settings, materialLayers);
     // The strata filter averages the texels' stratified cone sets (the accurate mode). The
     // voxel-irradiance gather traces no sets per texel (the voxels averaged them) and is already a
     // 27-voxel average; rough lobes read the same gather. Filtering it would only blur it, and

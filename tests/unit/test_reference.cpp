@@ -12,6 +12,7 @@
 #include "scene/GltfLoader.h"
 #include "scene/SceneBuilder.h"
 #include "QuietLog.h"
+#include "ReferenceTestScenes.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -26,6 +27,8 @@ namespace lit::reference {
 namespace {
 
 using lit::testing::QuietLog;
+using testing::addCamera;
+using testing::boxUnderSky;
 
 // ---- Twins of the shaders' math, written independently of the reference's own code --------
 
@@ -69,15 +72,6 @@ float specularAlbedoTable(float f0, float NdotV, float roughness) {
 }
 
 // ---- Scenes --------------------------------------------------------------------------------
-
-// A camera node looking from `position` at `target` (yfov 0.8 rad, square images).
-void addCamera(Scene& scene, const glm::vec3& position, const glm::vec3& target) {
-    Camera camera;
-    camera.yfov = 0.8f;
-    camera.znear = 0.05f;
-    camera.zfar = 50.0f;
-    addCameraNode(scene, camera, position, target);
-}
 
 struct Render {
     std::unique_ptr<ReferenceScene> scene;
@@ -245,35 +239,14 @@ TEST(ReferenceFurnace, ConvexBoxUnderUniformSky) {
     Scene scene;
     const int material = addMaterial(scene, glm::vec3(kAlbedo), kRoughness, 0.0f, "grey");
     scene.materials[static_cast<std::size_t>(material)].emissiveFactor = glm::vec3(kEmission);
-    addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), material), glm::vec3(0.0f));
-    addCamera(scene, glm::vec3(1.6f, 1.3f, 1.9f), glm::vec3(0.0f));
-    scene.updateWorldTransforms();
-    ReferenceSettings settings;
-    settings.bounces = kAllBounces;
-    settings.environment = [](const glm::vec3&) { return glm::vec3(kSky); };
-    constexpr int kSize = 32;
-    const Render r = render(scene, kSize, 256, settings);
-    const std::vector<FirstHit> hits = traceFirstHits(*r.scene, r.camera, kSize, kSize);
-    const std::vector<float> rgb = r.tracer->image().viewRgb(View::Final, RenderSettings{});
-    // Compare the means over the box's pixels (excluding its silhouette, whose pixels mix in sky).
-    double got = 0.0, expected = 0.0;
-    int count = 0;
-    const glm::vec3 eye = r.camera.position;
-    for (int y = 1; y + 1 < kSize; ++y)
-        for (int x = 1; x + 1 < kSize; ++x) {
-            bool inside = true;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) inside &= hits[static_cast<std::size_t>((y + dy) * kSize + x + dx)].node >= 0;
-            if (!inside) continue;
-            const FirstHit& h = hits[static_cast<std::size_t>(y * kSize + x)];
-            const float NdotV = glm::dot(h.normal, glm::normalize(eye - h.position));
-            expected += kEmission + (kAlbedo + specularAlbedoTable(0.04f, NdotV, kRoughness)) * kSky;
-            got += rgb[static_cast<std::size_t>(3 * (y * kSize + x))];
-            ++count;
-        }
-    ASSERT_GT(count, 100);
+    double expected = 0.0;
+    const auto box = boxUnderSky(scene, kSky, 256, false, [&](const FirstHit& h, const glm::vec3& eye) {
+        const float NdotV = glm::dot(h.normal, glm::normalize(eye - h.position));
+        expected += kEmission + (kAlbedo + specularAlbedoTable(0.04f, NdotV, kRoughness)) * kSky;
+    });
+    expected /= box.pixels;
     // 1 %: the noise of the mean over ~400 pixels × 256 samples is about 0.1 %.
-    EXPECT_NEAR(got / count, expected / count, 0.01 * expected / count);
+    EXPECT_NEAR(box.diffuse + box.specular, expected, 0.01 * expected);
 }
 
 // A closed white room whose walls all emit Le, all bounces. With a Lambertian ρ the answer

@@ -12,6 +12,7 @@
 #include "scene/SceneBuilder.h"
 #include "scene/SheenAlbedo.h"
 #include "QuietLog.h"
+#include "ReferenceTestScenes.h"
 
 #include <gtest/gtest.h>
 
@@ -27,6 +28,8 @@ namespace lit::reference {
 namespace {
 
 using lit::testing::QuietLog;
+using testing::BoxUnderSky;
+using testing::boxUnderSky;
 
 // Uniform floats in [0, 1) from a fixed-seed Mersenne twister (24 bits, the same on every platform).
 struct Uniform {
@@ -524,56 +527,6 @@ TEST(ReferenceFurnace, SheenOnWhiteDoesNotCreateLight) {
                 worst, leastUnscaled);
 }
 
-// A unit box of the scene's one material (already added) seen from (1.6, 1.3, 1.9) under a
-// uniform white sky, every bounce, `samples` per pixel at the pixel centres (the view directions
-// of traceFirstHits): the mean diffuse (L_DD + L_ID) and specular (L_DS + L_IS) radiance over the
-// pixels whose 3 × 3 neighbourhood lies on the box. `perPixel(hit, eye)` sees each of them.
-struct BoxUnderSky {
-    double diffuse = 0.0, specular = 0.0;
-    int pixels = 0;
-};
-template <typename PerPixel>
-BoxUnderSky boxUnderWhiteSky(Scene& scene, int samples, PerPixel&& perPixel) {
-    addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), 0), glm::vec3(0.0f));
-    Camera camera;
-    camera.yfov = 0.8f;
-    camera.znear = 0.05f;
-    camera.zfar = 50.0f;
-    addCameraNode(scene, camera, glm::vec3(1.6f, 1.3f, 1.9f), glm::vec3(0.0f));
-    scene.updateWorldTransforms();
-    QuietLog log;
-    const ReferenceScene reference(scene, log);
-    const CameraView view = sceneCameraView(scene, 0, 1.0f);
-    ReferenceSettings settings;
-    settings.bounces = kAllBounces;
-    settings.environment = [](const glm::vec3&) { return glm::vec3(1.0f); };
-    settings.pixelCentres = true;
-    constexpr int kSize = 32;
-    PathTracer tracer(reference, view, kSize, kSize, settings);
-    tracer.addSamples(samples);
-    const std::vector<FirstHit> hits = traceFirstHits(reference, view, kSize, kSize);
-    BoxUnderSky out;
-    for (int y = 1; y + 1 < kSize; ++y)
-        for (int x = 1; x + 1 < kSize; ++x) {
-            bool inside = true;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) inside &= hits[static_cast<std::size_t>((y + dy) * kSize + x + dx)].node >= 0;
-            if (!inside) continue;
-            const std::size_t p = static_cast<std::size_t>(y * kSize + x);
-            perPixel(hits[p], view.position);
-            const ReferenceImage& image = tracer.image();
-            out.diffuse += image.mean(Term::DirectDiffuse, p).g + image.mean(Term::IndirectDiffuse, p).g;
-            out.specular += image.mean(Term::DirectSpecular, p).g + image.mean(Term::IndirectSpecular, p).g;
-            ++out.pixels;
-        }
-    EXPECT_GT(out.pixels, 100) << "the box must fill the view";
-    if (out.pixels > 0) {
-        out.diffuse /= out.pixels;
-        out.specular /= out.pixels;
-    }
-    return out;
-}
-
 // The path tracer end to end: a convex box (it never sees itself) of a white Lambertian base
 // (specular weight 0) under a near-mirror coat, all bounces, under a uniform white sky. Every
 // visible point sends (1 − Fc(n·v)) into the diffuse terms and the coat's albedo ≈ Fc(n·v) into
@@ -585,7 +538,7 @@ TEST(ReferenceFurnace, ClearcoatedConvexBoxUnderUniformSky) {
     scene.materials[0].clearcoatFactor = 1.0f;
     scene.materials[0].clearcoatRoughness = 0.0f;
     double expectedDiffuse = 0.0, expectedSpecular = 0.0;
-    const BoxUnderSky box = boxUnderWhiteSky(scene, 256, [&](const FirstHit& hit, const glm::vec3& eye) {
+    const BoxUnderSky box = boxUnderSky(scene, 1.0f, 256, true, [&](const FirstHit& hit, const glm::vec3& eye) {
         const float NdotV = glm::dot(hit.normal, glm::normalize(eye - hit.position));
         const float fc = 0.04f + 0.96f * std::pow(1.0f - NdotV, 5.0f);
         expectedDiffuse += 1.0f - fc;
@@ -768,7 +721,7 @@ TEST(ReferenceFurnace, SheenedConvexBoxUnderUniformSky) {
     scene.materials[0].specularFactor = 0.0f;
     scene.materials[0].sheenColorFactor = glm::vec3(1.0f);
     scene.materials[0].sheenRoughness = 0.5f;
-    const BoxUnderSky box = boxUnderWhiteSky(scene, 128, [](const FirstHit&, const glm::vec3&) {});
+    const BoxUnderSky box = boxUnderSky(scene, 1.0f, 128, true, [](const FirstHit&, const glm::vec3&) {});
     EXPECT_NEAR(box.diffuse, 1.0, 0.015);
     EXPECT_EQ(box.specular, 0.0) << "the sheen's light is diffuse";
     std::printf("[ measured ] sheened box under a white sky: diffuse %.4f, specular %.4f\n", box.diffuse, box.specular);
