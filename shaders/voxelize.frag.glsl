@@ -43,6 +43,34 @@ LIT_OCCUPIED_VOXELS_BLOCK();
 
 // (u, v, depth) of the projection along `axis` → voxel space: undoes voxelize.geom.glsl's swizzleForAxis.
 vec3 fromAxisSpace(vec3 s, int axis) { return axis == 0 ? s.zxy : (axis == 1 ? s.yzx : s); }
+// (Ā, B̄) of the GGX lobe at roughness j/(size − 1) (scene/SpecularMeanAlbedo.h, set by VoxelizePass).
+uniform vec2 uSpecularMeanAlbedo[LIT_SPECULAR_MEAN_ALBEDO_SIZE];
+
+// The mean over the cosine-weighted hemisphere of the lobe's directional albedo, F0·Ā + F90·B̄.
+vec3 specularMeanAlbedo(vec3 f0, float f90, float roughness) {
+    float s = roughness * float(LIT_SPECULAR_MEAN_ALBEDO_SIZE - 1);
+    int i = min(int(s), LIT_SPECULAR_MEAN_ALBEDO_SIZE - 2);
+    vec2 ab = mix(uSpecularMeanAlbedo[i], uSpecularMeanAlbedo[i + 1], s - float(i));
+    return f0 * ab.x + f90 * ab.y;
+}
+
+// What a voxel reflects of the light it receives, as one Lambertian albedo: a voxel's light leaves
+// in every direction, so each lobe counts with its albedo's hemispherical mean (docs/GI.md,
+// "Voxelization"; docs/MATERIALS.md). The base is the diffuse (1 − metalness)·colour plus the
+// specular lobe's mean; a sheen reflects its colour × its mean albedo Ē_s and leaves
+// 1 − max(colour)·Ē_s of the base; a clear coat passes 1 − weight·F̄c of the light to both and back
+// and reflects weight × its own lobe's mean. At most 1 per channel (the packed volume's range).
+vec3 reflectedAlbedo(GpuMaterial m, vec3 baseColor, float metalness, float roughness) {
+    vec3 f0 = mix(m.specular.rgb, baseColor, metalness);
+    float f90 = mix(m.specular.a, 1.0, metalness);
+    vec3 base = baseColor * (1.0 - metalness) + specularMeanAlbedo(f0, f90, roughness);
+    float sheenMean = m.clearcoat.z;
+    vec3 sheen = m.sheen.rgb * sheenMean;
+    vec3 underCoat = base * (1.0 - max(m.sheen.r, max(m.sheen.g, m.sheen.b)) * sheenMean) + sheen;
+    vec3 coat = m.clearcoat.x * specularMeanAlbedo(kClearcoatF0, 1.0, m.clearcoat.y);
+    return clamp(underCoat * (1.0 - m.clearcoat.x * kClearcoatMeanFresnel) + coat, 0.0, 1.0);
+}
+
 uniform uint uOccupiedCapacity;  // entries the list can hold (VoxelVolume::occupiedCapacity)
 // The voxels this draw writes, [min, max): the whole volume, or one box of a voxelization of
 // changed boxes (VoxelizePass), whose items also cover voxels outside it that were not cleared.
@@ -69,16 +97,17 @@ void main() {
     float len = length(fs.worldNormal);
     vec3 normal = len > 1e-12 ? fs.worldNormal / len : vec3(0.0);
 
+    float metalness = m.params.x, roughness = m.params.y;
+    if (m.textures.y != 0) {
+        vec4 mr = texture(metallicRoughnessTexture, materialUv(LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS, fs.uv));
+        roughness *= mr.g;
+        metalness *= mr.b;
+    }
+    vec3 albedo = reflectedAlbedo(m, clamp(baseColor.rgb, 0.0, 1.0), clamp(metalness, 0.0, 1.0), clamp(roughness, 0.0, 1.0));
+
     // The first fragment of a voxel (the albedo's compare-and-swap from 0 succeeds, as the first
     // try of atomicAverageRgb would) appends it to the occupied-voxel list unless it is listed
     // already (a voxelization of changed boxes keeps the list); later ones average.
-    // A sheen reflects its colour × its mean albedo Ē_s and leaves 1 − max(colour)·Ē_s of the
-    // base; a clear coat passes 1 − weight·Fc of the light to both and back. Means over the
-    // hemisphere, since a voxel's light leaves in every direction (docs/MATERIALS.md).
-    vec3 sheen = m.sheen.rgb * m.clearcoat.z;
-    vec3 albedo = (clamp(baseColor.rgb, 0.0, 1.0) * (1.0 - max(m.sheen.r, max(m.sheen.g, m.sheen.b)) * m.clearcoat.z) +
-                   sheen) *
-                  (1.0 - m.clearcoat.x * kClearcoatMeanFresnel);
     uint voxelIndex = uint(v.x) + uint(n) * (uint(v.y) + uint(n) * uint(v.z));
     uint listedBit = 1u << (voxelIndex & 31u);
     if (imageAtomicCompSwap(voxelAlbedo, v, 0u, averageRgbAdd(0u, albedo)) == 0u) {

@@ -5,6 +5,7 @@
 #include "gi/VoxelVolume.h"
 #include "scene/GpuScene.h"
 #include "scene/Scene.h"
+#include "scene/SpecularMeanAlbedo.h"
 
 namespace lit {
 
@@ -43,6 +44,9 @@ bool VoxelizePass::begin(const GpuScene& gpuScene, const VoxelVolume& volume) {
     volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
     volume.listedVoxels().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_LISTED_VOXELS);
     glProgramUniform1ui(program_.id(), program_.location("uOccupiedCapacity"), volume.occupiedCapacity());
+    const auto& meanAlbedo = specularMeanAlbedoTable();
+    glProgramUniform2fv(program_.id(), program_.location("uSpecularMeanAlbedo"), kSpecularMeanAlbedoSize,
+                        &meanAlbedo[0].x);
     // Image atomics need an integer format; the volumes are 3D, so bind all slices (layered).
     glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);

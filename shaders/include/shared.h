@@ -66,6 +66,9 @@ using mat4 = glm::mat4;
 // y = roughness, E = F0·r + g (cone.glsl, specularAlbedo).
 #define LIT_TEX_SPECULAR_ALBEDO 22
 #define LIT_SPECULAR_ALBEDO_SIZE 32    // texels per side of that table
+// The voxelizer's table of that lobe's hemispherical mean (Ā, B̄) at roughness j/(size − 1): a
+// uniform array (scene/SpecularMeanAlbedo.h).
+#define LIT_SPECULAR_MEAN_ALBEDO_SIZE 32
 // The G-buffer's RGBA32UI IDs: r node index + 1 (0 = background), g the primitive within the
 // node's mesh, b the material index (the lighting passes read its table, gbuffer.glsl).
 #define LIT_TEX_GBUFFER_ID 23

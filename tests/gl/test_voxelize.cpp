@@ -19,6 +19,7 @@
 #include "passes/ShadowPass.h"
 #include "scene/GpuScene.h"
 #include "scene/SceneBuilder.h"
+#include "scene/SpecularMeanAlbedo.h"
 
 namespace lit::test {
 namespace {
@@ -266,6 +267,8 @@ TEST_F(Voxelize, RunningAverageMixesCoincidentSurfaces) {
     Scene scene;
     const int red = addMaterial(scene, glm::vec3(1.0f, 0.0f, 0.0f));
     const int blue = addMaterial(scene, glm::vec3(0.0f, 0.0f, 1.0f));
+    // Without a specular lobe the voxels' albedo is the base colour alone (ReflectsEveryLobesMeanAlbedo).
+    for (Material& m : scene.materials) m.specularFactor = 0.0f;
     addMeshNode(scene, makePlaneMesh("red", 1.0f, red), glm::vec3(0.0f));
     addMeshNode(scene, makePlaneMesh("blue", 1.0f, blue), glm::vec3(0.0f));
     voxelize(scene, 64);
@@ -290,6 +293,45 @@ TEST_F(Voxelize, RunningAverageMixesCoincidentSurfaces) {
     const glm::dvec3 mean = sum / double(occupied);
     EXPECT_NEAR(mean.r, 0.5, 0.05);
     EXPECT_NEAR(mean.b, 0.5, 0.05);
+}
+
+// A voxel reflects what its surface reflects of light from every direction: the diffuse
+// (1 − metalness)·colour plus the specular lobe's hemispherical mean F0·Ā + F90·B̄, so a metal is
+// not black and a dielectric's specular light is not lost (docs/GI.md, "Voxelization").
+TEST_F(Voxelize, ReflectsEveryLobesMeanAlbedo) {
+    struct Case {
+        const char* name;
+        glm::vec3 baseColor;
+        float roughness, metallic;
+        glm::vec3 expected;
+    };
+    const glm::vec2 rough = specularMeanAlbedo(0.8f), glossy = specularMeanAlbedo(0.3f);
+    const Case cases[] = {
+        {"dielectric", glm::vec3(0.5f, 0.25f, 0.1f), 0.8f, 0.0f, glm::vec3(0.5f, 0.25f, 0.1f) + 0.04f * rough.x + rough.y},
+        {"gold", glm::vec3(1.0f, 0.77f, 0.34f), 0.3f, 1.0f, glm::vec3(1.0f, 0.77f, 0.34f) * glossy.x + glossy.y},
+    };
+    for (const Case& c : cases) {
+        Scene scene;
+        addMeshNode(scene, makePlaneMesh(c.name, 1.0f, addMaterial(scene, c.baseColor, c.roughness, c.metallic)),
+                    glm::vec3(0.0f));
+        voxelize(scene, 64);
+        const std::vector<std::uint32_t> albedo = readMaterialVoxels(volume_->albedo());
+        glm::dvec3 sum(0.0);
+        int occupied = 0;
+        for (const std::uint32_t packed : albedo) {
+            const glm::vec4 a = unpackVoxel(packed);
+            if (a.a == 0.0f) continue;
+            ++occupied;
+            sum += glm::dvec3(glm::vec3(a));
+        }
+        ASSERT_GT(occupied, 100) << c.name;
+        const glm::vec3 mean = glm::vec3(sum / double(occupied));
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(mean[k], c.expected[k], 2.0f / 255.0f) << c.name << " channel " << k;
+    }
+    // What the specular lobe adds is what a brute-force check says it is (SpecularMeanAlbedo.*):
+    // about 0.03 for a rough dielectric, and a glossy metal keeps most of its colour.
+    EXPECT_GT(0.04f * rough.x + rough.y, 0.02f);
+    EXPECT_GT(glossy.x, 0.8f);
 }
 
 TEST_F(Voxelize, SkipsAlphaMaskedTexelsAndClearsOldContent) {
