@@ -299,6 +299,10 @@ vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
 }
 #endif
 
+// Which empty voxels lie inside a solid (SolidVoxelsPass): a side whose rays or cones would start
+// in one sees the inside of a wall, and through it the far side's light (docs/GI.md, "Solid voxels").
+LIT_SOLID_VOXELS_READER
+
 // The cone set (or ray set) voxel v traces: its place in the 4 × 4 pattern along its surface, turned
 // by the refinement round (uSetOffset) in the cached mode's irradiance pass.
 int voxelSet(ivec3 v, vec3 normal) {
@@ -370,10 +374,20 @@ void main() {
 #else
     vec3 frontOrigin = coneOrigin(centre, normal);
 #endif
-    vec3 front = bounceIrradiance(v, frontOrigin, normal, aperture, maxDistance, 0);
-    vec3 back = agreement < kOneSidedMinLength
-                    ? bounceIrradiance(v, coneOrigin(centre, -normal), -normal, aperture, maxDistance, 1)
-                    : front;
+    // A side that would start inside a solid (an edge voxel's plane pushed into the wall beside it)
+    // starts at the cone apex instead; a side whose apex is inside too (faces buried back to back
+    // where two solids touch) gathers nothing and is left untraced: the filter and the gather skip it.
+    bool frontOpen = !insideSolid(frontOrigin);
+    if (!frontOpen) {
+        frontOrigin = coneOrigin(centre, normal);
+        frontOpen = !insideSolid(frontOrigin);
+    }
+    bool twoSided = agreement < kOneSidedMinLength;
+    vec3 backOrigin = coneOrigin(centre, -normal);
+    bool backOpen = twoSided ? !insideSolid(backOrigin) : frontOpen;
+    vec3 front = frontOpen ? bounceIrradiance(v, frontOrigin, normal, aperture, maxDistance, 0) : vec3(0.0);
+    vec3 back = !twoSided ? front
+                          : (backOpen ? bounceIrradiance(v, backOrigin, -normal, aperture, maxDistance, 1) : vec3(0.0));
 #if LIT_VOXEL_RAYS
     if (rayHitMode() != 0) rayEpochs[gListIndex] = uRayEpoch;  // both sides' hits hold now
 #endif
@@ -384,10 +398,12 @@ void main() {
         if (oldFront.a > 0.0) front = mix(decodeRadiance(oldFront.rgb), front, uBlend);
         if (oldBack.a > 0.0) back = mix(decodeRadiance(oldBack.rgb), back, uBlend);
     }
-    imageStore(voxelIrradianceOut, v, vec4(encodeRadiance(front), 1.0));
-    imageStore(voxelIrradianceOut, otherSideTexel(v), vec4(encodeRadiance(back), 1.0));
+    imageStore(voxelIrradianceOut, v, vec4(encodeRadiance(front), frontOpen ? 1.0 : 0.0));
+    imageStore(voxelIrradianceOut, otherSideTexel(v), vec4(encodeRadiance(back), backOpen ? 1.0 : 0.0));
 #else
-    vec3 irradiance = 0.5 * (front + back);  // = front for a one-sided voxel
+    // The mean of the open sides (= front for a one-sided voxel); none open: direct light only.
+    float openSides = float(frontOpen) + float(backOpen);
+    vec3 irradiance = openSides > 0.0 ? (front + back) / openSides : vec3(0.0);
     vec3 radiance = decodeRadiance(direct.rgb) + albedo.rgb * irradiance * voxel.traceParams.x;
     imageStore(voxelBounce, v, vec4(encodeRadiance(radiance), 1.0));
     if (uMeasureChange != 0) {

@@ -68,6 +68,7 @@ void useWithVoxelSurfaces(const gl::Program& program, const VoxelVolume& volume,
     }
     glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    if (volume.solidVoxels()) volume.solidVoxels().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_SOLID_VOXELS);
 }
 
 }  // namespace lit

@@ -38,7 +38,7 @@ void setBoxUniforms(const gl::Program& program, const char* name, std::span<cons
 
 // Makes `program` current with what the voxel passes that gather light read: the voxel
 // uniforms, the radiance volume (and its directional chains with anisotropic features), the
-// voxels' albedo, normal and (for voxel rays) surface images, and uVoxelRays.
+// voxels' albedo, normal and (for voxel rays) surface images, uVoxelRays, and the solid voxels.
 void useWithVoxelSurfaces(const gl::Program& program, const VoxelVolume& volume, ConeFeatures features);
 
 }  // namespace lit

@@ -20,13 +20,14 @@ VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Lo
     : profiler_(profiler),
       log_(log),
       voxelize_(shaderRoot),
+      solid_(shaderRoot),
       inject_(shaderRoot),
       mipmap_(shaderRoot),
       bounce_(shaderRoot),
       irradiance_(shaderRoot),
       filter_(shaderRoot) {}
 
-std::vector<Pass*> VoxelGi::passes() { return {&voxelize_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_}; }
+std::vector<Pass*> VoxelGi::passes() { return {&voxelize_, &solid_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_}; }
 
 RayHits VoxelGi::rayHitsFor(int rays) {
     const GiState& state = scheduler_.state();
@@ -119,6 +120,12 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                 const std::int64_t n = volume_.resolution();
                 report.voxelizedVoxels = n * n * n;
             }
+        }
+        {
+            // Every column again after a voxelization of boxes too: a box can open or close a solid
+            // that reaches past it.
+            Profiler::Scope scope(profiler_, "solid voxels");
+            solid_.execute(volume_);
         }
         {
             // Once per voxelization: the mip chain is then built over these (light edits too).

@@ -23,6 +23,7 @@
 #include "gi/MipmapBenchmark.h"
 #include "gi/MipmapPass.h"
 #include "gi/RayHitCache.h"
+#include "gi/SolidVoxelsPass.h"
 #include "gi/VoxelIrradianceCache.h"
 #include "gi/VoxelIrradiancePass.h"
 #include "gi/VoxelRegions.h"
@@ -123,6 +124,7 @@ private:
     Log& log_;
     VoxelVolume volume_;
     VoxelizePass voxelize_;
+    SolidVoxelsPass solid_;
     InjectPass inject_;
     MipmapPass mipmap_;
     BouncePass bounce_;

@@ -30,7 +30,7 @@ std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     const std::size_t voxels = static_cast<std::size_t>(n) * n * n;
     const std::size_t texel = rgba8 ? 4 : 8;
     const std::size_t material = voxels * 4 * VoxelVolume::kMaterialVolumeCount  // r32ui each
-                                 + voxels / 8;                                   // listed bits
+                                 + voxels / 8 * 2;                               // listed and solid bits
     // A full 3D mip chain adds 1/8 + 1/64 + ... ≈ 1/7 of the base level; each directional volume
     // (one per axis, its two faces and a gap between them side by side) starts at 3·(N/2)³, 3/8 of
     // the base, so the three add 9/7 of it.
@@ -121,6 +121,9 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     clearMaterials();
     listed_ = gl::Buffer("listed voxels", std::max<std::size_t>(static_cast<std::size_t>(n) * n * n / 8, 4), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
+    solid_ = gl::Buffer("solid voxels", std::max<std::size_t>(static_cast<std::size_t>(n) * n * n / 8, 4), nullptr,
+                        GL_DYNAMIC_STORAGE_BIT);
+    glClearNamedBufferData(solid_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
     // A surface crosses about N² voxels per N² of area; 16·N² holds the Cornell box (≈ 6·N²) and
     // Sponza at 256³ with room. An overflow is detected (readOccupiedCount) and grows the list.
     growOccupiedList(static_cast<std::uint32_t>(
@@ -204,7 +207,7 @@ void VoxelVolume::resetOccupiedList() const {
     if (listed_) glClearNamedBufferData(listed_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
 }
 
-std::size_t VoxelVolume::listBytes() const { return occupied_.size() + listed_.size(); }
+std::size_t VoxelVolume::listBytes() const { return occupied_.size() + listed_.size() + solid_.size(); }
 
 std::uint32_t VoxelVolume::readOccupiedCount() const {
     if (!occupied_) return 0;

@@ -70,6 +70,9 @@ public:
     // Voxels appended since the reset; more than occupiedCapacity() when the list overflowed (the
     // excess was not stored). Reads one uint back: waits for the voxelization.
     std::uint32_t readOccupiedCount() const;
+    // Which empty voxels lie inside a solid (SSBO at LIT_SSBO_SOLID_VOXELS: one bit per voxel,
+    // written by SolidVoxelsPass after each voxelization, read by the voxel rays).
+    const gl::Buffer& solidVoxels() const { return solid_; }
     // The stored coordinates (tests): min(count, capacity) entries in append order.
     std::vector<glm::ivec3> readOccupiedList() const;
     // Grows the list to hold at least `count` voxels (after an overflow; the next voxelization fills it).
@@ -144,7 +147,7 @@ public:
     std::size_t materialBytes() const;  // albedo + normal + emission + surface
     std::size_t radianceBytes() const;  // isotropic chain + the six directional chains while they exist
     std::size_t bounceBytes() const;    // direct + bounce volumes (0 until allocated)
-    std::size_t listBytes() const;      // the occupied-voxel list and its bit per voxel
+    std::size_t listBytes() const;      // the occupied-voxel list, its bit per voxel and the solid bits
     std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes() + listBytes(); }
     std::string memoryReport() const;  // "albedo 8.0 MiB, normal 8.0 MiB, ... total 54.9 MiB"
 
@@ -169,6 +172,7 @@ private:
     gl::Buffer uniforms_;
     gl::Buffer occupied_;
     gl::Buffer listed_;
+    gl::Buffer solid_;
     std::uint32_t occupiedCapacity_ = 0;
     gl::Buffer parents_;
     ParentLayout parentLayout_;

@@ -135,6 +135,10 @@ using mat4 = glm::mat4;
 // only (VoxelChangeTracker) appends the voxels new to the list and keeps its order. The outline
 // pass's slot: never bound with it.
 #define LIT_SSBO_LISTED_VOXELS 4
+// Which empty voxels lie inside a solid (SolidVoxelsPass, solid_voxels.comp.glsl): one bit per
+// voxel (index x + N(y + Nz)), so that the voxel rays never start in one. The exposure's slot: never
+// bound with the voxel passes.
+#define LIT_SSBO_SOLID_VOXELS 3
 // Occupied parents (MipmapPass::listOccupiedParents): per mip level k ≥ 1 the voxels of level k
 // with an occupied voxel below them, listed once each, so the mip chain is built over them only.
 // Header: LIT_MIP_LIST_LEVELS × uvec4 (count, indirect dispatch x, y, z; index = level, 0 unused),

@@ -154,3 +154,16 @@ ivec3 unpackVoxelCoord(uint p) { return ivec3(int(p & 1023u), int((p >> 10) & 10
         uint index;                                                                                       \
         return listedVoxelInRange(v, index);                                                              \
     }
+
+// What a shader that reads the solid voxels (SolidVoxelsPass: empty voxels inside a solid; the
+// voxel rays, the injection) declares: insideSolid(p), whether world point p lies in one (false
+// outside the volume). docs/GI.md, "Solid voxels".
+#define LIT_SOLID_VOXELS_READER                                                                 \
+    layout(std430, binding = LIT_SSBO_SOLID_VOXELS) readonly buffer SolidVoxels { uint solidBits[]; }; \
+    bool insideSolid(vec3 p) {                                                                  \
+        int n = int(voxel.voxelInfo.x);                                                         \
+        ivec3 c = ivec3(floor((p - voxel.volumeMin.xyz) / voxel.voxelInfo.z));                  \
+        if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(n)))) return false;     \
+        uint index = uint(c.x) + uint(n) * (uint(c.y) + uint(n) * uint(c.z));                   \
+        return (solidBits[index >> 5u] & (1u << (index & 31u))) != 0u;                          \
+    }

@@ -284,6 +284,51 @@ TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
     }
 }
 
+// A room built as users build one in Blender: a floor slab, walls standing on it and a roof slab
+// resting on them, each a closed box 0.3 m thick that touches the next, lit by a sun through one
+// window, and the same room with the window closed by a box that touches its reveals. Where two
+// boxes touch their faces are buried back to back, and the voxelization writes surfaces only, so
+// the inside of each slab is empty space: an inner-edge voxel's rays that start in the wall beside
+// it, and the buried voxels' rays, ran through the slabs to the sunlit outside, and bright dots
+// along every inner edge lit the closed room. SolidVoxelsPass marks the slabs' insides, and no ray
+// starts there. Measured here (64³, the defaults): the closed room holds 0.25 % of the open room's
+// light with the solid voxels, 3.1 % without (the sun room made in Blender, closed the same way, at
+// 128³: 1.0 % and 6.0 %). Bar: 1 %.
+TEST_F(GiAccuracy, ClosedWindowLetsNoLightAlongTheRoomsEdges) {
+    constexpr float t = 0.3f, w = 4.0f, h = 2.6f;        // slab thickness, inner width and height (m)
+    constexpr float x0 = -0.6f, x1 = 0.6f, y0 = 1.1f, y1 = 2.3f;  // the window in the +z wall
+    const auto room = [&](bool closed) {
+        Scene scene;
+        const int white = addMaterial(scene, glm::vec3(0.8f), 0.8f, 0.0f, "white");
+        const auto box = [&](const char* name, glm::vec3 lo, glm::vec3 hi) {
+            addMeshNode(scene, makeBoxMesh(name, hi - lo, white), 0.5f * (lo + hi));
+        };
+        const float o = 0.5f * w + t, z = 0.5f * w;
+        box("floor", {-o, 0.0f, -o}, {o, t, o});
+        box("roof", {-o, t + h, -o}, {o, 2 * t + h, o});
+        box("wall -x", {-o, t, -o}, {-z, t + h, o});
+        box("wall +x", {z, t, -o}, {o, t + h, o});
+        box("wall -z", {-z, t, -o}, {z, t + h, -z});
+        box("window left", {-z, t, z}, {x0, t + h, o});
+        box("window right", {x1, t, z}, {z, t + h, o});
+        box("window below", {x0, t, z}, {x1, y0, o});
+        box("window above", {x0, y1, z}, {x1, t + h, o});
+        if (closed) box("window plug", {x0, y0, z}, {x1, y1, o});
+        addLightNode(scene, directionalLight(50.0f), {0.0f, 8.0f, 0.0f}, glm::normalize(glm::vec3(0.2f, -0.55f, -0.8f)));
+        scene.updateWorldTransforms();
+        return scene;
+    };
+    const CameraView inside = lookAt({1.2f, 1.5f, 1.2f}, {-1.6f, 1.0f, -1.8f}, 1.0f, 1.4f);
+    const RenderSettings settings = defaultSettings(64, 48);
+    const float open = luminance(meanOf(renderFrom(room(false), inside, settings), 0.0f, 0.0f, 1.0f, 1.0f));
+    ASSERT_NE(renderer_->voxels(), nullptr);
+    ASSERT_GT(t / renderer_->voxels()->voxelSize(), 2.5f) << "slabs must be more than two voxels thick";
+    const float closed = luminance(meanOf(renderFrom(room(true), inside, settings), 0.0f, 0.0f, 1.0f, 1.0f));
+    std::printf("room of touching slabs at 64³: open %.5f, closed %.6f (%.2f %%)\n", open, closed, 100.0f * closed / open);
+    ASSERT_GT(open, 0.01f) << "the open room must be lit";
+    EXPECT_LT(closed, 0.01f * open) << "light along the closed room's edges";
+}
+
 // A wall one quad thin, lit on one side by the sun; a second, smaller quad behind it faces the
 // wall's dark side and is in its shadow. Only the lit side radiates, away from the receiver, so
 // the receiver's indirect light is 0. Isotropic voxels glow on both sides; the directional ones

@@ -12,6 +12,7 @@
 
 #include "GlTestSupport.h"
 #include "gi/InjectPass.h"
+#include "gi/SolidVoxelsPass.h"
 #include "gi/VoxelVolume.h"
 #include "gi/VoxelizePass.h"
 #include "gl/Objects.h"
@@ -332,6 +333,47 @@ TEST_F(Voxelize, ReflectsEveryLobesMeanAlbedo) {
     // about 0.03 for a rough dielectric, and a glossy metal keeps most of its colour.
     EXPECT_GT(0.04f * rough.x + rough.y, 0.02f);
     EXPECT_GT(glossy.x, 0.8f);
+}
+
+// The inside of a closed box is solid, and stays solid where a second box stands on it (their
+// touching faces are buried back to back); the air around is not, nor the space behind a lone quad
+// facing down, and no surface voxel is (SolidVoxelsPass, docs/GI.md "Solid voxels").
+TEST_F(Voxelize, SolidVoxelsAreTheInsidesOfClosedSurfaces) {
+    Scene scene;
+    const int white = addMaterial(scene, glm::vec3(0.8f));
+    addMeshNode(scene, makeBoxMesh("slab", {2.0f, 0.4f, 2.0f}, white), {0.0f, 0.2f, 0.0f});
+    addMeshNode(scene, makeBoxMesh("pillar", {0.4f, 1.2f, 0.4f}, white), {0.5f, 1.0f, 0.5f});
+    // A ceiling of one quad facing down (the plane's +y turned over), above the slab's far half.
+    addMeshNode(scene, makePlaneMesh("ceiling", 0.8f, white), {-0.5f, 1.4f, -0.5f},
+                glm::angleAxis(glm::pi<float>(), glm::vec3(1.0f, 0.0f, 0.0f)));
+    voxelize(scene, 64);
+    SolidVoxelsPass solid(sourceDir() / "shaders");
+    solid.execute(*volume_);
+    std::vector<std::uint32_t> bits(volume_->solidVoxels().size() / 4);
+    glGetNamedBufferSubData(volume_->solidVoxels().id(), 0, static_cast<GLsizeiptr>(volume_->solidVoxels().size()), bits.data());
+    const auto solidAt = [&](const glm::vec3& p) {
+        const std::size_t i = index(glm::ivec3(glm::floor(toVoxels(p))));
+        return (bits[i >> 5] >> (i & 31)) & 1u;
+    };
+    EXPECT_TRUE(solidAt({-0.5f, 0.2f, -0.5f})) << "inside the slab";
+    EXPECT_TRUE(solidAt({0.5f, 0.2f, 0.5f})) << "inside the slab under the pillar";
+    EXPECT_TRUE(solidAt({0.5f, 1.0f, 0.5f})) << "inside the pillar";
+    EXPECT_TRUE(solidAt({0.5f, 0.5f, 0.5f})) << "in the pillar just above where it stands on the slab";
+    EXPECT_FALSE(solidAt({-0.5f, 0.9f, -0.5f})) << "the air between the slab and the ceiling";
+    EXPECT_FALSE(solidAt({-0.5f, 1.55f, -0.5f})) << "above the lone ceiling";
+    EXPECT_FALSE(solidAt({0.0f, 1.0f, 0.0f})) << "the air beside the pillar";
+    int solidSurfaces = 0, solidCount = 0;
+    const std::vector<std::uint32_t> albedo = readMaterialVoxels(volume_->albedo());
+    for (std::size_t i = 0; i < albedo.size(); ++i) {
+        const bool isSolid = (bits[i >> 5] >> (i & 31)) & 1u;
+        solidCount += isSolid;
+        if (isSolid && (albedo[i] >> 24) != 0) ++solidSurfaces;
+    }
+    EXPECT_EQ(solidSurfaces, 0) << "surface voxels are never solid";
+    // The slab's and the pillar's insides, roughly: (2 × 0.4 × 2 + 0.4 × 1.2 × 0.4) m³ less a shell.
+    const float insideVoxels = (2.0f * 0.4f * 2.0f + 0.4f * 1.2f * 0.4f) / std::pow(voxelSize(), 3.0f);
+    EXPECT_GT(solidCount, 0.4f * insideVoxels);
+    EXPECT_LT(solidCount, 1.0f * insideVoxels);
 }
 
 TEST_F(Voxelize, SkipsAlphaMaskedTexelsAndClearsOldContent) {

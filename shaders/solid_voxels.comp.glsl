@@ -1,0 +1,63 @@
+#version 450 core
+// Which empty voxels lie inside a solid (SolidVoxelsPass): the voxelization writes surfaces only,
+// so the inside of a thick wall is empty space, and a voxel ray that starts there (an edge voxel's
+// origin pushed into the wall next to it, or a voxel holding two faces buried back to back where
+// two boxes touch) runs through the wall to light on its far side: bright dots along a room's
+// inner edges, and the sunlit outside's light in a closed room (docs/GI.md, "Solid voxels").
+//
+// Each column along y is walked up and down. Walking up, a surface facing down (its voxels'
+// averaged normal y < −kFaceY) is a way into a solid and one facing up a way out; walking down,
+// the other way round. An empty voxel is inside only when both walks say so, so a lone surface
+// (a ceiling made of one quad facing down) puts nothing inside: the walk from above never enters.
+// Faces buried back to back cancel in their voxels' averaged normal and change nothing, so two
+// boxes that touch read as one solid. One invocation walks 32 neighbouring columns along x, one
+// bit each, and owns the words it writes.
+#include "voxel.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNormal;
+layout(std430, binding = LIT_SSBO_SOLID_VOXELS) buffer SolidVoxels { uint solidBits[]; };
+
+// A voxel's averaged normal y (−1..1, shorter where its faces disagree) past which it counts as
+// facing down or up: a room's inner edge (floor and wall, y ½) counts, a wall (y 0) does not.
+const float kFaceY = 0.25;
+
+void main() {
+    int n = int(voxel.voxelInfo.x);
+    int words = n / 32;  // n is a power of two, at least 64
+    int word = int(gl_GlobalInvocationID.x) % words;
+    int z = int(gl_GlobalInvocationID.x) / words;
+    if (z >= n) return;
+    int x0 = word * 32;
+
+    // Walking up: inside after a face looking down, outside after one looking up.
+    uint inside = 0u;
+    for (int y = 0; y < n; ++y) {
+        uint occupied = 0u, down = 0u, up = 0u;
+        for (int i = 0; i < 32; ++i) {
+            vec4 texel = unpackVoxel(imageLoad(voxelNormal, ivec3(x0 + i, y, z)).r);
+            if (texel.a == 0.0) continue;
+            float ny = texel.y * 2.0 - 1.0;
+            occupied |= 1u << uint(i);
+            if (ny < -kFaceY) down |= 1u << uint(i);
+            if (ny > kFaceY) up |= 1u << uint(i);
+        }
+        inside = (inside | down) & ~up;
+        solidBits[(x0 + n * (y + n * z)) >> 5] = inside & ~occupied;
+    }
+    // Walking down: inside after a face looking up; a voxel stays inside if both walks agree.
+    inside = 0u;
+    for (int y = n - 1; y >= 0; --y) {
+        uint down = 0u, up = 0u;
+        for (int i = 0; i < 32; ++i) {
+            vec4 texel = unpackVoxel(imageLoad(voxelNormal, ivec3(x0 + i, y, z)).r);
+            if (texel.a == 0.0) continue;
+            float ny = texel.y * 2.0 - 1.0;
+            if (ny < -kFaceY) down |= 1u << uint(i);
+            if (ny > kFaceY) up |= 1u << uint(i);
+        }
+        inside = (inside | up) & ~down;
+        solidBits[(x0 + n * (y + n * z)) >> 5] &= inside;
+    }
+}
