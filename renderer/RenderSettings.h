@@ -121,7 +121,7 @@ struct SkySettings {
 struct ShadowSettings {
     bool enabled = true;
     int mapSize = 1024;         // texels per side (each light / cube face)
-    float depthBias = 0.0005f;  // constant, in light clip-space depth
+    float depthBias = 0.0005f;  // constant, a share of the shadow map's depth range (linear depth for spot and point lights)
     float slopeBias = 2.0f;     // multiplied by the depth slope (glPolygonOffset factor)
     float normalOffset = 1.5f;  // receiver offset along the normal, in shadow texels
     float pcfRadius = 1.5f;     // PCF kernel radius, in shadow texels

@@ -122,6 +122,37 @@ TEST_F(GlFixture, SpotAndPointShadowsTogetherAreTheSumOfEachAlone) {
     EXPECT_GT(belowRight, 0.0f);
 }
 
+// A spot and a point light 6 m from a 0.3 m wall: the floor right behind the wall is in its
+// shadow. The shadow maps' constant depth bias is a share of the depth range in linear depth
+// (lights.glsl, perspectiveShadowDepth); subtracted from the projected depth it grew with the
+// square of the distance, and at 6 m the floor behind the wall read 1.25× the floor beside it.
+TEST_F(GlFixture, DistantSpotAndPointLightsDoNotShineThroughAWall) {
+    for (const LightType type : {LightType::Spot, LightType::Point}) {
+        Scene scene;
+        const int white = addMaterial(scene, glm::vec3(0.8f), 0.9f, 0.0f, "white");
+        addMeshNode(scene, makePlaneMesh("floor", 16.0f, white, 8), glm::vec3(0.0f));
+        addMeshNode(scene, makeBoxMesh("wall", glm::vec3(0.3f, 2.0f, 4.0f), white), glm::vec3(0.0f, 1.0f, 0.0f));
+        Light light;
+        light.type = type;
+        light.intensity = 200.0f;
+        light.outerConeAngle = 0.7f;
+        light.innerConeAngle = 0.6f;
+        const glm::vec3 position(-6.0f, 3.0f, 0.0f);
+        addLightNode(scene, light, position, glm::normalize(glm::vec3(0.4f, 0.0f, 0.0f) - position));
+        Camera camera;
+        camera.yfov = 1.0f;
+        addCameraNode(scene, camera, glm::vec3(2.5f, 5.0f, 0.5f), glm::vec3(0.6f, 0.0f, 1.0f));
+        const RenderSettings settings = smallSettings(128);
+        const HdrImage image = render(scene, settings);
+        // Behind the wall (the light's ray to it crosses the wall 0.2 m above the floor), and beside it.
+        const float behind = luminance(radianceAt(scene, settings, image, {0.5f, 0.0f, 0.0f}, 1));
+        const float beside = luminance(radianceAt(scene, settings, image, {0.5f, 0.0f, 2.8f}, 1));
+        const char* name = type == LightType::Spot ? "spot" : "point";
+        ASSERT_GT(beside, 0.0f) << name << ": the floor beside the wall must be lit";
+        EXPECT_LT(behind, 0.02f * beside) << name << ": light through the wall";
+    }
+}
+
 TEST_F(GlFixture, SpotFalloffMatchesTheSpec) {
     // A spot straight down over a floor: radiance at increasing angles follows
     // saturate(cosθ·scale + offset)² · cosθ / d² (KHR_lights_punctual).
