@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the images under screenshots/ that the README shows, from the current build:
 # the Cornell box with GI off and on, each lighting term alone, the voxel view, the material
-# layers scene against its reference, and the editor
+# layers scene and the sun room against their references, and the editor
 # (its panels with a selection and a camera path, the voxel slice view, the cone directions view
 # in the fast and in the accurate GI mode,
 # and the performance overlay), the editor ones driven by a --script run, and Sponza lit by the
@@ -51,6 +51,15 @@ layers="$root/tests/data/blender/material_layers/material_layers.gltf"
     --hdr "$tmpdir/layers_reference.hdr"
 "$render" "$layers" --size 640x360 --gi on --voxels 128 --out "$out/material_layers.png" \
     --compare "$tmpdir/layers_reference.hdr" --difference "$out/material_layers_difference.png"
+
+# The sun room (tools/blender/make_sun_room.py, docs/GI.md "The sun room against Cycles"): lit only
+# through its window, so nearly everything shown is bounced light; Lit's defaults at 128³, the
+# every-bounce reference, and the Difference view. Exposed +3 stops: the room is dim beside the patch.
+room="$root/tests/data/blender/sun_room/sun_room.gltf"
+"$render" "$room" --reference --bounces all --spp "$spp" --size 480x300 --ev 3 --out "$out/sun_room_reference.png" \
+    --hdr "$tmpdir/room_reference.hdr"
+"$render" "$room" --size 480x300 --gi on --voxels 128 --ev 3 --out "$out/sun_room.png" \
+    --compare "$tmpdir/room_reference.hdr" --difference "$out/sun_room_difference.png"
 
 # The editor. Keys of a camera path in front of the box, seen from further back and to the side
 # so the curve and its key frusta show; the tall box selected (outline, gizmo) in the inspector.
