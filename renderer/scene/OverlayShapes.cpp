@@ -8,6 +8,7 @@
 
 #include "gi/ConeProgram.h"
 #include "passes/ConeTracePass.h"
+#include "scene/RadicalInverse.h"
 #include "scene/Scene.h"
 
 namespace lit {
@@ -82,14 +83,6 @@ glm::mat3 tangentFrame(const glm::vec3& n) {
 }
 
 float fract(float x) { return x - std::floor(x); }
-
-std::uint32_t bitfieldReverse(std::uint32_t v) {
-    std::uint32_t r = 0;
-    for (int i = 0; i < 32; ++i, v >>= 1) r = (r << 1) | (v & 1u);
-    return r;
-}
-
-float radicalInverse(std::uint32_t bits) { return float(bitfieldReverse(bits)) * 2.3283064365386963e-10f; }
 
 float interleavedGradientNoise(const glm::vec2& pixel) {
     return fract(52.9829189f * fract(glm::dot(pixel, glm::vec2(0.06711056f, 0.00583715f))));
