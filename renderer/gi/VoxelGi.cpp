@@ -373,6 +373,9 @@ void VoxelGi::reportUpdate() {
                 std::to_string(pendingBoxVoxels_) + " voxels) of ";
     text += std::to_string(volume_.resolution()) + "³ (" + pendingReason_ + "): ";
     if (pendingVoxelize_ && voxelizeTiming) text += "voxelize " + formatMs(voxelizeTiming->gpuMs) + ", ";
+    const PassTiming* solidTiming = profiler_.lastRun("solid voxels");
+    if (pendingVoxelize_ && solidTiming && solidTiming->frame >= pendingFrame_)
+        text += "solid voxels " + formatMs(solidTiming->gpuMs) + ", ";
     const PassTiming* listsTiming = profiler_.lastRun("mip lists");
     if (pendingVoxelize_ && listsTiming && listsTiming->frame >= pendingFrame_)
         text += "mip lists " + formatMs(listsTiming->gpuMs) + ", ";

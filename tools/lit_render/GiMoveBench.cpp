@@ -38,7 +38,7 @@ int smallestMeshNode(const Scene& scene) {
 
 double giMs(Renderer& renderer) {
     double sum = 0.0;
-    for (const char* name : {"voxelize", "mip lists", "inject", "mipmap", "bounces", "voxel irradiance",
+    for (const char* name : {"voxelize", "solid voxels", "mip lists", "inject", "mipmap", "bounces", "voxel irradiance",
                              "voxel irradiance filter"})
         sum += renderer.profiler().gpuMs(name);
     return sum;

@@ -60,14 +60,14 @@ void benchGiUpdates(int rounds, lit::Scene& scene, const lit::CameraView& camera
         ++scene.geometryRevision;
         renderer.render(scene, camera, settings, budget);
         renderer.profiler().flush();
-        const double lists = passMs("mip lists"), revoxelizeCached = cachedMs();
+        const double lists = passMs("solid voxels") + passMs("mip lists"), revoxelizeCached = cachedMs();
         const double revoxelize = passMs("voxelize") + lists + passMs("inject") + passMs("mipmap") + revoxelizeCached,
                      fullShadow = passMs("shadow");
         const Settle revoxelizeRest = settle();
         ratios.push_back(edit / revoxelize);
         std::printf(
             "gi-update round %d: light edit %.1f ms (inject %.1f + mipmap %.1f + bounces/voxel irradiance %.1f) | "
-            "re-voxelize %.1f ms (voxelize + mip lists %.1f + inject + mipmap + bounces/voxel irradiance %.1f) | "
+            "re-voxelize %.1f ms (voxelize + solid voxels and mip lists %.1f + inject + mipmap + bounces/voxel irradiance %.1f) | "
             "ratio %.3f | shadow maps %.1f / %.1f ms\n",
             round, edit, editInject, editMipmap, editCached, revoxelize, lists, revoxelizeCached, edit / revoxelize,
             editShadow, fullShadow);
