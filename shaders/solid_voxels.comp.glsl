@@ -23,12 +23,15 @@ layout(std430, binding = LIT_SSBO_SOLID_VOXELS) buffer SolidVoxels { uint solidB
 // facing down or up: a room's inner edge (floor and wall, y ½) counts, a wall (y 0) does not.
 const float kFaceY = 0.25;
 
+// The columns to walk (SolidVoxelsPass): x in words of 32 columns, z in voxels, [min, end).
+uniform ivec2 uColumnMin, uColumnEnd;
+
 void main() {
-    int n = int(voxel.voxelInfo.x);
-    int words = n / 32;  // n is a power of two, at least 64
-    int word = int(gl_GlobalInvocationID.x) % words;
-    int z = int(gl_GlobalInvocationID.x) / words;
-    if (z >= n) return;
+    int n = int(voxel.voxelInfo.x);  // a power of two, at least 64
+    int words = uColumnEnd.x - uColumnMin.x;
+    int word = uColumnMin.x + int(gl_GlobalInvocationID.x) % words;
+    int z = uColumnMin.y + int(gl_GlobalInvocationID.x) / words;
+    if (z >= uColumnEnd.y) return;
     int x0 = word * 32;
 
     // Walking up: inside after a face looking down, outside after one looking up.

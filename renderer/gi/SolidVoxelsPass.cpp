@@ -2,6 +2,8 @@
 
 #include <shared.h>
 
+#include <algorithm>
+
 #include "gi/VoxelVolume.h"
 
 namespace lit {
@@ -14,15 +16,29 @@ constexpr int kColumnsPerInvocation = 32;
 SolidVoxelsPass::SolidVoxelsPass(const std::filesystem::path& shaderRoot)
     : program_(shaderRoot, "solid voxels", {{GL_COMPUTE_SHADER, "solid_voxels.comp.glsl"}}) {}
 
-void SolidVoxelsPass::execute(const VoxelVolume& volume) {
+void SolidVoxelsPass::execute(const VoxelVolume& volume, std::span<const VoxelBox> boxes) {
     const int n = volume.resolution();
     if (n < kColumnsPerInvocation || !volume.solidVoxels()) return;
+    // The columns to walk: x in words of 32 columns, z in voxels, [min, end).
+    glm::ivec2 lo(0), hi(n / kColumnsPerInvocation, n);
+    if (!boxes.empty()) {
+        lo = glm::ivec2(n);
+        hi = glm::ivec2(0);
+        for (const VoxelBox& box : boxes) {
+            lo = glm::min(lo, glm::ivec2(std::max(box.min.x, 0) / kColumnsPerInvocation, std::max(box.min.z, 0)));
+            hi = glm::max(hi, glm::ivec2((std::min(box.max.x, n) + kColumnsPerInvocation - 1) / kColumnsPerInvocation,
+                                         std::min(box.max.z, n)));
+        }
+        if (hi.x <= lo.x || hi.y <= lo.y) return;
+    }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     program_.use();
+    glProgramUniform2i(program_.id(), program_.location("uColumnMin"), lo.x, lo.y);
+    glProgramUniform2i(program_.id(), program_.location("uColumnEnd"), hi.x, hi.y);
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     volume.solidVoxels().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_SOLID_VOXELS);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    const int invocations = n / kColumnsPerInvocation * n;
+    const int invocations = (hi.x - lo.x) * (hi.y - lo.y);
     glDispatchCompute(static_cast<GLuint>((invocations + kGroupSize - 1) / kGroupSize), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }

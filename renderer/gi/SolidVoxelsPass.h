@@ -4,8 +4,10 @@
 // "Solid voxels").
 
 #include <filesystem>
+#include <span>
 #include <vector>
 
+#include "gi/VoxelRegions.h"
 #include "gl/Shader.h"
 #include "passes/Pass.h"
 
@@ -17,8 +19,9 @@ class SolidVoxelsPass : public Pass {
 public:
     explicit SolidVoxelsPass(const std::filesystem::path& shaderRoot);
 
-    // Walks every column of the volume's normal volume (N²/32 invocations of N steps each way).
-    void execute(const VoxelVolume& volume);
+    // Walks the columns along y of the volume's normal volume (N²/32 invocations of N steps each
+    // way): every column, or with `boxes` only those through their footprints in x and z.
+    void execute(const VoxelVolume& volume, std::span<const VoxelBox> boxes = {});
 
     std::vector<gl::Program*> programs() override { return {&program_}; }
 

@@ -122,10 +122,10 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             }
         }
         {
-            // Every column again after a voxelization of boxes too: a box can open or close a solid
-            // that reaches past it.
+            // A column's walk reads that column only: after a voxelization of changed boxes, the
+            // columns through them (their whole height: a box can open or close a solid above or below it).
             Profiler::Scope scope(profiler_, "solid voxels");
-            solid_.execute(volume_);
+            solid_.execute(volume_, boxes ? std::span<const VoxelBox>(*boxes) : std::span<const VoxelBox>());
         }
         {
             // Once per voxelization: the mip chain is then built over these (light edits too).

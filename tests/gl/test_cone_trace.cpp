@@ -20,6 +20,7 @@
 #include "passes/GBufferPass.h"
 #include "passes/LightingTerms.h"
 #include "scene/GpuScene.h"
+#include "scene/RadicalInverse.h"
 #include "scene/SceneBuilder.h"
 
 namespace lit::test {
@@ -330,16 +331,6 @@ TEST_F(ConeTrace, RoughMetalFurnaceIsNoiseFree) {
                 worst = std::max(worst, std::abs(images.specular[images.index(x + 1, y)].g -
                                                   images.specular[images.index(x, y)].g));
     EXPECT_LT(worst, 0.01f * L) << "largest jump between horizontal neighbours";
-}
-
-// Van der Corput radical inverse in base 2, as cone.glsl's radicalInverse.
-float radicalInverse(std::uint32_t bits) {
-    bits = (bits << 16u) | (bits >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return static_cast<float>(bits) * 2.3283064365386963e-10f;
 }
 
 // CPU reference for one texel of the specular albedo table: the same estimator as

@@ -374,6 +374,33 @@ TEST_F(Voxelize, SolidVoxelsAreTheInsidesOfClosedSurfaces) {
     const float insideVoxels = (2.0f * 0.4f * 2.0f + 0.4f * 1.2f * 0.4f) / std::pow(voxelSize(), 3.0f);
     EXPECT_GT(solidCount, 0.4f * insideVoxels);
     EXPECT_LT(solidCount, 1.0f * insideVoxels);
+
+    // After a voxelization of changed boxes only the columns through them are walked again, and
+    // give what the whole walk gave; the others are left as they were (here: cleared).
+    const glm::ivec3 p0 = glm::ivec3(glm::floor(toVoxels({0.3f, 0.0f, 0.3f})));
+    const glm::ivec3 p1 = glm::ivec3(glm::floor(toVoxels({0.7f, 1.6f, 0.7f}))) + 1;
+    const VoxelBox box{p0, p1};
+    glClearNamedBufferData(volume_->solidVoxels().id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    solid.execute(*volume_, std::span<const VoxelBox>(&box, 1));
+    std::vector<std::uint32_t> boxBits(bits.size());
+    glGetNamedBufferSubData(volume_->solidVoxels().id(), 0, static_cast<GLsizeiptr>(volume_->solidVoxels().size()),
+                            boxBits.data());
+    int walked = 0, wrong = 0, touched = 0;
+    for (int z = 0; z < n(); ++z)
+        for (int y = 0; y < n(); ++y)
+            for (int x = 0; x < n(); ++x) {
+                const std::size_t i = index({x, y, z});
+                const bool whole = (bits[i >> 5] >> (i & 31)) & 1u, part = (boxBits[i >> 5] >> (i & 31)) & 1u;
+                if (x >= box.min.x && x < box.max.x && z >= box.min.z && z < box.max.z) {
+                    walked += whole;
+                    wrong += whole != part;
+                } else if (x / 32 != box.min.x / 32 && x / 32 != (box.max.x - 1) / 32) {
+                    touched += part;  // outside the box's words of 32 columns: not walked
+                }
+            }
+    EXPECT_GT(walked, 100) << "the pillar's and the slab's insides under it";
+    EXPECT_EQ(wrong, 0);
+    EXPECT_EQ(touched, 0);
 }
 
 TEST_F(Voxelize, SkipsAlphaMaskedTexelsAndClearsOldContent) {
