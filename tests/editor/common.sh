@@ -23,6 +23,21 @@ prepare_run() {
     mkdir -p "$2" || fail "cannot create $2"
 }
 
+# xvfb_run SECONDS COMMAND ARGS...: COMMAND under xvfb-run on a 1280x720 screen, stopped after
+# SECONDS (as xvfb_editor says), returning COMMAND's exit status or timeout's. The X authority
+# file lives in a folder of ours: xvfb-run's own temporary folder now and then fails to be
+# removed as a run ends, and xvfb-run then exits 5 in place of the command's status.
+xvfb_run() {
+    xvfb_limit_s=$1
+    shift
+    xauth_dir=$(mktemp -d "${TMPDIR:-/tmp}/lit-xauth.XXXXXX") || fail "cannot create a temporary folder"
+    : >"$xauth_dir/Xauthority"
+    timeout -k 10 "$xvfb_limit_s" xvfb-run -a -f "$xauth_dir/Xauthority" -s "-screen 0 1280x720x24" "$@"
+    xvfb_status=$?
+    rm -rf "$xauth_dir"
+    return "$xvfb_status"
+}
+
 # xvfb_editor ARGS...: runs $editor with ARGS on an Xvfb screen of the size every editor test
 # uses, returning its exit status. Every run is bounded: $editor_timeout seconds (default 240;
 # a script whose runs take longer sets it, below its CTest TIMEOUT divided by its runs). timeout
@@ -30,7 +45,7 @@ prepare_run() {
 # so a hung run fails with a message and leaves no process behind. xvfb-run -a picks a free
 # display and, when a test running in parallel takes the same one first, tries the next.
 xvfb_editor() {
-    timeout -k 10 "${editor_timeout:-240}" xvfb-run -a -s "-screen 0 1280x720x24" "$editor" "$@"
+    xvfb_run "${editor_timeout:-240}" "$editor" "$@"
     status=$?
     if [ "$status" -eq 124 ] || [ "$status" -eq 137 ]; then
         echo "FAIL: lit-editor $* did not finish within ${editor_timeout:-240} s and was stopped" >&2

@@ -66,7 +66,7 @@ undo
 wait "$pid"
 DRIVE
 
-timeout -k 10 280 xvfb-run -a -s "-screen 0 1280x720x24" sh "$out/drive.sh" "$editor" "$scene" "$out"
+xvfb_run 280 sh "$out/drive.sh" "$editor" "$scene" "$out"
 status=$?
 cat "$out/editor.txt"
 [ "$status" -eq 0 ] || fail "lit-editor (or the input around it) exited with status $status"
