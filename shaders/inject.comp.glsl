@@ -10,7 +10,11 @@
 // voxel). Below kOneSidedMinLength the voxel is lit from both sides (|n·l|): which side faces
 // the light is unknown, and one of the faces does. Below kDirectionMinLength the remaining
 // direction is quantization noise, and the voxel takes the light unattenuated (cosθ = 1, the
-// most a face of it can receive).
+// most a face of it can receive). A one-sided voxel's cosine is taken with the averaged normal
+// as it is, not normalized: n̄·l is the mean of its faces' cosines (weighted by their fragments),
+// so a voxel across a box's edge sends the mean of its faces' light (the lit top and the dark
+// side of a box under a high sun: half the top's), where the normalized normal gave it 1/|n̄| of
+// that (1.41× at an edge, 1.73× at a corner).
 #include "frame.glsl"
 #include "lights.glsl"
 #include "voxel.glsl"
@@ -100,7 +104,7 @@ void main() {
         GpuLight light = lights[i];
         LightSample s = sampleLight(light, centre);
         float nl = dot(normal, s.l);
-        float cosine = !hasDirection ? 1.0 : (oneSided ? max(nl, 0.0) : abs(nl));
+        float cosine = !hasDirection ? 1.0 : (oneSided ? max(nl * agreement, 0.0) : abs(nl));
         if (cosine <= 0.0) continue;
         // The side of the voxel that faces the light.
         vec3 facing = !hasDirection ? s.l : (nl < 0.0 ? -normal : normal);

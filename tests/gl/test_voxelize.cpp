@@ -476,6 +476,50 @@ TEST_F(VoxelInject, FloorGetsLambertRadianceAndShadows) {
     EXPECT_EQ(wrongShadowed, 0) << "shadowed floor voxels above 5% of lit (worst " << worstShadowed << ")";
 }
 
+// A voxel across a box's edge holds a lit face and a dark one: it sends the mean of their light,
+// weighted by its fragments as its averaged normal n̄ = s_top·up + s_side·n_side is, so
+// L = ρ/π · E · s_top under a light straight down. The normalized normal gave s_top/|n̄| (1.41× at
+// an even split). The box is turned about y so that its edges cross the voxels at every offset.
+TEST_F(VoxelInject, BoxEdgeVoxelsSendTheMeanOfTheirFacesLight) {
+    Scene scene;
+    const int white = addMaterial(scene, glm::vec3(0.8f));
+    addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f, 0.6f, 1.0f), white), glm::vec3(0.0f),
+                glm::angleAxis(glm::radians(10.0f), glm::vec3(0.0f, 1.0f, 0.0f)));
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.intensity = 3.0f;
+    addLightNode(scene, sun, glm::vec3(0.0f, 3.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+    voxelize(scene, 64);
+    inject(scene);
+    const std::vector<glm::vec4> radiance = readRadianceVoxels(*volume_);
+    const std::vector<std::uint32_t> albedo = readMaterialVoxels(volume_->albedo());
+    const std::vector<std::uint32_t> normals = readMaterialVoxels(volume_->normal());
+    int edgeVoxels = 0, wrong = 0, topVoxels = 0, wrongTop = 0;
+    float worst = 0.0f;
+    for (const glm::ivec3& v : occupiedVoxels(*volume_)) {
+        const glm::vec3 n = glm::vec3(unpackVoxel(normals[index(v)])) * 2.0f - 1.0f;
+        const float sTop = n.y, sSide = glm::length(glm::vec2(n.x, n.z));
+        const float lambert = unpackVoxel(albedo[index(v)]).g / glm::pi<float>() * 3.0f;
+        if (sTop > 0.98f) {  // the top's inside: the flat face's own light
+            ++topVoxels;
+            if (std::abs(radiance[index(v)].g - lambert) > 0.05f * lambert) ++wrongTop;
+            continue;
+        }
+        // Edges between the top and one side only (not the corners, where two sides share n̄),
+        // split evenly enough that the two rules differ by more than the tolerance.
+        if (sTop < 0.25f || sTop > 0.75f || std::abs(sTop + sSide - 1.0f) > 0.04f) continue;
+        ++edgeVoxels;
+        const float expected = lambert * sTop;
+        const float error = std::abs(radiance[index(v)].g - expected) / expected;
+        worst = std::max(worst, error);
+        if (error > 0.06f) ++wrong;
+    }
+    EXPECT_GT(topVoxels, 500);
+    EXPECT_EQ(wrongTop, 0);
+    EXPECT_GT(edgeVoxels, 30);
+    EXPECT_EQ(wrong, 0) << "edge voxels off the mean of their faces' light by > 6% (worst " << worst * 100.0f << "%)";
+}
+
 TEST_F(VoxelInject, WallThinnerThanAVoxelIsLitFromEitherSide) {
     // A 1 cm slab: its top and bottom faces share voxels, whose averaged normals cancel, so they
     // are lit two-sided; a one-sided rule would leave them dark (or random) from one side.
