@@ -116,13 +116,7 @@ const float kRayBackFaceCosine = 0.5;
 // them and start at coneOrigin, so that a thin wall stops every ray.
 const float kRayPlaneMinLength = kOneSidedMinLength;
 const float kRayStartVoxels = LIT_RAY_START_VOXELS;
-layout(binding = LIT_IMG_VOXEL_SURFACE, r32ui) uniform readonly uimage3D voxelSurface;
-
-// The point of voxel c's surface the voxelization recorded (in voxels from the volume's corner).
-vec3 voxelSurfacePoint(ivec3 c) {
-    vec4 local = unpackVoxel(imageLoad(voxelSurface, c).r);
-    return vec3(c) + (local.a > 0.0 ? local.xyz : vec3(0.5));
-}
+LIT_VOXEL_SURFACE_READER
 
 // Where voxel v's rays start for the side `normal` (its averaged normal, unit, or its opposite).
 vec3 rayOrigin(ivec3 v, vec3 normal, float agreement) {

@@ -51,8 +51,15 @@ void storeRadiance(ivec3 v, vec4 value) {
 }
 
 const float kPi = 3.14159265358979;
-// The voxel centre may lie up to half a voxel behind the surface it holds: shadow lookups start
-// one voxel out along the normal, plus this many shadow texels (lights.glsl's normal offset).
+// Where a voxel asks the shadow map whether it is lit. A one-sided voxel asks at the point of its
+// surface the voxelization recorded (voxelSurfacePoint), kShadowSurfaceOffsetVoxels out along its
+// normal, so its light is its surface's wherever in the voxel the surface lies. The voxel centre
+// lies up to half a voxel off the surface, so a lookup from it must start a whole voxel out, and
+// under a low sun a point 0.5–1.5 voxels above a floor is lit where the floor 1–3 voxels further
+// along the light is: the light moved towards the window (docs/GI.md, "Injection"). Two-sided
+// voxels (faces back to back) keep the centre.
+const float kShadowSurfaceOffsetVoxels = 0.25;
+// Plus this many shadow texels (lights.glsl's normal offset), against acne.
 const float kShadowNormalOffsetTexels = 2.0;
 // No PCF widening: a voxel spans several shadow texels and the mip chain filters the result.
 // The 3×3 taps then hit the same texels; spread by the lighting pass's 1.5 texels they made
@@ -74,6 +81,7 @@ uvec3 mortonLocal(uint i) {
 // Occupied-voxel list (InjectPass with uFromList = 1): the work groups run along the list
 // (glDispatchComputeIndirect, LIT_INJECT_LIST_GROUP_SIZE = 8³ entries each) instead of over N³.
 LIT_VOXEL_LIST_READER
+LIT_VOXEL_SURFACE_READER
 
 void main() {
     ivec3 v;
@@ -108,7 +116,9 @@ void main() {
         if (cosine <= 0.0) continue;
         // The side of the voxel that faces the light.
         vec3 facing = !hasDirection ? s.l : (nl < 0.0 ? -normal : normal);
-        float visibility = shadowVisibility(light, centre + facing * voxelSize, facing, kShadowPcfRadius,
+        vec3 lookup = oneSided ? voxel.volumeMin.xyz + (voxelSurfacePoint(v) + kShadowSurfaceOffsetVoxels * facing) * voxelSize
+                               : centre + facing * voxelSize;
+        float visibility = shadowVisibility(light, lookup, facing, kShadowPcfRadius,
                                             kShadowNormalOffsetTexels);
         // A voxel holding faces back to back (a wall thinner than a voxel, or two solids that touch)
         // glows on both sides, whichever face the light reaches: it is lit only if the point half a
