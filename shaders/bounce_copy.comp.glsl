@@ -11,9 +11,15 @@ layout(local_size_x = LIT_INJECT_LIST_GROUP_SIZE) in;
 LIT_VOXEL_LIST_READER
 
 layout(binding = LIT_IMG_VOXEL_BOUNCE, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelBounce;
-layout(binding = LIT_IMG_VOXEL_RADIANCE) uniform writeonly image3D voxelRadiance;
+layout(binding = LIT_IMG_VOXEL_RADIANCE, LIT_RADIANCE_IMAGE_FORMAT) uniform image3D voxelRadiance;
 layout(binding = LIT_IMG_VOXEL_ALBEDO, r32ui) uniform readonly uimage3D voxelAlbedo;
 layout(binding = LIT_IMG_VOXEL_DIRECT, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelDirect;
+
+// The bounces still to come, as a multiple of this bounce's change (BounceConvergence::tail; 0:
+// none). Once the changes fall geometrically by r a bounce, each voxel's change keeps its shape
+// and the rest of the series adds r/(1 − r) of the last one. Never below the direct light: the
+// bounced light is never negative.
+uniform float uTail;
 
 void main() {
     ivec3 v;
@@ -24,5 +30,10 @@ void main() {
     // voxel rays and their recorded hits take occupancy from it.
     vec4 bounce = imageLoad(voxelBounce, v);
     bool occupied = unpackVoxel(imageLoad(voxelAlbedo, v).r).a > 0.0;
-    imageStore(voxelRadiance, v, !occupied ? vec4(0.0) : (bounce.a > 0.0 ? bounce : imageLoad(voxelDirect, v)));
+    vec4 direct = imageLoad(voxelDirect, v);
+    if (bounce.a > 0.0 && uTail > 0.0) {
+        vec4 before = imageLoad(voxelRadiance, v);
+        if (before.a > 0.0) bounce.rgb = max(bounce.rgb + uTail * (bounce.rgb - before.rgb), direct.rgb);
+    }
+    imageStore(voxelRadiance, v, !occupied ? vec4(0.0) : (bounce.a > 0.0 ? bounce : direct));
 }

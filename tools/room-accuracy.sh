@@ -4,8 +4,9 @@
 # Renders it with Lit's defaults (the editor's converged image), with Lit's defaults and a given
 # bounce count, and with Lit's reference path tracer (every bounce), and compares each, and the
 # committed Cycles renders, with Cycles' render of the same file (every bounce) over the pixels lit
-# only by bounced light (tools/room_accuracy.py explains the columns). Writes
-# docs/tables/room-accuracy.md, headed by the date, the commit and the machine.
+# only by bounced light (tools/room_accuracy.py explains the columns), and times the room at
+# 1280×720: GI on against off, and a light edit's update. Writes docs/tables/room-accuracy.md,
+# headed by the date, the commit and the machine.
 #
 # Usage: tools/room-accuracy.sh     (a built lit-render; python3 with numpy: install-deps.sh --scene-tools)
 # Environment (all optional):
@@ -13,6 +14,7 @@
 #   ROOM_SPP        reference samples per pixel   (default: 4096)
 #   ROOM_VOXELS     voxel resolution              (default: 128, the renderer's default)
 #   ROOM_OUT        the markdown file written     (default: <repo>/docs/tables/room-accuracy.md)
+#   ROOM_COST_ROUNDS  interleaved rounds of GI off and on at 1280×720 (default: 3)
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -23,6 +25,7 @@ scene="$scene_dir/sun_room.gltf"
 out="${ROOM_OUT:-$root/docs/tables/room-accuracy.md}"
 spp="${ROOM_SPP:-4096}"
 voxels="${ROOM_VOXELS:-128}"
+cost_rounds="${ROOM_COST_ROUNDS:-3}"
 size=160x100  # the Cycles renders' size (make_sun_room.py)
 [ -x "$render" ] || { echo "room-accuracy: $render not found; build it first" >&2; exit 1; }
 python="${PYTHON:-python3}"
@@ -41,6 +44,44 @@ ref_seconds=$(( $(date +%s) - start ))
 quiet "$render" "$scene" --size "$size" --reference --bounces all --spp "$spp" --seed 2 --hdr "$tmp/ref2.hdr" --out "$tmp/ref2.png"
 # Which surface each pixel sees, for the per-surface tables.
 quiet "$render" "$scene" --size "$size" --reference --spp 1 --node-map "$tmp/nodes.txt" --out "$tmp/nodes.png"
+
+# The cost at the editor's size, 1280×720: ROOM_COST_ROUNDS interleaved rounds of GI off and the
+# defaults, each the single-frame steady state benchmarks time (docs/PERFORMANCE.md, "The GI budget
+# in benchmarks"); then a light edit's update, every bounce, against a re-voxelization, all in one
+# frame and spread as the editor spreads it (--bench-gi-updates).
+cost_size=1280x720
+for round in $(seq "$cost_rounds"); do
+    quiet "$render" "$scene" --size "$cost_size" --single-frame --gi off --bench 4 --json "$tmp/cost-off-$round.json"
+    quiet "$render" "$scene" --size "$cost_size" --single-frame --voxels "$voxels" --bench 4 --json "$tmp/cost-on-$round.json"
+done
+quiet "$render" "$scene" --size "$cost_size" --single-frame --voxels "$voxels" --bench 1 --bench-gi-updates 3
+cp "$tmp/log" "$tmp/edits.txt"
+quiet "$render" "$scene" --size "$cost_size" --voxels "$voxels" --bench 1 --bench-gi-updates 3 \
+    --gi-update-per-frame 16384 --gi-refine-per-frame 0
+cp "$tmp/log" "$tmp/edits-editor.txt"
+cost_rows="$("$python" - "$tmp" "$cost_rounds" <<'PY'
+import json, re, sys
+tmp, rounds = sys.argv[1], int(sys.argv[2])
+steady = []
+for r in range(1, rounds + 1):
+    off = json.load(open(f"{tmp}/cost-off-{r}.json"))["frameMs"]["median"]
+    on = json.load(open(f"{tmp}/cost-on-{r}.json"))["frameMs"]["median"]
+    steady.append(on)
+    print(f"| frame, round {r} | {off:.1f} | {on:.1f} | {on / off:.2f} |")
+steady.sort()
+frame = steady[len(steady) // 2]
+for line in open(f"{tmp}/edits.txt"):
+    m = re.match(r"gi-update round (\d+): light edit ([\d.]+) ms .* re-voxelize ([\d.]+) ms", line)
+    if m:
+        print(f"| light edit, every bounce in one frame, round {m[1]} (GPU ms; re-voxelization {float(m[3]):.0f}) | | {float(m[2]):.0f} | |")
+for line in open(f"{tmp}/edits-editor.txt"):
+    m = re.match(r"gi-update round (\d+), spread over frames: the light edit's update took (\d+) more frames \(GI passes ([\d.]+) ms\)", line)
+    if m:
+        frames, gi = int(m[2]), float(m[3])
+        print(f"| light edit spread as the editor does, round {m[1]}: {frames} frames after the edit's, "
+              f"GI passes {gi:.0f} ms; their wall time ≈ frames × the steady frame + GI passes | | {frames * frame + gi:.0f} | |")
+PY
+)"
 
 rows="$("$python" "$root/tools/room_accuracy.py" "$tmp/direct.hdr" "$scene_dir/sun_room_cycles.hdr" --nodes "$tmp/nodes.txt" \
     "Lit, defaults (${voxels}³, converged)=$tmp/lit.hdr" \
@@ -90,5 +131,13 @@ mkdir -p "$(dirname "$out")"
     echo "| image | mean ÷ Lit converged | RMSE | blotches (7×7 box, level matched) |"
     echo "|---|---:|---:|---:|"
     echo "$rows_self" | tail -n +2
+    echo
+    echo "The cost at ${cost_size/x/×}, ${voxels}³ (wall ms; GPU ms where it says; on this machine's llvmpipe): the steady frame"
+    echo "is the median of 4 frames, GI off and on interleaved per round; a light edit's update runs until its"
+    echo "bounces converge:"
+    echo
+    echo "| what | GI off (ms) | GI on (ms) | on ÷ off |"
+    echo "|---|---:|---:|---:|"
+    echo "$cost_rows"
 } > "$out"
 echo "room-accuracy: wrote $out"

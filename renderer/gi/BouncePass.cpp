@@ -79,7 +79,7 @@ BounceChange BouncePass::readChange() const {
     return change;
 }
 
-void BouncePass::finish(const VoxelVolume& volume, bool overList) {
+void BouncePass::finish(const VoxelVolume& volume, bool overList, float tail) {
     const int n = volume.resolution();
     if (n <= 0 || !volume.direct()) return;
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
@@ -90,9 +90,11 @@ void BouncePass::finish(const VoxelVolume& volume, bool overList) {
         program.use();
         glBindImageTexture(LIT_IMG_VOXEL_BOUNCE, volume.bounce().id(), 0, GL_TRUE, 0, GL_READ_ONLY,
                            volume.radianceFormat());
-        glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+        // Read too: the bounce before, whose change from it the tail extrapolates.
+        glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_READ_WRITE,
                            volume.radianceFormat());
         glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+        glProgramUniform1f(program.id(), program.location("uTail"), tail);
         glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY,
                            volume.radianceFormat());
         dispatchOverVoxels(volume, program, true);

@@ -44,8 +44,9 @@ public:
 
     void trace(const VoxelVolume& volume, const RayHitCache& cache, const BounceTrace& bounce);
     // Copies the bounce into level 0: the listed voxels only (bounce_copy.comp.glsl), or the whole
-    // grid when `overList` is false.
-    void finish(const VoxelVolume& volume, bool overList);
+    // grid when `overList` is false. Over the list, `tail` > 0 adds the bounces still to come as
+    // `tail` × this bounce's change (BounceConvergence::tail); the whole grid's copy adds nothing.
+    void finish(const VoxelVolume& volume, bool overList, float tail = 0.0f);
     // Every bounce after a geometry edit starts from the last update's light (bounce_warm_start.comp.glsl):
     // keepIndirect, before the voxelization, over the old list, keeps each voxel's indirect light in
     // the bounce volume; addKeptIndirect, after the injection, over the new list, adds it to level 0.

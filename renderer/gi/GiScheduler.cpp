@@ -35,17 +35,24 @@ bool GiLightKey::retraces(const GiLightKey& last) const {
 
 bool BounceConvergence::add(double relativeChange) {
     ++bounces_;
+    tail_ = 0.0;
     const double previous = last_;
     last_ = relativeChange;
     if (relativeChange <= kStill) return true;
     if (previous <= 0.0) return false;  // one measured bounce says nothing of the rate
     const double ratio = std::clamp(relativeChange / previous, 0.0, 0.97);
+    const bool steady = lastRatio_ >= 0.0 && std::abs(ratio - lastRatio_) <= kSteadyRatio;
+    lastRatio_ = ratio;
     const double missing = relativeChange * ratio / (1.0 - ratio);
-    // Bounces until missing · ratio^n < kMissing.
+    // Bounces until missing · ratio^n falls below what stops the update (with the ratio steady,
+    // as it stays once steady).
+    const double stop = steady ? kExtrapolated : kMissing;
     const double more =
-        ratio > 0.0 && missing > kMissing ? std::ceil(std::log(kMissing / missing) / std::log(ratio)) : 0.0;
+        ratio > 0.0 && missing > stop ? std::ceil(std::log(stop / missing) / std::log(ratio)) : 0.0;
     expected_ = bounces_ + static_cast<int>(std::min(more, 1000.0));
-    return missing < kMissing;
+    if (missing >= stop) return false;
+    tail_ = ratio / (1.0 - ratio);
+    return true;
 }
 
 GiScheduler::Changes GiScheduler::changes(const VoxelKey& voxels, const GiLightKey& light, bool volumeReallocated,

@@ -81,22 +81,34 @@ struct GiState {
 // voxels' light changes by a share that falls about geometrically (by the scene's mean albedo
 // times how much of a voxel's hemisphere sees other voxels), so after a bounce whose relative
 // change is c, with ratio r to the bounce before, about c · r / (1 − r) of the light is still
-// missing; the update stops once that is below kMissing. docs/GI.md, "Bounces".
+// missing. Once the ratio holds steady the change keeps its shape from bounce to bounce, and the
+// missing light is added as r / (1 − r) × the last change (tail(), bounce_copy.comp.glsl): the
+// update stops once the missing share is below kExtrapolated with the ratio steady, or below
+// kMissing. docs/GI.md, "Bounces".
 class BounceConvergence {
 public:
     static constexpr double kMissing = 0.005;  // share of the light still missing when it stops
+    // ... or this share, added as the series' tail, when the ratio changed by at most kSteadyRatio
+    // from the bounce before.
+    static constexpr double kExtrapolated = 0.05;
+    static constexpr double kSteadyRatio = 0.02;
     // A relative change this small is the radiance volume's own rounding (RGBA16F holds 11
     // significant bits, 0.05 %: once the light has settled, the bounces keep changing it by
     // 0.07 % in a dim room, a limit cycle), so the light has settled whatever the rate says.
     static constexpr double kStill = 0.002;
     // Adds bounce k's relative change (BounceChange::relative); true when the light has converged.
     bool add(double relativeChange);
+    // Once add() said converged: the bounces still missing as a multiple of the last bounce's
+    // change, r / (1 − r) (0 when the light had stopped changing).
+    double tail() const { return tail_; }
     // The bounces the light is expected to need in all, from the ratio measured so far (0 before
     // two bounces were measured).
     int expectedBounces() const { return expected_; }
 
 private:
     double last_ = -1.0;
+    double lastRatio_ = -1.0;
+    double tail_ = 0.0;
     int bounces_ = 1;  // bounce 1 is the direct light; the first measured is bounce 2
     int expected_ = 0;
 };

@@ -192,10 +192,11 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                 if (light.untilConverged) bounce_.resetChange();
                 rayHitCache_.beginPass();
                 bounce_.trace(volume_, rayHitCache_, {features, b == 2 && !warmStart_, overList, {}, hits, light.untilConverged});
-                bounce_.finish(volume_, overList);
+                const bool converged = light.untilConverged && convergence_.add(bounce_.readChange().relative());
+                const bool last = b == start.bouncesNow + 1 || converged;
+                // The last bounce adds the ones still missing (BounceConvergence::tail).
+                bounce_.finish(volume_, overList, converged ? static_cast<float>(convergence_.tail()) : 0.0f);
                 listTraced(hits);
-                const bool last = b == start.bouncesNow + 1 ||
-                                  (light.untilConverged && convergence_.add(bounce_.readChange().relative()));
                 // Voxel rays read level 0 where they end and only the mips' occupancy, which a
                 // bounce does not change: the mips are rebuilt after the last bounce alone.
                 if (features.voxelRays == 0 || last) mipmap_.execute(volume_, light.anisotropic, overList);
@@ -275,7 +276,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             scheduler_.estimateBounces(converged ? progress.bounce : convergence_.expectedBounces());
         if (scheduler_.advanceBounce(range, converged)) {
             listTraced(hits);  // the pass ran over the whole list from 0
-            bounce_.finish(volume_, true);
+            bounce_.finish(volume_, true, converged ? static_cast<float>(convergence_.tail()) : 0.0f);
             // Voxel rays need the mips' occupancy only (see update()): rebuilt after the last bounce.
             if (features.voxelRays == 0 || scheduler_.state().progress.bounce == 0)
                 mipmap_.execute(volume_, light.anisotropic, overList);

@@ -94,7 +94,7 @@ TEST_F(GiEditKeepsLight, NoFrameOfAGeometryUpdateIsDarkerThanBothConvergedImages
 
     const HdrImage after = allAtOnce(scene, camera, settings);
     // Its bounces started from the old light: converged to the same light within the stopping
-    // rule's ½ % (BounceConvergence::kMissing), not bit for bit.
+    // rule (BounceConvergence: ½ % missing, or 5 % added as the series' tail), not bit for bit.
     const double fromFresh = relativeDifference(done, after);
     EXPECT_LE(fromFresh, 0.01) << "the completed update is a fresh renderer's";
     const double floor = std::min(meanLuminance(before), meanLuminance(after));

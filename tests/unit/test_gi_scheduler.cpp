@@ -244,7 +244,8 @@ TEST(GiScheduler, RefinementTracesTheOtherConeSetsRoundByRound) {
 }
 
 // Every bounce (the default): the passes go on until a bounce's change, extrapolated over the
-// bounces still to come, is below BounceConvergence::kMissing; the progress counts the bounces the
+// bounces still to come, is below BounceConvergence::kExtrapolated with the rate steady (then that
+// rest is added as the series' tail) or below kMissing; the progress counts the bounces the
 // measured rate predicts.
 TEST(GiScheduler, EveryBounceStopsWhenTheLightConverges) {
     const GiLightKey every = GiLightKey::of(lit::RenderSettings{});
@@ -270,18 +271,22 @@ TEST(GiScheduler, EveryBounceStopsWhenTheLightConverges) {
         if (converged) break;
         change *= 0.5;
     }
-    // After bounce k the light still missing is change_k · r / (1 − r) = change_k: 0.4 · 2^(2−k) < 0.005.
-    EXPECT_EQ(bounce, 9);
+    // After bounce k the light still missing is change_k · r / (1 − r) = change_k; the rate is steady
+    // from bounce 4 (two ratios measured), so it stops at 0.4 · 2^(2−k) < 0.05, and the tail adds
+    // r / (1 − r) = 1 × the last change.
+    EXPECT_EQ(bounce, 6);
     EXPECT_EQ(s.state().progress.bounce, 0) << "the irradiance is next";
-    EXPECT_EQ(convergence.expectedBounces(), 9);
+    EXPECT_EQ(convergence.expectedBounces(), 6);
+    EXPECT_DOUBLE_EQ(convergence.tail(), 1.0);
     // A scene without light converges at once; a light that keeps changing stops at the cap.
     EXPECT_TRUE(lit::BounceConvergence{}.add(0.0));
     lit::BounceConvergence slow;
     EXPECT_FALSE(slow.add(0.5));
     EXPECT_FALSE(slow.add(0.49));
     EXPECT_GT(slow.expectedBounces(), 100);
-    // A dim room's light, measured against its bounced light: the rate nears 1 as the changes
-    // reach the radiance volume's rounding (0.07 % a bounce, measured): settled once below kStill.
+    // A dim room's light, measured against its bounced light: the rate settles near 0.72 (it nears 1
+    // only as the changes reach the radiance volume's rounding, 0.07 % a bounce): at bounce 10 the
+    // 4 % still missing is added as the tail, where kMissing alone took 18 bounces.
     lit::BounceConvergence dim;
     int dimBounces = 1;
     for (double c : {1.0, 0.29, 0.156, 0.098, 0.066, 0.045, 0.031, 0.022, 0.0158, 0.0114, 0.0082, 0.0061,
@@ -289,7 +294,15 @@ TEST(GiScheduler, EveryBounceStopsWhenTheLightConverges) {
         ++dimBounces;
         if (dim.add(c)) break;
     }
-    EXPECT_EQ(dimBounces, 18) << "the first change below " << lit::BounceConvergence::kStill;
+    EXPECT_EQ(dimBounces, 10);
+    const double dimRatio = 0.0158 / 0.022;
+    EXPECT_DOUBLE_EQ(dim.tail(), dimRatio / (1.0 - dimRatio));
+    // A change below kStill is the volume's rounding: settled whatever the rate says, and no tail.
+    lit::BounceConvergence settled;
+    EXPECT_FALSE(settled.add(0.01));
+    EXPECT_FALSE(settled.add(0.0099));
+    EXPECT_TRUE(settled.add(0.0019));
+    EXPECT_EQ(settled.tail(), 0.0);
 }
 
 }  // namespace
