@@ -56,7 +56,7 @@ const float kPi = 3.14159265358979;
 // normal, so its light is its surface's wherever in the voxel the surface lies. The voxel centre
 // lies up to half a voxel off the surface, so a lookup from it must start a whole voxel out, and
 // under a low sun a point 0.5–1.5 voxels above a floor is lit where the floor 1–3 voxels further
-// along the light is: the light moved towards the window (docs/GI.md, "Injection"). Two-sided
+// along the light is: the light would move towards the window (docs/GI.md, "Injection"). Two-sided
 // voxels (faces back to back) keep the centre.
 const float kShadowSurfaceOffsetVoxels = 0.25;
 // Plus this many shadow texels (lights.glsl's normal offset), against acne.
