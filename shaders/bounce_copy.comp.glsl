@@ -30,10 +30,16 @@ void main() {
     // voxel rays and their recorded hits take occupancy from it.
     vec4 bounce = imageLoad(voxelBounce, v);
     bool occupied = unpackVoxel(imageLoad(voxelAlbedo, v).r).a > 0.0;
-    vec4 direct = imageLoad(voxelDirect, v);
-    if (bounce.a > 0.0 && uTail > 0.0) {
-        vec4 before = imageLoad(voxelRadiance, v);
-        if (before.a > 0.0) bounce.rgb = max(bounce.rgb + uTail * (bounce.rgb - before.rgb), direct.rgb);
+    if (!occupied) {
+        imageStore(voxelRadiance, v, vec4(0.0));
+    } else if (bounce.a == 0.0) {
+        imageStore(voxelRadiance, v, imageLoad(voxelDirect, v));
+    } else {
+        if (uTail > 0.0) {
+            vec4 before = imageLoad(voxelRadiance, v);
+            if (before.a > 0.0)
+                bounce.rgb = max(bounce.rgb + uTail * (bounce.rgb - before.rgb), imageLoad(voxelDirect, v).rgb);
+        }
+        imageStore(voxelRadiance, v, bounce);
     }
-    imageStore(voxelRadiance, v, !occupied ? vec4(0.0) : (bounce.a > 0.0 ? bounce : direct));
 }

@@ -14,7 +14,7 @@
 // bit each, and owns the words it writes.
 #include "voxel.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = LIT_SOLID_VOXELS_GROUP_SIZE) in;
 
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNormal;
 layout(std430, binding = LIT_SSBO_SOLID_VOXELS) buffer SolidVoxels { uint solidBits[]; };
@@ -25,6 +25,21 @@ const float kFaceY = 0.25;
 
 // The columns to walk (SolidVoxelsPass): x in words of 32 columns, z in voxels, [min, end).
 uniform ivec2 uColumnMin, uColumnEnd;
+
+// Row y of the 32 columns from x0 at z, a bit per column: occupied, facing down, facing up.
+uvec3 faceBits(int x0, int y, int z) {
+    uvec3 bits = uvec3(0u);
+    for (int i = 0; i < 32; ++i) {
+        vec4 texel = unpackVoxel(imageLoad(voxelNormal, ivec3(x0 + i, y, z)).r);
+        if (texel.a == 0.0) continue;
+        float ny = texel.y * 2.0 - 1.0;
+        uint bit = 1u << uint(i);
+        bits.x |= bit;
+        if (ny < -kFaceY) bits.y |= bit;
+        if (ny > kFaceY) bits.z |= bit;
+    }
+    return bits;
+}
 
 void main() {
     int n = int(voxel.voxelInfo.x);  // a power of two, at least 64
@@ -37,30 +52,15 @@ void main() {
     // Walking up: inside after a face looking down, outside after one looking up.
     uint inside = 0u;
     for (int y = 0; y < n; ++y) {
-        uint occupied = 0u, down = 0u, up = 0u;
-        for (int i = 0; i < 32; ++i) {
-            vec4 texel = unpackVoxel(imageLoad(voxelNormal, ivec3(x0 + i, y, z)).r);
-            if (texel.a == 0.0) continue;
-            float ny = texel.y * 2.0 - 1.0;
-            occupied |= 1u << uint(i);
-            if (ny < -kFaceY) down |= 1u << uint(i);
-            if (ny > kFaceY) up |= 1u << uint(i);
-        }
-        inside = (inside | down) & ~up;
-        solidBits[(x0 + n * (y + n * z)) >> 5] = inside & ~occupied;
+        uvec3 faces = faceBits(x0, y, z);
+        inside = (inside | faces.y) & ~faces.z;
+        solidBits[(x0 + n * (y + n * z)) >> 5] = inside & ~faces.x;
     }
     // Walking down: inside after a face looking up; a voxel stays inside if both walks agree.
     inside = 0u;
     for (int y = n - 1; y >= 0; --y) {
-        uint down = 0u, up = 0u;
-        for (int i = 0; i < 32; ++i) {
-            vec4 texel = unpackVoxel(imageLoad(voxelNormal, ivec3(x0 + i, y, z)).r);
-            if (texel.a == 0.0) continue;
-            float ny = texel.y * 2.0 - 1.0;
-            if (ny < -kFaceY) down |= 1u << uint(i);
-            if (ny > kFaceY) up |= 1u << uint(i);
-        }
-        inside = (inside | up) & ~down;
+        uvec3 faces = faceBits(x0, y, z);
+        inside = (inside | faces.z) & ~faces.y;
         solidBits[(x0 + n * (y + n * z)) >> 5] &= inside;
     }
 }

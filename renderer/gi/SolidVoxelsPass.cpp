@@ -9,8 +9,7 @@
 namespace lit {
 
 namespace {
-constexpr int kGroupSize = 64;  // solid_voxels.comp.glsl's local_size_x
-constexpr int kColumnsPerInvocation = 32;
+constexpr int kColumnsPerInvocation = 32;  // one bit each of a word (solid_voxels.comp.glsl)
 }  // namespace
 
 SolidVoxelsPass::SolidVoxelsPass(const std::filesystem::path& shaderRoot)
@@ -39,7 +38,8 @@ void SolidVoxelsPass::execute(const VoxelVolume& volume, std::span<const VoxelBo
     volume.solidVoxels().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_SOLID_VOXELS);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     const int invocations = (hi.x - lo.x) * (hi.y - lo.y);
-    glDispatchCompute(static_cast<GLuint>((invocations + kGroupSize - 1) / kGroupSize), 1, 1);
+    glDispatchCompute(static_cast<GLuint>((invocations + LIT_SOLID_VOXELS_GROUP_SIZE - 1) / LIT_SOLID_VOXELS_GROUP_SIZE), 1,
+                      1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

@@ -129,6 +129,7 @@ using mat4 = glm::mat4;
 #define LIT_INJECT_GROUP_SIZE 8        // inject.comp.glsl work group: 8×8×8 voxels
 // Occupied-voxel list (VoxelizePass appends, InjectPass runs over it with an indirect dispatch).
 #define LIT_SSBO_OCCUPIED_VOXELS 2     // OccupiedVoxels: count, dispatch size, packed coordinates
+#define LIT_SOLID_VOXELS_GROUP_SIZE 64  // solid_voxels.comp.glsl work group: 64 invocations of 32 columns each
 #define LIT_INJECT_LIST_GROUP_SIZE 512 // inject.comp.glsl work group over the list: its 8³ group as 512 entries (65535 groups = 33.5 M voxels)
 // Which voxels the occupied-voxel list holds: one bit per voxel of the N³ volume (index x + N(y +
 // Nz)), set by the voxelization when it appends a voxel, so that a voxelization of changed boxes

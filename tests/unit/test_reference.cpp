@@ -10,6 +10,7 @@
 #include "reference/ReferenceScene.h"
 #include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
+#include "scene/RadicalInverse.h"
 #include "scene/SceneBuilder.h"
 #include "QuietLog.h"
 #include "ReferenceTestScenes.h"
@@ -31,16 +32,6 @@ using testing::addCamera;
 using testing::boxUnderSky;
 
 // ---- Twins of the shaders' math, written independently of the reference's own code --------
-
-// Van der Corput radical inverse in base 2 (cone.glsl radicalInverse).
-float radicalInverse(std::uint32_t bits) {
-    bits = (bits << 16u) | (bits >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return static_cast<float>(bits) * 2.3283064365386963e-10f;
-}
 
 // The cone tracer's specular albedo table E = F0·A + B, computed as specular_albedo.frag.glsl does
 // (GGX half vectors drawn from D(h)(n·h), weights G·(v·h)/((n·h)(n·v))), with 65536 samples.
