@@ -227,7 +227,14 @@ int App::run() {
             .shadersReloaded = std::exchange(shadersReloaded_, false),
         };
         const RedrawReason reason = redraw_.decide(inputs, pending, viewport_.redrawOnDemand);
-        const FrameWork work = redraw_.work(reason, now, renderEstimateSeconds_);
+        // When the GI update after the last edit began (the first frame that saw it under way).
+        if (!pending.giUpdating)
+            giUpdateSince_.reset();
+        else if (!giUpdateSince_)
+            giUpdateSince_ = now;
+        const double updateSecondsLeft =
+            giUpdateSince_ ? giSecondsLeft(now - *giUpdateSince_, stats.giUpdateDone) : 0.0;
+        const FrameWork work = redraw_.work(reason, now, renderEstimateSeconds_, updateSecondsLeft);
         const bool render = work == FrameWork::Render;
         if (render) {
             renderer_->setOverlay(inputs.overlay);
@@ -340,7 +347,15 @@ GiBudget App::giBudget(double now) const {
     // frame's time goes to the frame rate (the Cornell box at 1280×720 moved at 4-5 FPS while it
     // ran, 11-12 FPS without it: docs/PERFORMANCE.md, "Editor"), and it goes on when the view is
     // still.
-    if (interacting_ || interactiveScale_.holding(now)) budget.refineVoxels = 0;
+    if (interacting_ || interactiveScale_.holding(now)) {
+        budget.refineVoxels = 0;
+        return budget;
+    }
+    // An update under way with nothing touched: the edit's light may take more of the frame
+    // (ViewportSettings::giIdleMillisecondsPerFrame). Not the refinement, which runs for minutes
+    // while the user works on.
+    if (!imgui_->sawInput() && renderer_->stats().giUpdateDone < 1.0f)
+        budget = budget.widenedTo(viewport_.giIdleMillisecondsPerFrame);
     return budget;
 }
 

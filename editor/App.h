@@ -158,6 +158,7 @@ private:
     // GI work, seconds on opening a scene, would space the images that frames working on the GI
     // render far apart: ViewportRedraw::work). 0 until one.
     double renderEstimateSeconds_ = 0.0;
+    std::optional<double> giUpdateSince_;  // glfwGetTime() when the GI update under way was first seen
     bool previousInjected_ = false;  // the previous frame rendered and voxelized or injected
     bool shadersReloaded_ = false;    // changed shader files were reloaded after the last frame
 };

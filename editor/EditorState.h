@@ -78,6 +78,12 @@ struct ViewportSettings {
     // the two counts above are then the most a frame traces, and the GI paces itself by what the
     // work cost in the frames before (gi/GiPacer.h). 0: the counts alone.
     float giMillisecondsPerFrame = 25.0f;
+    // ... and while an update after an edit runs and nothing is touched (no input or motion in the
+    // frame, the interactive scale's grace over), ms: the edit's light is final sooner (the voxel
+    // counts grow with it), and the UI still answers within about this plus its own frame (40 ms:
+    // 20 frames a second on llvmpipe at 1280×720, as while refining). Not the refinement's frames.
+    // At most giMillisecondsPerFrame's effect when smaller; 0 = the same.
+    float giIdleMillisecondsPerFrame = 40.0f;
 };
 
 }  // namespace lit::editor

@@ -54,11 +54,12 @@ std::optional<std::string> applyEditorSetting(ViewportSettings& viewport, std::s
         viewport.interactiveFpsTarget = *fps;
         return "";
     }
-    if (name == "editor.giMillisecondsPerFrame") {
+    if (name == "editor.giMillisecondsPerFrame" || name == "editor.giIdleMillisecondsPerFrame") {
         const std::optional<float> ms = parseNumber<float>(std::string(value));
         if (!ms || !(*ms >= 0.0f))
             return "setting " + name + ": expected milliseconds from 0 (got '" + std::string(value) + "')";
-        viewport.giMillisecondsPerFrame = *ms;
+        (name == "editor.giMillisecondsPerFrame" ? viewport.giMillisecondsPerFrame
+                                                 : viewport.giIdleMillisecondsPerFrame) = *ms;
         return "";
     }
     if (name == "editor.redrawOnDemand") {

@@ -22,7 +22,8 @@ std::string applySetting(RenderSettings& settings, std::string_view key, std::st
                          std::vector<std::string>* warnings = nullptr);
 
 // The editor's own settings by key (editor.interactiveFpsTarget, editor.giUpdateVoxelsPerFrame,
-// editor.giRefineVoxelsPerFrame, editor.giMillisecondsPerFrame, editor.redrawOnDemand, or the older render-settings names of the
+// editor.giRefineVoxelsPerFrame, editor.giMillisecondsPerFrame, editor.giIdleMillisecondsPerFrame, editor.redrawOnDemand,
+// or the older render-settings names of the
 // first three with a deprecation message):
 // "" when set, a message when the value is bad, nullopt when `key` is not one of them.
 std::optional<std::string> applyEditorSetting(ViewportSettings& viewport, std::string_view key, std::string_view value,

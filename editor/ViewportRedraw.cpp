@@ -90,12 +90,23 @@ RedrawReason ViewportRedraw::decide(const FrameInputs& inputs, const PendingWork
     return RedrawReason::None;
 }
 
-FrameWork ViewportRedraw::work(RedrawReason reason, double now, double renderSeconds) const {
+double giSecondsLeft(double elapsedSeconds, float done) {
+    if (done >= 1.0f) return 0.0;
+    if (done < 0.05f || elapsedSeconds < 0.0) return std::numeric_limits<double>::infinity();
+    return elapsedSeconds * (1.0 - done) / done;
+}
+
+FrameWork ViewportRedraw::work(RedrawReason reason, double now, double renderSeconds, double updateSecondsLeft) const {
     if (reason == RedrawReason::None) return FrameWork::Show;
     if (reason != RedrawReason::GiUpdate && reason != RedrawReason::GiRefine) return FrameWork::Render;
+    if (giLightChanged_) return FrameWork::Render;
+    const double render = std::max(renderSeconds, 0.0);
     const double renders = reason == RedrawReason::GiRefine ? kRefineImageRenders : kUpdateImageRenders;
-    if (giLightChanged_ || now - lastRenderAt_ >= renders * std::max(renderSeconds, 0.0)) return FrameWork::Render;
-    return FrameWork::GiOnly;
+    const double since = now - lastRenderAt_;
+    if (since < renders * render) return FrameWork::GiOnly;
+    const bool endsSoon = reason == RedrawReason::GiUpdate && updateSecondsLeft < render;
+    if (endsSoon && since < kUpdateImageHold * renders * render) return FrameWork::GiOnly;
+    return FrameWork::Render;
 }
 
 void ViewportRedraw::rendered(FrameInputs inputs, RedrawReason reason, double now) {

@@ -25,6 +25,7 @@
 // Window-free (lit_editor_core): tests/editor/test_viewport_redraw.cpp.
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string_view>
 
@@ -84,6 +85,11 @@ enum class RedrawReason : std::uint8_t {
 
 std::string_view redrawReasonName(RedrawReason reason);
 
+// The seconds a GI update is expected to need to complete, from the seconds it has taken and the
+// share done (FrameStats::giUpdateDone) at the pace so far; infinity before a twentieth is done
+// (too early to tell).
+double giSecondsLeft(double elapsedSeconds, float done);
+
 class ViewportRedraw {
 public:
     // Auto exposure's longest adaptation step per frame, s (Renderer.cpp, composite: a pause does
@@ -102,11 +108,17 @@ public:
     // the GI renders the image again: the image's share of the time is at most 1 / this.
     static constexpr double kUpdateImageRenders = 4.0;
     static constexpr double kRefineImageRenders = 10.0;
+    // An update expected to complete within one render (giSecondsLeft) holds back its progress
+    // image, so that the image of its whole light comes a render sooner; for at most this many
+    // times kUpdateImageRenders renders since the last one (the estimate may be wrong).
+    static constexpr double kUpdateImageHold = 2.0;
 
     // This frame's decision; `onDemand` false renders every frame.
     RedrawReason decide(const FrameInputs& inputs, const PendingWork& pending, bool onDemand) const;
-    // What the frame does for `reason` at `now` (s), the last render having taken `renderSeconds`.
-    FrameWork work(RedrawReason reason, double now, double renderSeconds) const;
+    // What the frame does for `reason` at `now` (s), the last render having taken `renderSeconds`,
+    // with the GI update under way expected to need `updateSecondsLeft` more (giSecondsLeft).
+    FrameWork work(RedrawReason reason, double now, double renderSeconds,
+                   double updateSecondsLeft = std::numeric_limits<double>::infinity()) const;
     // The frame advanced the GI alone; `updateCompleted`: an update completed in it
     // (FrameStats::giUpdateCompleted), so the next frame that works on the GI renders.
     void advancedGi(bool updateCompleted) { giLightChanged_ = giLightChanged_ || updateCompleted; }

@@ -114,6 +114,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("gi", "indirectIntensity", gi.indirectIntensity);
     visit("gi", "bounces", gi.bounces);
     visit("gi", "voxelRays", gi.voxelRays);
+    visit("gi", "laterBounceRayStride", gi.laterBounceRayStride);
     visit("gi", "diffuseConeAperture", gi.diffuseConeAperture);
     visit("gi", "maxTraceDistance", gi.maxTraceDistance);
     visit("gi", "coneStepScale", gi.coneStepScale);

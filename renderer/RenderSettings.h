@@ -54,6 +54,8 @@ inline constexpr int kAllBounces = 0;
 inline constexpr int kMaxConvergingBounces = 64;
 // The most rays per voxel GiSettings::voxelRays asks for (more are clamped to it).
 inline constexpr int kMaxVoxelRays = 256;
+// The most GiSettings::laterBounceRayStride asks for (more are clamped to it).
+inline constexpr int kMaxLaterBounceRayStride = 16;
 // The footprint bound of the accurate and cached modes' diffuse cones (GiSettings::
 // coneFootprintPerHeight): the largest voxel a cone leaving a surface samples is a quarter of its
 // height above it. Why a quarter: docs/GI.md, "Footprint-bounded cones".
@@ -151,6 +153,10 @@ struct GiSettings {
     // grid to the first occupied voxel (docs/GI.md, "Voxel rays"). 0 = the accurate mode's
     // stratified cones instead.
     int voxelRays = 32;  // 0..kMaxVoxelRays
+    // With voxel rays and RGBA16F radiance, each bounce after an update's first gathers only the
+    // change of the bounce before, over one in this many of a voxel's rays (docs/GI.md, "Bounces"):
+    // 1 = every ray. Effective only with at least two rays per subset.
+    int laterBounceRayStride = 4;  // 1..kMaxLaterBounceRayStride
     // Cones (docs/GI.md, "Marching a cone"). The diffuse cones' aperture; the farthest a cone
     // goes, as a fraction of the volume's side; the step, × the cone's diameter there.
     float diffuseConeAperture = 1.0471975511965976f;  // radians (60°)

@@ -243,6 +243,23 @@ bool rayCrossesChange(vec3 origin, vec3 dir, uint hit) {
 // does not restart it), the bounce before for later ones.
 #if !LIT_BOUNCE_IRRADIANCE
 layout(binding = LIT_IMG_VOXEL_RAY_SOURCE, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelRaySource;
+// Later bounces (uChangeSubset ≥ 0, BouncePass's BounceTrace::changeSubset): the light is linear in
+// the light it gathers, so bounce k + 1 adds to bounce k what it reflects of bounce k's change,
+//   L_{k+1} = L_k + albedo · Σ W_i/π · C_i(L_k − L_{k−1}),
+// which uses no more rays than the change needs: one in uChangeStride of the voxel's rays, subset
+// uChangeSubset (rotating from bounce to bounce). The change after the first bounce is smooth (a
+// gather already); the direct light, whose small bright patches need every ray, is gathered
+// whole by the first bounce of an update. The sky does not change: a ray that leaves sees none.
+uniform int uChangeSubset;  // −1: gather the light itself over every ray
+uniform int uChangeStride;
+layout(binding = LIT_IMG_VOXEL_CHANGE, LIT_RADIANCE_IMAGE_FORMAT) uniform readonly image3D voxelChange;
+bool gathersChange() { return uChangeSubset >= 0; }
+vec3 rayHitChange(uint hit) {
+    if (hit == kRayHitSky || (hit & kRayHitBack) != 0u) return vec3(0.0);
+    return decodeRadiance(imageLoad(voxelChange, unpackVoxelCoord(hit)).rgb);
+}
+#else
+bool gathersChange() { return false; }
 #endif
 vec3 rayHitRadiance(uint hit, vec3 dir) {
     if (hit == kRayHitSky) return skyRadiance(dir);
@@ -270,7 +287,19 @@ vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
     uint hash = pcgHash(uint(v.x) + pcgHash(uint(v.y) + pcgHash(uint(v.z))));
     vec2 shift = vec2(float(hash & 0xffffu), float(hash >> 16u)) / 65536.0;
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < rays; ++i) {
+    // A change gathers ray i = stride·j + (j + subset) mod stride, j = 0 .. rays/stride − 1: every
+    // stride-th sin²θ stratum, and (rays being a Hammersley set, whose azimuth is the radical
+    // inverse of i) the low bits of i, hence the azimuth's quarter, cycling with j.
+    bool change = gathersChange();
+#if LIT_BOUNCE_IRRADIANCE
+    int stride = 1, subset = 0;
+#else
+    int stride = change ? max(uChangeStride, 1) : 1;
+    int subset = change ? (uChangeSubset + int((hash >> 7u) & 0xffu)) % stride : 0;
+#endif
+    int count = max(rays / stride, 1);
+    for (int j = 0; j < count; ++j) {
+        int i = stride * j + (j + subset) % stride;
         float u1 = (float(i) + (float(set) + shift.x) / float(kConeSetCount)) / float(rays);
         float phi = 6.28318530718 * fract(radicalInverse(uint(i)) + float(set) / float(kConeSetCount) + shift.y);
         float r = sqrt(u1);
@@ -287,9 +316,15 @@ vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
             hit = marchVoxelRay(origin, dir);
             if (rayHitMode() == 1) rayHits[slot] = hit;
         }
+#if !LIT_BOUNCE_IRRADIANCE
+        if (change) {
+            sum += rayHitChange(hit);
+            continue;
+        }
+#endif
         sum += rayHitRadiance(hit, dir);
     }
-    return sum / float(rays);
+    return sum / float(count);
 }
 #endif
 
@@ -331,6 +366,33 @@ vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float m
     return traceDiffuse(origin, normal, aperture, maxDistance);
 #endif
 }
+
+#if !LIT_BOUNCE_IRRADIANCE
+// Adds voxel v's bounced light (radiance − direct) and its change from the bounce before to the
+// change bins (every bounce until converged: uMeasureChange).
+void measureChange(ivec3 v, vec3 radiance, vec3 previous, vec3 direct) {
+    const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);
+    // The change is measured against the bounced light, not the whole radiance: in a room lit
+    // through a window the sunlit outside and the floor's patch outweigh the light inside,
+    // and against them the bounces looked converged after three (the room read 0.59 of the
+    // reference, with 8 bounces 0.86).
+    float luminance = dot(radiance, kLuminance);
+    float change = abs(luminance - dot(previous, kLuminance));
+    luminance -= dot(direct, kLuminance);
+    uint bin = (uint(v.x) + 7u * uint(v.y) + 13u * uint(v.z)) % uint(LIT_BOUNCE_CHANGE_BINS);
+    // Fixed point, rounded stochastically (a per-voxel offset in [0, 1) before truncating):
+    // truncation dropped every change below 1/256 W/(sr·m²), most of a dim room's, and its
+    // bounces looked converged after four. The sums stay unbiased; over 10⁵ voxels the
+    // rounding adds a few tenths of a per cent. Clamped per voxel; a bin of 32 768 voxels (a
+    // million in all) overflows only at a mean radiance above 500 W/(sr·m²).
+    uint dither = pcgHash(uint(v.x) + pcgHash(uint(v.y) + pcgHash(uint(v.z))));
+    float offsetLuminance = float(dither & 0xffffu) * (1.0 / 65536.0);
+    float offsetChange = float(dither >> 16u) * (1.0 / 65536.0);
+    atomicAdd(changeBins[bin], uint(min(luminance * LIT_BOUNCE_CHANGE_SCALE + offsetLuminance, 4194304.0)));
+    atomicAdd(changeBins[LIT_BOUNCE_CHANGE_BINS + bin],
+              uint(min(change * LIT_BOUNCE_CHANGE_SCALE + offsetChange, 4194304.0)));
+}
+#endif
 
 void main() {
     ivec3 v;
@@ -383,7 +445,8 @@ void main() {
     vec3 back = !twoSided ? front
                           : (backOpen ? bounceIrradiance(v, backOrigin, -normal, aperture, maxDistance, 1) : vec3(0.0));
 #if LIT_VOXEL_RAYS
-    if (rayHitMode() != 0) rayEpochs[gListIndex] = uRayEpoch;  // both sides' hits hold now
+    // Both sides' hits hold now; a change's subset re-marched only some of them.
+    if (rayHitMode() != 0 && !gathersChange()) rayEpochs[gListIndex] = uRayEpoch;
 #endif
 #if LIT_BOUNCE_IRRADIANCE
     if (uBlend < 1.0) {
@@ -399,6 +462,22 @@ void main() {
     float openSides = float(frontOpen) + float(backOpen);
     vec3 irradiance = openSides > 0.0 ? (front + back) / openSides : vec3(0.0);
     vec3 radiance = decodeRadiance(direct.rgb) + albedo.rgb * irradiance * voxel.traceParams.x;
+#if LIT_VOXEL_RAYS
+    if (gathersChange()) {
+        // What this bounce adds to the one before (level 0) is stored as it is, not their sum: the
+        // bounce copy adds it, and keeps it unrounded as the change the next bounce gathers (a
+        // change taken from two rounded sums lost the light of the later bounces where it fell
+        // below the sum's half-float rounding: 1 % of a sun-lit room's bounced light).
+        vec3 added = albedo.rgb * irradiance * voxel.traceParams.x;
+        imageStore(voxelBounce, v, vec4(encodeRadiance(added), kBounceAddsAlpha));
+        if (uMeasureChange != 0) {
+            vec4 before = imageLoad(voxelRaySource, v);
+            vec3 previous = before.a > 0.0 ? decodeRadiance(before.rgb / before.a) : decodeRadiance(direct.rgb);
+            measureChange(v, previous + added, previous, decodeRadiance(direct.rgb));
+        }
+        return;
+    }
+#endif
     imageStore(voxelBounce, v, vec4(encodeRadiance(radiance), 1.0));
     if (uMeasureChange != 0) {
         // The bounce before: where the rays take their light (the direct volume for the second
@@ -408,27 +487,8 @@ void main() {
 #else
         vec4 before = texelFetch(voxelRadianceTexture, v, 0);
 #endif
-        vec3 previous = before.a > 0.0 ? decodeRadiance(before.rgb / before.a) : vec3(0.0);
-        const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);
-        // The change is measured against the bounced light, not the whole radiance: in a room lit
-        // through a window the sunlit outside and the floor's patch outweigh the light inside,
-        // and against them the bounces looked converged after three (the room read 0.59 of the
-        // reference, with 8 bounces 0.86).
-        float luminance = dot(radiance, kLuminance);
-        float change = abs(luminance - dot(previous, kLuminance));
-        luminance -= dot(decodeRadiance(direct.rgb), kLuminance);
-        uint bin = (uint(v.x) + 7u * uint(v.y) + 13u * uint(v.z)) % uint(LIT_BOUNCE_CHANGE_BINS);
-        // Fixed point, rounded stochastically (a per-voxel offset in [0, 1) before truncating):
-        // truncation dropped every change below 1/256 W/(sr·m²), most of a dim room's, and its
-        // bounces looked converged after four. The sums stay unbiased; over 10⁵ voxels the
-        // rounding adds a few tenths of a per cent. Clamped per voxel; a bin of 32 768 voxels (a
-        // million in all) overflows only at a mean radiance above 500 W/(sr·m²).
-        uint dither = pcgHash(uint(v.x) + pcgHash(uint(v.y) + pcgHash(uint(v.z))));
-        float offsetLuminance = float(dither & 0xffffu) * (1.0 / 65536.0);
-        float offsetChange = float(dither >> 16u) * (1.0 / 65536.0);
-        atomicAdd(changeBins[bin], uint(min(luminance * LIT_BOUNCE_CHANGE_SCALE + offsetLuminance, 4194304.0)));
-        atomicAdd(changeBins[LIT_BOUNCE_CHANGE_BINS + bin],
-                  uint(min(change * LIT_BOUNCE_CHANGE_SCALE + offsetChange, 4194304.0)));
+        measureChange(v, radiance, before.a > 0.0 ? decodeRadiance(before.rgb / before.a) : vec3(0.0),
+                      decodeRadiance(direct.rgb));
     }
 #endif
 }

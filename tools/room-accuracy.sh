@@ -48,7 +48,9 @@ quiet "$render" "$scene" --size "$size" --reference --spp 1 --node-map "$tmp/nod
 # The cost at the editor's size, 1280×720: ROOM_COST_ROUNDS interleaved rounds of GI off and the
 # defaults, each the single-frame steady state benchmarks time (docs/PERFORMANCE.md, "The GI budget
 # in benchmarks"); then a light edit's update, every bounce, against a re-voxelization, all in one
-# frame and spread as the editor spreads it (--bench-gi-updates).
+# frame (--bench-gi-updates), with the later bounces' change gathers (the default) and with every
+# ray in every bounce; then the editor itself (under xvfb-run, when both are there): a light edit
+# in a script, timed from the edit's frame to the frame that completes its update (--frame-log).
 cost_size=1280x720
 for round in $(seq "$cost_rounds"); do
     quiet "$render" "$scene" --size "$cost_size" --single-frame --gi off --bench 4 --json "$tmp/cost-off-$round.json"
@@ -56,30 +58,47 @@ for round in $(seq "$cost_rounds"); do
 done
 quiet "$render" "$scene" --size "$cost_size" --single-frame --voxels "$voxels" --bench 1 --bench-gi-updates 3
 cp "$tmp/log" "$tmp/edits.txt"
-quiet "$render" "$scene" --size "$cost_size" --voxels "$voxels" --bench 1 --bench-gi-updates 3 \
-    --gi-update-per-frame 16384 --gi-refine-per-frame 0
-cp "$tmp/log" "$tmp/edits-editor.txt"
+quiet "$render" "$scene" --size "$cost_size" --single-frame --voxels "$voxels" --set gi.laterBounceRayStride=1 \
+    --bench 1 --bench-gi-updates 3
+cp "$tmp/log" "$tmp/edits-every-ray.txt"
+editor="$build/editor/lit-editor"
+if [ -x "$editor" ] && command -v xvfb-run > /dev/null; then
+    printf 'setting gi.voxelResolution %s\nwait gi\nwait 3\nselect sun\nset light.intensity 3\nwait gi\nwait 2\nquit\n' \
+        "$voxels" > "$tmp/edit.lit"
+    for round in $(seq "$cost_rounds"); do
+        quiet xvfb-run -a -s "-screen 0 1400x900x24" "$editor" "$scene" --script "$tmp/edit.lit" --size "$cost_size" \
+            --frame-log "$tmp/editor-$round.csv"
+    done
+fi
 cost_rows="$("$python" - "$tmp" "$cost_rounds" <<'PY'
-import json, re, sys
+import csv, json, os, re, sys
 tmp, rounds = sys.argv[1], int(sys.argv[2])
-steady = []
 for r in range(1, rounds + 1):
     off = json.load(open(f"{tmp}/cost-off-{r}.json"))["frameMs"]["median"]
     on = json.load(open(f"{tmp}/cost-on-{r}.json"))["frameMs"]["median"]
-    steady.append(on)
     print(f"| frame, round {r} | {off:.1f} | {on:.1f} | {on / off:.2f} |")
-steady.sort()
-frame = steady[len(steady) // 2]
-for line in open(f"{tmp}/edits.txt"):
-    m = re.match(r"gi-update round (\d+): light edit ([\d.]+) ms .* re-voxelize ([\d.]+) ms", line)
-    if m:
-        print(f"| light edit, every bounce in one frame, round {m[1]} (GPU ms; re-voxelization {float(m[3]):.0f}) | | {float(m[2]):.0f} | |")
-for line in open(f"{tmp}/edits-editor.txt"):
-    m = re.match(r"gi-update round (\d+), spread over frames: the light edit's update took (\d+) more frames \(GI passes ([\d.]+) ms\)", line)
-    if m:
-        frames, gi = int(m[2]), float(m[3])
-        print(f"| light edit spread as the editor does, round {m[1]}: {frames} frames after the edit's, "
-              f"GI passes {gi:.0f} ms; their wall time ≈ frames × the steady frame + GI passes | | {frames * frame + gi:.0f} | |")
+for name, what in (("edits.txt", "later bounces gather their change over 1 ray in 4"),
+                   ("edits-every-ray.txt", "every ray in every bounce")):
+    for line in open(f"{tmp}/{name}"):
+        m = re.match(r"gi-update round (\d+): light edit ([\d.]+) ms .* re-voxelize ([\d.]+) ms", line)
+        if m:
+            print(f"| light edit, every bounce in one frame, {what}, round {m[1]} (GPU ms; re-voxelization "
+                  f"{float(m[3]):.0f}) | | {float(m[2]):.0f} | |")
+for r in range(1, rounds + 1):
+    path = f"{tmp}/editor-{r}.csv"
+    if not os.path.exists(path):
+        continue
+    rows = list(csv.DictReader(open(path)))
+    done = [float(x["gi_update_done"]) for x in rows]
+    first = next(i for i, d in enumerate(done) if d >= 1.0)          # the scene's own update
+    edit = next(i for i in range(first, len(done)) if done[i] < 1.0)  # the light edit's frame
+    end = next(i for i in range(edit, len(done)) if done[i] >= 1.0)   # the frame that completes it
+    start = float(rows[edit]["start_s"])
+    seconds = float(rows[end]["start_s"]) + float(rows[end]["duration_ms"]) / 1000.0 - start
+    renders = sum(int(rows[i]["rendered"]) for i in range(edit, end + 1))
+    print(f"| light edit in the editor (every bounce, spread under its time budget), round {r}: {end - edit + 1} "
+          f"frames, {renders} of them rendered, from the edit's frame to the one that completes the update "
+          f"| | {seconds * 1000.0:.0f} | |")
 PY
 )"
 
@@ -134,7 +153,8 @@ mkdir -p "$(dirname "$out")"
     echo
     echo "The cost at ${cost_size/x/×}, ${voxels}³ (wall ms; GPU ms where it says; on this machine's llvmpipe): the steady frame"
     echo "is the median of 4 frames, GI off and on interleaved per round; a light edit's update runs until its"
-    echo "bounces converge:"
+    echo "bounces converge; the editor's time is wall time at the editor's default budget (GI ms / frame, GI ms"
+    echo "/ idle frame), its frames included:"
     echo
     echo "| what | GI off (ms) | GI on (ms) | on ÷ off |"
     echo "|---|---:|---:|---:|"

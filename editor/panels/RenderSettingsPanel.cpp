@@ -201,6 +201,12 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
             "through gaps and at grazing angles comes out right where cones blur it (docs/GI.md, \"Voxel rays\").\n"
             "0 = the accurate mode's cones. 32 (the default) cost about what the cones cost; more are smoother\n"
             "and slower");
+    changed |= ImGui::SliderInt("Later bounce rays", &s.gi.laterBounceRayStride, 1, kMaxLaterBounceRayStride,
+                                s.gi.laterBounceRayStride <= 1 ? "every ray" : "1 in %d");
+    tooltip("Every bounce after an update's first gathers only the change of the bounce before, over one\n"
+            "in this many of the voxel rays (the first gathers the light whole): with 1 in 4 (the default) a\n"
+            "light edit's bounces cost about 0.43 as much, and the image moves 0.5 % per pixel. Voxel rays and\n"
+            "RGBA16F radiance only (docs/GI.md, \"Bounces\")");
     changed |= ImGui::Checkbox("Voxelize changes only", &s.gi.voxelizeChangesOnly);
     tooltip("A moved object (gizmo drag, node animation) voxelizes again only the voxels it covered and\n"
             "covers, and the voxel rays that miss them replay their recorded hits instead of marching.\n"
@@ -232,6 +238,12 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
                 "counts above are then the most a frame traces: the GI measures what its voxels cost and\n"
                 "traces what fits. While only the GI works, the 3D image is rendered again when an update\n"
                 "completes and otherwise in at most a quarter of the time, so the UI stays responsive");
+        ImGui::DragFloat("GI ms / idle frame", &viewport.giIdleMillisecondsPerFrame, 0.5f, 0.0f, 1000.0f,
+                         viewport.giIdleMillisecondsPerFrame == 0.0f ? "as above" : "%.1f ms");
+        tooltip("The same while the update after an edit runs and nothing is touched (no input, no motion,\n"
+                "the interactive scale's grace over): the edit's light is final sooner, and the UI still\n"
+                "answers within about this plus its own frame. The voxel counts grow with it; the refinement\n"
+                "keeps GI ms / frame. Below GI ms / frame, or 0: as GI ms / frame");
     }
     changed |= comboInt("Indirect scale", s.indirect.scale, std::array{1, 2, 4});
     tooltip("Trace indirect light for one pixel in N x N and upsample edge-aware (1 = every pixel)");

@@ -49,6 +49,16 @@ void BouncePass::trace(const VoxelVolume& volume, const RayHitCache& cache, cons
         glBindImageTexture(LIT_IMG_VOXEL_RAY_SOURCE,
                            bounce.secondBounce ? volume.direct().id() : volume.radiance().id(), 0, GL_TRUE, 0,
                            GL_READ_ONLY, format);
+    // A change is gathered from the voxel rays' recorded hits, never while recording them (the
+    // subset would leave the other rays' hits unrecorded).
+    const bool change = bounce.changeSubset >= 0 && bounce.features.voxelRays > 0 && volume.change() &&
+                        bounce.rayHits != RayHits::Record && !bounce.secondBounce;
+    if (bounce.features.voxelRays > 0) {
+        glProgramUniform1i(program.id(), program.location("uChangeSubset"), change ? bounce.changeSubset : -1);
+        glProgramUniform1i(program.id(), program.location("uChangeStride"), bounce.changeStride);
+        if (change)
+            glBindImageTexture(LIT_IMG_VOXEL_CHANGE, volume.change().id(), 0, GL_TRUE, 0, GL_READ_ONLY, format);
+    }
     cache.bind(program, bounce.features, bounce.overList ? bounce.rayHits : RayHits::Off);
     const bool measure = bounce.measureChange && changeBins_;
     glProgramUniform1i(program.id(), program.location("uMeasureChange"), measure ? 1 : 0);
@@ -79,11 +89,12 @@ BounceChange BouncePass::readChange() const {
     return change;
 }
 
-void BouncePass::finish(const VoxelVolume& volume, bool overList, float tail) {
+void BouncePass::finish(const VoxelVolume& volume, const BounceFinish& how) {
     const int n = volume.resolution();
+    changeKept_ = false;
     if (n <= 0 || !volume.direct()) return;
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    if (overList && volume.occupiedList()) {
+    if (how.overList && volume.occupiedList()) {
         // Only the listed voxels: the bounce wrote those, and level 0 of the others is 0.
         const gl::Program& program = radianceFormatProgram(shaderRoot_, copy8_, copy16f_, volume.radianceRgba8(),
                                                            "bounce copy", "bounce_copy.comp.glsl");
@@ -94,7 +105,13 @@ void BouncePass::finish(const VoxelVolume& volume, bool overList, float tail) {
         glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_READ_WRITE,
                            volume.radianceFormat());
         glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-        glProgramUniform1f(program.id(), program.location("uTail"), tail);
+        glProgramUniform1f(program.id(), program.location("uTail"), how.tail);
+        changeKept_ = how.keepChange && volume.change();
+        glProgramUniform1i(program.id(), program.location("uWriteChange"), changeKept_ ? 1 : 0);
+        glProgramUniform1i(program.id(), program.location("uChangeFromDirect"), how.fromDirect ? 1 : 0);
+        if (changeKept_)
+            glBindImageTexture(LIT_IMG_VOXEL_CHANGE, volume.change().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                               volume.radianceFormat());
         glBindImageTexture(LIT_IMG_VOXEL_DIRECT, volume.direct().id(), 0, GL_TRUE, 0, GL_READ_ONLY,
                            volume.radianceFormat());
         dispatchOverVoxels(volume, program, true);

@@ -28,7 +28,29 @@ struct BounceTrace {
     VoxelRange range;           // list entries to trace (count 0: all)
     RayHits rayHits = RayHits::Off;
     bool measureChange = false;  // add to the change sums (readChange), for every bounce until converged
+    // ≥ 0: gather the bounce before's change (volume.change()) over this subset of the rays, one in
+    // changeStride (changeSubsetFor); −1: gather the light itself over every ray.
+    int changeSubset = -1;
+    int changeStride = 1;
 };
+
+// How the copy into level 0 ends a bounce (BouncePass::finish).
+struct BounceFinish {
+    bool overList = true;  // the listed voxels (false: the whole grid, the list having overflowed)
+    // > 0: add the bounces still to come as tail × this bounce's change (BounceConvergence::tail).
+    float tail = 0.0f;
+    // The bounce gathered the direct light (BounceTrace::secondBounce): its change is measured from
+    // that, not from level 0, which may still hold the last update's light.
+    bool fromDirect = false;
+    bool keepChange = false;  // keep the bounce's change for the next to gather (when volume.change() exists)
+};
+
+// The subset of the rays bounce `bounce` (3, 4, ...) gathers its change over with one ray in
+// `stride` (GiSettings::laterBounceRayStride), rotating so that successive bounces take different
+// rays; −1 (every ray) for a stride of 1 or fewer than two rays a subset.
+inline int changeSubsetFor(int bounce, int rays, int stride) {
+    return stride > 1 && rays >= 2 * stride ? bounce % stride : -1;
+}
 
 // What one bounce did to the voxels' light: the luminance of its bounced light (radiance − direct)
 // and of its change from the bounce before, summed over the voxels it traced (W/(sr·m²)).
@@ -44,9 +66,12 @@ public:
 
     void trace(const VoxelVolume& volume, const RayHitCache& cache, const BounceTrace& bounce);
     // Copies the bounce into level 0: the listed voxels only (bounce_copy.comp.glsl), or the whole
-    // grid when `overList` is false. Over the list, `tail` > 0 adds the bounces still to come as
-    // `tail` × this bounce's change (BounceConvergence::tail); the whole grid's copy adds nothing.
-    void finish(const VoxelVolume& volume, bool overList, float tail = 0.0f);
+    // grid when the list overflowed. Over the list, a tail adds the bounces still to come, and
+    // the bounce's change may be kept for the next to gather (volume.change(), when it exists); the
+    // whole grid's copy does neither (changeKept() false).
+    void finish(const VoxelVolume& volume, const BounceFinish& how);
+    // Whether the last finish kept its bounce's change.
+    bool changeKept() const { return changeKept_; }
     // Every bounce after a geometry edit starts from the last update's light (bounce_warm_start.comp.glsl):
     // keepIndirect, before the voxelization, over the old list, keeps each voxel's indirect light in
     // the bounce volume; addKeptIndirect, after the injection, over the new list, adds it to level 0.
@@ -68,6 +93,7 @@ private:
     gl::Program warm8_, warm16f_;  // bounce_warm_start.comp.glsl, built by the first keepIndirect
     void warmStart(const VoxelVolume& volume, int mode);
     gl::Buffer changeBins_;        // LIT_SSBO_BOUNCE_CHANGE, made by the first resetChange
+    bool changeKept_ = false;
 };
 
 // The compute program `file` for RGBA8 or RGBA16F volumes (LIT_BOUNCE_RGBA8), built into

@@ -6,6 +6,8 @@
 // render setting. The editor spreads the work to keep its frame rate; lit-render finishes it in
 // the still's one frame.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -28,6 +30,17 @@ struct GiBudget {
     static constexpr GiBudget converge() { return {kAll, kAll, 0.0}; }
     // The whole update in one frame, no refinement: the single-frame steady state benchmarks time.
     static constexpr GiBudget updateOnly() { return {kAll, 0, 0.0}; }
+    // This budget with its time raised to `ms` and its voxel counts scaled alike (kAll stays), when
+    // it has a time and `ms` is more; else unchanged (the editor's budget while nothing is touched).
+    GiBudget widenedTo(double ms) const {
+        if (!(milliseconds > 0.0) || !(ms > milliseconds)) return *this;
+        const double factor = ms / milliseconds;
+        const auto scaled = [factor](std::uint32_t voxels) {
+            if (voxels == kAll) return kAll;
+            return static_cast<std::uint32_t>(std::min(std::ceil(voxels * factor), static_cast<double>(kAll - 1)));
+        };
+        return {scaled(updateVoxels), scaled(refineVoxels), ms};
+    }
     bool operator==(const GiBudget&) const = default;
 };
 
@@ -35,5 +48,9 @@ struct GiBudget {
 // costs about a fifth of a marched one (docs/PERFORMANCE.md, "GI update"), so such a frame costs
 // what a marching one does and an edit's light is final in a quarter of the frames.
 inline constexpr int kReplayVoxelsPerFrameFactor = 4;
+// ... and twice as many again in a bounce that gathers the change of the one before over a subset
+// of the rays (GiSettings::laterBounceRayStride): such a bounce costs 0.43 of one that gathers the
+// light over every ray at stride 4 (the sun room at 128³, docs/PERFORMANCE.md, "GI update").
+inline constexpr int kChangeVoxelsPerFrameFactor = 2;
 
 }  // namespace lit

@@ -14,6 +14,7 @@ GiLightKey GiLightKey::of(const RenderSettings& settings) {
     key.voxelIrradiance = gi.voxelIrradiance();
     key.anisotropic = gi.anisotropicVoxels();
     key.voxelRays = std::clamp(gi.voxelRays, 0, kMaxVoxelRays);
+    key.laterBounceRayStride = std::clamp(gi.laterBounceRayStride, 1, kMaxLaterBounceRayStride);
     key.footprint = gi.footprintPerHeight();
     key.aperture = gi.diffuseConeAperture;
     key.stepScale = gi.coneStepScale;
@@ -28,7 +29,8 @@ bool GiLightKey::retraces(const GiLightKey& last) const {
         return true;
     // What the traces read matters only when something traces.
     const bool traced = last.bounces > 1 || last.voxelIrradiance;
-    return traced && (anisotropic != last.anisotropic || voxelRays != last.voxelRays || footprint != last.footprint ||
+    return traced && (anisotropic != last.anisotropic || voxelRays != last.voxelRays ||
+                      laterBounceRayStride != last.laterBounceRayStride || footprint != last.footprint ||
                       aperture != last.aperture || stepScale != last.stepScale || traceDistance != last.traceDistance ||
                       intensity != last.intensity);
 }

@@ -38,6 +38,7 @@ struct GiLightKey {
     bool voxelIrradiance = false;  // the cached mode's irradiance is traced after the bounces
     bool anisotropic = false;      // the directional chains are built
     int voxelRays = 0;
+    int laterBounceRayStride = 1;
     float footprint = 0.0f, aperture = 0.0f, stepScale = 0.0f, traceDistance = 0.0f, intensity = 0.0f;
     float radianceRange = 0.0f;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "scene/Scene.h"
 
@@ -28,6 +29,10 @@ VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Lo
       filter_(shaderRoot) {}
 
 std::vector<Pass*> VoxelGi::passes() { return {&voxelize_, &solid_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_}; }
+
+bool VoxelGi::gathersChanges(const GiLightKey& light) {
+    return changeSubsetFor(3, light.voxelRays, light.laterBounceRayStride) >= 0;
+}
 
 RayHits VoxelGi::rayHitsFor(int rays) {
     const GiState& state = scheduler_.state();
@@ -159,6 +164,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     if (changes.inject) {
         // Before the injection, which then writes the bounces' direct radiance beside level 0.
         if (light.bounces > 1) volume_.ensureBounceVolumes();
+        changeReady_ = false;  // the next bounce gathers the new direct light whole
+        ++injections_;
         const GiScheduler::UpdateStart start = scheduler_.startUpdate(changes, light, budget);
         {
             Profiler::Scope scope(profiler_, "inject");
@@ -191,11 +198,17 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                 const RayHits hits = rayHitsFor(features.voxelRays);
                 if (light.untilConverged) bounce_.resetChange();
                 rayHitCache_.beginPass();
-                bounce_.trace(volume_, rayHitCache_, {features, b == 2 && !warmStart_, overList, {}, hits, light.untilConverged});
+                const bool fromDirect = b == 2 && !warmStart_;
+                bounce_.trace(volume_, rayHitCache_,
+                              {features, fromDirect, overList, {}, hits, light.untilConverged,
+                               changeReady_ ? changeSubsetFor(b, features.voxelRays, light.laterBounceRayStride) : -1,
+                               light.laterBounceRayStride});
                 const bool converged = light.untilConverged && convergence_.add(bounce_.readChange().relative());
                 const bool last = b == start.bouncesNow + 1 || converged;
                 // The last bounce adds the ones still missing (BounceConvergence::tail).
-                bounce_.finish(volume_, overList, converged ? static_cast<float>(convergence_.tail()) : 0.0f);
+                bounce_.finish(volume_, {overList, converged ? static_cast<float>(convergence_.tail()) : 0.0f, fromDirect,
+                                         !converged && gathersChanges(light)});
+                changeReady_ = bounce_.changeKept();
                 listTraced(hits);
                 // Voxel rays read level 0 where they end and only the mips' occupancy, which a
                 // bounce does not change: the mips are rebuilt after the last bounce alone.
@@ -263,20 +276,39 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         // A spread bounce: the last share ends it (level 0 and its mips); after the last bounce
         // the irradiance starts in the next frame.
         Profiler::Scope scope(profiler_, "bounces");
-        const std::uint32_t perFrame = scheduler_.voxelsPerFrame(budget, light.voxelRays);
+        if (progress.bounceNext == 0) {
+            bounceGathersChange_ = changeReady_;
+            bounceStartInjections_ = injections_;
+        }
+        // After an injection while the bounce ran (a light dragged) its other voxels gather the
+        // light whole, and so does the next bounce: the change holds the old direct light.
+        const bool sameLight = injections_ == bounceStartInjections_;
+        const int bounceNumber = progress.bounce;
+        const int changeSubset = bounceGathersChange_ && sameLight
+                                     ? changeSubsetFor(bounceNumber, features.voxelRays, light.laterBounceRayStride)
+                                     : -1;
+        std::uint32_t perFrame = scheduler_.voxelsPerFrame(budget, light.voxelRays);
+        if (changeSubset >= 0 && perFrame > 0)
+            perFrame = static_cast<std::uint32_t>(std::min<std::uint64_t>(
+                std::uint64_t{perFrame} * kChangeVoxelsPerFrameFactor, std::numeric_limits<std::uint32_t>::max()));
         const VoxelRange range = scheduler_.bounceShare(perFrame);
         countUpdate(range.count, perFrame);
         const RayHits hits = rayHitsFor(features.voxelRays);
         if (light.untilConverged && range.first == 0) bounce_.resetChange();
         if (range.first == 0) rayHitCache_.beginPass();
-        bounce_.trace(volume_, rayHitCache_, {features, progress.bounce == 2 && !warmStart_, true, range, hits, light.untilConverged});
+        const bool fromDirect = progress.bounce == 2 && !warmStart_;
+        bounce_.trace(volume_, rayHitCache_,
+                      {features, fromDirect, true, range, hits, light.untilConverged, changeSubset,
+                       light.laterBounceRayStride});
         const bool passEnds = range.first + range.count >= scheduler_.state().occupied;
         const bool converged = passEnds && light.untilConverged && convergence_.add(bounce_.readChange().relative());
         if (light.untilConverged && convergence_.expectedBounces() > 0)
             scheduler_.estimateBounces(converged ? progress.bounce : convergence_.expectedBounces());
         if (scheduler_.advanceBounce(range, converged)) {
             listTraced(hits);  // the pass ran over the whole list from 0
-            bounce_.finish(volume_, true, converged ? static_cast<float>(convergence_.tail()) : 0.0f);
+            bounce_.finish(volume_, {true, converged ? static_cast<float>(convergence_.tail()) : 0.0f, fromDirect,
+                                     !converged && gathersChanges(light)});
+            changeReady_ = bounce_.changeKept() && sameLight;
             // Voxel rays need the mips' occupancy only (see update()): rebuilt after the last bounce.
             if (features.voxelRays == 0 || scheduler_.state().progress.bounce == 0)
                 mipmap_.execute(volume_, light.anisotropic, overList);

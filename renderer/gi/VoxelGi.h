@@ -105,6 +105,8 @@ public:
 private:
     // A trace over the occupied-voxel list with `rays` rays: what it does with the ray-hit cache.
     RayHits rayHitsFor(int rays);
+    // Whether the later bounces gather the change of the bounce before over a subset of the rays.
+    static bool gathersChanges(const GiLightKey& light);
     // The changed boxes to voxelize instead of the whole volume, if a voxelization of them is
     // possible and asked for (RenderSettings: voxelizeChangesOnly).
     std::optional<std::vector<VoxelBox>> changedBoxes(const std::vector<ItemPose>& items, const VoxelKey& voxels,
@@ -143,6 +145,12 @@ private:
     // The update's bounces started from the last update's light (level 0 holds it): its second
     // bounce reads level 0, not the direct volume.
     bool warmStart_ = false;
+    // The change volume holds the last bounce's change and no injection came since: the next
+    // bounce may gather that change over a subset of the rays (BounceTrace::changeSubset).
+    bool changeReady_ = false;
+    bool bounceGathersChange_ = false;  // changeReady_ when the spread bounce under way started
+    std::uint64_t injections_ = 0;            // injections so far
+    std::uint64_t bounceStartInjections_ = 0;  // injections_ when the spread bounce under way started
     std::uint64_t generation_ = 0;
     // The update waiting for its GPU timings to be logged: why it ran, in which frame.
     std::string pendingReason_;

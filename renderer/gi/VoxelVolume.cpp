@@ -39,7 +39,9 @@ std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     // N × N × 2N for two sides in the radiance format, and two sets of RGBA32UI gather texels, the
     // one shown while the other is written after a geometry edit); counted in every mode.
     const std::size_t irradiance = 2 * voxels * texel + 2 * voxels * 16;
-    return material + radiance + (bounces ? 2 * voxels * texel : 0) + irradiance;
+    // Bounces: the direct and bounce volumes, and with RGBA16F the change volume (a bounce's
+    // change, which the later bounces gather: BouncePass).
+    return material + radiance + (bounces ? (rgba8 ? 2 : 3) * voxels * texel : 0) + irradiance;
 }
 
 std::size_t queryFreeGpuMemory() {
@@ -116,6 +118,7 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     directional_ = {};
     direct_ = {};
     bounce_ = {};
+    change_ = {};
     parentListsValid_ = false;  // the chains above are zero: nothing stale
     directionalStale_ = false;
     clearMaterials();
@@ -321,7 +324,8 @@ std::size_t VoxelVolume::radianceBytes() const {
 }
 
 std::size_t VoxelVolume::bounceBytes() const {
-    return direct_ ? 2 * static_cast<std::size_t>(resolution_) * resolution_ * resolution_ * (rgba8_ ? 4 : 8) : 0;
+    const std::size_t volumes = (direct_ ? 2 : 0) + (change_ ? 1 : 0);
+    return volumes * static_cast<std::size_t>(resolution_) * resolution_ * resolution_ * (rgba8_ ? 4 : 8);
 }
 
 void VoxelVolume::bindDirectional() const {
@@ -354,6 +358,13 @@ void VoxelVolume::ensureBounceVolumes() {
     const int n = resolution_;
     direct_ = gl::Texture("voxel direct radiance", {GL_TEXTURE_3D, radianceFormat(), n, n, n, 1});
     bounce_ = gl::Texture("voxel bounce radiance", {GL_TEXTURE_3D, radianceFormat(), n, n, n, 1});
+    // A change may be negative (a bounce after a warm start): RGBA8 cannot hold it, and its
+    // bounces gather the whole light every time.
+    if (!rgba8_) {
+        change_ = gl::Texture("voxel bounce change", {GL_TEXTURE_3D, radianceFormat(), n, n, n, 1});
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearTexImage(change_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    }
 }
 
 std::string VoxelVolume::memoryReport() const {

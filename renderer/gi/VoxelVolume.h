@@ -133,7 +133,7 @@ public:
     const gl::Texture& directional(int axis) const { return directional_[static_cast<std::size_t>(axis)]; }
     // Binds the three directional volumes to LIT_TEX_VOXEL_DIRECTIONAL_FIRST + axis.
     void bindDirectional() const;
-    // Allocates the direct and bounce volumes if they are missing (multiple bounces).
+    // Allocates the direct, bounce and (RGBA16F) change volumes if they are missing (multiple bounces).
     void ensureBounceVolumes();
     // The three directional volumes (anisotropic voxels), made zeroed on first use and freed when
     // anisotropic voxels are switched off: the default mode does not pay their memory.
@@ -141,12 +141,15 @@ public:
     void releaseDirectionalVolumes();
     const gl::Texture& direct() const { return direct_; }
     const gl::Texture& bounce() const { return bounce_; }
+    // The last bounce's change from the one before, L_k − L_(k−1) (BouncePass::finish writes it,
+    // later bounces gather it); RGBA16F volumes only, else empty.
+    const gl::Texture& change() const { return change_; }
     const gl::Buffer& uniforms() const { return uniforms_; }
 
     // Bytes of GPU memory per volume and in total (radiance counted with its mip chain).
     std::size_t materialBytes() const;  // albedo + normal + emission + surface
     std::size_t radianceBytes() const;  // isotropic chain + the six directional chains while they exist
-    std::size_t bounceBytes() const;    // direct + bounce volumes (0 until allocated)
+    std::size_t bounceBytes() const;    // direct + bounce + change volumes (0 until allocated)
     std::size_t listBytes() const;      // the occupied-voxel list, its bit per voxel and the solid bits
     std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes() + listBytes(); }
     std::string memoryReport() const;  // "albedo 8.0 MiB, normal 8.0 MiB, ... total 54.9 MiB"
@@ -168,7 +171,7 @@ private:
         return {&albedo_, &normal_, &emission_, &surface_};
     }
     std::array<gl::Texture, LIT_VOXEL_AXIS_COUNT> directional_;
-    gl::Texture direct_, bounce_;
+    gl::Texture direct_, bounce_, change_;
     gl::Buffer uniforms_;
     gl::Buffer occupied_;
     gl::Buffer listed_;

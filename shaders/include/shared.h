@@ -123,6 +123,9 @@ using mat4 = glm::mat4;
 // a point of each fragment's plane in the voxel, in [0,1]³ of the voxel; the voxel rays end on that
 // plane (bounce.comp.glsl). Unit 7 is the mipmap pass's third destination, never bound with it.
 #define LIT_IMG_VOXEL_SURFACE 7
+// A bounce's change from the one before (VoxelVolume::change): written by the bounce copy, read by
+// the later bounces' voxel rays. Unit 2 is the emission volume's, which neither pass binds.
+#define LIT_IMG_VOXEL_CHANGE 2
 
 // ---- Voxelization and radiance injection (VoxelizePass, InjectPass) ------------------------
 #define LIT_VOXEL_EMISSION_RANGE 16.0  // radiance (W/(sr·m²)) stored as 1.0 in the emission volume; = VoxelVolume::kEmissionRange

@@ -18,6 +18,9 @@ vec3 voxelCenter(ivec3 v) { return voxel.volumeMin.xyz + (vec3(v) + 0.5) * voxel
 // Radiance as stored in the volume (RGBA8 volumes hold radiance × radianceScale.x).
 vec3 encodeRadiance(vec3 radiance) { return radiance * voxel.radianceScale.x; }
 vec3 decodeRadiance(vec3 stored) { return stored * voxel.radianceScale.y; }
+// The bounce volume's alpha where a voxel's bounce holds what it adds to the bounce before rather
+// than its light (bounce.comp.glsl's later bounces, RGBA16F only; bounce_copy.comp.glsl adds it).
+const float kBounceAddsAlpha = 2.0;
 
 // RGBA8 packed in a uint, as unpackUnorm4x8 expects (x in the low byte).
 vec4 unpackVoxel(uint bits) { return unpackUnorm4x8(bits); }

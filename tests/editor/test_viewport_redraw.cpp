@@ -107,6 +107,26 @@ TEST(ViewportRedraw, GiWorkRendersTheImageOnlyNowAndThen) {
     EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 10.251, 0.005), FrameWork::Render);
 }
 
+TEST(ViewportRedraw, AnUpdateAboutToCompleteHoldsBackItsProgressImage) {
+    const FrameInputs inputs = someInputs();
+    const ViewportRedraw redraw = renderedOnce(inputs, 10.0);
+    const double render = 0.3;
+    // Four renders' time since the last: the progress image is due, unless the update is expected
+    // to complete within one render (its whole light then comes that much sooner) ...
+    EXPECT_EQ(redraw.work(RedrawReason::GiUpdate, 11.25, render, 0.5), FrameWork::Render);
+    EXPECT_EQ(redraw.work(RedrawReason::GiUpdate, 11.25, render, 0.2), FrameWork::GiOnly);
+    // ... for at most twice that time, and the refinement's images are not held.
+    EXPECT_EQ(redraw.work(RedrawReason::GiUpdate, 12.45, render, 0.2), FrameWork::Render);
+    EXPECT_EQ(redraw.work(RedrawReason::GiRefine, 13.05, render, 0.0), FrameWork::Render);
+}
+
+TEST(ViewportRedraw, TheUpdatesTimeLeftFollowsItsPaceSoFar) {
+    EXPECT_DOUBLE_EQ(giSecondsLeft(1.0, 0.5f), 1.0);
+    EXPECT_NEAR(giSecondsLeft(1.5, 0.75f), 0.5, 1e-6);
+    EXPECT_EQ(giSecondsLeft(3.0, 1.0f), 0.0);
+    EXPECT_TRUE(std::isinf(giSecondsLeft(0.2, 0.01f))) << "too early to tell";
+}
+
 TEST(ViewportRedraw, TemporalAccumulationRendersUntilItsHistoryIsFull) {
     FrameInputs inputs = someInputs();
     inputs.settings.indirect.temporalAccumulation = true;

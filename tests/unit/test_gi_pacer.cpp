@@ -96,3 +96,16 @@ TEST(GiPacer, NeverBelowTheLeastAFrameTraces) {
     pacer.measured(1, 1000.0);  // 10 ms a voxel: 25 ms would allow 2
     EXPECT_EQ(pacer.paced({1u << 24, 0, 25.0}).updateVoxels, GiPacer::kMinVoxels);
 }
+
+TEST(GiBudget, WidenedScalesTheTimeAndTheCountsAlike) {
+    const GiBudget editor{16384, 8192, 25.0};
+    const GiBudget idle = editor.widenedTo(50.0);
+    EXPECT_EQ(idle.milliseconds, 50.0);
+    EXPECT_EQ(idle.updateVoxels, 32768u);
+    EXPECT_EQ(idle.refineVoxels, 16384u);
+    EXPECT_EQ(GiBudget({GiBudget::kAll, 0, 25.0}).widenedTo(100.0).updateVoxels, GiBudget::kAll);
+    // Never narrowed, and a budget of counts alone (no time) stays as it is.
+    EXPECT_EQ(editor.widenedTo(10.0), editor);
+    EXPECT_EQ(editor.widenedTo(0.0), editor);
+    EXPECT_EQ(GiBudget({4096, 1024, 0.0}).widenedTo(50.0), GiBudget({4096, 1024, 0.0}));
+}
