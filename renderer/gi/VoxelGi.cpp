@@ -164,7 +164,10 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     if (changes.inject) {
         // Before the injection, which then writes the bounces' direct radiance beside level 0.
         if (light.bounces > 1) volume_.ensureBounceVolumes();
-        changeReady_ = false;  // the next bounce gathers the new direct light whole
+        // The next bounce gathers the new direct light whole, and the one after it too unless the next
+        // reads the direct light itself: level 0 holds the old direct light until a bounce replaced it.
+        changeReady_ = false;
+        sourceHoldsDirect_ = false;
         ++injections_;
         const GiScheduler::UpdateStart start = scheduler_.startUpdate(changes, light, budget);
         {
@@ -208,7 +211,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                 // The last bounce adds the ones still missing (BounceConvergence::tail).
                 bounce_.finish(volume_, {overList, converged ? static_cast<float>(convergence_.tail()) : 0.0f, fromDirect,
                                          !converged && gathersChanges(light)});
-                changeReady_ = bounce_.changeKept();
+                changeReady_ = bounce_.changeKept() && (fromDirect || sourceHoldsDirect_);
+                sourceHoldsDirect_ = true;
                 listTraced(hits);
                 // Voxel rays read level 0 where they end and only the mips' occupancy, which a
                 // bounce does not change: the mips are rebuilt after the last bounce alone.
@@ -279,6 +283,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         if (progress.bounceNext == 0) {
             bounceGathersChange_ = changeReady_;
             bounceStartInjections_ = injections_;
+            bounceSourceHoldsDirect_ = sourceHoldsDirect_;
         }
         // After an injection while the bounce ran (a light dragged) its other voxels gather the
         // light whole, and so does the next bounce: the change holds the old direct light.
@@ -308,7 +313,8 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             listTraced(hits);  // the pass ran over the whole list from 0
             bounce_.finish(volume_, {true, converged ? static_cast<float>(convergence_.tail()) : 0.0f, fromDirect,
                                      !converged && gathersChanges(light)});
-            changeReady_ = bounce_.changeKept() && sameLight;
+            changeReady_ = bounce_.changeKept() && sameLight && (fromDirect || bounceSourceHoldsDirect_);
+            sourceHoldsDirect_ = sameLight;
             // Voxel rays need the mips' occupancy only (see update()): rebuilt after the last bounce.
             if (features.voxelRays == 0 || scheduler_.state().progress.bounce == 0)
                 mipmap_.execute(volume_, light.anisotropic, overList);

@@ -145,10 +145,17 @@ private:
     // The update's bounces started from the last update's light (level 0 holds it): its second
     // bounce reads level 0, not the direct volume.
     bool warmStart_ = false;
-    // The change volume holds the last bounce's change and no injection came since: the next
-    // bounce may gather that change over a subset of the rays (BounceTrace::changeSubset).
+    // The change volume holds the last bounce's change, no injection came since, and that change is
+    // smooth (no step of the direct light in it: the bounce read light with the same direct light):
+    // the next bounce may gather it over a subset of the rays (BounceTrace::changeSubset). A change
+    // holding the direct light's step after a light edit, gathered over a subset, read 20 % more
+    // change in the Cornell box's next bounce and stopped the update two bounces early.
     bool changeReady_ = false;
-    bool bounceGathersChange_ = false;  // changeReady_ when the spread bounce under way started
+    // Level 0, where later bounces' rays take their light, was written by a bounce run wholly with the
+    // direct light injected last.
+    bool sourceHoldsDirect_ = false;
+    bool bounceGathersChange_ = false;      // changeReady_ when the spread bounce under way started
+    bool bounceSourceHoldsDirect_ = false;  // sourceHoldsDirect_ then
     std::uint64_t injections_ = 0;            // injections so far
     std::uint64_t bounceStartInjections_ = 0;  // injections_ when the spread bounce under way started
     std::uint64_t generation_ = 0;
