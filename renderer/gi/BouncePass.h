@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gi/ConeProgram.h"
+#include "gi/GiBudget.h"
 #include "gi/RayHitCache.h"
 #include "gi/VoxelDispatch.h"
 #include "passes/Pass.h"
@@ -44,13 +45,6 @@ struct BounceFinish {
     bool fromDirect = false;
     bool keepChange = false;  // keep the bounce's change for the next to gather (when volume.change() exists)
 };
-
-// The subset of the rays bounce `bounce` (3, 4, ...) gathers its change over with one ray in
-// `stride` (GiSettings::laterBounceRayStride), rotating so that successive bounces take different
-// rays; −1 (every ray) for a stride of 1 or fewer than two rays a subset.
-inline int changeSubsetFor(int bounce, int rays, int stride) {
-    return stride > 1 && rays >= 2 * stride ? bounce % stride : -1;
-}
 
 // What one bounce did to the voxels' light: the luminance of its bounced light (radiance − direct)
 // and of its change from the bounce before, summed over the voxels it traced (W/(sr·m²)).

@@ -53,4 +53,11 @@ inline constexpr int kReplayVoxelsPerFrameFactor = 4;
 // light over every ray at stride 4 (the sun room at 128³, docs/PERFORMANCE.md, "GI update").
 inline constexpr int kChangeVoxelsPerFrameFactor = 2;
 
+// The subset of the rays bounce `bounce` (3, 4, ...) gathers its change over with one ray in
+// `stride` (GiSettings::laterBounceRayStride), rotating so that successive bounces take different
+// rays; −1 (every ray) for a stride of 1 or fewer than two rays a subset.
+inline int changeSubsetFor(int bounce, int rays, int stride) {
+    return stride > 1 && rays >= 2 * stride ? bounce % stride : -1;
+}
+
 }  // namespace lit

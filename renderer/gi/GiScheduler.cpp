@@ -240,12 +240,22 @@ float GiScheduler::updateDone() const {
     const GiProgress& p = state_.progress;
     const double list = std::max(state_.occupied, 1u);
     // Every bounce: the passes the update is expected to take; the bounce under way is never the
-    // last one counted, so the figure stays below 1 until the update ends.
+    // last one counted, so the figure stays below 1 until the update ends. Passes weigh what they
+    // cost: a bounce after the second that gathers the change over a subset of the rays about
+    // 1 / kChangeVoxelsPerFrameFactor of one that gathers every ray (the second, the irradiance).
     const int bounces = state_.light.untilConverged ? std::max(p.bounceEstimate, p.bounce + 1) : state_.light.bounces;
-    const int passes = (bounces - 1) + (state_.light.voxelIrradiance ? 1 : 0);
-    if (p.bounce > 0) return static_cast<float>(((p.bounce - 2) * list + p.bounceNext) / (passes * list));
-    if (state_.light.voxelIrradiance && p.irradianceLeft > 0)
-        return static_cast<float>(((passes - 1) * list + (list - p.irradianceLeft)) / (passes * list));
+    const GiLightKey& light = state_.light;
+    const double later =
+        changeSubsetFor(3, light.voxelRays, light.laterBounceRayStride) >= 0 ? 1.0 / kChangeVoxelsPerFrameFactor : 1.0;
+    // The work before bounce b (2, 3, ...) begins, in whole passes.
+    const auto before = [&](int b) { return std::min(b - 2, 1) + std::max(b - 3, 0) * later; };
+    const double total = before(bounces + 1) + (light.voxelIrradiance ? 1.0 : 0.0);
+    if (p.bounce > 0) {
+        const double pass = p.bounce == 2 ? 1.0 : later;
+        return static_cast<float>((before(p.bounce) + pass * p.bounceNext / list) / total);
+    }
+    if (light.voxelIrradiance && p.irradianceLeft > 0)
+        return static_cast<float>((before(bounces + 1) + (list - p.irradianceLeft) / list) / total);
     return 1.0f;
 }
 

@@ -151,6 +151,7 @@ private:
     // holding the direct light's step after a light edit, gathered over a subset, read 20 % more
     // change in the Cornell box's next bounce and stopped the update two bounces early.
     bool changeReady_ = false;
+    float shownDone_ = 0.0f;  // GiFrameReport::updateDone as shown: the most the update under way reported
     // Level 0, where later bounces' rays take their light, was written by a bounce run wholly with the
     // direct light injected last.
     bool sourceHoldsDirect_ = false;

@@ -132,6 +132,33 @@ TEST(GiScheduler, ABudgetSpreadsTheBounceAndTheIrradianceOverFrames) {
     EXPECT_EQ(s.updateStage(false), "");
 }
 
+// The progress weighs each pass by what it costs: bounces after the second gather their change over
+// one ray in four (GiSettings::laterBounceRayStride), about half a whole gather's cost in the spread
+// frames (kChangeVoxelsPerFrameFactor); with every ray they weigh as much as the second.
+TEST(GiScheduler, ProgressWeighsTheChangeBouncesByTheirCost) {
+    for (const int stride : {4, 1}) {
+        lit::RenderSettings settings;
+        settings.gi.bounces = 4;
+        settings.gi.laterBounceRayStride = stride;
+        const GiLightKey light = GiLightKey::of(settings);
+        GiScheduler s;
+        const VoxelKey voxels{1, 1, nullptr};
+        s.voxelized(voxels, 2000, true);
+        s.startUpdate(s.changes(voxels, light, true, true, true), light, GiBudget{1000, 0});
+        ASSERT_EQ(s.state().progress.bounce, 2);
+        const double later = stride > 1 ? 1.0 / lit::kChangeVoxelsPerFrameFactor : 1.0;
+        const double total = 1.0 + 2.0 * later + 1.0;  // bounce 2, bounces 3 and 4, the irradiance
+        EXPECT_TRUE(s.advanceBounce({0, 2000}));
+        EXPECT_FLOAT_EQ(s.updateDone(), static_cast<float>(1.0 / total)) << "stride " << stride;
+        EXPECT_FALSE(s.advanceBounce({0, 1000}));
+        EXPECT_FLOAT_EQ(s.updateDone(), static_cast<float>((1.0 + 0.5 * later) / total)) << "stride " << stride;
+        EXPECT_TRUE(s.advanceBounce({1000, 1000}));
+        EXPECT_TRUE(s.advanceBounce({0, 2000}));
+        EXPECT_EQ(s.updateStage(false), "irradiance");
+        EXPECT_FLOAT_EQ(s.updateDone(), static_cast<float>((1.0 + 2.0 * later) / total)) << "stride " << stride;
+    }
+}
+
 // The first trace over the list records the rays' hits; the traces after a light edit replay them,
 // kReplayVoxelsPerFrameFactor times the budget's voxels a frame; new voxels or another ray count
 // record again.
