@@ -205,7 +205,7 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
                                 s.gi.laterBounceRayStride <= 1 ? "every ray" : "1 in %d");
     tooltip("Every bounce after an update's first gathers only the change of the bounce before, over one\n"
             "in this many of the voxel rays (the first gathers the light whole): with 1 in 4 (the default) a\n"
-            "light edit's bounces cost about 0.43 as much, and the image moves 0.5 % per pixel. Voxel rays and\n"
+            "light edit's bounces cost about half as much, and the image moves about 0.5 % per pixel. Voxel rays and\n"
             "RGBA16F radiance only (docs/GI.md, \"Bounces\")");
     changed |= ImGui::Checkbox("Voxelize changes only", &s.gi.voxelizeChangesOnly);
     tooltip("A moved object (gizmo drag, node animation) voxelizes again only the voxels it covered and\n"

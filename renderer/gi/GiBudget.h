@@ -49,8 +49,8 @@ struct GiBudget {
 // what a marching one does and an edit's light is final in a quarter of the frames.
 inline constexpr int kReplayVoxelsPerFrameFactor = 4;
 // ... and twice as many again in a bounce that gathers the change of the one before over a subset
-// of the rays (GiSettings::laterBounceRayStride): such a bounce costs 0.43 of one that gathers the
-// light over every ray at stride 4 (the sun room at 128³, docs/PERFORMANCE.md, "GI update").
+// of the rays (GiSettings::laterBounceRayStride): at stride 4 such a bounce costs about half of one
+// that gathers the light over every ray (docs/GI.md, "Bounces").
 inline constexpr int kChangeVoxelsPerFrameFactor = 2;
 
 // The subset of the rays bounce `bounce` (3, 4, ...) gathers its change over with one ray in
