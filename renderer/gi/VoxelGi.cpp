@@ -255,8 +255,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     report.voxelized = changes.voxelize;
     report.occupiedVoxels = state.occupied;
     report.refining = scheduler_.refinementLeft(light);
-    // The share done never goes back while an update runs: the expected bounce count can grow as the
-    // light's convergence is measured (the sun room's overlay went from 41 % to 27 %).
+    // The share done never goes back while an update runs, though the expected bounce count can grow
+    // as the light's convergence is measured (in the sun room the share would fall from 41 % to 27 %).
     const float done = scheduler_.updateDone();
     if (done >= 1.0f || shownDone_ >= 1.0f)
         shownDone_ = done;  // complete, or a new update
