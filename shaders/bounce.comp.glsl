@@ -121,7 +121,7 @@ LIT_VOXEL_SURFACE_READER
 // Where voxel v's rays start for the side `normal` (its averaged normal, unit, or its opposite).
 vec3 rayOrigin(ivec3 v, vec3 normal, float agreement) {
     if (agreement < kRayPlaneMinLength) return coneOrigin(voxelCenter(v), normal);
-    return voxel.volumeMin.xyz + (voxelSurfacePoint(v) + kRayStartVoxels * normal) * voxel.voxelInfo.z;
+    return voxelSurfaceWorldPoint(v, kRayStartVoxels * normal);
 }
 
 // The ray-hit cache (RayHitCache, LIT_SSBO_VOXEL_RAY_HITS): a ray's first hit depends

@@ -116,8 +116,7 @@ void main() {
         if (cosine <= 0.0) continue;
         // The side of the voxel that faces the light.
         vec3 facing = !hasDirection ? s.l : (nl < 0.0 ? -normal : normal);
-        vec3 lookup = oneSided ? voxel.volumeMin.xyz + (voxelSurfacePoint(v) + kShadowSurfaceOffsetVoxels * facing) * voxelSize
-                               : centre + facing * voxelSize;
+        vec3 lookup = oneSided ? voxelSurfaceWorldPoint(v, kShadowSurfaceOffsetVoxels * facing) : centre + facing * voxelSize;
         float visibility = shadowVisibility(light, lookup, facing, kShadowPcfRadius,
                                             kShadowNormalOffsetTexels);
         // A voxel holding faces back to back (a wall thinner than a voxel, or two solids that touch)

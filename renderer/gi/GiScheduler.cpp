@@ -245,8 +245,7 @@ float GiScheduler::updateDone() const {
     // 1 / kChangeVoxelsPerFrameFactor of one that gathers every ray (the second, the irradiance).
     const int bounces = state_.light.untilConverged ? std::max(p.bounceEstimate, p.bounce + 1) : state_.light.bounces;
     const GiLightKey& light = state_.light;
-    const double later =
-        changeSubsetFor(3, light.voxelRays, light.laterBounceRayStride) >= 0 ? 1.0 / kChangeVoxelsPerFrameFactor : 1.0;
+    const double later = light.gathersChanges() ? 1.0 / kChangeVoxelsPerFrameFactor : 1.0;
     // The work before bounce b (2, 3, ...) begins, in whole passes.
     const auto before = [&](int b) { return std::min(b - 2, 1) + std::max(b - 3, 0) * later; };
     const double total = before(bounces + 1) + (light.voxelIrradiance ? 1.0 : 0.0);

@@ -43,6 +43,9 @@ struct GiLightKey {
     float radianceRange = 0.0f;
 
     static GiLightKey of(const RenderSettings& settings);
+    // Whether the bounces after an update's first gather the change of the one before over a subset
+    // of the rays (changeSubsetFor).
+    bool gathersChanges() const { return changeSubsetFor(3, voxelRays, laterBounceRayStride) >= 0; }
     // Whether going from `last` to this needs the bounces or the voxel irradiance traced again:
     // their count or the mode changed, or (when anything traces) a setting they trace with.
     bool retraces(const GiLightKey& last) const;

@@ -30,10 +30,6 @@ VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Lo
 
 std::vector<Pass*> VoxelGi::passes() { return {&voxelize_, &solid_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_}; }
 
-bool VoxelGi::gathersChanges(const GiLightKey& light) {
-    return changeSubsetFor(3, light.voxelRays, light.laterBounceRayStride) >= 0;
-}
-
 RayHits VoxelGi::rayHitsFor(int rays) {
     const GiState& state = scheduler_.state();
     if (rays <= 0 || !state.listComplete) return RayHits::Off;
@@ -213,7 +209,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                 const bool last = b == start.bouncesNow + 1 || converged;
                 // The last bounce adds the ones still missing (BounceConvergence::tail).
                 bounce_.finish(volume_, {overList, converged ? static_cast<float>(convergence_.tail()) : 0.0f, fromDirect,
-                                         !converged && gathersChanges(light)});
+                                         !converged && light.gathersChanges()});
                 changeReady_ = bounce_.changeKept() && (fromDirect || sourceHoldsDirect_);
                 sourceHoldsDirect_ = true;
                 listTraced(hits);
@@ -322,7 +318,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         if (scheduler_.advanceBounce(range, converged)) {
             listTraced(hits);  // the pass ran over the whole list from 0
             bounce_.finish(volume_, {true, converged ? static_cast<float>(convergence_.tail()) : 0.0f, fromDirect,
-                                     !converged && gathersChanges(light)});
+                                     !converged && light.gathersChanges()});
             changeReady_ = bounce_.changeKept() && sameLight && (fromDirect || bounceSourceHoldsDirect_);
             sourceHoldsDirect_ = sameLight;
             // Voxel rays need the mips' occupancy only (see update()): rebuilt after the last bounce.

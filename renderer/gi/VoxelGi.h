@@ -105,8 +105,6 @@ public:
 private:
     // A trace over the occupied-voxel list with `rays` rays: what it does with the ray-hit cache.
     RayHits rayHitsFor(int rays);
-    // Whether the later bounces gather the change of the bounce before over a subset of the rays.
-    static bool gathersChanges(const GiLightKey& light);
     // The changed boxes to voxelize instead of the whole volume, if a voxelization of them is
     // possible and asked for (RenderSettings: voxelizeChangesOnly).
     std::optional<std::vector<VoxelBox>> changedBoxes(const std::vector<ItemPose>& items, const VoxelKey& voxels,

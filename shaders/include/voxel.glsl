@@ -160,12 +160,16 @@ ivec3 unpackVoxelCoord(uint p) { return ivec3(int(p & 1023u), int((p >> 10) & 10
 
 // What a shader that reads the voxels' surface points declares (the voxel rays, the injection):
 // voxelSurfacePoint(c), the point of voxel c's surface the voxelization recorded, in voxels from
-// the volume's corner (the voxel's centre where none was; voxelize.frag.glsl).
+// the volume's corner (the voxel's centre where none was; voxelize.frag.glsl); and
+// voxelSurfaceWorldPoint(c, offsetVoxels), that point moved by offsetVoxels (in voxels), in world space.
 #define LIT_VOXEL_SURFACE_READER                                                             \
     layout(binding = LIT_IMG_VOXEL_SURFACE, r32ui) uniform readonly uimage3D voxelSurface;   \
     vec3 voxelSurfacePoint(ivec3 c) {                                                        \
         vec4 local = unpackVoxel(imageLoad(voxelSurface, c).r);                              \
         return vec3(c) + (local.a > 0.0 ? local.xyz : vec3(0.5));                            \
+    }                                                                                        \
+    vec3 voxelSurfaceWorldPoint(ivec3 c, vec3 offsetVoxels) {                                  \
+        return voxel.volumeMin.xyz + (voxelSurfacePoint(c) + offsetVoxels) * voxel.voxelInfo.z; \
     }
 
 // What a shader that reads the solid voxels (SolidVoxelsPass: empty voxels inside a solid; the

@@ -118,6 +118,12 @@ protected:
         settings.indirect.temporalAccumulation = false;
         return settings;
     }
+    // Every bounce with voxel rays, otherwise as twoBouncesWithRays.
+    static RenderSettings everyBounceWithRays() {
+        RenderSettings settings = twoBouncesWithRays();
+        settings.gi.bounces = kAllBounces;
+        return settings;
+    }
     // What an update spread over frames must end on: a fresh renderer's image with the whole update
     // in one frame (the default GiBudget). Replaces the fixture's renderer.
     HdrImage allAtOnceInAFreshRenderer(const Scene& scene, const CameraView& camera, RenderSettings settings) {
@@ -1101,8 +1107,7 @@ TEST_F(GiAccuracy, LaterBouncesGatheringTheirChangeEndNearGatheringTheLight) {
 // 3 frames a pass at the replay pace. ~4 s.
 TEST_F(GiAccuracy, EveryBounceSpreadOverFramesEndsWhereOneFrameEnds) {
     Scene scene = loadCornellBox();
-    RenderSettings settings = twoBouncesWithRays();
-    settings.gi.bounces = kAllBounces;
+    const RenderSettings settings = everyBounceWithRays();
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     renderer_->render(scene, camera, settings);
@@ -1183,8 +1188,7 @@ TEST_F(GiAccuracy, LightDragUpdatesTheIndirectLightWhileItLasts) {
 // Cornell box, 64³, 3 frames a pass. ~4 s.
 TEST_F(GiAccuracy, ALightEditDuringAChangeBounceEndsOnTheNewLight) {
     Scene scene = loadCornellBox();
-    RenderSettings settings = twoBouncesWithRays();
-    settings.gi.bounces = kAllBounces;
+    const RenderSettings settings = everyBounceWithRays();
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     renderer_->render(scene, camera, settings);
