@@ -64,14 +64,16 @@ uniform ivec2 uOffsets;
 // cone from INSIDE the room samples: the face that sees the wall edge-on showed the sunlit outside
 // to it (1.36 % / 1.17 % of the outside radiance leaked into the benchmark's sealed room at
 // 128³ / 256³, 0.2 m walls, footprint bound 0.25: docs/GI.md, "Anisotropic voxels"). Six faces
-// cannot tell from which side of the slab a cone comes, but a cone can reach the edge-on face only
-// from the side it faces, where the face along the normal (weight 1) already shows it. So a
-// surface whose slab's other side lies right behind it (an occupied level-0 voxel within
-// kBackedSearchVoxels against its normal, whose normal points the other way or which holds both
-// sides) sends no light edge-on.
+// cannot tell from which side of the slab a cone comes. So a surface whose slab's other side lies
+// right behind it (an occupied level-0 voxel within kBackedSearchVoxels against its normal, whose
+// normal points the other way or which holds both sides) is left out of the faces that see it
+// edge-on: no light and no opacity there. A cone that meets the slab at a slant then takes the
+// surface's light from the faces that see it face-on (the d² blend, cone.glsl). Kept opaque and
+// dark there, a backed surface darkened every such cone: a rough gold sphere on a floor 6 voxels
+// thick reflected 0.60 of the reference's light at 128³ (0.79 now; 0.99 at 256³, where the floor
+// is 12 voxels thick and not backed; GiAccuracy.GrazingConesSeeABackedFloorsLight).
 // Surfaces with nothing behind them within that distance (single-sided walls, the Cornell box's
-// hollow blocks away from their edges) keep weight 1: the Cornell regions are unchanged to two
-// digits, the sealed room leaks 0.32 % / 0.16 % (weight ½ instead of 0: 0.84 % / 0.66 %).
+// hollow blocks away from their edges) keep weight 1.
 // 8 voxels: the benchmark's walls are 3.2 voxels thick at 256³ and 6.4 at 512³ (searching 4 left
 // 512³ at 1.07 %; 8: 0.06 %; the Cornell regions and the suite's scenes are the same with 4 or 8).
 // A thicker slab's two faces share only voxels of level ≥ 4, wider than the slab's faces' share.
@@ -93,29 +95,34 @@ bool backedBySlab(ivec3 p, vec3 n) {
 }
 #endif
 
-// Share of a level-0 voxel's radiance that leaves towards a cone travelling along `travel`.
-float emissionTowards(ivec3 p, vec3 travel) {
+// What of a level-0 voxel a cone travelling along `travel` sees: x the share of its light (its
+// opacity kept: a face turned away), y the share of the whole voxel (a backed slab edge-on).
+vec2 shareTowards(ivec3 p, vec3 travel) {
 #if LIT_DIRECTIONAL_FROM_ISO
     vec4 stored = unpackUnorm4x8(imageLoad(uNormal, p).r);
-    if (stored.a == 0.0) return 1.0;  // no normal recorded
+    if (stored.a == 0.0) return vec2(1.0);  // no normal recorded
     vec3 averaged = stored.xyz * 2.0 - 1.0;
     float agreement = length(averaged);
-    if (agreement < 0.5) return 1.0;  // both sides of a thin wall: see inject.comp.glsl
+    if (agreement < 0.5) return vec2(1.0);  // both sides of a thin wall: see inject.comp.glsl
     vec3 n = averaged / agreement;
     float facing = dot(n, -travel);
-    float weight = clamp(1.0 + 4.0 * facing, 0.0, 1.0);
-    // Backed (above): the light fades from face-on (facing ≥ ¼, weight 1) to 0 edge-on.
-    if (facing < 0.25 && weight > 0.0 && backedBySlab(p, n)) weight *= clamp(4.0 * facing, 0.0, 1.0);
-    return weight;
+    float light = clamp(1.0 + 4.0 * facing, 0.0, 1.0);
+    // Backed (above): the voxel fades from whole (facing ≥ ¼) to absent edge-on.
+    float whole = facing < 0.25 && light > 0.0 && backedBySlab(p, n) ? clamp(4.0 * facing, 0.0, 1.0) : 1.0;
+    return vec2(light, whole);
 #else
-    return 1.0;
+    return vec2(1.0);
 #endif
 }
 
 vec4 child(ivec3 p, vec3 travel) {
     vec4 c = imageLoad(uSource, p + ivec3(uOffsets.x, 0, 0));
 #if LIT_DIRECTIONAL_FROM_ISO
-    if (c.a > 0.0) c.rgb *= emissionTowards(p, travel);
+    if (c.a > 0.0) {
+        vec2 share = shareTowards(p, travel);
+        c.rgb *= share.x;
+        c *= share.y;
+    }
 #endif
     return c;
 }
