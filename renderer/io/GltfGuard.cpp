@@ -367,6 +367,17 @@ GuardedScene guardGltfFile(const fs::path& file, bool binary, const GltfLimits& 
         if (declared > size) fail(file, "truncated GLB: the header declares " + std::to_string(declared) + " bytes, the file has " + std::to_string(size));
         if (readLittleEndian32(bytes + 16) != 0x4E4F534Au) fail(file, "the GLB's first chunk is not JSON");
         if (20 + jsonLength > declared) fail(file, "truncated GLB: the JSON chunk runs past the declared length");
+        // The chunk after it is the buffer tinygltf reads (its own bound forgets the chunk's 8-byte
+        // header, and the copy a compressed file is rewritten into ends at the declared length).
+        if (const std::uint64_t next = 20 + jsonLength; next < declared) {
+            if (next + 8 > declared)
+                fail(file, "truncated GLB: " + std::to_string(declared - next) +
+                               " bytes after the JSON chunk, too few for a chunk header (8 bytes)");
+            const std::uint64_t chunkLength = readLittleEndian32(bytes + next);
+            if (next + 8 + chunkLength > declared)
+                fail(file, "truncated GLB: the chunk after the JSON declares " + std::to_string(chunkLength) +
+                               " bytes, the file's declared length leaves " + std::to_string(declared - next - 8));
+        }
         scene.json = std::string_view(reinterpret_cast<const char*>(bytes) + 20, static_cast<std::size_t>(jsonLength));
     } else {
         scene.json = std::string_view(reinterpret_cast<const char*>(scene.bytes.data()), scene.bytes.size());

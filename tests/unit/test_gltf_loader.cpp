@@ -798,6 +798,32 @@ TEST(GltfLoaderErrors, TruncatedGlb) {
     }
 }
 
+// A BIN chunk that claims more than the header's declared length leaves, in a file longer than
+// that length (the bytes past it are not the GLB's): refused by its figures. tinygltf's own bound
+// forgets the chunk header's 8 bytes, and a compressed file's rewritten copy, which ends at the
+// declared length, was read past its end (a fuzzer finding, tests/fuzz/regressions).
+TEST(GltfLoaderErrors, GlbChunkPastTheDeclaredLength) {
+    TempDir dir;
+    std::vector<std::uint8_t> glb = triangle().glbBytes();
+    const auto read32 = [&](std::size_t at) {
+        return std::uint32_t(glb[at]) | std::uint32_t(glb[at + 1]) << 8 | std::uint32_t(glb[at + 2]) << 16 |
+               std::uint32_t(glb[at + 3]) << 24;
+    };
+    const auto write32 = [&](std::size_t at, std::uint32_t value) {
+        for (int i = 0; i < 4; ++i) glb[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(value >> (8 * i));
+    };
+    ASSERT_EQ(read32(8), glb.size());
+    const std::size_t binChunk = 20 + read32(12);
+    ASSERT_LT(binChunk + 8, glb.size()) << "the triangle's GLB must have a BIN chunk";
+    glb.insert(glb.end(), 16, 0);  // bytes past the declared length
+    write32(8, static_cast<std::uint32_t>(glb.size() - 16 - 4));  // declares 4 bytes less than its chunks
+    writeFile(dir / "short.glb", glb);
+    EXPECT_LOAD_ERROR(dir / "short.glb", "truncated GLB: the chunk after the JSON declares");
+    write32(8, static_cast<std::uint32_t>(binChunk + 4));  // half a chunk header
+    writeFile(dir / "header.glb", glb);
+    EXPECT_LOAD_ERROR(dir / "header.glb", "too few for a chunk header");
+}
+
 TEST(GltfLoaderErrors, MissingBufferFile) {
     TempDir dir;
     const fs::path path = triangle().writeGltf(dir, "nobin");
