@@ -37,6 +37,12 @@ TEST(GltfFuzzCorpus, SeedsLoad) {
     ASSERT_GE(seeds.size(), 3u);
     for (const fs::path& seed : seeds) {
         const std::vector<std::uint8_t> bytes = bytesOf(seed);
+        // The WebP seeds require EXT_texture_webp: a build without libwebp refuses them by name.
+        const bool needsWebp = seed.filename().string().find("webp") != std::string::npos;
+        if (needsWebp && LIT_HAS_WEBP == 0) {
+            EXPECT_NO_THROW(fuzz::loadFuzzInput(bytes.data(), bytes.size(), scratch.path())) << seed;
+            continue;
+        }
         EXPECT_TRUE(fuzz::loadFuzzInput(bytes.data(), bytes.size(), scratch.path())) << seed;
     }
 }
