@@ -368,6 +368,18 @@ vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float m
 }
 
 #if !LIT_BOUNCE_IRRADIANCE
+// `radiance` as the bounce volume will hold it once stored: the change is measured between stored
+// values, as the next bounce reads them. In RGBA8 (steps of gi.radianceRange / 255) the unrounded
+// new light against the rounded old one read the rounding alone as a steady change of 20 % of a
+// dim scene's bounced light, and every bounce ran to the cap (Sponza, 128³).
+vec3 asStored(vec3 radiance) {
+#if LIT_BOUNCE_RGBA8
+    return decodeRadiance(round(clamp(encodeRadiance(radiance), 0.0, 1.0) * 255.0) / 255.0);
+#else
+    return radiance;
+#endif
+}
+
 // Adds voxel v's bounced light (radiance − direct) and its change from the bounce before to the
 // change bins (every bounce until converged: uMeasureChange).
 void measureChange(ivec3 v, vec3 radiance, vec3 previous, vec3 direct) {
@@ -487,7 +499,7 @@ void main() {
 #else
         vec4 before = texelFetch(voxelRadianceTexture, v, 0);
 #endif
-        measureChange(v, radiance, before.a > 0.0 ? decodeRadiance(before.rgb / before.a) : vec3(0.0),
+        measureChange(v, asStored(radiance), before.a > 0.0 ? decodeRadiance(before.rgb / before.a) : vec3(0.0),
                       decodeRadiance(direct.rgb));
     }
 #endif

@@ -1146,6 +1146,28 @@ TEST_F(GiAccuracy, GrazingConesSeeABackedFloorsLight) {
     EXPECT_NEAR(vctSum / truthSum, 1.0, 0.2);
 }
 
+// Every bounce with RGBA8 radiance stops when its light settles, as with RGBA16F: the change is
+// measured between the values the volume stores (bounce.comp.glsl, asStored). Measuring the
+// unrounded new light against the rounded old one read the rounding as a steady change, and every
+// update ran the 64-bounce cap (the Cornell box here: 64 against RGBA16F's 7; Sponza at 256³, a
+// 48 s light edit). ~2 s.
+TEST_F(GiAccuracy, Rgba8BouncesStopWhenTheirLightSettles) {
+    const Scene scene = loadCornellBox();
+    RenderSettings settings = everyBounceWithRays();
+    render(scene, settings);
+    const int halfFloatBounces = renderer_->stats().giBounces;
+    settings.gi.radianceRgba8 = true;
+    renderer_ = std::make_unique<Renderer>(sourceDir() / "shaders", log_);
+    const HdrImage rgba8 = render(scene, settings);
+    const int rgba8Bounces = renderer_->stats().giBounces;
+    std::printf("Cornell box, every bounce, 64³: converged after %d bounces with RGBA8 radiance, %d with RGBA16F\n",
+                rgba8Bounces, halfFloatBounces);
+    ASSERT_GT(halfFloatBounces, 2);
+    EXPECT_LT(rgba8Bounces, kMaxConvergingBounces);
+    EXPECT_LE(rgba8Bounces, halfFloatBounces + 4);
+    EXPECT_GT(rgba8.mean(0, 0, 1, 1).x, 0.0f) << "the RGBA8 volume must hold the bounced light";
+}
+
 // Every bounce spread over frames (the editor's light edit) ends where one frame ends, with the
 // later bounces gathering their changes: the spread passes take the same subsets. Cornell box, 64³,
 // 3 frames a pass at the replay pace. ~4 s.
