@@ -70,8 +70,8 @@ uniform ivec2 uOffsets;
 // edge-on: no light and no opacity there. A cone that meets the slab at a slant then takes the
 // surface's light from the faces that see it face-on (the d² blend, cone.glsl). Kept opaque and
 // dark there, a backed surface darkened every such cone: a rough gold sphere on a floor 6 voxels
-// thick reflected 0.60 of the reference's light at 128³ (0.79 now; 0.99 at 256³, where the floor
-// is 12 voxels thick and not backed; GiAccuracy.GrazingConesSeeABackedFloorsLight).
+// thick reflected 0.60 of the reference's light at 128³, and 0.79 with it left out (0.99 at
+// 256³, where the floor is 12 voxels thick and not backed; GiAccuracy.GrazingConesSeeABackedFloorsLight).
 // Surfaces with nothing behind them within that distance (single-sided walls, the Cornell box's
 // hollow blocks away from their edges) keep weight 1.
 // 8 voxels: the benchmark's walls are 3.2 voxels thick at 256³ and 6.4 at 512³ (searching 4 left
