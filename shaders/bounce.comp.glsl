@@ -374,7 +374,7 @@ vec3 bounceIrradiance(ivec3 v, vec3 origin, vec3 normal, float aperture, float m
 // dim scene's bounced light, and every bounce ran to the cap (Sponza, 128³).
 vec3 asStored(vec3 radiance) {
 #if LIT_BOUNCE_RGBA8
-    return decodeRadiance(round(clamp(encodeRadiance(radiance), 0.0, 1.0) * 255.0) / 255.0);
+    return decodeRadiance(unpackUnorm4x8(packUnorm4x8(vec4(encodeRadiance(radiance), 1.0))).rgb);
 #else
     return radiance;
 #endif

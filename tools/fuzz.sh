@@ -62,7 +62,7 @@ build() {
                           renderer/io/AtomicFile.h renderer/scene/Scene.h renderer/Log.h tests/fuzz/GltfFuzzInput.h \
                           renderer/animation/CameraPathIO.h renderer/animation/CameraPath.h \
                           renderer/scene/GltfExtensions.h renderer/scene/GltfCompression.h renderer/scene/GltfMeshopt.h \
-                          renderer/scene/GltfDraco.h; do
+                          renderer/scene/GltfDraco.h renderer/io/LittleEndian.h; do
                 [ "$root/$header" -nt "$object" ] && stale=1
             done
         fi

@@ -1,6 +1,7 @@
 #include "io/GltfGuard.h"
 
 #include "io/GltfFile.h"
+#include "io/LittleEndian.h"
 #include "scene/GltfLoader.h"
 #include "scene/Scene.h"
 #include "scene/SceneMemory.h"
@@ -41,10 +42,6 @@ std::string megabytes(std::uint64_t bytes) {
 
 std::uint64_t saturatingAdd(std::uint64_t a, std::uint64_t b) {
     return a > std::numeric_limits<std::uint64_t>::max() - b ? std::numeric_limits<std::uint64_t>::max() : a + b;
-}
-
-std::uint32_t readLittleEndian32(const unsigned char* p) {
-    return std::uint32_t(p[0]) | (std::uint32_t(p[1]) << 8) | (std::uint32_t(p[2]) << 16) | (std::uint32_t(p[3]) << 24);
 }
 
 // Reads a whole regular file through one descriptor: the type and size are checked with fstat

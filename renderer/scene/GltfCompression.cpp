@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 
+#include "io/LittleEndian.h"
 #include "scene/GltfDraco.h"
 #include "scene/GltfLoader.h"
 #include "scene/GltfMeshopt.h"
@@ -51,14 +52,6 @@ const nlohmann::json& arrayOf(const nlohmann::json& doc, const char* key) {
     static const nlohmann::json empty = nlohmann::json::array();
     const auto found = doc.find(key);
     return found != doc.end() && found->is_array() ? *found : empty;
-}
-
-void writeLittleEndian32(unsigned char* p, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) p[i] = static_cast<unsigned char>(v >> (8 * i));
-}
-
-std::uint32_t readLittleEndian32(const unsigned char* p) {
-    return std::uint32_t(p[0]) | (std::uint32_t(p[1]) << 8) | (std::uint32_t(p[2]) << 16) | (std::uint32_t(p[3]) << 24);
 }
 
 }  // namespace

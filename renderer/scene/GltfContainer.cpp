@@ -2,6 +2,7 @@
 
 #include "scene/GltfContainer.h"
 
+#include "io/LittleEndian.h"
 #include "scene/GltfLoader.h"
 
 #include <nlohmann/json.hpp>
@@ -24,10 +25,6 @@ namespace {
 std::string lowercase(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return s;
-}
-
-std::uint32_t readLittleEndian32(const unsigned char* p) {
-    return std::uint32_t(p[0]) | (std::uint32_t(p[1]) << 8) | (std::uint32_t(p[2]) << 16) | (std::uint32_t(p[3]) << 24);
 }
 
 }  // namespace

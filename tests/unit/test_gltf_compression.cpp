@@ -19,6 +19,7 @@
 #include "Log.h"
 #include "GltfValidator.h"
 #include "TempDir.h"
+#include "io/LittleEndian.h"
 #include "scene/GltfLoader.h"
 #include "scene/GltfWriter.h"
 #include "QuietLog.h"
@@ -223,15 +224,13 @@ struct Glb {
     std::vector<std::uint8_t> bin;
 };
 
-std::uint32_t read32(const std::uint8_t* p) { return p[0] | (p[1] << 8) | (p[2] << 16) | (std::uint32_t(p[3]) << 24); }
-
 Glb readGlb(const fs::path& path) {
     const std::vector<std::uint8_t> bytes = lit::testing::readFile(path);
-    const std::uint32_t jsonLength = read32(bytes.data() + 12);
+    const std::uint32_t jsonLength = readLittleEndian32(bytes.data() + 12);
     Glb glb;
     glb.doc = json::parse(bytes.begin() + 20, bytes.begin() + 20 + jsonLength);
     const std::size_t bin = 20 + jsonLength;
-    const std::uint32_t binLength = read32(bytes.data() + bin);
+    const std::uint32_t binLength = readLittleEndian32(bytes.data() + bin);
     glb.bin.assign(bytes.begin() + static_cast<std::ptrdiff_t>(bin + 8),
                    bytes.begin() + static_cast<std::ptrdiff_t>(bin + 8 + binLength));
     return glb;

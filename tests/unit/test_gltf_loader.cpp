@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "TempDir.h"
+#include "io/LittleEndian.h"
 #include <stb/stb_image_write.h>
 #include <unistd.h>
 
@@ -805,13 +806,8 @@ TEST(GltfLoaderErrors, TruncatedGlb) {
 TEST(GltfLoaderErrors, GlbChunkPastTheDeclaredLength) {
     TempDir dir;
     std::vector<std::uint8_t> glb = triangle().glbBytes();
-    const auto read32 = [&](std::size_t at) {
-        return std::uint32_t(glb[at]) | std::uint32_t(glb[at + 1]) << 8 | std::uint32_t(glb[at + 2]) << 16 |
-               std::uint32_t(glb[at + 3]) << 24;
-    };
-    const auto write32 = [&](std::size_t at, std::uint32_t value) {
-        for (int i = 0; i < 4; ++i) glb[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(value >> (8 * i));
-    };
+    const auto read32 = [&](std::size_t at) { return readLittleEndian32(glb.data() + at); };
+    const auto write32 = [&](std::size_t at, std::uint32_t value) { writeLittleEndian32(glb.data() + at, value); };
     ASSERT_EQ(read32(8), glb.size());
     const std::size_t binChunk = 20 + read32(12);
     ASSERT_LT(binChunk + 8, glb.size()) << "the triangle's GLB must have a BIN chunk";
