@@ -41,8 +41,7 @@ void main() {
     vec3 sum = vec3(0.0), specularSum = vec3(0.0);
     float weightSum = 0.0, specularWeightSum = 0.0;
     float roughness = sp.a - 1.0;
-    bool reusedCones = sp.a > 0.0 && specularCanReuseDiffuseCones(alphaFromRoughness(roughness),
-                                                                  clamp(voxel.traceOptions.x, 1, 8), voxel.traceParams.w);
+    bool reusedCones = sp.a > 0.0 && specularCanReuseDiffuseCones(alphaFromRoughness(roughness), voxel.traceParams.w);
     for (int y = -kRadius; y <= kRadius; ++y) {
         for (int x = -kRadius; x <= kRadius; ++x) {
             ivec2 q = low + ivec2(x, y);

@@ -41,7 +41,7 @@ void main() {
     // Rough specular on a surface with diffuse cones reuses them (cone.glsl). It does so also when
     // only L_IS is shown, so that the term views add up to the final image.
     bool reuse = uTraceTerms.y != 0 && diffuseSurface &&
-                 specularCanReuseDiffuseCones(alphaFromRoughness(lobeRoughness), count, voxel.traceParams.w);
+                 specularCanReuseDiffuseCones(alphaFromRoughness(lobeRoughness), voxel.traceParams.w);
     vec3 diffuse = vec3(0.0);
     vec3 cones[kDiffuseConeCount];
     if ((uTraceTerms.x != 0 || reuse) && diffuseSurface) {

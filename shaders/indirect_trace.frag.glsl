@@ -118,7 +118,7 @@ void main() {
     bool specular = uTraceTerms.y != 0 && s.roughness >= uSmoothRoughness;
     // As cone_trace.frag.glsl: rough specular on a diffuse surface reuses the diffuse cones.
     bool reuse = specular && diffuseSurface &&
-                 specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
+                 specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), voxel.traceParams.w);
 #if LIT_VOXEL_IRRADIANCE
     // No diffuse cones to reuse: a lobe wide enough to have reused them (a rough lobe on a diffuse
     // surface) takes the gathered irradiance/π, the cosine-weighted mean radiance over the
@@ -171,9 +171,8 @@ void main() {
                 vec3 weighted = vec3(0.0);
                 float weightSum = 0.0;
                 for (int k = 0; k < count; ++k) {
-                    vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, vec2(pixel), voxel.traceOptions.y), alpha);
                     vec3 l;
-                    float w = ggxSampleWeight(n, v, h, alpha, l);
+                    float w = specularLobeCone(k, count, n, v, basis, alpha, vec2(pixel), voxel.traceOptions.y, l);
                     if (w <= 0.0) continue;
                     weighted += w * radianceFromConeSubset(normalize(l * basis), cones, a, b);
                     weightSum += w;

@@ -129,6 +129,17 @@ float ggxSampleWeight(const glm::vec3& n, const glm::vec3& v, const glm::vec3& h
     return G_SmithGGXCorrelated(NdotL, NdotV, alpha) * VdotH / (NdotH * NdotV);
 }
 
+// cone.glsl's specularLobeCone.
+float specularLobeCone(int k, int count, const glm::vec3& n, const glm::vec3& v, const glm::mat3& basis, float alpha,
+                       const glm::vec2& pixel, int frameIndex, glm::vec3& l) {
+    if (count <= 1) {
+        l = glm::reflect(-v, n);
+        return 1.0f;
+    }
+    const glm::vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, pixel, frameIndex), alpha);
+    return ggxSampleWeight(n, v, h, alpha, l);
+}
+
 float alphaFromRoughness(float roughness) {
     const float r = std::clamp(roughness, 0.03f, 1.0f);
     return r * r;
@@ -324,16 +335,16 @@ std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec
     const int count = std::clamp(settings.indirect.specularSamples, 1, LIT_SPECULAR_MAX_SAMPLES);
     const float alpha = alphaFromRoughness(surface.roughness);
     const float aperture = specularConeAperture(alpha, count);
-    // specularCanReuseDiffuseCones, with the unclamped aperture the shader gets (traceParams.w).
-    const bool marched =
-        !(surface.diffuse && aperture >= settings.gi.diffuseConeAperture - float(LIT_CONE_REUSE_TOLERANCE));
+    // specularCanReuseDiffuseCones (the lobe's halves against the diffuse cones, whatever the count),
+    // with the unclamped aperture the shader gets (traceParams.w).
+    const bool marched = !(surface.diffuse && specularConeAperture(alpha, 2) >=
+                                                  settings.gi.diffuseConeAperture - float(LIT_CONE_REUSE_TOLERANCE));
     const glm::vec2 fragCoord = glm::vec2(surface.glPixel) + 0.5f;
     const std::size_t firstSpecular = cones.size();
     float weightSum = 0.0f;
     for (int k = 0; k < count; ++k) {
-        const glm::vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, fragCoord, 0), alpha);
         glm::vec3 l;
-        const float w = ggxSampleWeight(n, v, h, alpha, l);
+        const float w = specularLobeCone(k, count, n, v, basis, alpha, fragCoord, 0, l);
         if (w <= 0.0f) continue;
         cones.push_back({origin, normalizedOr(l, n), aperture, maxDistance, w, true, marched});
         weightSum += w;

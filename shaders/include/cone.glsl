@@ -420,6 +420,21 @@ float ggxSampleWeight(vec3 n, vec3 v, vec3 h, float alpha, out vec3 l) {
     return G_SmithGGXCorrelated(NdotL, NdotV, alpha) * VdotH / (NdotH * NdotV);
 }
 
+// Cone k of the `count` that stand for the lobe: sets its axis `l` and returns its weight (0: the
+// sample fell below the surface). One cone (count 1) is the whole lobe: a cone as wide as the lobe
+// (specularConeAperture) around the mirror direction, the same for every pixel and frame, so it has
+// no sampling noise. More cones are GGX importance samples (specularSample) weighted by
+// ggxSampleWeight, which scatter from pixel to pixel (docs/GI.md, "Indirect specular: GGX cones").
+float specularLobeCone(int k, int count, vec3 n, vec3 v, mat3 basis, float alpha, vec2 pixel, int frameIndex,
+                       out vec3 l) {
+    if (count <= 1) {
+        l = reflect(-v, n);
+        return 1.0;
+    }
+    vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, pixel, frameIndex), alpha);
+    return ggxSampleWeight(n, v, h, alpha, l);
+}
+
 // Directional albedo E = ∫ f_s (n·l) dl of the GGX lobe with Schlick's F: E = F0·A + F90·B, where
 // A = ∫ w·(1 − (1 − v·h)^5) and B = ∫ w·(1 − v·h)^5 are read from the table (`roughness`
 // perceptual, the table's texel centres at (i + ½)/size).
@@ -454,15 +469,19 @@ float specularConeAperture(float alpha, int count) {
     return clamp(2.0 * halfAngle, kMinSpecularAperture, kMaxSpecularAperture);
 }
 
-// Whether the specular cones of a lobe with roughness α are no narrower than the diffuse cones
-// (of full aperture `diffuseAperture`): then a specular cone would only blur what the diffuse
-// cones already saw, and rough specular reuses them (radianceFromDiffuseCones) instead of
-// marching `count` cones of its own. With the defaults (60° diffuse cones, 2 samples) that is
-// perceptual roughness ≥ 0.64, where the specular cones are clamped to 60° themselves; most
-// dielectric surfaces of real scenes are that rough. A quarter of the cone marching per pixel
-// (2 of 8 cones) is saved there, the largest cost of the frame on a software rasterizer.
-bool specularCanReuseDiffuseCones(float alpha, int count, float diffuseAperture) {
-    return specularConeAperture(alpha, count) >= diffuseAperture - LIT_CONE_REUSE_TOLERANCE;
+// Whether a lobe with roughness α is at least two diffuse cones (of full aperture
+// `diffuseAperture`) wide: its halves' cones, specularConeAperture(α, 2), no narrower than a
+// diffuse cone. Cones of its own would then only blur what the diffuse cones already saw, and rough
+// specular reuses them (radianceFromDiffuseCones) instead of marching its own. With 60° diffuse
+// cones that is perceptual roughness ≥ 0.64; most dielectric surfaces of real scenes are that
+// rough, and the march saved is the largest cost of the frame on a software rasterizer. It does not
+// depend on the cone count (indirect.specularSamples), which only says how a narrower lobe is
+// traced: one cone as wide as the whole lobe, wider than the diffuse cones from roughness 0.54, would
+// otherwise take the cached mode's gathered irradiance, the whole hemisphere's mean, from there on
+// (the material spheres' plain dielectric of roughness 0.6: indirect specular 0.81 of the
+// reference instead of 0.92).
+bool specularCanReuseDiffuseCones(float alpha, float diffuseAperture) {
+    return specularConeAperture(alpha, 2) >= diffuseAperture - LIT_CONE_REUSE_TOLERANCE;
 }
 
 // The lobe-averaged radiance ⟨L⟩ of traceSpecular below, without the directional albedo E, with
@@ -475,9 +494,8 @@ vec3 traceSpecularLobe(vec3 origin, vec3 n, mat3 basis, vec3 v, float roughness,
     vec3 weightedRadiance = vec3(0.0);
     float weightSum = 0.0;
     for (int k = 0; k < count; ++k) {
-        vec3 h = basis * sampleGgxHalfVector(specularSample(k, count, pixel, frameIndex), alpha);
         vec3 l;
-        float w = ggxSampleWeight(n, v, h, alpha, l);
+        float w = specularLobeCone(k, count, n, v, basis, alpha, pixel, frameIndex, l);
         if (w <= 0.0) continue;
         vec3 radiance = reuseDiffuse ? radianceFromDiffuseCones(normalize(l * basis), cones)
                                      : traceCone(origin, l, aperture, maxDistance).rgb;
@@ -499,7 +517,7 @@ vec3 traceSpecularLobe(vec3 origin, vec3 n, mat3 basis, vec3 v, float roughness,
 
 // The radiance of the indirect specular lobe of perceptual roughness `roughness` for a surface
 // with normal n (unit, facing v) and view vector v (unit, towards the eye), from `count` (1..8)
-// importance-sampled cones, or when `reuseDiffuse` from the diffuse cones' radiance `cones` in
+// cones (specularLobeCone), or when `reuseDiffuse` from the diffuse cones' radiance `cones` in
 // the same directions (see specularCanReuseDiffuseCones; the diffuse cones must be traced around
 // the same n). L_IS is it times indirectSpecularWeight.
 vec3 traceSpecular(vec3 origin, vec3 n, vec3 v, float roughness, int count, vec2 pixel, int frameIndex,

@@ -186,7 +186,7 @@ void main() {
         mat3 basis = rotatedTangentFrame(n, coneSetRotation());
         int count = clamp(voxel.traceOptions.x, 1, 8);
         bool reuse = traceSpecularHere && diffuseSurface &&
-                     specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), count, voxel.traceParams.w);
+                     specularCanReuseDiffuseCones(alphaFromRoughness(s.roughness), voxel.traceParams.w);
         vec3 cones[kDiffuseConeCount];
 #if LIT_VOXEL_IRRADIANCE
         for (int i = 0; i < kDiffuseConeCount; ++i) cones[i] = vec3(0.0);  // never read (as in indirect_trace)

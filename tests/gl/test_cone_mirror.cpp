@@ -1,7 +1,8 @@
 // tracedCones() (renderer/scene/OverlayShapes.cpp) repeats in C++ how cone.glsl chooses its cones.
-// This runs cone.glsl's own functions (tangentFrame, the shared diffuse table, specularSample,
-// sampleGgxHalfVector, ggxSampleWeight, specularConeAperture) in a compute shader for the same
-// surfaces and compares: if the shader's sampling changes, the debug view's cones must follow.
+// This runs cone.glsl's own functions (tangentFrame, the shared diffuse table, specularLobeCone with
+// specularSample, sampleGgxHalfVector and ggxSampleWeight, specularConeAperture) in a compute
+// shader for the same surfaces and compares: if the shader's sampling changes, the debug view's
+// cones must follow.
 #include "GlTestSupport.h"
 
 #include "gl/Objects.h"
@@ -41,13 +42,12 @@ void main() {
         result[i] = vec4(basis * kDiffuseConeDirections[i], kDiffuseConeWeights[i]);
     float alpha = alphaFromRoughness(uRoughness);
     for (int k = 0; k < uCount; ++k) {
-        vec3 h = basis * sampleGgxHalfVector(specularSample(k, uCount, uFragCoord, 0), alpha);
         vec3 l;
-        float w = ggxSampleWeight(uNormal, uView, h, alpha, l);
+        float w = specularLobeCone(k, uCount, uNormal, uView, basis, alpha, uFragCoord, 0, l);
         result[kDiffuseConeCount + k] = vec4(l, w);
     }
     result[kDiffuseConeCount + LIT_SPECULAR_MAX_SAMPLES] =
-        vec4(specularConeAperture(alpha, uCount), specularCanReuseDiffuseCones(alpha, uCount, uDiffuseAperture) ? 1.0 : 0.0,
+        vec4(specularConeAperture(alpha, uCount), specularCanReuseDiffuseCones(alpha, uDiffuseAperture) ? 1.0 : 0.0,
              0.0, 0.0);
 }
 )";
@@ -84,6 +84,11 @@ TEST_F(ConeMirror, TracedConesMatchTheShader) {
         {{0, 0, -1}, {0.2f, 0.1f, -0.9f}, 0.8f, 4, {0, 0}},  // n.z < 0: the other branch of tangentFrame
         {glm::normalize(glm::vec3(-0.4f, 0.5f, 0.3f)), {0.1f, 0.9f, 0.3f}, 0.9f, 8, {255, 254}},
         {{0, 1, 0}, {0.95f, 0.05f, 0.0f}, 1.0f, 3, {17, 200}},  // grazing: samples fall below the horizon
+        // One cone: the lobe's dominant direction, smooth, rough (reuses the diffuse cones) and grazing.
+        {{0, 1, 0}, {0.3f, 0.8f, 0.5f}, 0.35f, 1, {37, 81}},
+        {glm::normalize(glm::vec3(-0.4f, 0.5f, 0.3f)), {0.1f, 0.9f, 0.3f}, 0.9f, 1, {255, 254}},
+        {{0, 1, 0}, {0.95f, 0.05f, 0.0f}, 0.5f, 1, {17, 200}},
+        {{0, 1, 0}, {0.3f, 0.8f, 0.5f}, 0.6f, 1, {37, 81}},  // one cone wider than a diffuse one, still marched
     };
     for (const Case& c : cases) {
         const glm::vec3 n = glm::normalize(c.normal), v = glm::normalize(c.view);
