@@ -174,7 +174,9 @@ void describeConeDirections(const LegendInputs& in, ViewLegend& legend) {
     const auto rgba = [](glm::vec4 c) { return std::array<float, 4>{c.r, c.g, c.b, c.a}; };
     legend.swatches.push_back({rgba(kDiffuseConeColor), gi.mode == GiMode::Fast ? "diffuse cones (six, 60 deg)"
                                                                                 : "diffuse cones (stratified set)"});
-    legend.swatches.push_back({rgba(kSpecularConeColor), "specular cones (GGX samples)"});
+    legend.swatches.push_back({rgba(kSpecularConeColor), in.settings.indirect.specularSamples <= 1
+                                                             ? "specular cone (as wide as the lobe, mirror direction)"
+                                                             : "specular cones (GGX samples)"});
     glm::vec4 faint = kSpecularConeColor;
     faint.a *= kUnmarchedConeAlpha;
     legend.swatches.push_back({rgba(faint), "faint: not marched, the rough surface reuses the diffuse cones' light"});

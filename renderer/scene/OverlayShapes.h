@@ -99,9 +99,9 @@ int coneSetOfPixel(glm::ivec2 glPixel, const RenderSettings& settings);
 // `settings` when both indirect terms are on (the final view): the six diffuse cones
 // (cone.glsl traceDiffuse; none when !surface.diffuse; in the accurate mode, coneFootprintPerHeight
 // > 0, the pixel's stratified set, coneSetOfPixel, with their footprint bound), then the specular cones (traceSpecular:
-// clamp(specularSamples, 1, 8) GGX samples with the pixel's sample rotation, samples below the
-// horizon dropped, the mirror direction when all are; marched = false where they reuse the
-// diffuse cones). The diffuse table and the constants come
+// clamp(specularSamples, 1, 8) cones, specularLobeCone: one around the mirror direction, or GGX
+// samples with the pixel's sample rotation, samples below the horizon dropped, the mirror
+// direction when all are; marched = false where they reuse the diffuse cones). The diffuse table and the constants come
 // from shared.h; the sampling functions (tangent frame, Hammersley point, hashes, GGX half vector)
 // are C++ copies of cone.glsl's, checked by tests/unit/test_overlay_shapes.cpp. The renderer traces
 // with sample pattern 0 every frame, so this does too. Lengths are 0 when surface.volumeSide is

@@ -471,15 +471,12 @@ float specularConeAperture(float alpha, int count) {
 
 // Whether a lobe with roughness α is at least two diffuse cones (of full aperture
 // `diffuseAperture`) wide: its halves' cones, specularConeAperture(α, 2), no narrower than a
-// diffuse cone. Cones of its own would then only blur what the diffuse cones already saw, and rough
-// specular reuses them (radianceFromDiffuseCones) instead of marching its own. With 60° diffuse
-// cones that is perceptual roughness ≥ 0.64; most dielectric surfaces of real scenes are that
-// rough, and the march saved is the largest cost of the frame on a software rasterizer. It does not
-// depend on the cone count (indirect.specularSamples), which only says how a narrower lobe is
-// traced: one cone as wide as the whole lobe, wider than the diffuse cones from roughness 0.54, would
-// otherwise take the cached mode's gathered irradiance, the whole hemisphere's mean, from there on
-// (the material spheres' plain dielectric of roughness 0.6: indirect specular 0.81 of the
-// reference instead of 0.92).
+// diffuse cone. Its own cones would then only blur what the diffuse cones saw, and rough specular
+// reuses them (radianceFromDiffuseCones). With 60° diffuse cones that is perceptual roughness
+// ≥ 0.64, as most dielectrics of real scenes are; the march saved is the frame's largest cost on a
+// software rasterizer. Independent of the cone count: with it, one cone as wide as the lobe would
+// hand lobes from roughness 0.54 on to the cached mode's gathered irradiance, a whole hemisphere's
+// mean (docs/GI.md, "Rough lobes").
 bool specularCanReuseDiffuseCones(float alpha, float diffuseAperture) {
     return specularConeAperture(alpha, 2) >= diffuseAperture - LIT_CONE_REUSE_TOLERANCE;
 }
