@@ -175,7 +175,7 @@ void describeConeDirections(const LegendInputs& in, ViewLegend& legend) {
     legend.swatches.push_back({rgba(kDiffuseConeColor), gi.mode == GiMode::Fast ? "diffuse cones (six, 60 deg)"
                                                                                 : "diffuse cones (stratified set)"});
     legend.swatches.push_back({rgba(kSpecularConeColor), in.settings.indirect.specularSamples <= 1
-                                                             ? "specular cone (as wide as the lobe, mirror direction)"
+                                                             ? "specular cone (the lobe's core, mirror direction)"
                                                              : "specular cones (GGX samples)"});
     glm::vec4 faint = kSpecularConeColor;
     faint.a *= kUnmarchedConeAlpha;

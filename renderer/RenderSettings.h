@@ -180,7 +180,7 @@ struct IndirectSettings {
     // One pixel in every scale × scale block traces (or gathers) the indirect light, upsampled with
     // depth- and normal-aware weights: 1 (every pixel), 2 (default) or 4.
     int scale = 2;
-    int specularSamples = 1;  // cones for indirect specular, 1..8: 1 = one cone as wide as the lobe, more = GGX samples
+    int specularSamples = 1;  // cones for indirect specular, 1..8: 1 = the lobe's core around the mirror direction, more = GGX samples
     // Perceptual roughness below which L_IS is traced per pixel at full resolution (a sharp
     // reflection would blur at reduced resolution); at and above it, with L_ID at scale.
     float specularFullResRoughness = 0.3f;

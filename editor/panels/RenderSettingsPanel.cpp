@@ -180,8 +180,8 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
         "fast: the classic six cones per pixel over isotropic voxels; wrong in places (docs/GI.md)");
     changed |= ImGui::SliderFloat("Indirect intensity", &s.gi.indirectIntensity, 0.0f, 4.0f, "%.2f");
     changed |= ImGui::SliderInt("Specular cones", &s.indirect.specularSamples, 1, 8);
-    tooltip("1: one cone as wide as the reflection lobe, around the mirror direction (no noise).\n"
-            "More: importance samples of the lobe, narrower cones that differ from pixel to pixel");
+    tooltip("1: one cone, the reflection lobe's core around the mirror direction (no noise).\n"
+            "More: importance samples of the lobe, cones that differ from pixel to pixel");
     changed |= sliderDegrees("Diffuse aperture", s.gi.diffuseConeAperture, 10.0f, 90.0f);
     tooltip("Full opening angle of each diffuse cone");
     changed |= ImGui::SliderFloat("Max distance", &s.gi.maxTraceDistance, 0.05f, 1.0f, "%.2f");

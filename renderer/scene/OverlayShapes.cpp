@@ -145,8 +145,9 @@ float alphaFromRoughness(float roughness) {
     return r * r;
 }
 
+// cone.glsl's: the single cone as wide as each of two samples'.
 float specularConeAperture(float alpha, int count) {
-    const float halfAngle = std::atan(2.0f * alpha / std::sqrt(float(count)));
+    const float halfAngle = std::atan(2.0f * alpha / std::sqrt(float(std::max(count, 2))));
     return std::clamp(2.0f * halfAngle, float(LIT_SPECULAR_APERTURE_MIN), float(LIT_SPECULAR_APERTURE_MAX));
 }
 

@@ -421,9 +421,9 @@ float ggxSampleWeight(vec3 n, vec3 v, vec3 h, float alpha, out vec3 l) {
 }
 
 // Cone k of the `count` that stand for the lobe: sets its axis `l` and returns its weight (0: the
-// sample fell below the surface). One cone (count 1) is the whole lobe: a cone as wide as the lobe
-// (specularConeAperture) around the mirror direction, the same for every pixel and frame, so it has
-// no sampling noise. More cones are GGX importance samples (specularSample) weighted by
+// sample fell below the surface). One cone (count 1) stands for the whole lobe: its core around the
+// mirror direction (specularConeAperture), the same for every pixel and frame, so it has no
+// sampling noise. More cones are GGX importance samples (specularSample) weighted by
 // ggxSampleWeight, which scatter from pixel to pixel (docs/GI.md, "Indirect specular: GGX cones").
 float specularLobeCone(int k, int count, vec3 n, vec3 v, mat3 basis, float alpha, vec2 pixel, int frameIndex,
                        out vec3 l) {
@@ -464,8 +464,11 @@ const float kMaxSpecularAperture = LIT_SPECULAR_APERTURE_MAX;  // π/3: wider lo
 // about 2·atan(α) ≈ 2α wide around the mirror direction; each of N samples covers 1/N of its
 // solid angle, a cone of half angle ≈ 2α/√N:
 //   aperture = 2·atan(2α/√N), clamped to [0.02, π/3].
+// The single cone (count 1, specularLobeCone) is as wide as each of two samples', the lobe's core:
+// as wide as the whole lobe it read more of its own surface's voxels at a slant (docs/GI.md,
+// "Indirect specular: GGX cones").
 float specularConeAperture(float alpha, int count) {
-    float halfAngle = atan(2.0 * alpha * inversesqrt(float(count)));
+    float halfAngle = atan(2.0 * alpha * inversesqrt(float(max(count, 2))));
     return clamp(2.0 * halfAngle, kMinSpecularAperture, kMaxSpecularAperture);
 }
 
@@ -474,9 +477,8 @@ float specularConeAperture(float alpha, int count) {
 // diffuse cone. Its own cones would then only blur what the diffuse cones saw, and rough specular
 // reuses them (radianceFromDiffuseCones). With 60° diffuse cones that is perceptual roughness
 // ≥ 0.64, as most dielectrics of real scenes are; the march saved is the frame's largest cost on a
-// software rasterizer. Independent of the cone count: with it, one cone as wide as the lobe would
-// hand lobes from roughness 0.54 on to the cached mode's gathered irradiance, a whole hemisphere's
-// mean (docs/GI.md, "Rough lobes").
+// software rasterizer. The cone count (indirect.specularSamples) says how a narrower lobe is
+// traced, not whether.
 bool specularCanReuseDiffuseCones(float alpha, float diffuseAperture) {
     return specularConeAperture(alpha, 2) >= diffuseAperture - LIT_CONE_REUSE_TOLERANCE;
 }
