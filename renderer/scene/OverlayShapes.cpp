@@ -151,6 +151,11 @@ float specularConeAperture(float alpha, int count) {
     return std::clamp(2.0f * halfAngle, float(LIT_SPECULAR_APERTURE_MIN), float(LIT_SPECULAR_APERTURE_MAX));
 }
 
+// cone.glsl's specularCanReuseDiffuseCones: the lobe's halves against the diffuse cones.
+bool specularCanReuseDiffuseCones(float alpha, float diffuseAperture) {
+    return specularConeAperture(alpha, 2) >= diffuseAperture - float(LIT_CONE_REUSE_TOLERANCE);
+}
+
 }  // namespace
 
 std::vector<OverlayLine> cameraFrustumLines(const glm::mat4& world, float yfov, float aspect, float length,
@@ -336,10 +341,8 @@ std::vector<TracedCone> tracedCones(const SurfaceSample& surface, const glm::vec
     const int count = std::clamp(settings.indirect.specularSamples, 1, LIT_SPECULAR_MAX_SAMPLES);
     const float alpha = alphaFromRoughness(surface.roughness);
     const float aperture = specularConeAperture(alpha, count);
-    // specularCanReuseDiffuseCones (the lobe's halves against the diffuse cones, whatever the count),
-    // with the unclamped aperture the shader gets (traceParams.w).
-    const bool marched = !(surface.diffuse && specularConeAperture(alpha, 2) >=
-                                                  settings.gi.diffuseConeAperture - float(LIT_CONE_REUSE_TOLERANCE));
+    // With the unclamped diffuse aperture the shader gets (traceParams.w).
+    const bool marched = !(surface.diffuse && specularCanReuseDiffuseCones(alpha, settings.gi.diffuseConeAperture));
     const glm::vec2 fragCoord = glm::vec2(surface.glPixel) + 0.5f;
     const std::size_t firstSpecular = cones.size();
     float weightSum = 0.0f;

@@ -22,6 +22,24 @@ protected:
     }
     // Renders one view; the voxel volume is built on the first frame of each render() call.
     HdrImage renderView(const Scene& scene, bool gi, View view) { return render(scene, giSettings(gi, view)); }
+    // Gives the node named `node` a metal of `roughness` (white, 0.95); false if there is no such node.
+    static bool makeMetal(Scene& scene, const std::string& node, float roughness) {
+        Material metal;
+        metal.name = "metal";
+        metal.baseColorFactor = glm::vec4(0.95f, 0.95f, 0.95f, 1.0f);
+        metal.metallic = 1.0f;
+        metal.roughness = roughness;
+        scene.materials.push_back(metal);
+        bool found = false;
+        for (Node& n : scene.nodes)
+            if (n.name == node && n.mesh >= 0) {
+                for (Primitive& p : scene.meshes[std::size_t(n.mesh)].primitives)
+                    p.material = int(scene.materials.size() - 1);
+                found = true;
+            }
+        ++scene.materialRevision;
+        return found;
+    }
 };
 
 TEST_F(CornellGi, FourTermsSumToTheFinalImage) {
@@ -143,21 +161,7 @@ TEST_F(CornellGi, WhiteSurfacesNearColouredWallsBleedTheirColour) {
 
 TEST_F(CornellGi, MirrorFloorReflectsTheRedWall) {
     Scene scene = loadCornellBox();
-    const int floorNode = [&] {
-        for (std::size_t i = 0; i < scene.nodes.size(); ++i)
-            if (scene.nodes[i].name == "floor") return int(i);
-        return -1;
-    }();
-    ASSERT_GE(floorNode, 0);
-    Material mirror;
-    mirror.name = "mirror";
-    mirror.baseColorFactor = glm::vec4(0.95f, 0.95f, 0.95f, 1.0f);
-    mirror.metallic = 1.0f;
-    mirror.roughness = 0.05f;
-    scene.materials.push_back(mirror);
-    for (Primitive& p : scene.meshes[std::size_t(scene.nodes[std::size_t(floorNode)].mesh)].primitives)
-        p.material = int(scene.materials.size() - 1);
-    ++scene.materialRevision;
+    ASSERT_TRUE(makeMetal(scene, "floor", 0.05f));
     const RenderSettings settings = giSettings(true);
     const HdrImage is = renderView(scene, true, View::IndirectSpecular);
     writePng(outputDir() / "mirror_floor_indirect_specular.png", settings.output.width, settings.output.height,
@@ -180,17 +184,8 @@ TEST_F(CornellGi, MirrorFloorReflectsTheRedWall) {
 // limits" (grazing metal).
 TEST_F(CornellGi, OneSpecularConeLeavesNoSpeckleOnARoughMetal) {
     Scene scene = loadCornellBox();
-    Material metal;
-    metal.name = "rough metal";
-    metal.baseColorFactor = glm::vec4(0.95f, 0.95f, 0.95f, 1.0f);
-    metal.metallic = 1.0f;
-    metal.roughness = 0.4f;  // traced at reduced resolution, narrower than the diffuse cones
-    scene.materials.push_back(metal);
-    for (Node& node : scene.nodes)
-        if (node.name == "left_wall_red")
-            for (Primitive& p : scene.meshes[std::size_t(node.mesh)].primitives)
-                p.material = int(scene.materials.size() - 1);
-    ++scene.materialRevision;
+    // Roughness 0.4: traced at reduced resolution, narrower than the diffuse cones.
+    ASSERT_TRUE(makeMetal(scene, "left_wall_red", 0.4f));
     RenderSettings settings = giSettings(true, View::IndirectSpecular);
     ASSERT_EQ(settings.indirect.specularSamples, 1) << "the default";
     settings.output.width = settings.output.height = 256;  // the reflections' structure spans more pixels than the noise
