@@ -135,6 +135,8 @@ void setMaterial(Parser& p, std::string_view name, Material& m, int rememberedTe
     } else if (name == "material.clearcoatRoughness") {
         if (auto v = p.number(); v && p.require(*v >= 0.0f && *v <= 1.0f, "must be in [0, 1]"))
             m.clearcoatRoughness = *v;
+    } else if (name == "material.transmission") {
+        if (auto v = p.number(); v && p.require(*v >= 0.0f && *v <= 1.0f, "must be in [0, 1]")) m.transmission = *v;
     }
 }
 
@@ -196,7 +198,7 @@ const std::vector<std::string>& propertyNames() {
         "material.albedo",   "material.albedoTexture", "material.roughness", "material.metalness",
         "material.emissive", "material.emissiveStrength", "material.ior", "material.specular",
         "material.specularTint", "material.sheen", "material.sheenRoughness", "material.clearcoat",
-        "material.clearcoatRoughness",
+        "material.clearcoatRoughness", "material.transmission",
         "light.type",        "light.color",        "light.intensity",  "light.range",
         "light.inner",       "light.outer",        "light.shadow",
         "camera.fov",        "camera.near",        "camera.far",

@@ -26,6 +26,7 @@
 #include "passes/OverlayPass.h"
 #include "passes/PostPass.h"
 #include "passes/ShadowPass.h"
+#include "passes/SheetPass.h"
 #include "passes/SkyTexture.h"
 #include "passes/VoxelDebugPass.h"
 #include "scene/Bvh.h"
@@ -61,6 +62,7 @@ int toShaderView(View view) {
 // What the shadow maps depend on; they are re-rendered only when it changes.
 struct ShadowKey {
     std::uint64_t geometry = ~0ull, lights = ~0ull;
+    std::uint64_t materials = ~0ull;  // Scene::materialRevision while sheets are or were in the maps, else 0
     const Scene* scene = nullptr;
     bool shadows = false;
     int size = 0;
@@ -95,12 +97,13 @@ struct Renderer::Impl {
           overlayPass(shaderRoot),
           voxelDebug(shaderRoot),
           autoExposure(shaderRoot),
+          sheets(shaderRoot),
           frameUniforms("frame uniforms", sizeof(gpu::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT),
           lightBuffer("lights", sizeof(gpu::GpuLight) * LIT_MAX_LIGHTS, nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
     std::vector<Pass*> passes() {
         std::vector<Pass*> all{&shadow,  &gbuffer,  &direct,      &post,       &coneTrace,
-                               &resolve, &fallback, &overlayPass, &voxelDebug, &autoExposure};
+                               &resolve, &fallback, &overlayPass, &voxelDebug, &autoExposure, &sheets};
         for (Pass* pass : gi.passes()) all.push_back(pass);
         return all;
     }
@@ -124,7 +127,9 @@ struct Renderer::Impl {
     // `layers`: whether the scene's materials have specular layers (GpuScene::hasMaterialLayers).
     void traceIndirect(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame,
                        bool layers);
-    void composite(const RenderSettings& settings);
+    void composite(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
+    // The transmissive sheets over the composite's image (SheetPass).
+    void drawSheets(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
     void drawOverlay(const gpu::FrameUniforms& frame);
 
     // The sky image of settings.sky.hdrPath, loaded and uploaded when the path changes; nullptr
@@ -158,6 +163,7 @@ struct Renderer::Impl {
     OverlayPass overlayPass;
     VoxelDebugPass voxelDebug;
     AutoExposurePass autoExposure;
+    SheetPass sheets;
     std::chrono::steady_clock::time_point lastMetered{};  // when auto exposure last ran
     bool meteredLastFrame = false;
     SkyImage skyImage;
@@ -270,7 +276,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     } else {
         r.resolve.resetHistory();  // no terms this frame: the next one starts afresh
     }
-    r.composite(settings);
+    r.composite(scene, settings, frame);
     r.drawOverlay(frame);
 
     r.lastFrame = frame;
@@ -322,12 +328,15 @@ void Renderer::Impl::syncScene(const Scene& scene) {
 // The light table: rebuilt only when the scene or the shadow settings change; the camera does
 // not affect it or the shadow maps (directional maps are fitted to the scene, not the view).
 bool Renderer::Impl::updateLights(const Scene& scene, const RenderSettings& settings) {
-    const ShadowKey key{scene.geometryRevision,     scene.lightRevision,        &scene,
+    // A material edit changes the maps only where sheets are or were (their transmittance layers).
+    const std::uint64_t sheetMaterials = gpuScene->hasSheets() || lights.sheetShadows ? scene.materialRevision : 0;
+    const ShadowKey key{scene.geometryRevision,     scene.lightRevision,        sheetMaterials, &scene,
                         settings.shadows.enabled,   settings.shadows.mapSize,   settings.shadows.depthBias,
                         settings.shadows.slopeBias, settings.sky.sunIrradiance, settings.sky.sunElevation,
                         settings.sky.sunAzimuth};
     if (key == shadowKey) return false;
     lights = buildLightSetup(scene, bounds, settings, log);
+    lights.sheetShadows = gpuScene->hasSheets();
     glNamedBufferSubData(lightBuffer.id(), 0, static_cast<GLsizeiptr>(lights.lights.size() * sizeof(gpu::GpuLight)),
                          lights.lights.data());
     shadowKey = key;
@@ -470,7 +479,23 @@ void Renderer::Impl::traceIndirect(const Scene& scene, const RenderSettings& set
 
 // The chosen view into the HDR image (the composite of the terms, or a debug view), auto
 // exposure, tone mapping to the output.
-void Renderer::Impl::composite(const RenderSettings& settings) {
+void Renderer::Impl::drawSheets(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame) {
+    if (!gpuScene->hasSheets() || !SheetPass::drawsView(settings)) return;
+    Profiler::Scope scope(profiler, "sheets");
+    shadow.bindMaps();
+    gpuScene->materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
+    bindSheenAlbedo();
+    const bool indirect = settings.gi.enabled && gi.valid() && gi.volume().radiance();
+    if (indirect) {
+        gi.volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
+        gi.volume().radiance().bind(LIT_TEX_VOXEL_RADIANCE);
+        coneTrace.specularAlbedoTable().bind(LIT_TEX_SPECULAR_ALBEDO);
+    }
+    sheets.execute(scene, *gpuScene, {post.hdr(), gbuffer.depth()}, settings,
+                   {ShadowKinds::of(lights), glm::vec3(frame.cameraPosition), &cameraItems, indirect}, counters);
+}
+
+void Renderer::Impl::composite(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame) {
     waitForQueuedPasses();  // the composite samples the lighting terms
     Profiler::Scope scope(profiler, "post");
     terms.bind();
@@ -482,6 +507,7 @@ void Renderer::Impl::composite(const RenderSettings& settings) {
         voxelDebug.execute(settings, settings.gi.enabled ? &gi.volume() : nullptr, gi.generation());
     } else {
         post.composite(settings, shadow.maps2d(), shadowLayer);
+        drawSheets(scene, settings, frame);
     }
     if (settings.output.autoExposure && !isDataView(settings.debug.view)) {
         const auto now = std::chrono::steady_clock::now();

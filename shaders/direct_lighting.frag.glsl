@@ -46,8 +46,8 @@ void main() {
         LightSample ls = sampleLight(light, s.position);
         float NdotL = dot(n, ls.l);
         if (NdotL <= 0.0 || max(ls.radiance.r, max(ls.radiance.g, ls.radiance.b)) <= 0.0) continue;
-        float visibility = shadowVisibility(light, s.position, n, frame.exposure.y, uShadowNormalOffset);
-        if (visibility <= 0.0) continue;
+        vec3 visibility = shadowVisibility(light, s.position, n, frame.exposure.y, uShadowNormalOffset);
+        if (max(visibility.r, max(visibility.g, visibility.b)) <= 0.0) continue;
         vec3 E = ls.radiance * visibility * NdotL;
         diffuse += E * albedo * (base / PI);
         if (sheen) {

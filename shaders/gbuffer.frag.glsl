@@ -23,6 +23,7 @@ layout(location = LIT_LOC_PRIMITIVE) uniform uint uPrimitive;
 
 void main() {
     GpuMaterial m = materials[uMaterialIndex];
+    if (materialIsSheet(m)) discard;  // drawn over the lit image by SheetPass
     vec4 baseColor = materialBaseColor(m, fs.uv);
     if (materialAlphaDiscard(m, baseColor.a)) discard;
 

@@ -117,7 +117,7 @@ void main() {
         // The side of the voxel that faces the light.
         vec3 facing = !hasDirection ? s.l : (nl < 0.0 ? -normal : normal);
         vec3 lookup = oneSided ? voxelSurfaceWorldPoint(v, kShadowSurfaceOffsetVoxels * facing) : centre + facing * voxelSize;
-        float visibility = shadowVisibility(light, lookup, facing, kShadowPcfRadius,
+        vec3 visibility = shadowVisibility(light, lookup, facing, kShadowPcfRadius,
                                             kShadowNormalOffsetTexels);
         // A voxel holding faces back to back (a wall thinner than a voxel, or two solids that touch)
         // glows on both sides, whichever face the light reaches: it is lit only if the point half a

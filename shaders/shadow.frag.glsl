@@ -1,10 +1,12 @@
 #version 450 core
-// Shadow pass: only alpha-masked materials need a fragment shader (cut-outs cast cut-out shadows).
+// Shadow pass: alpha-masked materials cast cut-out shadows; transmissive sheets cast none (their
+// light passes, docs/MATERIALS.md "Transmission").
 #include "material.glsl"
 
 in vec2 vUv;
 
 void main() {
     GpuMaterial m = materials[uMaterialIndex];
+    if (materialIsSheet(m)) discard;
     if (m.modes.y == LIT_ALPHA_MASK && materialBaseColor(m, vUv).a < m.alpha.x) discard;
 }

@@ -89,6 +89,7 @@ void main() {
     if (any(lessThan(v, max(uRegionMin, ivec3(0)))) || any(greaterThanEqual(v, min(uRegionMax, ivec3(n))))) discard;
 
     GpuMaterial m = materials[uMaterialIndex];
+    if (materialIsSheet(m)) discard;  // light passes through sheets: they occupy no voxel
     vec4 baseColor = materialBaseColor(m, fs.uv);
     if (materialAlphaDiscard(m, baseColor.a)) discard;
     vec3 emissive = m.emissive.rgb;

@@ -2,10 +2,11 @@
 # The material layers against the reference: the Blender scene of
 # tools/blender/make_material_layers.py (seven spheres: plain, clear-coated smooth and rough,
 # Blender's Specular 1, IOR 2.2 with a specular tint, clear-coated gold, a sheen from a Velvet
-# BSDF) rendered with Lit's
-# defaults and with Lit's reference path tracer (every bounce), each sphere's mean per term
-# (tools/material_accuracy.py). Writes docs/tables/material-accuracy.md, headed by the date, the
-# commit and the machine; docs/MATERIALS.md explains it.
+# BSDF), and the glass scene of tools/blender/make_glass.py (a clear pane, a tinted panel:
+# KHR_materials_transmission) rendered with Lit's defaults and with Lit's reference path tracer
+# (every bounce), each object's mean per term (tools/material_accuracy.py). Writes
+# docs/tables/material-accuracy.md, headed by the date, the commit and the machine;
+# docs/MATERIALS.md explains it.
 #
 # Usage: tools/material-accuracy.sh   (a built lit-render; python3 with numpy: install-deps.sh --scene-tools)
 # Environment (all optional):
@@ -19,6 +20,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${LIT_BUILD_DIR:-$root/build}"
 render="$build/tools/lit-render"
 scene="$root/tests/data/blender/material_layers/material_layers.gltf"
+glass="$root/tests/data/blender/glass/glass.gltf"
 out="${MATERIAL_OUT:-$root/docs/tables/material-accuracy.md}"
 spp="${MATERIAL_SPP:-1024}"
 voxels="${MATERIAL_VOXELS:-128}"
@@ -31,20 +33,29 @@ tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 quiet() { "$@" > "$tmp/log" 2>&1 || { cat "$tmp/log" >&2; exit 1; }; }
 views=(final direct-diffuse direct-specular indirect-diffuse indirect-specular)
-for view in "${views[@]}"; do
-    quiet "$render" "$scene" --size "$size" --voxels "$voxels" --view "$view" --hdr "$tmp/lit-$view.hdr" --out "$tmp/lit.png"
-done
-start=$(date +%s)
-for view in "${views[@]}"; do
-    quiet "$render" "$scene" --size "$size" --reference --bounces all --spp "$spp" --view "$view" \
-        --hdr "$tmp/ref-$view.hdr" --out "$tmp/ref.png"
-done
-ref_seconds=$(( $(date +%s) - start ))
-quiet "$render" "$scene" --size "$size" --reference --spp 1 --node-map "$tmp/nodes.txt" --out "$tmp/nodes.png"
-
-pairs=()
-for view in "${views[@]}"; do pairs+=("$view=$tmp/lit-$view.hdr:$tmp/ref-$view.hdr"); done
-rows="$(cd "$root/tools" && "$python" material_accuracy.py "$tmp/nodes.txt" "${pairs[@]}")"
+# compare SCENE NAME [--nodes A,B,...]: both renderers' five views of SCENE, one table row per view
+# into $tmp/NAME.rows; the reference's seconds into $tmp/NAME.seconds.
+compare() {
+    local scene="$1" name="$2"
+    shift 2
+    for view in "${views[@]}"; do
+        quiet "$render" "$scene" --size "$size" --voxels "$voxels" --view "$view" --hdr "$tmp/$name-lit-$view.hdr" --out "$tmp/lit.png"
+    done
+    local start=$(date +%s)
+    for view in "${views[@]}"; do
+        quiet "$render" "$scene" --size "$size" --reference --bounces all --spp "$spp" --view "$view" \
+            --hdr "$tmp/$name-ref-$view.hdr" --out "$tmp/ref.png"
+    done
+    echo $(( $(date +%s) - start )) > "$tmp/$name.seconds"
+    quiet "$render" "$scene" --size "$size" --reference --spp 1 --node-map "$tmp/$name-nodes.txt" --out "$tmp/nodes.png"
+    local pairs=()
+    for view in "${views[@]}"; do pairs+=("$view=$tmp/$name-lit-$view.hdr:$tmp/$name-ref-$view.hdr"); done
+    (cd "$root/tools" && "$python" material_accuracy.py "$@" "$tmp/$name-nodes.txt" "${pairs[@]}") > "$tmp/$name.rows"
+}
+compare "$scene" layers
+compare "$glass" glass --nodes pane,tinted,box,floor,back_wall
+rows="$(cat "$tmp/layers.rows")"
+ref_seconds="$(cat "$tmp/layers.seconds")"
 
 . "$root/tools/table-stamp.sh"
 commit="$(table_commit "$root")"
@@ -66,5 +77,16 @@ mkdir -p "$(dirname "$out")"
     echo "| term | plain | clearcoat (1, rough. 0.05) | clearcoat_rough (0.6, 0.35) | specular (F0 0.08) | ior (2.2, tinted to F0 0.04) | coated_metal (gold, coat 1, 0.1) | sheen (0.8, rough. 0.5) |"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|"
     echo "$rows"
+    echo
+    echo "## Glass"
+    echo
+    echo "- Scene: \`tests/data/blender/glass\` (tools/blender/make_glass.py), ${size/x/×} pixels: a clear pane before an orange box, a tinted panel in the sun's path (KHR_materials_transmission, drawn as thin sheets)"
+    echo "- Lit and the reference as above; the reference took $(cat "$tmp/glass.seconds") s for the five views"
+    echo
+    echo "Each object's mean over its inner pixels as the camera sees it first (a sheet: its own light and what it lets through of what lies behind it), Lit ÷ the reference, per term:"
+    echo
+    echo "| term | pane (clear, seen through to the box and the floor) | tinted (0.3, 0.75, 0.9) | box (beside the pane) | floor (with both panels' shadows) | back_wall |"
+    echo "|---|---:|---:|---:|---:|---:|"
+    cat "$tmp/glass.rows"
 } > "$out"
 echo "wrote $out"

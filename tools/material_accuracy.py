@@ -1,12 +1,14 @@
-"""Per-sphere comparison of the material-layers scene (tests/data/blender/material_layers);
-called by tools/material-accuracy.sh, which renders the images.
+"""Per-object comparison of the material-layers scene (tests/data/blender/material_layers) and
+the glass scene (tests/data/blender/glass); called by tools/material-accuracy.sh, which renders
+the images.
 
-Usage: material_accuracy.py NODES.txt NAME=LIT.hdr:REFERENCE.hdr ...
+Usage: material_accuracy.py [--nodes A,B,...] NODES.txt NAME=LIT.hdr:REFERENCE.hdr ...
 
-NODES is lit-render --reference --node-map's file (the node each pixel sees). For each named pair
-and each sphere (a node whose name is one of the spheres below), over the sphere's inner pixels
-(the pixel and its four neighbours see it), in luminance (Rec. 709): the mean of LIT ÷ the mean of
-REFERENCE. Prints one markdown table row per pair.
+NODES is lit-render --reference --node-map's file (the node each pixel sees first: a sheet, not
+what lies behind it). For each named pair and each object (a node named in --nodes, the spheres
+below by default), over the object's inner pixels (the pixel and its four neighbours see it), in
+luminance (Rec. 709): the mean of LIT ÷ the mean of REFERENCE. Prints one markdown table row per
+pair.
 """
 
 import sys
@@ -18,10 +20,10 @@ from room_accuracy import read_hdr, read_node_map
 SPHERES = ["plain", "clearcoat", "clearcoat_rough", "specular", "ior", "coated_metal", "sheen"]
 
 
-def inner_masks(nodes, names):
+def inner_masks(nodes, names, objects):
     masks = {}
     for index, name in names.items():
-        if name not in SPHERES:
+        if name not in objects:
             continue
         m = nodes == index
         inner = m.copy()
@@ -36,16 +38,21 @@ def inner_masks(nodes, names):
 
 
 def main():
-    names, nodes = read_node_map(sys.argv[1])
-    masks = inner_masks(nodes, names)
-    for arg in sys.argv[2:]:
+    args = sys.argv[1:]
+    objects = SPHERES
+    if args and args[0] == "--nodes":
+        objects = args[1].split(",")
+        args = args[2:]
+    names, nodes = read_node_map(args[0])
+    masks = inner_masks(nodes, names, objects)
+    for arg in args[1:]:
         label, pair = arg.split("=", 1)
         lit_path, ref_path = pair.split(":", 1)
         lit = read_hdr(lit_path)  # luminance
         ref = read_hdr(ref_path)
         cells = []
-        for sphere in SPHERES:
-            m = masks.get(sphere)
+        for name in objects:
+            m = masks.get(name)
             if m is None or not m.any() or ref[m].mean() <= 1e-9:
                 cells.append("—")
             else:

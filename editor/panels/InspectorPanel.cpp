@@ -278,6 +278,12 @@ void InspectorPanel::drawSpecularLayers(Document& doc, Material& material) {
     tooltip("Perceptual roughness of the clear coat");
     track(doc, "Clear Coat Roughness", Change::Material, changed,
           [&] { material.clearcoatRoughness = coatRoughness; });
+
+    float transmission = material.transmission;
+    changed = ImGui::SliderFloat("Transmission", &transmission, 0.0f, 1.0f, "%.3f");
+    tooltip("Share of the dielectric's light that passes straight through, tinted by the base colour "
+            "(KHR_materials_transmission; drawn as a thin sheet: glass panes, film)");
+    track(doc, "Transmission", Change::Material, changed, [&] { material.transmission = transmission; });
     ImGui::TreePop();
 }
 

@@ -32,6 +32,9 @@ struct LightSetup {
     std::vector<gpu::GpuLight> lights;
     std::vector<ShadowView> shadows2d;    // directional + spot
     std::vector<ShadowView> shadowsCube;  // point
+    // The 2D shadow layers also hold what transmissive sheets let through (ShadowPass, lights.glsl);
+    // set by the renderer when the scene has sheets and some light a 2D map.
+    bool sheetShadows = false;
 };
 
 // The kinds of shadow map a light table uses. The programs that light from it (direct lighting,
@@ -40,19 +43,23 @@ struct LightSetup {
 // pixel of a scene lit by a spot light alone, a third of its lighting pass (docs/PERFORMANCE.md,
 // "llvmpipe"). The default has both, right for any table.
 struct ShadowKinds {
-    bool cube = true;  // a point light with a cube shadow map
-    bool flat = true;  // a directional or spot light with a 2D one
+    bool cube = true;     // a point light with a cube shadow map
+    bool flat = true;     // a directional or spot light with a 2D one
+    bool sheets = false;  // the 2D maps hold transmissive sheets' transmittance (LightSetup::sheetShadows)
 
-    static ShadowKinds of(const LightSetup& setup) { return {!setup.shadowsCube.empty(), !setup.shadows2d.empty()}; }
-    static constexpr std::size_t kVariants = 4;
-    std::size_t index() const { return (cube ? 1u : 0u) + (flat ? 2u : 0u); }
+    static ShadowKinds of(const LightSetup& setup) {
+        return {!setup.shadowsCube.empty(), !setup.shadows2d.empty(), setup.sheetShadows && !setup.shadows2d.empty()};
+    }
+    static constexpr std::size_t kVariants = 8;
+    std::size_t index() const { return (cube ? 1u : 0u) + (flat ? 2u : 0u) + (sheets ? 4u : 0u); }
     std::string defines() const {
         return std::string("#define LIT_SHADOWS_CUBE ") + (cube ? "1" : "0") + "\n#define LIT_SHADOWS_2D " +
-               (flat ? "1" : "0") + "\n";
+               (flat ? "1" : "0") + "\n#define LIT_SHADOWS_SHEETS " + (sheets ? "1" : "0") + "\n";
     }
     std::string label() const {
-        if (cube && flat) return "";
-        return cube ? " (cube shadows)" : (flat ? " (2D shadows)" : " (no shadows)");
+        const std::string sheetLabel = sheets ? " (sheets)" : "";
+        if (cube && flat) return sheetLabel;
+        return (cube ? " (cube shadows)" : (flat ? " (2D shadows)" : " (no shadows)")) + sheetLabel;
     }
 };
 

@@ -14,6 +14,10 @@ namespace lit {
 ShadowPass::ShadowPass(const std::filesystem::path& shaderRoot)
     : program_(shaderRoot, "shadow",
                {{GL_VERTEX_SHADER, "shadow.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow.frag.glsl"}}),
+      sheetProgram_(shaderRoot, "shadow sheets",
+                    {{GL_VERTEX_SHADER, "shadow_sheet.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_sheet.frag.glsl"}}),
+      sheetSampler_("shadow sheets"),
+      sheetFramebuffer_("shadow sheets"),
       framebuffer_("shadow"),
       uniforms_("shadow pass uniforms", sizeof(gpu::ShadowPassUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT),
       comparisonSampler_("shadow comparison") {
@@ -23,7 +27,19 @@ ShadowPass::ShadowPass(const std::filesystem::path& shaderRoot)
     comparisonSampler_.set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     comparisonSampler_.set(GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     comparisonSampler_.set(GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    sheetSampler_.set(GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    sheetSampler_.set(GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    sheetSampler_.set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    sheetSampler_.set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     ensureMaps(16, 1, 1);
+}
+
+void ShadowPass::ensureSheetMaps(bool sheets) {
+    const int size = sheets ? size_ : 1, layers = sheets ? layers2d_ : 1;
+    if (sheetMaps2d_ && sheetMaps2d_.desc().width == size && sheetMaps2d_.desc().depth == layers) return;
+    sheetMaps2d_ = gl::Texture("shadow sheets 2D", {GL_TEXTURE_2D_ARRAY, GL_RGBA16F, size, size, layers, 1});
+    const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // nothing in the way: all light passes
+    glClearTexImage(sheetMaps2d_.id(), 0, GL_RGBA, GL_FLOAT, clear);
 }
 
 void ShadowPass::ensureMaps(int size, int layers2d, int cubes) {
@@ -42,8 +58,13 @@ void ShadowPass::ensureMaps(int size, int layers2d, int cubes) {
 }
 
 std::size_t ShadowPass::memoryBytes() const {
+    const std::size_t sheets = sheetMaps2d_ ? static_cast<std::size_t>(sheetMaps2d_.desc().width) *
+                                                  static_cast<std::size_t>(sheetMaps2d_.desc().height) * 8u *
+                                                  static_cast<std::size_t>(sheetMaps2d_.desc().depth)
+                                            : 0u;
     return static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_) * 4u *
-           static_cast<std::size_t>(layers2d_ + 6 * cubes_);
+               static_cast<std::size_t>(layers2d_ + 6 * cubes_) +
+           sheets;
 }
 
 void ShadowPass::bindMaps() const {
@@ -51,12 +72,18 @@ void ShadowPass::bindMaps() const {
     mapsCube_.bind(LIT_TEX_SHADOW_CUBE);
     comparisonSampler_.bind(LIT_TEX_SHADOW_2D);
     comparisonSampler_.bind(LIT_TEX_SHADOW_CUBE);
+    if (sheetMaps2d_) {
+        sheetMaps2d_.bind(LIT_TEX_SHADOW_SHEETS);
+        sheetSampler_.bind(LIT_TEX_SHADOW_SHEETS);
+    }
 }
 
 void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
                          const RenderSettings& settings, DrawCounters& counters, const ItemCuller& cull) {
     const int size = std::clamp(settings.shadows.mapSize, 16, 8192);
     ensureMaps(size, static_cast<int>(lights.shadows2d.size()), static_cast<int>(lights.shadowsCube.size()));
+    const bool sheets = lights.sheetShadows && !lights.shadows2d.empty();
+    ensureSheetMaps(sheets);
     if (gpuScene.empty()) return;
 
     glViewport(0, 0, size, size);
@@ -94,7 +121,54 @@ void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const Lig
             renderView(mapsCube_, view.layer * 6 + face, view.viewProjection[face], view.position, view.farPlane);
 
     glDisable(GL_POLYGON_OFFSET_FILL);
+    if (sheets) drawSheets(scene, gpuScene, lights, counters, cull);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void ShadowPass::drawSheets(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
+                            DrawCounters& counters, const ItemCuller& cull) {
+    // Over each 2D layer's opaque depth (tested, not written): the transmittances multiply, the
+    // nearest depth stays (alpha by GL_MIN).
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendEquationSeparate(GL_FUNC_ADD, GL_MIN);
+    glBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ONE, GL_ONE);
+    sheetProgram_.use();
+    sheetFramebuffer_.bind();
+    const GLint light = sheetProgram_.location("uLight"), nearFar = sheetProgram_.location("uNearFar");
+    for (const ShadowView& view : lights.shadows2d) {
+        sheetFramebuffer_.attachLayer(GL_COLOR_ATTACHMENT0, sheetMaps2d_, view.layer);
+        sheetFramebuffer_.attachLayer(GL_DEPTH_ATTACHMENT, maps2d_, view.layer);
+        sheetFramebuffer_.setDrawBuffers(1);
+        const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+        glClearNamedFramebufferfv(sheetFramebuffer_.id(), GL_COLOR, 0, clear);
+        const gpu::GpuLight& l = lights.lights[static_cast<std::size_t>(view.light)];
+        const bool directional = static_cast<int>(l.directionType.w) == LIT_LIGHT_DIRECTIONAL;
+        glProgramUniform4f(sheetProgram_.id(), light, directional ? l.directionType.x : view.position.x,
+                           directional ? l.directionType.y : view.position.y,
+                           directional ? l.directionType.z : view.position.z, directional ? 0.0f : 1.0f);
+        glProgramUniform2f(sheetProgram_.id(), nearFar, directional ? 0.0f : view.nearPlane,
+                           directional ? 0.0f : view.farPlane);
+        gpu::ShadowPassUniforms u{view.viewProjection[0], glm::vec4(view.position, view.farPlane)};
+        uniforms_.update(u);
+        visibleItems_.clear();
+        if (cull) {
+            std::vector<std::uint32_t> culled;
+            cull(view.viewProjection[0], culled);
+            for (const std::uint32_t index : culled)
+                if (index < gpuScene.items().size() && gpuScene.isSheet(gpuScene.items()[index])) visibleItems_.push_back(index);
+        } else {
+            for (std::uint32_t i = 0; i < gpuScene.items().size(); ++i)
+                if (gpuScene.isSheet(gpuScene.items()[i])) visibleItems_.push_back(i);
+        }
+        gpuScene.drawList(scene, sheetProgram_, GpuScene::Bind::Everything, counters, visibleItems_);
+    }
+    glDisable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glDepthMask(GL_TRUE);
 }
 
 }  // namespace lit

@@ -1,7 +1,9 @@
 #pragma once
 // Shadow maps: one layer of a 2D depth array per directional/spot light, one cube of a cube
 // array per point light. Depth is rendered with slope-scaled polygon offset; the lighting pass
-// filters it with PCF (lights.glsl).
+// filters it with PCF (lights.glsl). With LightSetup::sheetShadows, each 2D layer also gets what
+// the transmissive sheets in front of its nearest opaque surface let through (a colour layer,
+// shadow_sheet.frag.glsl); point lights' cubes do not (docs/MATERIALS.md, "Transmission").
 
 #include "passes/LightSetup.h"
 #include "passes/Pass.h"
@@ -19,17 +21,26 @@ public:
     void execute(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
                  const RenderSettings& settings, DrawCounters& counters, const ItemCuller& cull = {});
 
-    // Binds the shadow arrays to their texture units (LIT_TEX_SHADOW_2D / _CUBE).
+    // Binds the shadow arrays to their texture units (LIT_TEX_SHADOW_2D / _CUBE / _SHEETS).
     void bindMaps() const;
     const gl::Texture& maps2d() const { return maps2d_; }
     std::size_t memoryBytes() const;
 
-    std::vector<gl::Program*> programs() override { return {&program_}; }
+    std::vector<gl::Program*> programs() override { return {&program_, &sheetProgram_}; }
 
 private:
     void ensureMaps(int size, int layers2d, int cubes);
+    // The sheet layers at the maps' size (sheets) or one white texel (none: the binding stays valid).
+    void ensureSheetMaps(bool sheets);
+    // Renders the transmissive sheets of each 2D view into its sheet layer.
+    void drawSheets(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights, DrawCounters& counters,
+                    const ItemCuller& cull);
 
     gl::Program program_;
+    gl::Program sheetProgram_;
+    gl::Texture sheetMaps2d_;  // RGBA16F, one layer per 2D map (LIT_TEX_SHADOW_SHEETS)
+    gl::Sampler sheetSampler_;
+    gl::Framebuffer sheetFramebuffer_;
     gl::Texture maps2d_;
     gl::Texture mapsCube_;
     gl::Framebuffer framebuffer_;

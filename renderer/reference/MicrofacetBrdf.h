@@ -83,6 +83,19 @@ inline glm::vec3 specularF0(const glm::vec3& baseColor, float metalness) {
 inline float specularF90(float metalness, float dielectricF90) { return dielectricF90 + metalness * (1.0f - dielectricF90); }
 inline glm::vec3 diffuseAlbedo(const glm::vec3& baseColor, float metalness) { return baseColor * (1.0f - metalness); }
 
+// KHR_materials_transmission as a thin sheet (docs/MATERIALS.md, "Transmission"): light crossing
+// the surface at cosθ to its normal passes straight through, weighted by
+//   T = t · (1 − m) · c · (1 − F_Schlick(F0_d, F90_d, |cosθ|)),
+// the dielectric's transmitted share of the light its specular lobe does not reflect, tinted by
+// the base colour; the diffuse lobe keeps (1 − t) of its albedo (diffuseAlbedo × sheetDiffuseShare).
+inline glm::vec3 transmittanceOfSheet(const glm::vec3& baseColor, float metalness, float transmission,
+                                      const glm::vec3& dielectricF0, float dielectricF90, float cosTheta) {
+    if (transmission <= 0.0f || metalness >= 1.0f) return glm::vec3(0.0f);
+    return transmission * (1.0f - metalness) * baseColor *
+           (glm::vec3(1.0f) - F_Schlick(dielectricF0, dielectricF90, std::abs(cosTheta)));
+}
+inline float sheetDiffuseShare(float transmission) { return 1.0f - transmission; }
+
 // Roughness clamped so α never reaches 0 (brdf.glsl: a perfect mirror makes D a delta).
 inline float alphaFromRoughness(float roughness) {
     const float r = std::clamp(roughness, 0.03f, 1.0f);

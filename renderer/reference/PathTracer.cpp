@@ -96,12 +96,15 @@ public:
             if (!bsdf.above(ls.l) || maxComponent(ls.irradiance) <= 0.0f) continue;
             Ray shadow{origin, ls.l, 0.0f, std::isinf(ls.distance) ? INFINITY : ls.distance * (1.0f - 1e-4f)};
             ++rays;
-            if (scene_.occluded(shadow)) continue;
+            // Transmissive sheets on the way let their transmittance through (1 in empty space).
+            const glm::vec3 through = scene_.transmittance(shadow);
+            if (maxComponent(through) <= 0.0f) continue;
+            const glm::vec3 irradiance = ls.irradiance * through;
             // Each lobe with its own cosine: the base's and the sheen's n·l, the coat's n_c·l. The
             // sheen's light is diffuse.
             const float NdotL = glm::dot(bsdf.n, ls.l);
             if (NdotL > 0.0f) {
-                const glm::vec3 E = ls.irradiance * NdotL;
+                const glm::vec3 E = irradiance * NdotL;
                 out.diffuse += E * bsdf.albedo / kPi * bsdf.sheenScale * bsdf.baseScale;
                 if (bsdf.hasSheen()) out.diffuse += E * bsdf.sheenLobe(ls.l);
                 out.specular += E * specularBrdf(bsdf.n, bsdf.v, ls.l, bsdf.f0, bsdf.f90, bsdf.alpha) * bsdf.sheenScale *
@@ -109,7 +112,7 @@ public:
             }
             if (bsdf.hasCoat()) {
                 const float NcdotL = glm::dot(bsdf.nc, ls.l);
-                if (NcdotL > 0.0f) out.specular += ls.irradiance * NcdotL * bsdf.coatLobe(ls.l);
+                if (NcdotL > 0.0f) out.specular += irradiance * NcdotL * bsdf.coatLobe(ls.l);
             }
         }
         if (!scene_.emitters().empty()) {
@@ -125,17 +128,19 @@ public:
                 if (cosLight > 0.0f && bsdf.above(l) && maxComponent(es.emission) > 0.0f) {
                     Ray shadow{origin, l, 0.0f, distance * (1.0f - 1e-3f)};
                     ++rays;
-                    if (!scene_.occluded(shadow)) {
+                    const glm::vec3 through = scene_.transmittance(shadow);
+                    if (maxComponent(through) > 0.0f) {
+                        const glm::vec3 emission = es.emission * through;
                         const float pdfLight = es.pdfArea * distance2 / cosLight;
                         const float weight = powerHeuristic(pdfLight, bsdf.pdf(l));
                         if (NdotL > 0.0f) {
-                            const glm::vec3 scale = es.emission * (weight * NdotL / pdfLight);
+                            const glm::vec3 scale = emission * (weight * NdotL / pdfLight);
                             out.diffuse += scale * bsdf.diffuse(l);
                             out.specular += scale * bsdf.specular(l);
                         }
                         if (bsdf.hasCoat()) {
                             const float NcdotL = glm::dot(bsdf.nc, l);
-                            if (NcdotL > 0.0f) out.specular += es.emission * (weight * NcdotL / pdfLight) * bsdf.coatLobe(l);
+                            if (NcdotL > 0.0f) out.specular += emission * (weight * NcdotL / pdfLight) * bsdf.coatLobe(l);
                         }
                     }
                 }
@@ -153,18 +158,53 @@ public:
         return powerHeuristic(pdfBsdf, pdfLight);
     }
 
+    // The chance that a path meeting a sheet passes through it: the luminance of what passes
+    // against that plus what the sheet reflects (its Fresnel share and its remaining diffuse albedo),
+    // at most 0.95 so the sheet's own reflection keeps being sampled.
+    static float passChance(const SurfaceHit& sheet, const glm::vec3& direction, const glm::vec3& through) {
+        const float cosine = std::abs(glm::dot(sheet.normal, direction));
+        const glm::vec3 reflected =
+            F_Schlick(specularF0(sheet.baseColor, sheet.metalness, sheet.dielectricF0),
+                      specularF90(sheet.metalness, sheet.dielectricF90), cosine) +
+            diffuseAlbedo(sheet.baseColor, sheet.metalness) * sheetDiffuseShare(sheet.transmission);
+        const float pass = bsdfLuminance(through);
+        const float total = pass + bsdfLuminance(reflected);
+        return total > 0.0f ? std::min(pass / total, 0.95f) : 0.0f;
+    }
+
     glm::vec3 environment(const glm::vec3& direction) const {
         return settings_.environment ? settings_.environment(direction) : glm::vec3(0.0f);
     }
 
-    // One camera path through `ray`; adds its four term contributions to `out`.
+    // One camera path through `ray`; adds its four term contributions to `out`. A transmissive
+    // sheet the camera sees adds its own light and lets its transmittance of what lies behind it
+    // through, term by term (the rasterizer blends its sheets over the image the same way).
     void trace(const Ray& cameraRay, Random& random, Contribution& out) {
-        SurfaceHit hit;
-        ++rays;
-        if (!scene_.intersect(cameraRay, hit)) {
-            out.add(Term::DirectDiffuse, environment(cameraRay.direction));
-            return;
+        Ray ray = cameraRay;
+        glm::vec3 behind(1.0f);  // the product of the sheets' transmittances so far
+        for (int sheets = 0; sheets < kMaxSheets; ++sheets) {
+            SurfaceHit hit;
+            ++rays;
+            if (!scene_.intersect(ray, hit)) {
+                out.add(Term::DirectDiffuse, behind * environment(ray.direction));
+                return;
+            }
+            Contribution own;
+            shade(hit, ray, random, own);
+            for (int t = 0; t < kTermCount; ++t) out.terms[t] += behind * own.terms[t];
+            behind *= ReferenceScene::sheetTransmittance(hit, ray.direction);
+            if (maxComponent(behind) <= 0.0f) return;
+            ray.tnear = hit.t + std::max(1e-4f, hit.t * 1e-5f);
+            if (ray.tnear >= ray.tfar) return;
         }
+    }
+
+private:
+    // Sheets a camera ray is followed through before what remains counts as black.
+    static constexpr int kMaxSheets = 16;
+
+    // The path from the camera's surface `hit`, met along `cameraRay`: its own terms into `out`.
+    void shade(SurfaceHit hit, const Ray& cameraRay, Random& random, Contribution& out) {
         const bool hasEmitters = !scene_.emitters().empty();
         const bool hasEnvironment = static_cast<bool>(settings_.environment);
         const int maxBounces = settings_.bounces == kAllBounces ? kMaxPathVertices : settings_.bounces;
@@ -193,21 +233,37 @@ public:
         // Follows `ray` one segment: the sky it escapes to, or the emission of the surface it
         // meets (into `next`), weighted by the two throughputs into the diffuse/specular terms.
         // False when the ray left the scene.
+        // A transmissive sheet on the way either lets the path through (on along the same
+        // direction, weighted by its transmittance) or scatters it (the next vertex), each chosen
+        // by its share of the light leaving the sheet and weighted by the chance's inverse.
         SurfaceHit next;
-        const auto segment = [&](const Ray& ray, Term diffuseTerm, Term specularTerm) {
-            ++rays;
-            if (!scene_.intersect(ray, next)) {
-                const glm::vec3 sky = environment(ray.direction);
-                out.add(diffuseTerm, throughputD * sky);
-                out.add(specularTerm, throughputS * sky);
-                return false;
+        const auto segment = [&](Ray ray, Term diffuseTerm, Term specularTerm) {
+            for (int sheets = 0;; ++sheets) {
+                ++rays;
+                if (!scene_.intersect(ray, next)) {
+                    const glm::vec3 sky = environment(ray.direction);
+                    out.add(diffuseTerm, throughputD * sky);
+                    out.add(specularTerm, throughputS * sky);
+                    return false;
+                }
+                if (maxComponent(next.emission) > 0.0f) {
+                    const glm::vec3 e = next.emission * emissionWeight(next, ray.direction, pdf);
+                    out.add(diffuseTerm, throughputD * e);
+                    out.add(specularTerm, throughputS * e);
+                }
+                const glm::vec3 through = ReferenceScene::sheetTransmittance(next, ray.direction);
+                if (maxComponent(through) <= 0.0f) return true;
+                const float passShare = passChance(next, ray.direction, through);
+                if (sheets + 1 < kMaxSheets && random.uniform() < passShare) {
+                    throughputD *= through / passShare;
+                    throughputS *= through / passShare;
+                    ray.tnear = next.t + std::max(1e-4f, next.t * 1e-5f);
+                    continue;
+                }
+                throughputD /= 1.0f - passShare;
+                throughputS /= 1.0f - passShare;
+                return true;
             }
-            if (maxComponent(next.emission) > 0.0f) {
-                const glm::vec3 e = next.emission * emissionWeight(next, ray.direction, pdf);
-                out.add(diffuseTerm, throughputD * e);
-                out.add(specularTerm, throughputS * e);
-            }
-            return true;
         };
         Ray ray{offsetOrigin(hit.position, hit.geometricNormal), l, 0.0f, INFINITY};
         if (!segment(ray, Term::DirectDiffuse, Term::DirectSpecular)) return;
@@ -390,7 +446,7 @@ std::vector<FirstHit> traceFirstHits(const ReferenceScene& scene, const CameraVi
                     const PunctualSample ls = samplePunctualLight(lights[i], hit.position);
                     if (glm::dot(out.normal, ls.l) <= 0.0f || maxComponent(ls.irradiance) <= 0.0f) continue;
                     const Ray shadow{origin, ls.l, 0.0f, std::isinf(ls.distance) ? INFINITY : ls.distance * (1.0f - 1e-4f)};
-                    if (!scene.occluded(shadow)) out.litBy |= 1u << i;
+                    if (maxComponent(scene.transmittance(shadow)) > 0.0f) out.litBy |= 1u << i;
                 }
             }
     });

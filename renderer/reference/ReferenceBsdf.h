@@ -54,7 +54,9 @@ struct Bsdf {
         v = view;
         n = shadingNormal(hit.normal, v);
         ng = hit.geometricNormal;
-        albedo = diffuseAlbedo(hit.baseColor, hit.metalness);
+        // A transmissive sheet's diffuse lobe keeps (1 − t) of the albedo; the rest passes through
+        // (PathTracer, ReferenceScene::transmittance).
+        albedo = diffuseAlbedo(hit.baseColor, hit.metalness) * sheetDiffuseShare(hit.transmission);
         f0 = specularF0(hit.baseColor, hit.metalness, hit.dielectricF0);
         f90 = specularF90(hit.metalness, hit.dielectricF90);
         alpha = alphaFromRoughness(hit.roughness);

@@ -159,6 +159,7 @@ ReferenceScene::ReferenceScene(const Scene& scene, Log& log) : impl_(std::make_u
                                 ? s.materials[static_cast<std::size_t>(g.material)]
                                 : s.fallback;
         g.alphaMasked = m.alphaMode == AlphaMode::Mask;
+        hasSheets_ = hasSheets_ || (m.transmission > 0.0f && m.metallic < 1.0f);
 
         RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -335,6 +336,7 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::ve
     hit.clearcoat = std::clamp(m.clearcoatFactor, 0.0f, 1.0f);
     hit.clearcoatRoughness = std::clamp(m.clearcoatRoughness, 0.0f, 1.0f);
     hit.clearcoatNormal = interpolatedNormal;
+    hit.transmission = std::clamp(m.transmission, 0.0f, 1.0f);
     return baseColor.a;
 }
 
@@ -391,6 +393,28 @@ bool ReferenceScene::occluded(const Ray& ray) const {
     r.mask = 0xFFFFFFFFu;
     rtcOccluded1(impl_->scene, &context, &r);
     return r.tfar < 0.0f;  // Embree sets tfar to −inf when something blocks the ray
+}
+
+glm::vec3 ReferenceScene::sheetTransmittance(const SurfaceHit& hit, const glm::vec3& direction) {
+    return transmittanceOfSheet(hit.baseColor, hit.metalness, hit.transmission, hit.dielectricF0, hit.dielectricF90,
+                                glm::dot(hit.normal, direction));
+}
+
+glm::vec3 ReferenceScene::transmittance(const Ray& ray) const {
+    if (!hasSheets_) return occluded(ray) ? glm::vec3(0.0f) : glm::vec3(1.0f);
+    glm::vec3 through(1.0f);
+    Ray rest = ray;
+    // A bound on the sheets crossed, so a degenerate stack of coplanar sheets cannot loop forever.
+    for (int crossed = 0; crossed < 64; ++crossed) {
+        SurfaceHit hit;
+        if (!intersect(rest, hit)) return through;
+        through *= sheetTransmittance(hit, rest.direction);
+        if (std::max(through.r, std::max(through.g, through.b)) <= 0.0f) return glm::vec3(0.0f);
+        // On from just past the sheet (relative to the distance, so far hits keep float precision).
+        rest.tnear = hit.t + std::max(1e-4f, hit.t * 1e-5f);
+        if (rest.tnear >= rest.tfar) return through;
+    }
+    return glm::vec3(0.0f);
 }
 
 EmitterSample ReferenceScene::sampleEmitter(float u, const glm::vec2& uv) const {

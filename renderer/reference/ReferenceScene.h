@@ -52,6 +52,9 @@ struct SurfaceHit {
     float clearcoat = 0.0f;
     float clearcoatRoughness = 0.0f;
     glm::vec3 clearcoatNormal{0.0f};  // unit; zero where unresolved (the Bsdf then takes `normal`)
+    // KHR_materials_transmission's t: a thin sheet that lets transmittanceOfSheet through
+    // (MicrofacetBrdf.h; 0: opaque).
+    float transmission = 0.0f;
     glm::vec3 emission{0.0f};       // W/(sr·m²)
     int node = -1;                  // scene node index
     int emitter = -1;               // index into emitters() when the triangle emits, else -1
@@ -86,6 +89,13 @@ public:
     bool intersect(const Ray& ray, SurfaceHit& hit) const;
     // True when anything blocks the ray between tnear and tfar.
     bool occluded(const Ray& ray) const;
+    // What reaches tfar along the ray: 0 when an opaque surface blocks it, else the product of the
+    // transmittanceOfSheet of every transmissive surface it crosses (1 through empty space).
+    glm::vec3 transmittance(const Ray& ray) const;
+    // Whether a surface of the scene is transmissive (KHR_materials_transmission).
+    bool hasSheets() const { return hasSheets_; }
+    // The light a ray crossing `hit` passes through it (0 for an opaque surface).
+    static glm::vec3 sheetTransmittance(const SurfaceHit& hit, const glm::vec3& direction);
 
     const std::vector<gpu::GpuLight>& punctualLights() const { return lights_; }
     const std::vector<Emitter>& emitters() const { return emitters_; }
@@ -120,6 +130,7 @@ private:
     std::vector<float> emitterCdf_;  // cumulative power, normalised to end at 1
     float emitterPower_ = 0.0f;
     std::size_t triangleCount_ = 0;
+    bool hasSheets_ = false;
 };
 
 }  // namespace lit::reference

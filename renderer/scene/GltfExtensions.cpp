@@ -46,11 +46,11 @@ bool isSupportedExtension(std::string_view name) {
     // KHR_mesh_quantization only widens the accessor types allowed for attributes, which the
     // generic accessor reader handles; the compressed geometry is decoded before the import
     // (scene/GltfCompression.h).
-    static constexpr std::array<std::string_view, 10> supported = {
+    static constexpr std::array<std::string_view, 12> supported = {
         "KHR_lights_punctual",     "KHR_materials_emissive_strength", "KHR_mesh_quantization",
         "EXT_meshopt_compression", "KHR_draco_mesh_compression",      "KHR_texture_transform",
         "KHR_materials_ior",       "KHR_materials_specular",          "KHR_materials_clearcoat",
-        "KHR_materials_sheen"};
+        "KHR_materials_sheen",     "KHR_materials_transmission",      "KHR_materials_volume"};
     if (name == kWebp) return LIT_HAS_WEBP != 0;
     return std::find(supported.begin(), supported.end(), name) != supported.end();
 }

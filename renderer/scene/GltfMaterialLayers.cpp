@@ -1,4 +1,4 @@
-// KHR_materials_ior / _specular / _sheen / _clearcoat factors in and out (scene/GltfMaterialLayers.h).
+// KHR_materials_ior / _specular / _sheen / _clearcoat / _transmission / _volume factors in and out (scene/GltfMaterialLayers.h).
 
 #include "scene/GltfMaterialLayers.h"
 
@@ -153,6 +153,29 @@ void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& mate
         warnTextures(*clearcoat, {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}, where,
                      warn);
     }
+    if (const tinygltf::Value* transmission = object(kTransmissionExtension)) {
+        const std::string where = kTransmissionExtension;
+        material.transmission = factorIn(*transmission, "transmissionFactor", 0.0f, 0.0, 1.0, where, warn);
+        warnTextures(*transmission, {"transmissionTexture"}, where, warn);
+    }
+    if (const tinygltf::Value* volume = object(kVolumeExtension)) {
+        const std::string where = kVolumeExtension;
+        material.thickness =
+            factorIn(*volume, "thicknessFactor", 0.0f, 0.0, std::numeric_limits<float>::max(), where, warn);
+        // The schema's default is +∞ (no absorption), which JSON cannot write: 0 stands for it here.
+        if (const std::optional<double> distance = numberIn(*volume, "attenuationDistance", where, warn)) {
+            if (*distance > 0.0 && *distance <= std::numeric_limits<float>::max())
+                material.attenuationDistance = static_cast<float>(*distance);
+            else
+                warn(where + " attenuationDistance " + std::to_string(*distance) +
+                     " is not a positive distance; Lit uses infinity (no absorption)");
+        }
+        material.attenuationColor = colorIn(*volume, "attenuationColor", glm::vec3(1.0f), 1.0, where, warn);
+        warnTextures(*volume, {"thicknessTexture"}, where, warn);
+        if (material.thickness > 0.0f)
+            warn(where + ": Lit draws the volume as a thin sheet (no refraction or absorption); its numbers are kept "
+                         "and saved");
+    }
 }
 
 void writeMaterialLayers(const Material& material, tinygltf::ExtensionMap& extensions,
@@ -180,6 +203,13 @@ void writeMaterialLayers(const Material& material, tinygltf::ExtensionMap& exten
     write(kClearcoatExtension, [&](nlohmann::json& o) {
         setFactor(o, "clearcoatFactor", material.clearcoatFactor, 0.0f);
         setFactor(o, "clearcoatRoughnessFactor", material.clearcoatRoughness, 0.0f);
+    });
+    write(kTransmissionExtension,
+          [&](nlohmann::json& o) { setFactor(o, "transmissionFactor", material.transmission, 0.0f); });
+    write(kVolumeExtension, [&](nlohmann::json& o) {
+        setFactor(o, "thicknessFactor", material.thickness, 0.0f);
+        setFactor(o, "attenuationDistance", material.attenuationDistance, 0.0f);
+        setColor(o, "attenuationColor", material.attenuationColor, glm::vec3(1.0f));
     });
 }
 

@@ -94,7 +94,7 @@ gpu::GpuMaterial toGpu(const Material& m) {
                           : m.alphaMode == AlphaMode::Blend ? LIT_ALPHA_BLEND
                                                             : LIT_ALPHA_OPAQUE;
     g.modes = glm::ivec4(m.occlusionTexture >= 0, alphaMode, m.doubleSided ? 1 : 0, 0);
-    g.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
+    g.alpha = glm::vec4(m.alphaCutoff, std::clamp(m.transmission, 0.0f, 1.0f), 0.0f, 0.0f);
     // docs/MATERIALS.md: F0 = min(((η − 1)/(η + 1))² · k, 1) · s, F90 = s.
     const float reflectance = (m.ior - 1.0f) / (m.ior + 1.0f);  // η = 0 (a mirror) gives 1
     const float f0FromIor = reflectance * reflectance;
@@ -235,6 +235,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
     table.reserve(scene.materials.size() + 1);
     materialTextures_.clear();
     materialUvTransforms_.clear();
+    sheetMaterials_.clear();
     materialLayers_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
         return m.ior != 1.5f || m.specularFactor != 1.0f || m.specularColorFactor != glm::vec3(1.0f) ||
                m.clearcoatFactor != 0.0f || m.sheenColorFactor != glm::vec3(0.0f);
@@ -252,6 +253,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
                                 t.emissive.texture != 0);
         g.modes.x = t.occlusion.texture != 0;
         table.push_back(g);
+        sheetMaterials_.push_back(drawnAsSheet(m));
         materialTextures_.push_back(t);
         materialUvTransforms_.push_back(uvTransformsOf(m));
     }
@@ -260,6 +262,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
     Material fallback;
     fallback.metallic = 0.0f;
     table.push_back(toGpu(fallback));
+    sheetMaterials_.push_back(false);
     materialTextures_.push_back({});
     materialUvTransforms_.push_back(uvTransformsOf(fallback));
     materials_ = gl::Buffer::fromSpan<gpu::GpuMaterial>("materials", table);
@@ -308,6 +311,15 @@ int GpuScene::materialRow(const DrawItem& item) const {
                ? item.material
                : static_cast<int>(materialTextures_.size()) - 1;
 }
+
+bool drawnAsSheet(const Material& m) { return m.transmission > 0.0f && m.metallic < 1.0f; }
+
+bool GpuScene::isSheet(const DrawItem& item) const {
+    const auto row = static_cast<std::size_t>(materialRow(item));
+    return row < sheetMaterials_.size() && sheetMaterials_[row];
+}
+
+bool GpuScene::hasSheets() const { return std::find(sheetMaterials_.begin(), sheetMaterials_.end(), true) != sheetMaterials_.end(); }
 
 unsigned GpuScene::materialTextureMask(const DrawItem& item) const {
     if (materialTextures_.empty()) return 0;

@@ -21,6 +21,7 @@
 namespace lit {
 
 struct Scene;
+struct Material;
 class Log;
 namespace gl {
 class Program;
@@ -42,6 +43,11 @@ struct DrawItem {
 // the items that may be visible under `viewProjection` (world → clip), ascending. Passes that
 // render several views (shadow maps) call it once per view; an empty function means "draw all".
 using ItemCuller = std::function<void(const glm::mat4& viewProjection, std::vector<std::uint32_t>& visibleItems)>;
+
+// KHR_materials_transmission drawn as a thin sheet (docs/MATERIALS.md, "Transmission"): a
+// dielectric share that lets light through (transmission > 0, metallic < 1). As
+// material_table.glsl materialIsSheet and the reference's ReferenceScene::hasSheets.
+bool drawnAsSheet(const Material& m);
 
 struct DrawCounters {
     int drawCalls = 0;
@@ -81,6 +87,10 @@ public:
                   std::span<const std::uint32_t> itemIndices) const;
 
     const std::vector<DrawItem>& items() const { return items_; }
+    // Whether the item's material is a transmissive sheet (drawnAsSheet): SheetPass draws it over
+    // the lit image; the G-buffer, the shadow maps and the voxels leave it out (material_table.glsl).
+    bool isSheet(const DrawItem& item) const;
+    bool hasSheets() const;
     bool empty() const { return items_.empty(); }
     const gl::Buffer& materials() const { return materials_; }
     // Whether a material has KHR_materials_ior / _specular / _sheen / _clearcoat values other than the
@@ -129,6 +139,7 @@ private:
     std::uint64_t textureBytes_ = 0;
     gl::Texture whiteTexture_;             // bound where a material has no texture
     std::vector<DrawItem> items_;
+    std::vector<bool> sheetMaterials_;     // per material, + default at the end: drawnAsSheet
     // Per material slot, in the order base colour, metallic-roughness, normal, emissive, occlusion.
     struct MaterialTextures {
         TextureBinding baseColor, metallicRoughness, normal, emissive, occlusion;

@@ -252,6 +252,14 @@ struct Material {
     float sheenRoughness = 0.0f;            // KHR_materials_sheen: perceptual, 0..1
     float clearcoatFactor = 0.0f;           // KHR_materials_clearcoat: the coat's weight, 0..1
     float clearcoatRoughness = 0.0f;        // KHR_materials_clearcoat: perceptual, 0..1
+    // KHR_materials_transmission: the share of the dielectric's light that passes through instead of
+    // scattering diffusely, 0..1. Lit draws every transmissive surface as a thin sheet: light passes
+    // straight through, dimmed by transmittanceOfSheet (docs/MATERIALS.md, "Transmission").
+    float transmission = 0.0f;
+    // KHR_materials_volume, read and saved; Lit draws no refraction or absorption (a thin sheet).
+    float thickness = 0.0f;                        // metres in the mesh's space; 0: thin-walled
+    float attenuationDistance = 0.0f;              // metres; 0: infinite (the file leaves it out)
+    glm::vec3 attenuationColor{1.0f};              // linear RGB, 0..1
     KeptGltf kept{};
     // Extensions of each texture reference other than KHR_texture_transform, JSON object text, in
     // the order base colour, metallic-roughness, normal, emissive, occlusion.

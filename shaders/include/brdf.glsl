@@ -34,6 +34,16 @@ vec3 specularF0(vec3 baseColor, float metalness, vec3 dielectricF0) { return mix
 float specularF90(float metalness, float dielectricF90) { return mix(dielectricF90, 1.0, metalness); }
 vec3 diffuseAlbedo(vec3 baseColor, float metalness) { return baseColor * (1.0 - metalness); }
 
+// KHR_materials_transmission as a thin sheet (docs/MATERIALS.md, "Transmission"; MicrofacetBrdf.h
+// transmittanceOfSheet): what passes straight through at cosθ to the normal,
+// T = t·(1 − m)·c·(1 − F_Schlick(F0_d, F90_d, |cosθ|)); the diffuse lobe keeps (1 − t) of its albedo.
+vec3 transmittanceOfSheet(vec3 baseColor, float metalness, float transmission, vec3 dielectricF0, float dielectricF90,
+                          float cosTheta) {
+    if (transmission <= 0.0 || metalness >= 1.0) return vec3(0.0);
+    return transmission * (1.0 - metalness) * baseColor *
+           (vec3(1.0) - F_Schlick(dielectricF0, dielectricF90, abs(cosTheta)));
+}
+
 // Clamp roughness so α never reaches 0 (a perfect mirror makes D a delta: infinite highlights).
 float alphaFromRoughness(float roughness) {
     float r = clamp(roughness, 0.03, 1.0);

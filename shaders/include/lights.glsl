@@ -69,6 +69,17 @@ const float kPcfTapOffset = 0.81649658;  // √(2/3)
 #ifndef LIT_SHADOWS_2D
 #define LIT_SHADOWS_2D 1
 #endif
+// Whether the 2D maps hold transmissive sheets (ShadowKinds::sheets): compiled in only for scenes
+// with sheets, which pay the extra lookup.
+#ifndef LIT_SHADOWS_SHEETS
+#define LIT_SHADOWS_SHEETS 0
+#endif
+#if LIT_SHADOWS_SHEETS
+layout(binding = LIT_TEX_SHADOW_SHEETS) uniform sampler2DArray sheetShadowMaps2d;
+// Linear depth (share of the light's depth range) a receiver must lie past the nearest sheet to be
+// behind it: keeps a sheet from tinting its own light.
+const float kSheetShadowDepthBias = 1.0 / 512.0;
+#endif
 
 // The [0, 1] depth a perspective shadow map (near n, far f) stores for view depth w, the receiver
 // moved `bias` of the depth range towards the light first. The constant bias is a share of the
@@ -81,11 +92,12 @@ float perspectiveShadowDepth(float w, float n, float f, float bias) {
     return ndc * 0.5 + 0.5;
 }
 
-// Fraction of the light reaching `position` (1 = lit), with PCF of four hardware 2×2
-// comparisons (above). `normal` offsets the lookup to avoid acne on grazing surfaces.
-float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadius, float normalOffsetTexels) {
+// Fraction of the light reaching `position` per channel (1 = lit), with PCF of four hardware 2×2
+// comparisons (above), times what the transmissive sheets between it and a light with a 2D map
+// let through (LIT_SHADOWS_SHEETS). `normal` offsets the lookup to avoid acne on grazing surfaces.
+vec3 shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadius, float normalOffsetTexels) {
     float index = light.spotShadow.z;
-    if (index < 0.0) return 1.0;
+    if (index < 0.0) return vec3(1.0);
     int type = int(light.directionType.w);
 #if LIT_SHADOWS_CUBE
     if (type == LIT_LIGHT_POINT) {
@@ -107,7 +119,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadi
         vec3 d1 = (t1 + t2) * (step * kPcfTapOffset), d2 = (t1 - t2) * (step * kPcfTapOffset);
         float sum = texture(shadowMapsCube, vec4(v + d1, index), depth) + texture(shadowMapsCube, vec4(v - d1, index), depth) +
                     texture(shadowMapsCube, vec4(v + d2, index), depth) + texture(shadowMapsCube, vec4(v - d2, index), depth);
-        return 0.25 * sum;
+        return vec3(0.25 * sum);
     }
 #endif
 #if LIT_SHADOWS_2D
@@ -126,7 +138,7 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadi
     vec4 clip = light.shadowViewProjection * vec4(position + normal * worldTexel * normalOffsetTexels, 1.0);
     vec3 ndc = clip.xyz / clip.w;
     vec3 uvz = ndc * 0.5 + 0.5;
-    if (any(lessThan(uvz.xy, vec2(0.0))) || any(greaterThan(uvz.xy, vec2(1.0))) || uvz.z > 1.0) return 1.0;
+    if (any(lessThan(uvz.xy, vec2(0.0))) || any(greaterThan(uvz.xy, vec2(1.0))) || uvz.z > 1.0) return vec3(1.0);
     float depth = type == LIT_LIGHT_DIRECTIONAL
                       ? uvz.z - light.shadowParams.z
                       : perspectiveShadowDepth(clip.w, light.shadowParams.x, light.shadowParams.y, light.shadowParams.z);
@@ -136,8 +148,16 @@ float shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadi
     vec2 d1 = texel * (radius * kPcfTapOffset), d2 = vec2(d1.x, -d1.y);
     float sum = texture(shadowMaps2d, vec4(uvz.xy + d1, index, depth)) + texture(shadowMaps2d, vec4(uvz.xy - d1, index, depth)) +
                 texture(shadowMaps2d, vec4(uvz.xy + d2, index, depth)) + texture(shadowMaps2d, vec4(uvz.xy - d2, index, depth));
-    return 0.25 * sum;
+    vec3 through = vec3(1.0);
+#if LIT_SHADOWS_SHEETS
+    vec4 sheets = textureLod(sheetShadowMaps2d, vec3(uvz.xy, index), 0.0);
+    float receiver = type == LIT_LIGHT_DIRECTIONAL
+                         ? uvz.z
+                         : (clip.w - light.shadowParams.x) / max(light.shadowParams.y - light.shadowParams.x, 1e-6);
+    if (receiver > sheets.a + kSheetShadowDepthBias) through = sheets.rgb;
+#endif
+    return (0.25 * sum) * through;
 #else
-    return 1.0;  // no light has a 2D shadow map, so this light has none (index < 0 above)
+    return vec3(1.0);  // no light has a 2D shadow map, so this light has none (index < 0 above)
 #endif
 }

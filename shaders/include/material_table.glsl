@@ -5,3 +5,8 @@
 layout(std430, binding = LIT_SSBO_MATERIALS) readonly buffer MaterialBlock {
     GpuMaterial materials[];
 };
+
+// A transmissive sheet (KHR_materials_transmission, docs/MATERIALS.md "Transmission"): SheetPass
+// draws it over the lit image; the G-buffer, the shadow maps and the voxelization discard it.
+// As GpuScene.h drawnAsSheet.
+bool materialIsSheet(GpuMaterial m) { return m.alpha.y > 0.0 && m.params.x < 1.0; }

@@ -101,6 +101,10 @@ using mat4 = glm::mat4;
 // The lighting passes with material layers: E_s(n·v, sheen roughness), R32F, the sheen lobe's
 // directional albedo (scene/SheenAlbedo.h, texel centres at (i + ½)/size).
 #define LIT_TEX_SHEEN_ALBEDO 33
+// Transmissive sheets in the 2D shadow maps (ShadowPass): per layer, rgb the product of the
+// transmittances of the sheets between the light and the nearest opaque surface, a the nearest
+// sheet's linear depth (0 at the near plane, 1 at the far plane).
+#define LIT_TEX_SHADOW_SHEETS 34
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
@@ -293,7 +297,7 @@ struct GpuMaterial {
     vec4 params;              // x metallic, y roughness, z normal scale, w occlusion strength
     ivec4 textures;           // x base colour, y metallic-roughness, z normal, w emissive (1 = present)
     ivec4 modes;              // x occlusion texture present, y alpha mode (LIT_ALPHA_*), z double sided, w unused
-    vec4 alpha;               // x alpha cutoff, yzw unused
+    vec4 alpha;               // x alpha cutoff, y transmission (KHR_materials_transmission), zw unused
     vec4 specular;            // rgb dielectric F0, a dielectric F90 (KHR_materials_ior, _specular; docs/MATERIALS.md)
     vec4 clearcoat;           // x coat weight, y coat roughness (perceptual) (KHR_materials_clearcoat),
                               // z the sheen's mean albedo (scene/SheenAlbedo.h sheenMeanAlbedo; the voxels' sheen), w unused

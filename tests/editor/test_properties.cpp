@@ -60,6 +60,8 @@ TEST(Properties, EveryNameSetsItsField) {
         {"Box", "material.clearcoat", "0.75", [](const Scene& s) { return s.materials[0].clearcoatFactor == 0.75f; }},
         {"Box", "material.clearcoatRoughness", "0.2",
          [](const Scene& s) { return s.materials[0].clearcoatRoughness == 0.2f; }},
+        {"Box", "material.transmission", "0.9",
+         [](const Scene& s) { return s.materials[0].transmission == 0.9f; }},
         {"Lamp", "light.type", "point", [](const Scene& s) { return s.lights[0].type == LightType::Point; }},
         {"Lamp", "light.type", "directional", [](const Scene& s) { return s.lights[0].type == LightType::Directional; }},
         {"Lamp", "light.color", "1 0.8 0.6", [](const Scene& s) { return s.lights[0].color == glm::vec3(1, 0.8f, 0.6f); }},

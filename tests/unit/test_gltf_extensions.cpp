@@ -99,20 +99,20 @@ std::string loadError(const fs::path& path) {
 TEST(GltfExtensions, ARequiredExtensionLitLacksIsNamedInOneLine) {
     TempDir dir;
     json doc = triangleDoc(dir.path());
-    doc["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_volume"};
-    doc["extensionsRequired"] = {"KHR_materials_volume"};
+    doc["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_anisotropy"};
+    doc["extensionsRequired"] = {"KHR_materials_anisotropy"};
     const std::string message = loadError(writeScene(dir.path(), "scene.gltf", doc));
-    EXPECT_EQ(message, (dir / "scene.gltf").string() + ": requires KHR_materials_volume, which Lit does not support");
+    EXPECT_EQ(message, (dir / "scene.gltf").string() + ": requires KHR_materials_anisotropy, which Lit does not support");
 }
 
 TEST(GltfExtensions, EveryMissingRequiredExtensionIsNamed) {
     TempDir dir;
     json doc = triangleDoc(dir.path());
-    doc["extensionsUsed"] = {"KHR_materials_volume", "EXT_foo", "KHR_mesh_quantization", "EXT_bar"};
+    doc["extensionsUsed"] = {"KHR_materials_anisotropy", "EXT_foo", "KHR_mesh_quantization", "EXT_bar"};
     doc["extensionsRequired"] = doc["extensionsUsed"];
     EXPECT_EQ(loadError(writeScene(dir.path(), "scene.gltf", doc)),
               (dir / "scene.gltf").string() +
-                  ": requires KHR_materials_volume, EXT_foo and EXT_bar, which Lit does not support");
+                  ": requires KHR_materials_anisotropy, EXT_foo and EXT_bar, which Lit does not support");
 }
 
 // The data of an extension Lit lacks may not be plain glTF: tinygltf must not be the one to
@@ -130,12 +130,12 @@ TEST(GltfExtensions, TheExtensionIsNamedBeforeTinygltfReadsItsData) {
 TEST(GltfExtensions, AnExtensionOnlyUsedIsAWarningNamingIt) {
     TempDir dir;
     json doc = triangleDoc(dir.path());
-    doc["extensionsUsed"] = {"KHR_materials_volume", "KHR_mesh_quantization"};
+    doc["extensionsUsed"] = {"KHR_materials_anisotropy", "KHR_mesh_quantization"};
     RecordingLog log;
     const Scene scene = loadGltf(writeScene(dir.path(), "scene.gltf", doc), log);
     EXPECT_EQ(scene.meshes.size(), 1u);
-    EXPECT_EQ(log.warningsWith("KHR_materials_volume"), 1u);
-    EXPECT_EQ(log.warningsWith("scene.gltf: uses KHR_materials_volume, which Lit does not support"), 1u);
+    EXPECT_EQ(log.warningsWith("KHR_materials_anisotropy"), 1u);
+    EXPECT_EQ(log.warningsWith("scene.gltf: uses KHR_materials_anisotropy, which Lit does not support"), 1u);
     EXPECT_EQ(log.warningsWith("KHR_mesh_quantization"), 0u) << "a supported extension is not reported";
 }
 

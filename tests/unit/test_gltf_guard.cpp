@@ -316,10 +316,10 @@ TEST(GltfGuard, OnlyMajorVersion2IsRead) {
 TEST(GltfGuard, RequiredExtensionsLitDoesNotHaveAreRefused) {
     TempDir dir;
     json doc = triangleDoc();
-    doc["extensionsUsed"] = {"KHR_materials_volume"};
-    doc["extensionsRequired"] = {"KHR_materials_volume"};
+    doc["extensionsUsed"] = {"KHR_materials_anisotropy"};
+    doc["extensionsRequired"] = {"KHR_materials_anisotropy"};
     EXPECT_CONTAINS(loadError(writeScene(dir, "volume.gltf", doc)),
-                    "volume.gltf: requires KHR_materials_volume, which Lit does not support");
+                    "volume.gltf: requires KHR_materials_anisotropy, which Lit does not support");
 }
 
 // Thousands of images naming one PNG would be decoded one by one.

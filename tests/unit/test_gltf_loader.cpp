@@ -943,9 +943,9 @@ TEST(GltfLoaderErrors, UnsupportedData) {
     EXPECT_LOAD_ERROR(wrongType.writeGltf(dir, "type"), "has type VEC2, expected VEC3");
 
     GltfBuilder required = triangle();
-    required.doc["extensionsUsed"] = {"KHR_materials_volume"};
-    required.doc["extensionsRequired"] = {"KHR_materials_volume"};
-    EXPECT_LOAD_ERROR(required.writeGltf(dir, "volume"), "requires KHR_materials_volume, which Lit does not support");
+    required.doc["extensionsUsed"] = {"KHR_materials_anisotropy"};
+    required.doc["extensionsRequired"] = {"KHR_materials_anisotropy"};
+    EXPECT_LOAD_ERROR(required.writeGltf(dir, "volume"), "requires KHR_materials_anisotropy, which Lit does not support");
 }
 
 TEST(GltfLoader, NonTrianglePrimitivesAreSkippedWithAWarning) {

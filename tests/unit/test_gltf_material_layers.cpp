@@ -1,4 +1,4 @@
-// KHR_materials_ior, _specular, _sheen and _clearcoat (label cpu): their factors read into the Material,
+// KHR_materials_ior, _specular, _sheen, _clearcoat, _transmission and _volume (label cpu): their factors read into the Material,
 // their textures named and kept, out-of-range values clamped with a warning, and a save that
 // writes edited factors into the file's objects.
 #include "Log.h"
@@ -150,6 +150,46 @@ TEST(MaterialLayers, SaveWritesTheFactorsIntoTheFilesObjects) {
     EXPECT_EQ(back.materials[1].clearcoatFactor, 0.5f);
     EXPECT_EQ(back.materials[1].specularColorFactor, glm::vec3(1.0f, 0.5f, 0.25f));
     EXPECT_EQ(back.materials[0].clearcoatFactor, 0.9f);
+}
+
+// Transmission and volume: read (the volume's numbers kept though Lit draws a thin sheet, and
+// named in one warning), an attenuation distance that is no distance refused, edits saved.
+TEST(MaterialLayers, TransmissionAndVolumeAreReadAndSaved) {
+    TempDir dir;
+    nlohmann::json doc = baseDoc();
+    addExtension(doc, "KHR_materials_transmission", {{"transmissionFactor", 0.8}, {"transmissionTexture", {{"index", 0}}}});
+    addExtension(doc, "KHR_materials_volume",
+                 {{"thicknessFactor", 0.02}, {"attenuationDistance", 1.5}, {"attenuationColor", {0.9, 0.8, 0.7}}});
+    addExtension(doc, "KHR_materials_volume", {{"attenuationDistance", -1.0}}, 1);
+    Loaded loaded = loadDoc(dir, doc);
+    EXPECT_EQ(loaded.warnings.find("which Lit does not support"), std::string::npos) << loaded.warnings;
+    const Material& m = loaded.scene.materials.at(0);
+    EXPECT_FLOAT_EQ(m.transmission, 0.8f);
+    EXPECT_FLOAT_EQ(m.thickness, 0.02f);
+    EXPECT_FLOAT_EQ(m.attenuationDistance, 1.5f);
+    EXPECT_EQ(m.attenuationColor, glm::vec3(0.9f, 0.8f, 0.7f));
+    EXPECT_EQ(loaded.scene.materials.at(1).attenuationDistance, 0.0f) << "infinite";
+    EXPECT_EQ(loaded.scene.materials.at(1).transmission, 0.0f);
+    for (const char* expected : {"KHR_materials_transmission transmissionTexture is not drawn",
+                                 "KHR_materials_volume: Lit draws the volume as a thin sheet",
+                                 "KHR_materials_volume attenuationDistance -1.000000 is not a positive distance"})
+        EXPECT_NE(loaded.warnings.find(expected), std::string::npos) << expected << "\n" << loaded.warnings;
+
+    loaded.scene.materials[0].transmission = 1.0f;
+    loaded.scene.materials[1].transmission = 0.5f;
+    saveGltf(loaded.scene, dir / "edited.gltf");
+    const nlohmann::json edited = nlohmann::json::parse(readText(dir / "edited.gltf"));
+    const nlohmann::json& first = edited["materials"][0]["extensions"];
+    EXPECT_EQ(first["KHR_materials_transmission"]["transmissionFactor"].get<double>(), 1.0);
+    EXPECT_EQ(first["KHR_materials_transmission"]["transmissionTexture"]["index"], 0) << "the texture is kept";
+    EXPECT_EQ(first["KHR_materials_volume"]["thicknessFactor"].get<double>(), 0.02) << "the file's number";
+    EXPECT_EQ(first["KHR_materials_volume"]["attenuationDistance"].get<double>(), 1.5);
+    EXPECT_EQ(edited["materials"][1]["extensions"]["KHR_materials_transmission"]["transmissionFactor"].get<double>(), 0.5);
+    Log log;
+    const Scene back = loadGltf(dir / "edited.gltf", log);
+    EXPECT_EQ(back.materials[0].transmission, 1.0f);
+    EXPECT_EQ(back.materials[1].transmission, 0.5f);
+    EXPECT_FLOAT_EQ(back.materials[0].attenuationColor.z, 0.7f);
 }
 
 }  // namespace

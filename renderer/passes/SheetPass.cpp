@@ -1,0 +1,93 @@
+#include "passes/SheetPass.h"
+
+#include "RenderSettings.h"
+#include "scene/GpuScene.h"
+#include "scene/Scene.h"
+
+#include <shared.h>
+
+#include <algorithm>
+
+namespace lit {
+
+SheetPass::SheetPass(const std::filesystem::path& shaderRoot)
+    : programs_(shaderRoot, "sheets",
+                {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "sheet.frag.glsl"}},
+                "#define LIT_MATERIAL_LAYERS 1\n") {
+    programs_.get(ShadowKinds{});  // a broken shader fails at start-up
+}
+
+bool SheetPass::drawsView(const RenderSettings& settings) {
+    switch (settings.debug.view) {
+        case View::Final:
+        case View::DirectDiffuse:
+        case View::DirectSpecular:
+        case View::IndirectDiffuse:
+        case View::IndirectSpecular:
+            return true;
+        default:
+            return false;
+    }
+}
+
+void SheetPass::execute(const Scene& scene, const GpuScene& gpuScene, const Targets& targets,
+                        const RenderSettings& settings, const Frame& frame, DrawCounters& counters) {
+    if (!drawsView(settings) || !gpuScene.hasSheets()) return;
+    const std::vector<DrawItem>& items = gpuScene.items();
+    order_.clear();
+    const auto consider = [&](std::uint32_t index) {
+        if (index < items.size() && gpuScene.isSheet(items[index])) order_.push_back(index);
+    };
+    if (frame.visibleItems) {
+        for (const std::uint32_t index : *frame.visibleItems) consider(index);
+    } else {
+        for (std::uint32_t i = 0; i < items.size(); ++i) consider(i);
+    }
+    if (order_.empty()) return;
+    // Farthest first by the distance to each item's box centre: the blend composes sheet over sheet.
+    const auto distance = [&](std::uint32_t index) {
+        const DrawItem& item = items[index];
+        const glm::mat4& world = scene.nodes[static_cast<std::size_t>(item.node)].world;
+        const glm::vec3 centre(world * glm::vec4(item.localBounds.center(), 1.0f));
+        const glm::vec3 d = centre - frame.cameraPosition;
+        return glm::dot(d, d);
+    };
+    std::stable_sort(order_.begin(), order_.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return distance(a) > distance(b); });
+
+    if (targets.hdr.id() != hdrId_ || targets.depth.id() != depthId_ || !framebuffer_.id()) {
+        framebuffer_ = gl::Framebuffer("sheets");
+        framebuffer_.attach(GL_COLOR_ATTACHMENT0, targets.hdr);
+        framebuffer_.attach(GL_DEPTH_ATTACHMENT, targets.depth);
+        framebuffer_.setDrawBuffers(1);
+        framebuffer_.checkComplete("sheets");
+        hdrId_ = targets.hdr.id();
+        depthId_ = targets.depth.id();
+    }
+    framebuffer_.bind();
+    glViewport(0, 0, targets.hdr.desc().width, targets.hdr.desc().height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);  // the G-buffer's depth stays the opaque surfaces' (picking, history)
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_SRC1_COLOR);  // own + T · image
+    const gl::Program& program = programs_.get(frame.shadows);
+    program.use();
+    const bool final = settings.debug.view == View::Final;
+    const View view = settings.debug.view;
+    glProgramUniform4i(program.id(), program.location("uTerms"),
+                       final ? settings.terms.directDiffuse : view == View::DirectDiffuse,
+                       final ? settings.terms.indirectDiffuse : view == View::IndirectDiffuse,
+                       final ? settings.terms.directSpecular : view == View::DirectSpecular,
+                       final ? settings.terms.indirectSpecular : view == View::IndirectSpecular);
+    glProgramUniform1i(program.id(), program.location("uIndirect"), frame.indirect ? 1 : 0);
+    glProgramUniform1f(program.id(), program.location("uShadowNormalOffset"), settings.shadows.normalOffset);
+    gpuScene.drawList(scene, program, GpuScene::Bind::Everything, counters, order_);
+    glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+}
+
+}  // namespace lit

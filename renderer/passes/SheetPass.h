@@ -1,0 +1,54 @@
+#pragma once
+// Transmissive sheets (KHR_materials_transmission drawn as a thin sheet, docs/MATERIALS.md,
+// "Transmission"): after the composite, each sheet the camera sees adds its own light over the
+// HDR image and lets its transmittance of the image behind it through (sheet.frag.glsl), farthest
+// first. The G-buffer, the shadow maps and the voxels leave sheets out, so the image under a
+// sheet is what lies behind it.
+
+#include "gl/ProgramVariants.h"
+#include "passes/LightSetup.h"
+#include "passes/Pass.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace lit {
+
+class GpuScene;
+struct DrawCounters;
+struct RenderSettings;
+struct Scene;
+
+class SheetPass : public Pass {
+public:
+    explicit SheetPass(const std::filesystem::path& shaderRoot);
+
+    struct Targets {
+        const gl::Texture& hdr;    // the composite's image, blended over
+        const gl::Texture& depth;  // the G-buffer's depth: sheets behind opaque surfaces are hidden
+    };
+    struct Frame {
+        ShadowKinds shadows;                                  // the light table's shadow maps (variant)
+        glm::vec3 cameraPosition{0.0f};                       // for the farthest-first order
+        const std::vector<std::uint32_t>* visibleItems = nullptr;  // the camera's culled items (nullptr: all)
+        bool indirect = false;                                // the voxel volume and its UBO are bound
+    };
+    // Whether `settings`' view shows sheets: the final image and the four lighting terms.
+    static bool drawsView(const RenderSettings& settings);
+    // Draws the scene's sheets. Expects the frame UBO, the light table, the shadow maps, the
+    // material table and (with `frame.indirect`) the voxel volume, its UBO and the specular
+    // albedo table bound.
+    void execute(const Scene& scene, const GpuScene& gpuScene, const Targets& targets, const RenderSettings& settings,
+                 const Frame& frame, DrawCounters& counters);
+    std::vector<gl::Program*> programs() override { return programs_.built(); }
+
+private:
+    gl::ProgramVariants<ShadowKinds::kVariants> programs_;
+    gl::Framebuffer framebuffer_;
+    GLuint hdrId_ = 0, depthId_ = 0;  // the targets framebuffer_ was made for
+    std::vector<std::uint32_t> order_;  // the sheets of this frame, farthest first
+};
+
+}  // namespace lit

@@ -1,0 +1,120 @@
+#version 450 core
+// Transmissive sheets (KHR_materials_transmission drawn as a thin sheet, docs/MATERIALS.md,
+// "Transmission"): drawn after the composite over its HDR image, farthest first, with dual-source
+// blending
+//   image = own + T(n·v) · image,   T = t·(1 − m)·c·(1 − F(n·v))   (brdf.glsl transmittanceOfSheet)
+// where `own` is the sheet's own light, term by term as the view shows them:
+//   L_DD = Σ V·E·(albedo_d·(1 − t)/π · t_s + f_sheen)·(n·l) · b + emission     (direct_lighting)
+//   L_DS = Σ V·E·(f_spec · t_s · b + cc·f_coat)·(n·l)
+//   L_ID = albedo_d·(1 − t) (and the sheen's) × the six diffuse cones' irradiance/π    (cone_trace)
+//   L_IS = E_spec × one cone along the mirror direction
+// The lighting passes see what lies behind the sheet (the G-buffer, the shadow maps and the voxels
+// leave sheets out), so the image under it is what the sheet lets through.
+#include "frame.glsl"
+#include "material.glsl"
+#include "gbuffer.glsl"
+#include "brdf.glsl"
+#include "lights.glsl"
+#include "cone.glsl"
+
+in VertexData {
+    vec3 worldPosition;
+    vec3 worldNormal;
+    vec2 uv;
+    vec4 worldTangent;
+} fs;
+
+layout(location = 0, index = 0) out vec4 outOwn;
+layout(location = 0, index = 1) out vec4 outTransmittance;
+
+uniform ivec4 uTerms;              // which of DD, ID, DS, IS the view adds (1/0)
+uniform int uIndirect;             // 1: the voxel volume is bound (GI on)
+uniform float uShadowNormalOffset; // shadow lookup offset along the normal, in shadow texels
+
+void main() {
+    GpuMaterial m = materials[uMaterialIndex];
+    vec4 baseColor = materialBaseColor(m, fs.uv);
+    if (materialAlphaDiscard(m, baseColor.a)) discard;
+
+    Surface s;
+    s.valid = true;
+    s.position = fs.worldPosition;
+    s.baseColor = baseColor.rgb;
+    s.occlusion = 1.0;
+    s.metalness = m.params.x;
+    s.roughness = m.params.y;
+    if (m.textures.y != 0) {
+        vec4 mr = texture(metallicRoughnessTexture, materialUv(LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS, fs.uv));
+        s.roughness *= mr.g;
+        s.metalness *= mr.b;
+    }
+    s.roughness = clamp(s.roughness, 0.0, 1.0);
+    s.metalness = clamp(s.metalness, 0.0, 1.0);
+    s.emissive = m.emissive.rgb;
+    if (m.textures.w != 0) s.emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;
+    s.f0 = specularF0(s.baseColor, s.metalness, m.specular.rgb);
+    s.f90 = specularF90(s.metalness, m.specular.a);
+    s.clearcoat = m.clearcoat.x;
+    s.clearcoatRoughness = m.clearcoat.y;
+    s.sheenColor = m.sheen.rgb;
+    s.sheenRoughness = m.sheen.a;
+    float transmission = m.alpha.y;
+
+    vec3 v = normalize(frame.cameraPosition.xyz - s.position);
+    vec3 n = normalize(fs.worldNormal);
+    if (dot(n, v) < 0.0) n = -n;  // a sheet is seen from either side
+    s.normal = n;
+    float NdotV = max(dot(n, v), 0.0);
+    float alpha = alphaFromRoughness(s.roughness);
+    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness) * (1.0 - transmission);
+    float coatScale = clearcoatBaseScale(s.clearcoat, NdotV);
+    float base = coatScale * sheenBaseScale(s, NdotV);
+    float coatAlpha = alphaFromRoughness(s.clearcoatRoughness);
+    bool sheen = max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b)) > 0.0;
+    float alphaSheen = sheenAlpha(s.sheenRoughness);
+
+    vec3 directDiffuse = s.emissive;
+    vec3 directSpecular = vec3(0.0);
+    for (int i = 0; i < frame.counts.x; ++i) {
+        GpuLight light = lights[i];
+        LightSample ls = sampleLight(light, s.position);
+        float NdotL = dot(n, ls.l);
+        if (NdotL <= 0.0 || max(ls.radiance.r, max(ls.radiance.g, ls.radiance.b)) <= 0.0) continue;
+        vec3 visibility = shadowVisibility(light, s.position, n, frame.exposure.y, uShadowNormalOffset);
+        if (max(visibility.r, max(visibility.g, visibility.b)) <= 0.0) continue;
+        vec3 E = ls.radiance * visibility * NdotL;
+        directDiffuse += E * albedo * (base / PI);
+        if (sheen) {
+            vec3 h = normalize(v + ls.l);
+            directDiffuse += E * s.sheenColor *
+                             (D_Charlie(max(dot(n, h), 0.0), alphaSheen) * V_Neubelt(NdotL, max(NdotV, 1e-4)) * coatScale);
+        }
+        directSpecular += E * specularBrdf(n, v, ls.l, s.f0, s.f90, alpha) * base;
+        if (s.clearcoat > 0.0) directSpecular += E * s.clearcoat * specularBrdf(n, v, ls.l, kClearcoatF0, 1.0, coatAlpha);
+    }
+
+    vec3 indirectDiffuse = vec3(0.0), indirectSpecular = vec3(0.0);
+    if (uIndirect != 0) {
+        float scale = voxel.traceParams.x;
+        vec3 origin = coneOrigin(s.position, n);
+        float maxDistance = voxel.traceParams.y;
+        vec3 diffuseAlbedoUnderLayers = (albedo * sheenBaseScale(s, NdotV) + s.sheenColor * sheenAlbedo(NdotV, s.sheenRoughness)) *
+                                        coatScale;
+        vec3 cones[kDiffuseConeCount];
+        for (int i = 0; i < kDiffuseConeCount; ++i) cones[i] = vec3(0.0);
+        if (uTerms.y != 0 && max(diffuseAlbedoUnderLayers.r, max(diffuseAlbedoUnderLayers.g, diffuseAlbedoUnderLayers.b)) > 0.0)
+            indirectDiffuse = diffuseAlbedoUnderLayers * traceDiffuse(origin, n, voxel.traceParams.w, maxDistance) * scale;
+        if (uTerms.w != 0)
+            indirectSpecular = indirectSpecularWeight(s.f0, s.f90, s.roughness, sheenBaseScale(s, NdotV), s.clearcoat,
+                                                      s.clearcoatRoughness, NdotV) *
+                               traceSpecular(origin, n, v, specularLobeRoughness(s), 1, gl_FragCoord.xy, 0, maxDistance,
+                                             false, cones) *
+                               scale;
+    }
+
+    vec3 own = float(uTerms.x) * directDiffuse + float(uTerms.y) * indirectDiffuse + float(uTerms.z) * directSpecular +
+               float(uTerms.w) * indirectSpecular;
+    outOwn = vec4(own, 0.0);
+    outTransmittance = vec4(transmittanceOfSheet(s.baseColor, s.metalness, transmission, m.specular.rgb, m.specular.a, NdotV),
+                            1.0);
+}
