@@ -491,7 +491,7 @@ void Renderer::Impl::drawSheets(const Scene& scene, const RenderSettings& settin
         gi.volume().radiance().bind(LIT_TEX_VOXEL_RADIANCE);
         coneTrace.specularAlbedoTable().bind(LIT_TEX_SPECULAR_ALBEDO);
     }
-    sheets.execute(scene, *gpuScene, {post.hdr(), gbuffer.depth()}, settings,
+    sheets.execute(scene, *gpuScene, {post.hdr(), gbuffer.depth(), gbuffer.nodeId()}, settings,
                    {ShadowKinds::of(lights), glm::vec3(frame.cameraPosition), &cameraItems, indirect}, counters);
 }
 

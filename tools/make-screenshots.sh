@@ -52,6 +52,15 @@ layers="$root/tests/data/blender/material_layers/material_layers.gltf"
 "$render" "$layers" --size 640x360 --gi on --voxels 128 --out "$out/material_layers.png" \
     --compare "$tmpdir/layers_reference.hdr" --difference "$out/material_layers_difference.png"
 
+# The glass scene (tools/blender/make_glass.py, docs/MATERIALS.md "Transmission"): a clear pane
+# before an orange box and a tinted panel casting a coloured shadow, drawn as thin sheets; Lit's
+# defaults at 128³, the every-bounce reference, and the Difference view.
+glass="$root/tests/data/blender/glass/glass.gltf"
+"$render" "$glass" --reference --bounces all --spp "$spp" --size 640x360 --out "$out/glass_reference.png" \
+    --hdr "$tmpdir/glass_reference.hdr"
+"$render" "$glass" --size 640x360 --gi on --voxels 128 --out "$out/glass.png" \
+    --compare "$tmpdir/glass_reference.hdr" --difference "$out/glass_difference.png"
+
 # The sun room (tools/blender/make_sun_room.py, docs/GI.md "The sun room against Cycles"): lit only
 # through its window, so nearly everything shown is bounced light; Lit's defaults at 128³, the
 # every-bounce reference, and the Difference view. Exposed +3 stops: the room is dim beside the patch.

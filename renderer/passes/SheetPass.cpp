@@ -13,7 +13,9 @@ namespace lit {
 SheetPass::SheetPass(const std::filesystem::path& shaderRoot)
     : programs_(shaderRoot, "sheets",
                 {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "sheet.frag.glsl"}},
-                "#define LIT_MATERIAL_LAYERS 1\n") {
+                "#define LIT_MATERIAL_LAYERS 1\n"),
+      idProgram_(shaderRoot, "sheet ids",
+                 {{GL_VERTEX_SHADER, "gbuffer.vert.glsl"}, {GL_FRAGMENT_SHADER, "sheet_id.frag.glsl"}}) {
     programs_.get(ShadowKinds{});  // a broken shader fails at start-up
 }
 
@@ -55,14 +57,21 @@ void SheetPass::execute(const Scene& scene, const GpuScene& gpuScene, const Targ
     std::stable_sort(order_.begin(), order_.end(),
                      [&](std::uint32_t a, std::uint32_t b) { return distance(a) > distance(b); });
 
-    if (targets.hdr.id() != hdrId_ || targets.depth.id() != depthId_ || !framebuffer_.id()) {
+    if (targets.hdr.id() != hdrId_ || targets.depth.id() != depthId_ || targets.nodeId.id() != nodeIdId_ ||
+        !framebuffer_.id()) {
         framebuffer_ = gl::Framebuffer("sheets");
         framebuffer_.attach(GL_COLOR_ATTACHMENT0, targets.hdr);
         framebuffer_.attach(GL_DEPTH_ATTACHMENT, targets.depth);
         framebuffer_.setDrawBuffers(1);
         framebuffer_.checkComplete("sheets");
+        idFramebuffer_ = gl::Framebuffer("sheet ids");
+        idFramebuffer_.attach(GL_COLOR_ATTACHMENT0, targets.nodeId);
+        idFramebuffer_.attach(GL_DEPTH_ATTACHMENT, targets.depth);
+        idFramebuffer_.setDrawBuffers(1);
+        idFramebuffer_.checkComplete("sheet ids");
         hdrId_ = targets.hdr.id();
         depthId_ = targets.depth.id();
+        nodeIdId_ = targets.nodeId.id();
     }
     framebuffer_.bind();
     glViewport(0, 0, targets.hdr.desc().width, targets.hdr.desc().height);
@@ -86,6 +95,18 @@ void SheetPass::execute(const Scene& scene, const GpuScene& gpuScene, const Targ
     gpuScene.drawList(scene, program, GpuScene::Bind::Everything, counters, order_);
     glDisable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ZERO);
+
+    // The IDs, farthest first as above: the nearest sheet over a pixel is the one picked.
+    idFramebuffer_.bind();
+    idProgram_.use();
+    gpuScene.bindGeometry();
+    for (const std::uint32_t index : order_) {
+        const DrawItem& item = items[index];
+        glProgramUniform1ui(idProgram_.id(), LIT_LOC_NODE_ID, static_cast<GLuint>(item.node + 1));
+        glProgramUniform1ui(idProgram_.id(), LIT_LOC_PRIMITIVE, static_cast<GLuint>(item.primitive));
+        gpuScene.drawItem(scene, item, idProgram_, GpuScene::Bind::AlphaOnly, counters);
+    }
+    GpuScene::unbindMaterialSamplers();
     glDepthMask(GL_TRUE);
     glDisable(GL_DEPTH_TEST);
 }

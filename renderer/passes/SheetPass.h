@@ -3,7 +3,8 @@
 // "Transmission"): after the composite, each sheet the camera sees adds its own light over the
 // HDR image and lets its transmittance of the image behind it through (sheet.frag.glsl), farthest
 // first. The G-buffer, the shadow maps and the voxels leave sheets out, so the image under a
-// sheet is what lies behind it.
+// sheet is what lies behind it. Then the sheets' node IDs go into the G-buffer's ID target, for
+// picking and the selection outline (sheet_id.frag.glsl).
 
 #include "gl/ProgramVariants.h"
 #include "passes/LightSetup.h"
@@ -28,6 +29,7 @@ public:
     struct Targets {
         const gl::Texture& hdr;    // the composite's image, blended over
         const gl::Texture& depth;  // the G-buffer's depth: sheets behind opaque surfaces are hidden
+        const gl::Texture& nodeId; // the G-buffer's ID target (its lighting passes have run)
     };
     struct Frame {
         ShadowKinds shadows;                                  // the light table's shadow maps (variant)
@@ -42,12 +44,17 @@ public:
     // albedo table bound.
     void execute(const Scene& scene, const GpuScene& gpuScene, const Targets& targets, const RenderSettings& settings,
                  const Frame& frame, DrawCounters& counters);
-    std::vector<gl::Program*> programs() override { return programs_.built(); }
+    std::vector<gl::Program*> programs() override {
+        std::vector<gl::Program*> all = programs_.built();
+        all.push_back(&idProgram_);
+        return all;
+    }
 
 private:
     gl::ProgramVariants<ShadowKinds::kVariants> programs_;
-    gl::Framebuffer framebuffer_;
-    GLuint hdrId_ = 0, depthId_ = 0;  // the targets framebuffer_ was made for
+    gl::Program idProgram_;
+    gl::Framebuffer framebuffer_, idFramebuffer_;
+    GLuint hdrId_ = 0, depthId_ = 0, nodeIdId_ = 0;  // the targets the framebuffers were made for
     std::vector<std::uint32_t> order_;  // the sheets of this frame, farthest first
 };
 

@@ -156,6 +156,21 @@ TEST_F(Sheets, DirectLightThroughSheetsMatchesTheReference) {
         << "an opaque panel shadows the floor";
 }
 
+// A click on a sheet picks it (the sheet pass writes its ID over what lies behind it).
+TEST_F(Sheets, ClickingASheetPicksIt) {
+    RenderSettings s = settings_;
+    render(scene_, s);
+    const auto pickAt = [&](const char* region) {
+        const std::vector<std::size_t>& list = pixels_.at(region);
+        const std::size_t p = list[list.size() / 2];
+        const int x = static_cast<int>(p % kWidth), y = static_cast<int>(p / kWidth);  // bottom-up
+        return renderer_->pickNode({x, kHeight - 1 - y});
+    };
+    EXPECT_EQ(pickAt("box_through_pane"), nodeNamed("pane"));
+    EXPECT_EQ(pickAt("tinted_panel"), nodeNamed("tinted"));
+    EXPECT_EQ(pickAt("sunlit_floor"), nodeNamed("floor"));
+}
+
 // With GI (the defaults at 64³) against the reference with every bounce. The voxels leave sheets
 // out: the indirect light that crosses a sheet is not dimmed by it, and the sheets' own reflection
 // is missing from the voxels (docs/MATERIALS.md, "Transmission"). The bars are the measured
