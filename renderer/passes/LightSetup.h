@@ -32,8 +32,8 @@ struct LightSetup {
     std::vector<gpu::GpuLight> lights;
     std::vector<ShadowView> shadows2d;    // directional + spot
     std::vector<ShadowView> shadowsCube;  // point
-    // The 2D shadow layers also hold what transmissive sheets let through (ShadowPass, lights.glsl);
-    // set by the renderer when the scene has sheets and some light a 2D map.
+    // The shadow maps also hold what transmissive sheets let through (ShadowPass, lights.glsl); set
+    // by the renderer when the scene has sheets.
     bool sheetShadows = false;
 };
 
@@ -45,10 +45,11 @@ struct LightSetup {
 struct ShadowKinds {
     bool cube = true;     // a point light with a cube shadow map
     bool flat = true;     // a directional or spot light with a 2D one
-    bool sheets = false;  // the 2D maps hold transmissive sheets' transmittance (LightSetup::sheetShadows)
+    bool sheets = false;  // the maps hold transmissive sheets' transmittance (LightSetup::sheetShadows)
 
     static ShadowKinds of(const LightSetup& setup) {
-        return {!setup.shadowsCube.empty(), !setup.shadows2d.empty(), setup.sheetShadows && !setup.shadows2d.empty()};
+        const bool cube = !setup.shadowsCube.empty(), flat = !setup.shadows2d.empty();
+        return {cube, flat, setup.sheetShadows && (cube || flat)};
     }
     static constexpr std::size_t kVariants = 8;
     std::size_t index() const { return (cube ? 1u : 0u) + (flat ? 2u : 0u) + (sheets ? 4u : 0u); }

@@ -35,11 +35,15 @@ ShadowPass::ShadowPass(const std::filesystem::path& shaderRoot)
 }
 
 void ShadowPass::ensureSheetMaps(bool sheets) {
-    const int size = sheets ? size_ : 1, layers = sheets ? layers2d_ : 1;
-    if (sheetMaps2d_ && sheetMaps2d_.desc().width == size && sheetMaps2d_.desc().depth == layers) return;
+    const int size = sheets ? size_ : 1, layers = sheets ? layers2d_ : 1, faces = 6 * (sheets ? cubes_ : 1);
+    if (sheetMaps2d_ && sheetMaps2d_.desc().width == size && sheetMaps2d_.desc().depth == layers &&
+        sheetMapsCube_.desc().depth == faces)
+        return;
     sheetMaps2d_ = gl::Texture("shadow sheets 2D", {GL_TEXTURE_2D_ARRAY, GL_RGBA16F, size, size, layers, 1});
+    sheetMapsCube_ = gl::Texture("shadow sheets cube", {GL_TEXTURE_CUBE_MAP_ARRAY, GL_RGBA16F, size, size, faces, 1});
     const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // nothing in the way: all light passes
     glClearTexImage(sheetMaps2d_.id(), 0, GL_RGBA, GL_FLOAT, clear);
+    glClearTexImage(sheetMapsCube_.id(), 0, GL_RGBA, GL_FLOAT, clear);
 }
 
 void ShadowPass::ensureMaps(int size, int layers2d, int cubes) {
@@ -58,10 +62,12 @@ void ShadowPass::ensureMaps(int size, int layers2d, int cubes) {
 }
 
 std::size_t ShadowPass::memoryBytes() const {
-    const std::size_t sheets = sheetMaps2d_ ? static_cast<std::size_t>(sheetMaps2d_.desc().width) *
-                                                  static_cast<std::size_t>(sheetMaps2d_.desc().height) * 8u *
-                                                  static_cast<std::size_t>(sheetMaps2d_.desc().depth)
-                                            : 0u;
+    const auto layerBytes = [](const gl::Texture& t) {
+        return t ? static_cast<std::size_t>(t.desc().width) * static_cast<std::size_t>(t.desc().height) * 8u *
+                       static_cast<std::size_t>(t.desc().depth)
+                 : 0u;
+    };
+    const std::size_t sheets = layerBytes(sheetMaps2d_) + layerBytes(sheetMapsCube_);
     return static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_) * 4u *
                static_cast<std::size_t>(layers2d_ + 6 * cubes_) +
            sheets;
@@ -75,6 +81,8 @@ void ShadowPass::bindMaps() const {
     if (sheetMaps2d_) {
         sheetMaps2d_.bind(LIT_TEX_SHADOW_SHEETS);
         sheetSampler_.bind(LIT_TEX_SHADOW_SHEETS);
+        sheetMapsCube_.bind(LIT_TEX_SHADOW_SHEETS_CUBE);
+        sheetSampler_.bind(LIT_TEX_SHADOW_SHEETS_CUBE);
     }
 }
 
@@ -82,7 +90,7 @@ void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const Lig
                          const RenderSettings& settings, DrawCounters& counters, const ItemCuller& cull) {
     const int size = std::clamp(settings.shadows.mapSize, 16, 8192);
     ensureMaps(size, static_cast<int>(lights.shadows2d.size()), static_cast<int>(lights.shadowsCube.size()));
-    const bool sheets = lights.sheetShadows && !lights.shadows2d.empty();
+    const bool sheets = lights.sheetShadows && !(lights.shadows2d.empty() && lights.shadowsCube.empty());
     ensureSheetMaps(sheets);
     if (gpuScene.empty()) return;
 
@@ -138,9 +146,10 @@ void ShadowPass::drawSheets(const Scene& scene, const GpuScene& gpuScene, const 
     sheetProgram_.use();
     sheetFramebuffer_.bind();
     const GLint light = sheetProgram_.location("uLight"), nearFar = sheetProgram_.location("uNearFar");
-    for (const ShadowView& view : lights.shadows2d) {
-        sheetFramebuffer_.attachLayer(GL_COLOR_ATTACHMENT0, sheetMaps2d_, view.layer);
-        sheetFramebuffer_.attachLayer(GL_DEPTH_ATTACHMENT, maps2d_, view.layer);
+    const auto renderView = [&](const gl::Texture& colours, const gl::Texture& depths, int layer,
+                                const glm::mat4& viewProjection, const ShadowView& view) {
+        sheetFramebuffer_.attachLayer(GL_COLOR_ATTACHMENT0, colours, layer);
+        sheetFramebuffer_.attachLayer(GL_DEPTH_ATTACHMENT, depths, layer);
         sheetFramebuffer_.setDrawBuffers(1);
         const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
         glClearNamedFramebufferfv(sheetFramebuffer_.id(), GL_COLOR, 0, clear);
@@ -151,12 +160,12 @@ void ShadowPass::drawSheets(const Scene& scene, const GpuScene& gpuScene, const 
                            directional ? l.directionType.z : view.position.z, directional ? 0.0f : 1.0f);
         glProgramUniform2f(sheetProgram_.id(), nearFar, directional ? 0.0f : view.nearPlane,
                            directional ? 0.0f : view.farPlane);
-        gpu::ShadowPassUniforms u{view.viewProjection[0], glm::vec4(view.position, view.farPlane)};
+        gpu::ShadowPassUniforms u{viewProjection, glm::vec4(view.position, view.farPlane)};
         uniforms_.update(u);
         visibleItems_.clear();
         if (cull) {
             std::vector<std::uint32_t> culled;
-            cull(view.viewProjection[0], culled);
+            cull(viewProjection, culled);
             for (const std::uint32_t index : culled)
                 if (index < gpuScene.items().size() && gpuScene.isSheet(gpuScene.items()[index])) visibleItems_.push_back(index);
         } else {
@@ -164,7 +173,12 @@ void ShadowPass::drawSheets(const Scene& scene, const GpuScene& gpuScene, const 
                 if (gpuScene.isSheet(gpuScene.items()[i])) visibleItems_.push_back(i);
         }
         gpuScene.drawList(scene, sheetProgram_, GpuScene::Bind::Everything, counters, visibleItems_);
-    }
+    };
+    for (const ShadowView& view : lights.shadows2d)
+        renderView(sheetMaps2d_, maps2d_, view.layer, view.viewProjection[0], view);
+    for (const ShadowView& view : lights.shadowsCube)
+        for (int face = 0; face < 6; ++face)
+            renderView(sheetMapsCube_, mapsCube_, view.layer * 6 + face, view.viewProjection[face], view);
     glDisable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ZERO);

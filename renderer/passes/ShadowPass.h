@@ -1,9 +1,9 @@
 #pragma once
 // Shadow maps: one layer of a 2D depth array per directional/spot light, one cube of a cube
 // array per point light. Depth is rendered with slope-scaled polygon offset; the lighting pass
-// filters it with PCF (lights.glsl). With LightSetup::sheetShadows, each 2D layer also gets what
-// the transmissive sheets in front of its nearest opaque surface let through (a colour layer,
-// shadow_sheet.frag.glsl); point lights' cubes do not (docs/MATERIALS.md, "Transmission").
+// filters it with PCF (lights.glsl). With LightSetup::sheetShadows, each layer and cube face also
+// gets what the transmissive sheets in front of its nearest opaque surface let through (a colour
+// layer, shadow_sheet.frag.glsl; docs/MATERIALS.md, "Transmission").
 
 #include "passes/LightSetup.h"
 #include "passes/Pass.h"
@@ -30,15 +30,16 @@ public:
 
 private:
     void ensureMaps(int size, int layers2d, int cubes);
-    // The sheet layers at the maps' size (sheets) or one white texel (none: the binding stays valid).
+    // The sheet layers at the maps' size (sheets) or one white texel (none: the bindings stay valid).
     void ensureSheetMaps(bool sheets);
-    // Renders the transmissive sheets of each 2D view into its sheet layer.
+    // Renders the transmissive sheets of each view (each cube face) into its sheet layer.
     void drawSheets(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights, DrawCounters& counters,
                     const ItemCuller& cull);
 
     gl::Program program_;
     gl::Program sheetProgram_;
-    gl::Texture sheetMaps2d_;  // RGBA16F, one layer per 2D map (LIT_TEX_SHADOW_SHEETS)
+    gl::Texture sheetMaps2d_;    // RGBA16F, one layer per 2D map (LIT_TEX_SHADOW_SHEETS)
+    gl::Texture sheetMapsCube_;  // RGBA16F cube array, one cube per point light (LIT_TEX_SHADOW_SHEETS_CUBE)
     gl::Sampler sheetSampler_;
     gl::Framebuffer sheetFramebuffer_;
     gl::Texture maps2d_;

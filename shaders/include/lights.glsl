@@ -69,13 +69,14 @@ const float kPcfTapOffset = 0.81649658;  // √(2/3)
 #ifndef LIT_SHADOWS_2D
 #define LIT_SHADOWS_2D 1
 #endif
-// Whether the 2D maps hold transmissive sheets (ShadowKinds::sheets): compiled in only for scenes
+// Whether the maps hold transmissive sheets (ShadowKinds::sheets): compiled in only for scenes
 // with sheets, which pay the extra lookup.
 #ifndef LIT_SHADOWS_SHEETS
 #define LIT_SHADOWS_SHEETS 0
 #endif
 #if LIT_SHADOWS_SHEETS
 layout(binding = LIT_TEX_SHADOW_SHEETS) uniform sampler2DArray sheetShadowMaps2d;
+layout(binding = LIT_TEX_SHADOW_SHEETS_CUBE) uniform samplerCubeArray sheetShadowMapsCube;
 // Linear depth (share of the light's depth range) a receiver must lie past the nearest sheet to be
 // behind it: keeps a sheet from tinting its own light.
 const float kSheetShadowDepthBias = 1.0 / 512.0;
@@ -93,8 +94,8 @@ float perspectiveShadowDepth(float w, float n, float f, float bias) {
 }
 
 // Fraction of the light reaching `position` per channel (1 = lit), with PCF of four hardware 2×2
-// comparisons (above), times what the transmissive sheets between it and a light with a 2D map
-// let through (LIT_SHADOWS_SHEETS). `normal` offsets the lookup to avoid acne on grazing surfaces.
+// comparisons (above), times what the transmissive sheets between it and the light let through
+// (LIT_SHADOWS_SHEETS). `normal` offsets the lookup to avoid acne on grazing surfaces.
 vec3 shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadius, float normalOffsetTexels) {
     float index = light.spotShadow.z;
     if (index < 0.0) return vec3(1.0);
@@ -119,7 +120,12 @@ vec3 shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadiu
         vec3 d1 = (t1 + t2) * (step * kPcfTapOffset), d2 = (t1 - t2) * (step * kPcfTapOffset);
         float sum = texture(shadowMapsCube, vec4(v + d1, index), depth) + texture(shadowMapsCube, vec4(v - d1, index), depth) +
                     texture(shadowMapsCube, vec4(v + d2, index), depth) + texture(shadowMapsCube, vec4(v - d2, index), depth);
-        return vec3(0.25 * sum);
+        vec3 through = vec3(1.0);
+#if LIT_SHADOWS_SHEETS
+        vec4 sheets = textureLod(sheetShadowMapsCube, vec4(v, index), 0.0);
+        if ((m - n) / max(f - n, 1e-6) > sheets.a + kSheetShadowDepthBias) through = sheets.rgb;
+#endif
+        return (0.25 * sum) * through;
     }
 #endif
 #if LIT_SHADOWS_2D

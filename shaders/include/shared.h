@@ -101,10 +101,11 @@ using mat4 = glm::mat4;
 // The lighting passes with material layers: E_s(n·v, sheen roughness), R32F, the sheen lobe's
 // directional albedo (scene/SheenAlbedo.h, texel centres at (i + ½)/size).
 #define LIT_TEX_SHEEN_ALBEDO 33
-// Transmissive sheets in the 2D shadow maps (ShadowPass): per layer, rgb the product of the
+// Transmissive sheets in the shadow maps (ShadowPass): per layer, rgb the product of the
 // transmittances of the sheets between the light and the nearest opaque surface, a the nearest
 // sheet's linear depth (0 at the near plane, 1 at the far plane).
 #define LIT_TEX_SHADOW_SHEETS 34
+#define LIT_TEX_SHADOW_SHEETS_CUBE 35  // the same per cube face of a point light (RGBA16F cube array)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0

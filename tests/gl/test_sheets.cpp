@@ -10,6 +10,7 @@
 #include "reference/PathTracer.h"
 #include "reference/PunctualLights.h"
 #include "reference/ReferenceScene.h"
+#include "scene/SceneBuilder.h"
 
 #include <cstdio>
 #include <map>
@@ -156,6 +157,69 @@ TEST_F(Sheets, DirectLightThroughSheetsMatchesTheReference) {
         << "an opaque panel shadows the floor";
 }
 
+// A point light's cube shadow maps carry the sheets' colour too: the sun made a point light 6 m
+// away along its direction, the floor behind the tinted panel (as the reference's shadow rays
+// find it) against the reference, direct light only.
+TEST_F(Sheets, PointLightShadowsThroughSheetsMatchTheReference) {
+    Scene scene = scene_;
+    Node* sunNode = nullptr;
+    for (Node& node : scene.nodes)
+        if (node.light >= 0) sunNode = &node;
+    ASSERT_NE(sunNode, nullptr);
+    const glm::vec3 travel = glm::normalize(glm::vec3(sunNode->world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));
+    Light& light = scene.lights[static_cast<std::size_t>(sunNode->light)];
+    light.type = LightType::Point;
+    light.intensity = 3.0f * 36.0f;  // W/sr: 3 W/m² at 6 m
+    sunNode->translation = glm::vec3(1.4f, 0.7f, 0.0f) - 6.0f * travel;
+    scene.updateWorldTransforms();
+
+    const ReferenceScene rs(scene, quiet_);
+    const std::vector<FirstHit> hits = reference::traceFirstHits(rs, camera_, kWidth, kHeight);
+    const gpu::GpuLight& point = rs.punctualLights().at(0);
+    std::vector<int> region(hits.size(), -1);  // 0 behind the tinted panel, 1 in the light
+    for (std::size_t p = 0; p < hits.size(); ++p) {
+        if (hits[p].node != nodeNamed("floor")) continue;
+        const reference::PunctualSample ls = reference::samplePunctualLight(point, hits[p].position);
+        reference::SurfaceHit blocker;
+        if (!rs.intersect({hits[p].position + hits[p].normal * 1e-3f, ls.l, 0.0f, ls.distance}, blocker))
+            region[p] = 1;
+        else if (blocker.node == nodeNamed("tinted"))
+            region[p] = 0;
+    }
+    std::vector<std::size_t> tintedShadow, sunlit;  // inner pixels: the four neighbours in the same region
+    for (int y = 1; y + 1 < kHeight; ++y)
+        for (int x = 1; x + 1 < kWidth; ++x) {
+            const std::size_t p = static_cast<std::size_t>(y * kWidth + x);
+            bool inner = region[p] >= 0;
+            for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
+                inner = inner && region[static_cast<std::size_t>((y + dy) * kWidth + x + dx)] == region[p];
+            if (inner) (region[p] == 0 ? tintedShadow : sunlit).push_back(p);
+        }
+    ASSERT_GT(tintedShadow.size(), 40u);
+    RenderSettings s = settings_;
+    s.gi.enabled = false;
+    renderer_->setScene(scene);
+    renderer_->render(scene, camera_, s);
+    const std::vector<float> lit = renderer_->readHdrRgb();
+    ReferenceSettings rsettings;
+    rsettings.bounces = 0;
+    rsettings.pixelCentres = true;
+    PathTracer tracer(rs, camera_, kWidth, kHeight, rsettings);
+    tracer.addSamples(4);
+    const std::vector<float> ref = tracer.image().viewRgb(View::Final, s);
+    const auto mean = [](const std::vector<float>& rgb, const std::vector<std::size_t>& pixels) {
+        glm::dvec3 sum(0.0);
+        for (const std::size_t p : pixels) sum += glm::dvec3(rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]);
+        return sum / static_cast<double>(pixels.size());
+    };
+    const glm::dvec3 l = mean(lit, tintedShadow), r = mean(ref, tintedShadow);
+    std::printf("point light, floor behind the tinted panel: Lit (%.4f %.4f %.4f) reference (%.4f %.4f %.4f)\n", l.r, l.g,
+                l.b, r.r, r.g, r.b);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(l[c] / r[c], 1.0, 0.05) << "channel " << c;
+    const glm::dvec3 share = l / mean(lit, sunlit);
+    EXPECT_GT(share.b, 2.0 * share.r) << "the shadow is tinted";
+}
+
 // A click on a sheet picks it (the sheet pass writes its ID over what lies behind it).
 TEST_F(Sheets, ClickingASheetPicksIt) {
     RenderSettings s = settings_;
@@ -184,6 +248,48 @@ TEST_F(Sheets, GlobalIlluminationThroughSheetsAgainstTheReference) {
     report("GI", lit, ref);
     for (const char* name : kRegions)
         EXPECT_NEAR(luminance(glm::vec3(lit.at(name))) / luminance(glm::vec3(ref.at(name))), 1.0, 0.10) << name;
+}
+
+// The sun room (tests/data/blender/sun_room, lit only through its window) with its window glazed
+// as a user glazes one: a 2 cm box of clear glass filling the opening. Every bounce on both sides:
+// the pane dims the whole room, and Lit's image must dim by the reference's factor.
+class GlazedSunRoom : public GlFixture {};
+
+TEST_F(GlazedSunRoom, ThePaneDimsTheRoomAsInTheReference) {
+    Log quiet;
+    quiet.setSink(nullptr);
+    const Scene open = loadGltf(sourceDir() / "tests" / "data" / "blender" / "sun_room" / "sun_room.gltf", quiet);
+    Scene glazed = open;
+    const int glass = addMaterial(glazed, glm::vec3(1.0f), 0.0f, 0.0f, "glass");
+    glazed.materials[static_cast<std::size_t>(glass)].transmission = 1.0f;
+    // The window: x 0.2..1.4, y 1.0..2.2 through the north wall (z −2.3..−2.0).
+    addMeshNode(glazed, makeBoxMesh("pane", glm::vec3(1.2f, 1.2f, 0.02f), glass), glm::vec3(0.8f, 1.6f, -2.15f));
+    glazed.updateWorldTransforms();
+
+    RenderSettings s = smallSettings();
+    s.output.width = 128;
+    s.output.height = 80;
+    s.gi.enabled = true;
+    s.gi.voxelResolution = 64;
+    const auto mean = [](const std::vector<float>& rgb) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) sum += luminance({rgb[i], rgb[i + 1], rgb[i + 2]});
+        return sum / static_cast<double>(rgb.size() / 3);
+    };
+    const auto traced = [&](const Scene& scene) {
+        const ReferenceScene rs(scene, quiet);
+        ReferenceSettings settings;
+        settings.bounces = reference::kAllBounces;
+        PathTracer tracer(rs, cameraFor(scene, s), s.output.width, s.output.height, settings);
+        tracer.addSamples(128);
+        return mean(tracer.image().viewRgb(View::Final, s));
+    };
+    const double litOpen = mean(render(open, s).rgb), litGlazed = mean(render(glazed, s).rgb);
+    const double refOpen = traced(open), refGlazed = traced(glazed);
+    std::printf("sun room, glazed / open: Lit %.4f / %.4f = %.3f, reference %.4f / %.4f = %.3f\n", litGlazed, litOpen,
+                litGlazed / litOpen, refGlazed, refOpen, refGlazed / refOpen);
+    EXPECT_LT(refGlazed / refOpen, 0.97) << "the pane must dim the room";
+    EXPECT_NEAR((litGlazed / litOpen) / (refGlazed / refOpen), 1.0, 0.03);
 }
 
 }  // namespace
