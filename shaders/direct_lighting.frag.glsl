@@ -11,6 +11,7 @@
 #include "gbuffer.glsl"
 #include "brdf.glsl"
 #include "lights.glsl"
+#include "direct_light.glsl"
 
 in vec2 vUv;
 
@@ -29,35 +30,8 @@ void main() {
     }
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
     vec3 n = shadingNormal(s.normal, v);
-    float alpha = alphaFromRoughness(s.roughness);
-    vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness);
-    float NdotV = max(dot(n, v), 0.0);
-    float coatScale = clearcoatBaseScale(s.clearcoat, NdotV);
-    float base = coatScale * sheenBaseScale(s, NdotV);
-    float coatAlpha = alphaFromRoughness(s.clearcoatRoughness);
-    bool sheen = max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b)) > 0.0;
-    float alphaSheen = sheenAlpha(s.sheenRoughness);
-
-    vec3 diffuse = vec3(0.0);
-    vec3 specular = vec3(0.0);
-    int count = frame.counts.x;
-    for (int i = 0; i < count; ++i) {
-        GpuLight light = lights[i];
-        LightSample ls = sampleLight(light, s.position);
-        float NdotL = dot(n, ls.l);
-        if (NdotL <= 0.0 || max(ls.radiance.r, max(ls.radiance.g, ls.radiance.b)) <= 0.0) continue;
-        vec3 visibility = shadowVisibility(light, s.position, n, frame.exposure.y, uShadowNormalOffset);
-        if (max(visibility.r, max(visibility.g, visibility.b)) <= 0.0) continue;
-        vec3 E = ls.radiance * visibility * NdotL;
-        diffuse += E * albedo * (base / PI);
-        if (sheen) {
-            vec3 h = normalize(v + ls.l);
-            diffuse += E * s.sheenColor *
-                       (D_Charlie(max(dot(n, h), 0.0), alphaSheen) * V_Neubelt(NdotL, max(NdotV, 1e-4)) * coatScale);
-        }
-        specular += E * specularBrdf(n, v, ls.l, s.f0, s.f90, alpha) * base;
-        if (s.clearcoat > 0.0) specular += E * s.clearcoat * specularBrdf(n, v, ls.l, kClearcoatF0, 1.0, coatAlpha);
-    }
+    vec3 diffuse, specular;
+    directLight(s, n, v, diffuseAlbedo(s.baseColor, s.metalness), uShadowNormalOffset, diffuse, specular);
     outDirectDiffuse = vec4(diffuse + s.emissive, 1.0);
     outDirectSpecular = vec4(specular, 1.0);
 }

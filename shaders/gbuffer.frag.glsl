@@ -3,12 +3,7 @@
 #include "frame.glsl"
 #include "material.glsl"
 
-in VertexData {
-    vec3 worldPosition;
-    vec3 worldNormal;
-    vec2 uv;
-    vec4 worldTangent;
-} fs;
+#include "geometry_varyings.glsl"
 
 layout(location = 0) out vec4 outAlbedo;    // rgb base colour (linear, stored sRGB), a occlusion
 layout(location = 1) out vec4 outNormal;    // rgb world normal

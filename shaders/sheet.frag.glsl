@@ -15,14 +15,10 @@
 #include "gbuffer.glsl"
 #include "brdf.glsl"
 #include "lights.glsl"
+#include "direct_light.glsl"
 #include "cone.glsl"
 
-in VertexData {
-    vec3 worldPosition;
-    vec3 worldNormal;
-    vec2 uv;
-    vec4 worldTangent;
-} fs;
+#include "geometry_varyings.glsl"
 
 layout(location = 0, index = 0) out vec4 outOwn;
 layout(location = 0, index = 1) out vec4 outTransmittance;
@@ -52,12 +48,7 @@ void main() {
     s.metalness = clamp(s.metalness, 0.0, 1.0);
     s.emissive = m.emissive.rgb;
     if (m.textures.w != 0) s.emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;
-    s.f0 = specularF0(s.baseColor, s.metalness, m.specular.rgb);
-    s.f90 = specularF90(s.metalness, m.specular.a);
-    s.clearcoat = m.clearcoat.x;
-    s.clearcoatRoughness = m.clearcoat.y;
-    s.sheenColor = m.sheen.rgb;
-    s.sheenRoughness = m.sheen.a;
+    setMaterialLayers(m, s);
     float transmission = m.alpha.y;
 
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
@@ -65,33 +56,11 @@ void main() {
     if (dot(n, v) < 0.0) n = -n;  // a sheet is seen from either side
     s.normal = n;
     float NdotV = max(dot(n, v), 0.0);
-    float alpha = alphaFromRoughness(s.roughness);
     vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness) * (1.0 - transmission);
+    vec3 directDiffuse, directSpecular;
+    directLight(s, n, v, albedo, uShadowNormalOffset, directDiffuse, directSpecular);
+    directDiffuse += s.emissive;
     float coatScale = clearcoatBaseScale(s.clearcoat, NdotV);
-    float base = coatScale * sheenBaseScale(s, NdotV);
-    float coatAlpha = alphaFromRoughness(s.clearcoatRoughness);
-    bool sheen = max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b)) > 0.0;
-    float alphaSheen = sheenAlpha(s.sheenRoughness);
-
-    vec3 directDiffuse = s.emissive;
-    vec3 directSpecular = vec3(0.0);
-    for (int i = 0; i < frame.counts.x; ++i) {
-        GpuLight light = lights[i];
-        LightSample ls = sampleLight(light, s.position);
-        float NdotL = dot(n, ls.l);
-        if (NdotL <= 0.0 || max(ls.radiance.r, max(ls.radiance.g, ls.radiance.b)) <= 0.0) continue;
-        vec3 visibility = shadowVisibility(light, s.position, n, frame.exposure.y, uShadowNormalOffset);
-        if (max(visibility.r, max(visibility.g, visibility.b)) <= 0.0) continue;
-        vec3 E = ls.radiance * visibility * NdotL;
-        directDiffuse += E * albedo * (base / PI);
-        if (sheen) {
-            vec3 h = normalize(v + ls.l);
-            directDiffuse += E * s.sheenColor *
-                             (D_Charlie(max(dot(n, h), 0.0), alphaSheen) * V_Neubelt(NdotL, max(NdotV, 1e-4)) * coatScale);
-        }
-        directSpecular += E * specularBrdf(n, v, ls.l, s.f0, s.f90, alpha) * base;
-        if (s.clearcoat > 0.0) directSpecular += E * s.clearcoat * specularBrdf(n, v, ls.l, kClearcoatF0, 1.0, coatAlpha);
-    }
 
     vec3 indirectDiffuse = vec3(0.0), indirectSpecular = vec3(0.0);
     if (uIndirect != 0) {

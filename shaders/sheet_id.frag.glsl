@@ -4,12 +4,7 @@
 // them for opaque surfaces (gbuffer.frag.glsl's outNodeId).
 #include "material.glsl"
 
-in VertexData {
-    vec3 worldPosition;
-    vec3 worldNormal;
-    vec2 uv;
-    vec4 worldTangent;
-} fs;
+#include "geometry_varyings.glsl"
 
 layout(location = 0) out uvec4 outNodeId;
 

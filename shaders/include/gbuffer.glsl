@@ -37,18 +37,21 @@ struct Surface {
 layout(binding = LIT_TEX_SHEEN_ALBEDO) uniform sampler2D sheenAlbedoTable;
 #endif
 
-// The specular parameters of the pixel's material (docs/MATERIALS.md), from the material table
-// entry the ID target names; `s` needs baseColor and metalness.
-void readMaterialLayers(ivec2 pixel, inout Surface s) {
-#if LIT_MATERIAL_LAYERS
-    uint index = texelFetch(gbufferId, pixel, 0).b;
-    GpuMaterial m = materials[index];
+// The specular parameters of material `m` (docs/MATERIALS.md); `s` needs baseColor and metalness.
+void setMaterialLayers(GpuMaterial m, inout Surface s) {
     s.f0 = specularF0(s.baseColor, s.metalness, m.specular.rgb);
     s.f90 = specularF90(s.metalness, m.specular.a);
     s.clearcoat = m.clearcoat.x;
     s.clearcoatRoughness = m.clearcoat.y;
     s.sheenColor = m.sheen.rgb;
     s.sheenRoughness = m.sheen.a;
+}
+
+// The specular parameters of the pixel's material, from the material table entry the ID target
+// names; `s` needs baseColor and metalness.
+void readMaterialLayers(ivec2 pixel, inout Surface s) {
+#if LIT_MATERIAL_LAYERS
+    setMaterialLayers(materials[texelFetch(gbufferId, pixel, 0).b], s);
 #else
     s.f0 = specularF0(s.baseColor, s.metalness, vec3(0.04));
     s.f90 = 1.0;

@@ -13,6 +13,7 @@
 #include "scene/SceneBuilder.h"
 
 #include <cstdio>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -25,6 +26,21 @@ using reference::ReferenceScene;
 using reference::ReferenceSettings;
 
 constexpr int kWidth = 160, kHeight = 90;  // the Blender camera's 16:9
+
+// The inner pixels of each region label ≥ 0 of a kWidth × kHeight image (bottom-up rows): those
+// whose four neighbours carry the same label, so that no pixel straddles a region's edge.
+std::vector<std::vector<std::size_t>> innerPixels(const std::vector<int>& region, int labels) {
+    std::vector<std::vector<std::size_t>> out(static_cast<std::size_t>(labels));
+    for (int y = 1; y + 1 < kHeight; ++y)
+        for (int x = 1; x + 1 < kWidth; ++x) {
+            const std::size_t p = static_cast<std::size_t>(y * kWidth + x);
+            bool inner = region[p] >= 0;
+            for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
+                inner = inner && region[static_cast<std::size_t>((y + dy) * kWidth + x + dx)] == region[p];
+            if (inner) out[static_cast<std::size_t>(region[p])].push_back(p);
+        }
+    return out;
+}
 
 class Sheets : public GlFixture {
 protected:
@@ -67,14 +83,8 @@ protected:
                     region[p] = 5;
             }
         }
-        for (int y = 1; y + 1 < kHeight; ++y)
-            for (int x = 1; x + 1 < kWidth; ++x) {
-                const std::size_t p = static_cast<std::size_t>(y * kWidth + x);
-                bool inner = region[p] >= 0;
-                for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
-                    inner = inner && region[static_cast<std::size_t>((y + dy) * kWidth + x + dx)] == region[p];
-                if (inner) pixels_[kRegions[static_cast<std::size_t>(region[p])]].push_back(p);
-            }
+        const std::vector<std::vector<std::size_t>> inner = innerPixels(region, static_cast<int>(std::size(kRegions)));
+        for (std::size_t r = 0; r < inner.size(); ++r) pixels_[kRegions[r]] = inner[r];
         for (const char* name : kRegions) ASSERT_GT(pixels_[name].size(), 40u) << name << ": the region must be in view";
     }
 
@@ -186,15 +196,9 @@ TEST_F(Sheets, PointLightShadowsThroughSheetsMatchTheReference) {
         else if (blocker.node == nodeNamed("tinted"))
             region[p] = 0;
     }
-    std::vector<std::size_t> tintedShadow, sunlit;  // inner pixels: the four neighbours in the same region
-    for (int y = 1; y + 1 < kHeight; ++y)
-        for (int x = 1; x + 1 < kWidth; ++x) {
-            const std::size_t p = static_cast<std::size_t>(y * kWidth + x);
-            bool inner = region[p] >= 0;
-            for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
-                inner = inner && region[static_cast<std::size_t>((y + dy) * kWidth + x + dx)] == region[p];
-            if (inner) (region[p] == 0 ? tintedShadow : sunlit).push_back(p);
-        }
+    const std::vector<std::vector<std::size_t>> inner = innerPixels(region, 2);
+    const std::vector<std::size_t>& tintedShadow = inner[0];
+    const std::vector<std::size_t>& sunlit = inner[1];
     ASSERT_GT(tintedShadow.size(), 40u);
     RenderSettings s = settings_;
     s.gi.enabled = false;

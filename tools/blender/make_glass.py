@@ -19,15 +19,13 @@
 # Writes OUT_DIR (default tests/data/blender/glass): glass.gltf + .bin, the scene as exported
 # (the sun: KHR_lights_punctual, the exporter's default "Standard" mode, 683 lm/W).
 
-import math
 import os
 import sys
 
 import bpy
-from mathutils import Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import box, enable_gltf_exporter, principled  # noqa: E402  (this folder, put on the path above)
+from scene_parts import black_world, box, enable_gltf_exporter, floor_plane, hard_sun, principled, scene_camera  # noqa: E402  (this folder, put on the path above)
 
 enable_gltf_exporter()
 
@@ -44,12 +42,7 @@ def glass(name, color, roughness):
 
 
 def build():
-    bpy.ops.mesh.primitive_plane_add(size=1.0, location=(0.0, 0.0, 0.0))
-    floor = bpy.context.object
-    floor.name = floor.data.name = "floor"
-    floor.scale = (10.0, 8.0, 1.0)  # x in [-5, 5], y in [-4, 4]
-    bpy.ops.object.transform_apply(location=False, rotation=False, scale=True)
-    floor.data.materials.append(principled("floor", (0.5, 0.5, 0.5), roughness=0.9))
+    floor_plane(10.0, 8.0, principled("floor", (0.5, 0.5, 0.5), roughness=0.9))  # x in [-5, 5], y in [-4, 4]
     box("back_wall", (-5.0, 2.0, 0.0), (5.0, 2.2, 3.0), principled("wall", (0.45, 0.45, 0.45), roughness=0.9))
     box("box", (-1.4, 0.4, 0.0), (-0.4, 1.4, 1.0), principled("box", (0.8, 0.35, 0.1), roughness=0.8))
     box("pane", (-1.9, -0.8, 0.0), (0.1, -0.79, 1.6), glass("pane", (1.0, 1.0, 1.0), 0.0))
@@ -60,40 +53,11 @@ def add_lights():
     # Sun: 3 W/m² (the exporter writes 3 lux × 683 = 2049), hard shadows, 35° above the horizon,
     # from the left and a little in front (travelling 70° from the camera's line of sight towards
     # +x): the tinted panel's shadow falls on the floor to its right.
-    bpy.ops.object.light_add(type="SUN", location=(-3.0, -4.0, 5.0))
-    sun = bpy.context.object
-    sun.name = sun.data.name = "sun"
-    sun.data.energy = 3.0
-    sun.data.angle = 0.0
-    elevation, azimuth = math.radians(35), math.radians(70)
-    direction = Vector((math.sin(azimuth) * math.cos(elevation), math.cos(azimuth) * math.cos(elevation),
-                        -math.sin(elevation)))
-    sun.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
+    hard_sun(3.0, 35.0, 70.0)
 
 
 def add_camera():
-    bpy.ops.object.camera_add(location=(0.6, -4.5, 1.5))
-    cam = bpy.context.object
-    cam.name = "camera"
-    cam.data.lens_unit = "FOV"
-    cam.data.sensor_fit = "HORIZONTAL"
-    cam.data.angle = math.radians(60)
-    direction = Vector((0.6, 0.5, 0.4)) - cam.location
-    cam.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
-    scene = bpy.context.scene
-    scene.camera = cam
-    scene.render.resolution_x = WIDTH
-    scene.render.resolution_y = HEIGHT
-    scene.render.resolution_percentage = 100
-
-
-def black_world():
-    world = bpy.data.worlds.new("black")
-    bpy.context.scene.world = world
-    world.use_nodes = True
-    background = world.node_tree.nodes["Background"]
-    background.inputs["Color"].default_value = (0.0, 0.0, 0.0, 1.0)
-    background.inputs["Strength"].default_value = 0.0
+    scene_camera((0.6, -4.5, 1.5), (0.6, 0.5, 0.4), 60.0, WIDTH, HEIGHT)
 
 
 def main():

@@ -41,15 +41,14 @@
 #                                 Add Shader sums the Velvet and the base, where glTF's sheen
 #                                 dims the base by the sheen's albedo: `sheen` looks brighter.
 
-import math
 import os
 import sys
 
 import bpy
-from mathutils import Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import box, cycles_on_cpu, enable_gltf_exporter, principled  # noqa: E402  (this folder, put on the path above)
+from scene_parts import (  # noqa: E402  (this folder, put on the path above)
+    black_world, box, cycles_on_cpu, enable_gltf_exporter, floor_plane, hard_sun, principled, scene_camera)
 
 enable_gltf_exporter()
 
@@ -123,12 +122,7 @@ def spheres():
 
 
 def build():
-    bpy.ops.mesh.primitive_plane_add(size=1.0, location=(0.0, 0.0, 0.0))
-    floor = bpy.context.object
-    floor.name = floor.data.name = "floor"
-    floor.scale = (12.0, 8.0, 1.0)  # x in [-6, 6], y in [-4, 4]
-    bpy.ops.object.transform_apply(location=False, rotation=False, scale=True)
-    floor.data.materials.append(principled("floor", (0.5, 0.5, 0.5), roughness=0.9))
+    floor_plane(12.0, 8.0, principled("floor", (0.5, 0.5, 0.5), roughness=0.9))  # x in [-6, 6], y in [-4, 4]
     box("back_wall", (-6.0, 1.5, 0.0), (6.0, 1.7, 4.0), principled("wall", (0.45, 0.45, 0.45), roughness=0.9))
     spheres()
 
@@ -136,15 +130,7 @@ def build():
 def add_lights():
     # Sun: 3 W/m² (the exporter writes 3 lux × 683 = 2049), hard shadows, 45° above the horizon,
     # from the front-left (30° to the left of the camera's line of sight, towards +x and +y).
-    bpy.ops.object.light_add(type="SUN", location=(-3.0, -4.0, 5.0))
-    sun = bpy.context.object
-    sun.name = sun.data.name = "sun"
-    sun.data.energy = 3.0
-    sun.data.angle = 0.0
-    elevation, azimuth = math.radians(45), math.radians(30)
-    direction = Vector((math.sin(azimuth) * math.cos(elevation), math.cos(azimuth) * math.cos(elevation),
-                        -math.sin(elevation)))
-    sun.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
+    hard_sun(3.0, 45.0, 30.0)
     # Point light: 60 W (60 / 4π W/sr, the exporter writes × 683 cd), front-right above the row.
     bpy.ops.object.light_add(type="POINT", location=(2.0, -2.0, 2.2))
     point = bpy.context.object
@@ -154,28 +140,7 @@ def add_lights():
 
 
 def add_camera():
-    bpy.ops.object.camera_add(location=(0.0, -6.0, 1.6))
-    cam = bpy.context.object
-    cam.name = "camera"
-    cam.data.lens_unit = "FOV"
-    cam.data.sensor_fit = "HORIZONTAL"
-    cam.data.angle = math.radians(55)  # horizontal; the row (5.5 m) fills most of the width
-    direction = Vector((0.0, 0.0, 0.45)) - cam.location
-    cam.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
-    scene = bpy.context.scene
-    scene.camera = cam
-    scene.render.resolution_x = WIDTH
-    scene.render.resolution_y = HEIGHT
-    scene.render.resolution_percentage = 100
-
-
-def black_world():
-    world = bpy.data.worlds.new("black")
-    bpy.context.scene.world = world
-    world.use_nodes = True
-    background = world.node_tree.nodes["Background"]
-    background.inputs["Color"].default_value = (0.0, 0.0, 0.0, 1.0)
-    background.inputs["Strength"].default_value = 0.0
+    scene_camera((0.0, -6.0, 1.6), (0.0, 0.0, 0.45), 55.0, WIDTH, HEIGHT)  # the row (5.5 m) fills most of the width
 
 
 def render(path, samples):

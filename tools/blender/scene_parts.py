@@ -1,5 +1,5 @@
 # What the scene makers in this folder build scenes from, as a user builds them in Blender: a
-# Principled BSDF material, a box made from the default cube, a Mapping node placing an image and
+# Principled BSDF material, a box made from the default cube, a black world, a Mapping node placing an image and
 # the same Mapping baked into a mesh's UVs; and the fixed Cycles settings the comparison renders use. Imported by the make_*.py scripts here (which put this
 # folder on sys.path; Blender runs them as scripts).
 import math
@@ -78,6 +78,61 @@ def bake_mapping(obj, mapping):
     nodes = obj.active_material.node_tree.nodes
     nodes.remove(nodes["Mapping"])
     nodes.remove(nodes["Texture Coordinate"])
+
+
+def floor_plane(size_x, size_y, mat):
+    """A floor plane "floor" at z = 0 centred on the origin, size_x × size_y metres, scale applied."""
+    bpy.ops.mesh.primitive_plane_add(size=1.0, location=(0.0, 0.0, 0.0))
+    floor = bpy.context.object
+    floor.name = floor.data.name = "floor"
+    floor.scale = (size_x, size_y, 1.0)
+    bpy.ops.object.transform_apply(location=False, rotation=False, scale=True)
+    floor.data.materials.append(mat)
+    return floor
+
+
+def hard_sun(energy, elevation, azimuth):
+    """A sun lamp "sun" of `energy` W/m² with hard shadows (angle 0), `elevation` degrees above the
+    horizon, travelling `azimuth` degrees from +y towards +x."""
+    bpy.ops.object.light_add(type="SUN", location=(-3.0, -4.0, 5.0))
+    sun = bpy.context.object
+    sun.name = sun.data.name = "sun"
+    sun.data.energy = energy
+    sun.data.angle = 0.0
+    elevation, azimuth = math.radians(elevation), math.radians(azimuth)
+    direction = Vector((math.sin(azimuth) * math.cos(elevation), math.cos(azimuth) * math.cos(elevation),
+                        -math.sin(elevation)))
+    sun.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
+    return sun
+
+
+def scene_camera(location, target, horizontal_fov, width, height):
+    """The scene's camera "camera" at `location` looking at `target`, `horizontal_fov` degrees wide,
+    rendering width × height pixels."""
+    bpy.ops.object.camera_add(location=location)
+    cam = bpy.context.object
+    cam.name = "camera"
+    cam.data.lens_unit = "FOV"
+    cam.data.sensor_fit = "HORIZONTAL"
+    cam.data.angle = math.radians(horizontal_fov)
+    direction = Vector(target) - cam.location
+    cam.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
+    scene = bpy.context.scene
+    scene.camera = cam
+    scene.render.resolution_x = width
+    scene.render.resolution_y = height
+    scene.render.resolution_percentage = 100
+    return cam
+
+
+def black_world():
+    """A black world: the scene is lit by its lamps alone."""
+    world = bpy.data.worlds.new("black")
+    bpy.context.scene.world = world
+    world.use_nodes = True
+    background = world.node_tree.nodes["Background"]
+    background.inputs["Color"].default_value = (0.0, 0.0, 0.0, 1.0)
+    background.inputs["Strength"].default_value = 0.0
 
 
 def cycles_on_cpu(samples):
