@@ -135,7 +135,7 @@ void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const Lig
 
 void ShadowPass::drawSheets(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
                             DrawCounters& counters, const ItemCuller& cull) {
-    // Over each 2D layer's opaque depth (tested, not written): the transmittances multiply, the
+    // Over each layer's (cube face's) opaque depth (tested, not written): the transmittances multiply, the
     // nearest depth stays (alpha by GL_MIN).
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -164,9 +164,8 @@ void ShadowPass::drawSheets(const Scene& scene, const GpuScene& gpuScene, const 
         uniforms_.update(u);
         visibleItems_.clear();
         if (cull) {
-            std::vector<std::uint32_t> culled;
-            cull(viewProjection, culled);
-            for (const std::uint32_t index : culled)
+            cull(viewProjection, culledItems_);
+            for (const std::uint32_t index : culledItems_)
                 if (index < gpuScene.items().size() && gpuScene.isSheet(gpuScene.items()[index])) visibleItems_.push_back(index);
         } else {
             for (std::uint32_t i = 0; i < gpuScene.items().size(); ++i)

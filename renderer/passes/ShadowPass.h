@@ -49,6 +49,7 @@ private:
     gl::Sampler comparisonSampler_;
     int size_ = 0, layers2d_ = 0, cubes_ = 0;
     std::vector<std::uint32_t> visibleItems_;  // the current view's culling result (kept to reuse its memory)
+    std::vector<std::uint32_t> culledItems_;   // the same before drawSheets keeps only the sheets
 };
 
 }  // namespace lit
