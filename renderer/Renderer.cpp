@@ -482,8 +482,8 @@ void Renderer::Impl::traceIndirect(const Scene& scene, const RenderSettings& set
 void Renderer::Impl::drawSheets(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame) {
     if (!gpuScene->hasSheets() || !SheetPass::drawsView(settings)) return;
     Profiler::Scope scope(profiler, "sheets");
-    shadow.bindMaps();
-    gpuScene->materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
+    // The shadow maps and the material table are bound since lightTerms (the views SheetPass draws
+    // always light the terms); the sheen table only with material layers there.
     bindSheenAlbedo();
     const bool indirect = settings.gi.enabled && gi.valid() && gi.volume().radiance();
     if (indirect) {

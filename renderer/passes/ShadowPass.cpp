@@ -162,15 +162,8 @@ void ShadowPass::drawSheets(const Scene& scene, const GpuScene& gpuScene, const 
                            directional ? 0.0f : view.farPlane);
         gpu::ShadowPassUniforms u{viewProjection, glm::vec4(view.position, view.farPlane)};
         uniforms_.update(u);
-        visibleItems_.clear();
-        if (cull) {
-            cull(viewProjection, culledItems_);
-            for (const std::uint32_t index : culledItems_)
-                if (index < gpuScene.items().size() && gpuScene.isSheet(gpuScene.items()[index])) visibleItems_.push_back(index);
-        } else {
-            for (std::uint32_t i = 0; i < gpuScene.items().size(); ++i)
-                if (gpuScene.isSheet(gpuScene.items()[i])) visibleItems_.push_back(i);
-        }
+        if (cull) cull(viewProjection, culledItems_);
+        gpuScene.sheetItems(cull ? &culledItems_ : nullptr, visibleItems_);
         gpuScene.drawList(scene, sheetProgram_, GpuScene::Bind::Everything, counters, visibleItems_);
     };
     for (const ShadowView& view : lights.shadows2d)

@@ -36,26 +36,19 @@ void SheetPass::execute(const Scene& scene, const GpuScene& gpuScene, const Targ
                         const RenderSettings& settings, const Frame& frame, DrawCounters& counters) {
     if (!drawsView(settings) || !gpuScene.hasSheets()) return;
     const std::vector<DrawItem>& items = gpuScene.items();
-    order_.clear();
-    const auto consider = [&](std::uint32_t index) {
-        if (index < items.size() && gpuScene.isSheet(items[index])) order_.push_back(index);
-    };
-    if (frame.visibleItems) {
-        for (const std::uint32_t index : *frame.visibleItems) consider(index);
-    } else {
-        for (std::uint32_t i = 0; i < items.size(); ++i) consider(i);
-    }
+    gpuScene.sheetItems(frame.visibleItems, order_);
     if (order_.empty()) return;
     // Farthest first by the distance to each item's box centre: the blend composes sheet over sheet.
-    const auto distance = [&](std::uint32_t index) {
+    byDistance_.clear();
+    for (const std::uint32_t index : order_) {
         const DrawItem& item = items[index];
         const glm::mat4& world = scene.nodes[static_cast<std::size_t>(item.node)].world;
-        const glm::vec3 centre(world * glm::vec4(item.localBounds.center(), 1.0f));
-        const glm::vec3 d = centre - frame.cameraPosition;
-        return glm::dot(d, d);
-    };
-    std::stable_sort(order_.begin(), order_.end(),
-                     [&](std::uint32_t a, std::uint32_t b) { return distance(a) > distance(b); });
+        const glm::vec3 d = glm::vec3(world * glm::vec4(item.localBounds.center(), 1.0f)) - frame.cameraPosition;
+        byDistance_.emplace_back(glm::dot(d, d), index);
+    }
+    std::stable_sort(byDistance_.begin(), byDistance_.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = byDistance_[i].second;
 
     if (targets.hdr.id() != hdrId_ || targets.depth.id() != depthId_ || targets.nodeId.id() != nodeIdId_ ||
         !framebuffer_.id()) {

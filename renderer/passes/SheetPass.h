@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace lit {
@@ -56,6 +57,7 @@ private:
     gl::Framebuffer framebuffer_, idFramebuffer_;
     GLuint hdrId_ = 0, depthId_ = 0, nodeIdId_ = 0;  // the targets the framebuffers were made for
     std::vector<std::uint32_t> order_;  // the sheets of this frame, farthest first
+    std::vector<std::pair<float, std::uint32_t>> byDistance_;  // squared distance, item (the sort's keys)
 };
 
 }  // namespace lit

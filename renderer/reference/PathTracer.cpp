@@ -194,7 +194,7 @@ public:
             for (int t = 0; t < kTermCount; ++t) out.terms[t] += behind * own.terms[t];
             behind *= ReferenceScene::sheetTransmittance(hit, ray.direction);
             if (maxComponent(behind) <= 0.0f) return;
-            ray.tnear = hit.t + std::max(1e-4f, hit.t * 1e-5f);
+            ray.tnear = ReferenceScene::pastHit(hit.t);
             if (ray.tnear >= ray.tfar) return;
         }
     }
@@ -257,7 +257,7 @@ private:
                 if (sheets + 1 < kMaxSheets && random.uniform() < passShare) {
                     throughputD *= through / passShare;
                     throughputS *= through / passShare;
-                    ray.tnear = next.t + std::max(1e-4f, next.t * 1e-5f);
+                    ray.tnear = ReferenceScene::pastHit(next.t);
                     continue;
                 }
                 throughputD /= 1.0f - passShare;

@@ -4,6 +4,7 @@
 #include "RenderSettings.h"
 #include "passes/LightSetup.h"
 #include "reference/MicrofacetBrdf.h"
+#include "scene/Sheets.h"
 
 #include <embree3/rtcore.h>
 
@@ -159,7 +160,7 @@ ReferenceScene::ReferenceScene(const Scene& scene, Log& log) : impl_(std::make_u
                                 ? s.materials[static_cast<std::size_t>(g.material)]
                                 : s.fallback;
         g.alphaMasked = m.alphaMode == AlphaMode::Mask;
-        hasSheets_ = hasSheets_ || (m.transmission > 0.0f && m.metallic < 1.0f);
+        hasSheets_ = hasSheets_ || drawnAsSheet(m);
 
         RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -410,8 +411,7 @@ glm::vec3 ReferenceScene::transmittance(const Ray& ray) const {
         if (!intersect(rest, hit)) return through;
         through *= sheetTransmittance(hit, rest.direction);
         if (std::max(through.r, std::max(through.g, through.b)) <= 0.0f) return glm::vec3(0.0f);
-        // On from just past the sheet (relative to the distance, so far hits keep float precision).
-        rest.tnear = hit.t + std::max(1e-4f, hit.t * 1e-5f);
+        rest.tnear = pastHit(hit.t);
         if (rest.tnear >= rest.tfar) return through;
     }
     return glm::vec3(0.0f);

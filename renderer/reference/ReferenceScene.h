@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -92,10 +93,13 @@ public:
     // What reaches tfar along the ray: 0 when an opaque surface blocks it, else the product of the
     // transmittanceOfSheet of every transmissive surface it crosses (1 through empty space).
     glm::vec3 transmittance(const Ray& ray) const;
-    // Whether a surface of the scene is transmissive (KHR_materials_transmission).
+    // Whether a surface of the scene is a transmissive sheet (scene/Sheets.h drawnAsSheet).
     bool hasSheets() const { return hasSheets_; }
     // The light a ray crossing `hit` passes through it (0 for an opaque surface).
     static glm::vec3 sheetTransmittance(const SurfaceHit& hit, const glm::vec3& direction);
+    // Where a ray that met a surface at distance t goes on past it (relative to the distance, so far
+    // hits keep float precision).
+    static float pastHit(float t) { return t + std::max(1e-4f, t * 1e-5f); }
 
     const std::vector<gpu::GpuLight>& punctualLights() const { return lights_; }
     const std::vector<Emitter>& emitters() const { return emitters_; }

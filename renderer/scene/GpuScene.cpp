@@ -1,5 +1,7 @@
 #include "scene/GpuScene.h"
 
+#include "scene/Sheets.h"
+
 #include "Log.h"
 #include "gl/Shader.h"
 #include "scene/Scene.h"
@@ -263,6 +265,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
     fallback.metallic = 0.0f;
     table.push_back(toGpu(fallback));
     sheetMaterials_.push_back(false);
+    hasSheets_ = std::find(sheetMaterials_.begin(), sheetMaterials_.end(), true) != sheetMaterials_.end();
     materialTextures_.push_back({});
     materialUvTransforms_.push_back(uvTransformsOf(fallback));
     materials_ = gl::Buffer::fromSpan<gpu::GpuMaterial>("materials", table);
@@ -312,14 +315,23 @@ int GpuScene::materialRow(const DrawItem& item) const {
                : static_cast<int>(materialTextures_.size()) - 1;
 }
 
-bool drawnAsSheet(const Material& m) { return m.transmission > 0.0f && m.metallic < 1.0f; }
-
 bool GpuScene::isSheet(const DrawItem& item) const {
     const auto row = static_cast<std::size_t>(materialRow(item));
     return row < sheetMaterials_.size() && sheetMaterials_[row];
 }
 
-bool GpuScene::hasSheets() const { return std::find(sheetMaterials_.begin(), sheetMaterials_.end(), true) != sheetMaterials_.end(); }
+void GpuScene::sheetItems(const std::vector<std::uint32_t>* candidates, std::vector<std::uint32_t>& out) const {
+    out.clear();
+    if (!hasSheets_) return;
+    const auto consider = [&](std::uint32_t index) {
+        if (index < items_.size() && isSheet(items_[index])) out.push_back(index);
+    };
+    if (candidates) {
+        for (const std::uint32_t index : *candidates) consider(index);
+    } else {
+        for (std::uint32_t i = 0; i < items_.size(); ++i) consider(i);
+    }
+}
 
 unsigned GpuScene::materialTextureMask(const DrawItem& item) const {
     if (materialTextures_.empty()) return 0;

@@ -21,7 +21,6 @@
 namespace lit {
 
 struct Scene;
-struct Material;
 class Log;
 namespace gl {
 class Program;
@@ -43,11 +42,6 @@ struct DrawItem {
 // the items that may be visible under `viewProjection` (world → clip), ascending. Passes that
 // render several views (shadow maps) call it once per view; an empty function means "draw all".
 using ItemCuller = std::function<void(const glm::mat4& viewProjection, std::vector<std::uint32_t>& visibleItems)>;
-
-// KHR_materials_transmission drawn as a thin sheet (docs/MATERIALS.md, "Transmission"): a
-// dielectric share that lets light through (transmission > 0, metallic < 1). As
-// material_table.glsl materialIsSheet and the reference's ReferenceScene::hasSheets.
-bool drawnAsSheet(const Material& m);
 
 struct DrawCounters {
     int drawCalls = 0;
@@ -87,10 +81,13 @@ public:
                   std::span<const std::uint32_t> itemIndices) const;
 
     const std::vector<DrawItem>& items() const { return items_; }
-    // Whether the item's material is a transmissive sheet (drawnAsSheet): SheetPass draws it over
-    // the lit image; the G-buffer, the shadow maps and the voxels leave it out (material_table.glsl).
+    // Whether the item's material is a transmissive sheet (scene/Sheets.h drawnAsSheet): SheetPass
+    // draws it over the lit image; the G-buffer, the shadow maps and the voxels leave it out
+    // (material_table.glsl).
     bool isSheet(const DrawItem& item) const;
-    bool hasSheets() const;
+    bool hasSheets() const { return hasSheets_; }
+    // The sheets among `candidates` (item indices; nullptr: every item), in their order, into `out`.
+    void sheetItems(const std::vector<std::uint32_t>* candidates, std::vector<std::uint32_t>& out) const;
     bool empty() const { return items_.empty(); }
     const gl::Buffer& materials() const { return materials_; }
     // Whether a material has KHR_materials_ior / _specular / _sheen / _clearcoat values other than the
@@ -140,6 +137,7 @@ private:
     gl::Texture whiteTexture_;             // bound where a material has no texture
     std::vector<DrawItem> items_;
     std::vector<bool> sheetMaterials_;     // per material, + default at the end: drawnAsSheet
+    bool hasSheets_ = false;               // some material is a sheet
     // Per material slot, in the order base colour, metallic-roughness, normal, emissive, occlusion.
     struct MaterialTextures {
         TextureBinding baseColor, metallicRoughness, normal, emissive, occlusion;

@@ -22,10 +22,9 @@
 import os
 import sys
 
-import bpy
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import black_world, box, enable_gltf_exporter, floor_plane, hard_sun, principled, scene_camera  # noqa: E402  (this folder, put on the path above)
+from scene_parts import (  # noqa: E402  (this folder, put on the path above)
+    black_world, box, build_and_export, enable_gltf_exporter, floor_plane, hard_sun, principled, scene_camera)
 
 enable_gltf_exporter()
 
@@ -63,14 +62,7 @@ def add_camera():
 def main():
     args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     folder = os.path.abspath(args[0] if args else "tests/data/blender/glass")
-    os.makedirs(folder, exist_ok=True)
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    build()
-    add_lights()
-    add_camera()
-    black_world()
-    bpy.ops.export_scene.gltf(filepath=os.path.join(folder, "glass.gltf"), export_format="GLTF_SEPARATE",
-                              export_cameras=True, export_lights=True, export_apply=True)
+    build_and_export(folder, "glass", build, add_lights, add_camera, black_world)
 
 
 main()

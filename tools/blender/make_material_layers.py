@@ -48,7 +48,8 @@ import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from scene_parts import (  # noqa: E402  (this folder, put on the path above)
-    black_world, box, cycles_on_cpu, enable_gltf_exporter, floor_plane, hard_sun, principled, scene_camera)
+    black_world, box, build_and_export, cycles_on_cpu, enable_gltf_exporter, floor_plane, hard_sun, principled,
+    scene_camera)
 
 enable_gltf_exporter()
 
@@ -155,14 +156,7 @@ def render(path, samples):
 
 def main():
     folder, samples = arguments()
-    os.makedirs(folder, exist_ok=True)
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    build()
-    add_lights()
-    add_camera()
-    black_world()
-    bpy.ops.export_scene.gltf(filepath=os.path.join(folder, "material_layers.gltf"), export_format="GLTF_SEPARATE",
-                              export_cameras=True, export_lights=True, export_apply=True)
+    build_and_export(folder, "material_layers", build, add_lights, add_camera, black_world)
     if samples > 0:
         render(os.path.join(folder, "material_layers_cycles.png"), samples)
 

@@ -125,6 +125,17 @@ def scene_camera(location, target, horizontal_fov, width, height):
     return cam
 
 
+def build_and_export(folder, name, *steps):
+    """Runs `steps` (functions building the scene) on an empty factory scene, then exports it with
+    Blender's glTF exporter as folder/name.gltf + .bin, cameras and lights included."""
+    os.makedirs(folder, exist_ok=True)
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    for step in steps:
+        step()
+    bpy.ops.export_scene.gltf(filepath=os.path.join(folder, name + ".gltf"), export_format="GLTF_SEPARATE",
+                              export_cameras=True, export_lights=True, export_apply=True)
+
+
 def black_world():
     """A black world: the scene is lit by its lamps alone."""
     world = bpy.data.worlds.new("black")

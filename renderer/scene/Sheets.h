@@ -1,0 +1,13 @@
+#pragma once
+// KHR_materials_transmission drawn as a thin sheet (docs/MATERIALS.md, "Transmission"): which
+// materials are sheets, for the rasterizer (GpuScene) and the reference (ReferenceScene) alike.
+// As material_table.glsl materialIsSheet.
+
+#include "scene/Scene.h"
+
+namespace lit {
+
+// A material whose dielectric share lets light through: transmission > 0, metallic < 1.
+inline bool drawnAsSheet(const Material& m) { return m.transmission > 0.0f && m.metallic < 1.0f; }
+
+}  // namespace lit
