@@ -3,6 +3,8 @@
 //   thin_walls.gltf    a Cornell room whose walls are one voxel thick at 128³, with a strong sun
 //                      shining on its roof from outside (any sunlight inside is a leak)
 //   sealed_room.gltf   a closed room on a sunlit ground; nothing inside is lit but by leaks
+//   city.gltf          640 m of box buildings between 14 m streets under a low sun, seen from
+//                      street level: a scene far larger than one voxel volume resolves
 //   cornell_room.gltf  the Cornell box built with this file's room (the control for the two below)
 //   cornell_mirrored.gltf  the Cornell box mirrored in x (red wall and tall block at +x): an error that
 //                      moves with the scene is the scene's, one that stays on a side is the tracer's
@@ -17,10 +19,13 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace {
@@ -184,6 +189,52 @@ Scene sealedRoom() {
     return scene;
 }
 
+// A city of 10 × 10 blocks, 50 m square with 14 m streets between them (640 m across), one box
+// building per block, 8–44 m tall, on a ground of asphalt. The sun stands 30° high, 60° off the
+// streets' axis, so one side of each street is sunlit and the other lit only by bounced light.
+// The camera stands on the central street at eye height, looking down it. Heights come from a
+// fixed integer sequence, so the file is the same on every machine.
+Scene city() {
+    Scene scene;
+    scene.name = "city";
+    const int ground = addMaterial(scene, glm::vec3(0.25f), 0.95f, 0.0f, "ground");
+    const int facades[3] = {addMaterial(scene, glm::vec3(0.70f, 0.67f, 0.60f), 0.9f, 0.0f, "stone"),
+                            addMaterial(scene, glm::vec3(0.55f, 0.30f, 0.22f), 0.9f, 0.0f, "brick"),
+                            addMaterial(scene, glm::vec3(0.45f, 0.47f, 0.50f), 0.9f, 0.0f, "concrete")};
+    constexpr int kBlocks = 10;
+    constexpr float kBlock = 50.0f, kStreet = 14.0f, kPitch = kBlock + kStreet;
+    name(scene, addMeshNode(scene, makePlaneMesh("ground", kBlocks * kPitch + 60.0f, ground, 16), {0, 0, 0}), "ground");
+    std::uint32_t state = 12345u;
+    const auto next = [&state] {
+        state = state * 1664525u + 1013904223u;  // Numerical Recipes' LCG: the same on every platform
+        return static_cast<float>(state >> 8) / static_cast<float>(1u << 24);
+    };
+    for (int i = 0; i < kBlocks; ++i)
+        for (int j = 0; j < kBlocks; ++j) {
+            const float height = 8.0f + 36.0f * next();
+            const int material = facades[static_cast<int>(3.0f * next()) % 3];
+            const std::string n = "building_" + std::to_string(i) + "_" + std::to_string(j);
+            const glm::vec3 at{(static_cast<float>(i) - 4.5f) * kPitch, 0.5f * height, (static_cast<float>(j) - 4.5f) * kPitch};
+            name(scene, addMeshNode(scene, makeBoxMesh(n, {kBlock, height, kBlock}, material), at), n.c_str());
+        }
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Directional;
+    sun.intensity = 50.0f;  // W/m² (34 150 lx)
+    const float elevation = 30.0f * kPi / 180.0f, azimuth = 60.0f * kPi / 180.0f;
+    const glm::vec3 toSun{std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth)};
+    name(scene, addLightNode(scene, sun, {0, 100, 0}, -toSun), "sun");
+    Camera camera;
+    camera.name = "street";
+    camera.yfov = 1.0f;
+    camera.aspectRatio = 1.0f;
+    camera.znear = 0.1f;
+    camera.zfar = 1000.0f;
+    // The street between block columns 4 and 5 runs along z at x = 0.
+    name(scene, addCameraNode(scene, camera, {0, 1.7f, 290.0f}, {0, 6.0f, 0}), "street");
+    return scene;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -197,7 +248,7 @@ int main(int argc, char** argv) {
     try {
         const fs::path out = argv[1];
         fs::create_directories(out);
-        for (Scene scene : {glossyFloor(), thinWalls(), sealedRoom(), cornellVariant("cornell_room", {}),
+        for (Scene scene : {glossyFloor(), thinWalls(), sealedRoom(), city(), cornellVariant("cornell_room", {}),
                             cornellVariant("cornell_mirrored", {.mirrorX = true}),
                             cornellVariant("cornell_swapped", {.swapColours = true})}) {
             scene.updateWorldTransforms();

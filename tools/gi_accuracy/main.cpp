@@ -198,6 +198,7 @@ std::vector<SuiteScene> suite(const Args& args) {
         {"sealed_room", assets / "gi" / "sealed_room.gltf", "closed room (0.2 m walls) on a ground under a 50 W/m² sun", true},
         {"thin_walls", assets / "gi" / "thin_walls.gltf", "Cornell room with walls 1 voxel thick at 128³, 20 W/m² sun on the roof"},
         {"glossy_floor", assets / "gi" / "glossy_floor.gltf", "Cornell room with a glossy metal floor (roughness 0.2)"},
+        {"city", assets / "gi" / "city.gltf", "640 m of box buildings and 14 m streets, 50 W/m² sun 30° high, seen from street level"},
         {"sponza", args.shared / "sponza" / "Sponza.gltf", "Sponza (textured, ../shared/scenes), the default sun (4 W/m²)", false, true},
         {"cornell_room", assets / "gi" / "cornell_room.gltf", "the Cornell box rebuilt by make-gi-suite", false, false, true},
         {"cornell_mirrored", assets / "gi" / "cornell_mirrored.gltf", "the Cornell box mirrored in x", false, false, true},
