@@ -283,6 +283,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     r.lastVoxelSize = settings.gi.enabled ? r.gi.volume().voxelSize() : 0.0f;
     r.lastVolumeSide = settings.gi.enabled ? r.gi.volume().side() : 0.0f;
     r.stats.voxelBytes = settings.gi.enabled ? r.gi.bytes() : 0;
+    r.stats.shadowMapBytes = r.shadow.memoryBytes();
     r.profiler.endFrame();
     r.stats.drawCalls = r.counters.drawCalls;
 }

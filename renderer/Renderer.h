@@ -37,6 +37,7 @@ struct FrameStats {
     int voxelizedBoxes = 0;     // ... in this many changed boxes only (0: the whole volume)
     bool injected = false;      // radiance was re-injected this frame
     std::size_t voxelBytes = 0; // GPU memory of the voxel volumes
+    std::size_t shadowMapBytes = 0;  // GPU memory of the shadow maps and their sheet colour layers
     // Entries of the occupied-voxel list (inject runs over these): the voxels the last voxelization
     // of the whole volume occupied, plus those voxelizations of changed boxes added since.
     std::uint32_t occupiedVoxels = 0;

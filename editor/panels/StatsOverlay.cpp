@@ -187,6 +187,7 @@ glm::vec4 drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, co
                 stats.injected ? " [injected]" : "");
     // The report is formatted only while someone reads it, not every frame.
     if (voxels && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", voxels->memoryReport().c_str());
+    ImGui::Text("Shadow maps %.1f MiB", static_cast<double>(stats.shadowMapBytes) / kMiB);
     // The cached mode's update after an edit runs over frames: how far it is, so that nobody
     // judges the light before it is right.
     if (stats.giUpdateDone < 1.0f) {

@@ -576,14 +576,35 @@ void checkMemoryBudget(const fs::path& file, const tinygltf::Model& model, const
         }
     }
 
-    const SceneMemory memory = estimateSceneMemory(extents, geometryVertices, geometryIndices, limits.render);
+    // The shadow maps: every node that holds a light (an upper bound: unreachable nodes and lights
+    // that cast no shadow count too), and the sheets as drawnAsSheet tells them.
+    ShadowCasters casters;
+    bool anyLight = false;
+    for (const tinygltf::Node& node : model.nodes) {
+        const auto punctual = node.extensions.find("KHR_lights_punctual");
+        if (punctual == node.extensions.end() || !punctual->second.Has("light")) continue;
+        const tinygltf::Value& index = punctual->second.Get("light");
+        if (!index.IsInt() || index.GetNumberAsInt() < 0 || static_cast<std::size_t>(index.GetNumberAsInt()) >= model.lights.size())
+            continue;  // the importer names the bad reference
+        anyLight = true;
+        (model.lights[static_cast<std::size_t>(index.GetNumberAsInt())].type == "point" ? casters.cubes : casters.maps2d) += 1;
+    }
+    if (!anyLight) casters.maps2d = 1;
+    for (const tinygltf::Material& material : model.materials) {
+        const auto transmission = material.extensions.find("KHR_materials_transmission");
+        if (transmission == material.extensions.end() || !transmission->second.Has("transmissionFactor")) continue;
+        const tinygltf::Value& factor = transmission->second.Get("transmissionFactor");
+        if (factor.IsNumber() && factor.GetNumberAsDouble() > 0.0 && material.pbrMetallicRoughness.metallicFactor < 1.0)
+            casters.sheets = true;
+    }
+    const SceneMemory memory = estimateSceneMemory(extents, geometryVertices, geometryIndices, casters, limits.render);
     const std::optional<std::string> over =
         overMemoryLimit(memory, {limits.memoryBudgetBytes, limits.memoryBudgetSource});
     if (!over) return;
     // Where the file's images or geometry are the largest part, name what is behind it: the
     // largest image, or the primitive count (the render settings' parts speak for themselves).
     const std::uint64_t imageBytes = memory.textures + memory.decodedImages;
-    const std::uint64_t renderBytes = std::max({memory.voxels, memory.rayHits, memory.targets});
+    const std::uint64_t renderBytes = std::max({memory.voxels, memory.rayHits, memory.targets, memory.shadowMaps});
     std::string cause;
     if (imageBytes >= memory.geometry && imageBytes >= renderBytes && !extents.empty())
         cause = "; " + std::to_string(extents.size()) + " distinct images, the largest image " +

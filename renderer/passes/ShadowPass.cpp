@@ -31,30 +31,34 @@ ShadowPass::ShadowPass(const std::filesystem::path& shaderRoot)
     sheetSampler_.set(GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     sheetSampler_.set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     sheetSampler_.set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    ensureMaps(16, 1, 1);
+    ensureMaps(kUnusedMapSize, 0, 0);
 }
 
 void ShadowPass::ensureSheetMaps(bool sheets) {
-    const int size = sheets ? size_ : 1, layers = sheets ? layers2d_ : 1, faces = 6 * (sheets ? cubes_ : 1);
-    if (sheetMaps2d_ && sheetMaps2d_.desc().width == size && sheetMaps2d_.desc().depth == layers &&
-        sheetMapsCube_.desc().depth == faces)
+    // Colour layers only for the maps there are; one white texel keeps an unused binding valid.
+    const int size2d = sheets && layers2d_ > 0 ? size_ : 1, layers = std::max(layers2d_, 1);
+    const int sizeCube = sheets && cubes_ > 0 ? size_ : 1, faces = 6 * std::max(cubes_, 1);
+    if (sheetMaps2d_ && sheetMaps2d_.desc().width == size2d && sheetMaps2d_.desc().depth == layers &&
+        sheetMapsCube_.desc().width == sizeCube && sheetMapsCube_.desc().depth == faces)
         return;
-    sheetMaps2d_ = gl::Texture("shadow sheets 2D", {GL_TEXTURE_2D_ARRAY, GL_RGBA16F, size, size, layers, 1});
-    sheetMapsCube_ = gl::Texture("shadow sheets cube", {GL_TEXTURE_CUBE_MAP_ARRAY, GL_RGBA16F, size, size, faces, 1});
+    sheetMaps2d_ = gl::Texture("shadow sheets 2D", {GL_TEXTURE_2D_ARRAY, GL_RGBA16F, size2d, size2d, layers, 1});
+    sheetMapsCube_ = gl::Texture("shadow sheets cube", {GL_TEXTURE_CUBE_MAP_ARRAY, GL_RGBA16F, sizeCube, sizeCube, faces, 1});
     const float clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};  // nothing in the way: all light passes
     glClearTexImage(sheetMaps2d_.id(), 0, GL_RGBA, GL_FLOAT, clear);
     glClearTexImage(sheetMapsCube_.id(), 0, GL_RGBA, GL_FLOAT, clear);
 }
 
 void ShadowPass::ensureMaps(int size, int layers2d, int cubes) {
-    layers2d = std::max(layers2d, 1);
-    cubes = std::max(cubes, 1);
     if (size == size_ && layers2d == layers2d_ && cubes == cubes_) return;
     size_ = size;
     layers2d_ = layers2d;
     cubes_ = cubes;
-    maps2d_ = gl::Texture("shadow maps 2D", {GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, size, size, layers2d, 1});
-    mapsCube_ = gl::Texture("shadow maps cube", {GL_TEXTURE_CUBE_MAP_ARRAY, GL_DEPTH_COMPONENT32F, size, size, 6 * cubes, 1});
+    // A kind of map no light uses gets one small layer (or cube), so that its binding stays valid
+    // without taking a full map's memory (six 8192² faces are 1.6 GB).
+    const int size2d = layers2d > 0 ? size : kUnusedMapSize, sizeCube = cubes > 0 ? size : kUnusedMapSize;
+    maps2d_ = gl::Texture("shadow maps 2D", {GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, size2d, size2d, std::max(layers2d, 1), 1});
+    mapsCube_ = gl::Texture("shadow maps cube",
+                            {GL_TEXTURE_CUBE_MAP_ARRAY, GL_DEPTH_COMPONENT32F, sizeCube, sizeCube, 6 * std::max(cubes, 1), 1});
     // Clear to the far plane so lights without a rendered map (none yet) see everything lit.
     const float one = 1.0f;
     glClearTexImage(maps2d_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
@@ -62,15 +66,12 @@ void ShadowPass::ensureMaps(int size, int layers2d, int cubes) {
 }
 
 std::size_t ShadowPass::memoryBytes() const {
-    const auto layerBytes = [](const gl::Texture& t) {
-        return t ? static_cast<std::size_t>(t.desc().width) * static_cast<std::size_t>(t.desc().height) * 8u *
-                       static_cast<std::size_t>(t.desc().depth)
+    const auto bytes = [](const gl::Texture& t, std::size_t perTexel) {
+        return t ? static_cast<std::size_t>(t.desc().width) * static_cast<std::size_t>(t.desc().height) *
+                       static_cast<std::size_t>(t.desc().depth) * perTexel
                  : 0u;
     };
-    const std::size_t sheets = layerBytes(sheetMaps2d_) + layerBytes(sheetMapsCube_);
-    return static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_) * 4u *
-               static_cast<std::size_t>(layers2d_ + 6 * cubes_) +
-           sheets;
+    return bytes(maps2d_, 4) + bytes(mapsCube_, 4) + bytes(sheetMaps2d_, 8) + bytes(sheetMapsCube_, 8);
 }
 
 void ShadowPass::bindMaps() const {

@@ -24,13 +24,18 @@ public:
     // Binds the shadow arrays to their texture units (LIT_TEX_SHADOW_2D / _CUBE / _SHEETS).
     void bindMaps() const;
     const gl::Texture& maps2d() const { return maps2d_; }
+    // Bytes of the depth and colour layers allocated now (SceneMemory's shadowMapBytes estimates
+    // it for the full-size ones; unused kinds add a small layer or cube).
     std::size_t memoryBytes() const;
+    // Side of the one layer or cube allocated for a kind of map no light uses.
+    static constexpr int kUnusedMapSize = 16;
 
     std::vector<gl::Program*> programs() override { return {&program_, &sheetProgram_}; }
 
 private:
     void ensureMaps(int size, int layers2d, int cubes);
-    // The sheet layers at the maps' size (sheets) or one white texel (none: the bindings stay valid).
+    // The sheet layers at the maps' size for the kinds of map in use (sheets), else one white texel
+    // (the bindings stay valid).
     void ensureSheetMaps(bool sheets);
     // Renders the transmissive sheets of each view (each cube face) into its sheet layer.
     void drawSheets(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights, DrawCounters& counters,

@@ -4,6 +4,9 @@
 #include "gi/RayHitCache.h"
 #include "gi/VoxelVolume.h"
 #include "scene/Scene.h"
+#include "scene/Sheets.h"
+
+#include <shared.h>
 
 #include <algorithm>
 #include <array>
@@ -35,18 +38,19 @@ std::uint64_t positive(int n) { return n > 0 ? static_cast<std::uint64_t>(n) : 0
 
 std::uint64_t SceneMemory::total() const {
     std::uint64_t sum = 0;
-    for (const std::uint64_t part : {decodedImages, textures, geometry, voxels, rayHits, targets})
+    for (const std::uint64_t part : {decodedImages, textures, geometry, voxels, rayHits, targets, shadowMaps})
         sum = saturatingAdd(sum, part);
     return sum;
 }
 
 std::string SceneMemory::describe() const {
-    std::array<std::pair<const char*, std::uint64_t>, 6> parts{{{"textures", textures},
+    std::array<std::pair<const char*, std::uint64_t>, 7> parts{{{"textures", textures},
                                                                 {"decoded images", decodedImages},
                                                                 {"geometry", geometry},
                                                                 {"voxel volumes", voxels},
                                                                 {"voxel ray hits", rayHits},
-                                                                {"render targets", targets}}};
+                                                                {"render targets", targets},
+                                                                {"shadow maps", shadowMaps}}};
     std::stable_sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
     std::string text;
     bool first = true;
@@ -68,7 +72,30 @@ RenderFootprint RenderFootprint::of(const RenderSettings& settings) {
         footprint.bounceVolumes = settings.gi.bounces != 1;
         footprint.voxelRays = std::min(settings.gi.voxelRays, kMaxVoxelRays);
     }
+    if (settings.shadows.enabled) footprint.shadowMapSize = std::clamp(settings.shadows.mapSize, 16, 8192);
     return footprint;
+}
+
+ShadowCasters shadowCastersOf(const Scene& scene) {
+    ShadowCasters casters;
+    bool anyLight = false;
+    for (const Node& node : scene.nodes) {
+        if (node.light < 0 || static_cast<std::size_t>(node.light) >= scene.lights.size()) continue;
+        anyLight = true;
+        const Light& light = scene.lights[static_cast<std::size_t>(node.light)];
+        if (!light.castsShadow) continue;
+        (light.type == LightType::Point ? casters.cubes : casters.maps2d) += 1;
+    }
+    if (!anyLight) casters.maps2d = 1;
+    casters.sheets = std::any_of(scene.materials.begin(), scene.materials.end(), drawnAsSheet);
+    return casters;
+}
+
+std::uint64_t shadowMapBytes(const ShadowCasters& casters, int mapSize) {
+    const std::uint64_t texels = saturatingMul(positive(mapSize), positive(mapSize));
+    const std::uint64_t layers = static_cast<std::uint64_t>(std::clamp(casters.maps2d, 0, LIT_MAX_SHADOW_2D)) +
+                                 6u * static_cast<std::uint64_t>(std::clamp(casters.cubes, 0, LIT_MAX_SHADOW_CUBE));
+    return saturatingMul(saturatingMul(texels, layers), casters.sheets ? 4 + 8 : 4);
 }
 
 std::uint64_t textureBytesWithMips(int width, int height) {
@@ -84,7 +111,7 @@ std::uint64_t textureBytesWithMips(int width, int height) {
 }
 
 SceneMemory estimateSceneMemory(std::span<const ImageExtent> images, std::uint64_t vertices, std::uint64_t indices,
-                                const RenderFootprint& render) {
+                                const ShadowCasters& casters, const RenderFootprint& render) {
     SceneMemory memory;
     for (const ImageExtent& image : images) {
         const std::uint64_t pixels = saturatingMul(positive(image.width), positive(image.height));
@@ -107,6 +134,7 @@ SceneMemory estimateSceneMemory(std::span<const ImageExtent> images, std::uint64
         }
     }
     memory.targets = saturatingMul(saturatingMul(positive(render.width), positive(render.height)), kTargetBytesPerPixel);
+    memory.shadowMaps = shadowMapBytes(casters, render.shadowMapSize);
     return memory;
 }
 
@@ -126,7 +154,7 @@ SceneMemory estimateSceneMemory(const Scene& scene, const RenderFootprint& rende
             vertices += primitive.vertices.size();
             indices += primitive.indices.size();
         }
-    return estimateSceneMemory(images, vertices, indices, render);
+    return estimateSceneMemory(images, vertices, indices, shadowCastersOf(scene), render);
 }
 
 MemoryLimit renderMemoryLimit() {

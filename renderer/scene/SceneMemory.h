@@ -3,8 +3,8 @@
 // of that estimate against a limit. The loader (io/GltfGuard.h, before decoding), lit-render
 // ($LIT_MAX_RENDER_MB) and the editor all use these functions, so a file the loader accepts is
 // one the renderer can upload: a glTF file's decoded images, the GL textures made from them (each
-// image once, with its mip chain), the geometry on the CPU and in GL buffers, and what the render
-// settings add (voxel volumes, voxel ray hits, render targets). docs/RELIABILITY.md gives the
+// image once, with its mip chain), the geometry on the CPU and in GL buffers, the lights' shadow
+// maps, and what the render settings add (voxel volumes, voxel ray hits, render targets). docs/RELIABILITY.md gives the
 // numbers.
 
 #include <cstdint>
@@ -25,6 +25,7 @@ struct SceneMemory {
     std::uint64_t voxels = 0;         // the voxel volumes (voxelVolumeBytes)
     std::uint64_t rayHits = 0;        // the voxel rays' hit records at their most (RayHitCache)
     std::uint64_t targets = 0;        // per-pixel render targets and read-back copies
+    std::uint64_t shadowMaps = 0;     // depth layers and cube faces, and their sheet colour layers (ShadowPass)
     std::uint64_t total() const;
     // "textures 21.0 GB, decoded images 0.3 GB, geometry 0.1 GB": each non-zero kind, largest
     // first, in the unit of the total.
@@ -38,6 +39,7 @@ struct RenderFootprint {
     bool radianceRgba8 = false;
     bool bounceVolumes = false;  // more than one bounce (the direct and bounce volumes)
     int voxelRays = 0;           // rays per voxel side whose hits are recorded
+    int shadowMapSize = 0;       // texels per side of each shadow map (clamped as ShadowPass); 0 = shadows off
     static RenderFootprint of(const RenderSettings& settings);
     bool operator==(const RenderFootprint&) const = default;
 };
@@ -48,13 +50,27 @@ struct ImageExtent {
     bool textured = true;
 };
 
+// The shadow maps a scene's lights need: a 2D layer per directional or spot light, a cube per
+// point light (each capped as LightSetup caps them), and whether transmissive sheets add a colour
+// layer to each. A scene without lights counts one 2D layer: the renderer's default sun.
+struct ShadowCasters {
+    int maps2d = 0;
+    int cubes = 0;
+    bool sheets = false;
+    bool operator==(const ShadowCasters&) const = default;
+};
+ShadowCasters shadowCastersOf(const Scene& scene);
+// Bytes ShadowPass allocates for `casters` at `mapSize` texels per side (0: none): 4 per depth
+// texel, 8 more per texel with sheets (RGBA16F colour layers).
+std::uint64_t shadowMapBytes(const ShadowCasters& casters, int mapSize);
+
 // Bytes of an RGBA8 texture of width × height with its full mip chain.
 std::uint64_t textureBytesWithMips(int width, int height);
 
 // The estimate from counts, as the loader knows them before decoding: every distinct image,
-// and the vertices and indices the scene builder will make.
+// the vertices and indices the scene builder will make, and the lights that cast shadows.
 SceneMemory estimateSceneMemory(std::span<const ImageExtent> images, std::uint64_t vertices, std::uint64_t indices,
-                                const RenderFootprint& render);
+                                const ShadowCasters& casters, const RenderFootprint& render);
 // The same for a scene already in memory (an edited scene, one built in code).
 SceneMemory estimateSceneMemory(const Scene& scene, const RenderFootprint& render);
 

@@ -3,6 +3,7 @@
 #include "GlTestSupport.h"
 
 #include "scene/SceneBuilder.h"
+#include "scene/SceneMemory.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -181,6 +182,39 @@ TEST_F(GlFixture, SpotFalloffMatchesTheSpec) {
         const float measured = luminance(radianceAt(scene, settings, image, {x, 0.0f, 0.0f}, 0));
         EXPECT_NEAR(measured, expected, 0.03f * expected + 2e-3f) << "angle " << angle;
     }
+}
+
+// The shadow maps the renderer allocates are what SceneMemory counts against the memory budget
+// (before loading, in the loader), apart from the small layer kept for a kind no light uses.
+TEST_F(GlFixture, ShadowMapMemoryIsWhatTheBudgetCounts) {
+    Scene scene;
+    const int white = addMaterial(scene, glm::vec3(0.8f), 0.9f, 0.0f, "white");
+    const int glass = addMaterial(scene, glm::vec3(0.9f), 0.1f, 0.0f, "glass");
+    addMeshNode(scene, makePlaneMesh("floor", 4.0f, white, 4), glm::vec3(0.0f));
+    addMeshNode(scene, makeBoxMesh("pane", glm::vec3(1.0f, 1.0f, 0.02f), glass), glm::vec3(0.0f, 1.0f, 0.0f));
+    Light sun;
+    sun.type = LightType::Directional;
+    addLightNode(scene, sun, glm::vec3(0.0f, 3.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+    Camera camera;
+    addCameraNode(scene, camera, glm::vec3(0.0f, 3.0f, 3.0f), glm::vec3(0.0f));
+    RenderSettings settings = smallSettings(64);
+    settings.shadows.mapSize = 256;
+    const std::uint64_t unusedKinds = 64 * 1024;  // 16² texels × 7 layers × 4 bytes, and white texels
+    const auto check = [&](const char* what) {
+        render(scene, settings);
+        const std::uint64_t counted = estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps;
+        const std::uint64_t allocated = renderer_->stats().shadowMapBytes;
+        EXPECT_GE(allocated, counted) << what;
+        EXPECT_LT(allocated - counted, unusedKinds) << what << ": " << allocated << " bytes allocated, " << counted << " counted";
+    };
+    check("a sun");
+    Light point;
+    point.type = LightType::Point;
+    addLightNode(scene, point, glm::vec3(1.0f, 2.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f));
+    check("a sun and a point light");
+    scene.materials[static_cast<std::size_t>(glass)].transmission = 1.0f;
+    check("a sun, a point light and a sheet");
+    EXPECT_EQ(estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps, 256u * 256 * 7 * (4 + 8));
 }
 
 }  // namespace

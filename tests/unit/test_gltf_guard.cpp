@@ -394,5 +394,33 @@ TEST(GltfGuard, BuffersAndImagesThatReadOneFileManyTimesStopAtTheBudget) {
     EXPECT_CONTAINS(loadError(writeScene(dir, "images.gltf", images), options), "5000 images read");
 }
 
+// The shadow maps count before anything is allocated: eight point lights at 8192² texels need six
+// faces each, 12.9 GB of depth, and a transmissive material adds twice that in colour layers.
+TEST(GltfGuard, ShadowMapsOverTheBudgetAreRefusedWithTheirFigure) {
+    TempDir dir;
+    json doc = triangleDoc();
+    doc["extensionsUsed"] = json::array({"KHR_lights_punctual"});
+    doc["extensions"]["KHR_lights_punctual"]["lights"] = json::array({{{"type", "point"}, {"intensity", 100}}});
+    for (int i = 0; i < 8; ++i) {
+        doc["nodes"].push_back({{"translation", {i, 2, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+        doc["scenes"][0]["nodes"].push_back(i + 1);
+    }
+    GltfLoadOptions options;
+    options.limits.render.shadowMapSize = 8192;
+    const std::string message = loadError(writeScene(dir, "lights.gltf", doc), options);
+    EXPECT_CONTAINS(message, "scene needs 12.9 GB of memory (shadow maps 12.9 GB");
+    EXPECT_CONTAINS(message, "over the limit of 8.0 GB");
+
+    options.limits.render.shadowMapSize = 1024;  // 201 MB: loads
+    QuietLog log;
+    EXPECT_EQ(loadGltf(writeScene(dir, "lights.gltf", doc), log, options).lights.size(), 1u);
+    doc["extensionsUsed"].push_back("KHR_materials_transmission");
+    doc["materials"] = json::array({{{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
+                                     {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}}});
+    doc["meshes"][0]["primitives"][0]["material"] = 0;
+    options.limits.memoryBudgetBytes = 500'000'000;
+    EXPECT_CONTAINS(loadError(writeScene(dir, "glass.gltf", doc), options), "(shadow maps 604.0 MB");
+}
+
 }  // namespace
 }  // namespace lit

@@ -12,6 +12,8 @@
 #include "gi/RayHitCache.h"
 #include "gi/VoxelVolume.h"
 #include "scene/Scene.h"
+#include "scene/SceneBuilder.h"
+#include <shared.h>
 #include "scene/SceneMemory.h"
 
 namespace lit {
@@ -104,6 +106,35 @@ TEST(SceneMemory, RenderSettingsAddVoxelsRayHitsAndTargets) {
     const SceneMemory noGi = estimateSceneMemory(Scene{}, RenderFootprint::of(settings));
     EXPECT_EQ(noGi.voxels, 0u);
     EXPECT_EQ(noGi.rayHits, 0u);
+}
+
+TEST(SceneMemory, ShadowMapsCountEachLightsLayersAndTheSheetsColour) {
+    Scene scene;
+    const int white = addMaterial(scene, glm::vec3(0.8f), 0.9f, 0.0f, "white");
+    addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), white), glm::vec3(0.0f));
+    EXPECT_EQ(shadowCastersOf(scene), (ShadowCasters{.maps2d = 1})) << "no light: the renderer's default sun";
+    Light sun, spot, point, quiet;
+    sun.type = LightType::Directional;
+    spot.type = LightType::Spot;
+    point.type = quiet.type = LightType::Point;
+    quiet.castsShadow = false;
+    for (const Light* light : {&sun, &spot, &point, &point, &quiet}) addLightNode(scene, *light, glm::vec3(0, 3, 0), glm::vec3(0, -1, 0));
+    EXPECT_EQ(shadowCastersOf(scene), (ShadowCasters{.maps2d = 2, .cubes = 2}));
+    scene.materials[static_cast<std::size_t>(white)].transmission = 0.5f;
+    EXPECT_TRUE(shadowCastersOf(scene).sheets);
+
+    RenderSettings settings;
+    settings.shadows.mapSize = 512;
+    // Two 2D layers and two cubes of six faces: 4 bytes of depth and 8 of colour per texel.
+    EXPECT_EQ(estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps, 512u * 512 * (2 + 12) * (4 + 8));
+    settings.shadows.enabled = false;
+    EXPECT_EQ(estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps, 0u);
+}
+
+TEST(SceneMemory, ShadowMapsStopAtTheLayersTheRendererHas) {
+    EXPECT_EQ(shadowMapBytes({.maps2d = 100, .cubes = 100}, 1024),
+              1024u * 1024 * (LIT_MAX_SHADOW_2D + 6 * LIT_MAX_SHADOW_CUBE) * 4);
+    EXPECT_EQ(shadowMapBytes({.maps2d = 3}, 0), 0u) << "shadows off";
 }
 
 TEST(SceneMemory, OverTheLimitNamesTheFiguresLargestFirstAndTheLimit) {
