@@ -119,6 +119,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("gi", "maxTraceDistance", gi.maxTraceDistance);
     visit("gi", "coneStepScale", gi.coneStepScale);
     visit("gi", "coneFootprintPerHeight", gi.coneFootprintPerHeight);
+    visit("gi", "nearLevelSide", gi.nearLevelSide);
     IndirectSettings& in = s.indirect;
     visit("indirect", "scale", in.scale);
     visit("indirect", "specularSamples", in.specularSamples);

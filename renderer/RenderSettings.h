@@ -166,11 +166,20 @@ struct GiSettings {
     // height above the surface (keeps cones out of their own surface's voxels; 0 = unbounded).
     // The fast mode's cones are unbounded.
     float coneFootprintPerHeight = kAccurateGiFootprint;
+    // The cached mode's near level (docs/GI.md, "Near level"): a second volume of voxelResolution³
+    // voxels, a cube of this side in metres centred on the camera (moved in steps of an eighth of
+    // its side), whose voxels gather their own light with their rays continuing into the scene's
+    // volume where they leave it; pixels inside it gather from its finer voxels. It runs only in
+    // scenes at least twice as large across (smaller ones get no finer voxels from it). 0 = off
+    // (one volume around the whole scene).
+    float nearLevelSide = 64.0f;
 
     // What the mode implies (ConeFeatures::of reads these).
     bool anisotropicVoxels() const { return mode != GiMode::Fast; }  // directional voxels for mip levels ≥ 1
     float footprintPerHeight() const { return mode == GiMode::Fast ? 0.0f : std::fmax(coneFootprintPerHeight, 0.0f); }
     bool voxelIrradiance() const { return mode == GiMode::Cached; }  // L_ID gathered from the voxels
+    // The near level runs: the cached mode with voxel rays and a positive side.
+    bool nearLevel() const { return voxelIrradiance() && voxelRays > 0 && nearLevelSide > 0.0f; }
     bool operator==(const GiSettings&) const = default;
 };
 

@@ -105,6 +105,8 @@ struct Renderer::Impl {
         std::vector<Pass*> all{&shadow,  &gbuffer,  &direct,      &post,       &coneTrace,
                                &resolve, &fallback, &overlayPass, &voxelDebug, &autoExposure, &sheets};
         for (Pass* pass : gi.passes()) all.push_back(pass);
+        if (nearGi)
+            for (Pass* pass : nearGi->passes()) all.push_back(pass);
         return all;
     }
 
@@ -121,7 +123,15 @@ struct Renderer::Impl {
     };
     SceneFrame beginScene(const Scene& scene, const CameraView& camera, const RenderSettings& settings);
     void drawGBuffer(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
-    void updateGi(const Scene& scene, const RenderSettings& settings, const GiBudget& budget, bool shadowsDirty);
+    void updateGi(const Scene& scene, const CameraView& camera, const RenderSettings& settings, const GiBudget& budget,
+                  bool shadowsDirty);
+    // The near level's box around the camera (GiSettings::nearLevelSide, moved in eighths of it).
+    static Aabb nearLevelBox(const glm::vec3& eye, float side);
+    std::size_t giBytes(const RenderSettings& settings) const;  // the scene volume's and the near level's
+    // `requested`, or a copy without the near level when the scene is not at least twice its side
+    // across (the scene's volume is then about as fine: the near level would cost without adding).
+    const RenderSettings& withNearLevelFitted(const RenderSettings& requested);
+    RenderSettings nearLevelFitted;  // withNearLevelFitted's copy
     void lightTerms(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
     void bindSheenAlbedo();
     // `layers`: whether the scene's materials have specular layers (GpuScene::hasMaterialLayers).
@@ -157,6 +167,8 @@ struct Renderer::Impl {
     DirectLightingPass direct;
     PostPass post;
     VoxelGi gi;
+    // The cached mode's near level (GiSettings::nearLevel()), made on first use.
+    std::unique_ptr<VoxelGi> nearGi;
     ConeTracePass coneTrace;
     IndirectResolvePass resolve;
     IndirectFallbackPass fallback;
@@ -247,6 +259,7 @@ void Renderer::setScene(const Scene& scene) {
     impl_->boundsRevision = ~0ull;
     impl_->shadowKey = {};
     impl_->gi.invalidate();
+    if (impl_->nearGi) impl_->nearGi->invalidate();
     impl_->resolve.resetHistory();
     impl_->meteredLastFrame = false;  // a new scene is metered afresh, not adapted to
     impl_->lastFrame.reset();  // the G-buffer's node IDs belong to the previous scene
@@ -254,20 +267,21 @@ void Renderer::setScene(const Scene& scene) {
 
 // A frame (docs/ARCHITECTURE.md, "A frame"): the scene's changes, the lights and their shadow
 // maps, the G-buffer, the GI update, the lighting terms, the composite and the overlay.
-void Renderer::render(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+void Renderer::render(const Scene& scene, const CameraView& camera, const RenderSettings& requested,
                       const GiBudget& budget) {
     Impl& r = *impl_;
-    if (settings.output.width <= 0 || settings.output.height <= 0) return;  // minimized window: nothing to draw
+    if (requested.output.width <= 0 || requested.output.height <= 0) return;  // minimized window: nothing to draw
     if (!r.gpuScene) setScene(scene);
     r.profiler.beginFrame();
     r.gi.reportUpdate();
     r.stats = {};
     r.counters = {};
 
-    const auto [frame, shadowsDirty] = r.beginScene(scene, camera, settings);
+    const auto [frame, shadowsDirty] = r.beginScene(scene, camera, requested);
+    const RenderSettings& settings = r.withNearLevelFitted(requested);
     r.drawGBuffer(scene, settings, frame);
     // GI: the voxel volume follows the scene; nothing is allocated while GI is off.
-    if (settings.gi.enabled) r.updateGi(scene, settings, budget, shadowsDirty);
+    if (settings.gi.enabled) r.updateGi(scene, camera, settings, budget, shadowsDirty);
     r.gbuffer.bindTargets();
     // The data and voxel views show no lighting term (the composite does not use them there), so
     // they skip lighting and cone tracing; the terms are redone by the next frame that shows them.
@@ -282,20 +296,22 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     r.lastFrame = frame;
     r.lastVoxelSize = settings.gi.enabled ? r.gi.volume().voxelSize() : 0.0f;
     r.lastVolumeSide = settings.gi.enabled ? r.gi.volume().side() : 0.0f;
-    r.stats.voxelBytes = settings.gi.enabled ? r.gi.bytes() : 0;
+    r.stats.voxelBytes = settings.gi.enabled ? r.giBytes(settings) : 0;
     r.stats.shadowMapBytes = r.shadow.memoryBytes();
     r.profiler.endFrame();
     r.stats.drawCalls = r.counters.drawCalls;
 }
 
-void Renderer::advanceGi(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+void Renderer::advanceGi(const Scene& scene, const CameraView& camera, const RenderSettings& requested,
                          const GiBudget& budget) {
     Impl& r = *impl_;
-    if (!settings.gi.enabled || !r.gpuScene) return;
+    if (!requested.gi.enabled || !r.gpuScene) return;
     r.profiler.beginFrame();
     r.gi.reportUpdate();
-    r.updateGi(scene, settings, budget, r.beginScene(scene, camera, settings).shadowsDirty);
-    r.stats.voxelBytes = r.gi.bytes();
+    const bool shadowsDirty = r.beginScene(scene, camera, requested).shadowsDirty;
+    const RenderSettings& settings = r.withNearLevelFitted(requested);
+    r.updateGi(scene, camera, settings, budget, shadowsDirty);
+    r.stats.voxelBytes = r.giBytes(settings);
     r.profiler.endFrame();
 }
 
@@ -377,15 +393,45 @@ void Renderer::Impl::drawGBuffer(const Scene& scene, const RenderSettings& setti
     stats.triangles = counters.triangles - trianglesBefore;
 }
 
-void Renderer::Impl::updateGi(const Scene& scene, const RenderSettings& settings, const GiBudget& budget,
-                              bool shadowsDirty) {
+Aabb Renderer::Impl::nearLevelBox(const glm::vec3& eye, float side) {
+    // Snapped to eighths of the side, so that the level moves (and is voxelized again) only when
+    // the camera has gone an eighth of it; the camera stays at least 3/8 of the side from a face.
+    const float step = side / 8.0f;
+    const glm::vec3 centre = glm::round(eye / step) * step;
+    return {centre - 0.5f * side, centre + 0.5f * side};
+}
+
+void Renderer::Impl::updateGi(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+                              const GiBudget& budget, bool shadowsDirty) {
     shadow.bindMaps();  // the injection lights the voxels with them
     // Sample pattern index 0 every frame without temporal accumulation: a pattern that moves
     // only adds flicker there, and a fixed one keeps each term image consistent with the final
     // image. With it, the pattern turns every frame and the history averages the patterns.
     const int frameIndex = settings.indirect.temporalAccumulation ? static_cast<int>(temporalFrame % 4096) : 0;
-    const GiFrameReport report = gi.update(
+    GiFrameReport report = gi.update(
         {scene, *gpuScene, bounds, ShadowKinds::of(lights), shadowsDirty, frameIndex}, settings, budget, counters);
+    if (settings.gi.nearLevel()) {
+        if (!nearGi) nearGi = std::make_unique<VoxelGi>(shaderRoot, profiler, log, VoxelGiLevel::Near);
+        // After the scene volume: the near level's rays read its light, so an update of it that
+        // completed re-lights the near level as a light edit does.
+        const bool outerChanged = report.updateCompleted;
+        const GiFrameReport near =
+            nearGi->update({scene, *gpuScene, nearLevelBox(camera.position, settings.gi.nearLevelSide), ShadowKinds::of(lights),
+                            shadowsDirty || outerChanged, frameIndex, &gi},
+                           settings, budget, counters);
+        gi.volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);  // the scene volume's, for the frame's passes
+        report.voxelized = report.voxelized || near.voxelized;
+        report.injected = report.injected || near.injected;
+        report.lightChanged = report.lightChanged || near.lightChanged;
+        if (near.updateDone < report.updateDone) {
+            report.updateDone = near.updateDone;
+            report.updateStage = "near " + near.updateStage;
+        }
+        report.refining = report.refining || near.refining;
+        report.refinedVoxels += near.refinedVoxels;
+    } else if (nearGi) {
+        nearGi.reset();  // its volumes' memory back
+    }
     if (report.lightChanged) resolve.resetHistory();  // accumulated indirect light is stale
     stats.voxelized = report.voxelized;
     stats.voxelizedBoxes = report.voxelizedBoxes;
@@ -399,6 +445,19 @@ void Renderer::Impl::updateGi(const Scene& scene, const RenderSettings& settings
     stats.giBounces = report.bounces;
     stats.giEveryBounce = report.everyBounce;
     stats.giShowingPrevious = report.showingPrevious;
+}
+
+const RenderSettings& Renderer::Impl::withNearLevelFitted(const RenderSettings& requested) {
+    if (!requested.gi.nearLevel() || bounds.empty()) return requested;
+    const glm::vec3 extent = bounds.max - bounds.min;
+    if (requested.gi.nearLevelSide < 0.5f * std::max({extent.x, extent.y, extent.z})) return requested;
+    nearLevelFitted = requested;
+    nearLevelFitted.gi.nearLevelSide = 0.0f;
+    return nearLevelFitted;
+}
+
+std::size_t Renderer::Impl::giBytes(const RenderSettings& settings) const {
+    return gi.bytes() + (settings.gi.nearLevel() && nearGi ? nearGi->bytes() : 0);
 }
 
 // L_DD + L_DS from the lights and their shadow maps, then L_ID + L_IS from the voxel GI.
@@ -463,6 +522,7 @@ void Renderer::Impl::traceIndirect(const Scene& scene, const RenderSettings& set
     {
         Profiler::Scope scope(profiler, "cone trace");
         gi.bindGather(settings);
+        if (settings.gi.nearLevel() && nearGi) nearGi->bindAsNearLevel();
         coneTrace.executeReduced(volume, settings, sampling, layers);
     }
     waitForQueuedPasses();  // the resolve samples the low-resolution trace

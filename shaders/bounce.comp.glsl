@@ -261,8 +261,56 @@ vec3 rayHitChange(uint hit) {
 #else
 bool gathersChange() { return false; }
 #endif
-vec3 rayHitRadiance(uint hit, vec3 dir) {
+#ifndef LIT_NEAR_LEVEL
+#define LIT_NEAR_LEVEL 0
+#endif
+#if LIT_NEAR_LEVEL
+// The near level (docs/GI.md, "Near level"): a ray that leaves it goes on through the scene's
+// volume, from the point where it left, to the first occupied voxel of that volume's level 0 (a
+// cube there: the scene volume's surfaces are not bound), and takes its radiance, which holds every
+// bounce the scene volume's update gathered; past that volume, the sky. That light does not change
+// while the near level's update runs (the scene volume updates first), so a later bounce's change
+// gathers none of it (rayHitChange).
+layout(std140, binding = LIT_UBO_OUTER_VOXEL) uniform OuterVoxelBlock {
+    VoxelUniforms outerVoxel;
+};
+layout(binding = LIT_TEX_OUTER_RADIANCE) uniform sampler3D outerRadianceTexture;
+
+vec3 outerRayRadiance(vec3 origin, vec3 dir) {
+    vec3 d = mix(dir, vec3(1e-7), lessThan(abs(dir), vec3(1e-7)));
+    vec3 inv = 1.0 / d;
+    // Where the ray leaves the near level (world units from origin).
+    vec3 nearLo = (voxel.volumeMin.xyz - origin) * inv, nearHi = (voxel.volumeMin.xyz + voxel.volumeMin.w - origin) * inv;
+    float leave = max(min(max(nearLo.x, nearHi.x), min(max(nearLo.y, nearHi.y), max(nearLo.z, nearHi.z))), 0.0);
+    int n = int(outerVoxel.voxelInfo.x);
+    vec3 g0 = (origin + leave * d - outerVoxel.volumeMin.xyz) / outerVoxel.voxelInfo.z;
+    vec3 t1 = -g0 * inv, t2 = (vec3(float(n)) - g0) * inv;
+    float t = max(max(min(t1.x, t2.x), max(min(t1.y, t2.y), min(t1.z, t2.z))), 0.0) + 1e-4;
+    float tLeave = min(max(t1.x, t2.x), min(max(t1.y, t2.y), max(t1.z, t2.z)));
+    vec3 exitSide = vec3(greaterThan(d, vec3(0.0)));
+    for (int i = 0; i < kRayMaxSteps && t < tLeave; ++i) {
+        ivec3 cell = clamp(ivec3(floor(g0 + t * d)), ivec3(0), ivec3(n - 1));
+        bool coarseEmpty = texelFetch(outerRadianceTexture, cell >> kRaySkipLevelCoarse, kRaySkipLevelCoarse).a == 0.0;
+        bool blockEmpty = coarseEmpty || texelFetch(outerRadianceTexture, cell >> kRaySkipLevel, kRaySkipLevel).a == 0.0;
+        if (!blockEmpty) {
+            vec4 s = texelFetch(outerRadianceTexture, cell, 0);
+            if (s.a > 0.0) return s.rgb / s.a * outerVoxel.radianceScale.y;
+        }
+        float size = coarseEmpty ? float(1 << kRaySkipLevelCoarse) : (blockEmpty ? float(1 << kRaySkipLevel) : 1.0);
+        vec3 corner = floor(vec3(cell) / size) * size;
+        vec3 tExit = (corner + exitSide * size - g0) * inv;
+        t = min(tExit.x, min(tExit.y, tExit.z)) + 1e-3;
+    }
+    return skyRadiance(dir);
+}
+#endif
+
+vec3 rayHitRadiance(uint hit, vec3 origin, vec3 dir) {
+#if LIT_NEAR_LEVEL
+    if (hit == kRayHitSky) return outerRayRadiance(origin, dir);
+#else
     if (hit == kRayHitSky) return skyRadiance(dir);
+#endif
     if ((hit & kRayHitBack) != 0u) return vec3(0.0);
 #if LIT_BOUNCE_IRRADIANCE
     vec4 s = texelFetch(voxelRadianceTexture, unpackVoxelCoord(hit), 0);
@@ -322,7 +370,7 @@ vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
             continue;
         }
 #endif
-        sum += rayHitRadiance(hit, dir);
+        sum += rayHitRadiance(hit, origin, dir);
     }
     return sum / float(count);
 }

@@ -61,6 +61,18 @@ glass="$root/tests/data/blender/glass/glass.gltf"
 "$render" "$glass" --size 640x360 --gi on --voxels 128 --out "$out/glass.png" \
     --compare "$tmpdir/glass_reference.hdr" --difference "$out/glass_difference.png"
 
+# The generated city (make-gi-suite, docs/GI.md "Near level"): a street 640 m of town across, the
+# shaded side lit only by bounced light; Lit's defaults at 128³ (with the 64 m near level around
+# the camera), the same with one volume around it all, the every-bounce reference, and the
+# Difference views against it.
+city="$root/assets/gi/city.gltf"
+"$render" "$city" --reference --bounces all --spp "$spp" --size 640x360 --out "$out/city_reference.png" \
+    --hdr "$tmpdir/city_reference.hdr"
+"$render" "$city" --size 640x360 --gi on --voxels 128 --out "$out/city.png" \
+    --compare "$tmpdir/city_reference.hdr" --difference "$out/city_difference.png"
+"$render" "$city" --size 640x360 --gi on --voxels 128 --set gi.nearLevelSide=0 --out "$out/city_one_volume.png" \
+    --compare "$tmpdir/city_reference.hdr" --difference "$out/city_one_volume_difference.png"
+
 # The sun room (tools/blender/make_sun_room.py, docs/GI.md "The sun room against Cycles"): lit only
 # through its window, so nearly everything shown is bounced light; Lit's defaults at 128³, the
 # every-bounce reference, and the Difference view. Exposed +3 stops: the room is dim beside the patch.

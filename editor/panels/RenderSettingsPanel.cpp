@@ -221,6 +221,14 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
         "(no self-illumination) at the cost of more steps (3-5x the cone-trace time per pixel).\n"
         "Accurate and cached modes only (the fast mode's cones are unbounded)");
     if (s.gi.voxelIrradiance()) {
+        changed |= ImGui::DragFloat("Near level side", &s.gi.nearLevelSide, 1.0f, 0.0f, 4096.0f,
+                                    s.gi.nearLevelSide <= 0.0f ? "off" : "%.0f m");
+        tooltip("A second volume of the same resolution, a cube of this side (metres) around the camera, moved in\n"
+                "eighths of its side: pixels inside it gather its finer voxels' light, and its voxels' rays\n"
+                "continue in the scene's volume where they leave it. Runs only in scenes at least twice as large\n"
+                "across; 0 = off (docs/GI.md, \"Near level\")");
+    }
+    if (s.gi.voxelIrradiance()) {
         ImGui::DragInt("Update voxels / frame", &viewport.giUpdateVoxelsPerFrame, 256.0f, 0, 1 << 24,
                        viewport.giUpdateVoxelsPerFrame == 0 ? "all at once" : "%d voxels");
         tooltip("Occupied voxels traced per frame after an edit, for each bounce past the first and then\n"

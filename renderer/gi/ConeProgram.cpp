@@ -10,7 +10,7 @@ namespace lit {
 
 ConeFeatures ConeFeatures::of(const RenderSettings& settings, bool materialLayers) {
     return {settings.gi.anisotropicVoxels(), settings.gi.footprintPerHeight() > 0.0f, settings.gi.voxelIrradiance(),
-            std::clamp(settings.gi.voxelRays, 0, kMaxVoxelRays), materialLayers};
+            std::clamp(settings.gi.voxelRays, 0, kMaxVoxelRays), materialLayers, settings.gi.nearLevel(), false};
 }
 
 std::string ConeFeatures::defines() const {
@@ -19,7 +19,8 @@ std::string ConeFeatures::defines() const {
     };
     return define("LIT_CONE_ANISOTROPIC", anisotropic) + define("LIT_CONE_FOOTPRINT", footprint) +
            define("LIT_VOXEL_IRRADIANCE", voxelIrradiance) + define("LIT_VOXEL_RAYS", voxelRays > 0) +
-           MaterialLayersVariant{materialLayers}.defines();
+           MaterialLayersVariant{materialLayers}.defines() + define("LIT_NEAR_GATHER", nearGather) +
+           define("LIT_NEAR_LEVEL", nearLevel);
 }
 
 ConeProgram::ConeProgram(std::filesystem::path root, std::string label, std::vector<gl::ShaderStageSource> stages,
@@ -33,6 +34,8 @@ std::string ConeFeatures::label() const {
     if (anisotropic) suffix += " (anisotropic)";
     if (footprint) suffix += " (footprint)";
     if (voxelRays > 0) suffix += " (voxel rays)";
+    if (nearGather) suffix += " (near gather)";
+    if (nearLevel) suffix += " (near level)";
     return suffix + MaterialLayersVariant{materialLayers}.label();
 }
 

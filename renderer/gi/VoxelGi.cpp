@@ -17,8 +17,9 @@ std::string formatMs(double ms) {
 }
 }  // namespace
 
-VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Log& log)
-    : profiler_(profiler),
+VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Log& log, VoxelGiLevel level)
+    : level_(level),
+      profiler_(profiler),
       log_(log),
       voxelize_(shaderRoot),
       solid_(shaderRoot),
@@ -27,6 +28,18 @@ VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Lo
       bounce_(shaderRoot),
       irradiance_(shaderRoot),
       filter_(shaderRoot) {}
+
+ConeFeatures VoxelGi::featuresFor(const RenderSettings& settings) const {
+    ConeFeatures features = ConeFeatures::of(settings);
+    features.nearGather = false;  // the pixels' gather; the voxel passes trace their own
+    features.nearLevel = level_ == VoxelGiLevel::Near;
+    return features;
+}
+
+void VoxelGi::bindAsNearLevel() const {
+    irradianceCache_.shownTexels().bind(LIT_TEX_NEAR_IRRADIANCE);
+    volume_.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_NEAR_VOXEL);
+}
 
 std::vector<Pass*> VoxelGi::passes() { return {&voxelize_, &solid_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_}; }
 
@@ -75,9 +88,15 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     const bool reallocated = volume_.ensure(settings.gi.voxelResolution, settings.gi.radianceRgba8, log_);
     const bool moved = volume_.fitTo(frame.bounds);
     volume_.updateUniforms(settings, frame.frameIndex);
+    if (frame.outer) {
+        // The near level's rays continue in the scene's volume where they leave this one.
+        const VoxelVolume& outer = frame.outer->volume();
+        outer.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_OUTER_VOXEL);
+        outer.radiance().bind(LIT_TEX_OUTER_RADIANCE);
+    }
     const VoxelKey voxels{frame.scene.geometryRevision, frame.scene.materialRevision, &frame.scene};
     const GiLightKey light = GiLightKey::of(settings);
-    const ConeFeatures features = ConeFeatures::of(settings);
+    const ConeFeatures features = featuresFor(settings);
     GiScheduler::Changes changes = scheduler_.changes(voxels, light, reallocated, moved, frame.shadowsDirty);
     // Switched off: the directional volumes' memory goes back (0.6-1.3 GiB at 512³).
     if (!light.anisotropic && volume_.directional(0)) {
@@ -268,7 +287,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
 
 void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget,
                              bool injected, GiFrameReport& report) {
-    const ConeFeatures features = ConeFeatures::of(settings);
+    const ConeFeatures features = featuresFor(settings);
     const bool overList = scheduler_.state().listComplete;
     // The list ranges traced this frame, and whether the frame completed an update or a
     // refinement round (or traced everything at once): then the filter runs over the whole list,

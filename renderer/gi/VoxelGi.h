@@ -62,10 +62,15 @@ struct GiFrameReport {
     bool showingPrevious = false;
 };
 
+// Which volume a VoxelGi fills: the one around the whole scene, or the cached mode's near level
+// around the camera, whose voxel rays continue in the scene's volume (docs/GI.md, "Near level").
+enum class VoxelGiLevel { Scene, Near };
+
 class VoxelGi {
 public:
     // Builds the passes' first programs (throws gl::GlError when a shader does not build).
-    VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Log& log);
+    VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Log& log,
+            VoxelGiLevel level = VoxelGiLevel::Scene);
 
     struct Frame {
         const Scene& scene;
@@ -74,6 +79,8 @@ public:
         ShadowKinds shadows;        // the kinds of shadow map the light table uses
         bool shadowsDirty = false;  // the lights or their shadow maps changed this frame
         int frameIndex = 0;         // sample pattern index (turns with temporal accumulation)
+        // The near level: the scene's volume, updated this frame before it, where its rays continue.
+        const VoxelGi* outer = nullptr;
     };
     // Brings the volumes up to date with `settings` as far as `budget` allows this frame (a time
     // budget is turned into voxel counts by what the spread work cost in earlier frames). The
@@ -91,6 +98,9 @@ public:
     std::uint64_t generation() const { return generation_; }
     // Binds what the per-pixel gather reads in the cached mode (the irradiance gather texels).
     void bindGather(const RenderSettings& settings) const;
+    // The near level: binds what the pixels gather from it (LIT_NEAR_GATHER: its gather texels and
+    // its placement, LIT_TEX_NEAR_IRRADIANCE and LIT_UBO_NEAR_VOXEL).
+    void bindAsNearLevel() const;
     // GPU memory of the volumes and caches, bytes.
     std::size_t bytes() const;
 
@@ -103,6 +113,8 @@ public:
     std::vector<Pass*> passes();
 
 private:
+    // The cone features of this volume's own voxel passes.
+    ConeFeatures featuresFor(const RenderSettings& settings) const;
     // A trace over the occupied-voxel list with `rays` rays: what it does with the ray-hit cache.
     RayHits rayHitsFor(int rays);
     // The changed boxes to voxelize instead of the whole volume, if a voxelization of them is
@@ -120,6 +132,7 @@ private:
     void continueUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget,
                         bool injected, GiFrameReport& report);
 
+    VoxelGiLevel level_;
     Profiler& profiler_;
     Log& log_;
     VoxelVolume volume_;

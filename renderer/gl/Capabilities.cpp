@@ -117,7 +117,7 @@ void requireCapabilities() {
     else
         missing.push_back("image load/store");
     requireAtLeast(missing, "3D texture size", GL_MAX_3D_TEXTURE_SIZE, 256);  // voxel volumes up to 256³ by default
-    requireAtLeast(missing, "combined texture units", GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, LIT_TEX_VOXEL_DIRECTIONAL_FIRST + LIT_VOXEL_AXIS_COUNT);  // shared.h binds up to unit 31
+    requireAtLeast(missing, "combined texture units", GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, LIT_TEX_UNIT_COUNT);
     // Cone tracing (fragment) samples 17 textures (G-buffer, voxel volumes, the six anisotropic
     // ones, sky, specular table); desktop GPUs and llvmpipe have 32 per stage.
     requireAtLeast(missing, "fragment texture units", GL_MAX_TEXTURE_IMAGE_UNITS, 32);

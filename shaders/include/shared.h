@@ -20,6 +20,8 @@ using mat4 = glm::mat4;
 #define LIT_UBO_FRAME 0        // FrameUniforms: camera, viewport, exposure, view mode
 #define LIT_UBO_SHADOW_PASS 1  // ShadowPassUniforms: the light view being rendered
 #define LIT_UBO_VOXEL 2        // VoxelUniforms: where the voxel volume is and how to trace it
+#define LIT_UBO_NEAR_VOXEL 3   // VoxelUniforms of the near level, for the pixels' gather (LIT_NEAR_GATHER)
+#define LIT_UBO_OUTER_VOXEL 4  // VoxelUniforms of the scene's volume, for the near level's rays (LIT_NEAR_LEVEL)
 
 // ---- Shader storage buffer binding points ------------------------------------------------
 #define LIT_SSBO_LIGHTS 0      // GpuLight[lightCount]
@@ -89,7 +91,7 @@ using mat4 = glm::mat4;
 // Anisotropic radiance volumes (VoxelVolume::directional, levels 1.. of the radiance volume as
 // seen by a cone travelling along +X, −X, +Y, −Y, +Z, −Z; one volume per axis holds both of its
 // faces): units FIRST .. FIRST + 2 = 29..31, past the history units so no pass has to rebind what another left bound. Unit numbers only
-// have to stay below GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (Capabilities.cpp asks for 35).
+// have to stay below GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (Capabilities.cpp asks for LIT_TEX_UNIT_COUNT).
 #define LIT_TEX_VOXEL_DIRECTIONAL_FIRST 29
 #define LIT_VOXEL_FACE_COUNT 6
 #define LIT_VOXEL_AXIS_COUNT 3  // directional volumes: one per axis, holding its two faces
@@ -106,6 +108,11 @@ using mat4 = glm::mat4;
 // sheet's linear depth (0 at the near plane, 1 at the far plane).
 #define LIT_TEX_SHADOW_SHEETS 34
 #define LIT_TEX_SHADOW_SHEETS_CUBE 35  // the same per cube face of a point light (RGBA16F cube array)
+// The cached mode's near level (docs/GI.md, "Near level"): the pixels gather its gather texels
+// (LIT_NEAR_GATHER), its own voxel rays continue in the scene volume's radiance (LIT_NEAR_LEVEL).
+#define LIT_TEX_NEAR_IRRADIANCE 36
+#define LIT_TEX_OUTER_RADIANCE 37
+#define LIT_TEX_UNIT_COUNT 38  // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0

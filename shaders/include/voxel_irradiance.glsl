@@ -20,6 +20,9 @@
 #ifndef LIT_VOXEL_IRRADIANCE
 #define LIT_VOXEL_IRRADIANCE 0
 #endif
+#ifndef LIT_NEAR_GATHER
+#define LIT_NEAR_GATHER 0
+#endif
 #if LIT_VOXEL_IRRADIANCE
 // The gather texels (voxel.glsl, packGatherTexel): a voxel's normal and both sides' irradiance in
 // one fetch, one sampler: llvmpipe pays for every fetch in the loop, and with one sampler per side
@@ -27,19 +30,21 @@
 // "llvmpipe").
 layout(binding = LIT_TEX_VOXEL_IRRADIANCE) uniform usampler3D voxelGatherTexels;
 
-vec3 gatherVoxelIrradiance(vec3 position, vec3 n, out bool nothing) {
-    int res = int(voxel.voxelInfo.x);
+// The gather from one volume's texels: placed at `volumeMin` (m), voxels of `voxelSize` (m), `res`
+// per side. Returns the weighted sum and its weight.
+vec3 gatherTexelsAround(usampler3D texels, vec3 volumeMin, float voxelSize, int res, vec3 position, vec3 n,
+                        out float weightSum) {
     // Continuous voxel coordinates with voxel centres on integers.
-    vec3 g = (position - voxel.volumeMin.xyz) / voxel.voxelInfo.z + 0.5 * n - 0.5;
+    vec3 g = (position - volumeMin) / voxelSize + 0.5 * n - 0.5;
     ivec3 c = ivec3(round(g));
     vec3 sum = vec3(0.0);
-    float weightSum = 0.0;
+    weightSum = 0.0;
     for (int z = -1; z <= 1; ++z)
         for (int y = -1; y <= 1; ++y)
             for (int x = -1; x <= 1; ++x) {
                 ivec3 v = c + ivec3(x, y, z);
                 if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(res)))) continue;
-                uvec4 t = texelFetch(voxelGatherTexels, v, 0);
+                uvec4 t = texelFetch(texels, v, 0);
                 if (t.x == 0u) continue;  // empty (or not filtered since the voxelization)
                 // The normal and the two sides as bounce.comp.glsl traced them.
                 float d = dot(n, gatherTexelNormal(t));
@@ -53,7 +58,45 @@ vec3 gatherVoxelIrradiance(vec3 position, vec3 n, out bool nothing) {
                 sum += w * gatherTexelIrradiance(t, otherSide);
                 weightSum += w;
             }
+    return sum;
+}
+
+#if LIT_NEAR_GATHER
+// The near level (docs/GI.md, "Near level"): its placement and gather texels.
+layout(std140, binding = LIT_UBO_NEAR_VOXEL) uniform NearVoxelBlock {
+    VoxelUniforms nearVoxel;
+};
+layout(binding = LIT_TEX_NEAR_IRRADIANCE) uniform usampler3D nearGatherTexels;
+// Voxels from the near level's faces where its gather starts to count, and over how many it
+// reaches full weight: the outermost voxels' rays left the level at once, and the blend hides
+// the step between the two levels' voxel sizes.
+const float kNearGatherMargin = 3.0;
+const float kNearGatherBlend = 4.0;
+#endif
+
+vec3 gatherVoxelIrradiance(vec3 position, vec3 n, out bool nothing) {
+    float weightSum;
+    vec3 sum = gatherTexelsAround(voxelGatherTexels, voxel.volumeMin.xyz, voxel.voxelInfo.z, int(voxel.voxelInfo.x),
+                                  position, n, weightSum);
+    vec3 irradiance = weightSum > 0.0 ? sum / weightSum : vec3(0.0);
     nothing = !(weightSum > 0.0);
-    return nothing ? vec3(0.0) : sum / weightSum;
+#if LIT_NEAR_GATHER
+    // Inside the near level its finer voxels' light replaces the scene volume's, blended in over
+    // kNearGatherBlend voxels; where it gathers nothing (not traced yet, just moved) the scene
+    // volume's stands.
+    vec3 inNear = (position - nearVoxel.volumeMin.xyz) / nearVoxel.voxelInfo.z;
+    float fromFace = min(min(min(inNear.x, inNear.y), inNear.z),
+                         min(min(nearVoxel.voxelInfo.x - inNear.x, nearVoxel.voxelInfo.x - inNear.y), nearVoxel.voxelInfo.x - inNear.z));
+    float blend = clamp((fromFace - kNearGatherMargin) / kNearGatherBlend, 0.0, 1.0);
+    float nearWeightSum;
+    vec3 nearSum = gatherTexelsAround(nearGatherTexels, nearVoxel.volumeMin.xyz, nearVoxel.voxelInfo.z,
+                                      int(nearVoxel.voxelInfo.x), position, n, nearWeightSum);
+    if (blend > 0.0 && nearWeightSum > 0.0) {
+        vec3 nearIrradiance = nearSum / nearWeightSum;
+        irradiance = nothing ? nearIrradiance : mix(irradiance, nearIrradiance, blend);
+        nothing = false;
+    }
+#endif
+    return irradiance;
 }
 #endif
