@@ -169,6 +169,7 @@ struct Renderer::Impl {
     VoxelGi gi;
     // The cached mode's near level (GiSettings::nearLevel()), made on first use.
     std::unique_ptr<VoxelGi> nearGi;
+    bool nearUpdating = false;  // the near level's update ran on after the last frame
     ConeTracePass coneTrace;
     IndirectResolvePass resolve;
     IndirectFallbackPass fallback;
@@ -274,6 +275,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     if (!r.gpuScene) setScene(scene);
     r.profiler.beginFrame();
     r.gi.reportUpdate();
+    if (r.nearGi) r.nearGi->reportUpdate();
     r.stats = {};
     r.counters = {};
 
@@ -308,6 +310,7 @@ void Renderer::advanceGi(const Scene& scene, const CameraView& camera, const Ren
     if (!requested.gi.enabled || !r.gpuScene) return;
     r.profiler.beginFrame();
     r.gi.reportUpdate();
+    if (r.nearGi) r.nearGi->reportUpdate();
     const bool shadowsDirty = r.beginScene(scene, camera, requested).shadowsDirty;
     const RenderSettings& settings = r.withNearLevelFitted(requested);
     r.updateGi(scene, camera, settings, budget, shadowsDirty);
@@ -408,17 +411,29 @@ void Renderer::Impl::updateGi(const Scene& scene, const CameraView& camera, cons
     // only adds flicker there, and a fixed one keeps each term image consistent with the final
     // image. With it, the pattern turns every frame and the history averages the patterns.
     const int frameIndex = settings.indirect.temporalAccumulation ? static_cast<int>(temporalFrame % 4096) : 0;
+    // One budget for both volumes' spread work, in this order: the scene volume's update (the near
+    // level's rays read its light), the near level's update, the scene volume's refinement, the near
+    // level's refinement.
+    const bool withNear = settings.gi.nearLevel();
+    GiBudget sceneBudget = budget;
+    if (withNear && nearUpdating) sceneBudget.refineVoxels = 0;
     GiFrameReport report = gi.update(
-        {scene, *gpuScene, bounds, ShadowKinds::of(lights), shadowsDirty, frameIndex}, settings, budget, counters);
-    if (settings.gi.nearLevel()) {
+        {scene, *gpuScene, bounds, ShadowKinds::of(lights), shadowsDirty, frameIndex}, settings, sceneBudget, counters);
+    if (withNear) {
         if (!nearGi) nearGi = std::make_unique<VoxelGi>(shaderRoot, profiler, log, VoxelGiLevel::Near);
-        // After the scene volume: the near level's rays read its light, so an update of it that
-        // completed re-lights the near level as a light edit does.
+        GiBudget nearBudget = budget;
+        if (report.updateDone < 1.0f)
+            nearBudget = {1, 0, 0.0};  // the least a spread update takes: one voxel
+        else if (report.refining)
+            nearBudget.refineVoxels = 0;
+        // After the scene volume: an update of it that completed re-lights the near level as a
+        // light edit does.
         const bool outerChanged = report.updateCompleted;
         const GiFrameReport near =
             nearGi->update({scene, *gpuScene, nearLevelBox(camera.position, settings.gi.nearLevelSide), ShadowKinds::of(lights),
                             shadowsDirty || outerChanged, frameIndex, &gi},
-                           settings, budget, counters);
+                           settings, nearBudget, counters);
+        nearUpdating = near.updateDone < 1.0f;
         gi.volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);  // the scene volume's, for the frame's passes
         report.voxelized = report.voxelized || near.voxelized;
         report.injected = report.injected || near.injected;
@@ -431,6 +446,7 @@ void Renderer::Impl::updateGi(const Scene& scene, const CameraView& camera, cons
         report.refinedVoxels += near.refinedVoxels;
     } else if (nearGi) {
         nearGi.reset();  // its volumes' memory back
+        nearUpdating = false;
     }
     if (report.lightChanged) resolve.resetHistory();  // accumulated indirect light is stale
     stats.voxelized = report.voxelized;

@@ -27,7 +27,8 @@ VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Lo
       mipmap_(shaderRoot),
       bounce_(shaderRoot),
       irradiance_(shaderRoot),
-      filter_(shaderRoot) {}
+      filter_(shaderRoot),
+      shownUniforms_("near level shown placement", sizeof(gpu::VoxelUniforms), nullptr, 0) {}
 
 ConeFeatures VoxelGi::featuresFor(const RenderSettings& settings) const {
     ConeFeatures features = ConeFeatures::of(settings);
@@ -38,7 +39,7 @@ ConeFeatures VoxelGi::featuresFor(const RenderSettings& settings) const {
 
 void VoxelGi::bindAsNearLevel() const {
     irradianceCache_.shownTexels().bind(LIT_TEX_NEAR_IRRADIANCE);
-    volume_.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_NEAR_VOXEL);
+    shownUniforms_.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_NEAR_VOXEL);
 }
 
 std::vector<Pass*> VoxelGi::passes() { return {&voxelize_, &solid_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_}; }
@@ -109,6 +110,10 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     // or was made again) or belong to another scene.
     const bool keepShownLight = !reallocated && !moved && scheduler_.state().voxelsValid &&
                                 scheduler_.state().voxels.scene == &frame.scene;
+    // The near level that moved: its pixels keep gathering the last complete update's texels where
+    // they were traced (shownUniforms_) until the moved level's update completes.
+    const bool keepShownOverMove = level_ == VoxelGiLevel::Near && moved && !reallocated &&
+                                   scheduler_.state().voxelsValid && scheduler_.state().voxels.scene == &frame.scene;
     std::vector<ItemPose> items;
     std::optional<std::vector<VoxelBox>> boxes;
     if (changes.voxelize) {
@@ -248,8 +253,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             // Only an update spread over frames shows anything before it completes (lit-render's
             // stills never need the second set of texels).
             irradianceCache_.prepare(volume_, start.clearIrradiance,
-                                     keepShownLight && scheduler_.spreadsOverFrames(light, budget));
-            if (changes.voxelize) filter_.pruneShown(volume_, irradianceCache_);
+                                     (keepShownLight || keepShownOverMove) && scheduler_.spreadsOverFrames(light, budget));
+            if (changes.voxelize && !moved) filter_.pruneShown(volume_, irradianceCache_);
         } else if (boxes && irradianceCache_.matches(volume_)) {
             // The update runs on over changed boxes: their voxels' traced irradiance belongs to
             // surfaces that moved, and neither set of texels may keep light where a surface is gone.
@@ -282,6 +287,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     report.bounces = state.light.untilConverged ? state.progress.bounceEstimate : state.light.bounces;
     report.everyBounce = state.light.untilConverged;
     report.showingPrevious = irradianceCache_.showingPrevious();
+    if (level_ == VoxelGiLevel::Near && !report.showingPrevious)  // the shown texels are this placement's
+        glCopyNamedBufferSubData(volume_.uniforms().id(), shownUniforms_.id(), 0, 0, sizeof(gpu::VoxelUniforms));
     return report;
 }
 
@@ -434,7 +441,8 @@ void VoxelGi::reportUpdate() {
     if (!injectTiming || injectTiming->frame < pendingFrame_) return;
     const PassTiming* voxelizeTiming = profiler_.lastRun("voxelize");
     const PassTiming* mipTiming = profiler_.lastRun("mipmap");
-    std::string text = pendingVoxelize_ ? "re-voxelized " : "re-injected ";
+    std::string text = std::string(level_ == VoxelGiLevel::Near ? "near level: " : "") +
+                       (pendingVoxelize_ ? "re-voxelized " : "re-injected ");
     if (pendingVoxelize_ && pendingBoxes_ > 0)
         text += std::to_string(pendingBoxes_) + (pendingBoxes_ > 1 ? " changed boxes (" : " changed box (") +
                 std::to_string(pendingBoxVoxels_) + " voxels) of ";

@@ -171,6 +171,9 @@ private:
     std::uint64_t injections_ = 0;            // injections so far
     std::uint64_t bounceStartInjections_ = 0;  // injections_ when the spread bounce under way started
     std::uint64_t generation_ = 0;
+    // The near level: the placement (VoxelUniforms) of the texels the pixels gather, which after a
+    // move is the old one until the moved level's update completes.
+    gl::Buffer shownUniforms_;
     // The update waiting for its GPU timings to be logged: why it ran, in which frame.
     std::string pendingReason_;
     std::uint64_t pendingFrame_ = 0;
