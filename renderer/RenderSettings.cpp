@@ -120,6 +120,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("gi", "coneStepScale", gi.coneStepScale);
     visit("gi", "coneFootprintPerHeight", gi.coneFootprintPerHeight);
     visit("gi", "nearLevelSide", gi.nearLevelSide);
+    visit("gi", "nearLevels", gi.nearLevels);
     IndirectSettings& in = s.indirect;
     visit("indirect", "scale", in.scale);
     visit("indirect", "specularSamples", in.specularSamples);

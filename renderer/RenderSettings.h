@@ -5,6 +5,7 @@
 // nothing else. What only a front end needs (the editor's interactive scale, how much GI work a
 // frame may do) lives in that front end, not here.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -56,6 +57,8 @@ inline constexpr int kMaxConvergingBounces = 64;
 inline constexpr int kMaxVoxelRays = 256;
 // The most GiSettings::laterBounceRayStride asks for (more are clamped to it).
 inline constexpr int kMaxLaterBounceRayStride = 16;
+// Near levels around the camera at most (GiSettings::nearLevels; shared.h LIT_MAX_NEAR_LEVELS).
+inline constexpr int kMaxNearLevels = 3;
 // The footprint bound of the accurate and cached modes' diffuse cones (GiSettings::
 // coneFootprintPerHeight): the largest voxel a cone leaving a surface samples is a quarter of its
 // height above it. Why a quarter: docs/GI.md, "Footprint-bounded cones".
@@ -166,20 +169,25 @@ struct GiSettings {
     // height above the surface (keeps cones out of their own surface's voxels; 0 = unbounded).
     // The fast mode's cones are unbounded.
     float coneFootprintPerHeight = kAccurateGiFootprint;
-    // The cached mode's near level (docs/GI.md, "Near level"): a second volume of voxelResolution³
-    // voxels, a cube of this side in metres centred on the camera (moved in steps of an eighth of
-    // its side), whose voxels gather their own light with their rays continuing into the scene's
-    // volume where they leave it; pixels inside it gather from its finer voxels. It runs only in
-    // scenes at least twice as large across (smaller ones get no finer voxels from it). 0 = off
-    // (one volume around the whole scene).
+    // The cached mode's near levels (docs/GI.md, "Near levels"): up to kMaxNearLevels more volumes
+    // of voxelResolution³ voxels, cubes around the camera of nearLevelSide metres, twice that,
+    // four times that (each moved in eighths of its side), whose voxels gather their own light with
+    // their rays continuing in the next level out and then in the scene's volume where they leave
+    // it; pixels gather from the finest level around them. A level runs only in scenes at least
+    // twice its side across (smaller ones get no finer voxels from it). nearLevels 0 or
+    // nearLevelSide 0 = off (one volume around the whole scene).
     float nearLevelSide = 64.0f;
+    int nearLevels = 1;  // 0..kMaxNearLevels
 
     // What the mode implies (ConeFeatures::of reads these).
     bool anisotropicVoxels() const { return mode != GiMode::Fast; }  // directional voxels for mip levels ≥ 1
     float footprintPerHeight() const { return mode == GiMode::Fast ? 0.0f : std::fmax(coneFootprintPerHeight, 0.0f); }
     bool voxelIrradiance() const { return mode == GiMode::Cached; }  // L_ID gathered from the voxels
-    // The near level runs: the cached mode with voxel rays and a positive side.
-    bool nearLevel() const { return voxelIrradiance() && voxelRays > 0 && nearLevelSide > 0.0f; }
+    // The near levels run (as many as nearLevelCount()): the cached mode with voxel rays, a positive side.
+    bool nearLevel() const { return nearLevelCount() > 0; }
+    int nearLevelCount() const {
+        return voxelIrradiance() && voxelRays > 0 && nearLevelSide > 0.0f ? std::clamp(nearLevels, 0, kMaxNearLevels) : 0;
+    }
     bool operator==(const GiSettings&) const = default;
 };
 

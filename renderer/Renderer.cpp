@@ -36,6 +36,8 @@
 #include "scene/SheenAlbedo.h"
 #include "scene/Sky.h"
 
+static_assert(lit::kMaxNearLevels == LIT_MAX_NEAR_LEVELS);
+
 namespace lit {
 
 namespace fs = std::filesystem;
@@ -105,8 +107,9 @@ struct Renderer::Impl {
         std::vector<Pass*> all{&shadow,  &gbuffer,  &direct,      &post,       &coneTrace,
                                &resolve, &fallback, &overlayPass, &voxelDebug, &autoExposure, &sheets};
         for (Pass* pass : gi.passes()) all.push_back(pass);
-        if (nearGi)
-            for (Pass* pass : nearGi->passes()) all.push_back(pass);
+        for (const std::unique_ptr<VoxelGi>& level : nearGi)
+            if (level)
+                for (Pass* pass : level->passes()) all.push_back(pass);
         return all;
     }
 
@@ -125,11 +128,13 @@ struct Renderer::Impl {
     void drawGBuffer(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
     void updateGi(const Scene& scene, const CameraView& camera, const RenderSettings& settings, const GiBudget& budget,
                   bool shadowsDirty);
-    // The near level's box around the camera (GiSettings::nearLevelSide, moved in eighths of it).
+    // A near level's box around the camera (moved in eighths of its side), and the side of level
+    // `level` (0 the finest: GiSettings::nearLevelSide, each next twice the last), metres.
     static Aabb nearLevelBox(const glm::vec3& eye, float side);
+    static float nearLevelSide(const RenderSettings& settings, int level);
     std::size_t giBytes(const RenderSettings& settings) const;  // the scene volume's and the near level's
-    // `requested`, or a copy without the near level when the scene is not at least twice its side
-    // across (the scene's volume is then about as fine: the near level would cost without adding).
+    // `requested`, or a copy with fewer near levels: those at least half the scene's size across
+    // are left out (the scene's volume is about as fine: they would cost without adding).
     const RenderSettings& withNearLevelFitted(const RenderSettings& requested);
     RenderSettings nearLevelFitted;  // withNearLevelFitted's copy
     void lightTerms(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
@@ -167,9 +172,10 @@ struct Renderer::Impl {
     DirectLightingPass direct;
     PostPass post;
     VoxelGi gi;
-    // The cached mode's near level (GiSettings::nearLevel()), made on first use.
-    std::unique_ptr<VoxelGi> nearGi;
-    bool nearUpdating = false;  // the near level's update ran on after the last frame
+    // The cached mode's near levels (GiSettings::nearLevelCount()), the finest first, each made on
+    // first use; and whether each one's update ran on after the last frame.
+    std::vector<std::unique_ptr<VoxelGi>> nearGi;
+    std::vector<bool> nearUpdating;
     ConeTracePass coneTrace;
     IndirectResolvePass resolve;
     IndirectFallbackPass fallback;
@@ -260,7 +266,8 @@ void Renderer::setScene(const Scene& scene) {
     impl_->boundsRevision = ~0ull;
     impl_->shadowKey = {};
     impl_->gi.invalidate();
-    if (impl_->nearGi) impl_->nearGi->invalidate();
+    for (const std::unique_ptr<VoxelGi>& level : impl_->nearGi)
+        if (level) level->invalidate();
     impl_->resolve.resetHistory();
     impl_->meteredLastFrame = false;  // a new scene is metered afresh, not adapted to
     impl_->lastFrame.reset();  // the G-buffer's node IDs belong to the previous scene
@@ -275,7 +282,8 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     if (!r.gpuScene) setScene(scene);
     r.profiler.beginFrame();
     r.gi.reportUpdate();
-    if (r.nearGi) r.nearGi->reportUpdate();
+    for (const std::unique_ptr<VoxelGi>& level : r.nearGi)
+        if (level) level->reportUpdate();
     r.stats = {};
     r.counters = {};
 
@@ -310,7 +318,8 @@ void Renderer::advanceGi(const Scene& scene, const CameraView& camera, const Ren
     if (!requested.gi.enabled || !r.gpuScene) return;
     r.profiler.beginFrame();
     r.gi.reportUpdate();
-    if (r.nearGi) r.nearGi->reportUpdate();
+    for (const std::unique_ptr<VoxelGi>& level : r.nearGi)
+        if (level) level->reportUpdate();
     const bool shadowsDirty = r.beginScene(scene, camera, requested).shadowsDirty;
     const RenderSettings& settings = r.withNearLevelFitted(requested);
     r.updateGi(scene, camera, settings, budget, shadowsDirty);
@@ -411,43 +420,49 @@ void Renderer::Impl::updateGi(const Scene& scene, const CameraView& camera, cons
     // only adds flicker there, and a fixed one keeps each term image consistent with the final
     // image. With it, the pattern turns every frame and the history averages the patterns.
     const int frameIndex = settings.indirect.temporalAccumulation ? static_cast<int>(temporalFrame % 4096) : 0;
-    // One budget for both volumes' spread work, in this order: the scene volume's update (the near
-    // level's rays read its light), the near level's update, the scene volume's refinement, the near
-    // level's refinement.
-    const bool withNear = settings.gi.nearLevel();
+    // One budget for every volume's spread work, in this order: the updates from the scene volume
+    // inwards (each near level's rays read the light of the volumes outside it), then the
+    // refinements in the same order. A level whose update waits traces one voxel a frame.
+    const int levels = settings.gi.nearLevelCount();
+    nearGi.resize(static_cast<std::size_t>(levels));
+    nearUpdating.resize(static_cast<std::size_t>(levels), false);
+    const bool innerUpdating = std::find(nearUpdating.begin(), nearUpdating.end(), true) != nearUpdating.end();
     GiBudget sceneBudget = budget;
-    if (withNear && nearUpdating) sceneBudget.refineVoxels = 0;
+    if (innerUpdating) sceneBudget.refineVoxels = 0;
     GiFrameReport report = gi.update(
         {scene, *gpuScene, bounds, ShadowKinds::of(lights), shadowsDirty, frameIndex}, settings, sceneBudget, counters);
-    if (withNear) {
-        if (!nearGi) nearGi = std::make_unique<VoxelGi>(shaderRoot, profiler, log, VoxelGiLevel::Near);
-        GiBudget nearBudget = budget;
-        if (report.updateDone < 1.0f)
-            nearBudget = {1, 0, 0.0};  // the least a spread update takes: one voxel
-        else if (report.refining)
-            nearBudget.refineVoxels = 0;
-        // After the scene volume: an update of it that completed re-lights the near level as a
-        // light edit does.
-        const bool outerChanged = report.updateCompleted;
-        const GiFrameReport near =
-            nearGi->update({scene, *gpuScene, nearLevelBox(camera.position, settings.gi.nearLevelSide), ShadowKinds::of(lights),
-                            shadowsDirty || outerChanged, frameIndex, &gi},
-                           settings, nearBudget, counters);
-        nearUpdating = near.updateDone < 1.0f;
-        gi.volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);  // the scene volume's, for the frame's passes
+    bool updateWaits = report.updateDone < 1.0f, refinementWaits = report.refining || innerUpdating;
+    bool outerCompleted = report.updateCompleted;
+    const VoxelGi* outer = &gi;
+    for (int k = levels - 1; k >= 0; --k) {
+        std::unique_ptr<VoxelGi>& level = nearGi[static_cast<std::size_t>(k)];
+        if (!level) level = std::make_unique<VoxelGi>(shaderRoot, profiler, log, VoxelGiLevel::Near);
+        GiBudget levelBudget = budget;
+        if (updateWaits)
+            levelBudget = {1, 0, 0.0};  // the least a spread update takes: one voxel
+        else if (refinementWaits)
+            levelBudget.refineVoxels = 0;
+        // An update of the volume outside that completed re-lights this level as a light edit does.
+        const GiFrameReport near = level->update({scene, *gpuScene, nearLevelBox(camera.position, nearLevelSide(settings, k)),
+                                                  ShadowKinds::of(lights), shadowsDirty || outerCompleted, frameIndex,
+                                                  outer, &gi},
+                                                 settings, levelBudget, counters);
+        nearUpdating[static_cast<std::size_t>(k)] = near.updateDone < 1.0f;
+        updateWaits = updateWaits || near.updateDone < 1.0f;
+        refinementWaits = refinementWaits || near.refining;
+        outerCompleted = near.updateCompleted;
+        outer = level.get();
         report.voxelized = report.voxelized || near.voxelized;
         report.injected = report.injected || near.injected;
         report.lightChanged = report.lightChanged || near.lightChanged;
         if (near.updateDone < report.updateDone) {
             report.updateDone = near.updateDone;
-            report.updateStage = "near " + near.updateStage;
+            report.updateStage = "near " + std::to_string(k + 1) + ": " + near.updateStage;
         }
         report.refining = report.refining || near.refining;
         report.refinedVoxels += near.refinedVoxels;
-    } else if (nearGi) {
-        nearGi.reset();  // its volumes' memory back
-        nearUpdating = false;
     }
+    if (levels > 0) gi.volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);  // the scene volume's, for the frame's passes
     if (report.lightChanged) resolve.resetHistory();  // accumulated indirect light is stale
     stats.voxelized = report.voxelized;
     stats.voxelizedBoxes = report.voxelizedBoxes;
@@ -463,17 +478,28 @@ void Renderer::Impl::updateGi(const Scene& scene, const CameraView& camera, cons
     stats.giShowingPrevious = report.showingPrevious;
 }
 
+float Renderer::Impl::nearLevelSide(const RenderSettings& settings, int level) {
+    return std::ldexp(settings.gi.nearLevelSide, level);
+}
+
 const RenderSettings& Renderer::Impl::withNearLevelFitted(const RenderSettings& requested) {
-    if (!requested.gi.nearLevel() || bounds.empty()) return requested;
+    const int asked = requested.gi.nearLevelCount();
+    if (asked == 0 || bounds.empty()) return requested;
     const glm::vec3 extent = bounds.max - bounds.min;
-    if (requested.gi.nearLevelSide < 0.5f * std::max({extent.x, extent.y, extent.z})) return requested;
+    const float across = std::max({extent.x, extent.y, extent.z});
+    int levels = 0;
+    while (levels < asked && nearLevelSide(requested, levels) < 0.5f * across) ++levels;
+    if (levels == asked) return requested;
     nearLevelFitted = requested;
-    nearLevelFitted.gi.nearLevelSide = 0.0f;
+    nearLevelFitted.gi.nearLevels = levels;
     return nearLevelFitted;
 }
 
 std::size_t Renderer::Impl::giBytes(const RenderSettings& settings) const {
-    return gi.bytes() + (settings.gi.nearLevel() && nearGi ? nearGi->bytes() : 0);
+    std::size_t bytes = gi.bytes();
+    for (int k = 0; k < settings.gi.nearLevelCount() && k < static_cast<int>(nearGi.size()); ++k)
+        if (nearGi[static_cast<std::size_t>(k)]) bytes += nearGi[static_cast<std::size_t>(k)]->bytes();
+    return bytes;
 }
 
 // L_DD + L_DS from the lights and their shadow maps, then L_ID + L_IS from the voxel GI.
@@ -538,7 +564,8 @@ void Renderer::Impl::traceIndirect(const Scene& scene, const RenderSettings& set
     {
         Profiler::Scope scope(profiler, "cone trace");
         gi.bindGather(settings);
-        if (settings.gi.nearLevel() && nearGi) nearGi->bindAsNearLevel();
+        for (int k = 0; k < settings.gi.nearLevelCount() && k < static_cast<int>(nearGi.size()); ++k)
+            nearGi[static_cast<std::size_t>(k)]->bindAsNearLevel(k);
         coneTrace.executeReduced(volume, settings, sampling, layers);
     }
     waitForQueuedPasses();  // the resolve samples the low-resolution trace

@@ -265,42 +265,66 @@ bool gathersChange() { return false; }
 #define LIT_NEAR_LEVEL 0
 #endif
 #if LIT_NEAR_LEVEL
-// The near level (docs/GI.md, "Near level"): a ray that leaves it goes on through the scene's
-// volume, from the point where it left, to the first occupied voxel of that volume's level 0 (a
-// cube there: the scene volume's surfaces are not bound), and takes its radiance, which holds every
-// bounce the scene volume's update gathered; past that volume, the sky. That light does not change
-// while the near level's update runs (the scene volume updates first), so a later bounce's change
-// gathers none of it (rayHitChange).
+// A near level (docs/GI.md, "Near levels"): a ray that leaves it goes on, from the point where it
+// left, through the next volume out (the next near level, or the scene's volume), then through the
+// scene's volume, each time stepped through the volume's level 0 (with the same empty-block
+// skipping) to its first occupied voxel (a cube there: those volumes' surfaces are not bound),
+// whose radiance it takes; past the scene's volume, the sky. Those volumes updated first, so their
+// level 0 holds every bounce they gathered, and their light does not change while this level's
+// update runs: a later bounce's change gathers none of it (rayHitChange).
 layout(std140, binding = LIT_UBO_OUTER_VOXEL) uniform OuterVoxelBlock {
     VoxelUniforms outerVoxel;
 };
+layout(std140, binding = LIT_UBO_FAR_VOXEL) uniform FarVoxelBlock {
+    VoxelUniforms farVoxel;
+};
 layout(binding = LIT_TEX_OUTER_RADIANCE) uniform sampler3D outerRadianceTexture;
+layout(binding = LIT_TEX_FAR_RADIANCE) uniform sampler3D farRadianceTexture;
 
-vec3 outerRayRadiance(vec3 origin, vec3 dir) {
-    vec3 d = mix(dir, vec3(1e-7), lessThan(abs(dir), vec3(1e-7)));
+// Marches `volume`'s level 0 (`radiance`) from `origin` along `d` (unit, no zero component): true
+// with the first occupied voxel's radiance in `found`, else false with `leave` the distance (m)
+// from `origin` at which the ray leaves the volume (0 when it starts outside and never enters).
+bool marchLevel0(sampler3D radiance, VoxelUniforms volume, vec3 origin, vec3 d, out vec3 found, out float leave) {
+    found = vec3(0.0);
+    int n = int(volume.voxelInfo.x);
     vec3 inv = 1.0 / d;
-    // Where the ray leaves the near level (world units from origin).
-    vec3 nearLo = (voxel.volumeMin.xyz - origin) * inv, nearHi = (voxel.volumeMin.xyz + voxel.volumeMin.w - origin) * inv;
-    float leave = max(min(max(nearLo.x, nearHi.x), min(max(nearLo.y, nearHi.y), max(nearLo.z, nearHi.z))), 0.0);
-    int n = int(outerVoxel.voxelInfo.x);
-    vec3 g0 = (origin + leave * d - outerVoxel.volumeMin.xyz) / outerVoxel.voxelInfo.z;
+    vec3 g0 = (origin - volume.volumeMin.xyz) / volume.voxelInfo.z;
     vec3 t1 = -g0 * inv, t2 = (vec3(float(n)) - g0) * inv;
     float t = max(max(min(t1.x, t2.x), max(min(t1.y, t2.y), min(t1.z, t2.z))), 0.0) + 1e-4;
     float tLeave = min(max(t1.x, t2.x), min(max(t1.y, t2.y), max(t1.z, t2.z)));
+    leave = max(tLeave, 0.0) * volume.voxelInfo.z;
     vec3 exitSide = vec3(greaterThan(d, vec3(0.0)));
     for (int i = 0; i < kRayMaxSteps && t < tLeave; ++i) {
         ivec3 cell = clamp(ivec3(floor(g0 + t * d)), ivec3(0), ivec3(n - 1));
-        bool coarseEmpty = texelFetch(outerRadianceTexture, cell >> kRaySkipLevelCoarse, kRaySkipLevelCoarse).a == 0.0;
-        bool blockEmpty = coarseEmpty || texelFetch(outerRadianceTexture, cell >> kRaySkipLevel, kRaySkipLevel).a == 0.0;
+        bool coarseEmpty = texelFetch(radiance, cell >> kRaySkipLevelCoarse, kRaySkipLevelCoarse).a == 0.0;
+        bool blockEmpty = coarseEmpty || texelFetch(radiance, cell >> kRaySkipLevel, kRaySkipLevel).a == 0.0;
         if (!blockEmpty) {
-            vec4 s = texelFetch(outerRadianceTexture, cell, 0);
-            if (s.a > 0.0) return s.rgb / s.a * outerVoxel.radianceScale.y;
+            vec4 s = texelFetch(radiance, cell, 0);
+            if (s.a > 0.0) {
+                found = s.rgb / s.a * volume.radianceScale.y;
+                return true;
+            }
         }
         float size = coarseEmpty ? float(1 << kRaySkipLevelCoarse) : (blockEmpty ? float(1 << kRaySkipLevel) : 1.0);
         vec3 corner = floor(vec3(cell) / size) * size;
         vec3 tExit = (corner + exitSide * size - g0) * inv;
         t = min(tExit.x, min(tExit.y, tExit.z)) + 1e-3;
     }
+    return false;
+}
+
+vec3 outerRayRadiance(vec3 origin, vec3 dir) {
+    vec3 d = mix(dir, vec3(1e-7), lessThan(abs(dir), vec3(1e-7)));
+    vec3 inv = 1.0 / d;
+    // Where the ray leaves this level (m from origin).
+    vec3 lo = (voxel.volumeMin.xyz - origin) * inv, hi = (voxel.volumeMin.xyz + voxel.volumeMin.w - origin) * inv;
+    vec3 p = origin + max(min(max(lo.x, hi.x), min(max(lo.y, hi.y), max(lo.z, hi.z))), 0.0) * d;
+    vec3 found;
+    float leave;
+    if (marchLevel0(outerRadianceTexture, outerVoxel, p, d, found, leave)) return found;
+    // From where it left the next volume out (when that is the scene's, it starts at its face and
+    // never enters).
+    if (marchLevel0(farRadianceTexture, farVoxel, p + leave * d, d, found, leave)) return found;
     return skyRadiance(dir);
 }
 #endif

@@ -223,10 +223,13 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
     if (s.gi.voxelIrradiance()) {
         changed |= ImGui::DragFloat("Near level side", &s.gi.nearLevelSide, 1.0f, 0.0f, 4096.0f,
                                     s.gi.nearLevelSide <= 0.0f ? "off" : "%.0f m");
-        tooltip("A second volume of the same resolution, a cube of this side (metres) around the camera, moved in\n"
-                "eighths of its side: pixels inside it gather its finer voxels' light, and its voxels' rays\n"
-                "continue in the scene's volume where they leave it. Runs only in scenes at least twice as large\n"
-                "across; 0 = off (docs/GI.md, \"Near level\")");
+        tooltip("The finest near level's side (metres): a second volume of the same resolution around the camera,\n"
+                "moved in eighths of its side; pixels inside it gather its finer voxels' light, and its voxels' rays\n"
+                "continue in the volumes outside it. Each further level is twice as large. A level runs only in\n"
+                "scenes at least twice its side across; 0 = off (docs/GI.md, \"Near levels\")");
+        changed |= ImGui::SliderInt("Near levels", &s.gi.nearLevels, 0, kMaxNearLevels, s.gi.nearLevels == 0 ? "off" : "%d");
+        tooltip("How many near levels (count, 0..3): the finest of Near level side, each next twice as large;\n"
+                "each costs a volume's memory and update");
     }
     if (s.gi.voxelIrradiance()) {
         ImGui::DragInt("Update voxels / frame", &viewport.giUpdateVoxelsPerFrame, 256.0f, 0, 1 << 24,

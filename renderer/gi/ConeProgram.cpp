@@ -10,7 +10,7 @@ namespace lit {
 
 ConeFeatures ConeFeatures::of(const RenderSettings& settings, bool materialLayers) {
     return {settings.gi.anisotropicVoxels(), settings.gi.footprintPerHeight() > 0.0f, settings.gi.voxelIrradiance(),
-            std::clamp(settings.gi.voxelRays, 0, kMaxVoxelRays), materialLayers, settings.gi.nearLevel(), false};
+            std::clamp(settings.gi.voxelRays, 0, kMaxVoxelRays), materialLayers, settings.gi.nearLevelCount(), false};
 }
 
 std::string ConeFeatures::defines() const {
@@ -19,7 +19,7 @@ std::string ConeFeatures::defines() const {
     };
     return define("LIT_CONE_ANISOTROPIC", anisotropic) + define("LIT_CONE_FOOTPRINT", footprint) +
            define("LIT_VOXEL_IRRADIANCE", voxelIrradiance) + define("LIT_VOXEL_RAYS", voxelRays > 0) +
-           MaterialLayersVariant{materialLayers}.defines() + define("LIT_NEAR_GATHER", nearGather) +
+           MaterialLayersVariant{materialLayers}.defines() + "#define LIT_NEAR_GATHER " + std::to_string(nearGatherLevels) + "\n" +
            define("LIT_NEAR_LEVEL", nearLevel);
 }
 
@@ -34,7 +34,7 @@ std::string ConeFeatures::label() const {
     if (anisotropic) suffix += " (anisotropic)";
     if (footprint) suffix += " (footprint)";
     if (voxelRays > 0) suffix += " (voxel rays)";
-    if (nearGather) suffix += " (near gather)";
+    if (nearGatherLevels > 0) suffix += " (near gather " + std::to_string(nearGatherLevels) + ")";
     if (nearLevel) suffix += " (near level)";
     return suffix + MaterialLayersVariant{materialLayers}.label();
 }

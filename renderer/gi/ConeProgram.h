@@ -31,11 +31,11 @@ struct ConeFeatures {
     // The passes that light the G-buffer: whether the scene's materials have specular layers
     // (MaterialLayersVariant, passes/MaterialLayersVariant.h); the voxel passes leave it on.
     bool materialLayers = true;
-    // The cached mode's near level (GiSettings::nearLevel(), docs/GI.md "Near level"): the pixel
-    // passes gather from the near level's voxels inside it (LIT_NEAR_GATHER) ...
-    bool nearGather = false;
-    // ... and the near level's own voxel passes continue a ray that leaves it in the scene's
-    // volume (LIT_NEAR_LEVEL); VoxelGi sets it for the near level's passes.
+    // The cached mode's near levels (GiSettings::nearLevelCount(), docs/GI.md "Near levels"): the
+    // pixel passes gather from this many near levels' voxels (LIT_NEAR_GATHER) ...
+    int nearGatherLevels = 0;
+    // ... and a near level's own voxel passes continue a ray that leaves it in the next volume out,
+    // then the scene's (LIT_NEAR_LEVEL); VoxelGi sets it for a near level's passes.
     bool nearLevel = false;
 
     // `materialLayers`: the scene's (GpuScene::hasMaterialLayers), for the passes that light the G-buffer.
@@ -44,7 +44,7 @@ struct ConeFeatures {
     std::string label() const;  // " (anisotropic)" ..., for the program's name
     int index() const {
         return (anisotropic ? 1 : 0) + (footprint ? 2 : 0) + (voxelIrradiance ? 4 : 0) + (voxelRays > 0 ? 8 : 0) +
-               (materialLayers ? 16 : 0) + (nearGather ? 32 : 0) + (nearLevel ? 64 : 0);
+               (materialLayers ? 16 : 0) + 32 * nearGatherLevels + (nearLevel ? 128 : 0);
     }
     bool operator==(const ConeFeatures&) const = default;
 };
@@ -64,7 +64,7 @@ public:
     void appendBuilt(std::vector<gl::Program*>& out) { variants_.appendBuilt(out); }
 
 private:
-    gl::ProgramVariants<128> variants_;  // by ConeFeatures::index()
+    gl::ProgramVariants<256> variants_;  // by ConeFeatures::index()
 };
 
 }  // namespace lit

@@ -32,14 +32,14 @@ VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Lo
 
 ConeFeatures VoxelGi::featuresFor(const RenderSettings& settings) const {
     ConeFeatures features = ConeFeatures::of(settings);
-    features.nearGather = false;  // the pixels' gather; the voxel passes trace their own
+    features.nearGatherLevels = 0;  // the pixels' gather; the voxel passes trace their own
     features.nearLevel = level_ == VoxelGiLevel::Near;
     return features;
 }
 
-void VoxelGi::bindAsNearLevel() const {
-    irradianceCache_.shownTexels().bind(LIT_TEX_NEAR_IRRADIANCE);
-    shownUniforms_.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_NEAR_VOXEL);
+void VoxelGi::bindAsNearLevel(int index) const {
+    irradianceCache_.shownTexels().bind(static_cast<GLuint>(LIT_TEX_NEAR_IRRADIANCE_FIRST + index));
+    shownUniforms_.bindBase(GL_UNIFORM_BUFFER, static_cast<GLuint>(LIT_UBO_NEAR_VOXEL_FIRST + index));
 }
 
 std::vector<Pass*> VoxelGi::passes() { return {&voxelize_, &solid_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_}; }
@@ -89,11 +89,13 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     const bool reallocated = volume_.ensure(settings.gi.voxelResolution, settings.gi.radianceRgba8, log_);
     const bool moved = volume_.fitTo(frame.bounds);
     volume_.updateUniforms(settings, frame.frameIndex);
-    if (frame.outer) {
-        // The near level's rays continue in the scene's volume where they leave this one.
-        const VoxelVolume& outer = frame.outer->volume();
-        outer.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_OUTER_VOXEL);
-        outer.radiance().bind(LIT_TEX_OUTER_RADIANCE);
+    if (frame.outer && frame.far) {
+        // A near level's rays continue in the next volume out, then in the scene's, where they
+        // leave this one.
+        frame.outer->volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_OUTER_VOXEL);
+        frame.outer->volume().radiance().bind(LIT_TEX_OUTER_RADIANCE);
+        frame.far->volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FAR_VOXEL);
+        frame.far->volume().radiance().bind(LIT_TEX_FAR_RADIANCE);
     }
     const VoxelKey voxels{frame.scene.geometryRevision, frame.scene.materialRevision, &frame.scene};
     const GiLightKey light = GiLightKey::of(settings);

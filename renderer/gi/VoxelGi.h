@@ -62,8 +62,9 @@ struct GiFrameReport {
     bool showingPrevious = false;
 };
 
-// Which volume a VoxelGi fills: the one around the whole scene, or the cached mode's near level
-// around the camera, whose voxel rays continue in the scene's volume (docs/GI.md, "Near level").
+// Which volume a VoxelGi fills: the one around the whole scene, or one of the cached mode's near
+// levels around the camera, whose voxel rays continue in the volumes outside it (docs/GI.md,
+// "Near levels").
 enum class VoxelGiLevel { Scene, Near };
 
 class VoxelGi {
@@ -79,8 +80,10 @@ public:
         ShadowKinds shadows;        // the kinds of shadow map the light table uses
         bool shadowsDirty = false;  // the lights or their shadow maps changed this frame
         int frameIndex = 0;         // sample pattern index (turns with temporal accumulation)
-        // The near level: the scene's volume, updated this frame before it, where its rays continue.
+        // A near level: the next volume out and the scene's volume, both updated this frame before
+        // it, where its rays continue (outer may be far).
         const VoxelGi* outer = nullptr;
+        const VoxelGi* far = nullptr;
     };
     // Brings the volumes up to date with `settings` as far as `budget` allows this frame (a time
     // budget is turned into voxel counts by what the spread work cost in earlier frames). The
@@ -98,9 +101,9 @@ public:
     std::uint64_t generation() const { return generation_; }
     // Binds what the per-pixel gather reads in the cached mode (the irradiance gather texels).
     void bindGather(const RenderSettings& settings) const;
-    // The near level: binds what the pixels gather from it (LIT_NEAR_GATHER: its gather texels and
-    // its placement, LIT_TEX_NEAR_IRRADIANCE and LIT_UBO_NEAR_VOXEL).
-    void bindAsNearLevel() const;
+    // Near level `index` (0 the finest): binds what the pixels gather from it (LIT_NEAR_GATHER: its
+    // gather texels and their placement, LIT_TEX_NEAR_IRRADIANCE_FIRST and LIT_UBO_NEAR_VOXEL_FIRST + index).
+    void bindAsNearLevel(int index) const;
     // GPU memory of the volumes and caches, bytes.
     std::size_t bytes() const;
 
@@ -171,7 +174,7 @@ private:
     std::uint64_t injections_ = 0;            // injections so far
     std::uint64_t bounceStartInjections_ = 0;  // injections_ when the spread bounce under way started
     std::uint64_t generation_ = 0;
-    // The near level: the placement (VoxelUniforms) of the texels the pixels gather, which after a
+    // A near level: the placement (VoxelUniforms) of the texels the pixels gather, which after a
     // move is the old one until the moved level's update completes.
     gl::Buffer shownUniforms_;
     // The update waiting for its GPU timings to be logged: why it ran, in which frame.

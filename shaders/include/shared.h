@@ -20,8 +20,10 @@ using mat4 = glm::mat4;
 #define LIT_UBO_FRAME 0        // FrameUniforms: camera, viewport, exposure, view mode
 #define LIT_UBO_SHADOW_PASS 1  // ShadowPassUniforms: the light view being rendered
 #define LIT_UBO_VOXEL 2        // VoxelUniforms: where the voxel volume is and how to trace it
-#define LIT_UBO_NEAR_VOXEL 3   // VoxelUniforms of the near level, for the pixels' gather (LIT_NEAR_GATHER)
-#define LIT_UBO_OUTER_VOXEL 4  // VoxelUniforms of the scene's volume, for the near level's rays (LIT_NEAR_LEVEL)
+#define LIT_UBO_OUTER_VOXEL 3  // VoxelUniforms of the next volume out, for a near level's rays (LIT_NEAR_LEVEL)
+#define LIT_UBO_FAR_VOXEL 4    // VoxelUniforms of the scene's volume, for a near level's rays (LIT_NEAR_LEVEL)
+#define LIT_MAX_NEAR_LEVELS 3  // near levels at most (kMaxNearLevels)
+#define LIT_UBO_NEAR_VOXEL_FIRST 5  // VoxelUniforms of near level k at FIRST + k, for the pixels' gather (LIT_NEAR_GATHER)
 
 // ---- Shader storage buffer binding points ------------------------------------------------
 #define LIT_SSBO_LIGHTS 0      // GpuLight[lightCount]
@@ -108,11 +110,13 @@ using mat4 = glm::mat4;
 // sheet's linear depth (0 at the near plane, 1 at the far plane).
 #define LIT_TEX_SHADOW_SHEETS 34
 #define LIT_TEX_SHADOW_SHEETS_CUBE 35  // the same per cube face of a point light (RGBA16F cube array)
-// The cached mode's near level (docs/GI.md, "Near level"): the pixels gather its gather texels
-// (LIT_NEAR_GATHER), its own voxel rays continue in the scene volume's radiance (LIT_NEAR_LEVEL).
-#define LIT_TEX_NEAR_IRRADIANCE 36
-#define LIT_TEX_OUTER_RADIANCE 37
-#define LIT_TEX_UNIT_COUNT 38  // units 0 .. this − 1 are bound (Capabilities.cpp)
+// The cached mode's near levels (docs/GI.md, "Near levels"): a near level's voxel rays continue in
+// the next volume out's radiance, then the scene volume's (LIT_NEAR_LEVEL); the pixels gather near
+// level k's gather texels from FIRST + k (LIT_NEAR_GATHER).
+#define LIT_TEX_OUTER_RADIANCE 36
+#define LIT_TEX_FAR_RADIANCE 37
+#define LIT_TEX_NEAR_IRRADIANCE_FIRST 38
+#define LIT_TEX_UNIT_COUNT (LIT_TEX_NEAR_IRRADIANCE_FIRST + LIT_MAX_NEAR_LEVELS)  // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0

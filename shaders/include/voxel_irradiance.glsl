@@ -61,15 +61,16 @@ vec3 gatherTexelsAround(usampler3D texels, vec3 volumeMin, float voxelSize, int 
     return sum;
 }
 
-#if LIT_NEAR_GATHER
-// The near level (docs/GI.md, "Near level"): its placement and gather texels.
-layout(std140, binding = LIT_UBO_NEAR_VOXEL) uniform NearVoxelBlock {
-    VoxelUniforms nearVoxel;
-};
-layout(binding = LIT_TEX_NEAR_IRRADIANCE) uniform usampler3D nearGatherTexels;
-// Voxels from the near level's faces where its gather starts to count, and over how many it
-// reaches full weight: the outermost voxels' rays left the level at once, and the blend hides
-// the step between the two levels' voxel sizes.
+#if LIT_NEAR_GATHER > 0
+// The near levels (docs/GI.md, "Near levels"), 0 the finest: the placement of the gather texels
+// shown and the texels.
+layout(std140, binding = LIT_UBO_NEAR_VOXEL_FIRST) uniform NearVoxelBlock {
+    VoxelUniforms placement;
+} nearVoxel[LIT_NEAR_GATHER];
+layout(binding = LIT_TEX_NEAR_IRRADIANCE_FIRST) uniform usampler3D nearGatherTexels[LIT_NEAR_GATHER];
+// Voxels from a near level's faces where its gather starts to count, and over how many it reaches
+// full weight: the outermost voxels' rays left the level at once, and the blend hides the step
+// between two levels' voxel sizes.
 const float kNearGatherMargin = 3.0;
 const float kNearGatherBlend = 4.0;
 #endif
@@ -80,23 +81,27 @@ vec3 gatherVoxelIrradiance(vec3 position, vec3 n, out bool nothing) {
                                   position, n, weightSum);
     vec3 irradiance = weightSum > 0.0 ? sum / weightSum : vec3(0.0);
     nothing = !(weightSum > 0.0);
-#if LIT_NEAR_GATHER
-    // Inside the near level its finer voxels' light replaces the scene volume's, blended in over
-    // kNearGatherBlend voxels; where it gathers nothing (not traced yet, just moved) the scene
-    // volume's stands.
-    vec3 inNear = (position - nearVoxel.volumeMin.xyz) / nearVoxel.voxelInfo.z;
-    float fromFace = min(min(min(inNear.x, inNear.y), inNear.z),
-                         min(min(nearVoxel.voxelInfo.x - inNear.x, nearVoxel.voxelInfo.x - inNear.y), nearVoxel.voxelInfo.x - inNear.z));
-    float blend = clamp((fromFace - kNearGatherMargin) / kNearGatherBlend, 0.0, 1.0);
-    float nearWeightSum;
-    vec3 nearSum = gatherTexelsAround(nearGatherTexels, nearVoxel.volumeMin.xyz, nearVoxel.voxelInfo.z,
-                                      int(nearVoxel.voxelInfo.x), position, n, nearWeightSum);
-    if (blend > 0.0 && nearWeightSum > 0.0) {
-        vec3 nearIrradiance = nearSum / nearWeightSum;
-        irradiance = nothing ? nearIrradiance : mix(irradiance, nearIrradiance, blend);
-        nothing = false;
+#if LIT_NEAR_GATHER > 0
+    // From the scene volume inwards, each near level's finer light replaces the coarser one's,
+    // blended in over kNearGatherBlend voxels inside its faces; where a level gathers nothing (not
+    // traced yet) the coarser light stands.
+    for (int k = LIT_NEAR_GATHER - 1; k >= 0; --k) {
+        VoxelUniforms level = nearVoxel[k].placement;
+        vec3 inLevel = (position - level.volumeMin.xyz) / level.voxelInfo.z;
+        float fromFace = min(min(min(inLevel.x, inLevel.y), inLevel.z),
+                             min(min(level.voxelInfo.x - inLevel.x, level.voxelInfo.x - inLevel.y), level.voxelInfo.x - inLevel.z));
+        float blend = clamp((fromFace - kNearGatherMargin) / kNearGatherBlend, 0.0, 1.0);
+        float levelWeightSum;
+        vec3 levelSum = gatherTexelsAround(nearGatherTexels[k], level.volumeMin.xyz, level.voxelInfo.z,
+                                           int(level.voxelInfo.x), position, n, levelWeightSum);
+        if (blend > 0.0 && levelWeightSum > 0.0) {
+            vec3 levelIrradiance = levelSum / levelWeightSum;
+            irradiance = nothing ? levelIrradiance : mix(irradiance, levelIrradiance, blend);
+            nothing = false;
+        }
     }
 #endif
     return irradiance;
 }
+
 #endif

@@ -1,5 +1,5 @@
-// The cached mode's near level (GiSettings::nearLevelSide, docs/GI.md "Near level"): a second
-// volume around the camera whose rays continue in the scene's volume, on the generated city
+// The cached mode's near levels (GiSettings::nearLevelSide, nearLevels; docs/GI.md "Near levels"):
+// volumes around the camera whose rays continue in the volumes outside them, on the generated city
 // (assets/gi/city.gltf, 640 m across, 14 m streets), against the reference with every bounce.
 #include <cstdio>
 #include <vector>
@@ -39,8 +39,9 @@ double maskedLuminance(const std::vector<float>& rgb, const reference::PixelMask
 
 // At 128³ the city's voxels are 5.3 m, a third of a street: with one volume the pixels lit only
 // by bounced light read 0.63 of the reference (docs/tables/gi-accuracy.md). The default 64 m near
-// level (0.5 m voxels) brings them to 0.93. Bar: ±20 %, the large-scene bar; the single volume must
-// stay outside it, or the test no longer tells what the near level adds. ~8 s.
+// level (0.5 m voxels) brings them to 0.93, levels of 32 m and 64 m to 0.92. Bar: ±20 %, the
+// large-scene bar; the single volume must stay outside it, or the test no longer tells what the
+// near levels add. ~12 s.
 TEST_F(NearLevel, CityStreetsBouncedLightMatchesTheReference) {
     const Scene scene = loadCity();
     RenderSettings settings;  // the defaults: the cached mode, 128³, every bounce, the near level
@@ -66,20 +67,28 @@ TEST_F(NearLevel, CityStreetsBouncedLightMatchesTheReference) {
     ASSERT_GT(truthSum, 0.0);
 
     const double near = maskedLuminance(indirect(scene, settings), bounced) / truthSum;
-    settings.gi.nearLevelSide = 0.0f;
+    // Two levels, 32 m and 64 m: the finer one's rays continue through the 64 m level, then the
+    // scene's volume.
+    settings.gi.nearLevelSide = 32.0f;
+    settings.gi.nearLevels = 2;
+    const double two = maskedLuminance(indirect(scene, settings), bounced) / truthSum;
+    settings.gi.nearLevels = 0;
     const double single = maskedLuminance(indirect(scene, settings), bounced) / truthSum;
-    std::printf("city, 128³: bounced light ÷ the reference's: %.3f with one volume, %.3f with the 64 m near level\n",
-                single, near);
+    std::printf("city, 128³: bounced light ÷ the reference's: %.3f with one volume, %.3f with the 64 m near level, "
+                "%.3f with levels of 32 m and 64 m\n",
+                single, near, two);
     EXPECT_NEAR(near, 1.0, 0.2);
+    EXPECT_NEAR(two, 1.0, 0.2);
     EXPECT_LT(single, 0.8);
 }
 
-// A scene smaller than twice the near level's side runs without it: the Cornell box renders the
-// same with it asked for as without. ~2 s.
+// A scene smaller than twice a near level's side runs without it: the Cornell box renders the
+// same with three levels asked for as without. ~2 s.
 TEST_F(NearLevel, SmallScenesRunWithoutIt) {
     const Scene scene = loadCornellBox();
     RenderSettings settings;
     settings.gi.voxelResolution = 64;
+    settings.gi.nearLevels = 3;
     settings.output.width = 64;
     settings.output.height = 64;
     const HdrImage asked = render(scene, settings);
