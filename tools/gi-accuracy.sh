@@ -17,7 +17,7 @@
 #   GI_SPP          reference samples/pixel   (default: 256)
 #   GI_SIZE         image side in pixels      (default: 128)
 #   GI_BOUNCES      light bounces of the VCT and the reference (default: all, the renderer's default)
-#   GI_SCENES       comma-separated subset: cornell_box,sealed_room,thin_walls,glossy_floor,city,city_one_volume,sponza;
+#   GI_SCENES       comma-separated subset: cornell_box,sealed_room,thin_walls,glossy_floor,city,city_one_volume,city_two_levels,sponza;
 #                   the diagnostic Cornell variants cornell_room,cornell_mirrored,cornell_swapped
 #                   (assets/gi) run only when named here
 #   GI_OUT          the markdown file written (default: <repo>/docs/tables/gi-accuracy.md)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 namespace lit {
 
@@ -11,11 +12,18 @@ namespace {
 constexpr std::size_t kMaxWaiting = 16;
 }  // namespace
 
-double spreadGiMs(const std::vector<PassTiming>& timings) {
+double spreadGiMs(const std::vector<PassTiming>& timings, SpreadWork which) {
+    const auto spread = [](std::string_view name) {
+        return name == "bounces" || name == "voxel irradiance" || name == "voxel irradiance filter";
+    };
     double ms = 0.0;
-    for (const PassTiming& t : timings)
-        if (t.ran && (t.name == "bounces" || t.name == "voxel irradiance" || t.name == "voxel irradiance filter"))
-            ms += t.gpuMs;
+    for (const PassTiming& t : timings) {
+        if (!t.ran) continue;
+        const std::string_view name = t.name;
+        const bool near = name.starts_with("near ");
+        const bool counted = which == SpreadWork::All || (which == SpreadWork::NearLevels) == near;
+        if (counted && spread(near ? name.substr(5) : name)) ms += t.gpuMs;
+    }
     return ms;
 }
 

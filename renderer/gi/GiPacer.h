@@ -20,9 +20,11 @@
 
 namespace lit {
 
+// Whose spread GI passes: the scene volume's, the near levels' ("near bounces", ...), or both.
+enum class SpreadWork { SceneVolume, NearLevels, All };
 // The GPU time of the spread GI passes (the bounces, the voxel irradiance and its filter) among
 // one frame's timings: what GiBudget::milliseconds bounds.
-double spreadGiMs(const std::vector<PassTiming>& timings);
+double spreadGiMs(const std::vector<PassTiming>& timings, SpreadWork which = SpreadWork::All);
 
 class GiPacer {
 public:

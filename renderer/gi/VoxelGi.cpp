@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
+#include <utility>
 
 #include "scene/Scene.h"
 
@@ -29,6 +31,19 @@ VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Lo
       irradiance_(shaderRoot),
       filter_(shaderRoot),
       shownUniforms_("near level shown placement", sizeof(gpu::VoxelUniforms), nullptr, 0) {}
+
+const char* VoxelGi::step(const char* name) const {
+    // The profiler's names of a near level's steps: the overlay, the logs and the pacers tell them apart.
+    static constexpr std::pair<const char*, const char*> kNearNames[] = {
+        {"voxelize", "near voxelize"},   {"solid voxels", "near solid voxels"},
+        {"mip lists", "near mip lists"}, {"inject", "near inject"},
+        {"mipmap", "near mipmap"},       {"bounces", "near bounces"},
+        {"voxel irradiance", "near voxel irradiance"}, {"voxel irradiance filter", "near voxel irradiance filter"}};
+    if (level_ == VoxelGiLevel::Scene) return name;
+    for (const auto& [scene, near] : kNearNames)
+        if (std::strcmp(scene, name) == 0) return near;
+    return name;
+}
 
 ConeFeatures VoxelGi::featuresFor(const RenderSettings& settings) const {
     ConeFeatures features = ConeFeatures::of(settings);
@@ -77,7 +92,8 @@ void VoxelGi::measureSpreadWork() {
     for (const std::vector<PassTiming>& timings : profiler_.recentFrames()) {
         if (timings.empty() || timings.front().frame <= lastMeasuredFrame_) continue;
         lastMeasuredFrame_ = timings.front().frame;
-        pacer_.measured(lastMeasuredFrame_, spreadGiMs(timings));
+        pacer_.measured(lastMeasuredFrame_,
+                        spreadGiMs(timings, level_ == VoxelGiLevel::Near ? SpreadWork::NearLevels : SpreadWork::SceneVolume));
     }
 }
 
@@ -131,12 +147,12 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                      light.untilConverged && before.light.bounces > 1 && before.listComplete && volume_.direct() &&
                      scheduler_.spreadsOverFrames(light, budget);
     if (warmStart) {
-        Profiler::Scope scope(profiler_, "bounces");
+        Profiler::Scope scope(profiler_, step("bounces"));
         bounce_.keepIndirect(volume_);
     }
     if (changes.voxelize) {
         {
-            Profiler::Scope scope(profiler_, "voxelize");
+            Profiler::Scope scope(profiler_, step("voxelize"));
             if (boxes) {
                 voxelize_.executeBoxes(frame.scene, frame.gpuScene, volume_, *boxes, items, counters);
                 report.voxelizedBoxes = static_cast<int>(boxes->size());
@@ -151,12 +167,12 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         {
             // A column's walk reads that column only: after a voxelization of changed boxes, the
             // columns through them (their whole height: a box can open or close a solid above or below it).
-            Profiler::Scope scope(profiler_, "solid voxels");
+            Profiler::Scope scope(profiler_, step("solid voxels"));
             solid_.execute(volume_, boxes ? std::span<const VoxelBox>(*boxes) : std::span<const VoxelBox>());
         }
         {
             // Once per voxelization: the mip chain is then built over these (light edits too).
-            Profiler::Scope scope(profiler_, "mip lists");
+            Profiler::Scope scope(profiler_, step("mip lists"));
             mipmap_.listOccupiedParents(volume_);
         }
         ++generation_;
@@ -193,7 +209,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         ++injections_;
         const GiScheduler::UpdateStart start = scheduler_.startUpdate(changes, light, budget);
         {
-            Profiler::Scope scope(profiler_, "inject");
+            Profiler::Scope scope(profiler_, step("inject"));
             inject_.execute(volume_, {.overList = overList,
                                       .writeDirect = light.bounces > 1,
                                       .writeLevel0 = !start.keepLastUpdate,
@@ -210,7 +226,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         // only their occupancy): the direct light's own mip build is saved (docs/PERFORMANCE.md,
         // "GI update"). A voxelization of changed boxes cleared them.
         if (!start.keepLastUpdate || boxes) {
-            Profiler::Scope scope(profiler_, "mipmap");
+            Profiler::Scope scope(profiler_, step("mipmap"));
             mipmap_.execute(volume_, light.anisotropic, overList);
         }
         // An update that runs on keeps measuring its bounces' convergence (reset at every edit of a
@@ -221,7 +237,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         }
         pendingBounces_ = light.untilConverged ? 0 : light.bounces;
         if (start.bouncesNow > 0) {
-            Profiler::Scope scope(profiler_, "bounces");
+            Profiler::Scope scope(profiler_, step("bounces"));
             for (int b = 2; b <= start.bouncesNow + 1; ++b) {
                 const RayHits hits = rayHitsFor(features.voxelRays);
                 if (light.untilConverged) bounce_.resetChange();
@@ -313,7 +329,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
     if (progress.bounce > 0) {
         // A spread bounce: the last share ends it (level 0 and its mips); after the last bounce
         // the irradiance starts in the next frame.
-        Profiler::Scope scope(profiler_, "bounces");
+        Profiler::Scope scope(profiler_, step("bounces"));
         if (progress.bounceNext == 0) {
             bounceGathersChange_ = changeReady_;
             bounceStartInjections_ = injections_;
@@ -354,7 +370,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
                 mipmap_.execute(volume_, light.anisotropic, overList);
         }
     } else if (light.voxelIrradiance && progress.irradianceLeft > 0) {
-        Profiler::Scope scope(profiler_, "voxel irradiance");
+        Profiler::Scope scope(profiler_, step("voxel irradiance"));
         if (!scheduler_.spreadsOverFrames(light, budget)) {
             const RayHits hits = rayHitsFor(features.voxelRays);
             rayHitCache_.beginPass();
@@ -398,7 +414,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
     const bool timeLeft = !(budget.milliseconds > 0.0 && updateVoxels > 0.0);
     if (after.bounce == 0 && after.irradianceLeft == 0 && scheduler_.refinementLeft(light) && budget.refineVoxels > 0 &&
         timeLeft) {
-        Profiler::Scope scope(profiler_, "voxel irradiance");
+        Profiler::Scope scope(profiler_, step("voxel irradiance"));
         int rounds = 0;
         for (const GiScheduler::RefineShare& share : scheduler_.takeRefinement(budget.refineVoxels, rounds)) {
             irradiance_.trace(volume_, irradianceCache_, rayHitCache_, {features, true, share.range, share.setOffset});
@@ -410,7 +426,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
     if (filterAll || !traced.empty()) {
         // The voxels traced see their new values (and, once the update is complete, every voxel
         // its neighbours' new values: the result is then the all-at-once filter's exactly).
-        Profiler::Scope scope(profiler_, "voxel irradiance filter");
+        Profiler::Scope scope(profiler_, step("voxel irradiance filter"));
         if (filterAll) {
             filter_.execute(volume_, irradianceCache_, overList);
         } else {
@@ -439,10 +455,10 @@ std::size_t VoxelGi::bytes() const { return volume_.totalBytes() + irradianceCac
 
 void VoxelGi::reportUpdate() {
     if (pendingFrame_ == 0) return;
-    const PassTiming* injectTiming = profiler_.lastRun("inject");
+    const PassTiming* injectTiming = profiler_.lastRun(step("inject"));
     if (!injectTiming || injectTiming->frame < pendingFrame_) return;
-    const PassTiming* voxelizeTiming = profiler_.lastRun("voxelize");
-    const PassTiming* mipTiming = profiler_.lastRun("mipmap");
+    const PassTiming* voxelizeTiming = profiler_.lastRun(step("voxelize"));
+    const PassTiming* mipTiming = profiler_.lastRun(step("mipmap"));
     std::string text = std::string(level_ == VoxelGiLevel::Near ? "near level: " : "") +
                        (pendingVoxelize_ ? "re-voxelized " : "re-injected ");
     if (pendingVoxelize_ && pendingBoxes_ > 0)
@@ -450,10 +466,10 @@ void VoxelGi::reportUpdate() {
                 std::to_string(pendingBoxVoxels_) + " voxels) of ";
     text += std::to_string(volume_.resolution()) + "³ (" + pendingReason_ + "): ";
     if (pendingVoxelize_ && voxelizeTiming) text += "voxelize " + formatMs(voxelizeTiming->gpuMs) + ", ";
-    const PassTiming* solidTiming = profiler_.lastRun("solid voxels");
+    const PassTiming* solidTiming = profiler_.lastRun(step("solid voxels"));
     if (pendingVoxelize_ && solidTiming && solidTiming->frame >= pendingFrame_)
         text += "solid voxels " + formatMs(solidTiming->gpuMs) + ", ";
-    const PassTiming* listsTiming = profiler_.lastRun("mip lists");
+    const PassTiming* listsTiming = profiler_.lastRun(step("mip lists"));
     if (pendingVoxelize_ && listsTiming && listsTiming->frame >= pendingFrame_)
         text += "mip lists " + formatMs(listsTiming->gpuMs) + ", ";
     const GiState& state = scheduler_.state();
@@ -464,7 +480,7 @@ void VoxelGi::reportUpdate() {
                   state.listComplete ? "" : ", list overflowed: whole grid");
     text += occupancy;
     if (mipTiming) text += ", mipmap " + formatMs(mipTiming->gpuMs);
-    const PassTiming* bounceTiming = profiler_.lastRun("bounces");
+    const PassTiming* bounceTiming = profiler_.lastRun(step("bounces"));
     if (bounceTiming && bounceTiming->frame >= pendingFrame_) {
         // 0: every bounce, spread over frames (the count is known when the light converges).
         text += pendingBounces_ == 0
@@ -472,10 +488,10 @@ void VoxelGi::reportUpdate() {
                     : ", " + std::to_string(pendingBounces_ - 1) + " more bounce" + (pendingBounces_ > 2 ? "s " : " ");
         text += formatMs(bounceTiming->gpuMs);
     }
-    const PassTiming* irradianceTiming = profiler_.lastRun("voxel irradiance");
+    const PassTiming* irradianceTiming = profiler_.lastRun(step("voxel irradiance"));
     if (irradianceTiming && irradianceTiming->frame >= pendingFrame_)
         text += ", voxel irradiance " + formatMs(irradianceTiming->gpuMs);
-    const PassTiming* filterTiming = profiler_.lastRun("voxel irradiance filter");
+    const PassTiming* filterTiming = profiler_.lastRun(step("voxel irradiance filter"));
     if (filterTiming && filterTiming->frame >= pendingFrame_) text += " + filter " + formatMs(filterTiming->gpuMs);
     // Every frame of a gizmo drag re-voxelizes: one folded line with a count, not one per frame.
     log_.info(text, Fold::IgnoringNumbers);

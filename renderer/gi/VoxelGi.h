@@ -118,6 +118,9 @@ public:
 private:
     // The cone features of this volume's own voxel passes.
     ConeFeatures featuresFor(const RenderSettings& settings) const;
+    // The profiler's name of the step `name` ("voxelize", "bounces", ...) for this volume: a near
+    // level's are "near voxelize", ... (a string that lives as long as the program).
+    const char* step(const char* name) const;
     // A trace over the occupied-voxel list with `rays` rays: what it does with the ray-hit cache.
     RayHits rayHitsFor(int rays);
     // The changed boxes to voxelize instead of the whole volume, if a voxelization of them is

@@ -66,6 +66,8 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -85,7 +87,8 @@ struct SuiteScene {
     bool sealed = false;       // report inside radiance as a fraction of the sunlit ground's
     bool framedInside = false;  // no camera in the file: look along the long axis from inside
     bool onlyWhenNamed = false;  // a diagnostic variant: run only when --scenes names it
-    std::optional<float> nearLevelSide{};  // the VCT's GiSettings::nearLevelSide (m) instead of the settings'
+    // The VCT's near levels (GiSettings::nearLevelSide in m, nearLevels) instead of the settings'.
+    std::optional<std::pair<float, int>> nearLevels{};
 };
 
 struct Args {
@@ -200,7 +203,10 @@ std::vector<SuiteScene> suite(const Args& args) {
         {"thin_walls", assets / "gi" / "thin_walls.gltf", "Cornell room with walls 1 voxel thick at 128³, 20 W/m² sun on the roof"},
         {"glossy_floor", assets / "gi" / "glossy_floor.gltf", "Cornell room with a glossy metal floor (roughness 0.2)"},
         {"city", assets / "gi" / "city.gltf", "640 m of box buildings and 14 m streets, 50 W/m² sun 30° high, seen from street level"},
-        {"city_one_volume", assets / "gi" / "city.gltf", "the city without the near level: one volume around it all", false, false, false, 0.0f},
+        {"city_one_volume", assets / "gi" / "city.gltf", "the city without near levels: one volume around it all", false, false, false,
+         std::pair{0.0f, 0}},
+        {"city_two_levels", assets / "gi" / "city.gltf", "the city with near levels of 32 m and 64 m", false, false, false,
+         std::pair{32.0f, 2}},
         {"sponza", args.shared / "sponza" / "Sponza.gltf", "Sponza (textured, ../shared/scenes), the default sun (4 W/m²)", false, true},
         {"cornell_room", assets / "gi" / "cornell_room.gltf", "the Cornell box rebuilt by make-gi-suite", false, false, true},
         {"cornell_mirrored", assets / "gi" / "cornell_mirrored.gltf", "the Cornell box mirrored in x", false, false, true},
@@ -443,7 +449,7 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     std::vector<VctRun> runs;
     for (const int voxels : args.voxels) {
         RenderSettings settings = args.vct;
-        if (entry.nearLevelSide) settings.gi.nearLevelSide = *entry.nearLevelSide;
+        if (entry.nearLevels) std::tie(settings.gi.nearLevelSide, settings.gi.nearLevels) = *entry.nearLevels;
         settings.gi.bounces = args.bounces;
         settings.output.width = size;
         settings.output.height = size;
