@@ -268,8 +268,8 @@ bool gathersChange() { return false; }
 // A near level (docs/GI.md, "Near levels"): a ray that leaves it goes on, from the point where it
 // left, through the next volume out (the next near level, or the scene's volume), then through the
 // scene's volume, each time stepped through the volume's level 0 (with the same empty-block
-// skipping) to its first occupied voxel (a cube there: those volumes' surfaces are not bound),
-// whose radiance it takes; past the scene's volume, the sky. Those volumes updated first, so their
+// skipping) to the first occupied voxel whose surface it meets (the plane test of marchVoxelRay),
+// whose radiance it takes (black from behind); past the scene's volume, the sky. Those volumes updated first, so their
 // level 0 holds every bounce they gathered, and their light does not change while this level's
 // update runs: a later bounce's change gathers none of it (rayHitChange).
 layout(std140, binding = LIT_UBO_OUTER_VOXEL) uniform OuterVoxelBlock {
@@ -280,11 +280,17 @@ layout(std140, binding = LIT_UBO_FAR_VOXEL) uniform FarVoxelBlock {
 };
 layout(binding = LIT_TEX_OUTER_RADIANCE) uniform sampler3D outerRadianceTexture;
 layout(binding = LIT_TEX_FAR_RADIANCE) uniform sampler3D farRadianceTexture;
+layout(binding = LIT_TEX_OUTER_NORMAL) uniform usampler3D outerNormalTexture;
+layout(binding = LIT_TEX_OUTER_SURFACE) uniform usampler3D outerSurfaceTexture;
+layout(binding = LIT_TEX_FAR_NORMAL) uniform usampler3D farNormalTexture;
+layout(binding = LIT_TEX_FAR_SURFACE) uniform usampler3D farSurfaceTexture;
 
-// Marches `volume`'s level 0 (`radiance`) from `origin` along `d` (unit, no zero component): true
-// with the first occupied voxel's radiance in `found`, else false with `leave` the distance (m)
-// from `origin` at which the ray leaves the volume (0 when it starts outside and never enters).
-bool marchLevel0(sampler3D radiance, VoxelUniforms volume, vec3 origin, vec3 d, out vec3 found, out float leave) {
+// Marches `volume`'s level 0 (`radiance`, `normals`, `surfaces`) from `origin` along `d` (unit, no
+// zero component): true with the radiance of the first voxel whose surface the ray meets in
+// `found` (black from behind), else false with `leave` the distance (m) from `origin` at which the
+// ray leaves the volume (0 when it starts outside and never enters).
+bool marchLevel0(sampler3D radiance, usampler3D normals, usampler3D surfaces, VoxelUniforms volume, vec3 origin, vec3 d,
+                 out vec3 found, out float leave) {
     found = vec3(0.0);
     int n = int(volume.voxelInfo.x);
     vec3 inv = 1.0 / d;
@@ -293,15 +299,32 @@ bool marchLevel0(sampler3D radiance, VoxelUniforms volume, vec3 origin, vec3 d, 
     float t = max(max(min(t1.x, t2.x), max(min(t1.y, t2.y), min(t1.z, t2.z))), 0.0) + 1e-4;
     float tLeave = min(max(t1.x, t2.x), min(max(t1.y, t2.y), max(t1.z, t2.z)));
     leave = max(tLeave, 0.0) * volume.voxelInfo.z;
+    float tEnter = t;
     vec3 exitSide = vec3(greaterThan(d, vec3(0.0)));
     for (int i = 0; i < kRayMaxSteps && t < tLeave; ++i) {
         ivec3 cell = clamp(ivec3(floor(g0 + t * d)), ivec3(0), ivec3(n - 1));
         bool coarseEmpty = texelFetch(radiance, cell >> kRaySkipLevelCoarse, kRaySkipLevelCoarse).a == 0.0;
         bool blockEmpty = coarseEmpty || texelFetch(radiance, cell >> kRaySkipLevel, kRaySkipLevel).a == 0.0;
-        if (!blockEmpty) {
-            vec4 s = texelFetch(radiance, cell, 0);
-            if (s.a > 0.0) {
-                found = s.rgb / s.a * volume.radianceScale.y;
+        vec4 s = blockEmpty ? vec4(0.0) : texelFetch(radiance, cell, 0);
+        if (s.a > 0.0) {
+            vec3 averaged = unpackAveragedNormal(texelFetch(normals, cell, 0).r);
+            float agreement = length(averaged);
+            // The plane test only in the cell where the ray entered this volume, which may hold the
+            // surface it left (or one it runs along); past it a coarse voxel is taken whole.
+            bool solid = true;
+            bool entryCell = all(equal(cell, clamp(ivec3(floor(g0 + tEnter * d)), ivec3(0), ivec3(n - 1))));
+            if (agreement >= kRayPlaneMinLength && entryCell) {
+                vec3 planeNormal = averaged / agreement;
+                vec3 cellExit = (vec3(cell) + exitSide - g0) * inv;
+                float tCellExit = min(cellExit.x, min(cellExit.y, cellExit.z));
+                vec4 local = unpackVoxel(texelFetch(surfaces, cell, 0).r);
+                vec3 fromSurface = g0 - (vec3(cell) + (local.a > 0.0 ? local.xyz : vec3(0.5)));
+                float heightIn = dot(fromSurface + t * d, planeNormal), heightOut = dot(fromSurface + tCellExit * d, planeNormal);
+                solid = min(heightIn, heightOut) < 0.01;
+            }
+            if (solid) {
+                bool fromBehind = agreement >= kOneSidedMinLength && dot(averaged, d) > kRayBackFaceCosine * agreement;
+                found = fromBehind ? vec3(0.0) : s.rgb / s.a * volume.radianceScale.y;
                 return true;
             }
         }
@@ -321,10 +344,12 @@ vec3 outerRayRadiance(vec3 origin, vec3 dir) {
     vec3 p = origin + max(min(max(lo.x, hi.x), min(max(lo.y, hi.y), max(lo.z, hi.z))), 0.0) * d;
     vec3 found;
     float leave;
-    if (marchLevel0(outerRadianceTexture, outerVoxel, p, d, found, leave)) return found;
+    if (marchLevel0(outerRadianceTexture, outerNormalTexture, outerSurfaceTexture, outerVoxel, p, d, found, leave))
+        return found;
     // From where it left the next volume out (when that is the scene's, it starts at its face and
     // never enters).
-    if (marchLevel0(farRadianceTexture, farVoxel, p + leave * d, d, found, leave)) return found;
+    if (marchLevel0(farRadianceTexture, farNormalTexture, farSurfaceTexture, farVoxel, p + leave * d, d, found, leave))
+        return found;
     return skyRadiance(dir);
 }
 #endif

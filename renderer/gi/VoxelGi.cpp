@@ -108,10 +108,16 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     if (frame.outer && frame.far) {
         // A near level's rays continue in the next volume out, then in the scene's, where they
         // leave this one.
-        frame.outer->volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_OUTER_VOXEL);
-        frame.outer->volume().radiance().bind(LIT_TEX_OUTER_RADIANCE);
-        frame.far->volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FAR_VOXEL);
-        frame.far->volume().radiance().bind(LIT_TEX_FAR_RADIANCE);
+        const VoxelVolume& outer = frame.outer->volume();
+        outer.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_OUTER_VOXEL);
+        outer.radiance().bind(LIT_TEX_OUTER_RADIANCE);
+        outer.normal().bind(LIT_TEX_OUTER_NORMAL);
+        outer.surface().bind(LIT_TEX_OUTER_SURFACE);
+        const VoxelVolume& far = frame.far->volume();
+        far.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FAR_VOXEL);
+        far.radiance().bind(LIT_TEX_FAR_RADIANCE);
+        far.normal().bind(LIT_TEX_FAR_NORMAL);
+        far.surface().bind(LIT_TEX_FAR_SURFACE);
     }
     const VoxelKey voxels{frame.scene.geometryRevision, frame.scene.materialRevision, &frame.scene};
     const GiLightKey light = GiLightKey::of(settings);

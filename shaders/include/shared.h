@@ -111,11 +111,15 @@ using mat4 = glm::mat4;
 #define LIT_TEX_SHADOW_SHEETS 34
 #define LIT_TEX_SHADOW_SHEETS_CUBE 35  // the same per cube face of a point light (RGBA16F cube array)
 // The cached mode's near levels (docs/GI.md, "Near levels"): a near level's voxel rays continue in
-// the next volume out's radiance, then the scene volume's (LIT_NEAR_LEVEL); the pixels gather near
-// level k's gather texels from FIRST + k (LIT_NEAR_GATHER).
+// the next volume out, then the scene volume (LIT_NEAR_LEVEL: their radiance, normals and surface
+// points); the pixels gather near level k's gather texels from FIRST + k (LIT_NEAR_GATHER).
 #define LIT_TEX_OUTER_RADIANCE 36
 #define LIT_TEX_FAR_RADIANCE 37
-#define LIT_TEX_NEAR_IRRADIANCE_FIRST 38
+#define LIT_TEX_OUTER_NORMAL 38   // the next volume out's averaged normals and surface points (r32ui)
+#define LIT_TEX_OUTER_SURFACE 39
+#define LIT_TEX_FAR_NORMAL 40     // the scene volume's
+#define LIT_TEX_FAR_SURFACE 41
+#define LIT_TEX_NEAR_IRRADIANCE_FIRST 42
 #define LIT_TEX_UNIT_COUNT (LIT_TEX_NEAR_IRRADIANCE_FIRST + LIT_MAX_NEAR_LEVELS)  // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
