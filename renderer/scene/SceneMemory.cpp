@@ -71,6 +71,7 @@ RenderFootprint RenderFootprint::of(const RenderSettings& settings) {
         footprint.radianceRgba8 = settings.gi.radianceRgba8;
         footprint.bounceVolumes = settings.gi.bounces != 1;
         footprint.voxelRays = std::min(settings.gi.voxelRays, kMaxVoxelRays);
+        footprint.nearLevels = settings.gi.nearLevelCount();
     }
     if (settings.shadows.enabled) footprint.shadowMapSize = std::clamp(settings.shadows.mapSize, 16, 8192);
     return footprint;
@@ -123,14 +124,15 @@ SceneMemory estimateSceneMemory(std::span<const ImageExtent> images, std::uint64
         saturatingAdd(saturatingMul(vertices, sizeof(Vertex)), saturatingMul(indices, sizeof(std::uint32_t)));
     memory.geometry = saturatingMul(geometry, 2);
     if (render.voxelResolution > 0) {
-        memory.voxels = voxelVolumeBytes(render.voxelResolution, render.radianceRgba8, render.bounceVolumes);
+        const std::uint64_t volumes = 1u + static_cast<std::uint64_t>(std::max(render.nearLevels, 0));
+        memory.voxels = saturatingMul(voxelVolumeBytes(render.voxelResolution, render.radianceRgba8, render.bounceVolumes), volumes);
         // The hit records grow with the occupied voxels, at most every voxel, and the cache
         // allocates none beyond its cap (the passes then march instead).
         if (render.voxelRays > 0) {
             const std::uint64_t side = positive(render.voxelResolution);
             const std::uint64_t everyVoxel =
                 saturatingMul(saturatingMul(saturatingMul(side, side), side), 2 * 4 * positive(render.voxelRays));
-            memory.rayHits = std::min<std::uint64_t>(everyVoxel, RayHitCache::kMaxBytes);
+            memory.rayHits = saturatingMul(std::min<std::uint64_t>(everyVoxel, RayHitCache::kMaxBytes), volumes);
         }
     }
     memory.targets = saturatingMul(saturatingMul(positive(render.width), positive(render.height)), kTargetBytesPerPixel);

@@ -22,8 +22,8 @@ struct SceneMemory {
     std::uint64_t decodedImages = 0;  // RGBA8 pixels on the CPU, each distinct image once
     std::uint64_t textures = 0;       // GL textures: each image a texture uses once, with mip chain
     std::uint64_t geometry = 0;       // 48-byte vertices and 4-byte indices, on the CPU and in GL buffers
-    std::uint64_t voxels = 0;         // the voxel volumes (voxelVolumeBytes)
-    std::uint64_t rayHits = 0;        // the voxel rays' hit records at their most (RayHitCache)
+    std::uint64_t voxels = 0;         // the voxel volumes (voxelVolumeBytes), the near levels' included
+    std::uint64_t rayHits = 0;        // the voxel rays' hit records at their most (RayHitCache), per volume
     std::uint64_t targets = 0;        // per-pixel render targets and read-back copies
     std::uint64_t shadowMaps = 0;     // depth layers and cube faces, and their sheet colour layers (ShadowPass)
     std::uint64_t total() const;
@@ -39,6 +39,9 @@ struct RenderFootprint {
     bool radianceRgba8 = false;
     bool bounceVolumes = false;  // more than one bounce (the direct and bounce volumes)
     int voxelRays = 0;           // rays per voxel side whose hits are recorded
+    // Near levels asked for (GiSettings::nearLevelCount()): each a volume like the scene's, with its
+    // own ray hits. Counted as asked: a scene too small for them never allocates them.
+    int nearLevels = 0;
     int shadowMapSize = 0;       // texels per side of each shadow map (clamped as ShadowPass); 0 = shadows off
     static RenderFootprint of(const RenderSettings& settings);
     bool operator==(const RenderFootprint&) const = default;

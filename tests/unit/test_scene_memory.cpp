@@ -94,11 +94,17 @@ TEST(SceneMemory, RenderSettingsAddVoxelsRayHitsAndTargets) {
     settings.gi.voxelResolution = 64;
     settings.gi.voxelRays = 16;
     settings.gi.bounces = kAllBounces;
+    settings.gi.nearLevels = 0;
     const RenderFootprint footprint = RenderFootprint::of(settings);
     const SceneMemory memory = estimateSceneMemory(Scene{}, footprint);
     EXPECT_EQ(memory.targets, 640u * 360 * 64);
     EXPECT_EQ(memory.voxels, voxelVolumeBytes(64, false, true));
     EXPECT_EQ(memory.rayHits, 64u * 64 * 64 * 2 * 16 * 4);  // every voxel, both sides, 16 rays
+    settings.gi.nearLevels = 2;  // two more volumes like it, each with its ray hits
+    const SceneMemory near = estimateSceneMemory(Scene{}, RenderFootprint::of(settings));
+    EXPECT_EQ(near.voxels, 3 * memory.voxels);
+    EXPECT_EQ(near.rayHits, 3 * memory.rayHits);
+    settings.gi.nearLevels = 0;
     settings.gi.voxelResolution = 512;
     EXPECT_EQ(estimateSceneMemory(Scene{}, RenderFootprint::of(settings)).rayHits, RayHitCache::kMaxBytes)
         << "the cache allocates no more than its cap";
