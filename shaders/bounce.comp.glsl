@@ -149,6 +149,28 @@ int rayHitMode() { return LIT_RAY_HIT_CACHE != 0 ? uRayHits : 0; }
 const uint kRayHitSky = 0xffffffffu;   // left the volume: the sky
 const uint kRayHitBack = 0x40000000u;  // flag: met a one-sided surface from behind (black)
 
+// Whether the ray g0 + t'·d (in voxels from the volume's corner, t' ≥ t; inv = 1/d) meets the surface of the
+// occupied voxel `cell` it is in, whose averaged normal is `averaged` (of length `agreement`) and
+// whose surface point is `surfacePoint` (in voxels): a one-sided voxel where the ray is behind its
+// plane at its entry or exit (0.01 voxel of slack: a plane on the face between two voxels belongs to
+// one of them), any other where the ray enters it (a cube).
+bool rayMeetsVoxelSurface(ivec3 cell, vec3 averaged, float agreement, vec3 surfacePoint, vec3 g0, vec3 d, vec3 inv,
+                          float t) {
+    if (agreement < kRayPlaneMinLength) return true;
+    vec3 planeNormal = averaged / agreement;
+    vec3 cellExit = (vec3(cell) + vec3(greaterThan(d, vec3(0.0))) - g0) * inv;
+    float tCellExit = min(cellExit.x, min(cellExit.y, cellExit.z));
+    vec3 fromSurface = g0 - surfacePoint;
+    float heightIn = dot(fromSurface + t * d, planeNormal), heightOut = dot(fromSurface + tCellExit * d, planeNormal);
+    return min(heightIn, heightOut) < 0.01;
+}
+
+// Whether a ray along `dir` meets a voxel of averaged normal `averaged` (length `agreement`) from
+// behind: a one-sided surface facing away from it (black).
+bool seenFromBehind(vec3 averaged, float agreement, vec3 dir) {
+    return agreement >= kOneSidedMinLength && dot(averaged, dir) > kRayBackFaceCosine * agreement;
+}
+
 // Where a ray from `origin` along `dir` (world space, unit) ends: the first occupied level-0 voxel
 // whose surface it meets (a one-sided voxel's plane crossed inside it, a two-sided voxel where the
 // ray enters it; kRayPlaneMinLength), packed as the occupied list packs it, kRayHitBack added when
@@ -174,19 +196,8 @@ uint marchVoxelRay(vec3 origin, vec3 dir) {
         if (!blockEmpty && texelFetch(voxelRadianceTexture, cell, 0).a > 0.0) {
             vec3 averaged = unpackAveragedNormal(imageLoad(voxelNormal, cell).r);
             float agreement = length(averaged);
-            bool solid = true;  // a cube: where the ray enters
-            if (agreement >= kRayPlaneMinLength) {
-                // The voxel behind its plane: where the ray is behind the plane at its entry or exit
-                // (0.01 voxel of slack: a plane on the face between two voxels belongs to one of them).
-                vec3 planeNormal = averaged / agreement;
-                vec3 cellExit = (vec3(cell) + exitSide - g0) * inv;
-                float tCellExit = min(cellExit.x, min(cellExit.y, cellExit.z));
-                vec3 fromSurface = g0 - voxelSurfacePoint(cell);
-                float heightIn = dot(fromSurface + t * d, planeNormal), heightOut = dot(fromSurface + tCellExit * d, planeNormal);
-                solid = min(heightIn, heightOut) < 0.01;
-            }
-            if (solid) {
-                bool fromBehind = agreement >= kOneSidedMinLength && dot(averaged, dir) > kRayBackFaceCosine * agreement;
+            if (rayMeetsVoxelSurface(cell, averaged, agreement, voxelSurfacePoint(cell), g0, d, inv, t)) {
+                bool fromBehind = seenFromBehind(averaged, agreement, dir);
                 return packVoxelCoord(cell) | (fromBehind ? kRayHitBack : 0u);
             }
         }
@@ -311,20 +322,11 @@ bool marchLevel0(sampler3D radiance, usampler3D normals, usampler3D surfaces, Vo
             float agreement = length(averaged);
             // The plane test only in the cell where the ray entered this volume, which may hold the
             // surface it left (or one it runs along); past it a coarse voxel is taken whole.
-            bool solid = true;
             bool entryCell = all(equal(cell, clamp(ivec3(floor(g0 + tEnter * d)), ivec3(0), ivec3(n - 1))));
-            if (agreement >= kRayPlaneMinLength && entryCell) {
-                vec3 planeNormal = averaged / agreement;
-                vec3 cellExit = (vec3(cell) + exitSide - g0) * inv;
-                float tCellExit = min(cellExit.x, min(cellExit.y, cellExit.z));
-                vec4 local = unpackVoxel(texelFetch(surfaces, cell, 0).r);
-                vec3 fromSurface = g0 - (vec3(cell) + (local.a > 0.0 ? local.xyz : vec3(0.5)));
-                float heightIn = dot(fromSurface + t * d, planeNormal), heightOut = dot(fromSurface + tCellExit * d, planeNormal);
-                solid = min(heightIn, heightOut) < 0.01;
-            }
-            if (solid) {
-                bool fromBehind = agreement >= kOneSidedMinLength && dot(averaged, d) > kRayBackFaceCosine * agreement;
-                found = fromBehind ? vec3(0.0) : s.rgb / s.a * volume.radianceScale.y;
+            vec4 local = unpackVoxel(texelFetch(surfaces, cell, 0).r);
+            vec3 surfacePoint = vec3(cell) + (local.a > 0.0 ? local.xyz : vec3(0.5));
+            if (!entryCell || rayMeetsVoxelSurface(cell, averaged, agreement, surfacePoint, g0, d, inv, t)) {
+                found = seenFromBehind(averaged, agreement, d) ? vec3(0.0) : s.rgb / s.a * volume.radianceScale.y;
                 return true;
             }
         }

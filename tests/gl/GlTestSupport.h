@@ -122,6 +122,17 @@ protected:
         return image;
     }
 
+    // L_ID + L_IS rendered with `settings` (its view is set here; the first frame does the GI update).
+    std::vector<float> renderIndirect(const Scene& scene, RenderSettings settings) {
+        settings.debug.view = View::IndirectDiffuse;
+        const HdrImage diffuse = render(scene, settings);
+        settings.debug.view = View::IndirectSpecular;
+        const HdrImage specular = render(scene, settings);
+        std::vector<float> sum(diffuse.rgb.size());
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = diffuse.rgb[i] + specular.rgb[i];
+        return sum;
+    }
+
     static RenderSettings smallSettings(int size = 128) {
         RenderSettings s;
         s.output.width = size;

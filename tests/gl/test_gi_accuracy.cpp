@@ -413,7 +413,7 @@ protected:
         settings.gi.mode = mode;
         settings.gi.bounces = bounces;
         settings.gi.voxelRays = voxelRays;
-        return indirectSum(scene, settings);
+        return renderIndirect(scene, settings);
     }
     // L_ID + L_IS with the renderer's defaults (RenderSettings as constructed: the cached mode, two
     // bounces, 32 voxel rays) but for the size, GI on and the voxel resolution: what a user gets.
@@ -422,17 +422,7 @@ protected:
         EXPECT_EQ(settings.gi.bounces, kAllBounces);
         EXPECT_EQ(settings.gi.voxelRays, 32);
         EXPECT_TRUE(settings.gi.voxelIrradiance()) << "the cached mode";
-        return indirectSum(scene, settings);
-    }
-    // L_ID + L_IS rendered with `settings` (its view is set here).
-    std::vector<float> indirectSum(const Scene& scene, RenderSettings settings) {
-        settings.debug.view = View::IndirectDiffuse;
-        const HdrImage id = render(scene, settings);
-        settings.debug.view = View::IndirectSpecular;
-        const HdrImage is = render(scene, settings);
-        std::vector<float> sum(id.rgb.size());
-        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = id.rgb[i] + is.rgb[i];
-        return sum;
+        return renderIndirect(scene, settings);
     }
     static double lum(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
     // The bar: each of the four regions lit only indirectly within ±20 % of the reference.

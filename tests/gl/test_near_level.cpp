@@ -17,17 +17,6 @@ namespace {
 class NearLevel : public GlFixture {
 protected:
     Scene loadCity() { return loadGltf(sourceDir() / "assets" / "gi" / "city.gltf", log_); }
-
-    // L_ID + L_IS of the image `settings` renders (the first frame does the whole GI update).
-    std::vector<float> indirect(const Scene& scene, RenderSettings settings) {
-        settings.debug.view = View::IndirectDiffuse;
-        const HdrImage diffuse = render(scene, settings);
-        settings.debug.view = View::IndirectSpecular;
-        const HdrImage specular = render(scene, settings);
-        std::vector<float> sum(diffuse.rgb.size());
-        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = diffuse.rgb[i] + specular.rgb[i];
-        return sum;
-    }
 };
 
 double maskedLuminance(const std::vector<float>& rgb, const reference::PixelMask& mask) {
@@ -66,14 +55,14 @@ TEST_F(NearLevel, CityStreetsBouncedLightMatchesTheReference) {
     const double truthSum = maskedLuminance(truth, bounced);
     ASSERT_GT(truthSum, 0.0);
 
-    const double near = maskedLuminance(indirect(scene, settings), bounced) / truthSum;
+    const double near = maskedLuminance(renderIndirect(scene, settings), bounced) / truthSum;
     // Two levels, 32 m and 64 m: the finer one's rays continue through the 64 m level, then the
     // scene's volume.
     settings.gi.nearLevelSide = 32.0f;
     settings.gi.nearLevels = 2;
-    const double two = maskedLuminance(indirect(scene, settings), bounced) / truthSum;
+    const double two = maskedLuminance(renderIndirect(scene, settings), bounced) / truthSum;
     settings.gi.nearLevels = 0;
-    const double single = maskedLuminance(indirect(scene, settings), bounced) / truthSum;
+    const double single = maskedLuminance(renderIndirect(scene, settings), bounced) / truthSum;
     std::printf("city, 128³: bounced light ÷ the reference's: %.3f with one volume, %.3f with the 64 m near level, "
                 "%.3f with levels of 32 m and 64 m\n",
                 single, near, two);
