@@ -60,6 +60,19 @@ RoomMaterials addRoomMaterials(Scene& scene) {
 
 void name(Scene& scene, int node, const char* text) { scene.nodes[static_cast<std::size_t>(node)].name = text; }
 
+// A camera node (and camera) named `text` with a square image: field of view `yfov` (rad), near
+// and far planes (m), at `position` looking at `target`.
+void addSquareCamera(Scene& scene, const char* text, float yfov, float znear, float zfar, glm::vec3 position,
+                     glm::vec3 target) {
+    Camera camera;
+    camera.name = text;
+    camera.yfov = yfov;
+    camera.aspectRatio = 1.0f;
+    camera.znear = znear;
+    camera.zfar = zfar;
+    name(scene, addCameraNode(scene, camera, position, target), text);
+}
+
 // The Cornell room: interior x ∈ [−1, 1], y ∈ [0, 2], z ∈ [−1, 1], open at z = +1, with the node
 // names of assets/cornell_box.gltf (the accuracy regions find walls by name). thickness 0: single-
 // sided walls (planes facing in); otherwise closed slabs of that thickness (metres) outside the
@@ -109,13 +122,7 @@ void addCornellRoom(Scene& scene, const RoomMaterials& m, float thickness, RoomV
     spot.innerConeAngle = 0.6f;
     spot.outerConeAngle = 1.05f;
     name(scene, addLightNode(scene, spot, {0, 1.9f, 0}, {0, -1, 0}), "ceiling_spot");
-    Camera camera;
-    camera.name = "camera";
-    camera.yfov = 0.69f;
-    camera.aspectRatio = 1.0f;
-    camera.znear = 0.05f;
-    camera.zfar = 20.0f;
-    name(scene, addCameraNode(scene, camera, {0, 1, 3.4f}, {0, 1, 0}), "camera");
+    addSquareCamera(scene, "camera", 0.69f, 0.05f, 20.0f, {0, 1, 3.4f}, {0, 1, 0});
 }
 
 Scene glossyFloor() {
@@ -179,13 +186,7 @@ Scene sealedRoom() {
     // W/m² (34 150 lx), from high up and to the side: it lights the roof, two walls and the ground.
     sun.intensity = 50.0f;
     name(scene, addLightNode(scene, sun, {0, 8, 0}, glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f))), "sun");
-    Camera camera;
-    camera.name = "inside";
-    camera.yfov = 1.2f;
-    camera.aspectRatio = 1.0f;
-    camera.znear = 0.05f;
-    camera.zfar = 30.0f;
-    name(scene, addCameraNode(scene, camera, {1.2f, 1.6f, 1.6f}, {-1.0f, 1.4f, -1.5f}), "inside");
+    addSquareCamera(scene, "inside", 1.2f, 0.05f, 30.0f, {1.2f, 1.6f, 1.6f}, {-1.0f, 1.4f, -1.5f});
     return scene;
 }
 
@@ -224,14 +225,8 @@ Scene city() {
     const float elevation = 30.0f * kPi / 180.0f, azimuth = 60.0f * kPi / 180.0f;
     const glm::vec3 toSun{std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth)};
     name(scene, addLightNode(scene, sun, {0, 100, 0}, -toSun), "sun");
-    Camera camera;
-    camera.name = "street";
-    camera.yfov = 1.0f;
-    camera.aspectRatio = 1.0f;
-    camera.znear = 0.1f;
-    camera.zfar = 1000.0f;
     // The street between block columns 4 and 5 runs along z at x = 0.
-    name(scene, addCameraNode(scene, camera, {0, 1.7f, 290.0f}, {0, 6.0f, 0}), "street");
+    addSquareCamera(scene, "street", 1.0f, 0.1f, 1000.0f, {0, 1.7f, 290.0f}, {0, 6.0f, 0});
     return scene;
 }
 
