@@ -5,6 +5,7 @@
 #include "scene/GltfLoader.h"
 #include "scene/Scene.h"
 #include "scene/SceneMemory.h"
+#include "scene/Sheets.h"
 
 #include <stb_image.h>
 #include <tiny_gltf.h>
@@ -577,7 +578,7 @@ void checkMemoryBudget(const fs::path& file, const tinygltf::Model& model, const
     }
 
     // The shadow maps: every node that holds a light (an upper bound: unreachable nodes and lights
-    // that cast no shadow count too), and the sheets as drawnAsSheet tells them.
+    // that cast no shadow count too), and the sheets (drawnAsSheet).
     ShadowCasters casters;
     bool anyLight = false;
     for (const tinygltf::Node& node : model.nodes) {
@@ -594,7 +595,7 @@ void checkMemoryBudget(const fs::path& file, const tinygltf::Model& model, const
         const auto transmission = material.extensions.find("KHR_materials_transmission");
         if (transmission == material.extensions.end() || !transmission->second.Has("transmissionFactor")) continue;
         const tinygltf::Value& factor = transmission->second.Get("transmissionFactor");
-        if (factor.IsNumber() && factor.GetNumberAsDouble() > 0.0 && material.pbrMetallicRoughness.metallicFactor < 1.0)
+        if (factor.IsNumber() && drawnAsSheet(factor.GetNumberAsDouble(), material.pbrMetallicRoughness.metallicFactor))
             casters.sheets = true;
     }
     const SceneMemory memory = estimateSceneMemory(extents, geometryVertices, geometryIndices, casters, limits.render);

@@ -88,7 +88,7 @@ ShadowCasters shadowCastersOf(const Scene& scene) {
         (light.type == LightType::Point ? casters.cubes : casters.maps2d) += 1;
     }
     if (!anyLight) casters.maps2d = 1;
-    casters.sheets = std::any_of(scene.materials.begin(), scene.materials.end(), drawnAsSheet);
+    casters.sheets = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return drawnAsSheet(m); });
     return casters;
 }
 

@@ -7,7 +7,9 @@
 
 namespace lit {
 
-// A material whose dielectric share lets light through: transmission > 0, metallic < 1.
-inline bool drawnAsSheet(const Material& m) { return m.transmission > 0.0f && m.metallic < 1.0f; }
+// A material whose dielectric share lets light through: transmission > 0, metallic < 1 (also
+// from a file's factors before they are loaded: the memory budget's colour layers).
+inline bool drawnAsSheet(double transmission, double metallic) { return transmission > 0.0 && metallic < 1.0; }
+inline bool drawnAsSheet(const Material& m) { return drawnAsSheet(m.transmission, m.metallic); }
 
 }  // namespace lit

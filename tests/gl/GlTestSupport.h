@@ -6,6 +6,8 @@
 #include "RenderSettings.h"
 #include "Renderer.h"
 #include "context/HeadlessContext.h"
+#include "reference/PathTracer.h"
+#include "reference/ReferenceScene.h"
 #include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 #include "scene/Scene.h"
@@ -97,6 +99,18 @@ protected:
 
     std::unique_ptr<HeadlessContext> context_;
 };
+
+// The reference's image of `scene` (`rs`) from `camera`, with `bounces` (reference::kAllBounces:
+// every bounce) and `samples` per pixel, sampled at the pixel centres as the rasterizer samples.
+inline reference::ReferenceImage tracedAtPixelCentres(const reference::ReferenceScene& rs, const CameraView& camera,
+                                                      int width, int height, int bounces, int samples) {
+    reference::ReferenceSettings settings;
+    settings.bounces = bounces;
+    settings.pixelCentres = true;
+    reference::PathTracer tracer(rs, camera, width, height, settings);
+    tracer.addSamples(samples);
+    return tracer.image();
+}
 
 // A context and a Renderer.
 class GlFixture : public ContextFixture {

@@ -1114,12 +1114,8 @@ TEST_F(GiAccuracy, GrazingConesSeeABackedFloorsLight) {
     const std::vector<reference::FirstHit> hits = reference::traceFirstHits(rs, camera, width, height);
     const reference::PixelMask sphere =
         reference::erodeEdges(reference::nodeMask(scene, hits, "gold_sphere"), hits, width, height, 1);
-    reference::ReferenceSettings referenceSettings;
-    referenceSettings.bounces = reference::kAllBounces;
-    referenceSettings.pixelCentres = true;
-    reference::PathTracer tracer(rs, camera, width, height, referenceSettings);
-    tracer.addSamples(256);
-    const std::vector<float> truth = tracer.image().viewRgb(View::IndirectSpecular, settings);
+    const std::vector<float> truth =
+        tracedAtPixelCentres(rs, camera, width, height, reference::kAllBounces, 256).viewRgb(View::IndirectSpecular, settings);
     const HdrImage vct = render(scene, settings);
     double truthSum = 0.0, vctSum = 0.0;
     std::size_t pixels = 0;

@@ -69,13 +69,7 @@ protected:
     // The reference's terms of `scene` from the fixture's camera, sampled at pixel centres as the
     // rasterizer samples.
     reference::ReferenceImage traced(const Scene& scene, int bounces, int samples) {
-        const ReferenceScene rs(scene, quiet_);
-        ReferenceSettings settings;
-        settings.bounces = bounces;
-        settings.pixelCentres = true;
-        PathTracer tracer(rs, camera_, kWidth, kHeight, settings);
-        tracer.addSamples(samples);
-        return tracer.image();
+        return tracedAtPixelCentres(ReferenceScene(scene, quiet_), camera_, kWidth, kHeight, bounces, samples);
     }
     std::vector<float> rasterImage(const Scene& scene, RenderSettings s, View view, int frames = 1) {
         s.debug.view = view;

@@ -44,13 +44,9 @@ TEST_F(NearLevel, CityStreetsBouncedLightMatchesTheReference) {
     const int width = settings.output.width, height = settings.output.height;
     const std::vector<reference::FirstHit> hits = reference::traceFirstHits(rs, camera, width, height);
     const reference::PixelMask bounced = reference::erodeEdges(reference::indirectOnlyMask(hits), hits, width, height, 1);
-    reference::ReferenceSettings referenceSettings;
-    referenceSettings.bounces = reference::kAllBounces;
-    referenceSettings.pixelCentres = true;
-    reference::PathTracer tracer(rs, camera, width, height, referenceSettings);
-    tracer.addSamples(128);
-    std::vector<float> truth = tracer.image().viewRgb(View::IndirectDiffuse, settings);
-    const std::vector<float> truthSpecular = tracer.image().viewRgb(View::IndirectSpecular, settings);
+    const reference::ReferenceImage traced = tracedAtPixelCentres(rs, camera, width, height, reference::kAllBounces, 128);
+    std::vector<float> truth = traced.viewRgb(View::IndirectDiffuse, settings);
+    const std::vector<float> truthSpecular = traced.viewRgb(View::IndirectSpecular, settings);
     for (std::size_t i = 0; i < truth.size(); ++i) truth[i] += truthSpecular[i];
     const double truthSum = maskedLuminance(truth, bounced);
     ASSERT_GT(truthSum, 0.0);

@@ -104,13 +104,7 @@ protected:
         return out;
     }
     reference::ReferenceImage traced(int bounces, int samples) {
-        const ReferenceScene rs(scene_, quiet_);
-        ReferenceSettings settings;
-        settings.bounces = bounces;
-        settings.pixelCentres = true;
-        PathTracer tracer(rs, camera_, kWidth, kHeight, settings);
-        tracer.addSamples(samples);
-        return tracer.image();
+        return tracedAtPixelCentres(ReferenceScene(scene_, quiet_), camera_, kWidth, kHeight, bounces, samples);
     }
     void report(const char* what, const std::map<std::string, glm::dvec3>& lit,
                 const std::map<std::string, glm::dvec3>& ref) const {
@@ -205,12 +199,7 @@ TEST_F(Sheets, PointLightShadowsThroughSheetsMatchTheReference) {
     renderer_->setScene(scene);
     renderer_->render(scene, camera_, s);
     const std::vector<float> lit = renderer_->readHdrRgb();
-    ReferenceSettings rsettings;
-    rsettings.bounces = 0;
-    rsettings.pixelCentres = true;
-    PathTracer tracer(rs, camera_, kWidth, kHeight, rsettings);
-    tracer.addSamples(4);
-    const std::vector<float> ref = tracer.image().viewRgb(View::Final, s);
+    const std::vector<float> ref = tracedAtPixelCentres(rs, camera_, kWidth, kHeight, 0, 4).viewRgb(View::Final, s);
     const auto mean = [](const std::vector<float>& rgb, const std::vector<std::size_t>& pixels) {
         glm::dvec3 sum(0.0);
         for (const std::size_t p : pixels) sum += glm::dvec3(rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]);
