@@ -429,6 +429,8 @@ void Renderer::Impl::updateGi(const Scene& scene, const CameraView& camera, cons
     const bool innerUpdating = std::find(nearUpdating.begin(), nearUpdating.end(), true) != nearUpdating.end();
     GiBudget sceneBudget = budget;
     if (innerUpdating) sceneBudget.refineVoxels = 0;
+    stats.nearLevelsScrolled = 0;
+    stats.nearVoxelizedVoxels = 0;
     GiFrameReport report = gi.update(
         {scene, *gpuScene, bounds, ShadowKinds::of(lights), shadowsDirty, frameIndex}, settings, sceneBudget, counters);
     bool updateWaits = report.updateDone < 1.0f, refinementWaits = report.refining || innerUpdating;
@@ -453,6 +455,8 @@ void Renderer::Impl::updateGi(const Scene& scene, const CameraView& camera, cons
         outerCompleted = near.updateCompleted;
         outer = level.get();
         report.voxelized = report.voxelized || near.voxelized;
+        if (near.scrolled) ++stats.nearLevelsScrolled;
+        if (near.voxelized) stats.nearVoxelizedVoxels += near.voxelizedVoxels;
         report.injected = report.injected || near.injected;
         report.lightChanged = report.lightChanged || near.lightChanged;
         if (near.updateDone < report.updateDone) {

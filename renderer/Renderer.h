@@ -35,6 +35,11 @@ struct FrameStats {
     std::size_t triangles = 0;  // triangles drawn in the G-buffer pass
     bool voxelized = false;     // the voxel volume was rebuilt this frame
     int voxelizedBoxes = 0;     // ... in this many changed boxes only (0: the whole volume)
+    // The near levels that scrolled this frame (moved by whole voxels: only the slabs they uncovered
+    // were voxelized), and the voxels the near levels voxelized (slabs, or whole levels that moved
+    // too far or not by whole voxels).
+    int nearLevelsScrolled = 0;
+    std::int64_t nearVoxelizedVoxels = 0;
     bool injected = false;      // radiance was re-injected this frame
     std::size_t voxelBytes = 0; // GPU memory of the voxel volumes
     std::size_t shadowMapBytes = 0;  // GPU memory of the shadow maps and their sheet colour layers

@@ -380,10 +380,22 @@ vec3 rayHitRadiance(uint hit, vec3 origin, vec3 dir) {
 // j₂) is voxel v's own shift of the pattern (a hash of its coordinates): with one pattern for all
 // voxels, neighbours saw a light source's edge through the same directions, and the ceiling and
 // walls showed streaks radiating from the lit patch that the filter and the refinement kept.
+// A near level's voxels hash their world coordinates (the level's corner lies on whole voxels
+// of its grid, VoxelVolume::placeAt): a voxel keeps its rays when the level scrolls, so its light
+// does not change with the camera's position.
+uvec3 patternCoord(ivec3 v) {
+#if LIT_NEAR_LEVEL
+    return uvec3(v + ivec3(floor(voxel.volumeMin.xyz / voxel.voxelInfo.z + 0.5)));
+#else
+    return uvec3(v);
+#endif
+}
+
 vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
     mat3 frame = tangentFrame(normal);
     int rays = max(uVoxelRays, 1);
-    uint hash = pcgHash(uint(v.x) + pcgHash(uint(v.y) + pcgHash(uint(v.z))));
+    uvec3 p = patternCoord(v);
+    uint hash = pcgHash(p.x + pcgHash(p.y + pcgHash(p.z)));
     vec2 shift = vec2(float(hash & 0xffffu), float(hash >> 16u)) / 65536.0;
     vec3 sum = vec3(0.0);
     // A change gathers ray i = stride·j + (j + subset) mod stride, j = 0 .. rays/stride − 1: every

@@ -14,6 +14,7 @@ void dispatchOverVoxels(const VoxelVolume& volume, const gl::Program& program, b
     overList = overList && volume.occupiedList();
     glProgramUniform1i(program.id(), program.location("uFromList"), overList ? 1 : 0);
     glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
+    setBoxUniforms(program, "uOnlyBox", volume.onlyBoxes());
     if (overList) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
         volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
@@ -38,6 +39,7 @@ void dispatchListRange(const VoxelVolume& volume, const gl::Program& program, bo
     }
     glProgramUniform1i(program.id(), program.location("uFromList"), 1);
     glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
+    setBoxUniforms(program, "uOnlyBox", volume.onlyBoxes());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
     glDispatchCompute((range.count + LIT_INJECT_LIST_GROUP_SIZE - 1) / LIT_INJECT_LIST_GROUP_SIZE, 1, 1);

@@ -30,15 +30,21 @@ VoxelGi::VoxelGi(const std::filesystem::path& shaderRoot, Profiler& profiler, Lo
       bounce_(shaderRoot),
       irradiance_(shaderRoot),
       filter_(shaderRoot),
+      scroll_(shaderRoot),
       shownUniforms_("near level shown placement", sizeof(gpu::VoxelUniforms), nullptr, 0) {}
 
 const char* VoxelGi::step(const char* name) const {
     // The profiler's names of a near level's steps: the overlay, the logs and the pacers tell them apart.
     static constexpr std::pair<const char*, const char*> kNearNames[] = {
-        {"voxelize", "near voxelize"},   {"solid voxels", "near solid voxels"},
-        {"mip lists", "near mip lists"}, {"inject", "near inject"},
-        {"mipmap", "near mipmap"},       {"bounces", "near bounces"},
-        {"voxel irradiance", "near voxel irradiance"}, {"voxel irradiance filter", "near voxel irradiance filter"}};
+        {"voxelize", "near voxelize"},
+        {"solid voxels", "near solid voxels"},
+        {"mip lists", "near mip lists"},
+        {"inject", "near inject"},
+        {"mipmap", "near mipmap"},
+        {"bounces", "near bounces"},
+        {"voxel irradiance", "near voxel irradiance"},
+        {"voxel irradiance filter", "near voxel irradiance filter"},
+        {"scroll", "near scroll"}};
     if (level_ == VoxelGiLevel::Scene) return name;
     for (const auto& [scene, near] : kNearNames)
         if (std::strcmp(scene, name) == 0) return near;
@@ -57,7 +63,9 @@ void VoxelGi::bindAsNearLevel(int index) const {
     shownUniforms_.bindBase(GL_UNIFORM_BUFFER, static_cast<GLuint>(LIT_UBO_NEAR_VOXEL_FIRST + index));
 }
 
-std::vector<Pass*> VoxelGi::passes() { return {&voxelize_, &solid_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_}; }
+std::vector<Pass*> VoxelGi::passes() {
+    return {&voxelize_, &solid_, &inject_, &mipmap_, &bounce_, &irradiance_, &filter_, &scroll_};
+}
 
 RayHits VoxelGi::rayHitsFor(int rays) {
     const GiState& state = scheduler_.state();
@@ -83,6 +91,18 @@ std::optional<std::vector<VoxelBox>> VoxelGi::changedBoxes(const std::vector<Ite
     return changes_.voxelizeChanged(items, volume_.placement());
 }
 
+std::optional<glm::ivec3> VoxelGi::scrollFor(const VoxelPlacement& before, const VoxelKey& voxels,
+                                             const RenderSettings& settings, bool reallocated, bool moved) const {
+    const GiState& state = scheduler_.state();
+    // The shown texels must be those of the placement it scrolls from (not an older one, still
+    // shown after a move that could not scroll), and the list may not have outgrown its rebuild.
+    if (level_ != VoxelGiLevel::Near || !moved || reallocated || !settings.gi.voxelizeChangesOnly ||
+        !state.voxelsValid || !state.listComplete || !(voxels == state.voxels) || shownPlacement_ != before ||
+        !irradianceCache_.matches(volume_) || state.occupied > 2 * std::max(wholeVolumeEntries_, 1u))
+        return std::nullopt;
+    return scrollShift(before, volume_.placement());
+}
+
 void VoxelGi::listTraced(RayHits hits) {
     scheduler_.listTraced(hits);
     if (hits != RayHits::Off) rayHitCache_.endPass();
@@ -103,7 +123,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     if (asked.milliseconds > 0.0) measureSpreadWork();
     const GiBudget budget = pacer_.paced(asked);
     const bool reallocated = volume_.ensure(settings.gi.voxelResolution, settings.gi.radianceRgba8, log_);
-    const bool moved = volume_.fitTo(frame.bounds);
+    const VoxelPlacement placedBefore = volume_.placement();
+    const bool moved = level_ == VoxelGiLevel::Near ? volume_.placeAt(frame.bounds) : volume_.fitTo(frame.bounds);
     volume_.updateUniforms(settings, frame.frameIndex);
     if (frame.outer && frame.far) {
         // A near level's rays continue in the next volume out, then in the scene's, where they
@@ -122,7 +143,22 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     const VoxelKey voxels{frame.scene.geometryRevision, frame.scene.materialRevision, &frame.scene};
     const GiLightKey light = GiLightKey::of(settings);
     const ConeFeatures features = featuresFor(settings);
-    GiScheduler::Changes changes = scheduler_.changes(voxels, light, reallocated, moved, frame.shadowsDirty);
+    // A near level the camera moved by whole voxels scrolls: what it holds moves with the world and
+    // only the uncovered slabs are voxelized, as changed boxes (their light made as after an edit
+    // of the geometry in them).
+    const std::optional<glm::ivec3> scroll = scrollFor(placedBefore, voxels, settings, reallocated, moved);
+    GiScheduler::Changes changes = scheduler_.changes(voxels, light, reallocated, moved && !scroll, frame.shadowsDirty);
+    // With the level's light converged and nothing else changed, only the voxels of the uncovered
+    // slabs are lit (continueSlabUpdate): the others keep their light, which a full update would
+    // only trace again. Else the scroll's update is a geometry edit's, over every voxel.
+    const GiProgress& progressBefore = scheduler_.state().progress;
+    const bool slabUpdate = scroll && light.untilConverged && light.voxelIrradiance && light.voxelRays > 0 &&
+                            progressBefore.bounce == 0 && progressBefore.irradianceLeft == 0 &&
+                            !scheduler_.changes(voxels, light, reallocated, false, frame.shadowsDirty).inject;
+    if (scroll) {
+        changes.voxelize = changes.inject = true;
+        changes.reason = slabUpdate ? "near level scrolled, lighting the uncovered slabs" : "near level scrolled";
+    }
     // Switched off: the directional volumes' memory goes back (0.6-1.3 GiB at 512³).
     if (!light.anisotropic && volume_.directional(0)) {
         volume_.releaseDirectionalVolumes();
@@ -132,17 +168,18 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     // After a geometry edit the pixels keep gathering the last complete update's irradiance until
     // the new one is complete, unless its texels no longer line up with the voxels (the volume moved
     // or was made again) or belong to another scene.
-    const bool keepShownLight = !reallocated && !moved && scheduler_.state().voxelsValid &&
+    const bool keepShownLight = !reallocated && (!moved || scroll) && scheduler_.state().voxelsValid &&
                                 scheduler_.state().voxels.scene == &frame.scene;
     // The near level that moved: its pixels keep gathering the last complete update's texels where
     // they were traced (shownUniforms_) until the moved level's update completes.
-    const bool keepShownOverMove = level_ == VoxelGiLevel::Near && moved && !reallocated &&
+    const bool keepShownOverMove = level_ == VoxelGiLevel::Near && moved && !scroll && !reallocated &&
                                    scheduler_.state().voxelsValid && scheduler_.state().voxels.scene == &frame.scene;
     std::vector<ItemPose> items;
     std::optional<std::vector<VoxelBox>> boxes;
     if (changes.voxelize) {
         items = itemPoses(frame.scene, frame.gpuScene);
-        boxes = changedBoxes(items, voxels, settings, reallocated, moved);
+        boxes = scroll ? uncoveredSlabs(*scroll, volume_.resolution())
+                       : changedBoxes(items, voxels, settings, reallocated, moved);
         changes.changedBoxesOnly = boxes.has_value();
     }
     // Every bounce after a geometry edit, spread over frames: the bounces start from the last
@@ -157,6 +194,15 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         bounce_.keepIndirect(volume_);
     }
     if (changes.voxelize) {
+        if (scroll) {
+            Profiler::Scope scope(profiler_, step("scroll"));
+            scroll_.execute(volume_, irradianceCache_, *scroll,
+                            std::min(scheduler_.state().occupied, volume_.occupiedCapacity()));
+            // The shown texels moved with their voxels.
+            glCopyNamedBufferSubData(volume_.uniforms().id(), shownUniforms_.id(), 0, 0, sizeof(gpu::VoxelUniforms));
+            shownPlacement_ = volume_.placement();
+            changes_.voxelizedAll(items, volume_.placement());
+        }
         {
             Profiler::Scope scope(profiler_, step("voxelize"));
             if (boxes) {
@@ -174,7 +220,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             // A column's walk reads that column only: after a voxelization of changed boxes, the
             // columns through them (their whole height: a box can open or close a solid above or below it).
             Profiler::Scope scope(profiler_, step("solid voxels"));
-            solid_.execute(volume_, boxes ? std::span<const VoxelBox>(*boxes) : std::span<const VoxelBox>());
+            // After a scroll every column: the solid bits did not move.
+            solid_.execute(volume_, boxes && !scroll ? std::span<const VoxelBox>(*boxes) : std::span<const VoxelBox>());
         }
         {
             // Once per voxelization: the mip chain is then built over these (light edits too).
@@ -194,8 +241,14 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                          "); injecting the whole grid until the next voxelization");
             volume_.growOccupiedList(occupied + occupied / 4);
         }
-        scheduler_.voxelized(voxels, occupied, complete, boxes.has_value());
-        if (boxes) {
+        // After a scroll no recorded hit holds: the traces march at their own pace, not a replay's.
+        scheduler_.voxelized(voxels, occupied, complete, boxes.has_value() && !scroll);
+        if (scroll) {
+            // Every recorded hit lies where its voxel was: each entry marches (and records) again,
+            // also in a pass under way (as for a box over the whole volume).
+            const int n = volume_.resolution();
+            rayHitCache_.markChanged({VoxelBox{glm::ivec3(0), glm::ivec3(n)}});
+        } else if (boxes) {
             rayHitCache_.markChanged(*boxes);
         } else {
             rayHitCache_.forgetChanges();
@@ -205,7 +258,31 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     const bool overList = scheduler_.state().listComplete;
     warmStart = warmStart && overList;
 
-    if (changes.inject) {
+    if (slabUpdate) {
+        // Level 0 keeps every voxel's light but the slabs', which get their direct light; the
+        // scheduler's state stays that of the complete update.
+        {
+            Profiler::Scope scope(profiler_, step("inject"));
+            inject_.execute(volume_, {.overList = overList,
+                                      .writeDirect = true,
+                                      .writeLevel0 = false,
+                                      .level0Boxes = *boxes,
+                                      .shadows = frame.shadows});
+        }
+        {
+            Profiler::Scope scope(profiler_, step("mipmap"));
+            mipmap_.execute(volume_, light.anisotropic, overList);
+        }
+        startSlabUpdate(*scroll);
+        report.injected = true;
+        pendingReason_ = changes.reason;
+        pendingFrame_ = profiler_.currentFrame();
+        pendingVoxelize_ = true;
+        pendingBoxes_ = report.voxelizedBoxes;
+        pendingBoxVoxels_ = report.voxelizedVoxels;
+        pendingBounces_ = 0;
+    } else if (changes.inject) {
+        slabs_ = {};  // the update lights every voxel
         // Before the injection, which then writes the bounces' direct radiance beside level 0.
         if (light.bounces > 1) volume_.ensureBounceVolumes();
         // The next bounce gathers the new direct light whole, and the one after it too unless the next
@@ -278,7 +355,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             // stills never need the second set of texels).
             irradianceCache_.prepare(volume_, start.clearIrradiance,
                                      (keepShownLight || keepShownOverMove) && scheduler_.spreadsOverFrames(light, budget));
-            if (changes.voxelize && !moved) filter_.pruneShown(volume_, irradianceCache_);
+            if (changes.voxelize && (!moved || scroll)) filter_.pruneShown(volume_, irradianceCache_);
         } else if (boxes && irradianceCache_.matches(volume_)) {
             // The update runs on over changed boxes: their voxels' traced irradiance belongs to
             // surfaces that moved, and neither set of texels may keep light where a surface is gone.
@@ -293,10 +370,17 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         pendingBoxes_ = report.voxelizedBoxes;
         pendingBoxVoxels_ = report.voxelizedVoxels;
     }
-    continueUpdate(settings, light, budget, changes.inject, report);
+    {
+        // The refinement waits for the slabs' light.
+        GiBudget updateBudget = budget;
+        if (!slabs_.boxes.empty()) updateBudget.refineVoxels = 0;
+        continueUpdate(settings, light, updateBudget, changes.inject, report);
+    }
+    continueSlabUpdate(settings, light, budget);
 
     const GiState& state = scheduler_.state();
     report.voxelized = changes.voxelize;
+    report.scrolled = scroll.has_value();
     report.occupiedVoxels = state.occupied;
     report.refining = scheduler_.refinementLeft(light);
     // The share done never goes back while an update runs, though the expected bounce count can grow
@@ -311,8 +395,10 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     report.bounces = state.light.untilConverged ? state.progress.bounceEstimate : state.light.bounces;
     report.everyBounce = state.light.untilConverged;
     report.showingPrevious = irradianceCache_.showingPrevious();
-    if (level_ == VoxelGiLevel::Near && !report.showingPrevious)  // the shown texels are this placement's
+    if (level_ == VoxelGiLevel::Near && !report.showingPrevious) {  // the shown texels are this placement's
         glCopyNamedBufferSubData(volume_.uniforms().id(), shownUniforms_.id(), 0, 0, sizeof(gpu::VoxelUniforms));
+        shownPlacement_ = volume_.placement();
+    }
     return report;
 }
 
@@ -451,6 +537,90 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
     if (report.updateCompleted ||
         (scheduler_.state().progress.irradianceLeft == 0 && scheduler_.state().progress.bounce == 0))
         irradianceCache_.showWritten();
+}
+
+void VoxelGi::startSlabUpdate(glm::ivec3 shift) {
+    // The voxels that lay within a quarter of the side of the face the level moved towards are lit
+    // again with the slabs: their rays left the level soon through that face into coarser light,
+    // and now run on inside it (docs/GI.md, "Near levels": lit with the slabs alone they read
+    // 15 % RMSE against a level voxelized whole).
+    const glm::ivec3 n(volume_.resolution());
+    const glm::ivec3 relit = glm::sign(shift) * glm::min(glm::abs(shift) + n / 4, n - 1);
+    std::vector<VoxelBox> boxes = uncoveredSlabs(relit, n.x);
+    // Slabs still unlit from an earlier scroll moved with the level; what left it is dropped.
+    for (const VoxelBox& old : slabs_.boxes) {
+        const VoxelBox moved{glm::clamp(old.min - shift, glm::ivec3(0), n),
+                             glm::clamp(old.max - shift, glm::ivec3(0), n)};
+        if (!moved.empty()) boxes.push_back(moved);
+    }
+    // Bounces under way run on over the new slabs too (their voxels start from their direct light
+    // as the others did): restarted at every scroll, a camera that moves on would keep them from
+    // ever converging. From the irradiance on, the new slabs need their bounces first.
+    const bool runOn = !slabs_.boxes.empty() && slabs_.bounce > 0;
+    if (!runOn) slabs_ = {};
+    slabs_.boxes = mergeVoxelBoxes(std::move(boxes), VoxelChangeTracker::kMaxBoxes);
+}
+
+void VoxelGi::continueSlabUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget) {
+    if (slabs_.boxes.empty()) return;
+    const std::uint32_t entries = std::min(scheduler_.state().occupied, volume_.occupiedCapacity());
+    const ConeFeatures features = featuresFor(settings);
+    // A share of the list holds about the slabs' share of its voxels: a budget's voxel count is
+    // the slabs' voxels a frame traces (0: all at once).
+    std::int64_t slabVoxels = 0;
+    for (const VoxelBox& box : slabs_.boxes) slabVoxels += box.voxels();
+    const double n = volume_.resolution();
+    const double share = std::max(static_cast<double>(slabVoxels) / (n * n * n), 1e-3);
+    const auto entriesFor = [&](std::uint32_t voxels) -> std::uint32_t {
+        if (voxels == GiBudget::kAll) return 0;
+        return std::max(static_cast<std::uint32_t>(std::min(std::ceil(voxels / share), static_cast<double>(entries))),
+                        1u);
+    };
+    volume_.setOnlyBoxes(slabs_.boxes);
+    double tracedVoxels = 0.0;  // the slabs' voxels traced this frame, for the pacer
+    GiPacer::Work work = GiPacer::Work::Update;
+    for (bool traced = false; !slabs_.boxes.empty();) {
+        // The refinement's rounds take the refinement's budget, and wait when it is 0.
+        const bool refining = slabs_.bounce == 0 && slabs_.round > 0;
+        if (refining && budget.refineVoxels == 0) break;
+        const std::uint32_t perFrame = entriesFor(refining ? budget.refineVoxels : budget.updateVoxels);
+        if (traced && perFrame > 0) break;  // a share a frame
+        traced = true;
+        const VoxelRange range{slabs_.next, perFrame > 0 ? std::min(perFrame, entries - slabs_.next) : entries};
+        const bool passEnds = range.first + range.count >= entries;
+        slabs_.next = passEnds ? 0 : slabs_.next + range.count;
+        tracedVoxels += range.count * share;
+        work = refining ? GiPacer::Work::Refine : GiPacer::Work::Update;
+        if (slabs_.bounce > 0) {
+            // Every bounce gathers level 0: the kept voxels' converged light and the slabs' own.
+            Profiler::Scope scope(profiler_, step("bounces"));
+            if (range.first == 0) bounce_.resetChange();
+            bounce_.trace(volume_, rayHitCache_,
+                          {features, false, true, range, RayHits::Off, true, -1, light.laterBounceRayStride});
+            if (!passEnds) continue;
+            const bool converged = slabs_.convergence.add(bounce_.readChange().relative());
+            const bool last = converged || slabs_.bounce >= light.bounces;
+            bounce_.finish(volume_,
+                           {true, converged ? static_cast<float>(slabs_.convergence.tail()) : 0.0f, false, false});
+            slabs_.bounce = last ? 0 : slabs_.bounce + 1;
+            if (last) mipmap_.execute(volume_, light.anisotropic, true);
+            continue;
+        }
+        // The irradiance with each voxel's own cone set (round 0), then the other sets averaged in
+        // (GiScheduler::takeRefinement's rounds).
+        {
+            Profiler::Scope scope(profiler_, step("voxel irradiance"));
+            irradiance_.trace(volume_, irradianceCache_, rayHitCache_,
+                              {features, true, range, slabs_.round, RayHits::Off});
+        }
+        Profiler::Scope scope(profiler_, step("voxel irradiance filter"));
+        // A round's last share filters all the slabs' voxels, each then seeing its neighbours' values.
+        filter_.execute(volume_, irradianceCache_, true, passEnds ? VoxelRange{} : range);
+        if (passEnds && ++slabs_.round == GiScheduler::kConeSets) slabs_.boxes.clear();
+    }
+    volume_.setOnlyBoxes({});
+    if (budget.milliseconds > 0.0 && tracedVoxels > 0.0)
+        pacer_.traced(profiler_.currentFrame(), work, static_cast<std::uint32_t>(std::ceil(tracedVoxels)));
 }
 
 void VoxelGi::bindGather(const RenderSettings& settings) const {

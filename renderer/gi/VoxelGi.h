@@ -27,6 +27,7 @@
 #include "gi/VoxelIrradianceCache.h"
 #include "gi/VoxelIrradiancePass.h"
 #include "gi/VoxelRegions.h"
+#include "gi/VoxelScrollPass.h"
 #include "gi/VoxelVolume.h"
 #include "gi/VoxelizePass.h"
 #include "scene/Aabb.h"
@@ -41,6 +42,7 @@ struct Scene;
 // What a GI frame did, for FrameStats and the editor's overlay.
 struct GiFrameReport {
     bool voxelized = false;            // the volume was voxelized again
+    bool scrolled = false;             // a near level scrolled: only the slabs it uncovered were voxelized
     int voxelizedBoxes = 0;            // ... in this many changed boxes only (0: the whole volume)
     std::int64_t voxelizedVoxels = 0;  // voxels those boxes hold (the whole volume's N³ otherwise)
     bool injected = false;             // the light was injected again
@@ -127,6 +129,15 @@ private:
     // possible and asked for (RenderSettings: voxelizeChangesOnly).
     std::optional<std::vector<VoxelBox>> changedBoxes(const std::vector<ItemPose>& items, const VoxelKey& voxels,
                                                       const RenderSettings& settings, bool reallocated, bool moved);
+    // A near level scrolled by `shift` with its light converged: the voxels of the uncovered slabs
+    // and of a margin behind them (and of an earlier scroll's slabs not lit yet, moved with it) get
+    // their light by an update over them alone, run by continueSlabUpdate under the frame budget.
+    void startSlabUpdate(glm::ivec3 shift);
+    void continueSlabUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget);
+    // A near level that moved from `before`: the shift to scroll it by (VoxelScrollPass), or
+    // nullopt when it must be voxelized whole.
+    std::optional<glm::ivec3> scrollFor(const VoxelPlacement& before, const VoxelKey& voxels,
+                                        const RenderSettings& settings, bool reallocated, bool moved) const;
     // Gives the pacer the GPU time of the spread passes of each frame whose timings came in since
     // the last call.
     void measureSpreadWork();
@@ -149,6 +160,7 @@ private:
     BouncePass bounce_;
     VoxelIrradiancePass irradiance_;
     IrradianceFilterPass filter_;
+    VoxelScrollPass scroll_;
     VoxelIrradianceCache irradianceCache_;
     RayHitCache rayHitCache_;
     GiScheduler scheduler_;
@@ -180,6 +192,18 @@ private:
     // A near level: the placement (VoxelUniforms) of the texels the pixels gather, which after a
     // move is the old one until the moved level's update completes.
     gl::Buffer shownUniforms_;
+    VoxelPlacement shownPlacement_;  // ... as a placement
+    // The update of a scroll's uncovered slabs under way (empty boxes: none): every bounce until the
+    // slabs' light converges, then their irradiance and its refinement rounds; the list passes skip
+    // the voxels outside them.
+    struct SlabUpdate {
+        std::vector<VoxelBox> boxes;
+        int bounce = 2;          // the bounce under way (2, 3, ...); 0: the irradiance
+        int round = 0;           // the irradiance's round: 0 each voxel's own cone set, 1.. the refinement's
+        std::uint32_t next = 0;  // the pass's next list entry
+        BounceConvergence convergence;
+    };
+    SlabUpdate slabs_;
     // The update waiting for its GPU timings to be logged: why it ran, in which frame.
     std::string pendingReason_;
     std::uint64_t pendingFrame_ = 0;

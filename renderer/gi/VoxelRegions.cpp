@@ -18,6 +18,38 @@ VoxelBox voxelBoxOf(const Aabb& world, const VoxelPlacement& placement, int padd
     return box;
 }
 
+std::optional<glm::ivec3> scrollShift(const VoxelPlacement& before, const VoxelPlacement& after) {
+    if (before.resolution <= 0 || before.resolution != after.resolution || before.voxelSize != after.voxelSize)
+        return std::nullopt;
+    const glm::vec3 voxels = (after.min - before.min) / after.voxelSize;
+    const glm::vec3 whole = glm::round(voxels);
+    // The corners are sums of metres in float: a few ulps off a whole voxel at city coordinates.
+    if (glm::any(glm::greaterThan(glm::abs(voxels - whole), glm::vec3(1e-2f)))) return std::nullopt;
+    const glm::ivec3 shift(whole);
+    if (glm::any(glm::greaterThanEqual(glm::abs(shift), glm::ivec3(before.resolution)))) return std::nullopt;
+    return shift;
+}
+
+std::vector<VoxelBox> uncoveredSlabs(glm::ivec3 shift, int resolution) {
+    std::vector<VoxelBox> slabs;
+    VoxelBox rest{glm::ivec3(0), glm::ivec3(resolution)};  // what the slabs so far leave
+    for (int axis = 0; axis < 3; ++axis) {
+        const int s = shift[axis];
+        if (s == 0) continue;
+        VoxelBox slab = rest;
+        // Moved towards +axis: the voxels past the old far face, now at the top of the range.
+        if (s > 0) {
+            slab.min[axis] = resolution - s;
+            rest.max[axis] = resolution - s;
+        } else {
+            slab.max[axis] = -s;
+            rest.min[axis] = -s;
+        }
+        if (!slab.empty()) slabs.push_back(slab);
+    }
+    return slabs;
+}
+
 namespace {
 // Joins overlapping boxes until none overlap: a voxel in two boxes would be cleared and drawn twice.
 void joinOverlapping(std::vector<VoxelBox>& boxes) {

@@ -46,6 +46,16 @@ struct VoxelPlacement {
 // rasterization writes up to a voxel beyond a triangle), clamped to the volume.
 VoxelBox voxelBoxOf(const Aabb& world, const VoxelPlacement& placement, int padding);
 
+// A near level that moved from `before` to `after` (same voxel size and resolution) by whole
+// voxels, fewer than the resolution along each axis: the shift in voxels (a voxel at world voxel w
+// moves from w − before's corner to w − after's, so its coordinates drop by the shift). nullopt
+// when the volume cannot scroll (another size, a fraction of a voxel, a jump past its side).
+std::optional<glm::ivec3> scrollShift(const VoxelPlacement& before, const VoxelPlacement& after);
+
+// The voxels a scroll by `shift` uncovers in an N³ volume (N = `resolution`): a slab per axis that
+// moved, as disjoint boxes (a voxel in two boxes would be cleared and drawn twice).
+std::vector<VoxelBox> uncoveredSlabs(glm::ivec3 shift, int resolution);
+
 // The two boxes whose joined box adds the fewest voxels (needs at least two).
 std::pair<std::size_t, std::size_t> cheapestJoin(const std::vector<VoxelBox>& boxes);
 

@@ -160,6 +160,16 @@ bool VoxelVolume::fitTo(const Aabb& sceneBounds) {
     return moved;
 }
 
+bool VoxelVolume::placeAt(const Aabb& cube) {
+    const float side = std::max(cube.size().x, 1e-3f);
+    const glm::vec3 shift = glm::vec3(0.0f, 0.25f, 0.25f) * (side / static_cast<float>(resolution_));
+    const glm::vec3 min = cube.min - shift;
+    const bool moved = side != side_ || min != min_;
+    side_ = side;
+    min_ = min;
+    return moved;
+}
+
 void VoxelVolume::updateUniforms(const RenderSettings& settings, int frameIndex) {
     gpu::VoxelUniforms u{};
     u.volumeMin = glm::vec4(min_, side_);

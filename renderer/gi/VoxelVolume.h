@@ -23,6 +23,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "RenderSettings.h"
@@ -46,6 +47,10 @@ public:
     // inside, shifted by ¼ voxel in y and z so that surfaces at round heights do not lie on voxel
     // faces) and returns whether it moved (the caller must re-voxelize).
     bool fitTo(const Aabb& sceneBounds);
+    // A near level: the cube is `cube` itself (no padding: it is placed around the camera, not
+    // around geometry), shifted by the same ¼ voxel in y and z, so that moves of the cube by whole
+    // voxels move the grid by whole voxels (VoxelScrollPass). Returns whether it moved.
+    bool placeAt(const Aabb& cube);
     // Uploads VoxelUniforms from the volume placement and `settings`, binds it to LIT_UBO_VOXEL.
     void updateUniforms(const RenderSettings& settings, int frameIndex);
 
@@ -73,6 +78,11 @@ public:
     // Which empty voxels lie inside a solid (SSBO at LIT_SSBO_SOLID_VOXELS: one bit per voxel,
     // written by SolidVoxelsPass after each voxelization, read by the voxel rays).
     const gl::Buffer& solidVoxels() const { return solid_; }
+    // The boxes the passes over the list are limited to (the list readers skip voxels outside
+    // them; empty: every voxel): a near level's update of the slabs a scroll uncovered sets them
+    // around its passes (VoxelGi). Applied by dispatchOverVoxels and dispatchListRange.
+    const std::vector<VoxelBox>& onlyBoxes() const { return onlyBoxes_; }
+    void setOnlyBoxes(std::vector<VoxelBox> boxes) { onlyBoxes_ = std::move(boxes); }
     // The stored coordinates (tests): min(count, capacity) entries in append order.
     std::vector<glm::ivec3> readOccupiedList() const;
     // Grows the list to hold at least `count` voxels (after an overflow; the next voxelization fills it).
@@ -177,6 +187,7 @@ private:
     gl::Buffer listed_;
     gl::Buffer solid_;
     std::uint32_t occupiedCapacity_ = 0;
+    std::vector<VoxelBox> onlyBoxes_;
     gl::Buffer parents_;
     ParentLayout parentLayout_;
     bool parentListsValid_ = false;

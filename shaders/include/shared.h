@@ -176,6 +176,11 @@ using mat4 = glm::mat4;
 // a hit recorded before a changed box's epoch whose ray crosses that box is marched again
 // (uniforms uChangedBoxMin/Max). The mip parents' slot: never bound with the traces.
 #define LIT_SSBO_VOXEL_RAY_EPOCHS 5
+// A near level's scroll (VoxelScrollPass, voxel_scroll.comp.glsl): per occupied-list entry the
+// texels it lifts from its voxel's old place before placing them at the new one
+// (LIT_SCROLL_SAVED_TEXELS uvec4 each). The ray hits' slot: never bound with the traces.
+#define LIT_SSBO_VOXEL_SCROLL 6
+#define LIT_SCROLL_SAVED_TEXELS 4
 // The most boxes a voxelization of changed boxes passes to the shaders (VoxelChangeTracker::kMaxBoxes):
 // the ray-hit cache's changed boxes, the injection's boxes of new level-0 light.
 #define LIT_CHANGED_BOXES 8

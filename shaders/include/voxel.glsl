@@ -129,16 +129,27 @@ ivec3 unpackVoxelCoord(uint p) { return ivec3(int(p & 1023u), int((p >> 10) & 10
 // What a compute shader that dispatchOverVoxels (gi/VoxelDispatch.h) runs (injection, bounces) declares:
 // the list, whether this dispatch runs over it (uFromList = 1, LIT_INJECT_LIST_GROUP_SIZE entries
 // per work group) or over the whole grid, and listedVoxel(), this invocation's voxel of the list
-// (false past its end).
+// (false past its end, or outside the boxes the pass is limited to: uOnlyBoxCount > 0, a near
+// level's update of the slabs a scroll uncovered, VoxelVolume::onlyBoxes).
 #define LIT_VOXEL_LIST_READER                                                                      \
     LIT_OCCUPIED_VOXELS_BLOCK(readonly);                                                           \
     uniform int uFromList;                                                                         \
     uniform uint uOccupiedCapacity;                                                                \
+    uniform int uOnlyBoxCount;                                                                     \
+    uniform ivec4 uOnlyBoxMin[LIT_CHANGED_BOXES];                                                  \
+    uniform ivec4 uOnlyBoxMax[LIT_CHANGED_BOXES];                                                  \
+    bool inOnlyBoxes(ivec3 v) {                                                                    \
+        if (uOnlyBoxCount == 0) return true;                                                       \
+        for (int i = 0; i < uOnlyBoxCount; ++i)                                                    \
+            if (all(greaterThanEqual(v, uOnlyBoxMin[i].xyz)) && all(lessThan(v, uOnlyBoxMax[i].xyz))) \
+                return true;                                                                       \
+        return false;                                                                              \
+    }                                                                                              \
     bool listedVoxel(out ivec3 v) {                                                                \
         uint index = gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex; \
         if (index >= min(occupiedCount, uOccupiedCapacity)) return false;                         \
         v = unpackVoxelCoord(occupiedVoxels[index]);                                               \
-        return true;                                                                               \
+        return inOnlyBoxes(v);                                                                     \
     }
 // A part of the list, entries [uListFirst, uListEnd), in one dispatch sized for them (the cached GI
 // mode's amortised irradiance trace and its filter, dispatchListRange); the whole list
@@ -151,7 +162,7 @@ ivec3 unpackVoxelCoord(uint p) { return ivec3(int(p & 1023u), int((p >> 10) & 10
         index = uListFirst + gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex; \
         if (index >= min(min(occupiedCount, uOccupiedCapacity), uListEnd)) return false;                 \
         v = unpackVoxelCoord(occupiedVoxels[index]);                                                      \
-        return true;                                                                                      \
+        return inOnlyBoxes(v);                                                                            \
     }                                                                                                     \
     bool listedVoxelInRange(out ivec3 v) {                                                                \
         uint index;                                                                                       \

@@ -401,6 +401,11 @@ TEST(Options, GiBudgetFlags) {
         parseOptions({"x.gltf", "--out", "a.png", "--gi-update-per-frame", "20000", "--gi-refine-per-frame", "0"}));
     EXPECT_EQ(spread.updateVoxels, 20000u);
     EXPECT_EQ(spread.refineVoxels, 0u);
+    EXPECT_EQ(spread.milliseconds, 0.0);
+    const lit::GiBudget paced = lit::cli::giBudgetFor(
+        parseOptions({"x.gltf", "--out", "a.png", "--gi-update-per-frame", "16384", "--gi-ms-per-frame", "25"}));
+    EXPECT_EQ(paced.updateVoxels, 16384u);
+    EXPECT_EQ(paced.milliseconds, 25.0);
     // 0 = the whole update at once.
     EXPECT_EQ(
         lit::cli::giBudgetFor(parseOptions({"x.gltf", "--out", "a.png", "--gi-update-per-frame", "0"})).updateVoxels,
@@ -408,7 +413,8 @@ TEST(Options, GiBudgetFlags) {
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--gi-update-per-frame", "-1"}),
               "--gi-update-per-frame expects a voxel count from 0, got '-1'");
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--single-frame", "--gi-refine-per-frame", "5"}),
-              "--single-frame sets the GI work per frame; give it or --gi-update-per-frame / --gi-refine-per-frame");
+              "--single-frame sets the GI work per frame; give it or --gi-update-per-frame / --gi-refine-per-frame / "
+              "--gi-ms-per-frame");
     EXPECT_EQ(usageError({"x.gltf", "--out", "a.png", "--voxel-irradiance", "on"}),
               "--voxel-irradiance was replaced by --gi-mode fast|accurate|cached");
 }

@@ -1,6 +1,8 @@
 // VoxelChangeTracker: which voxels a move changed, and when the whole volume is voxelized instead.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gi/VoxelRegions.h"
@@ -90,6 +92,55 @@ TEST(VoxelRegions, TheWholeVolumeWhenThePlacementOrTheItemsChangeOrTheBoxesAreLa
     ItemPose bigMoved = big;
     bigMoved.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0.0f, 0.0f));
     EXPECT_FALSE(tracker.voxelizeChanged({bigMoved}, kPlacement));
+}
+
+// A near level moved by whole voxels scrolls by that shift; by a fraction of one, to another size
+// or past its side it does not.
+TEST(VoxelRegions, ScrollShiftIsWholeVoxelsWithinTheSide) {
+    const VoxelPlacement before{glm::vec3(250.0f, -0.125f, 255.875f), 0.5f, 128};
+    VoxelPlacement after = before;
+    after.min += glm::vec3(8.0f, 0.0f, -16.0f);
+    const std::optional<glm::ivec3> shift = scrollShift(before, after);
+    ASSERT_TRUE(shift);
+    EXPECT_EQ(*shift, glm::ivec3(16, 0, -32));
+    EXPECT_EQ(scrollShift(before, before), glm::ivec3(0));
+    VoxelPlacement fraction = before;
+    fraction.min.x += 0.25f;
+    EXPECT_FALSE(scrollShift(before, fraction));
+    VoxelPlacement far = before;
+    far.min.z += 64.0f;  // 128 voxels: nothing kept
+    EXPECT_FALSE(scrollShift(before, far));
+    VoxelPlacement coarser = after;
+    coarser.voxelSize = 1.0f;
+    EXPECT_FALSE(scrollShift(before, coarser));
+}
+
+// The slabs a scroll uncovers are disjoint, cover exactly the voxels whose old coordinates (v +
+// shift) lie outside the volume, and nothing else.
+TEST(VoxelRegions, UncoveredSlabsAreExactlyTheVoxelsNotKept) {
+    constexpr int n = 16;
+    for (const glm::ivec3 shift :
+         {glm::ivec3(3, 0, 0), glm::ivec3(0, -5, 0), glm::ivec3(2, -1, 7), glm::ivec3(-15, 15, -1)}) {
+        const std::vector<VoxelBox> slabs = uncoveredSlabs(shift, n);
+        for (std::size_t i = 0; i < slabs.size(); ++i)
+            for (std::size_t j = i + 1; j < slabs.size(); ++j) EXPECT_FALSE(slabs[i].overlaps(slabs[j]));
+        std::int64_t covered = 0;
+        for (const VoxelBox& slab : slabs) covered += slab.voxels();
+        std::int64_t uncovered = 0;
+        for (int z = 0; z < n; ++z)
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    const glm::ivec3 v(x, y, z), old = v + shift;
+                    const bool kept = glm::all(glm::greaterThanEqual(old, glm::ivec3(0))) &&
+                                      glm::all(glm::lessThan(old, glm::ivec3(n)));
+                    const bool inSlab = std::any_of(slabs.begin(), slabs.end(), [&](const VoxelBox& b) {
+                        return b.overlaps(VoxelBox{v, v + 1});
+                    });
+                    EXPECT_NE(kept, inSlab) << "voxel " << x << " " << y << " " << z;
+                    uncovered += kept ? 0 : 1;
+                }
+        EXPECT_EQ(covered, uncovered);
+    }
 }
 
 }  // namespace

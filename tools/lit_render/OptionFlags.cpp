@@ -345,6 +345,14 @@ std::vector<Flag> flagTable() {
                      .help = "voxels the refinement (the other cone sets, after the update) traces per frame "
                              "(default: all at once; 0 = none)",
                      .store = integerInto(&Options::giRefinePerFrame, 0, 1 << 30, "a voxel count from 0")});
+    flags.push_back({.names = {"--gi-ms-per-frame"},
+                     .value = "MS",
+                     .expects = "milliseconds",
+                     .group = G::Gi,
+                     .help = "GPU time the spread GI work (the update's and the refinement's shares) may take a frame, "
+                             "the voxel counts above being the most it traces, as the editor paces it (default 0 = "
+                             "the counts alone)",
+                     .store = integerInto(&Options::giMsPerFrame, 0, 60000, "milliseconds from 0 to 60000")});
 
     // ---- Indirect (RenderSettings::indirect)
     flags.push_back({.names = {"--indirect-scale"},
@@ -465,9 +473,9 @@ std::vector<Flag> flagTable() {
                      .store = pathInto(&Options::framesOut, "a folder")});
     flags.push_back({.names = {"--bench-path"},
                      .group = G::Paths,
-                     .help = "time every frame of the path (after one untimed warm-up frame) and print the lowest "
-                             "and highest FPS and the mean frame time, and a flicker figure: mean |frame-to-frame "
-                             "change| of pixels whose surface did not move",
+                     .help = "time every frame of the path (after one untimed warm-up frame that finishes the GI "
+                             "work) and print the lowest and highest FPS and the mean frame time, and a flicker "
+                             "figure: mean |frame-to-frame change| of pixels whose surface did not move",
                      .store = &Options::benchPath});
 
     // ---- Reference (the CPU path tracer, and comparing with its images)

@@ -159,9 +159,10 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw UsageError("--json needs --bench or --bench-path");
     if (options.frames && options.benchFrames > 0)
         throw UsageError("--frames and --bench both set the number of frames; give one of them");
-    if (options.singleFrame && (options.giUpdatePerFrame || options.giRefinePerFrame))
+    if (options.singleFrame && (options.giUpdatePerFrame || options.giRefinePerFrame || options.giMsPerFrame))
         throw UsageError(
-            "--single-frame sets the GI work per frame; give it or --gi-update-per-frame / --gi-refine-per-frame");
+            "--single-frame sets the GI work per frame; give it or --gi-update-per-frame / --gi-refine-per-frame / "
+            "--gi-ms-per-frame");
     if (options.giUpdateRounds > 0 && options.benchFrames == 0)
         throw UsageError("--bench-gi-updates needs --bench (the steady frames come first)");
     if (options.giMoveRounds > 0 && options.benchFrames == 0)
@@ -212,6 +213,7 @@ GiBudget giBudgetFor(const Options& options) {
     if (options.giUpdatePerFrame && *options.giUpdatePerFrame > 0)
         budget.updateVoxels = static_cast<std::uint32_t>(*options.giUpdatePerFrame);
     if (options.giRefinePerFrame) budget.refineVoxels = static_cast<std::uint32_t>(*options.giRefinePerFrame);
+    if (options.giMsPerFrame) budget.milliseconds = *options.giMsPerFrame;
     return budget;
 }
 

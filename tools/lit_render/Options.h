@@ -69,6 +69,7 @@ struct Options {
     // included, so a still shows the converged light the editor shows after refinement.
     std::optional<int> giUpdatePerFrame;  // --gi-update-per-frame N: the update's voxels per frame (0 = all)
     std::optional<int> giRefinePerFrame;  // --gi-refine-per-frame N: the refinement's voxels per frame (0 = none)
+    std::optional<int> giMsPerFrame;      // --gi-ms-per-frame MS: GPU time the spread GI work may take a frame
     bool singleFrame = false;             // --single-frame: the update in the first frame, no refinement
     std::optional<bool> culling;       // --culling on|off: frustum culling of the G-buffer and shadow views
     std::optional<int> indirectScale;  // --indirect-scale 1|2|4
