@@ -132,7 +132,8 @@ struct Renderer::Impl {
     // `level` (0 the finest: GiSettings::nearLevelSide, each next twice the last), metres.
     static Aabb nearLevelBox(const glm::vec3& eye, float side);
     static float nearLevelSide(const RenderSettings& settings, int level);
-    std::size_t giBytes(const RenderSettings& settings) const;  // the scene volume's and the near level's
+    // stats.voxelBytes and stats.nearLevels: the scene volume's and the near levels' memory.
+    void recordGiMemory(const RenderSettings& settings);
     // `requested`, or a copy with fewer near levels: those at least half the scene's size across
     // are left out (the scene's volume is about as fine: they would cost without adding).
     const RenderSettings& withNearLevelFitted(const RenderSettings& requested);
@@ -306,7 +307,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     r.lastFrame = frame;
     r.lastVoxelSize = settings.gi.enabled ? r.gi.volume().voxelSize() : 0.0f;
     r.lastVolumeSide = settings.gi.enabled ? r.gi.volume().side() : 0.0f;
-    r.stats.voxelBytes = settings.gi.enabled ? r.giBytes(settings) : 0;
+    r.recordGiMemory(settings);
     r.stats.shadowMapBytes = r.shadow.memoryBytes();
     r.profiler.endFrame();
     r.stats.drawCalls = r.counters.drawCalls;
@@ -323,7 +324,7 @@ void Renderer::advanceGi(const Scene& scene, const CameraView& camera, const Ren
     const bool shadowsDirty = r.beginScene(scene, camera, requested).shadowsDirty;
     const RenderSettings& settings = r.withNearLevelFitted(requested);
     r.updateGi(scene, camera, settings, budget, shadowsDirty);
-    r.stats.voxelBytes = r.giBytes(settings);
+    r.recordGiMemory(settings);
     r.profiler.endFrame();
 }
 
@@ -459,8 +460,8 @@ void Renderer::Impl::updateGi(const Scene& scene, const CameraView& camera, cons
         if (near.voxelized) stats.nearVoxelizedVoxels += near.voxelizedVoxels;
         report.injected = report.injected || near.injected;
         report.lightChanged = report.lightChanged || near.lightChanged;
-        if (near.updateDone < report.updateDone) {
-            report.updateDone = near.updateDone;
+        if (near.updateDone < report.updateDone || (report.updateStage.empty() && !near.updateStage.empty())) {
+            report.updateDone = std::min(report.updateDone, near.updateDone);
             report.updateStage = "near " + std::to_string(k + 1) + ": " + near.updateStage;
         }
         report.refining = report.refining || near.refining;
@@ -499,11 +500,19 @@ const RenderSettings& Renderer::Impl::withNearLevelFitted(const RenderSettings& 
     return nearLevelFitted;
 }
 
-std::size_t Renderer::Impl::giBytes(const RenderSettings& settings) const {
-    std::size_t bytes = gi.bytes();
-    for (int k = 0; k < settings.gi.nearLevelCount() && k < static_cast<int>(nearGi.size()); ++k)
-        if (nearGi[static_cast<std::size_t>(k)]) bytes += nearGi[static_cast<std::size_t>(k)]->bytes();
-    return bytes;
+void Renderer::Impl::recordGiMemory(const RenderSettings& settings) {
+    stats.nearLevels.clear();
+    if (!settings.gi.enabled) {
+        stats.voxelBytes = 0;
+        return;
+    }
+    stats.voxelBytes = gi.bytes();
+    for (int k = 0; k < settings.gi.nearLevelCount() && k < static_cast<int>(nearGi.size()); ++k) {
+        const std::unique_ptr<VoxelGi>& level = nearGi[static_cast<std::size_t>(k)];
+        if (!level) continue;
+        stats.nearLevels.push_back({nearLevelSide(settings, k), level->bytes()});
+        stats.voxelBytes += level->bytes();
+    }
 }
 
 // L_DD + L_DS from the lights and their shadow maps, then L_ID + L_IS from the voxel GI.

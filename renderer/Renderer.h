@@ -42,6 +42,13 @@ struct FrameStats {
     std::int64_t nearVoxelizedVoxels = 0;
     bool injected = false;      // radiance was re-injected this frame
     std::size_t voxelBytes = 0; // GPU memory of the voxel volumes
+    // Each near level's side (m) and GPU memory (its volumes, caches and ray hits), finest first;
+    // the scene's volume holds voxelBytes less their sum.
+    struct NearLevelMemory {
+        float side = 0.0f;
+        std::size_t bytes = 0;
+    };
+    std::vector<NearLevelMemory> nearLevels;
     std::size_t shadowMapBytes = 0;  // GPU memory of the shadow maps and their sheet colour layers
     // Entries of the occupied-voxel list (inject runs over these): the voxels the last voxelization
     // of the whole volume occupied, plus those voxelizations of changed boxes added since.

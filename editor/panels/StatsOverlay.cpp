@@ -187,6 +187,25 @@ glm::vec4 drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, co
                 stats.injected ? " [injected]" : "");
     // The report is formatted only while someone reads it, not every frame.
     if (voxels && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", voxels->memoryReport().c_str());
+    if (!stats.nearLevels.empty()) {
+        // Each volume's share: the scene's, then the near levels around the camera, finest first.
+        std::size_t nearBytes = 0;
+        for (const FrameStats::NearLevelMemory& level : stats.nearLevels) nearBytes += level.bytes;
+        char part[64];
+        std::snprintf(part, sizeof part, "  scene volume %.1f",
+                      static_cast<double>(stats.voxelBytes - nearBytes) / kMiB);
+        std::string text = part;
+        for (const FrameStats::NearLevelMemory& level : stats.nearLevels) {
+            std::snprintf(part, sizeof part, ", %g m level %.1f", static_cast<double>(level.side),
+                          static_cast<double>(level.bytes) / kMiB);
+            text += part;
+        }
+        ImGui::TextDisabled("%s MiB", text.c_str());
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "GPU memory of each voxel volume with its caches and ray hits: the one around the\n"
+                "scene, then the near levels around the camera (Render settings, Near level side)");
+    }
     ImGui::Text("Shadow maps %.1f MiB", static_cast<double>(stats.shadowMapBytes) / kMiB);
     // The cached mode's update after an edit runs over frames: how far it is, so that nobody
     // judges the light before it is right.
@@ -204,8 +223,12 @@ glm::vec4 drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, co
     } else if (!stats.giUpdateStage.empty()) {
         ImGui::TextDisabled("GI %s", stats.giUpdateStage.c_str());
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("The light is right; each round traces every voxel again with other directions, "
-                              "averaging out the faint bands of a one-frame trace");
+            ImGui::SetTooltip("%s", stats.giUpdateStage.find("uncovered slabs") != std::string::npos
+                                        ? "The near level moved with the camera: the voxels it uncovered are lit a "
+                                          "part a frame (Render settings, GI ms / frame); until then the pixels "
+                                          "there gather the coarser volume's light"
+                                        : "The light is right; each round traces every voxel again with other "
+                                          "directions, averaging out the faint bands of a one-frame trace");
     }
     // While GI work is in flight: how much of its time budget the last measured frame used.
     if ((stats.giUpdateDone < 1.0f || !stats.giUpdateStage.empty()) && frame.giBudgetMs > 0.0) {

@@ -382,7 +382,9 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     report.voxelized = changes.voxelize;
     report.scrolled = scroll.has_value();
     report.occupiedVoxels = state.occupied;
-    report.refining = scheduler_.refinementLeft(light);
+    // The uncovered slabs' update counts as refinement: the light is right elsewhere, and the
+    // editor keeps rendering frames for it.
+    report.refining = scheduler_.refinementLeft(light) || !slabs_.boxes.empty();
     // The share done never goes back while an update runs, though the expected bounce count can grow
     // as the light's convergence is measured (in the sun room the share would fall from 41 % to 27 %).
     const float done = scheduler_.updateDone();
@@ -392,6 +394,11 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         shownDone_ = std::max(shownDone_, done);
     report.updateDone = shownDone_;
     report.updateStage = scheduler_.updateStage(report.refinedVoxels > 0);
+    if (!slabs_.boxes.empty())  // the light is right but for the slabs a scroll uncovered
+        report.updateStage = slabs_.bounce > 0   ? "uncovered slabs, bounce " + std::to_string(slabs_.bounce)
+                             : slabs_.round == 0 ? std::string("uncovered slabs, irradiance")
+                                                 : "uncovered slabs, refining " + std::to_string(slabs_.round) + "/" +
+                                                       std::to_string(GiScheduler::kConeSets - 1);
     report.bounces = state.light.untilConverged ? state.progress.bounceEstimate : state.light.bounces;
     report.everyBounce = state.light.untilConverged;
     report.showingPrevious = irradianceCache_.showingPrevious();

@@ -51,7 +51,7 @@ struct GiFrameReport {
     float updateDone = 1.0f;           // share of the update after the last edit done (1: all)
     std::string updateStage;           // "bounce 2".."bounce N", "irradiance", "refining k/15", ""
     std::uint32_t refinedVoxels = 0;   // voxels the refinement traced this frame
-    bool refining = false;             // refinement rounds are still to run
+    bool refining = false;             // refinement rounds (or a near level's uncovered slabs' update) are still to run
     // An update's last voxel was traced this frame: the pixels gather its light from now on (also
     // when another update follows at once: GiScheduler::restartIfAsked).
     bool updateCompleted = false;

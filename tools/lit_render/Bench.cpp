@@ -75,6 +75,18 @@ void printBench(const BenchResult& bench, const lit::RenderSettings& settings, c
     std::printf("draws: %d of %d submitted (culling %s), culling %.3f ms CPU (mean), %zu triangles\n",
                 lastFrame.drawsSubmitted, lastFrame.drawsTotal, settings.output.frustumCulling ? "on" : "off",
                 summarize(bench.cullMs).mean, lastFrame.triangles);
+    if (settings.gi.enabled) {
+        // The GI's GPU memory, per volume: the scene's, then each near level's.
+        constexpr double kMiB = 1024.0 * 1024.0;
+        std::size_t nearBytes = 0;
+        for (const lit::FrameStats::NearLevelMemory& level : lastFrame.nearLevels) nearBytes += level.bytes;
+        std::printf("GI memory: %.1f MiB: scene volume %.1f MiB", static_cast<double>(lastFrame.voxelBytes) / kMiB,
+                    static_cast<double>(lastFrame.voxelBytes - nearBytes) / kMiB);
+        for (const lit::FrameStats::NearLevelMemory& level : lastFrame.nearLevels)
+            std::printf(", %g m near level %.1f MiB", static_cast<double>(level.side),
+                        static_cast<double>(level.bytes) / kMiB);
+        std::printf("\n");
+    }
     const lit::MipmapTimings& m = bench.mipmaps;
     // Like for like: one isotropic chain against glGenerateTextureMipmap's one chain over the
     // whole grid; the directional chains (anisotropic voxels) on a line of their own.
