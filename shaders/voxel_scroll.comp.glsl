@@ -25,9 +25,9 @@ layout(std430, binding = LIT_SSBO_LISTED_VOXELS) buffer ListedVoxels { uint list
 layout(std430, binding = LIT_SSBO_VOXEL_SCROLL) buffer Saved { uvec4 saved[]; };
 
 #if LIT_SCROLL_WRITTEN
-layout(binding = 0, LIT_RADIANCE_IMAGE_FORMAT) uniform image3D traced;  // N × N × 2N: both sides
-layout(binding = 1, LIT_RADIANCE_IMAGE_FORMAT) uniform image3D bounce;
-layout(binding = 2, rgba32ui) uniform uimage3D writtenTexels;
+layout(binding = LIT_IMG_SCROLL_TRACED, LIT_RADIANCE_IMAGE_FORMAT) uniform image3D traced;  // N × N × 2N: both sides
+layout(binding = LIT_IMG_SCROLL_BOUNCE, LIT_RADIANCE_IMAGE_FORMAT) uniform image3D bounce;
+layout(binding = LIT_IMG_SCROLL_WRITTEN_TEXELS, rgba32ui) uniform uimage3D writtenTexels;
 uniform bool uHasBounce;
 uniform bool uHasWrittenTexels;
 #else
@@ -36,7 +36,7 @@ layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform uimage3D normal;
 layout(binding = LIT_IMG_VOXEL_EMISSION, r32ui) uniform uimage3D emission;
 layout(binding = LIT_IMG_VOXEL_SURFACE, r32ui) uniform uimage3D surface;
 layout(binding = LIT_IMG_VOXEL_RADIANCE, LIT_RADIANCE_IMAGE_FORMAT) uniform image3D radiance;
-layout(binding = 4, rgba32ui) uniform uimage3D shownTexels;
+layout(binding = LIT_IMG_SCROLL_SHOWN_TEXELS, rgba32ui) uniform uimage3D shownTexels;
 #endif
 
 uniform uint uEntries;  // entries stored: min(count, capacity)

@@ -57,11 +57,12 @@ void VoxelScrollPass::execute(const VoxelVolume& volume, const VoxelIrradianceCa
         // old coordinates.
         const gl::Program& p = program(true, rgba8);
         const bool writtenTexels = &cache.gatherTexels() != &cache.shownTexels();
-        glBindImageTexture(0, cache.traced().id(), 0, GL_TRUE, 0, GL_READ_WRITE, radianceFormat);
+        glBindImageTexture(LIT_IMG_SCROLL_TRACED, cache.traced().id(), 0, GL_TRUE, 0, GL_READ_WRITE, radianceFormat);
         // An unused image is bound to a volume of its format all the same (the shader skips it).
-        glBindImageTexture(1, volume.bounce() ? volume.bounce().id() : volume.radiance().id(), 0, GL_TRUE, 0,
-                           GL_READ_WRITE, radianceFormat);
-        glBindImageTexture(2, cache.gatherTexels().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32UI);
+        glBindImageTexture(LIT_IMG_SCROLL_BOUNCE, volume.bounce() ? volume.bounce().id() : volume.radiance().id(), 0,
+                           GL_TRUE, 0, GL_READ_WRITE, radianceFormat);
+        glBindImageTexture(LIT_IMG_SCROLL_WRITTEN_TEXELS, cache.gatherTexels().id(), 0, GL_TRUE, 0, GL_READ_WRITE,
+                           GL_RGBA32UI);
         glProgramUniform1i(p.id(), p.location("uHasBounce"), volume.bounce() ? 1 : 0);
         glProgramUniform1i(p.id(), p.location("uHasWrittenTexels"), writtenTexels ? 1 : 0);
         run(p);
@@ -76,7 +77,8 @@ void VoxelScrollPass::execute(const VoxelVolume& volume, const VoxelIrradianceCa
         glBindImageTexture(LIT_IMG_VOXEL_SURFACE, volume.surface().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
         glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_READ_WRITE,
                            radianceFormat);
-        glBindImageTexture(4, cache.shownTexels().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32UI);
+        glBindImageTexture(LIT_IMG_SCROLL_SHOWN_TEXELS, cache.shownTexels().id(), 0, GL_TRUE, 0, GL_READ_WRITE,
+                           GL_RGBA32UI);
         run(p);
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |

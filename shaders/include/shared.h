@@ -181,6 +181,12 @@ using mat4 = glm::mat4;
 // (LIT_SCROLL_SAVED_TEXELS uvec4 each). The ray hits' slot: never bound with the traces.
 #define LIT_SSBO_VOXEL_SCROLL 6
 #define LIT_SCROLL_SAVED_TEXELS 4
+// Its images besides the material and radiance volumes' own units: the texels the pixels gather
+// (with the materials), or the traced irradiance, the bounce and the texels being written (alone).
+#define LIT_IMG_SCROLL_SHOWN_TEXELS 4
+#define LIT_IMG_SCROLL_TRACED 0
+#define LIT_IMG_SCROLL_BOUNCE 1
+#define LIT_IMG_SCROLL_WRITTEN_TEXELS 2
 // The most boxes a voxelization of changed boxes passes to the shaders (VoxelChangeTracker::kMaxBoxes):
 // the ray-hit cache's changed boxes, the injection's boxes of new level-0 light.
 #define LIT_CHANGED_BOXES 8
