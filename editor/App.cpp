@@ -478,7 +478,7 @@ void App::drawUi(glm::ivec2 renderSize) {
 }
 
 void App::drawViewLegend(std::string_view viewName) {
-    const VoxelVolume* voxels = renderer_->voxels();
+    const VoxelVolume* voxels = renderer_->shownVoxels(doc_.settings);
     ViewLegend legend = describeDebugView({
         .view = viewName,
         .settings = doc_.settings,

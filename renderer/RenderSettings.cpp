@@ -139,6 +139,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("debug", "voxelSlice", d.voxelSlice);
     visit("debug", "voxelSliceAxis", d.voxelSliceAxis);
     visit("debug", "voxelMip", d.voxelMip);
+    visit("debug", "voxelLevel", d.voxelLevel);
     visit("debug", "voxelChannel", d.voxelChannel);
 }
 

@@ -229,6 +229,9 @@ struct DebugViewSettings {
     float voxelSlice = 0.5f;                             // slice view: slice position along the axis (0..1)
     int voxelSliceAxis = 2;                              // slice view: 0 X, 1 Y, 2 Z
     int voxelMip = 0;                                    // voxel views: mip level (clamped to the volume's levels)
+    // Voxel views: the volume shown: 0 the scene's, k near level k (1 the finest; past the levels
+    // running, the coarsest running; the scene's without any).
+    int voxelLevel = 0;
     VoxelChannel voxelChannel = VoxelChannel::Radiance;  // voxel views: what each voxel shows
     bool operator==(const DebugViewSettings&) const = default;
 };

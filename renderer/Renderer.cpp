@@ -132,6 +132,8 @@ struct Renderer::Impl {
     // `level` (0 the finest: GiSettings::nearLevelSide, each next twice the last), metres.
     static Aabb nearLevelBox(const glm::vec3& eye, float side);
     static float nearLevelSide(const RenderSettings& settings, int level);
+    // The volume the voxel views show (DebugViewSettings::voxelLevel).
+    const VoxelGi& shownVoxelGi(const RenderSettings& settings) const;
     // stats.voxelBytes and stats.nearLevels: the scene volume's and the near levels' memory.
     void recordGiMemory(const RenderSettings& settings);
     // `requested`, or a copy with fewer near levels: those at least half the scene's size across
@@ -621,7 +623,8 @@ void Renderer::Impl::composite(const Scene& scene, const RenderSettings& setting
         if (v.light == settings.debug.shadowMapLight) shadowLayer = v.layer;
     if (isVoxelView(settings.debug.view)) {
         post.bindHdrTarget();
-        voxelDebug.execute(settings, settings.gi.enabled ? &gi.volume() : nullptr, gi.generation());
+        const VoxelGi& shown = shownVoxelGi(settings);
+        voxelDebug.execute(settings, settings.gi.enabled ? &shown.volume() : nullptr, shown.generation());
     } else {
         post.composite(settings, shadow.maps2d(), shadowLayer);
         drawSheets(scene, settings, frame);
@@ -765,6 +768,20 @@ float Renderer::exposureEv(const RenderSettings& settings) const {
 }
 
 const VoxelVolume* Renderer::voxels() const { return impl_->gi.valid() ? &impl_->gi.volume() : nullptr; }
+
+const VoxelVolume* Renderer::shownVoxels(const RenderSettings& settings) const {
+    const VoxelGi& shown = impl_->shownVoxelGi(settings);
+    return shown.valid() ? &shown.volume() : nullptr;
+}
+
+const VoxelGi& Renderer::Impl::shownVoxelGi(const RenderSettings& settings) const {
+    // nearGi holds the levels the last GI frame ran (fewer than asked in a small scene).
+    const int running = std::min(settings.gi.nearLevelCount(), static_cast<int>(nearGi.size()));
+    for (int k = std::min(settings.debug.voxelLevel, running); k >= 1; --k)
+        if (const VoxelGi* level = nearGi[static_cast<std::size_t>(k - 1)].get(); level && level->valid())
+            return *level;
+    return gi;
+}
 
 Profiler& Renderer::profiler() { return impl_->profiler; }
 const FrameStats& Renderer::stats() const { return impl_->stats; }

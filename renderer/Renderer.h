@@ -142,6 +142,9 @@ public:
     float exposureEv(const RenderSettings& settings) const;
     // The voxel volume of the last GI frame, for debug views and tests; nullptr before one.
     const VoxelVolume* voxels() const;
+    // The volume the voxel views show with `settings` (DebugViewSettings::voxelLevel: the scene's
+    // or a near level's); nullptr before it was voxelized.
+    const VoxelVolume* shownVoxels(const RenderSettings& settings) const;
 
     Profiler& profiler();
     const FrameStats& stats() const;

@@ -276,6 +276,18 @@ bool drawGlobalIllumination(RenderSettings& s, ViewportSettings& viewport) {
         ImGui::Separator();
         ImGui::TextDisabled(s.debug.view == View::Voxels ? "Voxel view (ray-marched)" : "Voxel slice");
         changed |= comboEnum("Channel", s.debug.voxelChannel, kVoxelChannels);
+        if (s.gi.nearLevelCount() > 0) {
+            // The scene's volume or a near level around the camera (those the scene runs).
+            const int level = std::clamp(s.debug.voxelLevel, 0, s.gi.nearLevelCount());
+            const std::string name =
+                level == 0 ? std::string("scene volume")
+                           : "near " + std::to_string(level) + " (" +
+                                 std::to_string(static_cast<int>(std::ldexp(s.gi.nearLevelSide, level - 1))) + " m)";
+            changed |= ImGui::SliderInt("Volume", &s.debug.voxelLevel, 0, s.gi.nearLevelCount(), name.c_str());
+            tooltip(
+                "The voxel volume shown: the one around the scene, or a near level around the camera\n"
+                "(1 the finest; a scene smaller than twice a level's side runs without it)");
+        }
         const int lastMip = std::max(static_cast<int>(std::log2(std::max(s.gi.voxelResolution, 1))), 0);
         changed |= ImGui::SliderInt("Mip", &s.debug.voxelMip, 0, lastMip);
         if (s.debug.view == View::VoxelSlice) {

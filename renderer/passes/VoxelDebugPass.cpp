@@ -47,7 +47,8 @@ int VoxelDebugPass::sliceIndex(const RenderSettings& settings, const VoxelVolume
 
 void VoxelDebugPass::decode(const VoxelVolume& volume, VoxelChannel channel, std::uint64_t voxelGeneration) {
     const int n = volume.resolution();
-    if (decoded_ && decodedResolution_ == n && decodedChannel_ == channel && decodedGeneration_ == voxelGeneration)
+    if (decoded_ && decodedResolution_ == n && decodedChannel_ == channel && decodedGeneration_ == voxelGeneration &&
+        decodedVolume_ == &volume)
         return;
     if (!decoded_ || decodedResolution_ != n) {
         decoded_ = gl::Texture("voxel debug channel",
@@ -67,6 +68,7 @@ void VoxelDebugPass::decode(const VoxelVolume& volume, VoxelChannel channel, std
     glGenerateTextureMipmap(decoded_.id());
     decodedChannel_ = channel;
     decodedGeneration_ = voxelGeneration;
+    decodedVolume_ = &volume;
 }
 
 void VoxelDebugPass::execute(const RenderSettings& settings, const VoxelVolume* volume,

@@ -49,6 +49,8 @@ private:
     // What decoded_ holds; generation 0 = nothing yet.
     VoxelChannel decodedChannel_ = VoxelChannel::Albedo;
     std::uint64_t decodedGeneration_ = 0;
+    // ... of which volume (the scene's or a near level's count their generations apart).
+    const VoxelVolume* decodedVolume_ = nullptr;
     int decodedResolution_ = 0;
 };
 

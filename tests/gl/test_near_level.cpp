@@ -3,11 +3,11 @@
 // (assets/gi/city.gltf, 640 m across, 14 m streets), against the reference with every bounce.
 #include <cmath>
 #include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "GlTestSupport.h"
+#include "gi/VoxelVolume.h"
 #include "reference/AccuracyRegions.h"
 #include "reference/PathTracer.h"
 #include "reference/ReferenceScene.h"
@@ -177,6 +177,39 @@ TEST_F(NearLevel, ScrolledLevelMatchesOneVoxelizedWhole) {
         EXPECT_NEAR(ratio, 1.0, 0.015) << name;
         EXPECT_LT(relativeRmse, 0.02) << name;
     }
+}
+
+// The voxel views show the volume DebugViewSettings::voxelLevel picks: the scene's, a near level,
+// or past the levels running the coarsest that runs. ~3 s.
+TEST_F(NearLevel, VoxelViewsShowTheLevelAsked) {
+    const Scene scene = loadCity();
+    RenderSettings settings;
+    settings.gi.voxelResolution = 64;
+    settings.gi.nearLevelSide = 64.0f;
+    settings.output.width = 64;
+    settings.output.height = 64;
+    settings.debug.view = View::VoxelSlice;
+    settings.debug.voxelSliceAxis = 1;  // a horizontal slice
+    settings.debug.voxelSlice = 0.5f;
+    settings.debug.voxelChannel = VoxelChannel::Albedo;
+    renderer_->setScene(scene);
+    const CameraView camera = cameraFor(scene, settings);
+    const auto slice = [&](int level) {
+        settings.debug.voxelLevel = level;
+        renderer_->render(scene, camera, settings);
+        return renderer_->readHdrRgb();
+    };
+    const std::vector<float> sceneVolume = slice(0);
+    const std::vector<float> near = slice(1);
+    const std::vector<float> beyond = slice(3);
+    settings.debug.voxelLevel = 1;
+    ASSERT_NE(renderer_->shownVoxels(settings), nullptr);
+    EXPECT_FLOAT_EQ(renderer_->shownVoxels(settings)->side(), 64.0f);
+    settings.debug.voxelLevel = 0;
+    EXPECT_EQ(renderer_->shownVoxels(settings), renderer_->voxels());
+    EXPECT_GT(renderer_->voxels()->side(), 600.0f);
+    EXPECT_NE(sceneVolume, near);
+    EXPECT_EQ(near, beyond) << "one level runs: level 3 shows it";
 }
 
 }  // namespace
