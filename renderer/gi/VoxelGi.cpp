@@ -150,11 +150,11 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     GiScheduler::Changes changes = scheduler_.changes(voxels, light, reallocated, moved && !scroll, frame.shadowsDirty);
     // With the level's light converged and nothing else changed, only the voxels of the uncovered
     // slabs are lit (continueSlabUpdate): the others keep their light, which a full update would
-    // only trace again. Else the scroll's update is a geometry edit's, over every voxel.
+    // only trace again. Else the scroll's update is a geometry edit's, over every voxel. (With a
+    // scroll, `changes` was asked without the move: it holds what else changed.)
     const GiProgress& progressBefore = scheduler_.state().progress;
     const bool slabUpdate = scroll && light.untilConverged && light.voxelIrradiance && light.voxelRays > 0 &&
-                            progressBefore.bounce == 0 && progressBefore.irradianceLeft == 0 &&
-                            !scheduler_.changes(voxels, light, reallocated, false, frame.shadowsDirty).inject;
+                            progressBefore.bounce == 0 && progressBefore.irradianceLeft == 0 && !changes.inject;
     if (scroll) {
         changes.voxelize = changes.inject = true;
         changes.reason = slabUpdate ? "near level scrolled, lighting the uncovered slabs" : "near level scrolled";
