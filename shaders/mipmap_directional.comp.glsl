@@ -25,7 +25,8 @@
 //
 // Defines set by MipmapPass:
 //   LIT_MIP_RGBA8            1: rgba8 images, 0: rgba16f
-//   LIT_DIRECTIONAL_FROM_ISO 1: build level 1 from the isotropic level 0 (+ normals), 0: from level k
+//   LIT_DIRECTIONAL_FROM_ISO 1: build level 1 of all six faces from the isotropic level 0 (+ normals),
+//                            0: level k+1 of one face (uFace) from its level k
 //   LIT_MIP_FROM_LIST        1: one invocation per entry of the occupied-parent list of the
 //                            radiance level this directional level mirrors (mip_parents.glsl,
 //                            indirect dispatch); other voxels stay as cleared (0, as the whole
@@ -46,15 +47,24 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #endif
 
 layout(binding = LIT_IMG_MIP_SOURCE, MIP_FORMAT) uniform readonly image3D uSource;
-layout(binding = LIT_IMG_MIP_DEST, MIP_FORMAT) uniform writeonly image3D uDest;
 #if LIT_DIRECTIONAL_FROM_ISO
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D uNormal;
 #endif
 
+#if LIT_DIRECTIONAL_FROM_ISO
+// The three directional volumes, axis X, Y, Z; the −axis face at x offset 2·edge of each.
+layout(binding = LIT_IMG_MIP_DEST, MIP_FORMAT) uniform writeonly image3D uDestX;
+layout(binding = LIT_IMG_MIP_DEST2, MIP_FORMAT) uniform writeonly image3D uDestY;
+layout(binding = LIT_IMG_MIP_DEST3, MIP_FORMAT) uniform writeonly image3D uDestZ;
+uniform int uEdge;  // edge of the level written
+const ivec2 uOffsets = ivec2(0);  // the source is the isotropic level 0
+#else
+layout(binding = LIT_IMG_MIP_DEST, MIP_FORMAT) uniform writeonly image3D uDest;
 uniform ivec3 uFace;  // x axis (0 X, 1 Y, 2 Z), y 1 if the cone travels towards −axis, z edge of the level written
 // The two faces of an axis share one volume, side by side along x (VoxelVolume.h): x offsets in
 // texels of this face's region in the source (x) and destination (y) level; 0 for the +axis face.
 uniform ivec2 uOffsets;
+#endif
 
 #if LIT_DIRECTIONAL_FROM_ISO
 // Surfaces seen edge-on on a slab (the sealed room's leak). A face seen edge-on keeps its
@@ -95,37 +105,97 @@ bool backedBySlab(ivec3 p, vec3 n) {
 }
 #endif
 
-// What of a level-0 voxel a cone travelling along `travel` sees: x the share of its light (its
-// opacity kept: a face turned away), y the share of the whole voxel (a backed slab edge-on).
-vec2 shareTowards(ivec3 p, vec3 travel) {
 #if LIT_DIRECTIONAL_FROM_ISO
+// A level-0 voxel's normal as the faces weigh it: xyz the unit normal, w 1 if the voxel is
+// directional (a normal recorded whose sides agree), else 0 (isotropic: every face sees it whole).
+vec4 directionalNormal(ivec3 p) {
     vec4 stored = unpackUnorm4x8(imageLoad(uNormal, p).r);
-    if (stored.a == 0.0) return vec2(1.0);  // no normal recorded
+    if (stored.a == 0.0) return vec4(0.0);  // no normal recorded
     vec3 averaged = stored.xyz * 2.0 - 1.0;
     float agreement = length(averaged);
-    if (agreement < 0.5) return vec2(1.0);  // both sides of a thin wall: see inject.comp.glsl
-    vec3 n = averaged / agreement;
-    float facing = dot(n, -travel);
-    float light = clamp(1.0 + 4.0 * facing, 0.0, 1.0);
-    // Backed (above): the voxel fades from whole (facing ≥ ¼) to absent edge-on.
-    float whole = facing < 0.25 && light > 0.0 && backedBySlab(p, n) ? clamp(4.0 * facing, 0.0, 1.0) : 1.0;
-    return vec2(light, whole);
-#else
-    return vec2(1.0);
-#endif
+    if (agreement < 0.5) return vec4(0.0);  // both sides of a thin wall: see inject.comp.glsl
+    return vec4(averaged / agreement, 1.0);
 }
 
-vec4 child(ivec3 p, vec3 travel) {
-    vec4 c = imageLoad(uSource, p + ivec3(uOffsets.x, 0, 0));
-#if LIT_DIRECTIONAL_FROM_ISO
-    if (c.a > 0.0) {
-        vec2 share = shareTowards(p, travel);
-        c.rgb *= share.x;
-        c *= share.y;
-    }
-#endif
-    return c;
+// What of a level-0 voxel of normal `n` (directionalNormal) a cone travelling along `travel`
+// sees: x the share of its light (its opacity kept: a face turned away), y the share of the
+// whole voxel (a backed slab edge-on). `backed` is backedBySlab(p, n.xyz), asked only when it
+// matters (the search reads up to 16 texels); once asked, the answer is kept in `asked`.
+vec2 shareTowards(ivec3 p, vec4 n, vec3 travel, inout int asked) {
+    if (n.w == 0.0) return vec2(1.0);
+    float facing = dot(n.xyz, -travel);
+    float light = clamp(1.0 + 4.0 * facing, 0.0, 1.0);
+    // Backed (above): the voxel fades from whole (facing ≥ ¼) to absent edge-on.
+    if (!(facing < 0.25 && light > 0.0)) return vec2(light, 1.0);
+    if (asked == 0) asked = backedBySlab(p, n.xyz) ? 2 : 1;
+    return vec2(light, asked == 2 ? clamp(4.0 * facing, 0.0, 1.0) : 1.0);
 }
+#endif
+
+#if LIT_DIRECTIONAL_FROM_ISO
+// One invocation writes the parent of all six faces: its 8 children, their normals and each
+// child's slab search are read once, not once per face.
+void main() {
+#if LIT_MIP_FROM_LIST
+    ivec3 p;
+    if (!listedParent(p)) return;
+#else
+    ivec3 p = ivec3(gl_GlobalInvocationID);
+#endif
+    if (any(greaterThanEqual(p, ivec3(uEdge)))) return;
+    ivec3 base = p * 2;
+    // Child i = x + 2y + 4z of the block: its radiance, its normal and its slab search, once.
+    vec4 children[8];
+    vec4 normals[8];
+    int asked[8];
+    for (int i = 0; i < 8; ++i) {
+        ivec3 q = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        children[i] = imageLoad(uSource, q);
+        normals[i] = children[i].a > 0.0 ? directionalNormal(q) : vec4(0.0);
+        asked[i] = 0;
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        ivec3 along = ivec3(0);
+        along[axis] = 1;
+        ivec3 u = ivec3(0), v = ivec3(0);
+        u[(axis + 1) % 3] = 1;
+        v[(axis + 2) % 3] = 1;
+        for (int s = 0; s < 2; ++s) {
+            bool negative = s == 1;
+            vec3 travel = vec3(0.0);
+            travel[axis] = negative ? -1.0 : 1.0;
+            vec4 sum = vec4(0.0);
+            for (int j = 0; j < 4; ++j) {
+                ivec3 q = (j & 1) * u + (j >> 1) * v;
+                int iLow = q.x + 2 * q.y + 4 * q.z;
+                int iHigh = iLow + (axis == 0 ? 1 : axis == 1 ? 2 : 4);
+                vec4 low = children[iLow], high = children[iHigh];
+                if (low.a > 0.0) {
+                    vec2 share = shareTowards(base + q, normals[iLow], travel, asked[iLow]);
+                    low.rgb *= share.x;
+                    low *= share.y;
+                }
+                if (high.a > 0.0) {
+                    vec2 share = shareTowards(base + q + along, normals[iHigh], travel, asked[iHigh]);
+                    high.rgb *= share.x;
+                    high *= share.y;
+                }
+                vec4 front = negative ? high : low;
+                vec4 back = negative ? low : high;
+                sum += front + (1.0 - front.a) * back;
+            }
+            ivec3 at = p + ivec3(negative ? 2 * uEdge : 0, 0, 0);
+            if (axis == 0)
+                imageStore(uDestX, at, 0.25 * sum);
+            else if (axis == 1)
+                imageStore(uDestY, at, 0.25 * sum);
+            else
+                imageStore(uDestZ, at, 0.25 * sum);
+        }
+    }
+}
+#else
+vec4 child(ivec3 p) { return imageLoad(uSource, p + ivec3(uOffsets.x, 0, 0)); }
 
 void main() {
 #if LIT_MIP_FROM_LIST
@@ -137,8 +207,6 @@ void main() {
     if (any(greaterThanEqual(p, ivec3(uFace.z)))) return;
     int axis = uFace.x;
     bool negative = uFace.y != 0;
-    vec3 travel = vec3(0.0);
-    travel[axis] = negative ? -1.0 : 1.0;
     // The two other axes span the 4 pairs.
     ivec3 along = ivec3(0);
     along[axis] = 1;
@@ -149,10 +217,11 @@ void main() {
     vec4 sum = vec4(0.0);
     for (int j = 0; j < 4; ++j) {
         ivec3 q = base + (j & 1) * u + (j >> 1) * v;
-        vec4 low = child(q, travel), high = child(q + along, travel);
+        vec4 low = child(q), high = child(q + along);
         vec4 front = negative ? high : low;
         vec4 back = negative ? low : high;
         sum += front + (1.0 - front.a) * back;
     }
     imageStore(uDest, p + ivec3(uOffsets.y, 0, 0), 0.25 * sum);
 }
+#endif

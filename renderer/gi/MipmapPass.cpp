@@ -179,47 +179,64 @@ void MipmapPass::executeOverParents(const VoxelVolume& volume) {
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
-// Uses `program` for level `level` of face `face`'s directional volume: binds that level as the
-// destination and its source, and sets the face's region. Returns the level's edge in texels.
+// Uses `program` for level `level` ≥ 1 of face `face`'s directional volume: binds that level as
+// the destination and level − 1 as its source, and sets the face's region. Returns the level's
+// edge in texels.
 int MipmapPass::useDirectionalLevel(const gl::Program& program, const VoxelVolume& volume, int face, int level) {
     const gl::Texture& target = volume.directional(face / 2);
     const GLenum format = volume.radianceFormat();
     program.use();
-    // Level 0 of a directional volume is level 1 of the radiance volume, built from its level 0.
-    if (level == 0)
-        glBindImageTexture(LIT_IMG_MIP_SOURCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_READ_ONLY, format);
-    else
-        glBindImageTexture(LIT_IMG_MIP_SOURCE, target.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, format);
+    glBindImageTexture(LIT_IMG_MIP_SOURCE, target.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, format);
     glBindImageTexture(LIT_IMG_MIP_DEST, target.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, format);
     // The face's region: edge³ texels at x offset 2·edge for the −axis face (VoxelVolume.h).
     const int edge = std::max(target.desc().height >> level, 1);
     const bool negative = face % 2 == 1;
     glProgramUniform3i(program.id(), program.location("uFace"), face / 2, face % 2, edge);
-    glProgramUniform2i(program.id(), program.location("uOffsets"), level > 0 && negative ? 4 * edge : 0,
-                       negative ? 2 * edge : 0);
+    glProgramUniform2i(program.id(), program.location("uOffsets"), negative ? 4 * edge : 0, negative ? 2 * edge : 0);
+    return edge;
+}
+
+// Uses `program` for level 0 of all six faces (from the isotropic level 0 and the normals).
+// Returns the level's edge in texels.
+int MipmapPass::useDirectionalLevel0(const gl::Program& program, const VoxelVolume& volume) {
+    const GLenum format = volume.radianceFormat();
+    program.use();
+    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(LIT_IMG_MIP_SOURCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_READ_ONLY, format);
+    constexpr std::array<GLuint, LIT_VOXEL_AXIS_COUNT> kDestUnits{LIT_IMG_MIP_DEST, LIT_IMG_MIP_DEST2,
+                                                                  LIT_IMG_MIP_DEST3};
+    for (int axis = 0; axis < LIT_VOXEL_AXIS_COUNT; ++axis)
+        glBindImageTexture(kDestUnits[static_cast<std::size_t>(axis)], volume.directional(axis).id(), 0, GL_TRUE, 0,
+                           GL_WRITE_ONLY, format);
+    const int edge = volume.directional(0).desc().height;
+    glProgramUniform1i(program.id(), program.location("uEdge"), edge);
     return edge;
 }
 
 void MipmapPass::executeDirectionalOverParents(const VoxelVolume& volume) {
     const bool rgba8 = volume.radianceRgba8();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     volume.parentLists().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MIP_PARENTS);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, volume.parentLists().id());
+    // Directional level L mirrors radiance level L + 1: its voxels are that level's parents.
+    const auto useParents = [&](const gl::Program& program, int level) {
+        const int radianceLevel = level + 1;
+        glProgramUniform2i(
+            program.id(), program.location("uParentList"), radianceLevel,
+            static_cast<GLint>(volume.parentLayout().listOffset[static_cast<std::size_t>(radianceLevel)]));
+        glDispatchComputeIndirect(parentDispatchOffset(radianceLevel));
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    };
+    const gl::Program& fromIso = rgba8 ? listFromIso8_ : listFromIso16f_;
+    useDirectionalLevel0(fromIso, volume);
+    useParents(fromIso, 0);
     for (int face = 0; face < LIT_VOXEL_FACE_COUNT; ++face) {
         const gl::Texture& target = volume.directional(face / 2);
-        // Directional level L mirrors radiance level L + 1: its voxels are that level's parents.
         const int levels = std::min(target.desc().levels, LIT_MIP_LIST_LEVELS - 1);
-        for (int level = 0; level < levels; ++level) {
-            const gl::Program& program = level == 0 ? (rgba8 ? listFromIso8_ : listFromIso16f_)
-                                                    : (rgba8 ? listDirectional8_ : listDirectional16f_);
+        for (int level = 1; level < levels; ++level) {
+            const gl::Program& program = rgba8 ? listDirectional8_ : listDirectional16f_;
             useDirectionalLevel(program, volume, face, level);
-            const int radianceLevel = level + 1;
-            glProgramUniform2i(
-                program.id(), program.location("uParentList"), radianceLevel,
-                static_cast<GLint>(volume.parentLayout().listOffset[static_cast<std::size_t>(radianceLevel)]));
-            glDispatchComputeIndirect(parentDispatchOffset(radianceLevel));
-            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+            useParents(program, level);
         }
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
@@ -241,12 +258,16 @@ void MipmapPass::executeDirectional(VoxelVolume& volume, bool overOccupiedParent
     const bool rgba8 = volume.radianceRgba8();
     constexpr int kGroup = 4;  // mipmap_directional.comp.glsl: 4×4×4 work groups
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+    {
+        const gl::Program& fromIso = rgba8 ? directionalFromIso8_ : directionalFromIso16f_;
+        const auto groups = static_cast<GLuint>(ceilDiv(useDirectionalLevel0(fromIso, volume), kGroup));
+        glDispatchCompute(groups, groups, groups);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
     for (int face = 0; face < LIT_VOXEL_FACE_COUNT; ++face) {
         const gl::Texture& target = volume.directional(face / 2);
-        for (int level = 0; level < target.desc().levels; ++level) {
-            const gl::Program& program = level == 0 ? (rgba8 ? directionalFromIso8_ : directionalFromIso16f_)
-                                                    : (rgba8 ? directional8_ : directional16f_);
+        for (int level = 1; level < target.desc().levels; ++level) {
+            const gl::Program& program = rgba8 ? directional8_ : directional16f_;
             const int edge = useDirectionalLevel(program, volume, face, level);
             const auto groups = static_cast<GLuint>(ceilDiv(edge, kGroup));
             glDispatchCompute(groups, groups, groups);

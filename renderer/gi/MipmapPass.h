@@ -48,7 +48,7 @@ public:
     // tracing (texture fetches) and image loads see every level. Changes the current program and
     // image units LIT_IMG_MIP_SOURCE, LIT_IMG_MIP_DEST, LIT_IMG_MIP_DEST2, LIT_IMG_MIP_DEST3.
     // With `anisotropic`, also builds the six directional chains (executeDirectional): only then,
-    // because they cost ~10× the isotropic chain on llvmpipe (lit-render --bench prints both:
+    // because they cost over ten times the isotropic chain on llvmpipe (lit-render --bench prints both:
     // docs/PERFORMANCE.md, "What each benchmark prints").
     // `overOccupiedParents` (and the volume's parent lists valid): only the voxels of each level
     // with an occupied voxel below them are computed, one indirect dispatch per level over its
@@ -77,10 +77,12 @@ private:
     void executeOverParents(const VoxelVolume& volume);
     void executeDirectionalOverParents(const VoxelVolume& volume);
     static int useDirectionalLevel(const gl::Program& program, const VoxelVolume& volume, int face, int level);
+    static int useDirectionalLevel0(const gl::Program& program, const VoxelVolume& volume);
 
     bool rgba8Packed_ = false;  // RGBA8 levels are bound as r32ui images (see MipmapPass.cpp)
     gl::Program rgba8_, rgba16f_;
-    // Directional chains: level 1 from the isotropic level 0, levels k+1 from level k (RGBA8, RGBA16F).
+    // Directional chains: level 1 of all six faces from the isotropic level 0, levels k+1 of one face
+    // from its level k (RGBA8, RGBA16F).
     gl::Program directionalFromIso8_, directionalFromIso16f_, directional8_, directional16f_;
     // The same over the occupied parents (one level per dispatch), and the program that lists them.
     gl::Program listRgba8_, listRgba16f_, listFromIso8_, listFromIso16f_, listDirectional8_, listDirectional16f_;
