@@ -376,7 +376,9 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         if (!slabs_.boxes.empty()) updateBudget.refineVoxels = 0;
         continueUpdate(settings, light, updateBudget, changes.inject, report);
     }
-    continueSlabUpdate(settings, light, budget);
+    // Under a time budget a move's frame has done its share (the scroll, the slabs' voxelization,
+    // injection and mips cost more than the budget on llvmpipe): the slabs' light starts next frame.
+    if (!(scroll && budget.milliseconds > 0.0)) continueSlabUpdate(settings, light, budget);
 
     const GiState& state = scheduler_.state();
     report.voxelized = changes.voxelize;
@@ -583,6 +585,14 @@ void VoxelGi::continueSlabUpdate(const RenderSettings& settings, const GiLightKe
         return std::max(static_cast<std::uint32_t>(std::min(std::ceil(voxels / share), static_cast<double>(entries))),
                         1u);
     };
+    if (slabs_.mipmapPending) {
+        // Under a time budget the mips after the last bounce take a frame of their own, as long as
+        // a share of the bounces (spreadGiMs leaves them out, and the pacer records no voxels).
+        Profiler::Scope scope(profiler_, step("mipmap"));
+        mipmap_.execute(volume_, light.anisotropic, true);
+        slabs_.mipmapPending = false;
+        return;
+    }
     volume_.setOnlyBoxes(slabs_.boxes);
     double tracedVoxels = 0.0;  // the slabs' voxels traced this frame, for the pacer
     GiPacer::Work work = GiPacer::Work::Update;
@@ -610,6 +620,10 @@ void VoxelGi::continueSlabUpdate(const RenderSettings& settings, const GiLightKe
             bounce_.finish(volume_,
                            {true, converged ? static_cast<float>(slabs_.convergence.tail()) : 0.0f, false, false});
             slabs_.bounce = last ? 0 : slabs_.bounce + 1;
+            if (last && budget.milliseconds > 0.0) {
+                slabs_.mipmapPending = true;
+                break;
+            }
             if (last) mipmap_.execute(volume_, light.anisotropic, true);
             continue;
         }

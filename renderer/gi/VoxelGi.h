@@ -202,6 +202,7 @@ private:
         int round = 0;           // the irradiance's round: 0 each voxel's own cone set, 1.. the refinement's
         std::uint32_t next = 0;  // the pass's next list entry
         BounceConvergence convergence;
+        bool mipmapPending = false;  // the bounces ended; under a time budget their mips get a frame of their own
     };
     SlabUpdate slabs_;
     // The update waiting for its GPU timings to be logged: why it ran, in which frame.

@@ -114,7 +114,8 @@ TEST_F(NearLevel, MovesOnlyInEighthsOfItsSide) {
 // A camera that moves the level by whole voxels scrolls it: what it holds moves with the world, only
 // the slab the move uncovered is voxelized, and only it and the quarter of the level behind it are
 // lit again. The light matches a level voxelized and lit whole at the new place (a second
-// renderer): 0.8 % RMSE; the slab lit alone read 15 %, with 8 voxels behind it 3 %. ~5 s.
+// renderer): 0.8 % RMSE; the slab lit alone read 15 %, with 8 voxels behind it 3 %. Also spread
+// over frames by voxel counts and under a time budget. ~25 s.
 TEST_F(NearLevel, ScrolledLevelMatchesOneVoxelizedWhole) {
     const Scene scene = loadCity();
     RenderSettings settings;
@@ -152,6 +153,34 @@ TEST_F(NearLevel, ScrolledLevelMatchesOneVoxelizedWhole) {
     EXPECT_GT(frames, 3) << "spread over frames";
     EXPECT_LT(frames, 200) << "completes";
     const std::vector<float> spreadScrolled = spread.readHdrRgb();
+    // Under a time budget, as the editor runs it: the move's frame does no share of the slabs'
+    // light, and the mips after their last bounce get a frame of their own.
+    Renderer timed(sourceDir() / "shaders", log_);
+    timed.setScene(scene);
+    timed.render(scene, start, settings, converge);
+    const auto ran = [&](const char* pass) {
+        timed.profiler().flush();
+        for (const PassTiming& t : timed.profiler().timings())
+            if (t.name == pass && t.ran) return true;
+        return false;
+    };
+    int timedFrames = 0, mipmapFrames = 0;
+    for (const GiBudget budget{4096, 4096, 20.0}; timedFrames < 400; ++timedFrames) {
+        timed.render(scene, moved, settings, budget);
+        const bool bounces = ran("near bounces"), mipmap = ran("near mipmap");
+        if (timedFrames == 0) {
+            EXPECT_EQ(timed.stats().nearLevelsScrolled, 1);
+            EXPECT_TRUE(mipmap) << "the move's frame builds the mips";
+            EXPECT_FALSE(bounces) << "the move's frame does no share of the slabs' bounces";
+        } else if (mipmap) {
+            ++mipmapFrames;
+            EXPECT_FALSE(bounces) << "the mips after the last bounce take a frame of their own";
+        }
+        if (timedFrames > 0 && timed.stats().giUpdateStage.empty() && !timed.stats().giRefining) break;
+    }
+    EXPECT_LT(timedFrames, 400) << "completes";
+    EXPECT_EQ(mipmapFrames, 1) << "one mip build after the slabs' last bounce";
+    const std::vector<float> timedScrolled = timed.readHdrRgb();
 
     Renderer whole(sourceDir() / "shaders", log_);
     whole.setScene(scene);
@@ -159,7 +188,8 @@ TEST_F(NearLevel, ScrolledLevelMatchesOneVoxelizedWhole) {
     EXPECT_EQ(whole.stats().nearLevelsScrolled, 0);
     const std::vector<float> truth = whole.readHdrRgb();
 
-    for (const auto& [name, image] : {std::pair{"in one frame", &scrolled}, std::pair{"spread", &spreadScrolled}}) {
+    for (const auto& [name, image] : {std::pair{"in one frame", &scrolled}, std::pair{"spread", &spreadScrolled},
+                                      std::pair{"under a time budget", &timedScrolled}}) {
         ASSERT_EQ(image->size(), truth.size());
         double sum = 0.0, truthSum = 0.0, squared = 0.0;
         for (std::size_t i = 0; i < truth.size(); i += 3) {

@@ -49,12 +49,14 @@ void recordBenchFrame(BenchResult& bench, Renderer& renderer, Clock::time_point 
     bench.frameMs.push_back(secondsSince(frameStart) * 1000.0);
     bench.cpuFrameMs.push_back(renderer.profiler().lastCpuFrameMs());
     bench.cullMs.push_back(renderer.stats().cullMs);
+    bench.framePasses.emplace_back();
     for (const lit::PassTiming& timing : renderer.profiler().timings()) {
         auto [it, inserted] = bench.passIndex.try_emplace(timing.name, bench.passes.size());
         if (inserted) bench.passes.push_back({timing.name, {}, {}});
         if (!timing.ran) continue;
         bench.passes[it->second].gpuMs.push_back(timing.gpuMs);
         bench.passes[it->second].cpuMs.push_back(timing.cpuMs);
+        bench.framePasses.back().emplace_back(timing.name, timing.gpuMs);
     }
 }
 
@@ -119,6 +121,13 @@ nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& option
                           {"gpuMs", toJson(summarize(pass.gpuMs))},
                           {"cpuMs", toJson(summarize(pass.cpuMs))}});
     const Summary frame = summarize(bench.frameMs);
+    nlohmann::ordered_json frames = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < bench.frameMs.size(); ++i) {
+        nlohmann::ordered_json gpu = nlohmann::ordered_json::object();
+        if (i < bench.framePasses.size())
+            for (const auto& [name, ms] : bench.framePasses[i]) gpu[name] = ms;
+        frames.push_back({{"ms", bench.frameMs[i]}, {"gpuMs", gpu}});
+    }
     return {{"scene", options.scene.string()},
             {"device", device},
             {"width", settings.output.width},
@@ -144,6 +153,7 @@ nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& option
               {"anisotropic", bench.mipmaps.anisotropic},
               {"directionalMinMs", bench.mipmaps.directionalMinMs},
               {"directionalOccupiedMinMs", bench.mipmaps.directionalOccupiedMinMs}}},
+            {"perFrame", frames},
             {"triangles", stats.triangles},
             {"drawCalls", stats.drawCalls},
             {"frustumCulling", settings.output.frustumCulling},

@@ -32,6 +32,8 @@ struct BenchResult {
     std::vector<double> frameMs;                   // wall time per frame: issuing plus waiting for the GPU
     std::vector<double> cpuFrameMs;                // time spent issuing the frame on the CPU
     std::vector<double> cullMs;                    // CPU time of BVH refit + frustum culling per frame
+    // Per frame, the GPU ms of each pass that ran in it (what made a slow frame slow).
+    std::vector<std::vector<std::pair<std::string, double>>> framePasses;
     MipmapTimings mipmaps;                         // compute chain vs glGenerateTextureMipmap (GI only)
 };
 
