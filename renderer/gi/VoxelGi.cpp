@@ -568,22 +568,20 @@ void VoxelGi::startSlabUpdate(glm::ivec3 shift) {
     const bool runOn = !slabs_.boxes.empty() && slabs_.bounce > 0;
     if (!runOn) slabs_ = {};
     slabs_.boxes = mergeVoxelBoxes(std::move(boxes), VoxelChangeTracker::kMaxBoxes);
+    // The list read back once a scroll (a stall, as the voxelization's count; 4 bytes an entry).
+    slabs_.shares = ListBoxShares(volume_.readOccupiedList(), slabs_.boxes);
 }
 
 void VoxelGi::continueSlabUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget) {
     if (slabs_.boxes.empty()) return;
     const std::uint32_t entries = std::min(scheduler_.state().occupied, volume_.occupiedCapacity());
     const ConeFeatures features = featuresFor(settings);
-    // A share of the list holds about the slabs' share of its voxels: a budget's voxel count is
-    // the slabs' voxels a frame traces (0: all at once).
-    std::int64_t slabVoxels = 0;
-    for (const VoxelBox& box : slabs_.boxes) slabVoxels += box.voxels();
-    const double n = volume_.resolution();
-    const double share = std::max(static_cast<double>(slabVoxels) / (n * n * n), 1e-3);
+    if (slabs_.shares.entries() != entries) slabs_.shares = ListBoxShares(volume_.readOccupiedList(), slabs_.boxes);
+    // A budget's voxel count is the slabs' voxels a frame traces (kAll: all at once): the list's
+    // entries that hold them (0: the whole list).
     const auto entriesFor = [&](std::uint32_t voxels) -> std::uint32_t {
         if (voxels == GiBudget::kAll) return 0;
-        return std::max(static_cast<std::uint32_t>(std::min(std::ceil(voxels / share), static_cast<double>(entries))),
-                        1u);
+        return slabs_.shares.entriesFor(slabs_.next, voxels);
     };
     if (slabs_.mipmapPending) {
         // Under a time budget the mips after the last bounce take a frame of their own, as long as
@@ -606,7 +604,7 @@ void VoxelGi::continueSlabUpdate(const RenderSettings& settings, const GiLightKe
         const VoxelRange range{slabs_.next, perFrame > 0 ? std::min(perFrame, entries - slabs_.next) : entries};
         const bool passEnds = range.first + range.count >= entries;
         slabs_.next = passEnds ? 0 : slabs_.next + range.count;
-        tracedVoxels += range.count * share;
+        tracedVoxels += slabs_.shares.inRange(range.first, range.count);
         work = refining ? GiPacer::Work::Refine : GiPacer::Work::Update;
         if (slabs_.bounce > 0) {
             // Every bounce gathers level 0: the kept voxels' converged light and the slabs' own.

@@ -203,6 +203,7 @@ private:
         std::uint32_t next = 0;  // the pass's next list entry
         BounceConvergence convergence;
         bool mipmapPending = false;  // the bounces ended; under a time budget their mips get a frame of their own
+        ListBoxShares shares;        // where the boxes' voxels lie along the list: the ranges' sizes
     };
     SlabUpdate slabs_;
     // The update waiting for its GPU timings to be logged: why it ran, in which frame.

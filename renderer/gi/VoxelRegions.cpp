@@ -80,6 +80,50 @@ std::pair<std::size_t, std::size_t> cheapestJoin(const std::vector<VoxelBox>& bo
     return best;
 }
 
+ListBoxShares::ListBoxShares(const std::vector<glm::ivec3>& list, const std::vector<VoxelBox>& boxes)
+    : perBlock_((list.size() + kBlock - 1) / kBlock, 0u), entries_(static_cast<std::uint32_t>(list.size())) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const VoxelBox voxel{list[i], list[i] + 1};
+        if (std::any_of(boxes.begin(), boxes.end(), [&](const VoxelBox& b) { return b.overlaps(voxel); })) {
+            ++perBlock_[i / kBlock];
+            ++inBoxes_;
+        }
+    }
+}
+
+std::uint32_t ListBoxShares::entriesFor(std::uint32_t first, double voxels) const {
+    if (first >= entries_) return 1;
+    double need = voxels;
+    std::uint32_t at = first;
+    while (at < entries_) {
+        const std::uint32_t block = at / kBlock;
+        const std::uint32_t blockEnd = std::min((block + 1) * kBlock, entries_);
+        const std::uint32_t blockSize = std::min(kBlock, entries_ - block * kBlock);
+        const double density = static_cast<double>(perBlock_[block]) / blockSize;
+        const double here = density * (blockEnd - at);
+        if (here >= need && density > 0.0) {
+            at += static_cast<std::uint32_t>(std::ceil(need / density));
+            break;
+        }
+        need -= here;
+        at = blockEnd;
+    }
+    return std::max(std::min(at, entries_) - first, 1u);
+}
+
+double ListBoxShares::inRange(std::uint32_t first, std::uint32_t count) const {
+    const std::uint32_t end = std::min(first + count, entries_);
+    double sum = 0.0;
+    for (std::uint32_t at = first; at < end;) {
+        const std::uint32_t block = at / kBlock;
+        const std::uint32_t blockEnd = std::min((block + 1) * kBlock, end);
+        const std::uint32_t blockSize = std::min(kBlock, entries_ - block * kBlock);
+        sum += static_cast<double>(perBlock_[block]) * (blockEnd - at) / blockSize;
+        at = blockEnd;
+    }
+    return sum;
+}
+
 std::vector<VoxelBox> mergeVoxelBoxes(std::vector<VoxelBox> boxes, std::size_t maxBoxes) {
     std::erase_if(boxes, [](const VoxelBox& b) { return b.empty(); });
     joinOverlapping(boxes);

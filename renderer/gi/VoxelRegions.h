@@ -63,6 +63,30 @@ std::pair<std::size_t, std::size_t> cheapestJoin(const std::vector<VoxelBox>& bo
 // `maxBoxes` are left.
 std::vector<VoxelBox> mergeVoxelBoxes(std::vector<VoxelBox> boxes, std::size_t maxBoxes);
 
+// Where the entries of a voxel list that lie in some boxes fall along the list, counted per block
+// of kBlock entries. A pass limited to the boxes (VoxelVolume::onlyBoxes: a near level's update of
+// the slabs a scroll uncovered) walks the list in ranges; its cost follows the entries in the
+// boxes, which cluster (the list holds voxels in the order they were voxelized), so a range sized
+// by the boxes' average share of the list cost up to 2.5× the frame's budget.
+class ListBoxShares {
+public:
+    static constexpr std::uint32_t kBlock = 1024;
+    ListBoxShares() = default;
+    ListBoxShares(const std::vector<glm::ivec3>& list, const std::vector<VoxelBox>& boxes);
+
+    std::uint32_t entries() const { return entries_; }
+    std::uint32_t inBoxes() const { return inBoxes_; }
+    // Entries from `first` that hold about `voxels` of the boxes' entries (each block's taken as
+    // spread evenly over it), at least 1, at most the rest of the list.
+    std::uint32_t entriesFor(std::uint32_t first, double voxels) const;
+    // The boxes' entries among entries [first, first + count), as entriesFor reckons them.
+    double inRange(std::uint32_t first, std::uint32_t count) const;
+
+private:
+    std::vector<std::uint32_t> perBlock_;
+    std::uint32_t entries_ = 0, inBoxes_ = 0;
+};
+
 // One draw item as the last voxelization saw it: its node's world transform and world box.
 struct ItemPose {
     glm::mat4 world{1.0f};

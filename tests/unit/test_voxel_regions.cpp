@@ -143,5 +143,44 @@ TEST(VoxelRegions, UncoveredSlabsAreExactlyTheVoxelsNotKept) {
     }
 }
 
+// A list whose box entries cluster: ranges sized by ListBoxShares hold the voxels asked, where
+// ranges sized by the boxes' average share of the list would hold from none to all of a block.
+TEST(VoxelRegions, ListBoxSharesSizeRangesByTheEntriesInTheBoxes) {
+    const std::vector<VoxelBox> boxes{{glm::ivec3(0), glm::ivec3(4)}};
+    std::vector<glm::ivec3> list;
+    const auto add = [&](int count, bool inside) {
+        for (int i = 0; i < count; ++i) list.push_back(inside ? glm::ivec3(i % 4) : glm::ivec3(10 + i % 4));
+    };
+    // Block 0 none in the boxes, block 1 all, block 2 a quarter (every fourth), block 3 half a block, none.
+    add(1024, false);
+    add(1024, true);
+    for (int i = 0; i < 1024; ++i) add(1, i % 4 == 0);
+    add(512, false);
+    const ListBoxShares shares(list, boxes);
+    EXPECT_EQ(shares.entries(), 3584u);
+    EXPECT_EQ(shares.inBoxes(), 1024u + 256u);
+    EXPECT_DOUBLE_EQ(shares.inRange(0, 3584), 1280.0);
+    EXPECT_DOUBLE_EQ(shares.inRange(0, 1024), 0.0);
+    EXPECT_DOUBLE_EQ(shares.inRange(1024, 512), 512.0);
+    EXPECT_DOUBLE_EQ(shares.inRange(2048, 512), 128.0);
+    EXPECT_DOUBLE_EQ(shares.inRange(3072, 512), 0.0);
+    // 512 voxels from the start: past block 0's 1024 entries, half of block 1.
+    EXPECT_EQ(shares.entriesFor(0, 512.0), 1536u);
+    // 1024 + 64 from the start: block 1 whole, then a quarter-dense block: 256 entries more.
+    EXPECT_EQ(shares.entriesFor(0, 1088.0), 2048u + 256u);
+    // More than the rest holds: the rest of the list; and never less than one entry.
+    EXPECT_EQ(shares.entriesFor(3000, 100.0), 584u);
+    EXPECT_EQ(shares.entriesFor(1024, 0.0), 1u);
+    // Every range it sizes holds what it was asked (within one entry's worth).
+    for (std::uint32_t first = 0; first < 2500; first += 97) {
+        const double asked = 100.0;
+        const std::uint32_t count = shares.entriesFor(first, asked);
+        if (first + count < shares.entries()) {
+            EXPECT_GE(shares.inRange(first, count), asked - 1e-9) << first;
+            EXPECT_LT(shares.inRange(first, count), asked + 1.0) << first;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace lit
