@@ -479,6 +479,10 @@ void App::drawUi(glm::ivec2 renderSize) {
 
 void App::drawViewLegend(std::string_view viewName) {
     const VoxelVolume* voxels = renderer_->shownVoxels(doc_.settings);
+    std::vector<LegendVolume> levels;
+    if (doc_.settings.debug.view == View::VoxelLevels)
+        for (const VoxelVolume* v : renderer_->voxelLevels(doc_.settings))
+            levels.push_back({v->resolution(), v->mipCount(), v->voxelSize()});
     ViewLegend legend = describeDebugView({
         .view = viewName,
         .settings = doc_.settings,
@@ -486,6 +490,7 @@ void App::drawViewLegend(std::string_view viewName) {
         .exposureEv = renderer_->exposureEv(doc_.settings),
         .shadowMapLight = shownShadowLight(),
         .volume = voxels ? LegendVolume{voxels->resolution(), voxels->mipCount(), voxels->voxelSize()} : LegendVolume{},
+        .levels = std::move(levels),
         .coneSurfacePicked = input_.overlayOptions(false).coneSurface.has_value(),
     });
     // The Difference view's own window carries its colour bar; the view's legend would describe

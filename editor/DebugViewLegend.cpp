@@ -6,6 +6,7 @@
 
 #include "EditorViews.h"
 #include "ViewportOverlay.h"
+#include "passes/VoxelLevelColors.h"
 
 namespace lit::editor {
 
@@ -166,6 +167,28 @@ void describeVoxels(const LegendInputs& in, ViewLegend& legend) {
     if (!in.settings.gi.enabled) legend.note = "No voxels: GI is off (Render settings, GI).";
 }
 
+void describeVoxelLevels(const LegendInputs& in, ViewLegend& legend) {
+    legend.lines.push_back(
+        "Every volume's voxels as cubes in their level's colour, edges darkened; a finer level holds its own space.");
+    const auto swatch = [](glm::vec3 c) {
+        return std::array<float, 4>{srgbEncode(c.r), srgbEncode(c.g), srgbEncode(c.b), 1.0f};
+    };
+    const std::size_t count = in.levels.size();
+    for (std::size_t k = 0; k < count; ++k) {
+        const LegendVolume& v = in.levels[k];
+        const bool scene = k + 1 == count;
+        const std::string name = scene ? std::string("scene volume") : "near " + std::to_string(k + 1);
+        legend.swatches.push_back({swatch(voxelLevelColor(scene ? 0 : static_cast<int>(k) + 1)),
+                                   name + format(": %.4g m across, ", static_cast<double>(v.voxelSize) * v.resolution) +
+                                       std::to_string(v.resolution) +
+                                       format("^3, %.3g m voxels", static_cast<double>(v.voxelSize))});
+    }
+    if (!in.settings.gi.enabled)
+        legend.note = "No voxels: GI is off (Render settings, GI).";
+    else if (count == 1 && in.settings.gi.nearLevelCount() > 0)
+        legend.note = "No near level runs: the scene is smaller than twice a level's side.";
+}
+
 void describeConeDirections(const LegendInputs& in, ViewLegend& legend) {
     const GiSettings& gi = in.settings.gi;
     if (!in.coneSurfacePicked) legend.lines.push_back("Click a surface to draw the cones traced from that pixel.");
@@ -287,6 +310,9 @@ ViewLegend describeDebugView(const LegendInputs& in) {
         case View::Voxels:
         case View::VoxelSlice:
             describeVoxels(in, legend);
+            break;
+        case View::VoxelLevels:
+            describeVoxelLevels(in, legend);
             break;
     }
     return legend;

@@ -60,6 +60,7 @@ struct LegendInputs {
     float exposureEv = 0.0f;  // the exposure the frame was tone-mapped with (stops; metered with auto exposure)
     int shadowMapLight = 0;   // the light whose shadow map is shown (the selected one, else the setting's)
     LegendVolume volume{};
+    std::vector<LegendVolume> levels{};  // the voxel-levels view's volumes, finest first, the scene's last
     bool coneSurfacePicked = false;  // cone directions: a surface was clicked
 };
 

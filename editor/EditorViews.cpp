@@ -18,6 +18,7 @@ const std::vector<EditorView>& editorViews() {
         {"voxels", "Voxels", 0, false, "0"},
         {"voxel-slice", "Voxel slice", 1, true, "Shift+1"},
         {"cone-directions", "Cone directions", 2, true, "Shift+2"},
+        {"voxel-levels", "Voxel levels", 3, true, "Shift+3"},
     };
     return views;
 }

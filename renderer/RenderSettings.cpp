@@ -12,7 +12,7 @@
 namespace lit {
 
 namespace {
-constexpr std::array<std::pair<View, std::string_view>, 11> kViewNames{{
+constexpr std::array<std::pair<View, std::string_view>, 12> kViewNames{{
     {View::Final, "final"},
     {View::DirectDiffuse, "direct-diffuse"},
     {View::IndirectDiffuse, "indirect-diffuse"},
@@ -24,6 +24,7 @@ constexpr std::array<std::pair<View, std::string_view>, 11> kViewNames{{
     {View::Voxels, "voxels"},
     {View::RoughnessMetalness, "roughness-metalness"},
     {View::VoxelSlice, "voxel-slice"},
+    {View::VoxelLevels, "voxel-levels"},
 }};
 
 constexpr std::array<std::pair<VoxelChannel, std::string_view>, 5> kVoxelChannelNames{{

@@ -24,11 +24,12 @@ enum class View {
     Albedo,
     Normal,
     ShadowMap,
-    Voxels,              // the voxel volume ray-marched as cubes (one mip level, one channel)
+    Voxels,  // the voxel volume ray-marched as cubes (one mip level, one channel)
     RoughnessMetalness,
-    VoxelSlice,          // one slice of the voxel volume filling the viewport (axis, position, mip, channel)
+    VoxelSlice,   // one slice of the voxel volume filling the viewport (axis, position, mip, channel)
+    VoxelLevels,  // the voxels of every volume running ray-marched, each coloured by its level
 };
-// Voxels and VoxelSlice write display values in [0,1] to the HDR image too (radiance and emission
+// Voxels, VoxelSlice and VoxelLevels write display values in [0,1] to the HDR image too (radiance and emission
 // already tone-mapped with the exposure), so tests read what the user sees.
 
 std::string_view toString(View view);

@@ -57,6 +57,8 @@ int toShaderView(View view) {
         case View::Voxels: return LIT_VIEW_VOXELS;
         case View::RoughnessMetalness: return LIT_VIEW_ROUGHNESS_METALNESS;
         case View::VoxelSlice: return LIT_VIEW_VOXEL_SLICE;
+        case View::VoxelLevels:
+            return LIT_VIEW_VOXEL_LEVELS;
     }
     return LIT_VIEW_FINAL;
 }
@@ -134,6 +136,7 @@ struct Renderer::Impl {
     static float nearLevelSide(const RenderSettings& settings, int level);
     // The volume the voxel views show (DebugViewSettings::voxelLevel).
     const VoxelGi& shownVoxelGi(const RenderSettings& settings) const;
+    std::vector<const VoxelVolume*> voxelLevels(const RenderSettings& settings) const;
     // stats.voxelBytes and stats.nearLevels: the scene volume's and the near levels' memory.
     void recordGiMemory(const RenderSettings& settings);
     // `requested`, or a copy with fewer near levels: those at least half the scene's size across
@@ -621,7 +624,12 @@ void Renderer::Impl::composite(const Scene& scene, const RenderSettings& setting
     int shadowLayer = -1;
     for (const ShadowView& v : lights.shadows2d)
         if (v.light == settings.debug.shadowMapLight) shadowLayer = v.layer;
-    if (isVoxelView(settings.debug.view)) {
+    if (settings.debug.view == View::VoxelLevels) {
+        post.bindHdrTarget();
+        const std::vector<const VoxelVolume*> volumes =
+            settings.gi.enabled ? voxelLevels(settings) : std::vector<const VoxelVolume*>{};
+        voxelDebug.executeLevels(volumes);
+    } else if (isVoxelView(settings.debug.view)) {
         post.bindHdrTarget();
         const VoxelGi& shown = shownVoxelGi(settings);
         voxelDebug.execute(settings, settings.gi.enabled ? &shown.volume() : nullptr, shown.generation());
@@ -772,6 +780,20 @@ const VoxelVolume* Renderer::voxels() const { return impl_->gi.valid() ? &impl_-
 const VoxelVolume* Renderer::shownVoxels(const RenderSettings& settings) const {
     const VoxelGi& shown = impl_->shownVoxelGi(settings);
     return shown.valid() ? &shown.volume() : nullptr;
+}
+
+std::vector<const VoxelVolume*> Renderer::voxelLevels(const RenderSettings& settings) const {
+    return impl_->voxelLevels(settings);
+}
+
+std::vector<const VoxelVolume*> Renderer::Impl::voxelLevels(const RenderSettings& settings) const {
+    std::vector<const VoxelVolume*> volumes;
+    const int running = std::min(settings.gi.nearLevelCount(), static_cast<int>(nearGi.size()));
+    for (int k = 0; k < running; ++k)
+        if (const VoxelGi* level = nearGi[static_cast<std::size_t>(k)].get(); level && level->valid())
+            volumes.push_back(&level->volume());
+    if (gi.valid()) volumes.push_back(&gi.volume());
+    return volumes;
 }
 
 const VoxelGi& Renderer::Impl::shownVoxelGi(const RenderSettings& settings) const {

@@ -145,6 +145,9 @@ public:
     // The volume the voxel views show with `settings` (DebugViewSettings::voxelLevel: the scene's
     // or a near level's); nullptr before it was voxelized.
     const VoxelVolume* shownVoxels(const RenderSettings& settings) const;
+    // Every volume the last GI frame ran, finest first: the near levels, then the scene's volume
+    // (what View::VoxelLevels draws); empty before GI has run.
+    std::vector<const VoxelVolume*> voxelLevels(const RenderSettings& settings) const;
 
     Profiler& profiler();
     const FrameStats& stats() const;

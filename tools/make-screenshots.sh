@@ -70,6 +70,7 @@ city="$root/assets/gi/city.gltf"
     --hdr "$tmpdir/city_reference.hdr"
 "$render" "$city" --size 640x360 --gi on --voxels 128 --out "$out/city.png" \
     --compare "$tmpdir/city_reference.hdr" --difference "$out/city_difference.png"
+"$render" "$city" --size 640x360 --gi on --voxels 128 --view voxel-levels --out "$out/city_voxel_levels.png"
 "$render" "$city" --size 640x360 --gi on --voxels 128 --set gi.nearLevelSide=0 --out "$out/city_one_volume.png" \
     --compare "$tmpdir/city_reference.hdr" --difference "$out/city_one_volume_difference.png"
 

@@ -13,9 +13,9 @@ namespace {
 
 // Every lit::View, in menu order. Keep in step with the enum in RenderSettings.h.
 constexpr std::array kViews = {
-    View::Final,  View::DirectDiffuse, View::IndirectDiffuse, View::DirectSpecular, View::IndirectSpecular,
-    View::Albedo, View::Normal,        View::RoughnessMetalness, View::ShadowMap,     View::Voxels,
-    View::VoxelSlice,
+    View::Final,      View::DirectDiffuse, View::IndirectDiffuse,    View::DirectSpecular, View::IndirectSpecular,
+    View::Albedo,     View::Normal,        View::RoughnessMetalness, View::ShadowMap,      View::Voxels,
+    View::VoxelSlice, View::VoxelLevels,
 };
 
 constexpr std::array kVoxelChannels = {VoxelChannel::Radiance, VoxelChannel::Albedo, VoxelChannel::Normal,

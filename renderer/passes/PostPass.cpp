@@ -8,7 +8,7 @@ namespace lit {
 
 bool isDataView(View view) {
     return view == View::Albedo || view == View::Normal || view == View::RoughnessMetalness ||
-           view == View::ShadowMap || view == View::Voxels || view == View::VoxelSlice;
+           view == View::ShadowMap || view == View::Voxels || view == View::VoxelSlice || view == View::VoxelLevels;
 }
 
 PostPass::PostPass(const std::filesystem::path& shaderRoot)

@@ -3,9 +3,12 @@
 #include <shared.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <string>
 
 #include "gi/VoxelVolume.h"
+#include "passes/VoxelLevelColors.h"
 
 namespace lit {
 
@@ -28,12 +31,14 @@ bool readsRadianceVolume(VoxelChannel channel) {
 }
 }  // namespace
 
-bool isVoxelView(View view) { return view == View::Voxels || view == View::VoxelSlice; }
+bool isVoxelView(View view) { return view == View::Voxels || view == View::VoxelSlice || view == View::VoxelLevels; }
 
 VoxelDebugPass::VoxelDebugPass(const std::filesystem::path& shaderRoot)
     : view_(shaderRoot, "voxel debug",
             {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "voxel_debug.frag.glsl"}}),
-      decode_(shaderRoot, "voxel debug decode", {{GL_COMPUTE_SHADER, "voxel_debug_decode.comp.glsl"}}) {}
+      decode_(shaderRoot, "voxel debug decode", {{GL_COMPUTE_SHADER, "voxel_debug_decode.comp.glsl"}}),
+      levels_(shaderRoot, "voxel levels",
+              {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "voxel_levels.frag.glsl"}}) {}
 
 int VoxelDebugPass::mipLevel(const RenderSettings& settings, const VoxelVolume& volume) {
     return std::clamp(settings.debug.voxelMip, 0, std::max(volume.mipCount() - 1, 0));
@@ -91,6 +96,36 @@ void VoxelDebugPass::execute(const RenderSettings& settings, const VoxelVolume* 
     view_.set("uMip", mipLevel(settings, *volume));
     view_.set("uAxis", std::clamp(settings.debug.voxelSliceAxis, 0, 2));
     view_.set("uSliceIndex", sliceIndex(settings, *volume));
+    triangle_.draw();
+}
+
+void VoxelDebugPass::executeLevels(std::span<const VoxelVolume* const> volumes) {
+    glDisable(GL_DEPTH_TEST);
+    const std::size_t count = std::min<std::size_t>(volumes.size(), LIT_MAX_NEAR_LEVELS + 1);
+    if (count == 0) {
+        const float black[4] = {0, 0, 0, 1};
+        glClearBufferfv(GL_COLOR, 0, black);
+        return;
+    }
+    levels_.use();
+    const GLuint program = levels_.id();
+    const auto at = [&](const char* name, std::size_t k) {
+        return levels_.location((std::string(name) + "[" + std::to_string(k) + "]").c_str());
+    };
+    for (std::size_t k = 0; k < count; ++k) {
+        const VoxelVolume& volume = *volumes[k];
+        volume.radiance().bind(static_cast<GLuint>(LIT_TEX_DEBUG_LEVELS_FIRST + k));
+        const glm::vec3 corner = volume.minCorner();
+        glProgramUniform4f(program, at("uVolume", k), corner.x, corner.y, corner.z, volume.voxelSize());
+        glProgramUniform1i(program, at("uResolution", k), volume.resolution());
+        // The last is the scene's volume; the others near levels 1, 2, ... from the finest.
+        const glm::vec3 color = voxelLevelColor(k + 1 == count ? 0 : static_cast<int>(k) + 1);
+        glProgramUniform3f(program, at("uColor", k), color.r, color.g, color.b);
+    }
+    // Every unit the shader's array declares is bound to a 3D texture (the unused ones never read).
+    for (std::size_t k = count; k < LIT_MAX_NEAR_LEVELS + 1; ++k)
+        volumes[0]->radiance().bind(static_cast<GLuint>(LIT_TEX_DEBUG_LEVELS_FIRST + k));
+    levels_.set("uVolumeCount", static_cast<int>(count));
     triangle_.draw();
 }
 

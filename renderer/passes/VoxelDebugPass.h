@@ -4,7 +4,10 @@
 //   View::VoxelSlice  one slice of the volume filling the viewport (aspect kept), each voxel a
 //                     square (nearest filtering), with a thin grid once voxels are ≥ 4 px wide;
 //   View::Voxels      the volume ray-marched voxel by voxel (a DDA over that mip's grid), each
-//                     occupied voxel drawn as a cube with its faces shaded by their axis.
+//                     occupied voxel drawn as a cube with its faces shaded by their axis;
+//   View::VoxelLevels every volume running ray-marched at level 0 (executeLevels), each voxel a
+//                     cube in its level's colour (VoxelLevelColors.h) with its edges marked, the
+//                     space a finer level holds left to it.
 // Both write display values in [0,1] into the HDR target (see isDataView): albedo as is, normals
 // as 0.5 + 0.5·n, opacity as grey, radiance and emission tone-mapped with the exposure.
 //
@@ -13,16 +16,17 @@
 // own RGBA16F volume premultiplied by occupancy (so a mip averages only occupied voxels) and
 // builds that volume's mip chain — only when the channel or the voxels changed.
 
+#include <cstdint>
+#include <span>
+
 #include "RenderSettings.h"
 #include "passes/Pass.h"
-
-#include <cstdint>
 
 namespace lit {
 
 class VoxelVolume;
 
-bool isVoxelView(View view);  // Voxels or VoxelSlice
+bool isVoxelView(View view);  // Voxels, VoxelSlice or VoxelLevels
 
 class VoxelDebugPass : public Pass {
 public:
@@ -33,17 +37,21 @@ public:
     // `voxelGeneration` must change whenever the volume's material volumes were rewritten.
     void execute(const RenderSettings& settings, const VoxelVolume* volume, std::uint64_t voxelGeneration);
 
+    // Draws View::VoxelLevels: `volumes` finest first, the scene's volume last (at most
+    // LIT_MAX_NEAR_LEVELS + 1; empty when GI is off: the view is black).
+    void executeLevels(std::span<const VoxelVolume* const> volumes);
+
     // Mip level and slice index (at that level) the views show for `settings` on `volume`.
     static int mipLevel(const RenderSettings& settings, const VoxelVolume& volume);
     static int sliceIndex(const RenderSettings& settings, const VoxelVolume& volume);
 
-    std::vector<gl::Program*> programs() override { return {&view_, &decode_}; }
+    std::vector<gl::Program*> programs() override { return {&view_, &decode_, &levels_}; }
 
 private:
     // Rebuilds decoded_ for `channel` (albedo, normal or emission) when it is stale.
     void decode(const VoxelVolume& volume, VoxelChannel channel, std::uint64_t voxelGeneration);
 
-    gl::Program view_, decode_;
+    gl::Program view_, decode_, levels_;
     FullscreenTriangle triangle_;
     gl::Texture decoded_;  // RGBA16F N³ with mips: rgb channel value × occupancy, a occupancy
     // What decoded_ holds; generation 0 = nothing yet.

@@ -62,6 +62,9 @@ using mat4 = glm::mat4;
 #define LIT_TEX_TERM_INDIRECT_DIFFUSE 15
 #define LIT_TEX_TERM_INDIRECT_SPECULAR 16
 #define LIT_TEX_DEBUG_INPUT 17       // whatever a debug view shows (shadow map layer, ...)
+// The voxel-levels view: each running volume's radiance, finest first (its pass binds nothing else
+// on the material units it reuses).
+#define LIT_TEX_DEBUG_LEVELS_FIRST 0
 // Voxel volumes (voxel cone tracing).
 #define LIT_TEX_VOXEL_RADIANCE 18
 #define LIT_TEX_VOXEL_ALBEDO 19
@@ -256,6 +259,7 @@ using mat4 = glm::mat4;
 #define LIT_VIEW_VOXELS 8
 #define LIT_VIEW_ROUGHNESS_METALNESS 9
 #define LIT_VIEW_VOXEL_SLICE 10
+#define LIT_VIEW_VOXEL_LEVELS 11
 
 // What the voxel debug views show (DebugViewSettings::voxelChannel, VoxelDebugPass).
 #define LIT_VOXEL_CHANNEL_RADIANCE 0

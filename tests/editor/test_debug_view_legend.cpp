@@ -103,6 +103,26 @@ TEST(DebugViewLegend, VoxelSliceSaysWhatItCuts) {
     EXPECT_FALSE(legendOf("voxels", Scene{}, settings).sliceControls);
 }
 
+// The voxel-levels view names each volume running in its colour, finest first, with its size and
+// its voxels'.
+TEST(DebugViewLegend, VoxelLevelsNameEachVolumeInItsColour) {
+    const Scene scene = sceneWithMaterial(0.9f, 0.0f);
+    const RenderSettings settings;
+    const ViewLegend legend = describeDebugView(
+        {.view = "voxel-levels", .settings = settings, .scene = scene, .levels = {{128, 8, 0.5f}, {128, 8, 5.0f}}});
+    const std::string text = legendText(legend);
+    ASSERT_EQ(legend.swatches.size(), 2u) << text;
+    EXPECT_TRUE(contains(legend.swatches[0].meaning, "near 1: 64 m across, 128^3, 0.5 m voxels")) << text;
+    EXPECT_TRUE(contains(legend.swatches[1].meaning, "scene volume: 640 m across, 128^3, 5 m voxels")) << text;
+    EXPECT_NE(legend.swatches[0].color, legend.swatches[1].color);
+    EXPECT_TRUE(legend.note.empty()) << text;
+    // A scene too small for a near level: the scene's volume alone, and why.
+    const ViewLegend alone =
+        describeDebugView({.view = "voxel-levels", .settings = settings, .scene = scene, .levels = {{128, 8, 0.05f}}});
+    ASSERT_EQ(alone.swatches.size(), 1u);
+    EXPECT_TRUE(contains(alone.note, "smaller than twice")) << legendText(alone);
+}
+
 // The cone directions' colours are the overlay's own.
 TEST(DebugViewLegend, ConeColoursMatchTheOverlay) {
     const ViewLegend legend = legendOf(kConeDirectionsView, Scene{});

@@ -12,8 +12,8 @@ using namespace lit;
 using namespace lit::editor;
 
 TEST(EditorViews, EveryRendererViewIsInTheMenuOnceWithItsOwnKey) {
-    // Every View the renderer has (the enum is contiguous from Final to VoxelSlice).
-    for (int v = static_cast<int>(View::Final); v <= static_cast<int>(View::VoxelSlice); ++v) {
+    // Every View the renderer has (the enum is contiguous from Final to VoxelLevels).
+    for (int v = static_cast<int>(View::Final); v <= static_cast<int>(View::VoxelLevels); ++v) {
         const std::string_view name = toString(static_cast<View>(v));
         EXPECT_NE(findEditorView(name), nullptr) << name;
     }

@@ -8,6 +8,7 @@
 
 #include "GlTestSupport.h"
 #include "gi/VoxelVolume.h"
+#include "passes/VoxelLevelColors.h"
 #include "reference/AccuracyRegions.h"
 #include "reference/PathTracer.h"
 #include "reference/ReferenceScene.h"
@@ -240,6 +241,66 @@ TEST_F(NearLevel, VoxelViewsShowTheLevelAsked) {
     EXPECT_GT(renderer_->voxels()->side(), 600.0f);
     EXPECT_NE(sceneVolume, near);
     EXPECT_EQ(near, beyond) << "one level runs: level 3 shows it";
+}
+
+// The voxel-levels view draws each volume's voxels in its level's colour: from the street, the near
+// level's (0.5 m voxels) fill the foot of the image and the scene volume's the far end of the
+// street; without near levels the scene volume's alone. Each pixel is one of the two colours
+// shaded (by the face's axis, darker on the voxels' edges) or the black sky. ~3 s.
+TEST_F(NearLevel, VoxelLevelsViewColoursEachVolume) {
+    const Scene scene = loadCity();
+    RenderSettings settings;
+    settings.gi.voxelResolution = 64;
+    settings.gi.nearLevelSide = 64.0f;
+    settings.output.width = 96;
+    settings.output.height = 54;
+    settings.debug.view = View::VoxelLevels;
+    renderer_->setScene(scene);
+    const CameraView camera = cameraFor(scene, settings);
+    // Pixels whose colour is a shade of `color` (the same ratios of r, g and b within 2 %).
+    const auto shadeOf = [](const float* p, glm::vec3 color) {
+        const glm::vec3 v(p[0], p[1], p[2]);
+        if (v.g <= 0.0f) return false;
+        return std::abs(v.r / v.g - color.r / color.g) < 0.02f && std::abs(v.b / v.g - color.b / color.g) < 0.02f;
+    };
+    struct Counts {
+        int near = 0, sceneVolume = 0, other = 0;
+        int nearAtFoot = 0, sceneAtCentre = 0;
+    };
+    const auto count = [&]() {
+        renderer_->render(scene, camera, settings);
+        const std::vector<float> image = renderer_->readHdrRgb();
+        Counts c;
+        const int w = settings.output.width, h = settings.output.height;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const float* p = &image[static_cast<std::size_t>(3 * (y * w + x))];
+                const bool near = shadeOf(p, voxelLevelColor(1)), far = shadeOf(p, voxelLevelColor(0));
+                const bool black = p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f;
+                c.near += near;
+                c.sceneVolume += far;
+                c.other += !near && !far && !black;
+                // readHdrRgb's rows run bottom up: the foot of the image is row 0.
+                if (y < h / 8) c.nearAtFoot += near;
+                if (std::abs(y - h / 2) <= 1 && std::abs(x - w / 2) <= 1) c.sceneAtCentre += far;
+            }
+        return c;
+    };
+    const Counts both = count();
+    std::printf("near level %d px, scene volume %d px, other %d px\n", both.near, both.sceneVolume, both.other);
+    EXPECT_EQ(both.other, 0);
+    EXPECT_GT(both.near, 96 * 54 / 4);
+    EXPECT_GT(both.sceneVolume, 50);
+    EXPECT_EQ(both.nearAtFoot, 96 * (54 / 8)) << "the street at the camera's feet is the near level's";
+    EXPECT_GT(both.sceneAtCentre, 0) << "the far end of the street is the scene volume's";
+    ASSERT_EQ(renderer_->voxelLevels(settings).size(), 2u);
+    EXPECT_EQ(renderer_->voxelLevels(settings).back(), renderer_->voxels());
+
+    settings.gi.nearLevels = 0;
+    const Counts alone = count();
+    EXPECT_EQ(alone.near, 0);
+    EXPECT_EQ(alone.other, 0);
+    EXPECT_GT(alone.sceneVolume, both.sceneVolume);
 }
 
 }  // namespace

@@ -23,10 +23,10 @@ std::string formatNumber(float x) {
 
 std::string onOff(bool on) { return on ? "on" : "off"; }
 
-// "final, direct-diffuse, ..." — every View, in declaration order (VoxelSlice is last).
+// "final, direct-diffuse, ..." — every View, in declaration order (VoxelLevels is last).
 std::string viewNames() {
     std::string names;
-    for (int i = 0; i <= static_cast<int>(View::VoxelSlice); ++i)
+    for (int i = 0; i <= static_cast<int>(View::VoxelLevels); ++i)
         names += (i ? ", " : "") + std::string(toString(static_cast<View>(i)));
     return names;
 }
