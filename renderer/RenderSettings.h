@@ -59,7 +59,7 @@ inline constexpr int kMaxVoxelRays = 256;
 // The most GiSettings::laterBounceRayStride asks for (more are clamped to it).
 inline constexpr int kMaxLaterBounceRayStride = 16;
 // Near levels around the camera at most (GiSettings::nearLevels; shared.h LIT_MAX_NEAR_LEVELS).
-inline constexpr int kMaxNearLevels = 3;
+inline constexpr int kMaxNearLevels = 5;
 // The footprint bound of the accurate and cached modes' diffuse cones (GiSettings::
 // coneFootprintPerHeight): the largest voxel a cone leaving a surface samples is a quarter of its
 // height above it. Why a quarter: docs/GI.md, "Footprint-bounded cones".

@@ -22,7 +22,7 @@ using mat4 = glm::mat4;
 #define LIT_UBO_VOXEL 2        // VoxelUniforms: where the voxel volume is and how to trace it
 #define LIT_UBO_OUTER_VOXEL 3  // VoxelUniforms of the next volume out, for a near level's rays (LIT_NEAR_LEVEL)
 #define LIT_UBO_FAR_VOXEL 4    // VoxelUniforms of the scene's volume, for a near level's rays (LIT_NEAR_LEVEL)
-#define LIT_MAX_NEAR_LEVELS 3  // near levels at most (kMaxNearLevels)
+#define LIT_MAX_NEAR_LEVELS 5  // near levels at most (kMaxNearLevels)
 #define LIT_UBO_NEAR_VOXEL_FIRST 5  // VoxelUniforms of near level k at FIRST + k, for the pixels' gather (LIT_NEAR_GATHER)
 
 // ---- Shader storage buffer binding points ------------------------------------------------

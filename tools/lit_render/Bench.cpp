@@ -128,6 +128,16 @@ nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& option
             for (const auto& [name, ms] : bench.framePasses[i]) gpu[name] = ms;
         frames.push_back({{"ms", bench.frameMs[i]}, {"gpuMs", gpu}});
     }
+    // The GI's GPU memory: the scene's volume, then each near level's.
+    nlohmann::ordered_json nearLevels = nlohmann::ordered_json::array();
+    std::size_t nearBytes = 0;
+    for (const lit::FrameStats::NearLevelMemory& level : stats.nearLevels) {
+        nearLevels.push_back({{"side", level.side}, {"bytes", level.bytes}});
+        nearBytes += level.bytes;
+    }
+    const nlohmann::ordered_json giMemory = {{"totalBytes", stats.voxelBytes},
+                                             {"sceneVolumeBytes", stats.voxelBytes - nearBytes},
+                                             {"nearLevels", nearLevels}};
     return {{"scene", options.scene.string()},
             {"device", device},
             {"width", settings.output.width},
@@ -153,6 +163,7 @@ nlohmann::ordered_json benchJson(const BenchResult& bench, const Options& option
               {"anisotropic", bench.mipmaps.anisotropic},
               {"directionalMinMs", bench.mipmaps.directionalMinMs},
               {"directionalOccupiedMinMs", bench.mipmaps.directionalOccupiedMinMs}}},
+            {"giMemory", giMemory},
             {"perFrame", frames},
             {"triangles", stats.triangles},
             {"drawCalls", stats.drawCalls},
