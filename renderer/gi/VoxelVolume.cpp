@@ -266,10 +266,15 @@ void VoxelVolume::clearRadianceMips() {
 
 void VoxelVolume::clearDirectional() const {
     const float transparent[4] = {0, 0, 0, 0};
+    // Each level holds the +axis face at x 0 and the −axis face at x 2·edge: the gap between them
+    // is never written (a third of the texels left alone).
     for (const gl::Texture& t : directional_)
         if (t)
-            for (int level = 0; level < t.desc().levels; ++level)
-                glClearTexImage(t.id(), level, GL_RGBA, GL_FLOAT, transparent);
+            for (int level = 0; level < t.desc().levels; ++level) {
+                const int edge = std::max(t.desc().height >> level, 1);
+                for (const int x : {0, 2 * edge})
+                    glClearTexSubImage(t.id(), level, x, 0, 0, edge, edge, edge, GL_RGBA, GL_FLOAT, transparent);
+            }
 }
 
 std::vector<glm::ivec3> VoxelVolume::readParentList(int level) const {
