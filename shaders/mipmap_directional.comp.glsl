@@ -132,6 +132,16 @@ vec2 shareTowards(ivec3 p, vec4 n, vec3 travel, inout int asked) {
 }
 #endif
 
+// A step along `axis`, and steps along the two other axes, which span a block's 4 child pairs.
+void axisFrame(int axis, out ivec3 along, out ivec3 u, out ivec3 v) {
+    along = ivec3(0);
+    along[axis] = 1;
+    u = ivec3(0);
+    v = ivec3(0);
+    u[(axis + 1) % 3] = 1;
+    v[(axis + 2) % 3] = 1;
+}
+
 #if LIT_DIRECTIONAL_FROM_ISO
 // One invocation writes the parent of all six faces: its 8 children, their normals and each
 // child's slab search are read once, not once per face.
@@ -155,11 +165,8 @@ void main() {
         asked[i] = 0;
     }
     for (int axis = 0; axis < 3; ++axis) {
-        ivec3 along = ivec3(0);
-        along[axis] = 1;
-        ivec3 u = ivec3(0), v = ivec3(0);
-        u[(axis + 1) % 3] = 1;
-        v[(axis + 2) % 3] = 1;
+        ivec3 along, u, v;
+        axisFrame(axis, along, u, v);
         for (int s = 0; s < 2; ++s) {
             bool negative = s == 1;
             vec3 travel = vec3(0.0);
@@ -207,12 +214,8 @@ void main() {
     if (any(greaterThanEqual(p, ivec3(uFace.z)))) return;
     int axis = uFace.x;
     bool negative = uFace.y != 0;
-    // The two other axes span the 4 pairs.
-    ivec3 along = ivec3(0);
-    along[axis] = 1;
-    ivec3 u = ivec3(0), v = ivec3(0);
-    u[(axis + 1) % 3] = 1;
-    v[(axis + 2) % 3] = 1;
+    ivec3 along, u, v;
+    axisFrame(axis, along, u, v);
     ivec3 base = p * 2;
     vec4 sum = vec4(0.0);
     for (int j = 0; j < 4; ++j) {

@@ -4,6 +4,7 @@
 #include "frame.glsl"
 #include "tonemap.glsl"
 #include "voxel.glsl"
+#include "voxel_walk.glsl"
 
 in vec2 vUv;
 layout(location = 0) out vec4 outColor;
@@ -52,9 +53,9 @@ vec3 sliceView(int n) {
     return color;
 }
 
-// Walks the camera ray through the level's voxel grid (Amanatides & Woo 1987, "A Fast Voxel
-// Traversal Algorithm for Ray Tracing") and shows the first occupied voxel as a cube: the face it
-// was entered through is shaded by its axis so neighbouring cubes read apart.
+// Walks the camera ray through the level's voxel grid (voxel_walk.glsl) and shows the first
+// occupied voxel as a cube: the face it was entered through is shaded by its axis so neighbouring
+// cubes read apart.
 vec3 volumeView(int n) {
     vec4 nearH = frame.inverseViewProjection * vec4(vUv * 2.0 - 1.0, -1.0, 1.0);
     vec4 farH = frame.inverseViewProjection * vec4(vUv * 2.0 - 1.0, 1.0, 1.0);
@@ -63,37 +64,13 @@ vec3 volumeView(int n) {
     vec3 origin = worldToVolume(originWorld) * float(n);
     vec3 dir = normalize(farH.xyz / farH.w - originWorld);
     dir = mix(dir, vec3(1e-7), lessThan(abs(dir), vec3(1e-7)));
-    vec3 inv = 1.0 / dir;
-    vec3 t0 = (vec3(0.0) - origin) * inv, t1 = (vec3(float(n)) - origin) * inv;
-    vec3 tEnter = min(t0, t1);
-    float tNear = max(max(tEnter.x, tEnter.y), tEnter.z);
-    float tFar = min(min(max(t0.x, t1.x), max(t0.y, t1.y)), max(t0.z, t1.z));
-    if (tFar < max(tNear, 0.0)) return vec3(0.0);
-    // Face the ray entered the volume through (-1: it starts inside).
-    int face = tNear < 0.0 ? -1 : (tNear == tEnter.x ? 0 : (tNear == tEnter.y ? 1 : 2));
-    float t = max(tNear, 0.0);
-    ivec3 v = clamp(ivec3(floor(origin + dir * (t + 1e-4))), ivec3(0), ivec3(n - 1));
-    ivec3 stepDir = ivec3(sign(dir));
-    vec3 tDelta = abs(inv);
-    vec3 tMax = (vec3(v) + max(sign(dir), 0.0) - origin) * inv;
+    VoxelWalk walk;
+    if (!beginVoxelWalk(origin, dir, n, walk)) return vec3(0.0);
     const vec3 faceShade = vec3(0.8, 1.0, 0.9);  // faces across X, Y, Z
     for (int i = 0; i < 3 * n; ++i) {
-        vec4 value = texelFetch(source, v, uMip);
-        if (value.a >= kOccupied) return display(value) * (face < 0 ? 1.0 : faceShade[face]);
-        if (tMax.x < tMax.y && tMax.x < tMax.z) {
-            v.x += stepDir.x;
-            tMax.x += tDelta.x;
-            face = 0;
-        } else if (tMax.y < tMax.z) {
-            v.y += stepDir.y;
-            tMax.y += tDelta.y;
-            face = 1;
-        } else {
-            v.z += stepDir.z;
-            tMax.z += tDelta.z;
-            face = 2;
-        }
-        if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(n)))) break;
+        vec4 value = texelFetch(source, walk.voxel, uMip);
+        if (value.a >= kOccupied) return display(value) * (walk.face < 0 ? 1.0 : faceShade[walk.face]);
+        if (!stepVoxelWalk(walk, n)) break;
     }
     return vec3(0.0);
 }

@@ -1,11 +1,12 @@
 #version 450 core
 // The voxel-levels view (VoxelDebugPass::executeLevels): the voxels of every volume running, ray-
 // marched from the camera, each drawn as a cube in its level's colour. Volume k (finest first, the
-// scene's volume last) is walked voxel by voxel (Amanatides & Woo 1987) over its own grid, skipping
+// scene's volume last) is walked voxel by voxel (voxel_walk.glsl) over its own grid, skipping
 // the voxels whose centre lies inside volume k − 1 (a finer level holds that space); the nearest
 // hit of all the volumes is shown. A face is shaded by the axis it faces, and a darker line marks
 // its voxel's edges, so the voxel size of each level reads off the image.
 #include "frame.glsl"
+#include "voxel_walk.glsl"
 
 in vec2 vUv;
 layout(location = 0) out vec4 outColor;
@@ -36,49 +37,23 @@ float march(int k, vec3 originWorld, vec3 dir, out vec3 color) {
     int n = uResolution[k];
     float voxelSize = uVolume[k].w;
     vec3 origin = (originWorld - uVolume[k].xyz) / voxelSize;  // voxel units: the grid is [0, n]³
-    vec3 inv = 1.0 / dir;
-    vec3 t0 = (vec3(0.0) - origin) * inv, t1 = (vec3(float(n)) - origin) * inv;
-    vec3 tEnter = min(t0, t1);
-    float tNear = max(max(tEnter.x, tEnter.y), tEnter.z);
-    float tFar = min(min(max(t0.x, t1.x), max(t0.y, t1.y)), max(t0.z, t1.z));
-    if (tFar < max(tNear, 0.0)) return -1.0;
-    int face = tNear < 0.0 ? -1 : (tNear == tEnter.x ? 0 : (tNear == tEnter.y ? 1 : 2));
-    float t = max(tNear, 0.0);
-    ivec3 v = clamp(ivec3(floor(origin + dir * (t + 1e-4))), ivec3(0), ivec3(n - 1));
-    ivec3 stepDir = ivec3(sign(dir));
-    vec3 tDelta = abs(inv);
-    vec3 tMax = (vec3(v) + max(sign(dir), 0.0) - origin) * inv;
+    VoxelWalk walk;
+    if (!beginVoxelWalk(origin, dir, n, walk)) return -1.0;
     const vec3 faceShade = vec3(0.8, 1.0, 0.9);  // faces across X, Y, Z
     for (int i = 0; i < 3 * n; ++i) {
-        bool finer = k > 0 && insideVolume(k - 1, uVolume[k].xyz + (vec3(v) + 0.5) * voxelSize);
-        if (!finer && texelFetch(uRadiance[k], v, 0).a >= kOccupied) {
+        bool finer = k > 0 && insideVolume(k - 1, uVolume[k].xyz + (vec3(walk.voxel) + 0.5) * voxelSize);
+        if (!finer && texelFetch(uRadiance[k], walk.voxel, 0).a >= kOccupied) {
             color = uColor[k];
-            if (face >= 0) {
-                color *= faceShade[face];
+            if (walk.face >= 0) {
+                color *= faceShade[walk.face];
                 // Where on the face the ray hit, in voxels: dark near its edges.
-                vec3 inVoxel = fract(origin + dir * t);
-                vec2 across = face == 0 ? inVoxel.yz : (face == 1 ? inVoxel.xz : inVoxel.xy);
+                vec3 inVoxel = fract(origin + dir * walk.t);
+                vec2 across = walk.face == 0 ? inVoxel.yz : (walk.face == 1 ? inVoxel.xz : inVoxel.xy);
                 if (any(lessThan(min(across, 1.0 - across), vec2(kEdge)))) color *= 0.55;
             }
-            return t * voxelSize;
+            return walk.t * voxelSize;
         }
-        if (tMax.x < tMax.y && tMax.x < tMax.z) {
-            t = tMax.x;
-            v.x += stepDir.x;
-            tMax.x += tDelta.x;
-            face = 0;
-        } else if (tMax.y < tMax.z) {
-            t = tMax.y;
-            v.y += stepDir.y;
-            tMax.y += tDelta.y;
-            face = 1;
-        } else {
-            t = tMax.z;
-            v.z += stepDir.z;
-            tMax.z += tDelta.z;
-            face = 2;
-        }
-        if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(n)))) break;
+        if (!stepVoxelWalk(walk, n)) break;
     }
     return -1.0;
 }
