@@ -132,6 +132,16 @@ vec2 shareTowards(ivec3 p, vec4 n, vec3 travel, inout int asked) {
 }
 #endif
 
+// This invocation's parent: its entry of the list, or its place in the grid; false past the list.
+bool parentOfInvocation(out ivec3 p) {
+#if LIT_MIP_FROM_LIST
+    return listedParent(p);
+#else
+    p = ivec3(gl_GlobalInvocationID);
+    return true;
+#endif
+}
+
 // A step along `axis`, and steps along the two other axes, which span a block's 4 child pairs.
 void axisFrame(int axis, out ivec3 along, out ivec3 u, out ivec3 v) {
     along = ivec3(0);
@@ -146,12 +156,8 @@ void axisFrame(int axis, out ivec3 along, out ivec3 u, out ivec3 v) {
 // One invocation writes the parent of all six faces: its 8 children, their normals and each
 // child's slab search are read once, not once per face.
 void main() {
-#if LIT_MIP_FROM_LIST
     ivec3 p;
-    if (!listedParent(p)) return;
-#else
-    ivec3 p = ivec3(gl_GlobalInvocationID);
-#endif
+    if (!parentOfInvocation(p)) return;
     if (any(greaterThanEqual(p, ivec3(uEdge)))) return;
     ivec3 base = p * 2;
     // Child i = x + 2y + 4z of the block: its radiance, its normal and its slab search, once.
@@ -205,12 +211,8 @@ void main() {
 vec4 child(ivec3 p) { return imageLoad(uSource, p + ivec3(uOffsets.x, 0, 0)); }
 
 void main() {
-#if LIT_MIP_FROM_LIST
     ivec3 p;
-    if (!listedParent(p)) return;
-#else
-    ivec3 p = ivec3(gl_GlobalInvocationID);
-#endif
+    if (!parentOfInvocation(p)) return;
     if (any(greaterThanEqual(p, ivec3(uFace.z)))) return;
     int axis = uFace.x;
     bool negative = uFace.y != 0;

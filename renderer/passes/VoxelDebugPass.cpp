@@ -29,6 +29,11 @@ int toShaderChannel(VoxelChannel channel) {
 bool readsRadianceVolume(VoxelChannel channel) {
     return channel == VoxelChannel::Radiance || channel == VoxelChannel::Opacity;
 }
+// A voxel view with no volume (GI off) is black.
+void clearToBlack() {
+    const float black[4] = {0, 0, 0, 1};
+    glClearBufferfv(GL_COLOR, 0, black);
+}
 }  // namespace
 
 bool isVoxelView(View view) { return view == View::Voxels || view == View::VoxelSlice || view == View::VoxelLevels; }
@@ -80,8 +85,7 @@ void VoxelDebugPass::execute(const RenderSettings& settings, const VoxelVolume* 
                              std::uint64_t voxelGeneration) {
     glDisable(GL_DEPTH_TEST);
     if (!volume || volume->resolution() <= 0) {
-        const float black[4] = {0, 0, 0, 1};
-        glClearBufferfv(GL_COLOR, 0, black);
+        clearToBlack();
         return;
     }
     const VoxelChannel channel = settings.debug.voxelChannel;
@@ -103,8 +107,7 @@ void VoxelDebugPass::executeLevels(std::span<const VoxelVolume* const> volumes) 
     glDisable(GL_DEPTH_TEST);
     const std::size_t count = std::min<std::size_t>(volumes.size(), LIT_MAX_NEAR_LEVELS + 1);
     if (count == 0) {
-        const float black[4] = {0, 0, 0, 1};
-        glClearBufferfv(GL_COLOR, 0, black);
+        clearToBlack();
         return;
     }
     levels_.use();

@@ -19,6 +19,16 @@ namespace {
 class NearLevel : public GlFixture {
 protected:
     Scene loadCity() { return loadGltf(sourceDir() / "assets" / "gi" / "city.gltf", log_); }
+    // 64³ volumes, a 64 m near level (1 m voxels, steps of 8 m), a w × h image of `view`.
+    static RenderSettings cityLevelSettings(int w, int h, View view) {
+        RenderSettings settings;
+        settings.gi.voxelResolution = 64;
+        settings.gi.nearLevelSide = 64.0f;
+        settings.output.width = w;
+        settings.output.height = h;
+        settings.debug.view = view;
+        return settings;
+    }
 };
 
 double maskedLuminance(const std::vector<float>& rgb, const reference::PixelMask& mask) {
@@ -119,12 +129,7 @@ TEST_F(NearLevel, MovesOnlyInEighthsOfItsSide) {
 // over frames by voxel counts and under a time budget. ~25 s.
 TEST_F(NearLevel, ScrolledLevelMatchesOneVoxelizedWhole) {
     const Scene scene = loadCity();
-    RenderSettings settings;
-    settings.gi.voxelResolution = 64;
-    settings.gi.nearLevelSide = 64.0f;  // 1 m voxels, steps of 8 m
-    settings.output.width = 64;
-    settings.output.height = 64;
-    settings.debug.view = View::IndirectDiffuse;
+    const RenderSettings settings = cityLevelSettings(64, 64, View::IndirectDiffuse);
     renderer_->setScene(scene);
     const CameraView start = cameraFor(scene, settings);  // z = 290 m: the level is centred on z = 288 m
     CameraView moved = start;
@@ -214,12 +219,7 @@ TEST_F(NearLevel, ScrolledLevelMatchesOneVoxelizedWhole) {
 // or past the levels running the coarsest that runs. ~3 s.
 TEST_F(NearLevel, VoxelViewsShowTheLevelAsked) {
     const Scene scene = loadCity();
-    RenderSettings settings;
-    settings.gi.voxelResolution = 64;
-    settings.gi.nearLevelSide = 64.0f;
-    settings.output.width = 64;
-    settings.output.height = 64;
-    settings.debug.view = View::VoxelSlice;
+    RenderSettings settings = cityLevelSettings(64, 64, View::VoxelSlice);
     settings.debug.voxelSliceAxis = 1;  // a horizontal slice
     settings.debug.voxelSlice = 0.5f;
     settings.debug.voxelChannel = VoxelChannel::Albedo;
@@ -249,12 +249,7 @@ TEST_F(NearLevel, VoxelViewsShowTheLevelAsked) {
 // shaded (by the face's axis, darker on the voxels' edges) or the black sky. ~3 s.
 TEST_F(NearLevel, VoxelLevelsViewColoursEachVolume) {
     const Scene scene = loadCity();
-    RenderSettings settings;
-    settings.gi.voxelResolution = 64;
-    settings.gi.nearLevelSide = 64.0f;
-    settings.output.width = 96;
-    settings.output.height = 54;
-    settings.debug.view = View::VoxelLevels;
+    RenderSettings settings = cityLevelSettings(96, 54, View::VoxelLevels);
     renderer_->setScene(scene);
     const CameraView camera = cameraFor(scene, settings);
     // Pixels whose colour is a shade of `color` (the same ratios of r, g and b within 2 %).
