@@ -105,6 +105,9 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("shadows", "slopeBias", sh.slopeBias);
     visit("shadows", "normalOffset", sh.normalOffset);
     visit("shadows", "pcfRadius", sh.pcfRadius);
+    visit("shadows", "cascades", sh.cascades);
+    visit("shadows", "cascadeDistance", sh.cascadeDistance);
+    visit("shadows", "cascadeSplit", sh.cascadeSplit);
     GiSettings& gi = s.gi;
     visit("gi", "enabled", gi.enabled);
     visit("gi", "mode", gi.mode);

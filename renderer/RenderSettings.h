@@ -131,6 +131,13 @@ struct ShadowSettings {
     float slopeBias = 2.0f;     // multiplied by the depth slope (glPolygonOffset factor)
     float normalOffset = 1.5f;  // receiver offset along the normal, in shadow texels
     float pcfRadius = 1.5f;     // PCF kernel radius, in shadow texels
+    // Directional lights also get maps fitted to slices of the camera's view (docs/ARCHITECTURE.md,
+    // "Shadow cascades"): `cascades` maps (0..LIT_MAX_SHADOW_CASCADES; 0 = only the map over the whole
+    // scene, which the voxel injection always uses), covering the view out to `cascadeDistance`
+    // metres (0 = the scene's diagonal), split at λ·log + (1 − λ)·uniform spacing, λ = `cascadeSplit`.
+    int cascades = 4;
+    float cascadeDistance = 0.0f;
+    float cascadeSplit = 0.75f;
     bool operator==(const ShadowSettings&) const = default;
 };
 

@@ -72,6 +72,7 @@ struct ShadowKey {
     int size = 0;
     float depthBias = 0, slopeBias = 0;
     float sunIrradiance = 0, sunElevation = 0, sunAzimuth = 0;  // the default sun of a scene without lights
+    bool cascades = false;                                      // directional lights get cascade slots
     bool operator==(const ShadowKey&) const = default;
 };
 
@@ -120,6 +121,8 @@ struct Renderer::Impl {
     bool updateLights(const Scene& scene, const RenderSettings& settings);  // true: the lights changed
     gpu::FrameUniforms bindFrame(const Scene& scene, const CameraView& camera, const RenderSettings& settings);
     void drawShadowMaps(const Scene& scene, const RenderSettings& settings);
+    void drawShadowCascades(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+                            bool shadowsDirty);
     // What every frame does first, a GI-only one too: the scene's changes, the light table and
     // the frame's uniforms bound, the shadow maps when the lights changed (then shadowsDirty).
     struct SceneFrame {
@@ -340,6 +343,7 @@ Renderer::Impl::SceneFrame Renderer::Impl::beginScene(const Scene& scene, const 
     f.shadowsDirty = updateLights(scene, settings);
     f.uniforms = bindFrame(scene, camera, settings);
     if (f.shadowsDirty) drawShadowMaps(scene, settings);
+    drawShadowCascades(scene, camera, settings, f.shadowsDirty);
     return f;
 }
 
@@ -361,14 +365,23 @@ void Renderer::Impl::syncScene(const Scene& scene) {
 }
 
 // The light table: rebuilt only when the scene or the shadow settings change; the camera does
-// not affect it or the shadow maps (directional maps are fitted to the scene, not the view).
+// not affect it or these maps (each directional light's map is fitted to the scene; the camera's
+// cascades are drawShadowCascades').
 bool Renderer::Impl::updateLights(const Scene& scene, const RenderSettings& settings) {
     // A material edit changes the maps only where sheets are or were (their transmittance layers).
     const std::uint64_t sheetMaterials = gpuScene->hasSheets() || lights.sheetShadows ? scene.materialRevision : 0;
-    const ShadowKey key{scene.geometryRevision,     scene.lightRevision,        sheetMaterials, &scene,
-                        settings.shadows.enabled,   settings.shadows.mapSize,   settings.shadows.depthBias,
-                        settings.shadows.slopeBias, settings.sky.sunIrradiance, settings.sky.sunElevation,
-                        settings.sky.sunAzimuth};
+    const ShadowKey key{scene.geometryRevision,
+                        scene.lightRevision,
+                        sheetMaterials,
+                        &scene,
+                        settings.shadows.enabled,
+                        settings.shadows.mapSize,
+                        settings.shadows.depthBias,
+                        settings.shadows.slopeBias,
+                        settings.sky.sunIrradiance,
+                        settings.sky.sunElevation,
+                        settings.sky.sunAzimuth,
+                        settings.shadows.cascades > 0};
     if (key == shadowKey) return false;
     lights = buildLightSetup(scene, bounds, settings, log);
     lights.sheetShadows = gpuScene->hasSheets();
@@ -385,6 +398,21 @@ void Renderer::Impl::drawShadowMaps(const Scene& scene, const RenderSettings& se
         cullView(viewProjection, settings.output.frustumCulling, visible);
     };
     shadow.execute(scene, *gpuScene, lights, settings, counters, cullShadowView);
+}
+
+// The camera's cascades of the directional lights: only those whose fit moved are drawn again.
+void Renderer::Impl::drawShadowCascades(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+                                        bool shadowsDirty) {
+    stats.shadowCascadesDrawn = 0;
+    if (lights.cascaded.empty() && !shadowsDirty) return;
+    Profiler::Scope scope(profiler, "shadow cascades");
+    const ItemCuller cullShadowView = [this, &settings](const glm::mat4& viewProjection,
+                                                        std::vector<std::uint32_t>& visible) {
+        cullView(viewProjection, settings.output.frustumCulling, visible);
+    };
+    const std::uint64_t drawnBefore = shadow.cascadesDrawn();
+    shadow.executeCascades(scene, *gpuScene, lights, camera, bounds, settings, shadowsDirty, counters, cullShadowView);
+    stats.shadowCascadesDrawn = static_cast<int>(shadow.cascadesDrawn() - drawnBefore);
 }
 
 // The frame's uniforms (camera, view, light count, sky) and the light table, bound for every pass.

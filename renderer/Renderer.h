@@ -50,6 +50,7 @@ struct FrameStats {
     };
     std::vector<NearLevelMemory> nearLevels;
     std::size_t shadowMapBytes = 0;  // GPU memory of the shadow maps and their sheet colour layers
+    int shadowCascadesDrawn = 0;  // the camera's shadow cascades drawn this frame (a cascade is kept while its fit is)
     // Entries of the occupied-voxel list (inject runs over these): the voxels the last voxelization
     // of the whole volume occupied, plus those voxelizations of changed boxes added since.
     std::uint32_t occupiedVoxels = 0;

@@ -10,6 +10,7 @@
 #include "frame.glsl"
 #include "gbuffer.glsl"
 #include "brdf.glsl"
+#define LIT_SHADOW_CASCADES 1  // the camera's cascades sharpen the directional lights' shadows
 #include "lights.glsl"
 #include "direct_light.glsl"
 

@@ -1,6 +1,7 @@
 #include "panels/RenderSettingsPanel.h"
 
 #include <imgui.h>
+#include <shared.h>
 
 #include <algorithm>
 #include <array>
@@ -157,6 +158,14 @@ bool drawShadows(RenderSettings& s, int lightCount) {
     tooltip("Receiver offset along its normal, in shadow-map texels");
     changed |= ImGui::SliderFloat("PCF radius", &s.shadows.pcfRadius, 0.0f, 5.0f, "%.2f texels");
     tooltip("Filter kernel radius, in shadow-map texels");
+    changed |= ImGui::SliderInt("Cascades", &s.shadows.cascades, 0, LIT_MAX_SHADOW_CASCADES);
+    tooltip("Directional lights: maps fitted to slices of the camera's view (0 = one map over the scene)");
+    ImGui::BeginDisabled(s.shadows.cascades == 0);
+    changed |= ImGui::DragFloat("Cascade distance", &s.shadows.cascadeDistance, 1.0f, 0.0f, 1e5f, "%.0f m");
+    tooltip("How far from the camera the cascades reach (0 = the scene's diagonal)");
+    changed |= ImGui::SliderFloat("Cascade split", &s.shadows.cascadeSplit, 0.0f, 1.0f, "%.2f");
+    tooltip("Slice spacing: 1 = logarithmic (finer near the camera), 0 = uniform");
+    ImGui::EndDisabled();
     ImGui::EndDisabled();
     if (s.debug.view == View::ShadowMap) {
         const int lastLight = std::max(lightCount - 1, 0);

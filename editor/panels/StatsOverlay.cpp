@@ -206,7 +206,11 @@ glm::vec4 drawStatsOverlay(const FrameTimer& timer, const Profiler& profiler, co
                 "GPU memory of each voxel volume with its caches and ray hits: the one around the\n"
                 "scene, then the near levels around the camera (Render settings, Near level side)");
     }
-    ImGui::Text("Shadow maps %.1f MiB", static_cast<double>(stats.shadowMapBytes) / kMiB);
+    if (stats.shadowCascadesDrawn > 0)
+        ImGui::Text("Shadow maps %.1f MiB [cascades %d]", static_cast<double>(stats.shadowMapBytes) / kMiB,
+                    stats.shadowCascadesDrawn);
+    else
+        ImGui::Text("Shadow maps %.1f MiB", static_cast<double>(stats.shadowMapBytes) / kMiB);
     // The cached mode's update after an edit runs over frames: how far it is, so that nobody
     // judges the light before it is right.
     if (stats.giUpdateDone < 1.0f) {

@@ -59,7 +59,7 @@ LightSetup buildLightSetup(const Scene& scene, const Aabb& sceneBounds, const Re
         g.directionType = glm::vec4(direction, static_cast<float>(type));
         g.colorIntensity = glm::vec4(light.color, light.intensity);
         const glm::vec2 spot = spotAngleScaleOffset(light.innerConeAngle, light.outerConeAngle);
-        g.spotShadow = glm::vec4(spot, -1.0f, 0.0f);
+        g.spotShadow = glm::vec4(spot, -1.0f, -1.0f);
         g.shadowParams = glm::vec4(0.0f, 1.0f, settings.shadows.depthBias, settings.shadows.slopeBias);
         g.shadowViewProjection = glm::mat4(1.0f);
 
@@ -87,6 +87,10 @@ LightSetup buildLightSetup(const Scene& scene, const Aabb& sceneBounds, const Re
                 view.layer = static_cast<int>(setup.shadows2d.size());
                 if (type == LIT_LIGHT_DIRECTIONAL) {
                     view.viewProjection[0] = fitDirectionalShadow(direction, bounds);
+                    if (settings.shadows.cascades > 0 && setup.cascaded.size() < LIT_MAX_CASCADED_LIGHTS) {
+                        g.spotShadow.w = static_cast<float>(setup.cascaded.size());
+                        setup.cascaded.push_back(lightIndex);
+                    }
                 } else {
                     const glm::vec2 nf = depthRangeFrom(position, bounds, light.range);
                     view.nearPlane = nf.x;

@@ -32,6 +32,9 @@ struct LightSetup {
     std::vector<gpu::GpuLight> lights;
     std::vector<ShadowView> shadows2d;    // directional + spot
     std::vector<ShadowView> shadowsCube;  // point
+    // The directional lights (indices into `lights`) that also get the camera's cascades, in the
+    // order of their slots (GpuLight::spotShadow.w).
+    std::vector<int> cascaded;
     // The shadow maps also hold what transmissive sheets let through (ShadowPass, lights.glsl); set
     // by the renderer when the scene has sheets.
     bool sheetShadows = false;

@@ -20,7 +20,8 @@ ShadowPass::ShadowPass(const std::filesystem::path& shaderRoot)
       sheetFramebuffer_("shadow sheets"),
       framebuffer_("shadow"),
       uniforms_("shadow pass uniforms", sizeof(gpu::ShadowPassUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT),
-      comparisonSampler_("shadow comparison") {
+      comparisonSampler_("shadow comparison"),
+      cascadeUniforms_("shadow cascade uniforms", sizeof(gpu::ShadowCascadeUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT) {
     comparisonSampler_.set(GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     comparisonSampler_.set(GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     comparisonSampler_.set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -32,6 +33,12 @@ ShadowPass::ShadowPass(const std::filesystem::path& shaderRoot)
     sheetSampler_.set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     sheetSampler_.set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     ensureMaps(kUnusedMapSize, 0, 0);
+    cascadeMaps_ = gl::Texture("shadow cascades",
+                               {GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, kUnusedMapSize, kUnusedMapSize, 1, 1});
+    const float one = 1.0f;
+    glClearTexImage(cascadeMaps_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+    const gpu::ShadowCascadeUniforms none{};
+    cascadeUniforms_.update(none);
 }
 
 void ShadowPass::ensureSheetMaps(bool sheets) {
@@ -71,7 +78,8 @@ std::size_t ShadowPass::memoryBytes() const {
                        static_cast<std::size_t>(t.desc().depth) * perTexel
                  : 0u;
     };
-    return bytes(maps2d_, 4) + bytes(mapsCube_, 4) + bytes(sheetMaps2d_, 8) + bytes(sheetMapsCube_, 8);
+    return bytes(maps2d_, 4) + bytes(mapsCube_, 4) + bytes(sheetMaps2d_, 8) + bytes(sheetMapsCube_, 8) +
+           bytes(cascadeMaps_, 4);
 }
 
 void ShadowPass::bindMaps() const {
@@ -79,6 +87,9 @@ void ShadowPass::bindMaps() const {
     mapsCube_.bind(LIT_TEX_SHADOW_CUBE);
     comparisonSampler_.bind(LIT_TEX_SHADOW_2D);
     comparisonSampler_.bind(LIT_TEX_SHADOW_CUBE);
+    cascadeMaps_.bind(LIT_TEX_SHADOW_CASCADES);
+    comparisonSampler_.bind(LIT_TEX_SHADOW_CASCADES);
+    cascadeUniforms_.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_SHADOW_CASCADES);
     if (sheetMaps2d_) {
         sheetMaps2d_.bind(LIT_TEX_SHADOW_SHEETS);
         sheetSampler_.bind(LIT_TEX_SHADOW_SHEETS);
@@ -95,6 +106,21 @@ void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const Lig
     ensureSheetMaps(sheets);
     if (gpuScene.empty()) return;
 
+    beginDepthViews(size, settings, gpuScene);
+    for (const ShadowView& view : lights.shadows2d)
+        drawDepthView(scene, gpuScene, maps2d_, view.layer, view.viewProjection[0], view.position, view.farPlane,
+                      counters, cull);
+    for (const ShadowView& view : lights.shadowsCube)
+        for (int face = 0; face < 6; ++face)
+            drawDepthView(scene, gpuScene, mapsCube_, view.layer * 6 + face, view.viewProjection[face], view.position,
+                          view.farPlane, counters, cull);
+
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    if (sheets) drawSheets(scene, gpuScene, lights, counters, cull);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void ShadowPass::beginDepthViews(int size, const RenderSettings& settings, const GpuScene& gpuScene) {
     glViewport(0, 0, size, size);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
@@ -108,30 +134,77 @@ void ShadowPass::execute(const Scene& scene, const GpuScene& gpuScene, const Lig
     gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
     framebuffer_.bind();
     framebuffer_.setDrawBuffers(0);
+}
 
-    const auto renderView = [&](const gl::Texture& target, int layer, const glm::mat4& viewProjection,
-                                const glm::vec3& position, float farPlane) {
-        framebuffer_.attachLayer(GL_DEPTH_ATTACHMENT, target, layer);
+void ShadowPass::drawDepthView(const Scene& scene, const GpuScene& gpuScene, const gl::Texture& target, int layer,
+                               const glm::mat4& viewProjection, const glm::vec3& position, float farPlane,
+                               DrawCounters& counters, const ItemCuller& cull) {
+    framebuffer_.attachLayer(GL_DEPTH_ATTACHMENT, target, layer);
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
+    gpu::ShadowPassUniforms u{viewProjection, glm::vec4(position, farPlane)};
+    uniforms_.update(u);
+    if (cull) {
+        cull(viewProjection, visibleItems_);
+        gpuScene.drawList(scene, program_, GpuScene::Bind::AlphaOnly, counters, visibleItems_);
+    } else {
+        gpuScene.draw(scene, program_, GpuScene::Bind::AlphaOnly, counters);
+    }
+}
+
+void ShadowPass::executeCascades(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
+                                 const CameraView& camera, const Aabb& bounds, const RenderSettings& settings,
+                                 bool redrawAll, DrawCounters& counters, const ItemCuller& cull) {
+    const int size = std::clamp(settings.shadows.mapSize, 16, 8192);
+    const int count = std::clamp(settings.shadows.cascades, 0, LIT_MAX_SHADOW_CASCADES);
+    const int lightsCascaded = count > 0 ? static_cast<int>(lights.cascaded.size()) : 0;
+    const int layers = lightsCascaded * count;
+    const int side = layers > 0 ? size : kUnusedMapSize;
+    if (cascadeMaps_.desc().width != side || cascadeMaps_.desc().depth != std::max(layers, 1)) {
+        cascadeMaps_ = gl::Texture("shadow cascades",
+                                   {GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, side, side, std::max(layers, 1), 1});
         const float one = 1.0f;
-        glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
-        gpu::ShadowPassUniforms u{viewProjection, glm::vec4(position, farPlane)};
-        uniforms_.update(u);
-        if (cull) {
-            cull(viewProjection, visibleItems_);
-            gpuScene.drawList(scene, program_, GpuScene::Bind::AlphaOnly, counters, visibleItems_);
-        } else {
-            gpuScene.draw(scene, program_, GpuScene::Bind::AlphaOnly, counters);
-        }
-    };
-    for (const ShadowView& view : lights.shadows2d)
-        renderView(maps2d_, view.layer, view.viewProjection[0], view.position, view.farPlane);
-    for (const ShadowView& view : lights.shadowsCube)
-        for (int face = 0; face < 6; ++face)
-            renderView(mapsCube_, view.layer * 6 + face, view.viewProjection[face], view.position, view.farPlane);
+        glClearTexImage(cascadeMaps_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+        redrawAll = true;
+    }
+    drawnCascades_.resize(static_cast<std::size_t>(layers));
+    if (redrawAll) std::fill(drawnCascades_.begin(), drawnCascades_.end(), ShadowCascade{});
 
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    if (sheets) drawSheets(scene, gpuScene, lights, counters, cull);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gpu::ShadowCascadeUniforms u{};
+    u.counts.x = 0;
+    bool begun = false;
+    for (int slot = 0; slot < lightsCascaded; ++slot) {
+        const gpu::GpuLight& light =
+            lights.lights[static_cast<std::size_t>(lights.cascaded[static_cast<std::size_t>(slot)])];
+        const std::vector<ShadowCascade> fits =
+            fitShadowCascades(glm::vec3(light.directionType), bounds, camera, count, settings.shadows.cascadeDistance,
+                              settings.shadows.cascadeSplit, size);
+        u.counts.x = static_cast<int>(fits.size());
+        for (std::size_t c = 0; c < fits.size(); ++c) {
+            const int entry = slot * LIT_MAX_SHADOW_CASCADES + static_cast<int>(c);
+            const int layer = slot * count + static_cast<int>(c);
+            const ShadowCascade& fit = fits[c];
+            // The constant bias a share of the map's side, as the scene-wide map's is of its depth range.
+            const float side = fit.worldTexel * static_cast<float>(size);
+            u.cascades[entry] = {
+                fit.viewProjection,
+                glm::vec4(fit.worldTexel, settings.shadows.depthBias * side / std::max(fit.depthRange, 1e-6f),
+                          static_cast<float>(layer), 0.0f)};
+            ShadowCascade& drawn = drawnCascades_[static_cast<std::size_t>(layer)];
+            if (drawn == fit) continue;
+            if (!begun) beginDepthViews(size, settings, gpuScene);
+            begun = true;
+            drawDepthView(scene, gpuScene, cascadeMaps_, layer, fit.viewProjection, glm::vec3(0.0f), 0.0f, counters,
+                          cull);
+            drawn = fit;
+            ++cascadesDrawn_;
+        }
+    }
+    if (begun) {
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    cascadeUniforms_.update(u);
 }
 
 void ShadowPass::drawSheets(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,

@@ -7,6 +7,7 @@
 
 #include "passes/LightSetup.h"
 #include "passes/Pass.h"
+#include "passes/ShadowCascades.h"
 #include "scene/GpuScene.h"
 
 namespace lit {
@@ -21,7 +22,17 @@ public:
     void execute(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
                  const RenderSettings& settings, DrawCounters& counters, const ItemCuller& cull = {});
 
-    // Binds the shadow arrays to their texture units (LIT_TEX_SHADOW_2D / _CUBE / _SHEETS).
+    // The camera's cascades of the directional lights in `lights.cascaded` (ShadowCascades.h): draws
+    // those whose fit changed since they were drawn (all with `redrawAll`: the lights, the
+    // geometry or the maps changed) and uploads every fit (LIT_UBO_SHADOW_CASCADES).
+    void executeCascades(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
+                         const CameraView& camera, const Aabb& bounds, const RenderSettings& settings, bool redrawAll,
+                         DrawCounters& counters, const ItemCuller& cull = {});
+    // Cascade maps drawn since the pass was made (a counter for tests and the profiler).
+    std::uint64_t cascadesDrawn() const { return cascadesDrawn_; }
+
+    // Binds the shadow arrays to their texture units (LIT_TEX_SHADOW_2D / _CUBE / _SHEETS /
+    // _CASCADES) and the cascades' uniforms.
     void bindMaps() const;
     const gl::Texture& maps2d() const { return maps2d_; }
     // Bytes of the depth and colour layers allocated now (SceneMemory's shadowMapBytes estimates
@@ -34,6 +45,11 @@ public:
 
 private:
     void ensureMaps(int size, int layers2d, int cubes);
+    // The depth-only state of every map's drawing, then one view (layer or cube face) of `target`.
+    void beginDepthViews(int size, const RenderSettings& settings, const GpuScene& gpuScene);
+    void drawDepthView(const Scene& scene, const GpuScene& gpuScene, const gl::Texture& target, int layer,
+                       const glm::mat4& viewProjection, const glm::vec3& position, float farPlane,
+                       DrawCounters& counters, const ItemCuller& cull);
     // The sheet layers at the maps' size for the kinds of map in use (sheets), else one white texel
     // (the bindings stay valid).
     void ensureSheetMaps(bool sheets);
@@ -52,6 +68,10 @@ private:
     gl::Framebuffer framebuffer_;
     gl::Buffer uniforms_;
     gl::Sampler comparisonSampler_;
+    gl::Texture cascadeMaps_;     // DEPTH32F, one layer per cascade of each cascaded light (LIT_TEX_SHADOW_CASCADES)
+    gl::Buffer cascadeUniforms_;  // ShadowCascadeUniforms
+    std::vector<ShadowCascade> drawnCascades_;  // per layer: the fit it holds (default: none)
+    std::uint64_t cascadesDrawn_ = 0;
     int size_ = 0, layers2d_ = 0, cubes_ = 0;
     std::vector<std::uint32_t> visibleItems_;  // the current view's culling result (kept to reuse its memory)
     std::vector<std::uint32_t> culledItems_;   // the same before drawSheets keeps only the sheets

@@ -73,7 +73,10 @@ RenderFootprint RenderFootprint::of(const RenderSettings& settings) {
         footprint.voxelRays = std::min(settings.gi.voxelRays, kMaxVoxelRays);
         footprint.nearLevels = settings.gi.nearLevelCount();
     }
-    if (settings.shadows.enabled) footprint.shadowMapSize = std::clamp(settings.shadows.mapSize, 16, 8192);
+    if (settings.shadows.enabled) {
+        footprint.shadowMapSize = std::clamp(settings.shadows.mapSize, 16, 8192);
+        footprint.shadowCascades = std::clamp(settings.shadows.cascades, 0, LIT_MAX_SHADOW_CASCADES);
+    }
     return footprint;
 }
 
@@ -86,17 +89,23 @@ ShadowCasters shadowCastersOf(const Scene& scene) {
         const Light& light = scene.lights[static_cast<std::size_t>(node.light)];
         if (!light.castsShadow) continue;
         (light.type == LightType::Point ? casters.cubes : casters.maps2d) += 1;
+        if (light.type == LightType::Directional) ++casters.directional;
     }
-    if (!anyLight) casters.maps2d = 1;
+    if (!anyLight) casters.maps2d = casters.directional = 1;
     casters.sheets = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return drawnAsSheet(m); });
     return casters;
 }
 
-std::uint64_t shadowMapBytes(const ShadowCasters& casters, int mapSize) {
+std::uint64_t shadowMapBytes(const ShadowCasters& casters, int mapSize, int cascades) {
     const std::uint64_t texels = saturatingMul(positive(mapSize), positive(mapSize));
     const std::uint64_t layers = static_cast<std::uint64_t>(std::clamp(casters.maps2d, 0, LIT_MAX_SHADOW_2D)) +
                                  6u * static_cast<std::uint64_t>(std::clamp(casters.cubes, 0, LIT_MAX_SHADOW_CUBE));
-    return saturatingMul(saturatingMul(texels, layers), casters.sheets ? 4 + 8 : 4);
+    // Directional lights beyond the 2D array's layers get no map, so no cascades either.
+    const int directional = std::min({casters.directional, casters.maps2d, LIT_MAX_SHADOW_2D, LIT_MAX_CASCADED_LIGHTS});
+    const std::uint64_t cascadeLayers = static_cast<std::uint64_t>(std::max(directional, 0)) *
+                                        static_cast<std::uint64_t>(std::clamp(cascades, 0, LIT_MAX_SHADOW_CASCADES));
+    return saturatingAdd(saturatingMul(saturatingMul(texels, layers), casters.sheets ? 4 + 8 : 4),
+                         saturatingMul(saturatingMul(texels, cascadeLayers), 4));
 }
 
 std::uint64_t textureBytesWithMips(int width, int height) {
@@ -136,7 +145,7 @@ SceneMemory estimateSceneMemory(std::span<const ImageExtent> images, std::uint64
         }
     }
     memory.targets = saturatingMul(saturatingMul(positive(render.width), positive(render.height)), kTargetBytesPerPixel);
-    memory.shadowMaps = shadowMapBytes(casters, render.shadowMapSize);
+    memory.shadowMaps = shadowMapBytes(casters, render.shadowMapSize, render.shadowCascades);
     return memory;
 }
 

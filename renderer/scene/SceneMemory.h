@@ -43,6 +43,7 @@ struct RenderFootprint {
     // own ray hits. Counted as asked: a scene too small for them never allocates them.
     int nearLevels = 0;
     int shadowMapSize = 0;       // texels per side of each shadow map (clamped as ShadowPass); 0 = shadows off
+    int shadowCascades = 0;      // the camera's cascades per directional light (ShadowSettings::cascades, clamped)
     static RenderFootprint of(const RenderSettings& settings);
     bool operator==(const RenderFootprint&) const = default;
 };
@@ -59,13 +60,15 @@ struct ImageExtent {
 struct ShadowCasters {
     int maps2d = 0;
     int cubes = 0;
+    int directional = 0;  // of maps2d: the directional lights (their cascades add layers)
     bool sheets = false;
     bool operator==(const ShadowCasters&) const = default;
 };
 ShadowCasters shadowCastersOf(const Scene& scene);
 // Bytes ShadowPass allocates for `casters` at `mapSize` texels per side (0: none): 4 per depth
-// texel, 8 more per texel with sheets (RGBA16F colour layers).
-std::uint64_t shadowMapBytes(const ShadowCasters& casters, int mapSize);
+// texel, 8 more per texel with sheets (RGBA16F colour layers), and 4 per texel of the `cascades`
+// layers of each of the first LIT_MAX_CASCADED_LIGHTS directional lights.
+std::uint64_t shadowMapBytes(const ShadowCasters& casters, int mapSize, int cascades = 0);
 
 // Bytes of an RGBA8 texture of width × height with its full mip chain.
 std::uint64_t textureBytesWithMips(int width, int height);

@@ -82,6 +82,45 @@ layout(binding = LIT_TEX_SHADOW_SHEETS_CUBE) uniform samplerCubeArray sheetShado
 const float kSheetShadowDepthBias = 1.0 / 512.0;
 #endif
 
+// Whether the camera's cascades of the directional lights are read (LIT_TEX_SHADOW_CASCADES): by the
+// passes that light pixels. The voxel injection leaves them out and reads each light's map over the
+// whole scene, so the voxels' light does not follow the camera.
+#ifndef LIT_SHADOW_CASCADES
+#define LIT_SHADOW_CASCADES 0
+#endif
+#if LIT_SHADOW_CASCADES
+layout(binding = LIT_TEX_SHADOW_CASCADES) uniform sampler2DArrayShadow shadowCascades;
+layout(std140, binding = LIT_UBO_SHADOW_CASCADES) uniform ShadowCascadeBlock {
+    ShadowCascadeUniforms cascadeData;
+};
+#endif
+
+// Four hardware 2×2 comparisons at (±b, ±b) texels (see kPcfTapOffset) around `uv` of `layer`.
+float pcf2d(sampler2DArrayShadow maps, vec2 uv, float layer, float depth, vec2 texel, float pcfRadius) {
+    vec2 d1 = texel * (max(pcfRadius, 0.0) * kPcfTapOffset), d2 = vec2(d1.x, -d1.y);
+    return 0.25 * (texture(maps, vec4(uv + d1, layer, depth)) + texture(maps, vec4(uv - d1, layer, depth)) +
+                   texture(maps, vec4(uv + d2, layer, depth)) + texture(maps, vec4(uv - d2, layer, depth)));
+}
+
+// The visibility from the finest of the camera's cascades of a directional light whose square holds
+// `position` with the PCF kernel and a texel to spare; −1 when none does (or the light has none).
+float cascadeVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadius, float normalOffsetTexels) {
+#if LIT_SHADOW_CASCADES
+    int slot = int(light.spotShadow.w);
+    if (slot < 0 || int(light.directionType.w) != LIT_LIGHT_DIRECTIONAL) return -1.0;
+    vec2 texel = 1.0 / vec2(textureSize(shadowCascades, 0).xy);
+    vec2 margin = texel * (max(pcfRadius, 0.0) + 1.0);
+    for (int c = 0; c < cascadeData.counts.x; ++c) {
+        GpuShadowCascade cascade = cascadeData.cascades[slot * LIT_MAX_SHADOW_CASCADES + c];
+        vec3 lookup = position + normal * (cascade.params.x * normalOffsetTexels);
+        vec3 uvz = (cascade.viewProjection * vec4(lookup, 1.0)).xyz * 0.5 + 0.5;
+        if (any(lessThan(uvz.xy, margin)) || any(greaterThan(uvz.xy, 1.0 - margin)) || uvz.z > 1.0) continue;
+        return pcf2d(shadowCascades, uvz.xy, cascade.params.z, uvz.z - cascade.params.y, texel, pcfRadius);
+    }
+#endif
+    return -1.0;
+}
+
 // The [0, 1] depth a perspective shadow map (near n, far f) stores for view depth w, the receiver
 // moved `bias` of the depth range towards the light first. The constant bias is a share of the
 // depth range in linear depth, as an orthographic (directional) map's is: subtracted after the
@@ -129,6 +168,11 @@ vec3 shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadiu
     }
 #endif
 #if LIT_SHADOWS_2D
+    // The camera's cascades where one holds the point, else the map over the whole scene.
+    float lit = cascadeVisibility(light, position, normal, pcfRadius, normalOffsetTexels);
+#if !LIT_SHADOWS_SHEETS
+    if (lit >= 0.0) return vec3(lit);
+#endif
     vec2 size = vec2(textureSize(shadowMaps2d, 0).xy);
     // Normal offset scaled by the world size of a texel at this receiver.
     vec4 clip0 = light.shadowViewProjection * vec4(position, 1.0);
@@ -144,25 +188,25 @@ vec3 shadowVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadiu
     vec4 clip = light.shadowViewProjection * vec4(position + normal * worldTexel * normalOffsetTexels, 1.0);
     vec3 ndc = clip.xyz / clip.w;
     vec3 uvz = ndc * 0.5 + 0.5;
-    if (any(lessThan(uvz.xy, vec2(0.0))) || any(greaterThan(uvz.xy, vec2(1.0))) || uvz.z > 1.0) return vec3(1.0);
-    float depth = type == LIT_LIGHT_DIRECTIONAL
-                      ? uvz.z - light.shadowParams.z
-                      : perspectiveShadowDepth(clip.w, light.shadowParams.x, light.shadowParams.y, light.shadowParams.z);
-    vec2 texel = 1.0 / size;
-    float radius = max(pcfRadius, 0.0);
-    // Four hardware 2×2 comparisons at (±b, ±b) texels (see kPcfTapOffset).
-    vec2 d1 = texel * (radius * kPcfTapOffset), d2 = vec2(d1.x, -d1.y);
-    float sum = texture(shadowMaps2d, vec4(uvz.xy + d1, index, depth)) + texture(shadowMaps2d, vec4(uvz.xy - d1, index, depth)) +
-                texture(shadowMaps2d, vec4(uvz.xy + d2, index, depth)) + texture(shadowMaps2d, vec4(uvz.xy - d2, index, depth));
+    bool inside = all(greaterThanEqual(uvz.xy, vec2(0.0))) && all(lessThanEqual(uvz.xy, vec2(1.0))) && uvz.z <= 1.0;
+    if (lit < 0.0) {
+        if (!inside) return vec3(1.0);
+        float depth = type == LIT_LIGHT_DIRECTIONAL
+                          ? uvz.z - light.shadowParams.z
+                          : perspectiveShadowDepth(clip.w, light.shadowParams.x, light.shadowParams.y, light.shadowParams.z);
+        lit = pcf2d(shadowMaps2d, uvz.xy, index, depth, 1.0 / size, pcfRadius);
+    }
     vec3 through = vec3(1.0);
 #if LIT_SHADOWS_SHEETS
-    vec4 sheets = textureLod(sheetShadowMaps2d, vec3(uvz.xy, index), 0.0);
-    float receiver = type == LIT_LIGHT_DIRECTIONAL
-                         ? uvz.z
-                         : (clip.w - light.shadowParams.x) / max(light.shadowParams.y - light.shadowParams.x, 1e-6);
-    if (receiver > sheets.a + kSheetShadowDepthBias) through = sheets.rgb;
+    if (inside) {
+        vec4 sheets = textureLod(sheetShadowMaps2d, vec3(uvz.xy, index), 0.0);
+        float receiver = type == LIT_LIGHT_DIRECTIONAL
+                             ? uvz.z
+                             : (clip.w - light.shadowParams.x) / max(light.shadowParams.y - light.shadowParams.x, 1e-6);
+        if (receiver > sheets.a + kSheetShadowDepthBias) through = sheets.rgb;
+    }
 #endif
-    return (0.25 * sum) * through;
+    return lit * through;
 #else
     return vec3(1.0);  // no light has a 2D shadow map, so this light has none (index < 0 above)
 #endif

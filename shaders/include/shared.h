@@ -24,6 +24,7 @@ using mat4 = glm::mat4;
 #define LIT_UBO_FAR_VOXEL 4    // VoxelUniforms of the scene's volume, for a near level's rays (LIT_NEAR_LEVEL)
 #define LIT_MAX_NEAR_LEVELS 5  // near levels at most (kMaxNearLevels)
 #define LIT_UBO_NEAR_VOXEL_FIRST 5  // VoxelUniforms of near level k at FIRST + k, for the pixels' gather (LIT_NEAR_GATHER)
+#define LIT_UBO_SHADOW_CASCADES (LIT_UBO_NEAR_VOXEL_FIRST + LIT_MAX_NEAR_LEVELS)  // ShadowCascadeUniforms
 
 // ---- Shader storage buffer binding points ------------------------------------------------
 #define LIT_SSBO_LIGHTS 0      // GpuLight[lightCount]
@@ -123,7 +124,10 @@ using mat4 = glm::mat4;
 #define LIT_TEX_FAR_NORMAL 40     // the scene volume's
 #define LIT_TEX_FAR_SURFACE 41
 #define LIT_TEX_NEAR_IRRADIANCE_FIRST 42
-#define LIT_TEX_UNIT_COUNT (LIT_TEX_NEAR_IRRADIANCE_FIRST + LIT_MAX_NEAR_LEVELS)  // units 0 .. this − 1 are bound (Capabilities.cpp)
+// The camera's shadow cascades of the directional lights (ShadowPass::executeCascades): cascade c
+// of cascaded light k at layer k × cascades + c (sampler2DArrayShadow; GpuShadowCascade::params.z).
+#define LIT_TEX_SHADOW_CASCADES (LIT_TEX_NEAR_IRRADIANCE_FIRST + LIT_MAX_NEAR_LEVELS)
+#define LIT_TEX_UNIT_COUNT (LIT_TEX_SHADOW_CASCADES + 1)  // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
@@ -241,6 +245,8 @@ using mat4 = glm::mat4;
 #define LIT_MAX_LIGHTS 64            // lights beyond this are ignored with a warning
 #define LIT_MAX_SHADOW_2D 16         // layers of the directional/spot shadow-map array
 #define LIT_MAX_SHADOW_CUBE 8        // cubes in the point-light shadow-map array
+#define LIT_MAX_SHADOW_CASCADES 4    // camera cascades per directional light (ShadowSettings::cascades)
+#define LIT_MAX_CASCADED_LIGHTS 2    // directional lights with cascades; the others use their scene-wide map only
 
 // ---- Enumerations -------------------------------------------------------------------------
 #define LIT_LIGHT_DIRECTIONAL 0
@@ -316,7 +322,8 @@ struct GpuLight {
     vec4 positionRange;    // xyz world position (m), w range (m; 0 = infinite)
     vec4 directionType;    // xyz unit direction the light travels (world), w LIT_LIGHT_*
     vec4 colorIntensity;   // rgb linear colour, a intensity (cd for point/spot, lux for directional)
-    vec4 spotShadow;       // x spot angle scale, y spot angle offset (KHR spec), z shadow index (-1 none), w unused
+    vec4 spotShadow;  // x spot angle scale, y spot angle offset (KHR spec), z shadow index (-1 none), w cascaded light
+                      // slot (-1 none)
     vec4 shadowParams;     // x near (m), y far (m), z depth bias (constant), w slope-scaled bias
     mat4 shadowViewProjection;  // world → light clip space (directional, spot)
 };
@@ -341,6 +348,19 @@ struct ShadowPassUniforms {
     vec4 lightPosition;    // xyz world position (point lights), w far plane (m)
 };
 
+// One camera cascade of a directional light's shadow: an orthographic map fitted to a slice of the
+// view frustum (renderer/passes/ShadowCascades.h).
+struct GpuShadowCascade {
+    mat4 viewProjection;  // world → light clip space
+    vec4 params;  // x world size of a texel (m), y constant depth bias (this map's depth units), z layer, w unused
+};
+
+// The camera's cascades. std140, binding LIT_UBO_SHADOW_CASCADES.
+struct ShadowCascadeUniforms {
+    GpuShadowCascade cascades[LIT_MAX_CASCADED_LIGHTS * LIT_MAX_SHADOW_CASCADES];  // slot k's cascade c at k × MAX + c
+    ivec4 counts;  // x cascades per cascaded light (0 = none drawn yet), yzw unused
+};
+
 // The voxel volume and cone-tracing parameters. std140, binding LIT_UBO_VOXEL.
 // The volume is a cube: world point p maps to texture coordinate (p − volumeMin.xyz) / volumeMin.w.
 struct VoxelUniforms {
@@ -359,6 +379,8 @@ static_assert(sizeof(FrameUniforms) == 4 * 64 + 7 * 16);
 static_assert(sizeof(GpuLight) == 5 * 16 + 64);
 static_assert(sizeof(GpuMaterial) == 9 * 16);
 static_assert(sizeof(ShadowPassUniforms) == 64 + 16);
+static_assert(sizeof(GpuShadowCascade) == 64 + 16);
+static_assert(sizeof(ShadowCascadeUniforms) == LIT_MAX_CASCADED_LIGHTS * LIT_MAX_SHADOW_CASCADES * (64 + 16) + 16);
 inline const vec3 kDiffuseConeDirections[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_DIRECTIONS};
 inline const float kDiffuseConeWeights[LIT_DIFFUSE_CONE_COUNT] = {LIT_DIFFUSE_CONE_WEIGHTS};
 }  // namespace lit::gpu

@@ -214,7 +214,9 @@ TEST_F(GlFixture, ShadowMapMemoryIsWhatTheBudgetCounts) {
     check("a sun and a point light");
     scene.materials[static_cast<std::size_t>(glass)].transmission = 1.0f;
     check("a sun, a point light and a sheet");
-    EXPECT_EQ(estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps, 256u * 256 * 7 * (4 + 8));
+    // The sun's map and the point light's six faces, each with a colour layer, and the sun's cascades.
+    EXPECT_EQ(estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps,
+              256u * 256 * 7 * (4 + 8) + 256u * 256 * settings.shadows.cascades * 4);
 }
 
 }  // namespace

@@ -118,21 +118,27 @@ TEST(SceneMemory, ShadowMapsCountEachLightsLayersAndTheSheetsColour) {
     Scene scene;
     const int white = addMaterial(scene, glm::vec3(0.8f), 0.9f, 0.0f, "white");
     addMeshNode(scene, makeBoxMesh("box", glm::vec3(1.0f), white), glm::vec3(0.0f));
-    EXPECT_EQ(shadowCastersOf(scene), (ShadowCasters{.maps2d = 1})) << "no light: the renderer's default sun";
+    EXPECT_EQ(shadowCastersOf(scene), (ShadowCasters{.maps2d = 1, .directional = 1}))
+        << "no light: the renderer's default sun";
     Light sun, spot, point, quiet;
     sun.type = LightType::Directional;
     spot.type = LightType::Spot;
     point.type = quiet.type = LightType::Point;
     quiet.castsShadow = false;
     for (const Light* light : {&sun, &spot, &point, &point, &quiet}) addLightNode(scene, *light, glm::vec3(0, 3, 0), glm::vec3(0, -1, 0));
-    EXPECT_EQ(shadowCastersOf(scene), (ShadowCasters{.maps2d = 2, .cubes = 2}));
+    EXPECT_EQ(shadowCastersOf(scene), (ShadowCasters{.maps2d = 2, .cubes = 2, .directional = 1}));
     scene.materials[static_cast<std::size_t>(white)].transmission = 0.5f;
     EXPECT_TRUE(shadowCastersOf(scene).sheets);
 
     RenderSettings settings;
     settings.shadows.mapSize = 512;
-    // Two 2D layers and two cubes of six faces: 4 bytes of depth and 8 of colour per texel.
-    EXPECT_EQ(estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps, 512u * 512 * (2 + 12) * (4 + 8));
+    // Two 2D layers and two cubes of six faces: 4 bytes of depth and 8 of colour per texel; the
+    // sun's four cascades: 4 bytes of depth.
+    EXPECT_EQ(estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps,
+              512u * 512 * (2 + 12) * (4 + 8) + 512u * 512 * 4 * 4);
+    settings.shadows.cascades = 2;
+    EXPECT_EQ(estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps,
+              512u * 512 * (2 + 12) * (4 + 8) + 512u * 512 * 2 * 4);
     settings.shadows.enabled = false;
     EXPECT_EQ(estimateSceneMemory(scene, RenderFootprint::of(settings)).shadowMaps, 0u);
 }

@@ -1,5 +1,7 @@
 #include "SettingsFile.h"
 
+#include <shared.h>
+
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -104,6 +106,9 @@ void checkRenderableSettings(RenderSettings& settings, const std::string& errorS
     clampWarn("output.exposureEv", settings.output.exposureEv, -10.0f, 20.0f);
     clampWarn("gi.coneStepScale", settings.gi.coneStepScale, 0.05f, 4.0f);
     clampWarn("gi.maxTraceDistance", settings.gi.maxTraceDistance, 0.0f, 2.0f);
+    clampWarn("shadows.cascades", settings.shadows.cascades, 0, LIT_MAX_SHADOW_CASCADES);
+    clampWarn("shadows.cascadeDistance", settings.shadows.cascadeDistance, 0.0f, 1e5f);
+    clampWarn("shadows.cascadeSplit", settings.shadows.cascadeSplit, 0.0f, 1.0f);
 }
 
 }  // namespace lit::cli
