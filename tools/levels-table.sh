@@ -29,7 +29,7 @@ command -v python3 >/dev/null || { echo "levels-table: needs python3 to read the
 
 results="$(mktemp -d)"
 trap 'rm -rf "$results"' EXIT
-"$render" "$scene" --reference --bounces all --spp "$spp" --size "$size" --out "$results/reference.png" \
+"$render" "$scene" --reference --pixel-centres --bounces all --spp "$spp" --size "$size" --out "$results/reference.png" \
     --hdr "$results/reference.hdr" > "$results/reference.txt" 2>&1 ||
     { echo "levels-table: the reference failed:" >&2; tail -5 "$results/reference.txt" >&2; exit 1; }
 run() {  # name, then lit-render's flags
@@ -90,6 +90,7 @@ with open(out, "w") as f:
       " First frame: voxelizing every volume, injecting and converging its light (every bounce, the refinement"
       f" included), wall time; steady frame: the median of the last 3 of the {frames} frames (those after the first"
       " re-light each level once the volume outside it completed). Image ÷ reference: the final image's"
-      " mean luminance over the reference's (`--compare`), RMSE of luminance relative to the reference's mean.")
+      " mean luminance over the reference's (`--compare`), RMSE of luminance relative to the reference's mean; the"
+      " reference samples the pixel centres as the rasterizer does (`--pixel-centres`).")
 print(open(out).read())
 PY

@@ -278,19 +278,22 @@ std::string format(const char* fmt, double value) {
 
 std::string ratioCell(double vct, double truth) { return truth > 0.0 ? format("%.2f", vct / truth) : "–"; }
 
-// --images: DIR/<scene>_reference_indirect.hdr, <scene>_vct<N>_indirect.hdr and
+// --images: DIR/<scene>_reference_{indirect,final}.hdr, <scene>_vct<N>_{indirect,final}.hdr and
 // <scene>_vct<N>_difference.png (the editor's Difference view, ramp ends ±50 %), and
 // <scene>_regions.png: the named regions in colour (in the order of the region table: red, green,
 // blue, yellow, ...), other surfaces dark grey.
-void writeImages(const fs::path& folder, const std::string& scene, int size, const std::vector<float>& truthIndirect,
+void writeImages(const fs::path& folder, const std::string& scene, int size, const Images& truth,
                  const std::vector<VctRun>& runs, const std::vector<NamedRegion>& regions, const PixelMask& surfaces) {
     fs::create_directories(folder);
     const auto prefix = [&](const std::string& what) { return folder / (scene + "_" + what); };
+    const std::vector<float> truthIndirect = truth.indirect();
     writeHdr(prefix("reference_indirect.hdr"), size, size, truthIndirect);
+    writeHdr(prefix("reference_final.hdr"), size, size, truth.final);
     for (const VctRun& run : runs) {
         const std::vector<float> indirect = run.images.indirect();
         const std::string name = "vct" + std::to_string(run.voxels);
         writeHdr(prefix(name + "_indirect.hdr"), size, size, indirect);
+        writeHdr(prefix(name + "_final.hdr"), size, size, run.images.final);
         writePng(prefix(name + "_difference.png"), size, size,
                  displayColoursToRgba8(relativeErrorColours(indirect, truthIndirect, 0.5f)));
     }
@@ -423,6 +426,9 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     const ReferenceScene referenceScene(scene, log);
     ReferenceSettings referenceSettings;
     referenceSettings.bounces = args.bounces == lit::kAllBounces ? reference::kAllBounces : args.bounces;
+    // At the pixel centres, as the rasterizer samples: the columns measure the light, not the
+    // raster's missing anti-aliasing (a sunlit edge against the sky is most of a 128² image's error).
+    referenceSettings.pixelCentres = true;
     PathTracer tracer(referenceScene, camera, size, size, referenceSettings);
     tracer.addSamples(args.spp);
     const double referenceSeconds = secondsSince(referenceStart);
@@ -500,7 +506,7 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
     const double referenceNoise = finalRmse(secondFinal, 1.0) / std::sqrt(2.0);
 
     if (!args.images.empty())
-        writeImages(args.images, entry.name, size, truthIndirect, runs, cornellBoxRegions(scene, hits, size, size), surfaces);
+        writeImages(args.images, entry.name, size, truth, runs, cornellBoxRegions(scene, hits, size, size), surfaces);
 
     for (const VctRun& run : runs) {
         const std::vector<float> indirect = run.images.indirect();

@@ -494,6 +494,12 @@ std::vector<Flag> flagTable() {
          .help = "with --reference: samples per pixel (default " + std::to_string(kDefaultReferenceSpp) + ")",
          .store = integerInto(&Options::spp, 1, kMaxReferenceSpp,
                               "samples per pixel from 1 to " + std::to_string(kMaxReferenceSpp))});
+    flags.push_back({.names = {"--pixel-centres"},
+                     .group = G::Reference,
+                     .help = "with --reference: sample each pixel at its centre, as the rasterizer does, instead of "
+                             "over its area: a comparison then counts a sunlit edge only where the light differs, "
+                             "not for the rasterizer's missing anti-aliasing",
+                     .store = &Options::pixelCentres});
     flags.push_back({.names = {"--seed"},
                      .value = "S",
                      .expects = "an integer",

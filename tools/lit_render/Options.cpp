@@ -143,6 +143,7 @@ Options parseOptions(const std::vector<std::string>& args) {
         if (options.spp) throw UsageError("--spp needs --reference");
         if (options.seed) throw UsageError("--seed needs --reference");
         if (!options.nodeMap.empty()) throw UsageError("--node-map needs --reference");
+        if (options.pixelCentres) throw UsageError("--pixel-centres needs --reference");
     }
     if (options.benchFrames == 0 && (!options.path || options.time) && options.out.empty() && options.hdr.empty() &&
         options.compare.empty())

@@ -93,6 +93,7 @@ struct Options {
     // --reference: path-trace the scene on the CPU (renderer/reference/) instead of rasterizing.
     bool reference = false;
     std::optional<int> spp;            // --spp: samples per pixel (reference only)
+    bool pixelCentres = false;         // --pixel-centres: the reference samples each pixel's centre (reference only)
     std::optional<int> bounces;        // --bounces N|all: indirect bounces of the reference and the voxel GI (all = -1)
     std::optional<std::uint64_t> seed; // --seed: random seed (reference only)
     std::filesystem::path nodeMap;     // --node-map: the node each pixel sees (reference only)

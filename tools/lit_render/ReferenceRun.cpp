@@ -46,6 +46,7 @@ lit::reference::ReferenceSettings referenceSettingsFor(const RunContext& run, co
     const int giBounces = settings.gi.bounces == lit::kAllBounces ? lit::reference::kAllBounces : settings.gi.bounces;
     reference.bounces = options.bounces.value_or(settings.gi.enabled ? giBounces : 0);
     reference.seed = options.seed.value_or(0);
+    reference.pixelCentres = options.pixelCentres;
     std::string skyError;
     reference.environment = lit::makeSkyFunction(scene, settings, &skyError);
     if (!skyError.empty()) run.log.error(skyError + "; using the gradient sky");
