@@ -3,7 +3,8 @@
 # (assets/gi/city.gltf, assets/city_street.path.json: 100 m in 10 s) under the editor's GI budget,
 # with the near level scrolling (the defaults), with it voxelized and lit whole at every move
 # (gi.voxelizeChangesOnly false), without a near level, and with GI off (the flicker figure's own
-# floor: resampling the last frame at moving shadow edges). The variants run interleaved, FLIGHT_ROUNDS
+# floor: resampling the last frame at moving shadow edges), with GI off and no shadow cascades, and
+# with GI off and one 4096² map (edges about as sharp as the cascades', none of them moving). The variants run interleaved, FLIGHT_ROUNDS
 # rounds, and each cell is the median over the rounds. Written to docs/tables/flight.md, headed
 # by the date, the commit, this machine's GL renderer and CPU; docs/GI.md ("Near levels") and
 # docs/PERFORMANCE.md say how to read it.
@@ -32,11 +33,13 @@ command -v python3 >/dev/null || { echo "flight-table: needs python3 to read the
 
 results="$(mktemp -d)"
 trap 'rm -rf "$results"' EXIT
-variants=(scroll whole none off)
+variants=(scroll whole none off flat sharp)
 flags_scroll=()
 flags_whole=(--set gi.voxelizeChangesOnly=false)
 flags_none=(--set gi.nearLevels=0)
 flags_off=(--gi off)
+flags_flat=(--gi off --set shadows.cascades=0)
+flags_sharp=(--gi off --set shadows.cascades=0 --set shadows.mapSize=4096)
 for ((round = 1; round <= rounds; ++round)); do
     for v in "${variants[@]}"; do
         declare -n extra="flags_$v"
@@ -55,7 +58,9 @@ import json, statistics, sys
 results, out, rounds, size, fps, budget, date, commit, cpu, load = sys.argv[1:]
 rounds = int(rounds)
 names = {"scroll": "near level scrolls (defaults)", "whole": "near level voxelized and lit whole at each move",
-         "none": "no near level", "off": "GI off"}
+         "none": "no near level", "off": "GI off",
+         "flat": "GI off, one shadow map over the scene (no cascades)",
+         "sharp": "GI off, one 4096² shadow map over the scene (no cascades)"}
 # The passes of a near level's move frame: the scroll, the voxelization of its slabs (or of the
 # whole level) and what follows any voxelization before the spread update.
 move_passes = ["near scroll", "near voxelize", "near solid voxels", "near mip lists", "near inject", "near mipmap"]
@@ -77,7 +82,8 @@ for v in names:
     scroll = med([pass_stat(r, "near scroll")[0] for r in runs])
     moves = med([pass_stat(r, "near inject")[1] for r in runs])
     lit = med([pass_stat(r, "near voxel irradiance")[1] for r in runs])
-    rows[v] = dict(median=median_frame, worst=worst_frame, move=move, scroll=scroll, moves=moves, lit=lit,
+    cascades = med([pass_stat(r, "shadow cascades", "mean")[0] for r in runs])
+    rows[v] = dict(median=median_frame, worst=worst_frame, move=move, scroll=scroll, moves=moves, lit=lit, cascades=cascades,
                    flicker=med([r["flickerPercent"] for r in runs]), flickerWorst=med([r["flickerWorstPercent"] for r in runs]),
                    frames=runs[0]["frames"])
 with open(out, "w") as f:
@@ -89,20 +95,23 @@ with open(out, "w") as f:
       f" 100 m down the street in {rows['scroll']['frames']} frames after a warm-up frame that converges the light;"
       f" each cell the median of {rounds} interleaved rounds. The near level moves every 8 m (an eighth of its 64 m side).")
     w()
-    w("| variant | median frame (ms) | worst frame (ms) | worst ÷ median | move frame's GI work (ms) | ÷ median frame | of it the scroll (ms) | moves | frames the level's irradiance ran | flicker mean | flicker worst pair |")
-    w("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    w("| variant | median frame (ms) | worst frame (ms) | worst ÷ median | move frame's GI work (ms) | ÷ median frame | of it the scroll (ms) | moves | frames the level's irradiance ran | shadow cascades, mean a frame (ms) | flicker mean | flicker worst pair |")
+    w("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for v, name in names.items():
         r = rows[v]
         ratio = r["worst"] / r["median"] if r["median"] > 0 else 0.0
         share = r["move"] / r["median"] if r["median"] > 0 and r["move"] > 0 else 0.0
         movecells = (f"{r['move']:.1f} | {share:.2f} | {r['scroll']:.1f} | {r['moves']:.0f} | {r['lit']:.0f}"
                      if v in ("scroll", "whole") else "– | – | – | – | –")
-        w(f"| {name} | {r['median']:.1f} | {r['worst']:.1f} | {ratio:.2f} | {movecells} | {r['flicker']:.2f} % | {r['flickerWorst']:.2f} % |")
+        w(f"| {name} | {r['median']:.1f} | {r['worst']:.1f} | {ratio:.2f} | {movecells} | {r['cascades']:.1f} | {r['flicker']:.2f} % | {r['flickerWorst']:.2f} % |")
     w()
     w("Move frame's GI work: the medians, over the frames they ran in, of the near level's passes that a move runs"
       " before its spread update (scroll, voxelize, solid voxels, mip lists, inject, mipmap), GPU time. Frames the level's"
       " irradiance ran: the spread update reached its last stage (for the scroll, the uncovered slabs' light) in that many"
-      " frames; 0: no update after a move completed during the flight. Flicker: `--bench-path`'s figure, the mean"
-      " |frame-to-frame change| of pixels whose surface did not move, relative to the mean luminance.")
+      " frames; 0: no update after a move completed during the flight. Shadow cascades: the camera's shadow maps"
+      " drawn again (at most one a frame), GPU time over every frame. Flicker: `--bench-path`'s figure, the mean"
+      " |frame-to-frame change| of pixels whose surface did not move, relative to the mean luminance; each pixel is"
+      " compared with the previous frame interpolated where its point was, so sharper shadow edges raise it (the"
+      " last three rows: no map moves there, the 4096² map's edges are about as sharp as the cascades').")
 print(open(out).read())
 PY

@@ -170,28 +170,29 @@ void ShadowPass::executeCascades(const Scene& scene, const GpuScene& gpuScene, c
     drawnCascades_.resize(static_cast<std::size_t>(layers));
     if (redrawAll) std::fill(drawnCascades_.begin(), drawnCascades_.end(), ShadowCascade{});
 
-    gpu::ShadowCascadeUniforms u{};
-    u.counts.x = 0;
-    bool begun = false;
+    // Every cascade's new fit; then the maps that must move are drawn, all of them after `redrawAll`,
+    // else the finest one only: a frame draws at most one map while the camera moves (on llvmpipe
+    // four 1024² maps cost a flight's frame three times its median), and a map not drawn yet keeps
+    // its old square, which still holds its slice's pixels but those at its edge (they read the
+    // next map out).
+    std::vector<ShadowCascade> fits(static_cast<std::size_t>(layers));
+    int fitted = 0;
     for (int slot = 0; slot < lightsCascaded; ++slot) {
         const gpu::GpuLight& light =
             lights.lights[static_cast<std::size_t>(lights.cascaded[static_cast<std::size_t>(slot)])];
-        const std::vector<ShadowCascade> fits =
+        const std::vector<ShadowCascade> lightFits =
             fitShadowCascades(glm::vec3(light.directionType), bounds, camera, count, settings.shadows.cascadeDistance,
                               settings.shadows.cascadeSplit, size);
-        u.counts.x = static_cast<int>(fits.size());
-        for (std::size_t c = 0; c < fits.size(); ++c) {
-            const int entry = slot * LIT_MAX_SHADOW_CASCADES + static_cast<int>(c);
-            const int layer = slot * count + static_cast<int>(c);
-            const ShadowCascade& fit = fits[c];
-            // The constant bias a share of the map's side, as the scene-wide map's is of its depth range.
-            const float side = fit.worldTexel * static_cast<float>(size);
-            u.cascades[entry] = {
-                fit.viewProjection,
-                glm::vec4(fit.worldTexel, settings.shadows.depthBias * side / std::max(fit.depthRange, 1e-6f),
-                          static_cast<float>(layer), 0.0f)};
+        fitted = static_cast<int>(lightFits.size());
+        std::copy(lightFits.begin(), lightFits.end(), fits.begin() + slot * count);
+    }
+    bool begun = false;
+    for (int c = 0; c < fitted; ++c)
+        for (int slot = 0; slot < lightsCascaded; ++slot) {
+            const int layer = slot * count + c;
             ShadowCascade& drawn = drawnCascades_[static_cast<std::size_t>(layer)];
-            if (drawn == fit) continue;
+            const ShadowCascade& fit = fits[static_cast<std::size_t>(layer)];
+            if (drawn == fit || (begun && !redrawAll)) continue;
             if (!begun) beginDepthViews(size, settings, gpuScene);
             begun = true;
             drawDepthView(scene, gpuScene, cascadeMaps_, layer, fit.viewProjection, glm::vec3(0.0f), 0.0f, counters,
@@ -199,11 +200,30 @@ void ShadowPass::executeCascades(const Scene& scene, const GpuScene& gpuScene, c
             drawn = fit;
             ++cascadesDrawn_;
         }
-    }
     if (begun) {
         glDisable(GL_POLYGON_OFFSET_FILL);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
+
+    // The uniforms describe what each map holds.
+    // A map never drawn (none yet past a change of the scene's bounds) ends the list the shader reads.
+    int usable = fitted;
+    for (int slot = 0; slot < lightsCascaded; ++slot)
+        for (int c = 0; c < usable; ++c)
+            if (!(drawnCascades_[static_cast<std::size_t>(slot * count + c)].worldTexel > 0.0f)) usable = c;
+    gpu::ShadowCascadeUniforms u{};
+    u.counts.x = usable;
+    for (int slot = 0; slot < lightsCascaded; ++slot)
+        for (int c = 0; c < fitted; ++c) {
+            const int layer = slot * count + c;
+            const ShadowCascade& drawn = drawnCascades_[static_cast<std::size_t>(layer)];
+            // The constant bias a share of the map's side, as the scene-wide map's is of its depth range.
+            const float mapSide = drawn.worldTexel * static_cast<float>(size);
+            u.cascades[slot * LIT_MAX_SHADOW_CASCADES + c] = {
+                drawn.viewProjection,
+                glm::vec4(drawn.worldTexel, settings.shadows.depthBias * mapSide / std::max(drawn.depthRange, 1e-6f),
+                          static_cast<float>(layer), 0.0f)};
+        }
     cascadeUniforms_.update(u);
 }
 

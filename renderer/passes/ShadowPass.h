@@ -23,8 +23,8 @@ public:
                  const RenderSettings& settings, DrawCounters& counters, const ItemCuller& cull = {});
 
     // The camera's cascades of the directional lights in `lights.cascaded` (ShadowCascades.h): draws
-    // those whose fit changed since they were drawn (all with `redrawAll`: the lights, the
-    // geometry or the maps changed) and uploads every fit (LIT_UBO_SHADOW_CASCADES).
+    // the finest map whose fit moved since it was drawn (every one with `redrawAll`: the lights,
+    // the geometry or the maps changed) and uploads the fits the maps hold (LIT_UBO_SHADOW_CASCADES).
     void executeCascades(const Scene& scene, const GpuScene& gpuScene, const LightSetup& lights,
                          const CameraView& camera, const Aabb& bounds, const RenderSettings& settings, bool redrawAll,
                          DrawCounters& counters, const ItemCuller& cull = {});

@@ -102,20 +102,44 @@ float pcf2d(sampler2DArrayShadow maps, vec2 uv, float layer, float depth, vec2 t
                    texture(maps, vec4(uv + d2, layer, depth)) + texture(maps, vec4(uv - d2, layer, depth)));
 }
 
-// The visibility from the finest of the camera's cascades of a directional light whose square holds
-// `position` with the PCF kernel and a texel to spare; −1 when none does (or the light has none).
+#if LIT_SHADOW_CASCADES
+// The share of a cascade's square, inside its edge, over which it hands over to the next map out:
+// the squares move with the camera, and a pixel that changes map changes its shadow gradually.
+const float kCascadeBlend = 0.1;
+
+// The visibility from map `c` of cascaded light `slot`, or −1 when its square does not hold
+// `position` with the PCF kernel and a texel to spare; `edge` is how far inside that it lies, in
+// shares of kCascadeBlend (≥ 1: past the blend).
+float cascadeLookup(int slot, int c, vec3 position, vec3 normal, float pcfRadius, float normalOffsetTexels, out float edge) {
+    GpuShadowCascade cascade = cascadeData.cascades[slot * LIT_MAX_SHADOW_CASCADES + c];
+    vec2 texel = 1.0 / vec2(textureSize(shadowCascades, 0).xy);
+    vec2 margin = texel * (max(pcfRadius, 0.0) + 1.0);
+    vec3 lookup = position + normal * (cascade.params.x * normalOffsetTexels);
+    vec3 uvz = (cascade.viewProjection * vec4(lookup, 1.0)).xyz * 0.5 + 0.5;
+    vec2 inside = min(uvz.xy - margin, 1.0 - margin - uvz.xy);
+    edge = min(inside.x, inside.y) / kCascadeBlend;
+    if (edge < 0.0 || uvz.z > 1.0) return -1.0;
+    return pcf2d(shadowCascades, uvz.xy, cascade.params.z, uvz.z - cascade.params.y, texel, pcfRadius);
+}
+#endif
+
+// The visibility from the finest of the camera's cascades of a directional light that holds
+// `position`, blended towards the next one near its edge; −1 when none does (or the light has none).
 float cascadeVisibility(GpuLight light, vec3 position, vec3 normal, float pcfRadius, float normalOffsetTexels) {
 #if LIT_SHADOW_CASCADES
     int slot = int(light.spotShadow.w);
     if (slot < 0 || int(light.directionType.w) != LIT_LIGHT_DIRECTIONAL) return -1.0;
-    vec2 texel = 1.0 / vec2(textureSize(shadowCascades, 0).xy);
-    vec2 margin = texel * (max(pcfRadius, 0.0) + 1.0);
-    for (int c = 0; c < cascadeData.counts.x; ++c) {
-        GpuShadowCascade cascade = cascadeData.cascades[slot * LIT_MAX_SHADOW_CASCADES + c];
-        vec3 lookup = position + normal * (cascade.params.x * normalOffsetTexels);
-        vec3 uvz = (cascade.viewProjection * vec4(lookup, 1.0)).xyz * 0.5 + 0.5;
-        if (any(lessThan(uvz.xy, margin)) || any(greaterThan(uvz.xy, 1.0 - margin)) || uvz.z > 1.0) continue;
-        return pcf2d(shadowCascades, uvz.xy, cascade.params.z, uvz.z - cascade.params.y, texel, pcfRadius);
+    int count = cascadeData.counts.x;
+    for (int c = 0; c < count; ++c) {
+        float edge;
+        float lit = cascadeLookup(slot, c, position, normal, pcfRadius, normalOffsetTexels, edge);
+        if (lit < 0.0) continue;
+        if (edge < 1.0 && c + 1 < count) {
+            float nextEdge;
+            float next = cascadeLookup(slot, c + 1, position, normal, pcfRadius, normalOffsetTexels, nextEdge);
+            if (next >= 0.0) lit = mix(next, lit, edge);
+        }
+        return lit;
     }
 #endif
     return -1.0;
