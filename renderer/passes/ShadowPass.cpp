@@ -171,10 +171,9 @@ void ShadowPass::executeCascades(const Scene& scene, const GpuScene& gpuScene, c
     if (redrawAll) std::fill(drawnCascades_.begin(), drawnCascades_.end(), ShadowCascade{});
 
     // Every cascade's new fit; then the maps that must move are drawn, all of them after `redrawAll`,
-    // else the finest one only: a frame draws at most one map while the camera moves (on llvmpipe
-    // four 1024² maps cost a flight's frame three times its median), and a map not drawn yet keeps
-    // its old square, which still holds its slice's pixels but those at its edge (they read the
-    // next map out).
+    // else the finest one only, so that a moving camera's frames share the drawing (docs/ARCHITECTURE.md,
+    // "Shadow cascades"). A map not drawn yet keeps its old square, which still holds its slice's
+    // pixels but those at its edge (they read the next map out).
     std::vector<ShadowCascade> fits(static_cast<std::size_t>(layers));
     int fitted = 0;
     for (int slot = 0; slot < lightsCascaded; ++slot) {
