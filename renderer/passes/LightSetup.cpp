@@ -32,8 +32,7 @@ namespace {
 glm::vec2 depthRangeFrom(const glm::vec3& position, const Aabb& bounds, float range) {
     float farthest = 0.0f;
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner{(i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                               (i & 4) ? bounds.max.z : bounds.min.z};
+        const glm::vec3 corner = bounds.corner(i);
         farthest = std::max(farthest, glm::length(corner - position));
     }
     float farPlane = farthest * 1.01f + 0.01f;

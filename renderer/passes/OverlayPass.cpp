@@ -56,8 +56,7 @@ glm::ivec4 OverlayPass::screenRect(const Aabb& box, const glm::mat4& viewProject
     if (box.empty()) return {0, 0, 0, 0};
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                               (i & 4) ? box.max.z : box.min.z};
+        const glm::vec3 corner = box.corner(i);
         const glm::vec4 clip = viewProjection * glm::vec4(corner, 1.0f);
         if (clip.w <= 1e-6f) return {0, 0, width, height};  // crosses the eye plane: no bounded projection
         const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);

@@ -11,10 +11,6 @@ namespace {
 
 constexpr int kSnapSteps = 16;  // a map moves in steps of 1/16 of its side
 
-glm::vec3 cornerOf(const Aabb& box, int i) {
-    return {(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, (i & 4) ? box.max.z : box.min.z};
-}
-
 }  // namespace
 
 std::vector<float> cascadeSplits(float nearPlane, float farPlane, int count, float lambda) {
@@ -33,13 +29,9 @@ std::vector<float> cascadeSplits(float nearPlane, float farPlane, int count, flo
 
 ShadowCascade fitShadowCascade(const glm::vec3& direction, const Aabb& sceneBounds, const CameraView& camera,
                                float sliceNear, float sliceFar, int mapSize) {
-    const float length = glm::length(direction);
-    const glm::vec3 dir = length > 0.0f ? direction / length : glm::vec3(0.0f, -1.0f, 0.0f);
-    const glm::vec3 up = std::abs(dir.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, 1.0f);
     const Aabb bounds = sceneBounds.empty() ? Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)} : sceneBounds;
     // The basis of the scene-wide map: its origin moves only when the scene's bounds do.
-    const glm::vec3 origin = bounds.center();
-    const glm::mat4 lightView = glm::lookAt(origin, origin + dir, up);
+    const glm::mat4 lightView = directionalLightView(direction, bounds);
 
     // The slice's bounding sphere: its centre on the view axis at z, equidistant from the near and
     // far rectangles' corners, or at the far rectangle when that one alone is wider.
@@ -69,7 +61,7 @@ ShadowCascade fitShadowCascade(const glm::vec3& direction, const Aabb& sceneBoun
 
     float nearZ = std::numeric_limits<float>::lowest(), farZ = std::numeric_limits<float>::max();
     for (int i = 0; i < 8; ++i) {
-        const float zi = (lightView * glm::vec4(cornerOf(bounds, i), 1.0f)).z;
+        const float zi = (lightView * glm::vec4(bounds.corner(i), 1.0f)).z;
         nearZ = std::max(nearZ, zi);  // the light looks down −z: the largest z is nearest it
         farZ = std::min(farZ, zi);
     }

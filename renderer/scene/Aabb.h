@@ -20,6 +20,10 @@ struct Aabb {
         extend(b.min);
         extend(b.max);
     }
+    // Corner i of 8: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+    glm::vec3 corner(int i) const {
+        return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+    }
     glm::vec3 center() const { return 0.5f * (min + max); }
     glm::vec3 size() const { return max - min; }
     float radius() const { return 0.5f * glm::length(size()); }

@@ -127,8 +127,7 @@ glm::vec2 depthRangeFor(const glm::vec3& position, const Aabb& bounds) {
     if (bounds.empty() || !std::isfinite(position.x + position.y + position.z)) return {0.05f, 1000.0f};
     float farthest = 0.0f;
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner{(i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                               (i & 4) ? bounds.max.z : bounds.min.z};
+        const glm::vec3 corner = bounds.corner(i);
         farthest = std::max(farthest, glm::length(corner - position));
     }
     const float zfar = std::max(1.01f * farthest, 0.1f);
@@ -165,24 +164,25 @@ void FlyCamera::setFromView(const CameraView& v) {
     yfov = v.yfov;
 }
 
-glm::mat4 fitDirectionalShadow(const glm::vec3& direction, const Aabb& bounds) {
+glm::mat4 directionalLightView(const glm::vec3& direction, const Aabb& bounds) {
     const glm::vec3 dir = safeNormalize(direction, glm::vec3(0.0f, -1.0f, 0.0f));
     // Any up vector not parallel to the light works; the map's in-plane rotation does not matter.
     const glm::vec3 up = std::abs(dir.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f, 0.0f, 1.0f);
-    if (bounds.empty())
-        return glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, -1.0f, 1.0f) * glm::lookAt(glm::vec3(0.0f), dir, up);
-
-    const glm::vec3 center = bounds.center();
     // Eye at the centre: light-space coordinates stay small, so tiny boxes keep their precision.
-    const glm::mat4 lightView = glm::lookAt(center, center + dir, up);
+    const glm::vec3 center = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
+    return glm::lookAt(center, center + dir, up);
+}
+
+glm::mat4 fitDirectionalShadow(const glm::vec3& direction, const Aabb& bounds) {
+    const glm::mat4 lightView = directionalLightView(direction, bounds);
+    if (bounds.empty()) return glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, -1.0f, 1.0f) * lightView;
 
     // Tight fit: the light-space box of the eight corners. It is smaller than the bounding
     // sphere's square (by up to 3× in area for a cube), so shadow texels are not wasted.
     glm::vec3 lo(std::numeric_limits<float>::max());
     glm::vec3 hi(std::numeric_limits<float>::lowest());
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner{(i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                               (i & 4) ? bounds.max.z : bounds.min.z};
+        const glm::vec3 corner = bounds.corner(i);
         const glm::vec3 p = glm::vec3(lightView * glm::vec4(corner, 1.0f));
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);

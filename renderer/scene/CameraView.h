@@ -62,4 +62,8 @@ struct FlyCamera {
 // few texels are wasted outside it.
 glm::mat4 fitDirectionalShadow(const glm::vec3& direction, const Aabb& bounds);
 
+// The light-space view of those maps (and of the camera's cascades, ShadowCascades.h): looking
+// along `direction` from the centre of `bounds` (the origin when empty).
+glm::mat4 directionalLightView(const glm::vec3& direction, const Aabb& bounds);
+
 }  // namespace lit
