@@ -123,6 +123,7 @@ Mesh makeSphereMesh(const std::string& name, float radius, int material, int rin
             v.normal = n;
             v.position = radius * n;
             v.uv = {static_cast<float>(s) / static_cast<float>(segments), static_cast<float>(r) / static_cast<float>(rings)};
+            v.uv1 = v.uv;
             p.vertices.push_back(v);
             p.bounds.extend(v.position);
         }

@@ -5,6 +5,7 @@
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
+layout(location = 4) in vec2 inUv1;
 layout(location = 3) in vec4 inTangent;
 
 layout(location = LIT_LOC_MODEL) uniform mat4 uModel;
@@ -13,7 +14,7 @@ layout(location = LIT_LOC_NORMAL_MATRIX) uniform mat4 uNormalMatrix;
 out VertexData {
     vec3 worldPosition;
     vec3 worldNormal;
-    vec2 uv;
+    vec4 uv;  // xy TEXCOORD_0, zw TEXCOORD_1 (material.glsl materialUv)
     vec4 worldTangent;
 } vs;
 
@@ -22,6 +23,6 @@ void main() {
     vs.worldPosition = world.xyz;
     vs.worldNormal = mat3(uNormalMatrix) * inNormal;
     vs.worldTangent = vec4(mat3(uModel) * inTangent.xyz, inTangent.w);
-    vs.uv = inUv;
+    vs.uv = vec4(inUv, inUv1);
     gl_Position = frame.viewProjection * world;
 }

@@ -3,7 +3,7 @@
 // light passes, docs/MATERIALS.md "Transmission").
 #include "material.glsl"
 
-in vec2 vUv;
+in vec4 vUv;
 
 void main() {
     GpuMaterial m = materials[uMaterialIndex];

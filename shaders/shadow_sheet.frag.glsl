@@ -7,7 +7,7 @@
 #include "material.glsl"
 #include "brdf.glsl"
 
-in vec2 vUv;
+in vec4 vUv;
 in vec3 vWorldPosition;
 in vec3 vWorldNormal;
 

@@ -8,7 +8,7 @@
 
 in VoxelFragment {
     vec3 worldNormal;
-    vec2 uv;
+    vec4 uv;
     flat vec4 bounds;
     flat int axis;
     flat vec3 corner0, corner1, corner2;

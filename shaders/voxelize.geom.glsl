@@ -21,12 +21,12 @@ layout(triangle_strip, max_vertices = 3) out;
 in VoxelVertex {
     vec3 worldPosition;
     vec3 worldNormal;
-    vec2 uv;
+    vec4 uv;
 } gs_in[];
 
 out VoxelFragment {
     vec3 worldNormal;
-    vec2 uv;
+    vec4 uv;
     flat vec4 bounds;  // enlarged 2D bounding box in window pixels: xy min, zw max
     flat int axis;     // projection axis: 0 X, 1 Y, 2 Z
     // The triangle in voxel space, swizzled for `axis` as (u, v, depth): the fragment shader records

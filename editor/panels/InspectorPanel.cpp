@@ -172,19 +172,26 @@ void InspectorPanel::drawTransform(Document& doc, int nodeIndex) {
 
 namespace {
 
-// Read-only: the KHR_texture_transform of each texture reference that has one.
+// Read-only: each texture reference's UV set where it reads TEXCOORD_1, and its
+// KHR_texture_transform where it has one.
 void drawTextureTransforms(const Material& material) {
     static constexpr std::array<const char*, 5> kSlots = {"Albedo", "Metal-rough", "Normal", "Emissive", "Occlusion"};
     const std::array<int, 5> textures = {material.baseColorTexture, material.metallicRoughnessTexture,
                                          material.normalTexture, material.emissiveTexture, material.occlusionTexture};
     for (std::size_t slot = 0; slot < kSlots.size(); ++slot) {
         const TextureTransform& t = material.textureTransforms[slot];
-        if (textures[slot] < 0 || !t.present) continue;
+        const bool secondSet = drawnTexCoord(material, slot) == 1;
+        if (textures[slot] < 0 || (!t.present && !secondSet)) continue;
         ImGui::PushTextWrapPos(0.0f);  // the inspector is narrow: wrap rather than cut the numbers off
-        ImGui::TextDisabled("%s UV: scale %.3g x %.3g, offset %.3g, %.3g, rotation %.1f deg", kSlots[slot], t.scale.x,
-                            t.scale.y, t.offset.x, t.offset.y, t.rotation * kDegPerRad);
+        if (t.present)
+            ImGui::TextDisabled("%s UV%s: scale %.3g x %.3g, offset %.3g, %.3g, rotation %.1f deg", kSlots[slot],
+                                secondSet ? " (TEXCOORD_1)" : "", t.scale.x, t.scale.y, t.offset.x, t.offset.y,
+                                t.rotation * kDegPerRad);
+        else
+            ImGui::TextDisabled("%s UV: TEXCOORD_1", kSlots[slot]);
         ImGui::PopTextWrapPos();
-        tooltip("KHR_texture_transform from the file (saved back as it is)");
+        tooltip(t.present ? "KHR_texture_transform and UV set from the file (saved back as they are)"
+                          : "The UV set the file names for this texture (saved back as it is)");
     }
 }
 

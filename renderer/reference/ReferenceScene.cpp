@@ -40,9 +40,10 @@ int wrapTexel(int i, int size, int mode) {
 constexpr std::size_t kSlotBaseColor = 0, kSlotMetallicRoughness = 1, kSlotNormal = 2, kSlotEmissive = 3,
                       kSlotOcclusion = 4;
 
-// The UVs reference `slot` samples at mesh UV `uv`: its KHR_texture_transform, as
-// material.glsl's materialUv applies it.
-glm::vec2 slotUv(const Material& m, std::size_t slot, glm::vec2 uv) {
+// The UVs reference `slot` samples at mesh UVs `uvs` (xy TEXCOORD_0, zw TEXCOORD_1): its set and
+// KHR_texture_transform, as material.glsl's materialUv applies them.
+glm::vec2 slotUv(const Material& m, std::size_t slot, const glm::vec4& uvs) {
+    const glm::vec2 uv = drawnTexCoord(m, slot) == 1 ? glm::vec2(uvs.z, uvs.w) : glm::vec2(uvs.x, uvs.y);
     const TextureTransform& t = m.textureTransforms[slot];
     return t.present ? applyUvTransform(uvTransformRows(t), uv) : uv;
 }
@@ -62,7 +63,7 @@ struct ReferenceScene::Geometry {
     bool alphaMasked = false;
     std::vector<glm::vec3> positions;  // world
     std::vector<glm::vec3> normals;    // world (normal matrix applied, not normalised)
-    std::vector<glm::vec2> uvs;
+    std::vector<glm::vec4> uvs;        // xy TEXCOORD_0, zw TEXCOORD_1 (Vertex::uv, uv1)
     std::vector<glm::vec4> tangents;   // world xyz, w bitangent sign
     std::vector<std::uint32_t> indices;  // 3 per triangle, validated
     int emitterBase = -1;              // emitter index of triangle 0 when the material emits
@@ -146,7 +147,7 @@ ReferenceScene::ReferenceScene(const Scene& scene, Log& log) : impl_(std::make_u
             for (const Vertex& v : primitive.vertices) {
                 g.positions.push_back(glm::vec3(node.world * glm::vec4(v.position, 1.0f)));
                 g.normals.push_back(normalMatrix * v.normal);
-                g.uvs.push_back(v.uv);
+                g.uvs.push_back(glm::vec4(v.uv, v.uv1));
                 g.tangents.push_back(glm::vec4(model * glm::vec3(v.tangent), v.tangent.w));
             }
             s.geometries.push_back(std::move(g));
@@ -194,9 +195,7 @@ ReferenceScene::ReferenceScene(const Scene& scene, Log& log) : impl_(std::make_u
                 e.p0 = g.positions[a];
                 e.e1 = g.positions[b] - e.p0;
                 e.e2 = g.positions[c] - e.p0;
-                e.uv0 = g.uvs[a];
-                e.uv1 = g.uvs[b];
-                e.uv2 = g.uvs[c];
+                e.uvs = {g.uvs[a], g.uvs[b], g.uvs[c]};
                 e.material = g.material;
                 e.area = 0.5f * glm::length(glm::cross(e.e1, e.e2));
                 e.power = e.area * luminance(emissive);
@@ -223,7 +222,8 @@ ReferenceScene::~ReferenceScene() = default;
 bool ReferenceScene::alphaCutOut(unsigned geometry, unsigned primitive, float u, float v) const {
     const Geometry& g = impl_->geometries[geometry];
     const std::size_t t = 3 * static_cast<std::size_t>(primitive);
-    const glm::vec2 uv = (1.0f - u - v) * g.uvs[g.indices[t]] + u * g.uvs[g.indices[t + 1]] + v * g.uvs[g.indices[t + 2]];
+    const glm::vec4 uv =
+        (1.0f - u - v) * g.uvs[g.indices[t]] + u * g.uvs[g.indices[t + 1]] + v * g.uvs[g.indices[t + 2]];
     const Material& m = impl_->materials[static_cast<std::size_t>(g.material)];
     float alpha = m.baseColorFactor.a;
     if (m.baseColorTexture >= 0) alpha *= sampleTexture(m.baseColorTexture, slotUv(m, kSlotBaseColor, uv)).a;
@@ -279,7 +279,7 @@ glm::vec4 ReferenceScene::sampleTexture(int texture, glm::vec2 uv) const {
                     ay);
 }
 
-float ReferenceScene::resolveMaterial(int material, const glm::vec2& uv, glm::vec3 normal, const glm::vec4& tangent,
+float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::vec3 normal, const glm::vec4& tangent,
                                       bool frontFacing, SurfaceHit& hit) const {
     const Impl& s = *impl_;
     const Material& m =
@@ -370,7 +370,7 @@ bool ReferenceScene::intersect(const Ray& ray, SurfaceHit& hit) const {
     // gl_FrontFacing: the counter-clockwise side (the cross product's side) faces the viewer.
     const bool frontFacing = glm::dot(ng, ray.direction) < 0.0f;
     hit.geometricNormal = frontFacing ? ng : -ng;
-    const glm::vec2 uv = w * g.uvs[i0] + u * g.uvs[i1] + v * g.uvs[i2];
+    const glm::vec4 uv = w * g.uvs[i0] + u * g.uvs[i1] + v * g.uvs[i2];
     const glm::vec3 normal = w * g.normals[i0] + u * g.normals[i1] + v * g.normals[i2];
     const glm::vec4 tangent = w * g.tangents[i0] + u * g.tangents[i1] + v * g.tangents[i2];
     resolveMaterial(g.material, uv, normal, tangent, frontFacing, hit);
@@ -428,7 +428,7 @@ EmitterSample ReferenceScene::sampleEmitter(float u, const glm::vec2& uv) const 
     const float b1 = 1.0f - su, b2 = uv.y * su;
     sample.position = e.p0 + b1 * e.e1 + b2 * e.e2;
     sample.normal = glm::normalize(glm::cross(e.e1, e.e2));
-    const glm::vec2 texcoord = (1.0f - b1 - b2) * e.uv0 + b1 * e.uv1 + b2 * e.uv2;
+    const glm::vec4 texcoord = (1.0f - b1 - b2) * e.uvs[0] + b1 * e.uvs[1] + b2 * e.uvs[2];
     SurfaceHit hit;
     hit.geometricNormal = sample.normal;
     resolveMaterial(e.material, texcoord, sample.normal, glm::vec4(1, 0, 0, 1), true, hit);

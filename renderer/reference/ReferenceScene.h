@@ -6,16 +6,16 @@
 // lights of passes/LightSetup, and the emissive triangles as area lights with a power CDF.
 // Built once per scene (or per edit); read-only while rendering, so many threads share it.
 
-#include "scene/Scene.h"
-
 #include <shared.h>
 
-#include <glm/glm.hpp>
-
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <memory>
 #include <vector>
+
+#include "scene/Scene.h"
 
 namespace lit {
 class Log;
@@ -63,7 +63,7 @@ struct SurfaceHit {
 
 struct Emitter {
     glm::vec3 p0{0.0f}, e1{0.0f}, e2{0.0f};  // world vertex 0 and edges to vertices 1 and 2
-    glm::vec2 uv0{0.0f}, uv1{0.0f}, uv2{0.0f};
+    std::array<glm::vec4, 3> uvs{};          // per corner: xy TEXCOORD_0, zw TEXCOORD_1
     int material = -1;
     float area = 0.0f;  // m²
     float power = 0.0f;  // sampling weight: area × luminance of the emissive factor
@@ -112,11 +112,12 @@ public:
     // Texture lookup as the GPU's sampler would do it at mip level 0: bilinear, with the glTF
     // sampler's wrap modes, sRGB images decoded to linear before filtering. RGBA in [0,1].
     glm::vec4 sampleTexture(int texture, glm::vec2 uv) const;
-    // The material at a surface point from its interpolated attributes (world normal and tangent
+    // The material at a surface point from its interpolated attributes (UVs: xy TEXCOORD_0, zw
+    // TEXCOORD_1; world normal and tangent
     // already transformed; `frontFacing` as gl_FrontFacing). Fills baseColor ... emission, the
     // dielectric F0/F90, the sheen, the clear coat, `normal` and `clearcoatNormal`; returns the
     // base colour alpha (for the mask test).
-    float resolveMaterial(int material, const glm::vec2& uv, glm::vec3 normal, const glm::vec4& tangent,
+    float resolveMaterial(int material, const glm::vec4& uv, glm::vec3 normal, const glm::vec4& tangent,
                           bool frontFacing, SurfaceHit& hit) const;
 
     // The alpha-mask test for a hit on geometry `geometry`, triangle `primitive` at barycentrics

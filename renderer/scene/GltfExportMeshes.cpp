@@ -1,8 +1,8 @@
 // Scene meshes → glTF meshes, accessors and buffer views (scene/GltfExportDetail.h): a drawn
 // primitive's vertices in the file's views (scene/Scene.h: Primitive::fileViews): attributes the
 // file kept in one view in one view again (one per view, blocks one after the other, or
-// interleaved at the file's offsets and stride), or else in one interleaved view (lit::Vertex as
-// it is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes); indices in the file's
+// interleaved at the file's offsets and stride), or else in one interleaved view (the head of
+// lit::Vertex as it is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes); indices in the file's
 // component type while they fit, else UNSIGNED_INT. Accessors in the file's order, one the file
 // shared written once while the values agree, so an unedited file keeps its accessor indices.
 
@@ -121,17 +121,13 @@ tinygltf::Primitive ModelBuilder::addPrimitive(const Primitive& primitive) {
         int first = std::numeric_limits<int>::max();
         for (const Attribute& a : attributes) first = std::min(first, fileIndex(a.name));
         writes.emplace_back(first, [&] {
-            // One interleaved view: lit::Vertex as it is in memory, 32 bytes a vertex without tangents.
-            constexpr std::size_t kPackedStride = offsetof(Vertex, tangent);
-            int view = -1;
-            if (tangents) {
-                view = addBufferView(vertices->data(), count * sizeof(Vertex), kArrayBuffer, sizeof(Vertex));
-            } else {
-                std::vector<unsigned char> packed(count * kPackedStride);
-                for (std::size_t v = 0; v < count; ++v)
-                    std::memcpy(packed.data() + v * kPackedStride, &(*vertices)[v], kPackedStride);
-                view = addBufferView(packed.data(), packed.size(), kArrayBuffer, kPackedStride);
-            }
+            // One interleaved view: the head of lit::Vertex as it is in memory, 48 bytes a vertex
+            // with tangents, 32 without (uv1 is not in it: TEXCOORD_1 is a kept attribute).
+            const std::size_t packedStride = offsetof(Vertex, tangent) + (tangents ? sizeof(glm::vec4) : 0);
+            std::vector<unsigned char> packed(count * packedStride);
+            for (std::size_t v = 0; v < count; ++v)
+                std::memcpy(packed.data() + v * packedStride, &(*vertices)[v], packedStride);
+            const int view = addBufferView(packed.data(), packed.size(), kArrayBuffer, packedStride);
             std::vector<Attribute> inFileOrder = attributes;
             std::stable_sort(inFileOrder.begin(), inFileOrder.end(), [&](const Attribute& a, const Attribute& b) {
                 return fileIndex(a.name) < fileIndex(b.name);

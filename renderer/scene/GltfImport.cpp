@@ -276,9 +276,10 @@ void Importer::loadMaterials(Scene& scene) const {
         const std::string what = "material " + std::to_string(m) + (in.name.empty() ? "" : " ('" + in.name + "')");
         const auto texture = [&](int index, int texCoord, const char* slot) {
             const int t = checkedTextureIndex(source_, index, what + " " + slot);
-            if (t >= 0 && texCoord != 0)
+            if (t >= 0 && texCoord > 1)
                 warn(what + " " + slot + " uses TEXCOORD_" + std::to_string(texCoord) +
-                     "; Lit draws it with TEXCOORD_0 (the file's choice is saved back)");
+                     "; Lit draws TEXCOORD_0 and TEXCOORD_1 and draws it with TEXCOORD_0 (the file's choice is saved "
+                     "back)");
             return t;
         };
         Material out;
@@ -346,9 +347,10 @@ void Importer::loadMaterials(Scene& scene) const {
                 extensions, [&](const std::string& problem) { warn(reference + ": " + problem); });
             const std::array<int, 5> textures = {out.baseColorTexture, out.metallicRoughnessTexture,
                                                  out.normalTexture, out.emissiveTexture, out.occlusionTexture};
-            if (textures[slot] >= 0 && transform.texCoord > 0 && out.textureTexCoord[slot] == 0)
+            if (textures[slot] >= 0 && transform.texCoord > 1)
                 warn(reference + " uses TEXCOORD_" + std::to_string(transform.texCoord) +
-                     " (KHR_texture_transform texCoord); Lit draws it with TEXCOORD_0 (the file's choice is saved back)");
+                     " (KHR_texture_transform texCoord); Lit draws TEXCOORD_0 and TEXCOORD_1 and draws it with "
+                     "TEXCOORD_0 (the file's choice is saved back)");
         }
         out.textureExtras = {
             gltfkeep::extrasText(pbr.baseColorTexture.extras),

@@ -2,11 +2,6 @@
 
 #include "scene/GltfImportMeshes.h"
 
-#include "scene/GltfImportKept.h"
-#include "scene/GltfKeep.h"
-#include "scene/GltfValidate.h"
-#include "scene/Tangents.h"
-
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -16,6 +11,12 @@
 #include <utility>
 #include <vector>
 
+#include "scene/GltfImportKept.h"
+#include "scene/GltfKeep.h"
+#include "scene/GltfTextureTransform.h"
+#include "scene/GltfValidate.h"
+#include "scene/Tangents.h"
+
 namespace lit::gltfimport {
 
 namespace {
@@ -23,6 +24,41 @@ namespace {
 // How far from 1 a tangent's length may be and still count as unit (float32 rounding of its
 // components is a few 1e-8; exporters write normalized float32 tangents).
 constexpr float kUnitTangentTolerance = 1e-6f;
+
+// The UV set a texture reference is drawn with (scene/Scene.h drawnTexCoord): 1 for TEXCOORD_1,
+// else 0; -1 without a texture. The material's import warns about a malformed transform; here it
+// is only read.
+template <typename TextureInfo>
+int drawnUvSet(const TextureInfo& reference) {
+    if (reference.index < 0) return -1;
+    const int transformSet = gltfkeep::readTextureTransform(reference.extensions, [](const std::string&) {}).texCoord;
+    return (transformSet >= 0 ? transformSet : reference.texCoord) == 1 ? 1 : 0;
+}
+
+const tinygltf::Material* materialOf(const GltfSource& source, int material) {
+    if (material < 0 || static_cast<std::size_t>(material) >= source.model.materials.size()) return nullptr;
+    return &source.model.materials[static_cast<std::size_t>(material)];
+}
+
+// The set the tangents the loader computes follow: the normal texture's (a normal map is painted
+// in the frame of its own UVs), 0 without one.
+int normalTextureUvSet(const GltfSource& source, int material) {
+    const tinygltf::Material* m = materialOf(source, material);
+    return m && drawnUvSet(m->normalTexture) == 1 ? 1 : 0;
+}
+
+// The first of the material's texture references drawn with TEXCOORD_1, nullptr when none is.
+const char* referenceReadingUvSet1(const GltfSource& source, int material) {
+    const tinygltf::Material* m = materialOf(source, material);
+    if (!m) return nullptr;
+    const tinygltf::PbrMetallicRoughness& pbr = m->pbrMetallicRoughness;
+    if (drawnUvSet(pbr.baseColorTexture) == 1) return "baseColorTexture";
+    if (drawnUvSet(pbr.metallicRoughnessTexture) == 1) return "metallicRoughnessTexture";
+    if (drawnUvSet(m->normalTexture) == 1) return "normalTexture";
+    if (drawnUvSet(m->emissiveTexture) == 1) return "emissiveTexture";
+    if (drawnUvSet(m->occlusionTexture) == 1) return "occlusionTexture";
+    return nullptr;
+}
 
 void importPrimitive(const GltfSource& source, const tinygltf::Primitive& in, const std::string& meshName,
                      std::size_t primitiveIndex, Primitive& out) {
@@ -60,6 +96,17 @@ void importPrimitive(const GltfSource& source, const tinygltf::Primitive& in, co
         const AccessorData uvs = readAccessor(source, uvIndex, TINYGLTF_TYPE_VEC2, "TEXCOORD_0 of " + where);
         checkCount(uvs, uvIndex, "TEXCOORD_0");
         for (std::size_t i = 0; i < vertexCount; ++i) out.vertices[i].uv = {uvs.component(i, 0), uvs.component(i, 1)};
+    }
+    const int uv1Index = attribute("TEXCOORD_1");
+    if (uv1Index >= 0) {
+        const AccessorData uvs = readAccessor(source, uv1Index, TINYGLTF_TYPE_VEC2, "TEXCOORD_1 of " + where);
+        checkCount(uvs, uv1Index, "TEXCOORD_1");
+        for (std::size_t i = 0; i < vertexCount; ++i) out.vertices[i].uv1 = {uvs.component(i, 0), uvs.component(i, 1)};
+    } else {
+        for (Vertex& v : out.vertices) v.uv1 = v.uv;
+        if (const char* reference = referenceReadingUvSet1(source, in.material))
+            source.warn(where + " has no TEXCOORD_1, which its material's " + reference +
+                        " reads; drawn with TEXCOORD_0");
     }
     // A file's tangents are only meaningful with the file's normals (glTF 2.0 §3.7.2.1).
     const int tangentIndex = normalIndex >= 0 ? attribute("TANGENT") : -1;
@@ -144,7 +191,7 @@ void importPrimitive(const GltfSource& source, const tinygltf::Primitive& in, co
         for (KeptAttributes& target : out.morphTargets)
             for (auto& [name, a] : target) reorder(a);
     }
-    if (!haveTangents) computeTangents(out);
+    if (!haveTangents) computeTangents(out, normalTextureUvSet(source, in.material));
     out.fileHasTangents = haveTangents;
     out.kept = gltfkeep::keep(in.extras, in.extensions);
     // How the file stored the drawn data and what its accessors held besides the values, for a

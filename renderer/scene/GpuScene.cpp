@@ -72,14 +72,14 @@ gl::Sampler makeSampler(const SamplerState& state, std::size_t index) {
     return sampler;
 }
 
-// The material's texture transforms as material.glsl's uUvTransforms wants them.
+// The material's texture transforms and UV sets as material.glsl's uUvTransforms wants them.
 GpuScene::UvTransforms uvTransformsOf(const Material& m) {
     static_assert(2 * LIT_MATERIAL_SLOTS == std::tuple_size_v<GpuScene::UvTransforms>);
     static_assert(LIT_MATERIAL_SLOTS == std::tuple_size_v<decltype(m.textureTransforms)>);
     GpuScene::UvTransforms out{};
     for (std::size_t slot = 0; slot < m.textureTransforms.size(); ++slot) {
         const std::array<glm::vec3, 2> rows = uvTransformRows(m.textureTransforms[slot]);
-        out[2 * slot] = glm::vec4(rows[0], 0.0f);
+        out[2 * slot] = glm::vec4(rows[0], static_cast<float>(drawnTexCoord(m, slot)));
         out[2 * slot + 1] = glm::vec4(rows[1], 0.0f);
     }
     return out;
@@ -175,6 +175,7 @@ GpuScene::GpuScene(const Scene& scene, Log& log, std::uint32_t maxChunkTriangles
     attribute(1, 3, offsetof(Vertex, normal));
     attribute(2, 2, offsetof(Vertex, uv));
     attribute(3, 4, offsetof(Vertex, tangent));
+    attribute(4, 2, offsetof(Vertex, uv1));
 
     // Textures: each image once, however many textures use it; each distinct sampler once.
     whiteTexture_ = gl::Texture("white 1x1", {GL_TEXTURE_2D, GL_RGBA8, 1, 1, 1, 1});

@@ -50,8 +50,8 @@ struct DrawCounters {
 
 class GpuScene {
 public:
-    // A material's KHR_texture_transform rows, two per texture reference (material.glsl's
-    // uUvTransforms, set per draw).
+    // A material's KHR_texture_transform rows, two per texture reference, the first's w its UV
+    // set (material.glsl's uUvTransforms, set per draw).
     using UvTransforms = std::array<glm::vec4, 10>;
 
     GpuScene() = default;

@@ -111,8 +111,11 @@ struct Vertex {
     glm::vec3 normal{0.0f, 1.0f, 0.0f};
     glm::vec2 uv{0.0f};
     glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent, w bitangent sign (glTF convention)
+    // TEXCOORD_1, for the texture references that read it (drawnTexCoord); TEXCOORD_0 where the
+    // primitive has none, so a reference to a set the mesh lacks still samples something defined.
+    glm::vec2 uv1{0.0f};
 };
-static_assert(sizeof(Vertex) == 48, "Vertex is uploaded as-is; keep it tightly packed");
+static_assert(sizeof(Vertex) == 56, "Vertex is uploaded as-is; keep it tightly packed");
 
 struct Primitive {
     std::vector<Vertex> vertices;
@@ -122,10 +125,10 @@ struct Primitive {
     // Whether the file gave TANGENT (else the loader generated them): only then does a save
     // write them, so a file without tangents does not grow by a third.
     bool fileHasTangents = false;
-    // The file's attributes Lit does not draw with (all but POSITION, NORMAL, TEXCOORD_0 and
-    // TANGENT) and its morph targets, one element per vertex in `vertices` order (the loader
-    // reorders them with the vertices when it unwelds a primitive without normals). Written
-    // back only while their count matches `vertices` (an edit that rebuilt the geometry drops them).
+    // The file's attributes other than POSITION, NORMAL, TEXCOORD_0 and TANGENT and its morph
+    // targets (TEXCOORD_1 is drawn from Vertex::uv1 and kept here too, as the file stored it), one element per vertex
+    // in `vertices` order (the loader reorders them with the vertices when it unwelds a primitive without normals).
+    // Written back only while their count matches `vertices` (an edit that rebuilt the geometry drops them).
     KeptAttributes keptAttributes{};
     std::vector<KeptAttributes> morphTargets{};
     KeptGltf kept{};
@@ -266,9 +269,9 @@ struct Material {
     std::array<std::string, 5> textureExtensions{};
     // KHR_texture_transform of each texture reference, same order (identity when absent).
     std::array<TextureTransform, 5> textureTransforms{};
-    // The TEXCOORD_n set each texture reference reads, same order. Lit draws with TEXCOORD_0
-    // (the loader warns, also for a KHR_texture_transform texCoord override); the file's number
-    // is saved back.
+    // The TEXCOORD_n set each texture reference reads, same order, saved back as the file had it.
+    // Lit draws TEXCOORD_0 and TEXCOORD_1 (drawnTexCoord); a higher set is drawn with TEXCOORD_0
+    // and the loader warns.
     std::array<int, 5> textureTexCoord{};
     // Extras of each texture reference (JSON text, "" when absent), same order, and the extras and
     // extensions of pbrMetallicRoughness.
@@ -286,6 +289,13 @@ struct Material {
 
     bool operator==(const Material&) const = default;
 };
+
+// The UV set texture reference `slot` of `m` is drawn with: 1 for TEXCOORD_1, else 0. The
+// reference's KHR_texture_transform texCoord, when it has one, overrides its own texCoord.
+inline int drawnTexCoord(const Material& m, std::size_t slot) {
+    const int transformSet = m.textureTransforms[slot].texCoord;
+    return (transformSet >= 0 ? transformSet : m.textureTexCoord[slot]) == 1 ? 1 : 0;
+}
 
 enum class LightType { Directional, Point, Spot };
 

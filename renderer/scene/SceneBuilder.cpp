@@ -18,6 +18,7 @@ void addQuad(Primitive& p, const glm::vec3& origin, const glm::vec3& u, const gl
         vertex.position = corners[i];
         vertex.normal = normal;
         vertex.uv = uvs[i];
+        vertex.uv1 = uvs[i];
         p.vertices.push_back(vertex);
         p.bounds.extend(corners[i]);
     }

@@ -21,7 +21,7 @@ struct Scene;
 struct SceneMemory {
     std::uint64_t decodedImages = 0;  // RGBA8 pixels on the CPU, each distinct image once
     std::uint64_t textures = 0;       // GL textures: each image a texture uses once, with mip chain
-    std::uint64_t geometry = 0;       // 48-byte vertices and 4-byte indices, on the CPU and in GL buffers
+    std::uint64_t geometry = 0;       // 56-byte vertices and 4-byte indices, on the CPU and in GL buffers
     std::uint64_t voxels = 0;         // the voxel volumes (voxelVolumeBytes), the near levels' included
     std::uint64_t rayHits = 0;        // the voxel rays' hit records at their most (RayHitCache), per volume
     std::uint64_t targets = 0;        // per-pixel render targets and read-back copies

@@ -26,7 +26,7 @@ glm::vec3 safeNormal(const glm::vec3& n) {
 
 }  // namespace
 
-void computeTangents(Primitive& primitive) {
+void computeTangents(Primitive& primitive, int uvSet) {
     std::vector<Vertex>& vertices = primitive.vertices;
     const std::vector<std::uint32_t>& indices = primitive.indices;
     // Per vertex: the accumulated directions of increasing u (tangent) and of increasing v.
@@ -41,8 +41,9 @@ void computeTangents(Primitive& primitive) {
         const Vertex& v2 = vertices[i2];
         const glm::vec3 e1 = v1.position - v0.position;
         const glm::vec3 e2 = v2.position - v0.position;
-        const glm::vec2 d1 = v1.uv - v0.uv;
-        const glm::vec2 d2 = v2.uv - v0.uv;
+        const auto uvOf = [uvSet](const Vertex& v) { return uvSet == 1 ? v.uv1 : v.uv; };
+        const glm::vec2 d1 = uvOf(v1) - uvOf(v0);
+        const glm::vec2 d2 = uvOf(v2) - uvOf(v0);
         // Solve [e1 e2] = [dP/du dP/dv] · [d1 d2] (Lengyel, "Computing Tangent Space Basis
         // Vectors for an Arbitrary Mesh", 2001). det is twice the signed UV-space area.
         const float det = d1.x * d2.y - d2.x * d1.y;

@@ -3,6 +3,6 @@
 in VertexData {
     vec3 worldPosition;
     vec3 worldNormal;
-    vec2 uv;
+    vec4 uv;  // xy TEXCOORD_0, zw TEXCOORD_1
     vec4 worldTangent;
 } fs;

@@ -21,16 +21,18 @@ layout(binding = LIT_TEX_EMISSIVE) uniform sampler2D emissiveTexture;
 layout(binding = LIT_TEX_OCCLUSION) uniform sampler2D occlusionTexture;
 
 // Per texture reference (LIT_MATERIAL_SLOT_*), the two rows of its KHR_texture_transform as a
-// 2×3 matrix, xyz each (scene/TextureTransform.h; identity without the extension), set per draw
-// (GpuScene::drawItem). Every fetch multiplies, so no shader branches on whether a reference has
-// one. A uniform rather than a GpuMaterial field: on llvmpipe, UVs computed from the material
+// 2×3 matrix, xyz each (scene/TextureTransform.h; identity without the extension), and in the
+// first row's w the UV set it reads (0 TEXCOORD_0, 1 TEXCOORD_1: scene/Scene.h drawnTexCoord),
+// set per draw (GpuScene::drawItem). Every fetch selects and multiplies, so no shader branches on
+// whether a reference has a transform or which set it reads. A uniform rather than a GpuMaterial field: on llvmpipe, UVs computed from the material
 // SSBO got wrong derivatives in pixel quads along triangle edges (a mip level too coarse there,
 // dots along every edge of the checker test scene); a uniform holds in every invocation of a quad.
 layout(location = LIT_LOC_UV_TRANSFORMS) uniform vec4 uUvTransforms[2 * LIT_MATERIAL_SLOTS];
 
-// The UVs texture reference `slot` (LIT_MATERIAL_SLOT_*, a constant) samples at mesh UV `uv`.
-vec2 materialUv(int slot, vec2 uv) {
-    vec3 h = vec3(uv, 1.0);
+// The UVs texture reference `slot` (LIT_MATERIAL_SLOT_*, a constant) samples at mesh UVs `uvs`
+// (xy TEXCOORD_0, zw TEXCOORD_1).
+vec2 materialUv(int slot, vec4 uvs) {
+    vec3 h = vec3(mix(uvs.xy, uvs.zw, uUvTransforms[2 * slot].w), 1.0);
     return vec2(dot(uUvTransforms[2 * slot].xyz, h), dot(uUvTransforms[2 * slot + 1].xyz, h));
 }
 
@@ -46,7 +48,7 @@ vec3 materialUvTangent(int slot) {
 }
 
 // Base colour × texture (linear; sRGB textures are decoded by the sampler).
-vec4 materialBaseColor(GpuMaterial m, vec2 uv) {
+vec4 materialBaseColor(GpuMaterial m, vec4 uv) {
     vec4 c = m.baseColorFactor;
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_BASE_COLOR)
     if (m.textures.x != 0) c *= texture(baseColorTexture, materialUv(LIT_MATERIAL_SLOT_BASE_COLOR, uv));

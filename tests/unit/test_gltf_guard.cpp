@@ -372,9 +372,9 @@ TEST(GltfGuard, DecodedTexturesOverTheBudgetNameTheImage) {
 TEST(GltfGuard, GeometryOverTheBudgetNamesThePrimitives) {
     TempDir dir;
     GltfLoadOptions options;
-    options.limits.memoryBudgetBytes = 100'000;  // one primitive: 3 × 48 + 3 × 4 = 156 bytes
+    options.limits.memoryBudgetBytes = 100'000;  // one primitive: 3 × 56 + 3 × 4 = 180 bytes
     const std::string message = loadError(writeScene(dir, "prims.gltf", triangleDoc("tri.bin", 1000)), options);
-    EXPECT_CONTAINS(message, "scene needs 312.0 kB of memory (geometry 312.0 kB), over the limit of 100.0 kB");
+    EXPECT_CONTAINS(message, "scene needs 360.0 kB of memory (geometry 360.0 kB), over the limit of 100.0 kB");
     EXPECT_CONTAINS(message, "; geometry of 1000 primitives");
     QuietLog log;
     EXPECT_EQ(loadGltf(writeScene(dir, "few.gltf", triangleDoc("tri.bin", 100)), log, options).meshes[0].primitives.size(), 100u);

@@ -149,7 +149,7 @@ TEST(TextureTransform, KeptOnSave) {
 }
 
 // Fields of the wrong shape are warned about and ignored (the rest of the transform is used);
-// a texCoord override other than 0 is warned about, as Lit draws with TEXCOORD_0.
+// a texCoord override names a set the mesh lacks, which is drawn with TEXCOORD_0 and warned about.
 TEST(TextureTransform, MalformedFieldsAreReported) {
     TempDir dir;
     nlohmann::json doc = nlohmann::json::parse(readText(sceneDir() / "texture_transform.gltf"));
@@ -175,7 +175,7 @@ TEST(TextureTransform, MalformedFieldsAreReported) {
               std::string::npos)
         << all;
     EXPECT_NE(all.find("rotation is not a number"), std::string::npos) << all;
-    EXPECT_NE(all.find("uses TEXCOORD_1 (KHR_texture_transform texCoord); Lit draws it with TEXCOORD_0"),
+    EXPECT_NE(all.find("has no TEXCOORD_1, which its material's baseColorTexture reads; drawn with TEXCOORD_0"),
               std::string::npos)
         << all;
 }

@@ -59,7 +59,7 @@ std::unique_ptr<ResolvedHit> resolve(const Material& material, bool frontFacing 
     QuietLog log;
     r->reference = std::make_unique<ReferenceScene>(r->scene, log);
     r->hit.geometricNormal = frontFacing ? normal : -normal;
-    r->reference->resolveMaterial(0, glm::vec2(0.5f), normal, glm::vec4(1, 0, 0, 1), frontFacing, r->hit);
+    r->reference->resolveMaterial(0, glm::vec4(0.5f), normal, glm::vec4(1, 0, 0, 1), frontFacing, r->hit);
     return r;
 }
 
@@ -632,7 +632,7 @@ TEST(ReferenceBrdf, ClearcoatNormalIsTheInterpolatedNormal) {
     for (const bool front : {true, false}) {
         SurfaceHit hit;
         hit.geometricNormal = front ? glm::vec3(0, 0, 1) : glm::vec3(0, 0, -1);
-        reference.resolveMaterial(0, glm::vec2(0.5f), glm::vec3(0, 0, 2), glm::vec4(1, 0, 0, 1), front, hit);
+        reference.resolveMaterial(0, glm::vec4(0.5f), glm::vec3(0, 0, 2), glm::vec4(1, 0, 0, 1), front, hit);
         const float side = front ? 1.0f : -1.0f;
         EXPECT_EQ(hit.clearcoatNormal, glm::vec3(0, 0, side));
         EXPECT_GT(hit.normal.x, 0.5f) << "the base is normal-mapped";

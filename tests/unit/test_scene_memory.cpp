@@ -84,7 +84,7 @@ TEST(SceneMemory, GeometryCountsTheSceneAndItsGlBuffers) {
     primitive.indices.resize(3000);
     mesh.primitives.push_back(primitive);
     scene.meshes.push_back(mesh);
-    EXPECT_EQ(estimateSceneMemory(scene, {}).geometry, 2u * (1000 * 48 + 3000 * 4));
+    EXPECT_EQ(estimateSceneMemory(scene, {}).geometry, 2u * (1000 * 56 + 3000 * 4));  // 56-byte vertices
 }
 
 TEST(SceneMemory, RenderSettingsAddVoxelsRayHitsAndTargets) {

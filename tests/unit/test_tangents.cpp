@@ -75,6 +75,20 @@ TEST(Tangents, RotatedUvsGiveRotatedTangent) {
     }
 }
 
+// A normal texture that reads TEXCOORD_1 is painted in that set's frame: the tangents follow uv1.
+TEST(Tangents, SecondUvSetGivesItsOwnFrame) {
+    Primitive p = uprightQuad();
+    for (Vertex& v : p.vertices) v.uv1 = {1.0f - (v.position.y + 1.0f) * 0.5f, (v.position.x + 1.0f) * 0.5f};
+    Primitive first = p;
+    computeTangents(first);
+    computeTangents(p, 1);
+    for (std::size_t i = 0; i < p.vertices.size(); ++i) {
+        expectUnitAndOrthogonal(p.vertices[i]);
+        EXPECT_NEAR(p.vertices[i].tangent.y, -1.0f, 1e-5f);     // u1 grows along −Y
+        EXPECT_NEAR(first.vertices[i].tangent.x, 1.0f, 1e-5f);  // u along +X
+    }
+}
+
 TEST(Tangents, TangentIsOrthogonalisedAgainstATiltedNormal) {
     Primitive p = uprightQuad();
     const glm::vec3 tilted = glm::normalize(glm::vec3(0.5f, 0.2f, 1.0f));
