@@ -27,7 +27,8 @@ void main() {
     if (m.textures.y != 0) metalness *= texture(metallicRoughnessTexture, materialUv(LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS, vUv)).b;
     vec3 travel = uLight.w > 0.0 ? vWorldPosition - uLight.xyz : uLight.xyz;
     float cosine = dot(normalize(vWorldNormal), normalize(travel));
-    vec3 through = transmittanceOfSheet(baseColor.rgb, clamp(metalness, 0.0, 1.0), m.alpha.y, m.specular.rgb, m.specular.a,
+    vec3 through = transmittanceOfSheet(baseColor.rgb, clamp(metalness, 0.0, 1.0), materialTransmission(m, vUv),
+                                        m.specular.rgb, m.specular.a,
                                         cosine);
     float depth = uNearFar.y > 0.0 ? (1.0 / gl_FragCoord.w - uNearFar.x) / (uNearFar.y - uNearFar.x) : gl_FragCoord.z;
     outSheet = vec4(through, depth);

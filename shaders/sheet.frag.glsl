@@ -50,7 +50,7 @@ void main() {
     s.emissive = m.emissive.rgb;
     if (m.textures.w != 0) s.emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;
     setMaterialLayers(m, s);
-    float transmission = m.alpha.y;
+    float transmission = materialTransmission(m, fs.uv);
 
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
     vec3 n = normalize(fs.worldNormal);

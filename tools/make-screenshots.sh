@@ -61,6 +61,14 @@ glass="$root/tests/data/blender/glass/glass.gltf"
 "$render" "$glass" --size 640x360 --gi on --voxels 128 --out "$out/glass.png" \
     --compare "$tmpdir/glass_reference.hdr" --difference "$out/glass_difference.png"
 
+# The transmission-texture scene (tools/blender/make_transmission_texture.py): a pane whose
+# transmission is a black/white checker over a sunlit floor; Lit's defaults at 128³ beside the
+# every-bounce reference.
+transmission="$root/tests/data/blender/transmission_texture/transmission_texture.gltf"
+"$render" "$transmission" --reference --bounces all --spp "$spp" --size 640x360 \
+    --out "$out/transmission_texture_reference.png"
+"$render" "$transmission" --size 640x360 --gi on --voxels 128 --out "$out/transmission_texture.png"
+
 # The generated city (make-gi-suite, docs/GI.md "Near level"): a street 640 m of town across, the
 # shaded side lit only by bounced light; Lit's defaults at 128³ (with the 64 m near level around
 # the camera), the same with one volume around it all, the every-bounce reference, and the

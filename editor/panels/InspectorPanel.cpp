@@ -291,6 +291,13 @@ void InspectorPanel::drawSpecularLayers(Document& doc, Material& material) {
     tooltip("Share of the dielectric's light that passes straight through, tinted by the base colour "
             "(KHR_materials_transmission; drawn as a thin sheet: glass panes, film)");
     track(doc, "Transmission", Change::Material, changed, [&] { material.transmission = transmission; });
+    if (const ExtensionTexture& t = material.transmissionTexture; t.texture >= 0) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("Transmission texture %d, red channel%s%s", t.texture,
+                            drawnTexCoord(t) == 1 ? ", TEXCOORD_1" : "", t.transform.present ? ", transformed" : "");
+        ImGui::PopTextWrapPos();
+        tooltip("Multiplies the transmission factor (KHR_materials_transmission; from the file, saved back as it is)");
+    }
     ImGui::TreePop();
 }
 

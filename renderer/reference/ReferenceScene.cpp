@@ -337,7 +337,13 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::ve
     hit.clearcoat = std::clamp(m.clearcoatFactor, 0.0f, 1.0f);
     hit.clearcoatRoughness = std::clamp(m.clearcoatRoughness, 0.0f, 1.0f);
     hit.clearcoatNormal = interpolatedNormal;
-    hit.transmission = std::clamp(m.transmission, 0.0f, 1.0f);
+    float transmission = m.transmission;
+    if (const ExtensionTexture& t = m.transmissionTexture; t.texture >= 0) {
+        const glm::vec2 set = drawnTexCoord(t) == 1 ? glm::vec2(uv.z, uv.w) : glm::vec2(uv.x, uv.y);
+        transmission *=
+            sampleTexture(t.texture, t.transform.present ? applyUvTransform(uvTransformRows(t.transform), set) : set).r;
+    }
+    hit.transmission = std::clamp(transmission, 0.0f, 1.0f);
     return baseColor.a;
 }
 

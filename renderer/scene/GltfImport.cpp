@@ -99,10 +99,40 @@ private:
     void loadTextures(Scene& scene) const;
     void loadLights(Scene& scene) const;
     void loadCameras(Scene& scene) const;
+    // A textureInfo object inside a material extension (`where` names it in messages).
+    ExtensionTexture extensionTexture(const tinygltf::Value& info, const std::string& where) const;
 
     const GltfSource& source_;
     const tinygltf::Model& model_;
 };
+
+ExtensionTexture Importer::extensionTexture(const tinygltf::Value& info, const std::string& where) const {
+    ExtensionTexture out;
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt()) {
+        warn(where + " is not a textureInfo with an integer index; not drawn (kept and saved)");
+        return out;
+    }
+    out.texture = checkedTextureIndex(source_, info.Get("index").Get<int>(), where);
+    if (info.Has("texCoord")) {
+        const tinygltf::Value& set = info.Get("texCoord");
+        if (set.IsInt() && set.Get<int>() >= 0)
+            out.texCoord = set.Get<int>();
+        else
+            warn(where + " texCoord is not a non-negative integer; Lit uses TEXCOORD_0");
+    }
+    if (info.Has("extensions") && info.Get("extensions").IsObject()) {
+        const tinygltf::Value& extensions = info.Get("extensions");
+        tinygltf::ExtensionMap map;
+        for (const std::string& key : extensions.Keys()) map[key] = extensions.Get(key);
+        out.transform =
+            gltfkeep::readTextureTransform(map, [&](const std::string& problem) { warn(where + ": " + problem); });
+    }
+    const int set = out.transform.texCoord >= 0 ? out.transform.texCoord : out.texCoord;
+    if (out.texture >= 0 && set > 1)
+        warn(where + " uses TEXCOORD_" + std::to_string(set) +
+             "; Lit draws TEXCOORD_0 and TEXCOORD_1 and draws it with TEXCOORD_0 (the file's choice is saved back)");
+    return out;
+}
 
 // Notes a file's number that a float cannot hold exactly (scene/Scene.h: FileNumbers).
 void noteNumber(FileNumbers& numbers, const std::string& key, double file) {
@@ -327,6 +357,11 @@ void Importer::loadMaterials(Scene& scene) const {
         out.alphaCutoff = static_cast<float>(in.alphaCutoff);
         out.doubleSided = in.doubleSided;
         gltfkeep::readMaterialLayers(in.extensions, out, [&](const std::string& problem) { warn(what + " " + problem); });
+        if (const auto it = in.extensions.find(gltfkeep::kTransmissionExtension);
+            it != in.extensions.end() && it->second.IsObject() && it->second.Has("transmissionTexture"))
+            out.transmissionTexture =
+                extensionTexture(it->second.Get("transmissionTexture"),
+                                 what + " " + gltfkeep::kTransmissionExtension + " transmissionTexture");
         out.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_materials_emissive_strength"});
         out.textureTexCoord = {pbr.baseColorTexture.texCoord, pbr.metallicRoughnessTexture.texCoord,
                                in.normalTexture.texCoord, in.emissiveTexture.texCoord, in.occlusionTexture.texCoord};

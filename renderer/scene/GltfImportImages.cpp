@@ -170,7 +170,7 @@ void importImages(const GltfSource& source, Scene& scene) {
     for (const Material& m : scene.materials) {
         for (int t : {m.baseColorTexture, m.emissiveTexture})
             if (int i = imageOf(t); i >= 0) usedAsColour[static_cast<std::size_t>(i)] = 1;
-        for (int t : {m.metallicRoughnessTexture, m.normalTexture, m.occlusionTexture})
+        for (int t : {m.metallicRoughnessTexture, m.normalTexture, m.occlusionTexture, m.transmissionTexture.texture})
             if (int i = imageOf(t); i >= 0) usedAsData[static_cast<std::size_t>(i)] = 1;
     }
 

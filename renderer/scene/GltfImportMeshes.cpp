@@ -13,6 +13,7 @@
 
 #include "scene/GltfImportKept.h"
 #include "scene/GltfKeep.h"
+#include "scene/GltfMaterialLayers.h"
 #include "scene/GltfTextureTransform.h"
 #include "scene/GltfValidate.h"
 #include "scene/Tangents.h"
@@ -57,6 +58,19 @@ const char* referenceReadingUvSet1(const GltfSource& source, int material) {
     if (drawnUvSet(m->normalTexture) == 1) return "normalTexture";
     if (drawnUvSet(m->emissiveTexture) == 1) return "emissiveTexture";
     if (drawnUvSet(m->occlusionTexture) == 1) return "occlusionTexture";
+    // The extension's reference is JSON to tinygltf: the same reading, by hand.
+    if (const auto it = m->extensions.find(gltfkeep::kTransmissionExtension);
+        it != m->extensions.end() && it->second.IsObject() && it->second.Has("transmissionTexture")) {
+        const tinygltf::Value& info = it->second.Get("transmissionTexture");
+        int set = info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").Get<int>() : 0;
+        if (info.Has("extensions") && info.Get("extensions").IsObject()) {
+            tinygltf::ExtensionMap map;
+            for (const std::string& key : info.Get("extensions").Keys()) map[key] = info.Get("extensions").Get(key);
+            const int transformSet = gltfkeep::readTextureTransform(map, [](const std::string&) {}).texCoord;
+            if (transformSet >= 0) set = transformSet;
+        }
+        if (set == 1 && info.Has("index")) return "transmissionTexture";
+    }
     return nullptr;
 }
 

@@ -156,7 +156,6 @@ void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& mate
     if (const tinygltf::Value* transmission = object(kTransmissionExtension)) {
         const std::string where = kTransmissionExtension;
         material.transmission = factorIn(*transmission, "transmissionFactor", 0.0f, 0.0, 1.0, where, warn);
-        warnTextures(*transmission, {"transmissionTexture"}, where, warn);
     }
     if (const tinygltf::Value* volume = object(kVolumeExtension)) {
         const std::string where = kVolumeExtension;

@@ -75,13 +75,16 @@ gl::Sampler makeSampler(const SamplerState& state, std::size_t index) {
 // The material's texture transforms and UV sets as material.glsl's uUvTransforms wants them.
 GpuScene::UvTransforms uvTransformsOf(const Material& m) {
     static_assert(2 * LIT_MATERIAL_SLOTS == std::tuple_size_v<GpuScene::UvTransforms>);
-    static_assert(LIT_MATERIAL_SLOTS == std::tuple_size_v<decltype(m.textureTransforms)>);
+    static_assert(LIT_MATERIAL_SLOT_TRANSMISSION == std::tuple_size_v<decltype(m.textureTransforms)>);
     GpuScene::UvTransforms out{};
-    for (std::size_t slot = 0; slot < m.textureTransforms.size(); ++slot) {
-        const std::array<glm::vec3, 2> rows = uvTransformRows(m.textureTransforms[slot]);
-        out[2 * slot] = glm::vec4(rows[0], static_cast<float>(drawnTexCoord(m, slot)));
+    const auto put = [&out](std::size_t slot, const TextureTransform& transform, int uvSet) {
+        const std::array<glm::vec3, 2> rows = uvTransformRows(transform);
+        out[2 * slot] = glm::vec4(rows[0], static_cast<float>(uvSet));
         out[2 * slot + 1] = glm::vec4(rows[1], 0.0f);
-    }
+    };
+    for (std::size_t slot = 0; slot < m.textureTransforms.size(); ++slot)
+        put(slot, m.textureTransforms[slot], drawnTexCoord(m, slot));
+    put(LIT_MATERIAL_SLOT_TRANSMISSION, m.transmissionTexture.transform, drawnTexCoord(m.transmissionTexture));
     return out;
 }
 
@@ -250,11 +253,13 @@ void GpuScene::updateMaterials(const Scene& scene) {
     for (const Material& m : scene.materials) {
         gpu::GpuMaterial g = toGpu(m);
         MaterialTextures t{textureId(m.baseColorTexture), textureId(m.metallicRoughnessTexture),
-                           textureId(m.normalTexture), textureId(m.emissiveTexture), textureId(m.occlusionTexture)};
+                           textureId(m.normalTexture),    textureId(m.emissiveTexture),
+                           textureId(m.occlusionTexture), textureId(m.transmissionTexture.texture)};
         // A texture that failed to load must not be sampled as if present.
         g.textures = glm::ivec4(t.baseColor.texture != 0, t.metallicRoughness.texture != 0, t.normal.texture != 0,
                                 t.emissive.texture != 0);
         g.modes.x = t.occlusion.texture != 0;
+        g.modes.w = t.transmission.texture != 0;
         table.push_back(g);
         sheetMaterials_.push_back(drawnAsSheet(m));
         materialTextures_.push_back(t);
@@ -286,11 +291,12 @@ void GpuScene::bindMaterialTextures(int material, Bind bind) const {
     bindSlot(LIT_TEX_NORMAL, t.normal);
     bindSlot(LIT_TEX_EMISSIVE, t.emissive);
     bindSlot(LIT_TEX_OCCLUSION, t.occlusion);
+    bindSlot(LIT_TEX_TRANSMISSION, t.transmission);
 }
 
 void GpuScene::unbindMaterialSamplers() {
     for (const GLuint unit : {LIT_TEX_BASE_COLOR, LIT_TEX_METALLIC_ROUGHNESS, LIT_TEX_NORMAL, LIT_TEX_EMISSIVE,
-                              LIT_TEX_OCCLUSION})
+                              LIT_TEX_OCCLUSION, LIT_TEX_TRANSMISSION})
         glBindSampler(unit, 0);
 }
 

@@ -52,7 +52,7 @@ class GpuScene {
 public:
     // A material's KHR_texture_transform rows, two per texture reference, the first's w its UV
     // set (material.glsl's uUvTransforms, set per draw).
-    using UvTransforms = std::array<glm::vec4, 10>;
+    using UvTransforms = std::array<glm::vec4, 12>;
 
     GpuScene() = default;
     // Primitives of more than `maxChunkTriangles` triangles are split into chunks of at most that
@@ -140,7 +140,7 @@ private:
     bool hasSheets_ = false;               // some material is a sheet
     // Per material slot, in the order base colour, metallic-roughness, normal, emissive, occlusion.
     struct MaterialTextures {
-        TextureBinding baseColor, metallicRoughness, normal, emissive, occlusion;
+        TextureBinding baseColor, metallicRoughness, normal, emissive, occlusion, transmission;
     };
     std::vector<MaterialTextures> materialTextures_;  // per material, + default at the end
     std::vector<UvTransforms> materialUvTransforms_;  // per material, + default at the end

@@ -228,6 +228,15 @@ struct Texture {
 enum class AlphaMode { Opaque, Mask, Blend };
 
 // glTF 2.0 metallic-roughness material. Texture fields are indices into Scene::textures, -1 = none.
+// A texture reference inside a material extension (KHR_materials_transmission's
+// transmissionTexture): drawn from here, saved as the extension's JSON the file had.
+struct ExtensionTexture {
+    int texture = -1;  // index into Scene::textures, -1 = none
+    int texCoord = 0;  // the TEXCOORD_n set it names
+    TextureTransform transform{};
+    bool operator==(const ExtensionTexture&) const = default;
+};
+
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f};  // linear RGBA
@@ -259,6 +268,8 @@ struct Material {
     // scattering diffusely, 0..1. Lit draws every transmissive surface as a thin sheet: light passes
     // straight through, dimmed by transmittanceOfSheet (docs/MATERIALS.md, "Transmission").
     float transmission = 0.0f;
+    // KHR_materials_transmission.transmissionTexture: its red channel multiplies `transmission`.
+    ExtensionTexture transmissionTexture{};
     // KHR_materials_volume, read and saved; Lit draws no refraction or absorption (a thin sheet).
     float thickness = 0.0f;                        // metres in the mesh's space; 0: thin-walled
     float attenuationDistance = 0.0f;              // metres; 0: infinite (the file leaves it out)
@@ -295,6 +306,11 @@ struct Material {
 inline int drawnTexCoord(const Material& m, std::size_t slot) {
     const int transformSet = m.textureTransforms[slot].texCoord;
     return (transformSet >= 0 ? transformSet : m.textureTexCoord[slot]) == 1 ? 1 : 0;
+}
+
+// The same for a reference inside a material extension.
+inline int drawnTexCoord(const ExtensionTexture& t) {
+    return (t.transform.texCoord >= 0 ? t.transform.texCoord : t.texCoord) == 1 ? 1 : 0;
 }
 
 enum class LightType { Directional, Point, Spot };

@@ -19,6 +19,7 @@ layout(binding = LIT_TEX_METALLIC_ROUGHNESS) uniform sampler2D metallicRoughness
 layout(binding = LIT_TEX_NORMAL) uniform sampler2D normalTexture;
 layout(binding = LIT_TEX_EMISSIVE) uniform sampler2D emissiveTexture;
 layout(binding = LIT_TEX_OCCLUSION) uniform sampler2D occlusionTexture;
+layout(binding = LIT_TEX_TRANSMISSION) uniform sampler2D transmissionTexture;
 
 // Per texture reference (LIT_MATERIAL_SLOT_*), the two rows of its KHR_texture_transform as a
 // 2×3 matrix, xyz each (scene/TextureTransform.h; identity without the extension), and in the
@@ -54,6 +55,13 @@ vec4 materialBaseColor(GpuMaterial m, vec4 uv) {
     if (m.textures.x != 0) c *= texture(baseColorTexture, materialUv(LIT_MATERIAL_SLOT_BASE_COLOR, uv));
 #endif
     return c;
+}
+
+// KHR_materials_transmission's share at mesh UVs `uv`: the factor × the texture's red channel.
+float materialTransmission(GpuMaterial m, vec4 uv) {
+    float t = m.alpha.y;
+    if (m.modes.w != 0) t *= texture(transmissionTexture, materialUv(LIT_MATERIAL_SLOT_TRANSMISSION, uv)).r;
+    return t;
 }
 
 // True when an alpha-masked fragment must be discarded.

@@ -37,8 +37,9 @@ using mat4 = glm::mat4;
 #define LIT_LOC_NORMAL_MATRIX 1    // mat4 inverse transpose of the model matrix
 #define LIT_LOC_MATERIAL 2         // int index into GpuMaterial[]
 #define LIT_LOC_NODE_ID 3          // uint node index + 1 the G-buffer writes to its ID target (0 = background)
-#define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS]: the draw's texture transforms (material.glsl)
-#define LIT_LOC_PRIMITIVE 14       // uint primitive index within the node's mesh the G-buffer writes beside the node ID
+#define LIT_LOC_UV_TRANSFORMS \
+    4  // vec4[2 × LIT_MATERIAL_SLOTS] (locations 4 .. 15): the draw's texture transforms (material.glsl)
+#define LIT_LOC_PRIMITIVE 16  // uint primitive index within the node's mesh the G-buffer writes beside the node ID
 
 // ---- Texture units -----------------------------------------------------------------------
 // Material textures (G-buffer, shadow alpha test, voxelization).
@@ -127,7 +128,9 @@ using mat4 = glm::mat4;
 // The camera's shadow cascades of the directional lights (ShadowPass::executeCascades): cascade c
 // of cascaded light k at layer k × cascades + c (sampler2DArrayShadow; GpuShadowCascade::params.z).
 #define LIT_TEX_SHADOW_CASCADES (LIT_TEX_NEAR_IRRADIANCE_FIRST + LIT_MAX_NEAR_LEVELS)
-#define LIT_TEX_UNIT_COUNT (LIT_TEX_SHADOW_CASCADES + 1)  // units 0 .. this − 1 are bound (Capabilities.cpp)
+// KHR_materials_transmission's transmissionTexture (sheets and their shadows; material.glsl).
+#define LIT_TEX_TRANSMISSION (LIT_TEX_SHADOW_CASCADES + 1)
+#define LIT_TEX_UNIT_COUNT (LIT_TEX_TRANSMISSION + 1)  // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
@@ -291,7 +294,8 @@ using mat4 = glm::mat4;
 #define LIT_MATERIAL_TEXTURE_OCCLUSION 16
 #define LIT_MATERIAL_TEXTURES_ALL 31
 
-// A material's texture references in the order of Material's per-reference arrays (scene/Scene.h);
+// A material's texture references in the order of Material's per-reference arrays (scene/Scene.h),
+// then the extensions' references;
 // elements 2 × slot and 2 × slot + 1 of the LIT_LOC_UV_TRANSFORMS uniform are that reference's
 // KHR_texture_transform.
 #define LIT_MATERIAL_SLOT_BASE_COLOR 0
@@ -299,7 +303,8 @@ using mat4 = glm::mat4;
 #define LIT_MATERIAL_SLOT_NORMAL 2
 #define LIT_MATERIAL_SLOT_EMISSIVE 3
 #define LIT_MATERIAL_SLOT_OCCLUSION 4
-#define LIT_MATERIAL_SLOTS 5
+#define LIT_MATERIAL_SLOT_TRANSMISSION 5  // Material::transmissionTexture (KHR_materials_transmission)
+#define LIT_MATERIAL_SLOTS 6
 
 // ---- Structs ------------------------------------------------------------------------------
 // Per-frame camera and output parameters. std140, binding LIT_UBO_FRAME.
@@ -334,7 +339,8 @@ struct GpuMaterial {
     vec4 emissive;            // rgb emissive factor × strength, a unused
     vec4 params;              // x metallic, y roughness, z normal scale, w occlusion strength
     ivec4 textures;           // x base colour, y metallic-roughness, z normal, w emissive (1 = present)
-    ivec4 modes;              // x occlusion texture present, y alpha mode (LIT_ALPHA_*), z double sided, w unused
+    ivec4 modes;              // x occlusion texture present, y alpha mode (LIT_ALPHA_*), z double sided,
+                              // w transmission texture present
     vec4 alpha;               // x alpha cutoff, y transmission (KHR_materials_transmission), zw unused
     vec4 specular;            // rgb dielectric F0, a dielectric F90 (KHR_materials_ior, _specular; docs/MATERIALS.md)
     vec4 clearcoat;           // x coat weight, y coat roughness (perceptual) (KHR_materials_clearcoat),

@@ -152,12 +152,18 @@ TEST(MaterialLayers, SaveWritesTheFactorsIntoTheFilesObjects) {
     EXPECT_EQ(back.materials[0].clearcoatFactor, 0.9f);
 }
 
-// Transmission and volume: read (the volume's numbers kept though Lit draws a thin sheet, and
-// named in one warning), an attenuation distance that is no distance refused, edits saved.
+// Transmission and volume: read (the transmission texture with its UV set and transform; the
+// volume's numbers kept though Lit draws a thin sheet, and named in one warning), an attenuation
+// distance that is no distance refused, edits saved.
 TEST(MaterialLayers, TransmissionAndVolumeAreReadAndSaved) {
     TempDir dir;
     nlohmann::json doc = baseDoc();
-    addExtension(doc, "KHR_materials_transmission", {{"transmissionFactor", 0.8}, {"transmissionTexture", {{"index", 0}}}});
+    addExtension(
+        doc, "KHR_materials_transmission",
+        {{"transmissionFactor", 0.8},
+         {"transmissionTexture",
+          {{"index", 0}, {"texCoord", 1}, {"extensions", {{"KHR_texture_transform", {{"scale", {2.0, 3.0}}}}}}}}});
+    doc["extensionsUsed"].push_back("KHR_texture_transform");
     addExtension(doc, "KHR_materials_volume",
                  {{"thicknessFactor", 0.02}, {"attenuationDistance", 1.5}, {"attenuationColor", {0.9, 0.8, 0.7}}});
     addExtension(doc, "KHR_materials_volume", {{"attenuationDistance", -1.0}}, 1);
@@ -165,12 +171,17 @@ TEST(MaterialLayers, TransmissionAndVolumeAreReadAndSaved) {
     EXPECT_EQ(loaded.warnings.find("which Lit does not support"), std::string::npos) << loaded.warnings;
     const Material& m = loaded.scene.materials.at(0);
     EXPECT_FLOAT_EQ(m.transmission, 0.8f);
+    EXPECT_EQ(m.transmissionTexture.texture, 0);
+    EXPECT_EQ(m.transmissionTexture.texCoord, 1);
+    EXPECT_TRUE(m.transmissionTexture.transform.present);
+    EXPECT_EQ(m.transmissionTexture.transform.scale, glm::dvec2(2.0, 3.0));
     EXPECT_FLOAT_EQ(m.thickness, 0.02f);
     EXPECT_FLOAT_EQ(m.attenuationDistance, 1.5f);
     EXPECT_EQ(m.attenuationColor, glm::vec3(0.9f, 0.8f, 0.7f));
     EXPECT_EQ(loaded.scene.materials.at(1).attenuationDistance, 0.0f) << "infinite";
     EXPECT_EQ(loaded.scene.materials.at(1).transmission, 0.0f);
-    for (const char* expected : {"KHR_materials_transmission transmissionTexture is not drawn",
+    EXPECT_EQ(loaded.warnings.find("transmissionTexture is not drawn"), std::string::npos) << loaded.warnings;
+    for (const char* expected : {"has no TEXCOORD_1, which its material's transmissionTexture reads",
                                  "KHR_materials_volume: Lit draws the volume as a thin sheet",
                                  "KHR_materials_volume attenuationDistance -1.000000 is not a positive distance"})
         EXPECT_NE(loaded.warnings.find(expected), std::string::npos) << expected << "\n" << loaded.warnings;
@@ -181,7 +192,9 @@ TEST(MaterialLayers, TransmissionAndVolumeAreReadAndSaved) {
     const nlohmann::json edited = nlohmann::json::parse(readText(dir / "edited.gltf"));
     const nlohmann::json& first = edited["materials"][0]["extensions"];
     EXPECT_EQ(first["KHR_materials_transmission"]["transmissionFactor"].get<double>(), 1.0);
-    EXPECT_EQ(first["KHR_materials_transmission"]["transmissionTexture"]["index"], 0) << "the texture is kept";
+    EXPECT_EQ(first["KHR_materials_transmission"]["transmissionTexture"],
+              doc["materials"][0]["extensions"]["KHR_materials_transmission"]["transmissionTexture"])
+        << "the texture reference is kept as the file had it";
     EXPECT_EQ(first["KHR_materials_volume"]["thicknessFactor"].get<double>(), 0.02) << "the file's number";
     EXPECT_EQ(first["KHR_materials_volume"]["attenuationDistance"].get<double>(), 1.5);
     EXPECT_EQ(edited["materials"][1]["extensions"]["KHR_materials_transmission"]["transmissionFactor"].get<double>(), 0.5);
@@ -190,6 +203,35 @@ TEST(MaterialLayers, TransmissionAndVolumeAreReadAndSaved) {
     EXPECT_EQ(back.materials[0].transmission, 1.0f);
     EXPECT_EQ(back.materials[1].transmission, 0.5f);
     EXPECT_FLOAT_EQ(back.materials[0].attenuationColor.z, 0.7f);
+    EXPECT_EQ(back.materials[0].transmissionTexture, m.transmissionTexture);
+}
+
+// A transmission texture reference that is not one is named and not drawn; one out of range is
+// refused like any texture reference.
+TEST(MaterialLayers, MalformedTransmissionTextureIsReported) {
+    TempDir dir;
+    nlohmann::json doc = baseDoc();
+    addExtension(doc, "KHR_materials_transmission", {{"transmissionFactor", 1.0}, {"transmissionTexture", "glass"}});
+    Loaded loaded = loadDoc(dir, doc);
+    EXPECT_NE(loaded.warnings.find("transmissionTexture is not a textureInfo with an integer index; not drawn"),
+              std::string::npos)
+        << loaded.warnings;
+    EXPECT_EQ(loaded.scene.materials.at(0).transmissionTexture.texture, -1);
+
+    doc = baseDoc();
+    addExtension(doc, "KHR_materials_transmission",
+                 {{"transmissionFactor", 1.0}, {"transmissionTexture", {{"index", 7}}}});
+    std::ofstream(dir / "scene.gltf") << doc.dump();
+    Log log;
+    log.setSink(nullptr);
+    try {
+        loadGltf(dir / "scene.gltf", log);
+        ADD_FAILURE() << "an out-of-range texture index must be refused";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("transmissionTexture refers to texture 7, which is out of range"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 }  // namespace
