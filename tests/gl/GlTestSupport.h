@@ -1,6 +1,15 @@
 #pragma once
 // Shared helpers for GL tests: a headless context per process, the Cornell box, and image
-// sampling in normalized coordinates.
+// sampling in normalized coordinates and by regions.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include "Log.h"
 #include "RenderSettings.h"
@@ -11,14 +20,6 @@
 #include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 #include "scene/Scene.h"
-
-#include <glm/glm.hpp>
-#include <gtest/gtest.h>
-
-#include <cmath>
-#include <filesystem>
-#include <memory>
-#include <vector>
 
 namespace lit::test {
 
@@ -83,6 +84,30 @@ inline double relativeDifference(const HdrImage& a, const HdrImage& b) {
         total += b.rgb[i];
     }
     return difference / total;
+}
+
+// The inner pixels of each region label 0 .. labels − 1 of a width × height image (`region` per
+// pixel, −1 for none): those whose four neighbours carry the same label, so that no pixel
+// straddles a region's edge.
+inline std::vector<std::vector<std::size_t>> innerPixels(const std::vector<int>& region, int labels, int width,
+                                                         int height) {
+    std::vector<std::vector<std::size_t>> out(static_cast<std::size_t>(labels));
+    for (int y = 1; y + 1 < height; ++y)
+        for (int x = 1; x + 1 < width; ++x) {
+            const std::size_t p = static_cast<std::size_t>(y * width + x);
+            bool inner = region[p] >= 0;
+            for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
+                inner = inner && region[static_cast<std::size_t>((y + dy) * width + x + dx)] == region[p];
+            if (inner) out[static_cast<std::size_t>(region[p])].push_back(p);
+        }
+    return out;
+}
+
+// Mean RGB of `rgb` (3 floats a pixel) over `pixels`.
+inline glm::dvec3 meanRgb(const std::vector<float>& rgb, const std::vector<std::size_t>& pixels) {
+    glm::dvec3 sum(0.0);
+    for (const std::size_t p : pixels) sum += glm::dvec3(rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]);
+    return pixels.empty() ? sum : sum / static_cast<double>(pixels.size());
 }
 
 // A headless GL 4.5 context for the duration of one test (each test case runs in its own

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "CheckerPictures.h"
 #include "GlTestSupport.h"
 #include "reference/PathTracer.h"
 #include "reference/ReferenceScene.h"
@@ -21,27 +22,6 @@ using reference::ReferenceScene;
 using reference::ReferenceSettings;
 
 constexpr int kWidth = 256, kHeight = 128;  // the Blender camera's aspect (2:1)
-
-// 1 red, 2 blue, 0 neither (background, a blend at an edge).
-std::vector<int> classes(const std::vector<float>& rgb) {
-    std::vector<int> out(rgb.size() / 3);
-    for (std::size_t p = 0; p < out.size(); ++p) {
-        const glm::vec3 c{rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]};
-        out[p] = c.r > 2.0f * c.b && c.r > 0.02f ? 1 : c.b > 2.0f * c.r && c.b > 0.02f ? 2 : 0;
-    }
-    return out;
-}
-
-// The fraction of the pixels on a plane (mask) where both images show the same checker colour.
-double agreement(const std::vector<int>& a, const std::vector<int>& b, const std::vector<bool>& mask) {
-    int same = 0, total = 0;
-    for (std::size_t p = 0; p < mask.size(); ++p) {
-        if (!mask[p]) continue;
-        ++total;
-        same += a[p] == b[p] && a[p] != 0;
-    }
-    return total ? double(same) / total : 0.0;
-}
 
 class SecondUvSetPictures : public GlFixture {
 protected:
@@ -70,21 +50,14 @@ protected:
     }
 
     std::vector<int> rasterClasses(const Scene& scene, const RenderSettings& settings) {
-        return classes(render(scene, settings).rgb);
+        return checkerClasses(render(scene, settings).rgb);
     }
 
     // Checker colour changes along the pixel row through the left plane's centre.
     int edgesAlongLeftRow(const std::vector<int>& cls) const {
         const glm::ivec2 p =
             projectToPixel(cameraFor(baked_, settings_), glm::vec3(-1.1f, 0.0f, -0.25f), kWidth, kHeight);
-        int edges = 0, last = 0;
-        for (int x = 0; x < kWidth; ++x) {
-            const std::size_t i = static_cast<std::size_t>(p.y * kWidth + x);
-            if (!onLeft_[i] || cls[i] == 0) continue;
-            edges += last != 0 && cls[i] != last;
-            last = cls[i];
-        }
-        return edges;
+        return checkerEdgesAlongRow(cls, onLeft_, p.y, kWidth);
     }
 
     Scene secondSet_, baked_, firstSet_;
@@ -97,7 +70,7 @@ TEST_F(SecondUvSetPictures, RasterizerSamplesTheSetTheMaterialNames) {
     const std::vector<int> baked = rasterClasses(baked_, settings_);
     const std::vector<int> second = rasterClasses(secondSet_, settings_);
     const std::vector<int> first = rasterClasses(firstSet_, settings_);
-    const double same = agreement(second, baked, onLeft_), without = agreement(first, baked, onLeft_);
+    const double same = checkerAgreement(second, baked, onLeft_), without = checkerAgreement(first, baked, onLeft_);
     std::printf(
         "rasterizer: TEXCOORD_1 vs baked %.4f, TEXCOORD_0 vs baked %.4f; left row edges %d (baked %d, "
         "TEXCOORD_0 %d)\n",
@@ -119,7 +92,7 @@ TEST_F(SecondUvSetPictures, VoxelizationSamplesTheSetTheMaterialNames) {
     const std::vector<int> baked = rasterClasses(baked_, s);
     const std::vector<int> second = rasterClasses(secondSet_, s);
     const std::vector<int> first = rasterClasses(firstSet_, s);
-    const double same = agreement(second, baked, onLeft_), without = agreement(first, baked, onLeft_);
+    const double same = checkerAgreement(second, baked, onLeft_), without = checkerAgreement(first, baked, onLeft_);
     std::printf("voxels: TEXCOORD_1 vs baked %.4f, TEXCOORD_0 vs baked %.4f\n", same, without);
     EXPECT_GT(same, 0.95);  // voxels along a checker edge average both colours either way
     EXPECT_LT(without, 0.8);
@@ -135,12 +108,12 @@ TEST_F(SecondUvSetPictures, ReferenceSamplesTheSetTheMaterialNames) {
         const ReferenceScene rs(scene, quiet);
         PathTracer tracer(rs, camera, kWidth, kHeight, referenceSettings);
         tracer.addSamples(4);
-        return classes(tracer.image().viewRgb(View::Final, settings_));
+        return checkerClasses(tracer.image().viewRgb(View::Final, settings_));
     };
     const std::vector<int> baked = traced(baked_);
     const std::vector<int> second = traced(secondSet_);
     const std::vector<int> first = traced(firstSet_);
-    const double same = agreement(second, baked, onLeft_), without = agreement(first, baked, onLeft_);
+    const double same = checkerAgreement(second, baked, onLeft_), without = checkerAgreement(first, baked, onLeft_);
     std::printf("reference: TEXCOORD_1 vs baked %.4f, TEXCOORD_0 vs baked %.4f; left row edges %d\n", same, without,
                 edgesAlongLeftRow(second));
     EXPECT_GT(same, 0.95);  // pixel-area samples blend the colours at edges, which count as disagreement

@@ -27,21 +27,6 @@ using reference::ReferenceSettings;
 
 constexpr int kWidth = 160, kHeight = 90;  // the Blender camera's 16:9
 
-// The inner pixels of each region label ≥ 0 of a kWidth × kHeight image (bottom-up rows): those
-// whose four neighbours carry the same label, so that no pixel straddles a region's edge.
-std::vector<std::vector<std::size_t>> innerPixels(const std::vector<int>& region, int labels) {
-    std::vector<std::vector<std::size_t>> out(static_cast<std::size_t>(labels));
-    for (int y = 1; y + 1 < kHeight; ++y)
-        for (int x = 1; x + 1 < kWidth; ++x) {
-            const std::size_t p = static_cast<std::size_t>(y * kWidth + x);
-            bool inner = region[p] >= 0;
-            for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
-                inner = inner && region[static_cast<std::size_t>((y + dy) * kWidth + x + dx)] == region[p];
-            if (inner) out[static_cast<std::size_t>(region[p])].push_back(p);
-        }
-    return out;
-}
-
 class Sheets : public GlFixture {
 protected:
     void SetUp() override {
@@ -83,7 +68,8 @@ protected:
                     region[p] = 5;
             }
         }
-        const std::vector<std::vector<std::size_t>> inner = innerPixels(region, static_cast<int>(std::size(kRegions)));
+        const std::vector<std::vector<std::size_t>> inner =
+            innerPixels(region, static_cast<int>(std::size(kRegions)), kWidth, kHeight);
         for (std::size_t r = 0; r < inner.size(); ++r) pixels_[kRegions[r]] = inner[r];
         for (const char* name : kRegions) ASSERT_GT(pixels_[name].size(), 40u) << name << ": the region must be in view";
     }
@@ -96,11 +82,7 @@ protected:
     // Mean RGB of `rgb` (bottom-up rows, 3 floats a pixel) over each region's inner pixels.
     std::map<std::string, glm::dvec3> perRegion(const std::vector<float>& rgb) const {
         std::map<std::string, glm::dvec3> out;
-        for (const auto& [name, list] : pixels_) {
-            glm::dvec3 sum(0.0);
-            for (const std::size_t p : list) sum += glm::dvec3(rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]);
-            out[name] = sum / static_cast<double>(list.size());
-        }
+        for (const auto& [name, list] : pixels_) out[name] = meanRgb(rgb, list);
         return out;
     }
     reference::ReferenceImage traced(int bounces, int samples) {
@@ -190,7 +172,7 @@ TEST_F(Sheets, PointLightShadowsThroughSheetsMatchTheReference) {
         else if (blocker.node == nodeNamed("tinted"))
             region[p] = 0;
     }
-    const std::vector<std::vector<std::size_t>> inner = innerPixels(region, 2);
+    const std::vector<std::vector<std::size_t>> inner = innerPixels(region, 2, kWidth, kHeight);
     const std::vector<std::size_t>& tintedShadow = inner[0];
     const std::vector<std::size_t>& sunlit = inner[1];
     ASSERT_GT(tintedShadow.size(), 40u);
@@ -200,16 +182,11 @@ TEST_F(Sheets, PointLightShadowsThroughSheetsMatchTheReference) {
     renderer_->render(scene, camera_, s);
     const std::vector<float> lit = renderer_->readHdrRgb();
     const std::vector<float> ref = tracedAtPixelCentres(rs, camera_, kWidth, kHeight, 0, 4).viewRgb(View::Final, s);
-    const auto mean = [](const std::vector<float>& rgb, const std::vector<std::size_t>& pixels) {
-        glm::dvec3 sum(0.0);
-        for (const std::size_t p : pixels) sum += glm::dvec3(rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]);
-        return sum / static_cast<double>(pixels.size());
-    };
-    const glm::dvec3 l = mean(lit, tintedShadow), r = mean(ref, tintedShadow);
+    const glm::dvec3 l = meanRgb(lit, tintedShadow), r = meanRgb(ref, tintedShadow);
     std::printf("point light, floor behind the tinted panel: Lit (%.4f %.4f %.4f) reference (%.4f %.4f %.4f)\n", l.r, l.g,
                 l.b, r.r, r.g, r.b);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(l[c] / r[c], 1.0, 0.05) << "channel " << c;
-    const glm::dvec3 share = l / mean(lit, sunlit);
+    const glm::dvec3 share = l / meanRgb(lit, sunlit);
     EXPECT_GT(share.b, 2.0 * share.r) << "the shadow is tinted";
 }
 

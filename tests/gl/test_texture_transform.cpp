@@ -5,13 +5,13 @@
 // The rasterizer, the voxelization (the Voxels view of the albedo) and the reference tracer must
 // each draw the first like the second, and unlike the first with its transforms removed; a row
 // across the left plane (scale 3, offset 0.25) crosses six checker edges.
-#include "GlTestSupport.h"
-
-#include "reference/PathTracer.h"
-#include "reference/ReferenceScene.h"
-
 #include <algorithm>
 #include <cstdio>
+
+#include "CheckerPictures.h"
+#include "GlTestSupport.h"
+#include "reference/PathTracer.h"
+#include "reference/ReferenceScene.h"
 
 namespace lit::test {
 namespace {
@@ -22,30 +22,6 @@ using reference::ReferenceScene;
 using reference::ReferenceSettings;
 
 constexpr int kWidth = 256, kHeight = 128;  // the Blender camera's aspect (2:1)
-
-// 1 red, 2 blue, 0 neither (background, a blend at an edge).
-int checkerClass(const glm::vec3& c) {
-    if (c.r > 2.0f * c.b && c.r > 0.02f) return 1;
-    if (c.b > 2.0f * c.r && c.b > 0.02f) return 2;
-    return 0;
-}
-
-std::vector<int> classes(const std::vector<float>& rgb) {
-    std::vector<int> out(rgb.size() / 3);
-    for (std::size_t p = 0; p < out.size(); ++p) out[p] = checkerClass({rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]});
-    return out;
-}
-
-// The fraction of the pixels on a plane (mask) where both images show the same checker colour.
-double agreement(const std::vector<int>& a, const std::vector<int>& b, const std::vector<bool>& mask) {
-    int same = 0, total = 0;
-    for (std::size_t p = 0; p < mask.size(); ++p) {
-        if (!mask[p]) continue;
-        ++total;
-        same += a[p] == b[p] && a[p] != 0;
-    }
-    return total ? double(same) / total : 0.0;
-}
 
 class TextureTransformPictures : public GlFixture {
 protected:
@@ -70,29 +46,23 @@ protected:
         for (std::size_t n = 0; n < mapped_.nodes.size(); ++n)
             if (mapped_.nodes[n].name == "left") left_ = static_cast<int>(n);
         ASSERT_GE(left_, 0);
+        for (const FirstHit& h : hits_) onLeft_.push_back(h.node == left_);
     }
 
     std::vector<int> rasterClasses(const Scene& scene, const RenderSettings& settings) {
-        return classes(render(scene, settings).rgb);
+        return checkerClasses(render(scene, settings).rgb);
     }
 
     // Checker colour changes along the pixel row through world point (x, 0, z) on the left plane.
     int edgesAlongLeftRow(const std::vector<int>& cls) const {
         const glm::ivec2 p = projectToPixel(cameraFor(mapped_, settings_), glm::vec3(-1.1f, 0.0f, -0.25f), kWidth, kHeight);
-        int edges = 0, last = 0;
-        for (int x = 0; x < kWidth; ++x) {
-            const std::size_t i = static_cast<std::size_t>(p.y * kWidth + x);
-            if (hits_[i].node != left_ || cls[i] == 0) continue;
-            edges += last != 0 && cls[i] != last;
-            last = cls[i];
-        }
-        return edges;
+        return checkerEdgesAlongRow(cls, onLeft_, p.y, kWidth);
     }
 
     Scene mapped_, baked_, untransformed_;
     RenderSettings settings_;
     std::vector<FirstHit> hits_;
-    std::vector<bool> onPlane_;
+    std::vector<bool> onPlane_, onLeft_;
     int left_ = -1;
 };
 
@@ -100,7 +70,8 @@ TEST_F(TextureTransformPictures, RasterizerDrawsTheMappingAsBlenderBakedIt) {
     const std::vector<int> mapped = rasterClasses(mapped_, settings_);
     const std::vector<int> baked = rasterClasses(baked_, settings_);
     const std::vector<int> untransformed = rasterClasses(untransformed_, settings_);
-    const double same = agreement(mapped, baked, onPlane_), without = agreement(untransformed, baked, onPlane_);
+    const double same = checkerAgreement(mapped, baked, onPlane_),
+                 without = checkerAgreement(untransformed, baked, onPlane_);
     std::printf("rasterizer: transformed vs baked %.4f, untransformed vs baked %.4f; left row edges %d (baked %d, "
                 "untransformed %d)\n",
                 same, without, edgesAlongLeftRow(mapped), edgesAlongLeftRow(baked), edgesAlongLeftRow(untransformed));
@@ -123,7 +94,8 @@ TEST_F(TextureTransformPictures, VoxelizationAppliesTheTransform) {
     const std::vector<int> mapped = rasterClasses(mapped_, s);
     const std::vector<int> baked = rasterClasses(baked_, s);
     const std::vector<int> untransformed = rasterClasses(untransformed_, s);
-    const double same = agreement(mapped, baked, onPlane_), without = agreement(untransformed, baked, onPlane_);
+    const double same = checkerAgreement(mapped, baked, onPlane_),
+                 without = checkerAgreement(untransformed, baked, onPlane_);
     std::printf("voxels: transformed vs baked %.4f, untransformed vs baked %.4f\n", same, without);
     EXPECT_GT(same, 0.95);  // voxels along a checker edge average both colours either way
     EXPECT_LT(without, 0.8);
@@ -141,13 +113,13 @@ TEST_F(TextureTransformPictures, ReferenceAgrees) {
         const ReferenceScene rs(scene, quiet);
         PathTracer tracer(rs, camera, kWidth, kHeight, referenceSettings);
         tracer.addSamples(4);
-        return classes(tracer.image().viewRgb(View::Final, settings_));
+        return checkerClasses(tracer.image().viewRgb(View::Final, settings_));
     };
     const std::vector<int> reference = traced(mapped_);
     const std::vector<int> referenceUntransformed = traced(untransformed_);
     const std::vector<int> raster = rasterClasses(mapped_, settings_);
-    const double same = agreement(reference, raster, onPlane_);
-    const double without = agreement(referenceUntransformed, raster, onPlane_);
+    const double same = checkerAgreement(reference, raster, onPlane_);
+    const double without = checkerAgreement(referenceUntransformed, raster, onPlane_);
     std::printf("reference vs rasterizer: transformed %.4f, untransformed reference %.4f; left row edges %d\n", same,
                 without, edgesAlongLeftRow(reference));
     EXPECT_GT(same, 0.95);

@@ -63,26 +63,16 @@ protected:
                     region[p] = blocker.transmission > 0.5f ? 0 : 1;
             }
         }
-        // Inner pixels only: the four neighbours in the same region, so none straddles an edge.
-        for (int y = 1; y + 1 < kHeight; ++y)
-            for (int x = 1; x + 1 < kWidth; ++x) {
-                const std::size_t p = static_cast<std::size_t>(y * kWidth + x);
-                bool inner = region[p] >= 0;
-                for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
-                    inner = inner && region[static_cast<std::size_t>((y + dy) * kWidth + x + dx)] == region[p];
-                if (inner) pixels_[kRegions[region[p]]].push_back(p);
-            }
+        const std::vector<std::vector<std::size_t>> inner =
+            innerPixels(region, static_cast<int>(std::size(kRegions)), kWidth, kHeight);
+        for (std::size_t r = 0; r < inner.size(); ++r) pixels_[kRegions[r]] = inner[r];
         for (const char* name : kRegions)
             ASSERT_GT(pixels_[name].size(), 30u) << name << ": the region must be in view";
     }
 
     std::map<std::string, glm::dvec3> perRegion(const std::vector<float>& rgb) const {
         std::map<std::string, glm::dvec3> out;
-        for (const auto& [name, list] : pixels_) {
-            glm::dvec3 sum(0.0);
-            for (const std::size_t p : list) sum += glm::dvec3(rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]);
-            out[name] = sum / static_cast<double>(list.size());
-        }
+        for (const auto& [name, list] : pixels_) out[name] = meanRgb(rgb, list);
         return out;
     }
 

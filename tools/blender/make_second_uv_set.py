@@ -24,7 +24,8 @@ import bpy
 from mathutils import Euler, Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import enable_gltf_exporter  # noqa: E402  (this folder, put on the path above)
+from scene_parts import (  # noqa: E402  (this folder, put on the path above)
+    checker_image, enable_gltf_exporter, export_separate, two_planes_camera)
 
 enable_gltf_exporter()
 
@@ -45,13 +46,8 @@ def arguments():
 
 
 def checker(folder):
-    image = bpy.data.images.new("checker", 2, 2, alpha=False)
     # Rows bottom-up: red, blue / blue, red.
-    image.pixels = [*RED, *BLUE, *BLUE, *RED]
-    image.filepath_raw = os.path.join(folder, "checker.png")
-    image.file_format = "PNG"
-    image.save()
-    return image
+    return checker_image(folder, "checker", RED, BLUE)
 
 
 def material(name, image, uv_map):
@@ -94,15 +90,7 @@ def build(image):
         plane.name = name
         add_detail_map(plane, DETAIL[name])
         plane.data.materials.append(material("checker_" + name, image, READS[name]))
-    bpy.ops.object.camera_add(location=(0.0, 0.0, 4.0), rotation=(0.0, 0.0, 0.0))  # looks down −Z, +Y up
-    cam = bpy.context.object
-    cam.name = "camera"
-    cam.data.lens_unit = "FOV"
-    cam.data.sensor_fit = "HORIZONTAL"
-    cam.data.angle = math.radians(62)  # both planes (x from −2.1 to 2.1 m) with a margin
-    bpy.context.scene.camera = cam
-    bpy.context.scene.render.resolution_x = WIDTH
-    bpy.context.scene.render.resolution_y = HEIGHT
+    two_planes_camera(WIDTH, HEIGHT)
 
 
 def keep_only_read_maps():
@@ -120,8 +108,7 @@ def keep_only_read_maps():
 
 
 def export(path):
-    bpy.ops.export_scene.gltf(filepath=path, export_format="GLTF_SEPARATE", export_cameras=True,
-                              export_apply=True)
+    export_separate(path)
 
 
 def main():

@@ -14,14 +14,14 @@
 # The left plane's Mapping is scale (3, 2) and location (0.25, 0): a row across it crosses six
 # checker edges (u from 0.25 to 3.25, an edge every 0.5). The right plane's adds a 30° rotation.
 
-import math
 import os
 import sys
 
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import bake_mapping, enable_gltf_exporter, mapped_image  # noqa: E402  (this folder, put on the path above)
+from scene_parts import (  # noqa: E402  (this folder, put on the path above)
+    bake_mapping, checker_image, enable_gltf_exporter, export_separate, mapped_image, two_planes_camera)
 
 enable_gltf_exporter()
 
@@ -40,13 +40,8 @@ def arguments():
 
 
 def checker(folder):
-    image = bpy.data.images.new("checker", 2, 2, alpha=False)
     # Rows bottom-up: red, blue / blue, red.
-    image.pixels = [*RED, *BLUE, *BLUE, *RED]
-    image.filepath_raw = os.path.join(folder, "checker.png")
-    image.file_format = "PNG"
-    image.save()
-    return image
+    return checker_image(folder, "checker", RED, BLUE)
 
 
 def material(name, image, mapping):
@@ -67,15 +62,7 @@ def build(image):
         plane = bpy.context.object
         plane.name = name
         plane.data.materials.append(material("checker_" + name, image, MAPPINGS[name]))
-    bpy.ops.object.camera_add(location=(0.0, 0.0, 4.0), rotation=(0.0, 0.0, 0.0))  # looks down −Z, +Y up
-    cam = bpy.context.object
-    cam.name = "camera"
-    cam.data.lens_unit = "FOV"
-    cam.data.sensor_fit = "HORIZONTAL"
-    cam.data.angle = math.radians(62)  # both planes (x from −2.1 to 2.1 m) with a margin
-    bpy.context.scene.camera = cam
-    bpy.context.scene.render.resolution_x = WIDTH
-    bpy.context.scene.render.resolution_y = HEIGHT
+    two_planes_camera(WIDTH, HEIGHT)
 
 
 def bake_mappings():
@@ -85,8 +72,7 @@ def bake_mappings():
 
 
 def export(path):
-    bpy.ops.export_scene.gltf(filepath=path, export_format="GLTF_SEPARATE", export_cameras=True,
-                              export_apply=True)
+    export_separate(path)
 
 
 def main():

@@ -21,7 +21,8 @@ import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from scene_parts import (  # noqa: E402  (this folder, put on the path above)
-    black_world, build_and_export, enable_gltf_exporter, floor_plane, hard_sun, principled, scene_camera)
+    black_world, build_and_export, checker_image, enable_gltf_exporter, floor_plane, hard_sun, principled,
+    scene_camera)
 
 enable_gltf_exporter()
 
@@ -36,12 +37,8 @@ def arguments():
 
 def checker_glass(folder):
     """White glass, roughness 0, IOR 1.5, whose Transmission is a black/white checker."""
-    image = bpy.data.images.new("transmission_checker", 2, 2, alpha=False, is_data=True)  # Non-Color data
-    # Rows bottom-up: white, black / black, white.
-    image.pixels = [*WHITE, *BLACK, *BLACK, *WHITE]
-    image.filepath_raw = os.path.join(folder, "transmission_checker.png")
-    image.file_format = "PNG"
-    image.save()
+    # Rows bottom-up: white, black / black, white; Non-Color data.
+    image = checker_image(folder, "transmission_checker", WHITE, BLACK, is_data=True)
     m = principled("pane", (1.0, 1.0, 1.0), roughness=0.0)
     nodes, links = m.node_tree.nodes, m.node_tree.links
     bsdf = nodes["Principled BSDF"]

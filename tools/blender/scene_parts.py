@@ -159,3 +159,34 @@ def cycles_on_cpu(samples):
     scene.view_settings.view_transform = "Standard"
     scene.view_settings.look = "None"
     return scene
+
+
+def checker_image(folder, name, first, second, is_data=False):
+    """A 2×2 checker image `name` (rows bottom-up: first, second / second, first; RGBA colours),
+    saved as folder/name.png; `is_data` makes it Non-Color data (a factor, not a colour)."""
+    image = bpy.data.images.new(name, 2, 2, alpha=False, is_data=is_data)
+    image.pixels = [*first, *second, *second, *first]
+    image.filepath_raw = os.path.join(folder, name + ".png")
+    image.file_format = "PNG"
+    image.save()
+    return image
+
+
+def two_planes_camera(width, height):
+    """The camera over the two 2 m planes at x = ±1.1 m: 4 m up, looking down −Z with +Y up, wide
+    enough for both (x from −2.1 to 2.1 m) with a margin."""
+    bpy.ops.object.camera_add(location=(0.0, 0.0, 4.0), rotation=(0.0, 0.0, 0.0))
+    cam = bpy.context.object
+    cam.name = "camera"
+    cam.data.lens_unit = "FOV"
+    cam.data.sensor_fit = "HORIZONTAL"
+    cam.data.angle = math.radians(62)
+    bpy.context.scene.camera = cam
+    bpy.context.scene.render.resolution_x = width
+    bpy.context.scene.render.resolution_y = height
+
+
+def export_separate(path):
+    """Blender's glTF exporter: path (.gltf + .bin + images), cameras included, modifiers applied."""
+    bpy.ops.export_scene.gltf(filepath=path, export_format="GLTF_SEPARATE", export_cameras=True,
+                              export_apply=True)
