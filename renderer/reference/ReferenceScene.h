@@ -2,7 +2,7 @@
 // A lit::Scene made ready for path tracing: its triangles in world space in an Embree scene,
 // materials resolved at a hit the way the G-buffer pass resolves them (shaders/gbuffer.frag.glsl:
 // base colour, metal-rough, normal, emissive and occlusion textures, alpha mask; the ior, specular,
-// sheen and clear-coat factors of docs/MATERIALS.md), the punctual
+// sheen and clear-coat factors of docs/MATERIALS.md, the transmission texture), the punctual
 // lights of passes/LightSetup, and the emissive triangles as area lights with a power CDF.
 // Built once per scene (or per edit); read-only while rendering, so many threads share it.
 

@@ -2,9 +2,10 @@
 // primitive's vertices in the file's views (scene/Scene.h: Primitive::fileViews): attributes the
 // file kept in one view in one view again (one per view, blocks one after the other, or
 // interleaved at the file's offsets and stride), or else in one interleaved view (the head of
-// lit::Vertex as it is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes); indices in the file's
-// component type while they fit, else UNSIGNED_INT. Accessors in the file's order, one the file
-// shared written once while the values agree, so an unedited file keeps its accessor indices.
+// lit::Vertex as it is in memory: POSITION, NORMAL, TEXCOORD_0, TANGENT every 48 bytes); indices
+// in the file's component type while they fit, else UNSIGNED_INT. Accessors in the file's order,
+// one the file shared written once while the values agree, so an unedited file keeps its accessor
+// indices.
 
 #include "scene/GltfExportDetail.h"
 #include "scene/GltfKeep.h"

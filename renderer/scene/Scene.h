@@ -126,9 +126,10 @@ struct Primitive {
     // write them, so a file without tangents does not grow by a third.
     bool fileHasTangents = false;
     // The file's attributes other than POSITION, NORMAL, TEXCOORD_0 and TANGENT and its morph
-    // targets (TEXCOORD_1 is drawn from Vertex::uv1 and kept here too, as the file stored it), one element per vertex
-    // in `vertices` order (the loader reorders them with the vertices when it unwelds a primitive without normals).
-    // Written back only while their count matches `vertices` (an edit that rebuilt the geometry drops them).
+    // targets (TEXCOORD_1 is drawn from Vertex::uv1 and kept here too, as the file stored it), one
+    // element per vertex in `vertices` order (the loader reorders them with the vertices when it
+    // unwelds a primitive without normals). Written back only while their count matches
+    // `vertices` (an edit that rebuilt the geometry drops them).
     KeptAttributes keptAttributes{};
     std::vector<KeptAttributes> morphTargets{};
     KeptGltf kept{};

@@ -25,9 +25,10 @@ layout(binding = LIT_TEX_TRANSMISSION) uniform sampler2D transmissionTexture;
 // 2×3 matrix, xyz each (scene/TextureTransform.h; identity without the extension), and in the
 // first row's w the UV set it reads (0 TEXCOORD_0, 1 TEXCOORD_1: scene/Scene.h drawnTexCoord),
 // set per draw (GpuScene::drawItem). Every fetch selects and multiplies, so no shader branches on
-// whether a reference has a transform or which set it reads. A uniform rather than a GpuMaterial field: on llvmpipe, UVs computed from the material
-// SSBO got wrong derivatives in pixel quads along triangle edges (a mip level too coarse there,
-// dots along every edge of the checker test scene); a uniform holds in every invocation of a quad.
+// whether a reference has a transform or which set it reads. A uniform rather than a GpuMaterial
+// field: on llvmpipe, UVs computed from the material SSBO got wrong derivatives in pixel quads
+// along triangle edges (a mip level too coarse there, dots along every edge of the checker test
+// scene); a uniform holds in every invocation of a quad.
 layout(location = LIT_LOC_UV_TRANSFORMS) uniform vec4 uUvTransforms[2 * LIT_MATERIAL_SLOTS];
 
 // The UVs texture reference `slot` (LIT_MATERIAL_SLOT_*, a constant) samples at mesh UVs `uvs`
