@@ -101,6 +101,9 @@ private:
     void loadCameras(Scene& scene) const;
     // A textureInfo object inside a material extension (`where` names it in messages).
     ExtensionTexture extensionTexture(const tinygltf::Value& info, const std::string& where) const;
+    // One warning where texture reference `reference` names a UV set beyond TEXCOORD_1 (its own
+    // `texCoord`, or its transform's override): Lit draws it with TEXCOORD_0.
+    void warnUndrawnUvSet(const std::string& reference, int texCoord, const TextureTransform& transform) const;
 
     const GltfSource& source_;
     const tinygltf::Model& model_;
@@ -127,11 +130,17 @@ ExtensionTexture Importer::extensionTexture(const tinygltf::Value& info, const s
         out.transform =
             gltfkeep::readTextureTransform(map, [&](const std::string& problem) { warn(where + ": " + problem); });
     }
-    const int set = out.transform.texCoord >= 0 ? out.transform.texCoord : out.texCoord;
-    if (out.texture >= 0 && set > 1)
-        warn(where + " uses TEXCOORD_" + std::to_string(set) +
-             "; Lit draws TEXCOORD_0 and TEXCOORD_1 and draws it with TEXCOORD_0 (the file's choice is saved back)");
+    if (out.texture >= 0) warnUndrawnUvSet(where, out.texCoord, out.transform);
     return out;
+}
+
+void Importer::warnUndrawnUvSet(const std::string& reference, int texCoord, const TextureTransform& transform) const {
+    const bool overridden = transform.texCoord >= 0;
+    const int set = overridden ? transform.texCoord : texCoord;
+    if (set > 1)
+        warn(reference + " uses TEXCOORD_" + std::to_string(set) +
+             (overridden ? " (KHR_texture_transform texCoord)" : "") +
+             "; Lit draws TEXCOORD_0 and TEXCOORD_1 and draws it with TEXCOORD_0 (the file's choice is saved back)");
 }
 
 // Notes a file's number that a float cannot hold exactly (scene/Scene.h: FileNumbers).
@@ -304,13 +313,8 @@ void Importer::loadMaterials(Scene& scene) const {
     for (std::size_t m = 0; m < model_.materials.size(); ++m) {
         const tinygltf::Material& in = model_.materials[m];
         const std::string what = "material " + std::to_string(m) + (in.name.empty() ? "" : " ('" + in.name + "')");
-        const auto texture = [&](int index, int texCoord, const char* slot) {
-            const int t = checkedTextureIndex(source_, index, what + " " + slot);
-            if (t >= 0 && texCoord > 1)
-                warn(what + " " + slot + " uses TEXCOORD_" + std::to_string(texCoord) +
-                     "; Lit draws TEXCOORD_0 and TEXCOORD_1 and draws it with TEXCOORD_0 (the file's choice is saved "
-                     "back)");
-            return t;
+        const auto texture = [&](int index, const char* slot) {
+            return checkedTextureIndex(source_, index, what + " " + slot);
         };
         Material out;
         out.name = in.name;
@@ -327,19 +331,18 @@ void Importer::loadMaterials(Scene& scene) const {
             const std::vector<double> f = unitFactors(pbr.baseColorFactor, "baseColorFactor");
             out.baseColorFactor = glm::vec4(f[0], f[1], f[2], f[3]);
         }
-        out.baseColorTexture = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, "baseColorTexture");
+        out.baseColorTexture = texture(pbr.baseColorTexture.index, "baseColorTexture");
         out.metallic = static_cast<float>(unitFactors({pbr.metallicFactor}, "metallicFactor")[0]);
         out.roughness = static_cast<float>(unitFactors({pbr.roughnessFactor}, "roughnessFactor")[0]);
-        out.metallicRoughnessTexture = texture(pbr.metallicRoughnessTexture.index,
-                                               pbr.metallicRoughnessTexture.texCoord, "metallicRoughnessTexture");
-        out.normalTexture = texture(in.normalTexture.index, in.normalTexture.texCoord, "normalTexture");
+        out.metallicRoughnessTexture = texture(pbr.metallicRoughnessTexture.index, "metallicRoughnessTexture");
+        out.normalTexture = texture(in.normalTexture.index, "normalTexture");
         out.normalScale = static_cast<float>(in.normalTexture.scale);
         if (in.emissiveFactor.size() == 3) {
             const std::vector<double> f = unitFactors(in.emissiveFactor, "emissiveFactor");
             out.emissiveFactor = glm::vec3(f[0], f[1], f[2]);
         }
-        out.emissiveTexture = texture(in.emissiveTexture.index, in.emissiveTexture.texCoord, "emissiveTexture");
-        out.occlusionTexture = texture(in.occlusionTexture.index, in.occlusionTexture.texCoord, "occlusionTexture");
+        out.emissiveTexture = texture(in.emissiveTexture.index, "emissiveTexture");
+        out.occlusionTexture = texture(in.occlusionTexture.index, "occlusionTexture");
         out.occlusionStrength = static_cast<float>(in.occlusionTexture.strength);
         if (auto it = in.extensions.find("KHR_materials_emissive_strength"); it != in.extensions.end()) {
             const tinygltf::Value& strength = it->second.Get("emissiveStrength");
@@ -373,6 +376,8 @@ void Importer::loadMaterials(Scene& scene) const {
         static constexpr std::array<const char*, 5> kSlotNames = {"baseColorTexture", "metallicRoughnessTexture",
                                                                   "normalTexture", "emissiveTexture",
                                                                   "occlusionTexture"};
+        const std::array<int, 5> textures = {out.baseColorTexture, out.metallicRoughnessTexture, out.normalTexture,
+                                             out.emissiveTexture, out.occlusionTexture};
         for (std::size_t slot = 0; slot < 5; ++slot) {
             const tinygltf::ExtensionMap& extensions = *referenceExtensions[slot];
             out.textureExtensions[slot] = gltfkeep::extensionsText(extensions, {gltfkeep::kTextureTransformExtension});
@@ -380,12 +385,7 @@ void Importer::loadMaterials(Scene& scene) const {
             TextureTransform& transform = out.textureTransforms[slot];
             transform = gltfkeep::readTextureTransform(
                 extensions, [&](const std::string& problem) { warn(reference + ": " + problem); });
-            const std::array<int, 5> textures = {out.baseColorTexture, out.metallicRoughnessTexture,
-                                                 out.normalTexture, out.emissiveTexture, out.occlusionTexture};
-            if (textures[slot] >= 0 && transform.texCoord > 1)
-                warn(reference + " uses TEXCOORD_" + std::to_string(transform.texCoord) +
-                     " (KHR_texture_transform texCoord); Lit draws TEXCOORD_0 and TEXCOORD_1 and draws it with "
-                     "TEXCOORD_0 (the file's choice is saved back)");
+            if (textures[slot] >= 0) warnUndrawnUvSet(reference, out.textureTexCoord[slot], transform);
         }
         out.textureExtras = {
             gltfkeep::extrasText(pbr.baseColorTexture.extras),
@@ -591,8 +591,8 @@ Scene Importer::run() {
         scene.name = source_.path.stem().string();
         scene.fileSceneNamed = false;
     }
+    loadMaterials(scene);  // before the meshes: their tangents and UV sets follow their materials
     importMeshes(source_, scene);
-    loadMaterials(scene);
     loadTextures(scene);
     importImages(source_, scene);
     report("scene", 0, 1);

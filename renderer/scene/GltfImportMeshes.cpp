@@ -2,6 +2,7 @@
 
 #include "scene/GltfImportMeshes.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -13,8 +14,6 @@
 
 #include "scene/GltfImportKept.h"
 #include "scene/GltfKeep.h"
-#include "scene/GltfMaterialLayers.h"
-#include "scene/GltfTextureTransform.h"
 #include "scene/GltfValidate.h"
 #include "scene/Tangents.h"
 
@@ -26,56 +25,31 @@ namespace {
 // components is a few 1e-8; exporters write normalized float32 tangents).
 constexpr float kUnitTangentTolerance = 1e-6f;
 
-// The UV set a texture reference is drawn with (scene/Scene.h drawnTexCoord): 1 for TEXCOORD_1,
-// else 0; -1 without a texture. The material's import warns about a malformed transform; here it
-// is only read.
-template <typename TextureInfo>
-int drawnUvSet(const TextureInfo& reference) {
-    if (reference.index < 0) return -1;
-    const int transformSet = gltfkeep::readTextureTransform(reference.extensions, [](const std::string&) {}).texCoord;
-    return (transformSet >= 0 ? transformSet : reference.texCoord) == 1 ? 1 : 0;
-}
+// The normal texture's place in Material's per-reference arrays (scene/Scene.h).
+constexpr std::size_t kNormalSlot = 2;
 
-const tinygltf::Material* materialOf(const GltfSource& source, int material) {
-    if (material < 0 || static_cast<std::size_t>(material) >= source.model.materials.size()) return nullptr;
-    return &source.model.materials[static_cast<std::size_t>(material)];
-}
-
-// The set the tangents the loader computes follow: the normal texture's (a normal map is painted
-// in the frame of its own UVs), 0 without one.
-int normalTextureUvSet(const GltfSource& source, int material) {
-    const tinygltf::Material* m = materialOf(source, material);
-    return m && drawnUvSet(m->normalTexture) == 1 ? 1 : 0;
+// The material a primitive draws with (already imported: Importer::run loads the materials
+// first), nullptr for the default one.
+const Material* materialOf(const Scene& scene, int material) {
+    if (material < 0 || static_cast<std::size_t>(material) >= scene.materials.size()) return nullptr;
+    return &scene.materials[static_cast<std::size_t>(material)];
 }
 
 // The first of the material's texture references drawn with TEXCOORD_1, nullptr when none is.
-const char* referenceReadingUvSet1(const GltfSource& source, int material) {
-    const tinygltf::Material* m = materialOf(source, material);
+const char* referenceReadingUvSet1(const Material* m) {
     if (!m) return nullptr;
-    const tinygltf::PbrMetallicRoughness& pbr = m->pbrMetallicRoughness;
-    if (drawnUvSet(pbr.baseColorTexture) == 1) return "baseColorTexture";
-    if (drawnUvSet(pbr.metallicRoughnessTexture) == 1) return "metallicRoughnessTexture";
-    if (drawnUvSet(m->normalTexture) == 1) return "normalTexture";
-    if (drawnUvSet(m->emissiveTexture) == 1) return "emissiveTexture";
-    if (drawnUvSet(m->occlusionTexture) == 1) return "occlusionTexture";
-    // The extension's reference is JSON to tinygltf: the same reading, by hand.
-    if (const auto it = m->extensions.find(gltfkeep::kTransmissionExtension);
-        it != m->extensions.end() && it->second.IsObject() && it->second.Has("transmissionTexture")) {
-        const tinygltf::Value& info = it->second.Get("transmissionTexture");
-        int set = info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").Get<int>() : 0;
-        if (info.Has("extensions") && info.Get("extensions").IsObject()) {
-            tinygltf::ExtensionMap map;
-            for (const std::string& key : info.Get("extensions").Keys()) map[key] = info.Get("extensions").Get(key);
-            const int transformSet = gltfkeep::readTextureTransform(map, [](const std::string&) {}).texCoord;
-            if (transformSet >= 0) set = transformSet;
-        }
-        if (set == 1 && info.Has("index")) return "transmissionTexture";
-    }
+    static constexpr std::array<const char*, 5> kSlotNames = {"baseColorTexture", "metallicRoughnessTexture",
+                                                              "normalTexture", "emissiveTexture", "occlusionTexture"};
+    const std::array<int, 5> textures = {m->baseColorTexture, m->metallicRoughnessTexture, m->normalTexture,
+                                         m->emissiveTexture, m->occlusionTexture};
+    for (std::size_t slot = 0; slot < textures.size(); ++slot)
+        if (textures[slot] >= 0 && drawnTexCoord(*m, slot) == 1) return kSlotNames[slot];
+    if (m->transmissionTexture.texture >= 0 && drawnTexCoord(m->transmissionTexture) == 1) return "transmissionTexture";
     return nullptr;
 }
 
-void importPrimitive(const GltfSource& source, const tinygltf::Primitive& in, const std::string& meshName,
-                     std::size_t primitiveIndex, Primitive& out) {
+void importPrimitive(const GltfSource& source, const Material* material, const tinygltf::Primitive& in,
+                     const std::string& meshName, std::size_t primitiveIndex, Primitive& out) {
     const std::string where = "mesh '" + meshName + "' primitive " + std::to_string(primitiveIndex);
     const auto attribute = [&](const char* name) {
         auto it = in.attributes.find(name);
@@ -118,7 +92,7 @@ void importPrimitive(const GltfSource& source, const tinygltf::Primitive& in, co
         for (std::size_t i = 0; i < vertexCount; ++i) out.vertices[i].uv1 = {uvs.component(i, 0), uvs.component(i, 1)};
     } else {
         for (Vertex& v : out.vertices) v.uv1 = v.uv;
-        if (const char* reference = referenceReadingUvSet1(source, in.material))
+        if (const char* reference = referenceReadingUvSet1(material))
             source.warn(where + " has no TEXCOORD_1, which its material's " + reference +
                         " reads; drawn with TEXCOORD_0");
     }
@@ -205,7 +179,9 @@ void importPrimitive(const GltfSource& source, const tinygltf::Primitive& in, co
         for (KeptAttributes& target : out.morphTargets)
             for (auto& [name, a] : target) reorder(a);
     }
-    if (!haveTangents) computeTangents(out, normalTextureUvSet(source, in.material));
+    // A normal map is painted in the frame of its own UVs.
+    if (!haveTangents)
+        computeTangents(out, material && material->normalTexture >= 0 ? drawnTexCoord(*material, kNormalSlot) : 0);
     out.fileHasTangents = haveTangents;
     out.kept = gltfkeep::keep(in.extras, in.extensions);
     // How the file stored the drawn data and what its accessors held besides the values, for a
@@ -265,7 +241,7 @@ void importMeshes(const GltfSource& source, Scene& scene) {
                             " has morph targets; Lit draws the base shape (the targets are kept and saved back)");
             Primitive out;
             out.material = prim.material;
-            importPrimitive(source, prim, mesh.name, p, out);
+            importPrimitive(source, materialOf(scene, prim.material), prim, mesh.name, p, out);
             if (out.indices.empty()) {
                 source.warn(where + " has no triangles; skipped");
                 continue;

@@ -12,6 +12,8 @@
 
 namespace lit::gltfimport {
 
+// Needs scene.materials: computed tangents follow the UV set of a primitive's normal texture, and a
+// primitive whose material reads TEXCOORD_1 without having it is named.
 void importMeshes(const GltfSource& source, Scene& scene);
 
 }  // namespace lit::gltfimport

@@ -291,7 +291,9 @@ void GpuScene::bindMaterialTextures(int material, Bind bind) const {
     bindSlot(LIT_TEX_NORMAL, t.normal);
     bindSlot(LIT_TEX_EMISSIVE, t.emissive);
     bindSlot(LIT_TEX_OCCLUSION, t.occlusion);
-    bindSlot(LIT_TEX_TRANSMISSION, t.transmission);
+    // Only a sheet samples it (material.glsl materialTransmission, where the material has one): a
+    // draw without leaves whatever is bound there.
+    if (t.transmission.texture) bindSlot(LIT_TEX_TRANSMISSION, t.transmission);
 }
 
 void GpuScene::unbindMaterialSamplers() {

@@ -37,8 +37,8 @@ using mat4 = glm::mat4;
 #define LIT_LOC_NORMAL_MATRIX 1    // mat4 inverse transpose of the model matrix
 #define LIT_LOC_MATERIAL 2         // int index into GpuMaterial[]
 #define LIT_LOC_NODE_ID 3          // uint node index + 1 the G-buffer writes to its ID target (0 = background)
-#define LIT_LOC_UV_TRANSFORMS 4  // vec4[2 × LIT_MATERIAL_SLOTS], locations 4 .. 15: texture transforms (material.glsl)
-#define LIT_LOC_PRIMITIVE 16     // uint primitive index within the node's mesh the G-buffer writes beside the node ID
+#define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS] at 4 .. 15: texture transforms (material.glsl)
+#define LIT_LOC_PRIMITIVE 16       // uint primitive index within the node's mesh the G-buffer writes beside the node ID
 
 // ---- Texture units -----------------------------------------------------------------------
 // Material textures (G-buffer, shadow alpha test, voxelization).

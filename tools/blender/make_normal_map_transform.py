@@ -22,7 +22,8 @@ import sys
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scene_parts import bake_mapping, enable_gltf_exporter, mapped_image  # noqa: E402  (this folder, put on the path above)
+from scene_parts import (  # noqa: E402  (this folder, put on the path above)
+    bake_mapping, build_and_export_twins, enable_gltf_exporter, mapped_image)
 
 enable_gltf_exporter()
 
@@ -84,20 +85,10 @@ def build(image):
     bpy.context.scene.render.resolution_y = HEIGHT
 
 
-def export(path):
-    bpy.ops.export_scene.gltf(filepath=path, export_format="GLTF_SEPARATE", export_cameras=True,
-                              export_lights=True, export_apply=True)
-
-
 def main():
     folder = arguments()
-    os.makedirs(folder, exist_ok=True)
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    image = tilts(folder)
-    build(image)
-    export(os.path.join(folder, "normal_map_transform.gltf"))
-    bake_mapping(bpy.data.objects["plane"], MAPPING)
-    export(os.path.join(folder, "normal_map_transform_baked.gltf"))
+    build_and_export_twins(folder, "normal_map_transform", lambda: build(tilts(folder)),
+                           lambda: bake_mapping(bpy.data.objects["plane"], MAPPING), lights=True)
 
 
 main()

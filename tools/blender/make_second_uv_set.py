@@ -25,7 +25,7 @@ from mathutils import Euler, Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from scene_parts import (  # noqa: E402  (this folder, put on the path above)
-    checker_image, enable_gltf_exporter, export_separate, two_planes_camera)
+    build_and_export_twins, checker_image, enable_gltf_exporter, two_planes_camera)
 
 enable_gltf_exporter()
 
@@ -107,19 +107,9 @@ def keep_only_read_maps():
             nodes.remove(node)
 
 
-def export(path):
-    export_separate(path)
-
-
 def main():
     folder = arguments()
-    os.makedirs(folder, exist_ok=True)
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    image = checker(folder)
-    build(image)
-    export(os.path.join(folder, "second_uv_set.gltf"))
-    keep_only_read_maps()
-    export(os.path.join(folder, "second_uv_set_baked.gltf"))
+    build_and_export_twins(folder, "second_uv_set", lambda: build(checker(folder)), keep_only_read_maps)
 
 
 main()

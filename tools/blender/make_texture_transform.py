@@ -21,7 +21,7 @@ import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from scene_parts import (  # noqa: E402  (this folder, put on the path above)
-    bake_mapping, checker_image, enable_gltf_exporter, export_separate, mapped_image, two_planes_camera)
+    bake_mapping, build_and_export_twins, checker_image, enable_gltf_exporter, mapped_image, two_planes_camera)
 
 enable_gltf_exporter()
 
@@ -71,19 +71,9 @@ def bake_mappings():
         bake_mapping(bpy.data.objects[name], mapping)
 
 
-def export(path):
-    export_separate(path)
-
-
 def main():
     folder = arguments()
-    os.makedirs(folder, exist_ok=True)
-    bpy.ops.wm.read_factory_settings(use_empty=True)
-    image = checker(folder)
-    build(image)
-    export(os.path.join(folder, "texture_transform.gltf"))
-    bake_mappings()
-    export(os.path.join(folder, "texture_transform_baked.gltf"))
+    build_and_export_twins(folder, "texture_transform", lambda: build(checker(folder)), bake_mappings)
 
 
 main()

@@ -186,7 +186,20 @@ def two_planes_camera(width, height):
     bpy.context.scene.render.resolution_y = height
 
 
-def export_separate(path):
-    """Blender's glTF exporter: path (.gltf + .bin + images), cameras included, modifiers applied."""
+def export_separate(path, lights=False):
+    """Blender's glTF exporter: path (.gltf + .bin + images), cameras (and with `lights` the lamps)
+    included, modifiers applied."""
     bpy.ops.export_scene.gltf(filepath=path, export_format="GLTF_SEPARATE", export_cameras=True,
-                              export_apply=True)
+                              export_lights=lights, export_apply=True)
+
+
+def build_and_export_twins(folder, name, build, make_twin, lights=False):
+    """Runs `build` on an empty factory scene and exports it as folder/name.gltf, then runs
+    `make_twin` (what the first must look like, made another way: a mapping baked into the UVs)
+    and exports that as folder/name_baked.gltf."""
+    os.makedirs(folder, exist_ok=True)
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    build()
+    export_separate(os.path.join(folder, name + ".gltf"), lights)
+    make_twin()
+    export_separate(os.path.join(folder, name + "_baked.gltf"), lights)
