@@ -7,11 +7,16 @@
 
 layout(location = 0) out vec4 outAlbedo;    // rgb base colour (linear, stored sRGB), a occlusion
 layout(location = 1) out vec4 outNormal;    // rgb world normal
-layout(location = 2) out vec4 outMaterial;  // r roughness, g metalness
+layout(location = 2) out vec4 outMaterial;  // r roughness, g metalness, b clear-coat texel, a coat-roughness texel
 layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance
 // r: scene node index + 1 (0 = background); g: the primitive's index within the node's mesh;
 // b: the material index (the lighting passes read the material's specular layers by it).
 layout(location = 4) out uvec4 outNodeId;
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
+// The specular layers' colour texels, each packUnorm4x8(rgb, a) (shared.h LIT_TEX_GBUFFER_LAYERS):
+// x specular colour and specular, y sheen colour and sheen roughness.
+layout(location = 5) out uvec2 outLayerTexels;
+#endif
 
 layout(location = LIT_LOC_NODE_ID) uniform uint uNodeId;
 layout(location = LIT_LOC_PRIMITIVE) uniform uint uPrimitive;
@@ -64,9 +69,14 @@ void main() {
         emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;
 #endif
 
+    LayerTexels layers = materialLayerTexels(m, fs.uv);
+
     outAlbedo = vec4(baseColor.rgb, occlusion);
     outNormal = vec4(n, 1.0);
-    outMaterial = vec4(clamp(roughness, 0.0, 1.0), clamp(metalness, 0.0, 1.0), 0.0, 1.0);
+    outMaterial = vec4(clamp(roughness, 0.0, 1.0), clamp(metalness, 0.0, 1.0), layers.clearcoat, layers.clearcoatRoughness);
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
+    outLayerTexels = uvec2(packUnorm4x8(layers.specular), packUnorm4x8(layers.sheen));
+#endif
     outEmissive = vec4(emissive, 1.0);
     outNodeId = uvec4(uNodeId, uPrimitive, uint(uMaterialIndex), 0u);
 }

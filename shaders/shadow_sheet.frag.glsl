@@ -27,8 +27,9 @@ void main() {
     if (m.textures.y != 0) metalness *= texture(metallicRoughnessTexture, materialUv(LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS, vUv)).b;
     vec3 travel = uLight.w > 0.0 ? vWorldPosition - uLight.xyz : uLight.xyz;
     float cosine = dot(normalize(vWorldNormal), normalize(travel));
+    LayerTexels layerTexels = materialLayerTexels(m, vUv);
     vec3 through = transmittanceOfSheet(baseColor.rgb, clamp(metalness, 0.0, 1.0), materialTransmission(m, vUv),
-                                        m.specular.rgb, m.specular.a,
+                                        materialDielectricF0(m, layerTexels), materialDielectricF90(m, layerTexels),
                                         cosine);
     float depth = uNearFar.y > 0.0 ? (1.0 / gl_FragCoord.w - uNearFar.x) / (uNearFar.y - uNearFar.x) : gl_FragCoord.z;
     outSheet = vec4(through, depth);

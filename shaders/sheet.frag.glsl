@@ -49,7 +49,8 @@ void main() {
     s.metalness = clamp(s.metalness, 0.0, 1.0);
     s.emissive = m.emissive.rgb;
     if (m.textures.w != 0) s.emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;
-    setMaterialLayers(m, s);
+    LayerTexels layerTexels = materialLayerTexels(m, fs.uv);
+    setMaterialLayers(m, layerTexels, s);
     float transmission = materialTransmission(m, fs.uv);
 
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
@@ -85,6 +86,7 @@ void main() {
     vec3 own = float(uTerms.x) * directDiffuse + float(uTerms.y) * indirectDiffuse + float(uTerms.z) * directSpecular +
                float(uTerms.w) * indirectSpecular;
     outOwn = vec4(own, 0.0);
-    outTransmittance = vec4(transmittanceOfSheet(s.baseColor, s.metalness, transmission, m.specular.rgb, m.specular.a, NdotV),
+    outTransmittance = vec4(transmittanceOfSheet(s.baseColor, s.metalness, transmission, materialDielectricF0(m, layerTexels),
+                                                 materialDielectricF90(m, layerTexels), NdotV),
                             1.0);
 }

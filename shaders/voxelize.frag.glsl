@@ -43,8 +43,10 @@ LIT_OCCUPIED_VOXELS_BLOCK();
 
 // (u, v, depth) of the projection along `axis` → voxel space: undoes voxelize.geom.glsl's swizzleForAxis.
 vec3 fromAxisSpace(vec3 s, int axis) { return axis == 0 ? s.zxy : (axis == 1 ? s.yzx : s); }
-// (Ā, B̄) of the GGX lobe at roughness j/(size − 1) (scene/SpecularMeanAlbedo.h, set by VoxelizePass).
+// (Ā, B̄) of the GGX lobe at roughness j/(size − 1) (scene/SpecularMeanAlbedo.h), and a white
+// sheen's mean albedo Ē_s at sheen roughness j/(size − 1) (scene/SheenAlbedo.h), set by VoxelizePass.
 uniform vec2 uSpecularMeanAlbedo[LIT_SPECULAR_MEAN_ALBEDO_SIZE];
+uniform float uSheenMeanAlbedo[LIT_SPECULAR_MEAN_ALBEDO_SIZE];
 
 // The mean over the cosine-weighted hemisphere of the lobe's directional albedo, F0·Ā + F90·B̄.
 vec3 specularMeanAlbedo(vec3 f0, float f90, float roughness) {
@@ -54,21 +56,31 @@ vec3 specularMeanAlbedo(vec3 f0, float f90, float roughness) {
     return f0 * ab.x + f90 * ab.y;
 }
 
+float sheenMeanAlbedo(float roughness) {
+    float s = roughness * float(LIT_SPECULAR_MEAN_ALBEDO_SIZE - 1);
+    int i = min(int(s), LIT_SPECULAR_MEAN_ALBEDO_SIZE - 2);
+    return mix(uSheenMeanAlbedo[i], uSheenMeanAlbedo[i + 1], s - float(i));
+}
+
 // What a voxel reflects of the light it receives, as one Lambertian albedo: a voxel's light leaves
 // in every direction, so each lobe counts with its albedo's hemispherical mean (docs/GI.md,
 // "Voxelization"; docs/MATERIALS.md). The base is the diffuse (1 − metalness)·colour plus the
 // specular lobe's mean; a sheen reflects its colour × its mean albedo Ē_s and leaves
 // 1 − max(colour)·Ē_s of the base; a clear coat passes 1 − weight·F̄c of the light to both and back
 // and reflects weight × its own lobe's mean. At most 1 per channel (the packed volume's range).
-vec3 reflectedAlbedo(GpuMaterial m, vec3 baseColor, float metalness, float roughness) {
-    vec3 f0 = mix(m.specular.rgb, baseColor, metalness);
-    float f90 = mix(m.specular.a, 1.0, metalness);
+// The layers' factors are scaled by their texels `t` at the fragment.
+vec3 reflectedAlbedo(GpuMaterial m, LayerTexels t, vec3 baseColor, float metalness, float roughness) {
+    vec3 f0 = mix(materialDielectricF0(m, t), baseColor, metalness);
+    float f90 = mix(materialDielectricF90(m, t), 1.0, metalness);
     vec3 base = baseColor * (1.0 - metalness) + specularMeanAlbedo(f0, f90, roughness);
-    float sheenMean = m.clearcoat.z;
-    vec3 sheen = m.sheen.rgb * sheenMean;
-    vec3 underCoat = base * (1.0 - max(m.sheen.r, max(m.sheen.g, m.sheen.b)) * sheenMean) + sheen;
-    vec3 coat = m.clearcoat.x * specularMeanAlbedo(kClearcoatF0, 1.0, m.clearcoat.y);
-    return clamp(underCoat * (1.0 - m.clearcoat.x * kClearcoatMeanFresnel) + coat, 0.0, 1.0);
+    vec3 sheenColor = m.sheen.rgb * t.sheen.rgb;
+    float sheenMean = max(sheenColor.r, max(sheenColor.g, sheenColor.b)) > 0.0 ?
+                      sheenMeanAlbedo(clamp(m.sheen.a * t.sheen.a, 0.0, 1.0)) : 0.0;
+    vec3 underCoat = base * (1.0 - max(sheenColor.r, max(sheenColor.g, sheenColor.b)) * sheenMean) +
+                     sheenColor * sheenMean;
+    float coatWeight = m.clearcoat.x * t.clearcoat;
+    vec3 coat = coatWeight * specularMeanAlbedo(kClearcoatF0, 1.0, m.clearcoat.y * t.clearcoatRoughness);
+    return clamp(underCoat * (1.0 - coatWeight * kClearcoatMeanFresnel) + coat, 0.0, 1.0);
 }
 
 uniform uint uOccupiedCapacity;  // entries the list can hold (VoxelVolume::occupiedCapacity)
@@ -104,7 +116,7 @@ void main() {
         roughness *= mr.g;
         metalness *= mr.b;
     }
-    vec3 albedo = reflectedAlbedo(m, clamp(baseColor.rgb, 0.0, 1.0), clamp(metalness, 0.0, 1.0), clamp(roughness, 0.0, 1.0));
+    vec3 albedo = reflectedAlbedo(m, materialLayerTexels(m, fs.uv), clamp(baseColor.rgb, 0.0, 1.0), clamp(metalness, 0.0, 1.0), clamp(roughness, 0.0, 1.0));
 
     // The first fragment of a voxel (the albedo's compare-and-swap from 0 succeeds, as the first
     // try of atomicAverageRgb would) appends it to the occupied-voxel list unless it is listed

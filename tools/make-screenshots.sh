@@ -69,6 +69,13 @@ transmission="$root/tests/data/blender/transmission_texture/transmission_texture
     --out "$out/transmission_texture_reference.png"
 "$render" "$transmission" --size 640x360 --gi on --voxels 128 --out "$out/transmission_texture.png"
 
+# The layer-textures scene (tools/blender/make_layer_textures.py): a clear coat and a Specular
+# painted with a black/white checker on dark planes under a low sun; Lit's defaults at 128³ beside
+# the every-bounce reference.
+layers="$root/tests/data/blender/layer_textures/layer_textures.gltf"
+"$render" "$layers" --reference --bounces all --spp "$spp" --size 640x360 --out "$out/layer_textures_reference.png"
+"$render" "$layers" --size 640x360 --gi on --voxels 128 --out "$out/layer_textures.png"
+
 # The generated city (make-gi-suite, docs/GI.md "Near level"): a street 640 m of town across, the
 # shaded side lit only by bounced light; Lit's defaults at 128³ (with the 64 m near level around
 # the camera), the same with one volume around it all, the every-bounce reference, and the

@@ -172,6 +172,30 @@ void InspectorPanel::drawTransform(Document& doc, int nodeIndex) {
 
 namespace {
 
+// One line per texture of the material's extensions: which factor it multiplies, by which channel.
+void drawExtensionTextures(const Material& material) {
+    static constexpr std::array<std::array<const char*, 2>, kExtensionTextureSlots.size()> kWhat = {{
+        {"Transmission texture", "red channel"},
+        {"Clear coat texture", "red channel"},
+        {"Coat roughness texture", "green channel"},
+        {"Specular texture", "alpha channel"},
+        {"Specular tint texture", "rgb"},
+        {"Sheen colour texture", "rgb"},
+        {"Sheen roughness texture", "alpha channel"},
+    }};
+    for (std::size_t k = 0; k < kExtensionTextureSlots.size(); ++k) {
+        const ExtensionTexture& t = material.*kExtensionTextureSlots[k].member;
+        if (t.texture < 0) continue;
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("%s %d, %s%s%s", kWhat[k][0], t.texture, kWhat[k][1],
+                            drawnTexCoord(t) == 1 ? ", TEXCOORD_1" : "", t.transform.present ? ", transformed" : "");
+        ImGui::PopTextWrapPos();
+        const std::string tip = std::string("Multiplies its factor (") + kExtensionTextureSlots[k].extension +
+                                "; from the file, saved back as it is)";
+        tooltip(tip.c_str());
+    }
+}
+
 // Read-only: each texture reference's UV set where it reads TEXCOORD_1, and its
 // KHR_texture_transform where it has one.
 void drawTextureTransforms(const Material& material) {
@@ -291,13 +315,7 @@ void InspectorPanel::drawSpecularLayers(Document& doc, Material& material) {
     tooltip("Share of the dielectric's light that passes straight through, tinted by the base colour "
             "(KHR_materials_transmission; drawn as a thin sheet: glass panes, film)");
     track(doc, "Transmission", Change::Material, changed, [&] { material.transmission = transmission; });
-    if (const ExtensionTexture& t = material.transmissionTexture; t.texture >= 0) {
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextDisabled("Transmission texture %d, red channel%s%s", t.texture,
-                            drawnTexCoord(t) == 1 ? ", TEXCOORD_1" : "", t.transform.present ? ", transformed" : "");
-        ImGui::PopTextWrapPos();
-        tooltip("Multiplies the transmission factor (KHR_materials_transmission; from the file, saved back as it is)");
-    }
+    drawExtensionTextures(material);
     ImGui::TreePop();
 }
 

@@ -5,6 +5,7 @@
 #include "gi/VoxelVolume.h"
 #include "scene/GpuScene.h"
 #include "scene/Scene.h"
+#include "scene/SheenAlbedo.h"
 #include "scene/SpecularMeanAlbedo.h"
 
 namespace lit {
@@ -47,6 +48,14 @@ bool VoxelizePass::begin(const GpuScene& gpuScene, const VoxelVolume& volume) {
     const auto& meanAlbedo = specularMeanAlbedoTable();
     glProgramUniform2fv(program_.id(), program_.location("uSpecularMeanAlbedo"), kSpecularMeanAlbedoSize,
                         &meanAlbedo[0].x);
+    static const std::array<float, kSpecularMeanAlbedoSize> sheenMean = [] {
+        std::array<float, kSpecularMeanAlbedoSize> out{};
+        for (int j = 0; j < kSpecularMeanAlbedoSize; ++j)
+            out[static_cast<std::size_t>(j)] = sheenMeanAlbedo(static_cast<float>(j) / (kSpecularMeanAlbedoSize - 1));
+        return out;
+    }();
+    glProgramUniform1fv(program_.id(), program_.location("uSheenMeanAlbedo"), kSpecularMeanAlbedoSize,
+                        sheenMean.data());
     // Image atomics need an integer format; the volumes are 3D, so bind all slices (layered).
     glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);

@@ -22,8 +22,9 @@ void GBufferPass::resize(int width, int height) {
     t.material = gl::Texture("gbuffer material", {GL_TEXTURE_2D, GL_RGBA8, width, height, 1, 1});
     t.emissive = gl::Texture("gbuffer emissive", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
     t.nodeId = gl::Texture("gbuffer node id", {GL_TEXTURE_2D, GL_RGBA32UI, width, height, 1, 1});
+    t.layers = gl::Texture("gbuffer layer texels", {GL_TEXTURE_2D, GL_RG32UI, width, height, 1, 1});
     t.depth = gl::Texture("gbuffer depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, 1});
-    for (const gl::Texture* texture : {&t.albedo, &t.normal, &t.material, &t.emissive, &t.nodeId, &t.depth})
+    for (const gl::Texture* texture : {&t.albedo, &t.normal, &t.material, &t.emissive, &t.nodeId, &t.layers, &t.depth})
         texture->setFilter(GL_NEAREST, GL_NEAREST);
     t.framebuffer = gl::Framebuffer("gbuffer");
     t.framebuffer.attach(GL_COLOR_ATTACHMENT0, t.albedo);
@@ -31,13 +32,17 @@ void GBufferPass::resize(int width, int height) {
     t.framebuffer.attach(GL_COLOR_ATTACHMENT2, t.material);
     t.framebuffer.attach(GL_COLOR_ATTACHMENT3, t.emissive);
     t.framebuffer.attach(GL_COLOR_ATTACHMENT4, t.nodeId);
+    t.framebuffer.attach(GL_COLOR_ATTACHMENT5, t.layers);
     t.framebuffer.attach(GL_DEPTH_ATTACHMENT, t.depth);
-    t.framebuffer.setDrawBuffers(5);
+    t.framebuffer.setDrawBuffers(6);
     t.framebuffer.checkComplete("gbuffer");
 }
 
 void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters,
                           const std::vector<std::uint32_t>* visibleItems) {
+    // The layer texels are written only for scenes with layer textures, and read only at pixels
+    // whose material has them (gbuffer.glsl readMaterialLayers): otherwise the target stays out.
+    targets_->framebuffer.setDrawBuffers(gpuScene.hasLayerTextures() ? 6 : 5);
     targets_->framebuffer.bind();
     glViewport(0, 0, targets_->width, targets_->height);
     const float zero[4] = {0, 0, 0, 0};
@@ -85,6 +90,7 @@ void GBufferPass::bindTargets() const {
     targets_->emissive.bind(LIT_TEX_GBUFFER_EMISSIVE);
     targets_->depth.bind(LIT_TEX_GBUFFER_DEPTH);
     targets_->nodeId.bind(LIT_TEX_GBUFFER_ID);
+    targets_->layers.bind(LIT_TEX_GBUFFER_LAYERS);
 }
 
 }  // namespace lit

@@ -1,8 +1,10 @@
 #pragma once
 // G-buffer pass: rasterizes the scene once from the camera and stores per-pixel surface data.
 // Targets: albedo (SRGB8_A8: base colour + occlusion), normal (RGBA16F world normal),
-// material (RGBA8: roughness, metalness), emissive (RGBA16F radiance), node ID (R32UI: index of
-// the scene node drawn there + 1, 0 = background; for picking and the selection outline), depth (32F).
+// material (RGBA8: roughness, metalness, the clear coat's two texels), emissive (RGBA16F
+// radiance), node ID (RGBA32UI: index of the scene node drawn there + 1, 0 = background, for
+// picking and the selection outline; the primitive; the material), layer texels (RG32UI: the
+// specular and sheen textures' texels, shared.h LIT_TEX_GBUFFER_LAYERS), depth (32F).
 
 #include "gl/ProgramVariants.h"
 #include "passes/Pass.h"
@@ -50,7 +52,7 @@ private:
         std::string label() const { return " (textures " + std::to_string(mask) + ")"; }
     };
     struct Targets {
-        gl::Texture albedo, normal, material, emissive, nodeId, depth;
+        gl::Texture albedo, normal, material, emissive, nodeId, layers, depth;
         gl::Framebuffer framebuffer;
         int width = 0, height = 0;
     };

@@ -279,6 +279,29 @@ glm::vec4 ReferenceScene::sampleTexture(int texture, glm::vec2 uv) const {
                     ay);
 }
 
+namespace {
+
+// Normal `n` (unit) bent by a normal map's texel `texel` of strength `scale`, in the frame of the
+// vertex tangent `tangent` turned by the map's KHR_texture_transform `rows`: shaders/gbuffer.frag.glsl.
+glm::vec3 mappedNormal(const glm::vec3& n, const glm::vec4& tangent, const std::array<glm::vec3, 2>& rows,
+                       const glm::vec4& texel, float scale) {
+    glm::vec3 t = glm::vec3(tangent) - n * glm::dot(n, glm::vec3(tangent));
+    if (glm::dot(t, t) <= 1e-10f) return n;
+    t = glm::normalize(t);
+    const float handedness = tangent.w < 0.0f ? -1.0f : 1.0f;
+    // The map's frame follows its KHR_texture_transform (identity: t itself).
+    const glm::vec3 frame = uvTangentOfTransform(rows);
+    t = glm::normalize(t * frame.x + glm::cross(n, t) * handedness * frame.y);
+    const glm::vec3 b = glm::cross(n, t) * handedness * frame.z;
+    glm::vec3 tn = glm::vec3(texel) * 2.0f - 1.0f;
+    tn.x *= scale;
+    tn.y *= scale;
+    const glm::vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
+    return glm::dot(mapped, mapped) > 0.0f ? glm::normalize(mapped) : n;
+}
+
+}  // namespace
+
 float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::vec3 normal, const glm::vec4& tangent,
                                       bool frontFacing, SurfaceHit& hit) const {
     const Impl& s = *impl_;
@@ -291,23 +314,10 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::ve
 
     glm::vec3 n = glm::length(normal) > 0.0f ? glm::normalize(normal) : hit.geometricNormal;
     if (!frontFacing) n = -n;
-    const glm::vec3 interpolatedNormal = n;  // the clear coat's normal: no normal map
-    if (m.normalTexture >= 0) {
-        glm::vec3 t = glm::vec3(tangent) - n * glm::dot(n, glm::vec3(tangent));
-        if (glm::dot(t, t) > 1e-10f) {
-            t = glm::normalize(t);
-            const float handedness = tangent.w < 0.0f ? -1.0f : 1.0f;
-            // The map's frame follows its KHR_texture_transform (identity: t itself).
-            const glm::vec3 frame = uvTangentOfTransform(uvTransformRows(m.textureTransforms[kSlotNormal]));
-            t = glm::normalize(t * frame.x + glm::cross(n, t) * handedness * frame.y);
-            const glm::vec3 b = glm::cross(n, t) * handedness * frame.z;
-            glm::vec3 tn = glm::vec3(sampleTexture(m.normalTexture, slotUv(m, kSlotNormal, uv))) * 2.0f - 1.0f;
-            tn.x *= m.normalScale;
-            tn.y *= m.normalScale;
-            const glm::vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
-            if (glm::dot(mapped, mapped) > 0.0f) n = glm::normalize(mapped);
-        }
-    }
+    const glm::vec3 interpolatedNormal = n;  // the clear coat's normal without its own map
+    if (m.normalTexture >= 0)
+        n = mappedNormal(n, tangent, uvTransformRows(m.textureTransforms[kSlotNormal]),
+                         sampleTexture(m.normalTexture, slotUv(m, kSlotNormal, uv)), m.normalScale);
     float metalness = m.metallic;
     float roughness = m.roughness;
     if (m.metallicRoughnessTexture >= 0) {
@@ -328,21 +338,27 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::ve
     hit.metalness = std::clamp(metalness, 0.0f, 1.0f);
     hit.occlusion = occlusion;
     hit.emission = emissive;
-    // docs/MATERIALS.md: the dielectric's F0 and F90, the sheen and the clear coat (their factors
-    // only; the extensions' textures are not drawn).
-    hit.dielectricF0 = dielectricF0(m.ior, m.specularFactor, m.specularColorFactor);
-    hit.dielectricF90 = dielectricF90(m.specularFactor);
-    hit.sheenColor = glm::clamp(m.sheenColorFactor, glm::vec3(0.0f), glm::vec3(1.0f));
-    hit.sheenRoughness = std::clamp(m.sheenRoughness, 0.0f, 1.0f);
-    hit.clearcoat = std::clamp(m.clearcoatFactor, 0.0f, 1.0f);
-    hit.clearcoatRoughness = std::clamp(m.clearcoatRoughness, 0.0f, 1.0f);
-    hit.clearcoatNormal = interpolatedNormal;
-    float transmission = m.transmission;
-    if (const ExtensionTexture& t = m.transmissionTexture; t.texture >= 0) {
+    // docs/MATERIALS.md: the dielectric's F0 and F90, the sheen, the clear coat and the
+    // transmission, each factor times its texture where the material has one.
+    const auto extensionUv = [&](const ExtensionTexture& t) {
         const glm::vec2 set = drawnTexCoord(t) == 1 ? glm::vec2(uv.z, uv.w) : glm::vec2(uv.x, uv.y);
-        transmission *=
-            sampleTexture(t.texture, t.transform.present ? applyUvTransform(uvTransformRows(t.transform), set) : set).r;
-    }
+        return t.transform.present ? applyUvTransform(uvTransformRows(t.transform), set) : set;
+    };
+    const auto extensionTexel = [&](const ExtensionTexture& t) {
+        return t.texture < 0 ? glm::vec4(1.0f) : sampleTexture(t.texture, extensionUv(t));
+    };
+    const float specular = m.specularFactor * extensionTexel(m.specularTexture).a;
+    hit.dielectricF0 =
+        dielectricF0(m.ior, specular, m.specularColorFactor * glm::vec3(extensionTexel(m.specularColorTexture)));
+    hit.dielectricF90 = dielectricF90(specular);
+    hit.sheenColor = glm::clamp(m.sheenColorFactor * glm::vec3(extensionTexel(m.sheenColorTexture)), glm::vec3(0.0f),
+                                glm::vec3(1.0f));
+    hit.sheenRoughness = std::clamp(m.sheenRoughness * extensionTexel(m.sheenRoughnessTexture).a, 0.0f, 1.0f);
+    hit.clearcoat = std::clamp(m.clearcoatFactor * extensionTexel(m.clearcoatTexture).r, 0.0f, 1.0f);
+    hit.clearcoatRoughness =
+        std::clamp(m.clearcoatRoughness * extensionTexel(m.clearcoatRoughnessTexture).g, 0.0f, 1.0f);
+    hit.clearcoatNormal = interpolatedNormal;
+    const float transmission = m.transmission * extensionTexel(m.transmissionTexture).r;
     hit.transmission = std::clamp(transmission, 0.0f, 1.0f);
     return baseColor.a;
 }

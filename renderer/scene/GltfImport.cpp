@@ -360,11 +360,11 @@ void Importer::loadMaterials(Scene& scene) const {
         out.alphaCutoff = static_cast<float>(in.alphaCutoff);
         out.doubleSided = in.doubleSided;
         gltfkeep::readMaterialLayers(in.extensions, out, [&](const std::string& problem) { warn(what + " " + problem); });
-        if (const auto it = in.extensions.find(gltfkeep::kTransmissionExtension);
-            it != in.extensions.end() && it->second.IsObject() && it->second.Has("transmissionTexture"))
-            out.transmissionTexture =
-                extensionTexture(it->second.Get("transmissionTexture"),
-                                 what + " " + gltfkeep::kTransmissionExtension + " transmissionTexture");
+        for (const ExtensionTextureSlot& slot : kExtensionTextureSlots)
+            if (const auto it = in.extensions.find(slot.extension);
+                it != in.extensions.end() && it->second.IsObject() && it->second.Has(slot.key))
+                out.*slot.member =
+                    extensionTexture(it->second.Get(slot.key), what + " " + slot.extension + " " + slot.key);
         out.kept = gltfkeep::keep(in.extras, in.extensions, {"KHR_materials_emissive_strength"});
         out.textureTexCoord = {pbr.baseColorTexture.texCoord, pbr.metallicRoughnessTexture.texCoord,
                                in.normalTexture.texCoord, in.emissiveTexture.texCoord, in.occlusionTexture.texCoord};

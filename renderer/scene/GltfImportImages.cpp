@@ -170,8 +170,11 @@ void importImages(const GltfSource& source, Scene& scene) {
     for (const Material& m : scene.materials) {
         for (int t : {m.baseColorTexture, m.emissiveTexture})
             if (int i = imageOf(t); i >= 0) usedAsColour[static_cast<std::size_t>(i)] = 1;
-        for (int t : {m.metallicRoughnessTexture, m.normalTexture, m.occlusionTexture, m.transmissionTexture.texture})
+        for (int t : {m.metallicRoughnessTexture, m.normalTexture, m.occlusionTexture})
             if (int i = imageOf(t); i >= 0) usedAsData[static_cast<std::size_t>(i)] = 1;
+        for (const ExtensionTextureSlot& slot : kExtensionTextureSlots)
+            if (int i = imageOf((m.*slot.member).texture); i >= 0)
+                (slot.colour ? usedAsColour : usedAsData)[static_cast<std::size_t>(i)] = 1;
     }
 
     std::vector<std::uint8_t> failed(count, 0);

@@ -44,7 +44,8 @@ const char* referenceReadingUvSet1(const Material* m) {
                                          m->emissiveTexture, m->occlusionTexture};
     for (std::size_t slot = 0; slot < textures.size(); ++slot)
         if (textures[slot] >= 0 && drawnTexCoord(*m, slot) == 1) return kSlotNames[slot];
-    if (m->transmissionTexture.texture >= 0 && drawnTexCoord(m->transmissionTexture) == 1) return "transmissionTexture";
+    for (const ExtensionTextureSlot& slot : kExtensionTextureSlots)
+        if (const ExtensionTexture& t = m->*slot.member; t.texture >= 0 && drawnTexCoord(t) == 1) return slot.key;
     return nullptr;
 }
 

@@ -74,8 +74,7 @@ glm::vec3 colorIn(const tinygltf::Value& object, const char* key, const glm::vec
 void warnTextures(const tinygltf::Value& object, std::initializer_list<const char*> keys, const std::string& where,
                   const std::function<void(const std::string&)>& warn) {
     for (const char* key : keys)
-        if (object.Has(key))
-            warn(where + " " + key + " is not drawn (Lit draws the extension's factors; the texture is kept and saved)");
+        if (object.Has(key)) warn(where + " " + key + " is not drawn (the texture is kept and saved)");
 }
 
 // The extension object the file had for `name` (Material::kept), if any.
@@ -138,20 +137,17 @@ void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& mate
         material.specularFactor = factorIn(*specular, "specularFactor", 1.0f, 0.0, 1.0, where, warn);
         material.specularColorFactor =
             colorIn(*specular, "specularColorFactor", glm::vec3(1.0f), std::numeric_limits<double>::max(), where, warn);
-        warnTextures(*specular, {"specularTexture", "specularColorTexture"}, where, warn);
     }
     if (const tinygltf::Value* sheen = object(kSheenExtension)) {
         const std::string where = kSheenExtension;
         material.sheenColorFactor = colorIn(*sheen, "sheenColorFactor", glm::vec3(0.0f), 1.0, where, warn);
         material.sheenRoughness = factorIn(*sheen, "sheenRoughnessFactor", 0.0f, 0.0, 1.0, where, warn);
-        warnTextures(*sheen, {"sheenColorTexture", "sheenRoughnessTexture"}, where, warn);
     }
     if (const tinygltf::Value* clearcoat = object(kClearcoatExtension)) {
         const std::string where = kClearcoatExtension;
         material.clearcoatFactor = factorIn(*clearcoat, "clearcoatFactor", 0.0f, 0.0, 1.0, where, warn);
         material.clearcoatRoughness = factorIn(*clearcoat, "clearcoatRoughnessFactor", 0.0f, 0.0, 1.0, where, warn);
-        warnTextures(*clearcoat, {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}, where,
-                     warn);
+        warnTextures(*clearcoat, {"clearcoatNormalTexture"}, where, warn);
     }
     if (const tinygltf::Value* transmission = object(kTransmissionExtension)) {
         const std::string where = kTransmissionExtension;

@@ -1,23 +1,20 @@
 #include "scene/GpuScene.h"
 
-#include "scene/Sheets.h"
+#include <shared.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <glm/gtc/type_ptr.hpp>
+#include <map>
+#include <stdexcept>
+#include <string>
 
 #include "Log.h"
 #include "gl/Shader.h"
 #include "scene/Scene.h"
 #include "scene/SceneMemory.h"
-#include "scene/SheenAlbedo.h"
-
-#include <shared.h>
-
-#include <glm/gtc/type_ptr.hpp>
-
-#include <algorithm>
-#include <cassert>
-#include <cmath>
-#include <map>
-#include <stdexcept>
-#include <string>
+#include "scene/Sheets.h"
 
 namespace lit {
 
@@ -76,6 +73,7 @@ gl::Sampler makeSampler(const SamplerState& state, std::size_t index) {
 GpuScene::UvTransforms uvTransformsOf(const Material& m) {
     static_assert(2 * LIT_MATERIAL_SLOTS == std::tuple_size_v<GpuScene::UvTransforms>);
     static_assert(LIT_MATERIAL_SLOT_TRANSMISSION == std::tuple_size_v<decltype(m.textureTransforms)>);
+    static_assert(LIT_MATERIAL_SLOTS == LIT_MATERIAL_SLOT_TRANSMISSION + kExtensionTextureSlots.size());
     GpuScene::UvTransforms out{};
     const auto put = [&out](std::size_t slot, const TextureTransform& transform, int uvSet) {
         const std::array<glm::vec3, 2> rows = uvTransformRows(transform);
@@ -84,7 +82,10 @@ GpuScene::UvTransforms uvTransformsOf(const Material& m) {
     };
     for (std::size_t slot = 0; slot < m.textureTransforms.size(); ++slot)
         put(slot, m.textureTransforms[slot], drawnTexCoord(m, slot));
-    put(LIT_MATERIAL_SLOT_TRANSMISSION, m.transmissionTexture.transform, drawnTexCoord(m.transmissionTexture));
+    for (std::size_t k = 0; k < kExtensionTextureSlots.size(); ++k) {
+        const ExtensionTexture& t = m.*kExtensionTextureSlots[k].member;
+        put(LIT_MATERIAL_SLOT_TRANSMISSION + k, t.transform, drawnTexCoord(t));
+    }
     return out;
 }
 
@@ -100,14 +101,13 @@ gpu::GpuMaterial toGpu(const Material& m) {
                                                             : LIT_ALPHA_OPAQUE;
     g.modes = glm::ivec4(m.occlusionTexture >= 0, alphaMode, m.doubleSided ? 1 : 0, 0);
     g.alpha = glm::vec4(m.alphaCutoff, std::clamp(m.transmission, 0.0f, 1.0f), 0.0f, 0.0f);
-    // docs/MATERIALS.md: F0 = min(((η − 1)/(η + 1))² · k, 1) · s, F90 = s.
+    // docs/MATERIALS.md: F0 = min(((η − 1)/(η + 1))² · k, 1) · s, F90 = s. The table holds the
+    // product before the clamp, ((η − 1)/(η + 1))² · k · s, which the shaders clamp to s after a
+    // specular-colour texel has scaled it (material_table.glsl materialDielectricF0).
     const float reflectance = (m.ior - 1.0f) / (m.ior + 1.0f);  // η = 0 (a mirror) gives 1
     const float f0FromIor = reflectance * reflectance;
-    g.specular = glm::vec4(glm::min(glm::vec3(f0FromIor) * m.specularColorFactor, glm::vec3(1.0f)) * m.specularFactor,
-                           m.specularFactor);
-    const bool sheen = m.sheenColorFactor != glm::vec3(0.0f);
-    g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughness, sheen ? sheenMeanAlbedo(m.sheenRoughness) : 0.0f,
-                            0.0f);
+    g.specular = glm::vec4(glm::vec3(f0FromIor) * m.specularColorFactor * m.specularFactor, m.specularFactor);
+    g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughness, 0.0f, 0.0f);
     g.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughness);
     return g;
 }
@@ -246,20 +246,31 @@ void GpuScene::updateMaterials(const Scene& scene) {
         return m.ior != 1.5f || m.specularFactor != 1.0f || m.specularColorFactor != glm::vec3(1.0f) ||
                m.clearcoatFactor != 0.0f || m.sheenColorFactor != glm::vec3(0.0f);
     });
+    layerTextures_ = false;
     const auto textureId = [this](int index) -> TextureBinding {
         if (index < 0 || static_cast<std::size_t>(index) >= textures_.size()) return {};
         return textures_[static_cast<std::size_t>(index)];
     };
     for (const Material& m : scene.materials) {
         gpu::GpuMaterial g = toGpu(m);
-        MaterialTextures t{textureId(m.baseColorTexture), textureId(m.metallicRoughnessTexture),
-                           textureId(m.normalTexture),    textureId(m.emissiveTexture),
-                           textureId(m.occlusionTexture), textureId(m.transmissionTexture.texture)};
+        MaterialTextures t{};
+        t[LIT_MATERIAL_SLOT_BASE_COLOR] = textureId(m.baseColorTexture);
+        t[LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS] = textureId(m.metallicRoughnessTexture);
+        t[LIT_MATERIAL_SLOT_NORMAL] = textureId(m.normalTexture);
+        t[LIT_MATERIAL_SLOT_EMISSIVE] = textureId(m.emissiveTexture);
+        t[LIT_MATERIAL_SLOT_OCCLUSION] = textureId(m.occlusionTexture);
+        for (std::size_t k = 0; k < kExtensionTextureSlots.size(); ++k)
+            t[LIT_MATERIAL_SLOT_TRANSMISSION + k] = textureId((m.*kExtensionTextureSlots[k].member).texture);
         // A texture that failed to load must not be sampled as if present.
-        g.textures = glm::ivec4(t.baseColor.texture != 0, t.metallicRoughness.texture != 0, t.normal.texture != 0,
-                                t.emissive.texture != 0);
-        g.modes.x = t.occlusion.texture != 0;
-        g.modes.w = t.transmission.texture != 0;
+        const auto present = [&t](int slot) { return t[static_cast<std::size_t>(slot)].texture != 0; };
+        g.textures = glm::ivec4(present(LIT_MATERIAL_SLOT_BASE_COLOR), present(LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS),
+                                present(LIT_MATERIAL_SLOT_NORMAL), present(LIT_MATERIAL_SLOT_EMISSIVE));
+        g.modes.x = present(LIT_MATERIAL_SLOT_OCCLUSION);
+        g.modes.w = present(LIT_MATERIAL_SLOT_TRANSMISSION);
+        // LIT_LAYER_TEXTURE_* bit k is layer slot LIT_MATERIAL_SLOT_CLEARCOAT + k.
+        for (int k = 0; LIT_MATERIAL_SLOT_CLEARCOAT + k < LIT_MATERIAL_SLOTS; ++k)
+            if (present(LIT_MATERIAL_SLOT_CLEARCOAT + k)) g.layerTextures.x |= 1 << k;
+        layerTextures_ = layerTextures_ || g.layerTextures.x != 0;
         table.push_back(g);
         sheetMaterials_.push_back(drawnAsSheet(m));
         materialTextures_.push_back(t);
@@ -281,25 +292,23 @@ void GpuScene::bindMaterialTextures(int material, Bind bind) const {
     const MaterialTextures& t = materialTextures_[static_cast<std::size_t>(material)];
     const GLuint white = whiteTexture_.id();
     // Sampler 0 leaves the white texture's own parameters in force.
-    const auto bindSlot = [white](GLuint unit, const TextureBinding& slot) {
-        glBindTextureUnit(unit, slot.texture ? slot.texture : white);
-        glBindSampler(unit, slot.texture ? slot.sampler : 0);
+    const auto bindSlot = [white, &t](int slot) {
+        const TextureBinding& binding = t[static_cast<std::size_t>(slot)];
+        const GLuint unit = kMaterialTextureUnits[static_cast<std::size_t>(slot)];
+        glBindTextureUnit(unit, binding.texture ? binding.texture : white);
+        glBindSampler(unit, binding.texture ? binding.sampler : 0);
     };
-    bindSlot(LIT_TEX_BASE_COLOR, t.baseColor);
+    bindSlot(LIT_MATERIAL_SLOT_BASE_COLOR);
     if (bind == Bind::AlphaOnly) return;
-    bindSlot(LIT_TEX_METALLIC_ROUGHNESS, t.metallicRoughness);
-    bindSlot(LIT_TEX_NORMAL, t.normal);
-    bindSlot(LIT_TEX_EMISSIVE, t.emissive);
-    bindSlot(LIT_TEX_OCCLUSION, t.occlusion);
-    // Only a sheet samples it (material.glsl materialTransmission, where the material has one): a
-    // draw without leaves whatever is bound there.
-    if (t.transmission.texture) bindSlot(LIT_TEX_TRANSMISSION, t.transmission);
+    for (int slot = LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS; slot <= LIT_MATERIAL_SLOT_OCCLUSION; ++slot) bindSlot(slot);
+    // The extensions' textures are sampled only where the material has them (material.glsl's flags):
+    // a draw without leaves whatever is bound there.
+    for (int slot = LIT_MATERIAL_SLOT_TRANSMISSION; slot < LIT_MATERIAL_SLOTS; ++slot)
+        if (t[static_cast<std::size_t>(slot)].texture) bindSlot(slot);
 }
 
 void GpuScene::unbindMaterialSamplers() {
-    for (const GLuint unit : {LIT_TEX_BASE_COLOR, LIT_TEX_METALLIC_ROUGHNESS, LIT_TEX_NORMAL, LIT_TEX_EMISSIVE,
-                              LIT_TEX_OCCLUSION, LIT_TEX_TRANSMISSION})
-        glBindSampler(unit, 0);
+    for (const GLuint unit : kMaterialTextureUnits) glBindSampler(unit, 0);
 }
 
 std::size_t GpuScene::imageTextureCount() const {
@@ -345,11 +354,15 @@ void GpuScene::sheetItems(const std::vector<std::uint32_t>* candidates, std::vec
 unsigned GpuScene::materialTextureMask(const DrawItem& item) const {
     if (materialTextures_.empty()) return 0;
     const MaterialTextures& t = materialTextures_[static_cast<std::size_t>(materialRow(item))];
-    return (t.baseColor.texture ? LIT_MATERIAL_TEXTURE_BASE_COLOR : 0u) |
-           (t.metallicRoughness.texture ? LIT_MATERIAL_TEXTURE_METALLIC_ROUGHNESS : 0u) |
-           (t.normal.texture ? LIT_MATERIAL_TEXTURE_NORMAL : 0u) |
-           (t.emissive.texture ? LIT_MATERIAL_TEXTURE_EMISSIVE : 0u) |
-           (t.occlusion.texture ? LIT_MATERIAL_TEXTURE_OCCLUSION : 0u);
+    const auto present = [&t](int slot) { return t[static_cast<std::size_t>(slot)].texture != 0; };
+    bool layers = false;
+    for (int slot = LIT_MATERIAL_SLOT_CLEARCOAT; slot < LIT_MATERIAL_SLOTS; ++slot) layers = layers || present(slot);
+    return (present(LIT_MATERIAL_SLOT_BASE_COLOR) ? LIT_MATERIAL_TEXTURE_BASE_COLOR : 0u) |
+           (present(LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS) ? LIT_MATERIAL_TEXTURE_METALLIC_ROUGHNESS : 0u) |
+           (present(LIT_MATERIAL_SLOT_NORMAL) ? LIT_MATERIAL_TEXTURE_NORMAL : 0u) |
+           (present(LIT_MATERIAL_SLOT_EMISSIVE) ? LIT_MATERIAL_TEXTURE_EMISSIVE : 0u) |
+           (present(LIT_MATERIAL_SLOT_OCCLUSION) ? LIT_MATERIAL_TEXTURE_OCCLUSION : 0u) |
+           (layers ? LIT_MATERIAL_TEXTURE_LAYERS : 0u);
 }
 
 void GpuScene::drawItem(const Scene& scene, const DrawItem& item, const gl::Program& program, Bind bind,

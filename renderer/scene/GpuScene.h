@@ -6,17 +6,18 @@
 // image uploads one image. Passes draw through it; they never touch the CPU Scene's vectors
 // directly.
 
-#include "gl/Objects.h"
-#include "scene/Aabb.h"
-#include "scene/TriangleChunks.h"
-
-#include <glm/glm.hpp>
+#include <shared.h>
 
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
+
+#include "gl/Objects.h"
+#include "scene/Aabb.h"
+#include "scene/TriangleChunks.h"
 
 namespace lit {
 
@@ -48,11 +49,17 @@ struct DrawCounters {
     std::size_t triangles = 0;
 };
 
+// The texture unit of each material slot (LIT_MATERIAL_SLOT_* → LIT_TEX_*).
+inline constexpr std::array<GLuint, LIT_MATERIAL_SLOTS> kMaterialTextureUnits = {
+    LIT_TEX_BASE_COLOR, LIT_TEX_METALLIC_ROUGHNESS, LIT_TEX_NORMAL,      LIT_TEX_EMISSIVE,
+    LIT_TEX_OCCLUSION,  LIT_TEX_TRANSMISSION,       LIT_TEX_CLEARCOAT,   LIT_TEX_CLEARCOAT_ROUGHNESS,
+    LIT_TEX_SPECULAR,   LIT_TEX_SPECULAR_COLOR,     LIT_TEX_SHEEN_COLOR, LIT_TEX_SHEEN_ROUGHNESS};
+
 class GpuScene {
 public:
     // A material's KHR_texture_transform rows, two per texture reference, the first's w its UV
     // set (material.glsl's uUvTransforms, set per draw).
-    using UvTransforms = std::array<glm::vec4, 12>;
+    using UvTransforms = std::array<glm::vec4, 2 * LIT_MATERIAL_SLOTS>;
 
     GpuScene() = default;
     // Primitives of more than `maxChunkTriangles` triangles are split into chunks of at most that
@@ -93,6 +100,9 @@ public:
     // Whether a material has KHR_materials_ior / _specular / _sheen / _clearcoat values other than the
     // defaults (the lighting passes' MaterialLayersVariant).
     bool hasMaterialLayers() const { return materialLayers_; }
+    // Whether a material has a layer texture (KHR_materials_specular, _sheen, _clearcoat): the
+    // G-buffer then stores their texels (GBufferPass's layers target).
+    bool hasLayerTextures() const { return layerTextures_; }
 
     // The textures `item`'s material samples, as LIT_MATERIAL_TEXTURES bits (material.glsl): the
     // ones that loaded, which the material table's flags also say.
@@ -106,7 +116,7 @@ public:
     void drawItem(const Scene& scene, const DrawItem& item, const gl::Program& program, Bind bind,
                   DrawCounters& counters) const;
 
-    // Unbinds the sampler objects of the material texture units (LIT_TEX_BASE_COLOR..OCCLUSION).
+    // Unbinds the sampler objects of the material texture units (kMaterialTextureUnits).
     static void unbindMaterialSamplers();
 
     // What the upload made: GL textures (one per image a texture uses), sampler objects (one per
@@ -125,6 +135,7 @@ private:
     gl::VertexArray vertexArray_;
     gl::Buffer materials_;
     bool materialLayers_ = false;
+    bool layerTextures_ = false;
     std::vector<gl::Texture> images_;      // per Scene::images entry; empty where no texture uses it or it is unusable
     std::vector<gl::Sampler> samplers_;    // one per distinct wrap/filter combination
     // Per Scene::textures entry: its GL texture (0: unusable, the material falls back) and sampler.
@@ -138,10 +149,8 @@ private:
     std::vector<DrawItem> items_;
     std::vector<bool> sheetMaterials_;     // per material, + default at the end: drawnAsSheet
     bool hasSheets_ = false;               // some material is a sheet
-    // Per material slot, in the order base colour, metallic-roughness, normal, emissive, occlusion.
-    struct MaterialTextures {
-        TextureBinding baseColor, metallicRoughness, normal, emissive, occlusion, transmission;
-    };
+    // Per material slot (LIT_MATERIAL_SLOT_*).
+    using MaterialTextures = std::array<TextureBinding, LIT_MATERIAL_SLOTS>;
     std::vector<MaterialTextures> materialTextures_;  // per material, + default at the end
     std::vector<UvTransforms> materialUvTransforms_;  // per material, + default at the end
 };

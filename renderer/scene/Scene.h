@@ -256,8 +256,9 @@ struct Material {
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
     // Dielectric reflectance, sheen and the clear coat (docs/MATERIALS.md). Lit draws these
-    // extensions' factors; their objects stay in `kept` (textures included, which Lit does not
-    // draw) and a save writes the factors into them, keeping the file's number where unchanged.
+    // extensions' factors and textures (below); their objects stay in `kept` (the texture
+    // references included) and a save writes the factors into them, keeping the file's number
+    // where unchanged.
     float ior = 1.5f;                       // KHR_materials_ior: dielectric F0 = ((ior − 1)/(ior + 1))²
     float specularFactor = 1.0f;            // KHR_materials_specular: F90 and a scale of the dielectric F0
     glm::vec3 specularColorFactor{1.0f};    // KHR_materials_specular: tint of the dielectric F0 (may exceed 1)
@@ -271,6 +272,16 @@ struct Material {
     float transmission = 0.0f;
     // KHR_materials_transmission.transmissionTexture: its red channel multiplies `transmission`.
     ExtensionTexture transmissionTexture{};
+    // The layers' textures, each multiplying its factor: KHR_materials_specular's specularTexture
+    // (alpha) and specularColorTexture (rgb, sRGB), KHR_materials_sheen's sheenColorTexture (rgb,
+    // sRGB) and sheenRoughnessTexture (alpha), KHR_materials_clearcoat's clearcoatTexture (red)
+    // and clearcoatRoughnessTexture (green). The coat's normal texture is not drawn (kept, saved).
+    ExtensionTexture specularTexture{};
+    ExtensionTexture specularColorTexture{};
+    ExtensionTexture sheenColorTexture{};
+    ExtensionTexture sheenRoughnessTexture{};
+    ExtensionTexture clearcoatTexture{};
+    ExtensionTexture clearcoatRoughnessTexture{};
     // KHR_materials_volume, read and saved; Lit draws no refraction or absorption (a thin sheet).
     float thickness = 0.0f;                        // metres in the mesh's space; 0: thin-walled
     float attenuationDistance = 0.0f;              // metres; 0: infinite (the file leaves it out)
@@ -313,6 +324,24 @@ inline int drawnTexCoord(const Material& m, std::size_t slot) {
 inline int drawnTexCoord(const ExtensionTexture& t) {
     return (t.transform.texCoord >= 0 ? t.transform.texCoord : t.texCoord) == 1 ? 1 : 0;
 }
+
+// A material's texture references inside extensions, in the order of their material slots after
+// the five core ones (shaders/include/shared.h, LIT_MATERIAL_SLOT_TRANSMISSION onwards).
+struct ExtensionTextureSlot {
+    const char* extension;  // "KHR_materials_sheen", ...
+    const char* key;        // the reference's key in the extension's object
+    ExtensionTexture Material::*member;
+    bool colour;  // sRGB-encoded colour (else linear data)
+};
+inline constexpr std::array<ExtensionTextureSlot, 7> kExtensionTextureSlots{{
+    {"KHR_materials_transmission", "transmissionTexture", &Material::transmissionTexture, false},
+    {"KHR_materials_clearcoat", "clearcoatTexture", &Material::clearcoatTexture, false},
+    {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", &Material::clearcoatRoughnessTexture, false},
+    {"KHR_materials_specular", "specularTexture", &Material::specularTexture, false},
+    {"KHR_materials_specular", "specularColorTexture", &Material::specularColorTexture, true},
+    {"KHR_materials_sheen", "sheenColorTexture", &Material::sheenColorTexture, true},
+    {"KHR_materials_sheen", "sheenRoughnessTexture", &Material::sheenRoughnessTexture, false},
+}};
 
 enum class LightType { Directional, Point, Spot };
 

@@ -35,23 +35,33 @@ struct Surface {
 #endif
 #if LIT_MATERIAL_LAYERS
 layout(binding = LIT_TEX_SHEEN_ALBEDO) uniform sampler2D sheenAlbedoTable;
+layout(binding = LIT_TEX_GBUFFER_LAYERS) uniform usampler2D gbufferLayers;
 #endif
 
-// The specular parameters of material `m` (docs/MATERIALS.md); `s` needs baseColor and metalness.
-void setMaterialLayers(GpuMaterial m, inout Surface s) {
-    s.f0 = specularF0(s.baseColor, s.metalness, m.specular.rgb);
-    s.f90 = specularF90(s.metalness, m.specular.a);
-    s.clearcoat = m.clearcoat.x;
-    s.clearcoatRoughness = m.clearcoat.y;
-    s.sheenColor = m.sheen.rgb;
-    s.sheenRoughness = m.sheen.a;
+// The specular parameters of material `m` with its layer texels `t` (docs/MATERIALS.md); `s`
+// needs baseColor and metalness.
+void setMaterialLayers(GpuMaterial m, LayerTexels t, inout Surface s) {
+    s.f0 = specularF0(s.baseColor, s.metalness, materialDielectricF0(m, t));
+    s.f90 = specularF90(s.metalness, materialDielectricF90(m, t));
+    s.clearcoat = m.clearcoat.x * t.clearcoat;
+    s.clearcoatRoughness = m.clearcoat.y * t.clearcoatRoughness;
+    s.sheenColor = m.sheen.rgb * t.sheen.rgb;
+    s.sheenRoughness = m.sheen.a * t.sheen.a;
 }
 
 // The specular parameters of the pixel's material, from the material table entry the ID target
-// names; `s` needs baseColor and metalness.
+// names and, where it has layer textures, the texels the G-buffer stored; `s` needs baseColor
+// and metalness.
 void readMaterialLayers(ivec2 pixel, inout Surface s) {
 #if LIT_MATERIAL_LAYERS
-    setMaterialLayers(materials[texelFetch(gbufferId, pixel, 0).b], s);
+    GpuMaterial m = materials[texelFetch(gbufferId, pixel, 0).b];
+    LayerTexels t = noLayerTexels();
+    if (m.layerTextures.x != 0) {
+        vec2 coat = texelFetch(gbufferMaterial, pixel, 0).ba;
+        uvec2 texels = texelFetch(gbufferLayers, pixel, 0).rg;
+        t = LayerTexels(coat.x, coat.y, unpackUnorm4x8(texels.x), unpackUnorm4x8(texels.y));
+    }
+    setMaterialLayers(m, t, s);
 #else
     s.f0 = specularF0(s.baseColor, s.metalness, vec3(0.04));
     s.f90 = 1.0;

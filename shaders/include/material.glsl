@@ -20,6 +20,12 @@ layout(binding = LIT_TEX_NORMAL) uniform sampler2D normalTexture;
 layout(binding = LIT_TEX_EMISSIVE) uniform sampler2D emissiveTexture;
 layout(binding = LIT_TEX_OCCLUSION) uniform sampler2D occlusionTexture;
 layout(binding = LIT_TEX_TRANSMISSION) uniform sampler2D transmissionTexture;
+layout(binding = LIT_TEX_CLEARCOAT) uniform sampler2D clearcoatTexture;
+layout(binding = LIT_TEX_CLEARCOAT_ROUGHNESS) uniform sampler2D clearcoatRoughnessTexture;
+layout(binding = LIT_TEX_SPECULAR) uniform sampler2D specularTexture;
+layout(binding = LIT_TEX_SPECULAR_COLOR) uniform sampler2D specularColorTexture;
+layout(binding = LIT_TEX_SHEEN_COLOR) uniform sampler2D sheenColorTexture;
+layout(binding = LIT_TEX_SHEEN_ROUGHNESS) uniform sampler2D sheenRoughnessTexture;
 
 // Per texture reference (LIT_MATERIAL_SLOT_*), the two rows of its KHR_texture_transform as a
 // 2×3 matrix, xyz each (scene/TextureTransform.h; identity without the extension), and in the
@@ -62,6 +68,30 @@ vec4 materialBaseColor(GpuMaterial m, vec4 uv) {
 float materialTransmission(GpuMaterial m, vec4 uv) {
     float t = m.alpha.y;
     if (m.modes.w != 0) t *= texture(transmissionTexture, materialUv(LIT_MATERIAL_SLOT_TRANSMISSION, uv)).r;
+    return t;
+}
+
+// The texels of the layers' textures at mesh UVs `uv` (LayerTexels, material_table.glsl).
+LayerTexels materialLayerTexels(GpuMaterial m, vec4 uv) {
+    LayerTexels t = noLayerTexels();
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
+    int bits = m.layerTextures.x;
+    if (bits != 0) {
+        if ((bits & LIT_LAYER_TEXTURE_CLEARCOAT) != 0)
+            t.clearcoat = texture(clearcoatTexture, materialUv(LIT_MATERIAL_SLOT_CLEARCOAT, uv)).r;
+        if ((bits & LIT_LAYER_TEXTURE_CLEARCOAT_ROUGHNESS) != 0)
+            t.clearcoatRoughness =
+                texture(clearcoatRoughnessTexture, materialUv(LIT_MATERIAL_SLOT_CLEARCOAT_ROUGHNESS, uv)).g;
+        if ((bits & LIT_LAYER_TEXTURE_SPECULAR) != 0)
+            t.specular.a = texture(specularTexture, materialUv(LIT_MATERIAL_SLOT_SPECULAR, uv)).a;
+        if ((bits & LIT_LAYER_TEXTURE_SPECULAR_COLOR) != 0)
+            t.specular.rgb = texture(specularColorTexture, materialUv(LIT_MATERIAL_SLOT_SPECULAR_COLOR, uv)).rgb;
+        if ((bits & LIT_LAYER_TEXTURE_SHEEN_COLOR) != 0)
+            t.sheen.rgb = texture(sheenColorTexture, materialUv(LIT_MATERIAL_SLOT_SHEEN_COLOR, uv)).rgb;
+        if ((bits & LIT_LAYER_TEXTURE_SHEEN_ROUGHNESS) != 0)
+            t.sheen.a = texture(sheenRoughnessTexture, materialUv(LIT_MATERIAL_SLOT_SHEEN_ROUGHNESS, uv)).a;
+    }
+#endif
     return t;
 }
 

@@ -37,8 +37,8 @@ using mat4 = glm::mat4;
 #define LIT_LOC_NORMAL_MATRIX 1    // mat4 inverse transpose of the model matrix
 #define LIT_LOC_MATERIAL 2         // int index into GpuMaterial[]
 #define LIT_LOC_NODE_ID 3          // uint node index + 1 the G-buffer writes to its ID target (0 = background)
-#define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS] at 4 .. 15: texture transforms (material.glsl)
-#define LIT_LOC_PRIMITIVE 16       // uint primitive index within the node's mesh the G-buffer writes beside the node ID
+#define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS] at 4 .. 27: texture transforms (material.glsl)
+#define LIT_LOC_PRIMITIVE 28       // uint primitive index within the node's mesh the G-buffer writes beside the node ID
 
 // ---- Texture units -----------------------------------------------------------------------
 // Material textures (G-buffer, shadow alpha test, voxelization).
@@ -50,7 +50,7 @@ using mat4 = glm::mat4;
 // G-buffer read by the lighting passes.
 #define LIT_TEX_GBUFFER_ALBEDO 5     // rgb albedo (linear), a occlusion
 #define LIT_TEX_GBUFFER_NORMAL 6     // rgb world normal, a unused
-#define LIT_TEX_GBUFFER_MATERIAL 7   // r roughness, g metalness
+#define LIT_TEX_GBUFFER_MATERIAL 7   // r roughness, g metalness, b clear-coat texel, a coat-roughness texel
 #define LIT_TEX_GBUFFER_EMISSIVE 8   // rgb emitted radiance (W/(sr·m²))
 #define LIT_TEX_GBUFFER_DEPTH 9      // window-space depth [0,1]
 // Shadow maps.
@@ -129,7 +129,19 @@ using mat4 = glm::mat4;
 #define LIT_TEX_SHADOW_CASCADES (LIT_TEX_NEAR_IRRADIANCE_FIRST + LIT_MAX_NEAR_LEVELS)
 // KHR_materials_transmission's transmissionTexture (sheets and their shadows; material.glsl).
 #define LIT_TEX_TRANSMISSION (LIT_TEX_SHADOW_CASCADES + 1)
-#define LIT_TEX_UNIT_COUNT (LIT_TEX_TRANSMISSION + 1)  // units 0 .. this − 1 are bound (Capabilities.cpp)
+// The layers' textures (Material::clearcoatTexture ..; material.glsl materialLayerTexels), in the
+// order of their material slots.
+#define LIT_TEX_CLEARCOAT (LIT_TEX_TRANSMISSION + 1)
+#define LIT_TEX_CLEARCOAT_ROUGHNESS (LIT_TEX_TRANSMISSION + 2)
+#define LIT_TEX_SPECULAR (LIT_TEX_TRANSMISSION + 3)
+#define LIT_TEX_SPECULAR_COLOR (LIT_TEX_TRANSMISSION + 4)
+#define LIT_TEX_SHEEN_COLOR (LIT_TEX_TRANSMISSION + 5)
+#define LIT_TEX_SHEEN_ROUGHNESS (LIT_TEX_TRANSMISSION + 6)
+// The G-buffer's RG32UI layer texels (gbuffer.glsl): r the specular colour and specular texels,
+// g the sheen colour and sheen-roughness texels, each packUnorm4x8(rgb, a). Written and read only
+// for materials with such textures (GpuMaterial::layerTextures).
+#define LIT_TEX_GBUFFER_LAYERS (LIT_TEX_TRANSMISSION + 7)
+#define LIT_TEX_UNIT_COUNT (LIT_TEX_GBUFFER_LAYERS + 1)  // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
@@ -291,7 +303,16 @@ using mat4 = glm::mat4;
 #define LIT_MATERIAL_TEXTURE_NORMAL 4
 #define LIT_MATERIAL_TEXTURE_EMISSIVE 8
 #define LIT_MATERIAL_TEXTURE_OCCLUSION 16
-#define LIT_MATERIAL_TEXTURES_ALL 31
+#define LIT_MATERIAL_TEXTURE_LAYERS 32  // any of the layers' textures (LIT_LAYER_TEXTURE_*)
+#define LIT_MATERIAL_TEXTURES_ALL 63
+
+// Which of the layers' textures a material has (GpuMaterial::layerTextures.x).
+#define LIT_LAYER_TEXTURE_CLEARCOAT 1
+#define LIT_LAYER_TEXTURE_CLEARCOAT_ROUGHNESS 2
+#define LIT_LAYER_TEXTURE_SPECULAR 4
+#define LIT_LAYER_TEXTURE_SPECULAR_COLOR 8
+#define LIT_LAYER_TEXTURE_SHEEN_COLOR 16
+#define LIT_LAYER_TEXTURE_SHEEN_ROUGHNESS 32
 
 // A material's texture references in the order of Material's per-reference arrays (scene/Scene.h),
 // then the extensions' references;
@@ -303,7 +324,13 @@ using mat4 = glm::mat4;
 #define LIT_MATERIAL_SLOT_EMISSIVE 3
 #define LIT_MATERIAL_SLOT_OCCLUSION 4
 #define LIT_MATERIAL_SLOT_TRANSMISSION 5  // Material::transmissionTexture (KHR_materials_transmission)
-#define LIT_MATERIAL_SLOTS 6
+#define LIT_MATERIAL_SLOT_CLEARCOAT 6     // the layers' textures, in scene/Scene.h kExtensionTextureSlots' order
+#define LIT_MATERIAL_SLOT_CLEARCOAT_ROUGHNESS 7
+#define LIT_MATERIAL_SLOT_SPECULAR 8
+#define LIT_MATERIAL_SLOT_SPECULAR_COLOR 9
+#define LIT_MATERIAL_SLOT_SHEEN_COLOR 10
+#define LIT_MATERIAL_SLOT_SHEEN_ROUGHNESS 11
+#define LIT_MATERIAL_SLOTS 12
 
 // ---- Structs ------------------------------------------------------------------------------
 // Per-frame camera and output parameters. std140, binding LIT_UBO_FRAME.
@@ -341,10 +368,11 @@ struct GpuMaterial {
     ivec4 modes;              // x occlusion texture present, y alpha mode (LIT_ALPHA_*), z double sided,
                               // w transmission texture present
     vec4 alpha;               // x alpha cutoff, y transmission (KHR_materials_transmission), zw unused
-    vec4 specular;            // rgb dielectric F0, a dielectric F90 (KHR_materials_ior, _specular; docs/MATERIALS.md)
-    vec4 clearcoat;           // x coat weight, y coat roughness (perceptual) (KHR_materials_clearcoat),
-                              // z the sheen's mean albedo (scene/SheenAlbedo.h sheenMeanAlbedo; the voxels' sheen), w unused
+    vec4 specular;            // rgb ((η − 1)/(η + 1))² · k · s before the clamp to s, a dielectric F90 = s
+                              // (KHR_materials_ior, _specular; material_table.glsl materialDielectricF0)
+    vec4 clearcoat;           // x coat weight, y coat roughness (perceptual) (KHR_materials_clearcoat), zw unused
     vec4 sheen;               // rgb sheen colour, a sheen roughness (perceptual) (KHR_materials_sheen)
+    ivec4 layerTextures;      // x LIT_LAYER_TEXTURE_* bits: the layers' textures the material has; yzw unused
 };
 
 // The light view a shadow pass renders. std140, binding LIT_UBO_SHADOW_PASS.
@@ -382,7 +410,7 @@ struct VoxelUniforms {
 static_assert(sizeof(VoxelUniforms) == 6 * 16);
 static_assert(sizeof(FrameUniforms) == 4 * 64 + 7 * 16);
 static_assert(sizeof(GpuLight) == 5 * 16 + 64);
-static_assert(sizeof(GpuMaterial) == 9 * 16);
+static_assert(sizeof(GpuMaterial) == 10 * 16);
 static_assert(sizeof(ShadowPassUniforms) == 64 + 16);
 static_assert(sizeof(GpuShadowCascade) == 64 + 16);
 static_assert(sizeof(ShadowCascadeUniforms) == LIT_MAX_CASCADED_LIGHTS * LIT_MAX_SHADOW_CASCADES * (64 + 16) + 16);

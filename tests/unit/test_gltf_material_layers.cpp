@@ -78,14 +78,25 @@ TEST(MaterialLayers, FactorsAreRead) {
     EXPECT_EQ(other.sheenColorFactor, glm::vec3(0.0f));
 }
 
-TEST(MaterialLayers, TexturesAreNamedAndOutOfRangeFactorsClamped) {
+TEST(MaterialLayers, TexturesAreReadAndOutOfRangeFactorsClamped) {
     TempDir dir;
     nlohmann::json doc = baseDoc();
     addExtension(doc, "KHR_materials_clearcoat",
-                 {{"clearcoatFactor", 2.0}, {"clearcoatRoughnessFactor", -1.0}, {"clearcoatTexture", {{"index", 0}}}});
+                 {{"clearcoatFactor", 2.0},
+                  {"clearcoatRoughnessFactor", -1.0},
+                  {"clearcoatTexture", {{"index", 0}}},
+                  {"clearcoatRoughnessTexture", {{"index", 0}, {"texCoord", 1}}},
+                  {"clearcoatNormalTexture", {{"index", 0}}}});
     addExtension(doc, "KHR_materials_ior", {{"ior", 0.5}});
-    addExtension(doc, "KHR_materials_specular", {{"specularColorFactor", {1.0, "red", 1.0}}});
-    addExtension(doc, "KHR_materials_sheen", {{"sheenColorFactor", {2.0, 0.5, 0.5}}, {"sheenRoughnessTexture", {{"index", 0}}}});
+    addExtension(doc, "KHR_materials_specular",
+                 {{"specularColorFactor", {1.0, "red", 1.0}},
+                  {"specularTexture", {{"index", 0}}},
+                  {"specularColorTexture",
+                   {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {2.0, 2.0}}}}}}}}});
+    addExtension(doc, "KHR_materials_sheen",
+                 {{"sheenColorFactor", {2.0, 0.5, 0.5}},
+                  {"sheenColorTexture", {{"index", 0}}},
+                  {"sheenRoughnessTexture", {{"index", 0}}}});
     const Loaded loaded = loadDoc(dir, doc);
     const Material& m = loaded.scene.materials.at(0);
     EXPECT_EQ(m.clearcoatFactor, 1.0f);
@@ -93,13 +104,21 @@ TEST(MaterialLayers, TexturesAreNamedAndOutOfRangeFactorsClamped) {
     EXPECT_EQ(m.ior, 1.0f);
     EXPECT_EQ(m.specularColorFactor, glm::vec3(1.0f));
     EXPECT_EQ(m.sheenColorFactor, glm::vec3(1.0f, 0.5f, 0.5f));
+    for (const ExtensionTexture* t : {&m.clearcoatTexture, &m.clearcoatRoughnessTexture, &m.specularTexture,
+                                      &m.specularColorTexture, &m.sheenColorTexture, &m.sheenRoughnessTexture})
+        EXPECT_EQ(t->texture, 0);
+    EXPECT_EQ(m.clearcoatRoughnessTexture.texCoord, 1);
+    EXPECT_TRUE(m.specularColorTexture.transform.present);
+    EXPECT_EQ(m.specularColorTexture.transform.scale, glm::dvec2(2.0, 2.0));
     for (const char* expected :
          {"KHR_materials_clearcoat clearcoatFactor 2.000000 is outside its range; Lit uses 1.000000",
-          "KHR_materials_clearcoat clearcoatTexture is not drawn", "KHR_materials_ior ior 0.500000 is below 1",
+          "KHR_materials_clearcoat clearcoatNormalTexture is not drawn", "KHR_materials_ior ior 0.500000 is below 1",
           "KHR_materials_specular specularColorFactor is not three finite numbers",
-          "KHR_materials_sheen sheenColorFactor has a value outside its range; Lit clamps it",
-          "KHR_materials_sheen sheenRoughnessTexture is not drawn"})
+          "KHR_materials_sheen sheenColorFactor has a value outside its range; Lit clamps it"})
         EXPECT_NE(loaded.warnings.find(expected), std::string::npos) << expected << "\n" << loaded.warnings;
+    for (const char* drawn : {"clearcoatTexture is not drawn", "clearcoatRoughnessTexture is not drawn",
+                              "specularTexture is not drawn", "sheenRoughnessTexture is not drawn"})
+        EXPECT_EQ(loaded.warnings.find(drawn), std::string::npos) << drawn << "\n" << loaded.warnings;
 }
 
 // Unchanged factors keep the file's numbers and fields (textures too); edited ones are written;
