@@ -14,11 +14,13 @@ static_assert(VoxelVolume::kEmissionRange == static_cast<float>(LIT_VOXEL_EMISSI
               "voxelize/inject shaders decode emission with LIT_VOXEL_EMISSION_RANGE");
 
 VoxelizePass::VoxelizePass(const std::filesystem::path& shaderRoot)
-    : program_(shaderRoot, "voxelize",
-               {{GL_VERTEX_SHADER, "voxelize.vert.glsl"},
-                {GL_GEOMETRY_SHADER, "voxelize.geom.glsl"},
-                {GL_FRAGMENT_SHADER, "voxelize.frag.glsl"}}),
-      framebuffer_("voxelize (no attachments)") {}
+    : programs_(shaderRoot, "voxelize",
+                {{GL_VERTEX_SHADER, "voxelize.vert.glsl"},
+                 {GL_GEOMETRY_SHADER, "voxelize.geom.glsl"},
+                 {GL_FRAGMENT_SHADER, "voxelize.frag.glsl"}}),
+      framebuffer_("voxelize (no attachments)") {
+    programs_.get(LayerTexturesKey{true});  // a broken shader fails at start-up
+}
 
 bool VoxelizePass::begin(const GpuScene& gpuScene, const VoxelVolume& volume) {
     const int n = volume.resolution();
@@ -39,14 +41,15 @@ bool VoxelizePass::begin(const GpuScene& gpuScene, const VoxelVolume& volume) {
     glDisable(GL_CULL_FACE);   // both windings: the projection axis flips some triangles
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
 
-    program_.use();
+    program_ = &programs_.get(LayerTexturesKey{gpuScene.hasLayerTextures()});
+    program_->use();
     volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     gpuScene.materials().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_MATERIALS);
     volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);
     volume.listedVoxels().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_LISTED_VOXELS);
-    glProgramUniform1ui(program_.id(), program_.location("uOccupiedCapacity"), volume.occupiedCapacity());
+    glProgramUniform1ui(program_->id(), program_->location("uOccupiedCapacity"), volume.occupiedCapacity());
     const auto& meanAlbedo = specularMeanAlbedoTable();
-    glProgramUniform2fv(program_.id(), program_.location("uSpecularMeanAlbedo"), kSpecularMeanAlbedoSize,
+    glProgramUniform2fv(program_->id(), program_->location("uSpecularMeanAlbedo"), kSpecularMeanAlbedoSize,
                         &meanAlbedo[0].x);
     static const std::array<float, kSpecularMeanAlbedoSize> sheenMean = [] {
         std::array<float, kSpecularMeanAlbedoSize> out{};
@@ -54,7 +57,7 @@ bool VoxelizePass::begin(const GpuScene& gpuScene, const VoxelVolume& volume) {
             out[static_cast<std::size_t>(j)] = sheenMeanAlbedo(static_cast<float>(j) / (kSpecularMeanAlbedoSize - 1));
         return out;
     }();
-    glProgramUniform1fv(program_.id(), program_.location("uSheenMeanAlbedo"), kSpecularMeanAlbedoSize,
+    glProgramUniform1fv(program_->id(), program_->location("uSheenMeanAlbedo"), kSpecularMeanAlbedoSize,
                         sheenMean.data());
     // Image atomics need an integer format; the volumes are 3D, so bind all slices (layered).
     glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
@@ -65,8 +68,8 @@ bool VoxelizePass::begin(const GpuScene& gpuScene, const VoxelVolume& volume) {
 }
 
 void VoxelizePass::setRegion(const VoxelBox& box) const {
-    glProgramUniform3i(program_.id(), program_.location("uRegionMin"), box.min.x, box.min.y, box.min.z);
-    glProgramUniform3i(program_.id(), program_.location("uRegionMax"), box.max.x, box.max.y, box.max.z);
+    glProgramUniform3i(program_->id(), program_->location("uRegionMin"), box.min.x, box.min.y, box.min.z);
+    glProgramUniform3i(program_->id(), program_->location("uRegionMax"), box.max.x, box.max.y, box.max.z);
 }
 
 void VoxelizePass::end() const {
@@ -86,7 +89,7 @@ void VoxelizePass::execute(const Scene& scene, const GpuScene& gpuScene, VoxelVo
     if (!begin(gpuScene, volume)) return;
     const int n = volume.resolution();
     setRegion({glm::ivec3(0), glm::ivec3(n)});
-    gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters);
+    gpuScene.draw(scene, *program_, GpuScene::Bind::Everything, counters);
     end();
 }
 
@@ -106,7 +109,7 @@ void VoxelizePass::executeBoxes(const Scene& scene, const GpuScene& gpuScene, Vo
         itemBoxes.push_back(voxelBoxOf(pose.bounds, volume.placement(), VoxelChangeTracker::kPadding));
     for (const VoxelBox& box : boxes) {
         setRegion(box);
-        gpuScene.draw(scene, program_, GpuScene::Bind::Everything, counters, [&](const DrawItem& item) {
+        gpuScene.draw(scene, *program_, GpuScene::Bind::Everything, counters, [&](const DrawItem& item) {
             return itemBoxes[static_cast<std::size_t>(&item - gpuScene.items().data())].overlaps(box);
         });
     }

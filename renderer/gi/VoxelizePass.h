@@ -8,11 +8,15 @@
 //
 // Also here: read-backs of the volumes for tests and debug views (they stall the pipeline).
 
+#include <shared.h>
+
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 #include "gi/VoxelRegions.h"
+#include "gl/ProgramVariants.h"
 #include "passes/Pass.h"
 
 namespace lit {
@@ -45,7 +49,7 @@ public:
                       const std::vector<VoxelBox>& boxes, const std::vector<ItemPose>& items,
                       DrawCounters& counters);
 
-    std::vector<gl::Program*> programs() override { return {&program_}; }
+    std::vector<gl::Program*> programs() override { return programs_.built(); }
 
 private:
     // Binds what the draws read and write; false when there is nothing to draw.
@@ -53,7 +57,22 @@ private:
     void setRegion(const VoxelBox& box) const;
     void end() const;
 
-    gl::Program program_;
+    // voxelize.*.glsl with and without the layers' textures (LIT_MATERIAL_TEXTURE_LAYERS,
+    // material.glsl): llvmpipe pays for their texture reads in every fragment even where no
+    // material has one (about an eighth of Sponza's voxelization).
+    struct LayerTexturesKey {
+        bool on = true;
+        unsigned index() const { return on ? 1u : 0u; }
+        std::string defines() const {
+            return "#define LIT_MATERIAL_TEXTURES " +
+                   std::to_string(on ? LIT_MATERIAL_TEXTURES_ALL
+                                     : LIT_MATERIAL_TEXTURES_ALL & ~LIT_MATERIAL_TEXTURE_LAYERS) +
+                   "\n";
+        }
+        std::string label() const { return on ? "" : " (no layer textures)"; }
+    };
+    gl::ProgramVariants<2> programs_;
+    const gl::Program* program_ = nullptr;  // the variant begin() chose for the scene
     gl::Framebuffer framebuffer_;  // no attachments: its default size is the volume's N
     int framebufferSize_ = 0;
 };
