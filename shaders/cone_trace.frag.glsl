@@ -35,7 +35,8 @@ void main() {
 
     int count = clamp(voxel.traceOptions.x, 1, 8);
     float NdotV = max(dot(n, v), 0.0);
-    vec3 albedo = indirectDiffuseAlbedo(s, NdotV);
+    float NcdotV = coatNdotV(s, n, v);
+    vec3 albedo = indirectDiffuseAlbedo(s, NdotV, NcdotV);
     bool diffuseSurface = max(albedo.r, max(albedo.g, albedo.b)) > 0.0;
     float lobeRoughness = specularLobeRoughness(s);
     // Rough specular on a surface with diffuse cones reuses them (cone.glsl). It does so also when
@@ -52,7 +53,7 @@ void main() {
     vec3 specular = vec3(0.0);
     if (uTraceTerms.y != 0)
         specular = indirectSpecularWeight(s.f0, s.f90, s.roughness, sheenBaseScale(s, NdotV), s.clearcoat,
-                                          s.clearcoatRoughness, NdotV) *
+                                          s.clearcoatRoughness, NdotV, NcdotV) *
                    traceSpecular(origin, n, v, lobeRoughness, count, gl_FragCoord.xy, voxel.traceOptions.y,
                                  maxDistance, reuse, cones);
     outIndirectDiffuse = vec4(diffuse * scale, 1.0);

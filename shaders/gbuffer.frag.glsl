@@ -2,6 +2,7 @@
 // G-buffer pass: writes the surface attributes the lighting passes need.
 #include "frame.glsl"
 #include "material.glsl"
+#include "octahedral.glsl"
 
 #include "geometry_varyings.glsl"
 
@@ -14,8 +15,8 @@ layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance
 layout(location = 4) out uvec4 outNodeId;
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
 // The specular layers' colour texels, each packUnorm4x8(rgb, a) (shared.h LIT_TEX_GBUFFER_LAYERS):
-// x specular colour and specular, y sheen colour and sheen roughness.
-layout(location = 5) out uvec2 outLayerTexels;
+// x specular colour and specular, y sheen colour and sheen roughness; z the coat's normal.
+layout(location = 5) out uvec4 outLayerTexels;
 #endif
 
 layout(location = LIT_LOC_NODE_ID) uniform uint uNodeId;
@@ -30,21 +31,10 @@ void main() {
     vec3 n = normalize(fs.worldNormal);
     // Double-sided materials (and back faces seen through open geometry) face the viewer.
     if (!gl_FrontFacing) n = -n;
+    vec3 interpolatedNormal = n;
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_NORMAL)
-    if (m.textures.z != 0) {
-        vec3 t = fs.worldTangent.xyz - n * dot(n, fs.worldTangent.xyz);
-        if (dot(t, t) > 1e-10) {
-            t = normalize(t);
-            float handedness = fs.worldTangent.w < 0.0 ? -1.0 : 1.0;
-            // The map's frame follows its KHR_texture_transform (identity: t itself).
-            vec3 frame = materialUvTangent(LIT_MATERIAL_SLOT_NORMAL);
-            t = normalize(t * frame.x + cross(n, t) * handedness * frame.y);
-            vec3 b = cross(n, t) * handedness * frame.z;
-            vec3 tn = texture(normalTexture, materialUv(LIT_MATERIAL_SLOT_NORMAL, fs.uv)).xyz * 2.0 - 1.0;
-            tn.xy *= m.params.z;
-            n = normalize(mat3(t, b, n) * tn);
-        }
-    }
+    if (m.textures.z != 0)
+        n = materialMappedNormal(normalTexture, LIT_MATERIAL_SLOT_NORMAL, fs.uv, n, fs.worldTangent, m.params.z);
 #endif
 
     float metalness = m.params.x;
@@ -75,7 +65,14 @@ void main() {
     outNormal = vec4(n, 1.0);
     outMaterial = vec4(clamp(roughness, 0.0, 1.0), clamp(metalness, 0.0, 1.0), layers.clearcoat, layers.clearcoatRoughness);
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
-    outLayerTexels = uvec2(packUnorm4x8(layers.specular), packUnorm4x8(layers.sheen));
+    // The coat's own normal (KHR_materials_clearcoat): its map on the interpolated normal, or
+    // that normal alone where only the base is normal-mapped.
+    vec3 coatNormal = interpolatedNormal;
+    if ((m.layerTextures.x & LIT_LAYER_TEXTURE_CLEARCOAT_NORMAL) != 0)
+        coatNormal = materialMappedNormal(clearcoatNormalTexture, LIT_MATERIAL_SLOT_CLEARCOAT_NORMAL, fs.uv,
+                                          interpolatedNormal, fs.worldTangent, m.clearcoat.z);
+    outLayerTexels = uvec4(packUnorm4x8(layers.specular), packUnorm4x8(layers.sheen),
+                           packSnorm2x16(octEncode(coatNormal)), 0u);
 #endif
     outEmissive = vec4(emissive, 1.0);
     outNodeId = uvec4(uNodeId, uPrimitive, uint(uMaterialIndex), 0u);

@@ -113,7 +113,7 @@ void main() {
     mat3 basis = rotatedTangentFrame(n, coneSetRotation());
 
     int count = clamp(voxel.traceOptions.x, 1, 8);
-    vec3 albedo = indirectDiffuseAlbedo(s, max(dot(n, v), 0.0));
+    vec3 albedo = indirectDiffuseAlbedo(s, max(dot(n, v), 0.0), coatNdotV(s, n, v));
     bool diffuseSurface = max(albedo.r, max(albedo.g, albedo.b)) > 0.0;
     bool specular = uTraceTerms.y != 0 && s.roughness >= uSmoothRoughness;
     // As cone_trace.frag.glsl: rough specular on a diffuse surface reuses the diffuse cones.

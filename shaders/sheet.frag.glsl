@@ -77,7 +77,7 @@ void main() {
             indirectDiffuse = diffuseAlbedoUnderLayers * traceDiffuse(origin, n, voxel.traceParams.w, maxDistance) * scale;
         if (uTerms.w != 0)
             indirectSpecular = indirectSpecularWeight(s.f0, s.f90, s.roughness, sheenBaseScale(s, NdotV), s.clearcoat,
-                                                      s.clearcoatRoughness, NdotV) *
+                                                      s.clearcoatRoughness, NdotV, NdotV) *
                                traceSpecular(origin, n, v, specularLobeRoughness(s), 1, gl_FragCoord.xy, 0, maxDistance,
                                              false, cones) *
                                scale;

@@ -182,7 +182,9 @@ void drawExtensionTextures(const Material& material) {
         {"Specular tint texture", "rgb"},
         {"Sheen colour texture", "rgb"},
         {"Sheen roughness texture", "alpha channel"},
+        {"Coat normal texture", "normal map"},
     }};
+    static_assert(kWhat.back()[0] != nullptr, "a line for every kExtensionTextureSlots entry");
     for (std::size_t k = 0; k < kExtensionTextureSlots.size(); ++k) {
         const ExtensionTexture& t = material.*kExtensionTextureSlots[k].member;
         if (t.texture < 0) continue;

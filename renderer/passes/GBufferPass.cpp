@@ -22,7 +22,7 @@ void GBufferPass::resize(int width, int height) {
     t.material = gl::Texture("gbuffer material", {GL_TEXTURE_2D, GL_RGBA8, width, height, 1, 1});
     t.emissive = gl::Texture("gbuffer emissive", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
     t.nodeId = gl::Texture("gbuffer node id", {GL_TEXTURE_2D, GL_RGBA32UI, width, height, 1, 1});
-    t.layers = gl::Texture("gbuffer layer texels", {GL_TEXTURE_2D, GL_RG32UI, width, height, 1, 1});
+    t.layers = gl::Texture("gbuffer layer texels", {GL_TEXTURE_2D, GL_RGBA32UI, width, height, 1, 1});
     t.depth = gl::Texture("gbuffer depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, 1});
     for (const gl::Texture* texture : {&t.albedo, &t.normal, &t.material, &t.emissive, &t.nodeId, &t.layers, &t.depth})
         texture->setFilter(GL_NEAREST, GL_NEAREST);

@@ -3,8 +3,9 @@
 // Targets: albedo (SRGB8_A8: base colour + occlusion), normal (RGBA16F world normal),
 // material (RGBA8: roughness, metalness, the clear coat's two texels), emissive (RGBA16F
 // radiance), node ID (RGBA32UI: index of the scene node drawn there + 1, 0 = background, for
-// picking and the selection outline; the primitive; the material), layer texels (RG32UI: the
-// specular and sheen textures' texels, shared.h LIT_TEX_GBUFFER_LAYERS), depth (32F).
+// picking and the selection outline; the primitive; the material), layer texels (RGBA32UI: the
+// specular and sheen textures' texels and the coat's normal, shared.h LIT_TEX_GBUFFER_LAYERS),
+// depth (32F).
 
 #include "gl/ProgramVariants.h"
 #include "passes/Pass.h"

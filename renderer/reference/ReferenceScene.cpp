@@ -358,6 +358,9 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::ve
     hit.clearcoatRoughness =
         std::clamp(m.clearcoatRoughness * extensionTexel(m.clearcoatRoughnessTexture).g, 0.0f, 1.0f);
     hit.clearcoatNormal = interpolatedNormal;
+    if (const ExtensionTexture& t = m.clearcoatNormalTexture; t.texture >= 0)
+        hit.clearcoatNormal = mappedNormal(interpolatedNormal, tangent, uvTransformRows(t.transform),
+                                           sampleTexture(t.texture, extensionUv(t)), t.scale);
     const float transmission = m.transmission * extensionTexel(m.transmissionTexture).r;
     hit.transmission = std::clamp(transmission, 0.0f, 1.0f);
     return baseColor.a;

@@ -123,6 +123,13 @@ ExtensionTexture Importer::extensionTexture(const tinygltf::Value& info, const s
         else
             warn(where + " texCoord is not a non-negative integer; Lit uses TEXCOORD_0");
     }
+    if (info.Has("scale")) {
+        const tinygltf::Value& scale = info.Get("scale");
+        if (scale.IsNumber() && std::isfinite(scale.GetNumberAsDouble()))
+            out.scale = static_cast<float>(scale.GetNumberAsDouble());
+        else
+            warn(where + " scale is not a finite number; Lit uses 1");
+    }
     if (info.Has("extensions") && info.Get("extensions").IsObject()) {
         const tinygltf::Value& extensions = info.Get("extensions");
         tinygltf::ExtensionMap map;

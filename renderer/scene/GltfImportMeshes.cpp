@@ -180,9 +180,16 @@ void importPrimitive(const GltfSource& source, const Material* material, const t
         for (KeptAttributes& target : out.morphTargets)
             for (auto& [name, a] : target) reorder(a);
     }
-    // A normal map is painted in the frame of its own UVs.
-    if (!haveTangents)
-        computeTangents(out, material && material->normalTexture >= 0 ? drawnTexCoord(*material, kNormalSlot) : 0);
+    // A normal map is painted in the frame of its own UVs (the base's, else the clear coat's;
+    // both share the one tangent frame).
+    if (!haveTangents) {
+        int tangentSet = 0;
+        if (material && material->normalTexture >= 0)
+            tangentSet = drawnTexCoord(*material, kNormalSlot);
+        else if (material && material->clearcoatNormalTexture.texture >= 0)
+            tangentSet = drawnTexCoord(material->clearcoatNormalTexture);
+        computeTangents(out, tangentSet);
+    }
     out.fileHasTangents = haveTangents;
     out.kept = gltfkeep::keep(in.extras, in.extensions);
     // How the file stored the drawn data and what its accessors held besides the values, for a

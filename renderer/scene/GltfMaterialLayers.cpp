@@ -147,7 +147,6 @@ void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& mate
         const std::string where = kClearcoatExtension;
         material.clearcoatFactor = factorIn(*clearcoat, "clearcoatFactor", 0.0f, 0.0, 1.0, where, warn);
         material.clearcoatRoughness = factorIn(*clearcoat, "clearcoatRoughnessFactor", 0.0f, 0.0, 1.0, where, warn);
-        warnTextures(*clearcoat, {"clearcoatNormalTexture"}, where, warn);
     }
     if (const tinygltf::Value* transmission = object(kTransmissionExtension)) {
         const std::string where = kTransmissionExtension;

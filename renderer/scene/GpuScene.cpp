@@ -107,7 +107,7 @@ gpu::GpuMaterial toGpu(const Material& m) {
     const float reflectance = (m.ior - 1.0f) / (m.ior + 1.0f);  // η = 0 (a mirror) gives 1
     const float f0FromIor = reflectance * reflectance;
     g.specular = glm::vec4(glm::vec3(f0FromIor) * m.specularColorFactor * m.specularFactor, m.specularFactor);
-    g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughness, 0.0f, 0.0f);
+    g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughness, m.clearcoatNormalTexture.scale, 0.0f);
     g.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughness);
     return g;
 }
@@ -240,6 +240,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
     std::vector<gpu::GpuMaterial> table;
     table.reserve(scene.materials.size() + 1);
     materialTextures_.clear();
+    materialLayerBits_.clear();
     materialUvTransforms_.clear();
     sheetMaterials_.clear();
     materialLayers_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
@@ -270,7 +271,13 @@ void GpuScene::updateMaterials(const Scene& scene) {
         // LIT_LAYER_TEXTURE_* bit k is layer slot LIT_MATERIAL_SLOT_CLEARCOAT + k.
         for (int k = 0; LIT_MATERIAL_SLOT_CLEARCOAT + k < LIT_MATERIAL_SLOTS; ++k)
             if (present(LIT_MATERIAL_SLOT_CLEARCOAT + k)) g.layerTextures.x |= 1 << k;
+        // A coat over a normal-mapped base keeps the interpolated normal (KHR_materials_clearcoat),
+        // which the G-buffer then stores beside the base's.
+        if (m.clearcoatFactor > 0.0f &&
+            (present(LIT_MATERIAL_SLOT_CLEARCOAT_NORMAL) || present(LIT_MATERIAL_SLOT_NORMAL)))
+            g.layerTextures.x |= LIT_LAYER_COAT_NORMAL_STORED;
         layerTextures_ = layerTextures_ || g.layerTextures.x != 0;
+        materialLayerBits_.push_back(g.layerTextures.x);
         table.push_back(g);
         sheetMaterials_.push_back(drawnAsSheet(m));
         materialTextures_.push_back(t);
@@ -284,6 +291,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
     sheetMaterials_.push_back(false);
     hasSheets_ = std::find(sheetMaterials_.begin(), sheetMaterials_.end(), true) != sheetMaterials_.end();
     materialTextures_.push_back({});
+    materialLayerBits_.push_back(0);
     materialUvTransforms_.push_back(uvTransformsOf(fallback));
     materials_ = gl::Buffer::fromSpan<gpu::GpuMaterial>("materials", table);
 }
@@ -353,10 +361,10 @@ void GpuScene::sheetItems(const std::vector<std::uint32_t>* candidates, std::vec
 
 unsigned GpuScene::materialTextureMask(const DrawItem& item) const {
     if (materialTextures_.empty()) return 0;
-    const MaterialTextures& t = materialTextures_[static_cast<std::size_t>(materialRow(item))];
+    const auto row = static_cast<std::size_t>(materialRow(item));
+    const MaterialTextures& t = materialTextures_[row];
     const auto present = [&t](int slot) { return t[static_cast<std::size_t>(slot)].texture != 0; };
-    bool layers = false;
-    for (int slot = LIT_MATERIAL_SLOT_CLEARCOAT; slot < LIT_MATERIAL_SLOTS; ++slot) layers = layers || present(slot);
+    const bool layers = materialLayerBits_[row] != 0;
     return (present(LIT_MATERIAL_SLOT_BASE_COLOR) ? LIT_MATERIAL_TEXTURE_BASE_COLOR : 0u) |
            (present(LIT_MATERIAL_SLOT_METALLIC_ROUGHNESS) ? LIT_MATERIAL_TEXTURE_METALLIC_ROUGHNESS : 0u) |
            (present(LIT_MATERIAL_SLOT_NORMAL) ? LIT_MATERIAL_TEXTURE_NORMAL : 0u) |

@@ -51,9 +51,10 @@ struct DrawCounters {
 
 // The texture unit of each material slot (LIT_MATERIAL_SLOT_* → LIT_TEX_*).
 inline constexpr std::array<GLuint, LIT_MATERIAL_SLOTS> kMaterialTextureUnits = {
-    LIT_TEX_BASE_COLOR, LIT_TEX_METALLIC_ROUGHNESS, LIT_TEX_NORMAL,      LIT_TEX_EMISSIVE,
-    LIT_TEX_OCCLUSION,  LIT_TEX_TRANSMISSION,       LIT_TEX_CLEARCOAT,   LIT_TEX_CLEARCOAT_ROUGHNESS,
-    LIT_TEX_SPECULAR,   LIT_TEX_SPECULAR_COLOR,     LIT_TEX_SHEEN_COLOR, LIT_TEX_SHEEN_ROUGHNESS};
+    LIT_TEX_BASE_COLOR,      LIT_TEX_METALLIC_ROUGHNESS, LIT_TEX_NORMAL,      LIT_TEX_EMISSIVE,
+    LIT_TEX_OCCLUSION,       LIT_TEX_TRANSMISSION,       LIT_TEX_CLEARCOAT,   LIT_TEX_CLEARCOAT_ROUGHNESS,
+    LIT_TEX_SPECULAR,        LIT_TEX_SPECULAR_COLOR,     LIT_TEX_SHEEN_COLOR, LIT_TEX_SHEEN_ROUGHNESS,
+    LIT_TEX_CLEARCOAT_NORMAL};
 
 class GpuScene {
 public:
@@ -100,8 +101,8 @@ public:
     // Whether a material has KHR_materials_ior / _specular / _sheen / _clearcoat values other than the
     // defaults (the lighting passes' MaterialLayersVariant).
     bool hasMaterialLayers() const { return materialLayers_; }
-    // Whether a material has a layer texture (KHR_materials_specular, _sheen, _clearcoat): the
-    // G-buffer then stores their texels (GBufferPass's layers target).
+    // Whether a material has a layer texture (KHR_materials_specular, _sheen, _clearcoat) or a coat
+    // normal of its own: the G-buffer then stores their texels (GBufferPass's layers target).
     bool hasLayerTextures() const { return layerTextures_; }
 
     // The textures `item`'s material samples, as LIT_MATERIAL_TEXTURES bits (material.glsl): the
@@ -152,6 +153,7 @@ private:
     // Per material slot (LIT_MATERIAL_SLOT_*).
     using MaterialTextures = std::array<TextureBinding, LIT_MATERIAL_SLOTS>;
     std::vector<MaterialTextures> materialTextures_;  // per material, + default at the end
+    std::vector<int> materialLayerBits_;              // GpuMaterial::layerTextures.x, same rows
     std::vector<UvTransforms> materialUvTransforms_;  // per material, + default at the end
 };
 

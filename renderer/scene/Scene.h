@@ -234,6 +234,7 @@ enum class AlphaMode { Opaque, Mask, Blend };
 struct ExtensionTexture {
     int texture = -1;  // index into Scene::textures, -1 = none
     int texCoord = 0;  // the TEXCOORD_n set it names
+    float scale = 1.0f;  // a normal texture's scale of its x and y (normalTextureInfo), else 1
     TextureTransform transform{};
     bool operator==(const ExtensionTexture&) const = default;
 };
@@ -275,13 +276,15 @@ struct Material {
     // The layers' textures, each multiplying its factor: KHR_materials_specular's specularTexture
     // (alpha) and specularColorTexture (rgb, sRGB), KHR_materials_sheen's sheenColorTexture (rgb,
     // sRGB) and sheenRoughnessTexture (alpha), KHR_materials_clearcoat's clearcoatTexture (red)
-    // and clearcoatRoughnessTexture (green). The coat's normal texture is not drawn (kept, saved).
+    // and clearcoatRoughnessTexture (green), and the coat's own normal map, clearcoatNormalTexture
+    // (its `scale` the map's strength; without one the coat follows the interpolated normal).
     ExtensionTexture specularTexture{};
     ExtensionTexture specularColorTexture{};
     ExtensionTexture sheenColorTexture{};
     ExtensionTexture sheenRoughnessTexture{};
     ExtensionTexture clearcoatTexture{};
     ExtensionTexture clearcoatRoughnessTexture{};
+    ExtensionTexture clearcoatNormalTexture{};
     // KHR_materials_volume, read and saved; Lit draws no refraction or absorption (a thin sheet).
     float thickness = 0.0f;                        // metres in the mesh's space; 0: thin-walled
     float attenuationDistance = 0.0f;              // metres; 0: infinite (the file leaves it out)
@@ -333,7 +336,7 @@ struct ExtensionTextureSlot {
     ExtensionTexture Material::*member;
     bool colour;  // sRGB-encoded colour (else linear data)
 };
-inline constexpr std::array<ExtensionTextureSlot, 7> kExtensionTextureSlots{{
+inline constexpr std::array<ExtensionTextureSlot, 8> kExtensionTextureSlots{{
     {"KHR_materials_transmission", "transmissionTexture", &Material::transmissionTexture, false},
     {"KHR_materials_clearcoat", "clearcoatTexture", &Material::clearcoatTexture, false},
     {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", &Material::clearcoatRoughnessTexture, false},
@@ -341,6 +344,7 @@ inline constexpr std::array<ExtensionTextureSlot, 7> kExtensionTextureSlots{{
     {"KHR_materials_specular", "specularColorTexture", &Material::specularColorTexture, true},
     {"KHR_materials_sheen", "sheenColorTexture", &Material::sheenColorTexture, true},
     {"KHR_materials_sheen", "sheenRoughnessTexture", &Material::sheenRoughnessTexture, false},
+    {"KHR_materials_clearcoat", "clearcoatNormalTexture", &Material::clearcoatNormalTexture, false},
 }};
 
 enum class LightType { Directional, Point, Spot };

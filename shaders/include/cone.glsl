@@ -445,13 +445,13 @@ vec3 specularAlbedo(vec3 f0, float f90, float roughness, float NdotV) {
 
 // What multiplies the traced indirect specular radiance (docs/MATERIALS.md): the base lobe's
 // directional albedo times `baseScale` (what a sheen leaves of it), through what a clear coat of
-// weight `clearcoat` lets pass, plus the coat's.
+// weight `clearcoat` lets pass, plus the coat's (NcdotV: seen along the coat's own normal).
 vec3 indirectSpecularWeight(vec3 f0, float f90, float roughness, float baseScale, float clearcoat,
-                            float clearcoatRoughness, float NdotV) {
+                            float clearcoatRoughness, float NdotV, float NcdotV) {
     vec3 base = specularAlbedo(f0, f90, roughness, NdotV) * baseScale;
     if (clearcoat <= 0.0) return base;
-    return base * clearcoatBaseScale(clearcoat, NdotV) +
-           clearcoat * specularAlbedo(kClearcoatF0, 1.0, clearcoatRoughness, NdotV);
+    return base * clearcoatBaseScale(clearcoat, NcdotV) +
+           clearcoat * specularAlbedo(kClearcoatF0, 1.0, clearcoatRoughness, NcdotV);
 }
 
 // Cones narrower than this march half a voxel per step for the whole volume; 0.02 rad is about

@@ -1,15 +1,17 @@
 // The direct light of a surface from every punctual light with shadow-map visibility, split into
 // the two direct terms (docs/MATERIALS.md, direct_lighting.frag.glsl):
 //   diffuse  = Σ V·E·(albedo/π · t_s · b + f_sheen · b)·(n·l)
-//   specular = Σ V·E·(f_spec · t_s · b + cc·f_coat)·(n·l)
-// with t_s what a sheen leaves of the base and b = 1 − cc·Fc(n·v) what a clear coat lets through.
+//   specular = Σ V·E·(f_spec · t_s · b·(n·l) + cc·f_coat·(n_c·l))
+// with t_s what a sheen leaves of the base and b = 1 − cc·Fc(n_c·v) what a clear coat lets through;
+// n_c is the coat's normal (coatNormal: its own map, else n).
 // `albedo` is the diffuse albedo (a transmissive sheet passes its (1 − t) share). Used by the
 // deferred direct pass and the sheet pass. Needs gbuffer.glsl (Surface, the sheen table) and
 // lights.glsl.
 void directLight(Surface s, vec3 n, vec3 v, vec3 albedo, float shadowNormalOffset, out vec3 diffuse, out vec3 specular) {
     float alpha = alphaFromRoughness(s.roughness);
     float NdotV = max(dot(n, v), 0.0);
-    float coatScale = clearcoatBaseScale(s.clearcoat, NdotV);
+    vec3 nc = coatNormal(s, n, v);
+    float coatScale = clearcoatBaseScale(s.clearcoat, max(dot(nc, v), 0.0));
     float base = coatScale * sheenBaseScale(s, NdotV);
     float coatAlpha = alphaFromRoughness(s.clearcoatRoughness);
     bool sheen = max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b)) > 0.0;
@@ -21,9 +23,14 @@ void directLight(Surface s, vec3 n, vec3 v, vec3 albedo, float shadowNormalOffse
         GpuLight light = lights[i];
         LightSample ls = sampleLight(light, s.position);
         float NdotL = dot(n, ls.l);
-        if (NdotL <= 0.0 || max(ls.radiance.r, max(ls.radiance.g, ls.radiance.b)) <= 0.0) continue;
+        float NcdotL = s.clearcoat > 0.0 ? dot(nc, ls.l) : 0.0;
+        if (max(NdotL, NcdotL) <= 0.0 || max(ls.radiance.r, max(ls.radiance.g, ls.radiance.b)) <= 0.0) continue;
         vec3 visibility = shadowVisibility(light, s.position, n, frame.exposure.y, shadowNormalOffset);
         if (max(visibility.r, max(visibility.g, visibility.b)) <= 0.0) continue;
+        if (NcdotL > 0.0)
+            specular += ls.radiance * visibility * (NcdotL * s.clearcoat) *
+                        specularBrdf(nc, v, ls.l, kClearcoatF0, 1.0, coatAlpha);
+        if (NdotL <= 0.0) continue;
         vec3 E = ls.radiance * visibility * NdotL;
         diffuse += E * albedo * (base / PI);
         if (sheen) {
@@ -32,6 +39,5 @@ void directLight(Surface s, vec3 n, vec3 v, vec3 albedo, float shadowNormalOffse
                        (D_Charlie(max(dot(n, h), 0.0), alphaSheen) * V_Neubelt(NdotL, max(NdotV, 1e-4)) * coatScale);
         }
         specular += E * specularBrdf(n, v, ls.l, s.f0, s.f90, alpha) * base;
-        if (s.clearcoat > 0.0) specular += E * s.clearcoat * specularBrdf(n, v, ls.l, kClearcoatF0, 1.0, coatAlpha);
     }
 }

@@ -3,6 +3,7 @@
 #include "shared.h"
 #include "material_table.glsl"
 #include "brdf.glsl"
+#include "octahedral.glsl"
 
 layout(binding = LIT_TEX_GBUFFER_ALBEDO) uniform sampler2D gbufferAlbedo;
 layout(binding = LIT_TEX_GBUFFER_NORMAL) uniform sampler2D gbufferNormal;
@@ -24,6 +25,7 @@ struct Surface {
     float f90;                // and at grazing incidence
     float clearcoat;          // the coat's weight (0: none)
     float clearcoatRoughness; // perceptual
+    vec3 clearcoatNormal;     // world, unit; 0: the coat shares the shading normal (coatNormal)
     vec3 sheenColor;          // 0: no sheen
     float sheenRoughness;     // perceptual
 };
@@ -47,6 +49,7 @@ void setMaterialLayers(GpuMaterial m, LayerTexels t, inout Surface s) {
     s.clearcoatRoughness = m.clearcoat.y * t.clearcoatRoughness;
     s.sheenColor = m.sheen.rgb * t.sheen.rgb;
     s.sheenRoughness = m.sheen.a * t.sheen.a;
+    s.clearcoatNormal = vec3(0.0);
 }
 
 // The specular parameters of the pixel's material, from the material table entry the ID target
@@ -56,12 +59,14 @@ void readMaterialLayers(ivec2 pixel, inout Surface s) {
 #if LIT_MATERIAL_LAYERS
     GpuMaterial m = materials[texelFetch(gbufferId, pixel, 0).b];
     LayerTexels t = noLayerTexels();
+    uvec4 texels = uvec4(0u);
     if (m.layerTextures.x != 0) {
         vec2 coat = texelFetch(gbufferMaterial, pixel, 0).ba;
-        uvec2 texels = texelFetch(gbufferLayers, pixel, 0).rg;
+        texels = texelFetch(gbufferLayers, pixel, 0);
         t = LayerTexels(coat.x, coat.y, unpackUnorm4x8(texels.x), unpackUnorm4x8(texels.y));
     }
     setMaterialLayers(m, t, s);
+    if ((m.layerTextures.x & LIT_LAYER_COAT_NORMAL_STORED) != 0) s.clearcoatNormal = octDecode(unpackSnorm2x16(texels.z));
 #else
     s.f0 = specularF0(s.baseColor, s.metalness, vec3(0.04));
     s.f90 = 1.0;
@@ -69,6 +74,7 @@ void readMaterialLayers(ivec2 pixel, inout Surface s) {
     s.clearcoatRoughness = 0.0;
     s.sheenColor = vec3(0.0);
     s.sheenRoughness = 0.0;
+    s.clearcoatNormal = vec3(0.0);
 #endif
 }
 
@@ -89,11 +95,12 @@ float sheenBaseScale(Surface s, float NdotV) {
 
 // What multiplies the irradiance/π a pixel gathers to give L_ID (docs/MATERIALS.md): the diffuse
 // albedo under the sheen, plus the sheen's own directional albedo (the gather stands for the
-// light over its lobe), all under what a clear coat lets through.
-vec3 indirectDiffuseAlbedo(Surface s, float NdotV) {
+// light over its lobe), all under what a clear coat lets through (NcdotV: the coat's normal's,
+// coatNdotV).
+vec3 indirectDiffuseAlbedo(Surface s, float NdotV, float NcdotV) {
     vec3 albedo = diffuseAlbedo(s.baseColor, s.metalness) * sheenBaseScale(s, NdotV) +
                   s.sheenColor * sheenAlbedo(NdotV, s.sheenRoughness);
-    return albedo * clearcoatBaseScale(s.clearcoat, NdotV);
+    return albedo * clearcoatBaseScale(s.clearcoat, NcdotV);
 }
 
 // The roughness the indirect specular lobe is traced with: a coat smoother than the base
@@ -126,3 +133,10 @@ vec3 shadingNormal(vec3 n, vec3 v) {
     float nv = dot(n, v);
     return nv < 0.0 ? normalize(n - v * (nv * 1.01)) : n;
 }
+
+// The clear coat's shading normal seen from v: its own (Surface::clearcoatNormal), else the
+// base's shading normal `n`.
+vec3 coatNormal(Surface s, vec3 n, vec3 v) {
+    return dot(s.clearcoatNormal, s.clearcoatNormal) > 0.0 ? shadingNormal(s.clearcoatNormal, v) : n;
+}
+float coatNdotV(Surface s, vec3 n, vec3 v) { return max(dot(coatNormal(s, n, v), v), 0.0); }

@@ -2,6 +2,7 @@
 // resolution and temporal accumulation"): what the low-resolution trace (indirect_trace.frag.glsl)
 // and the resolve (indirect_resolve.frag.glsl) share. Needs frame.glsl, gbuffer.glsl, cone.glsl.
 #include "bfloat.glsl"
+#include "octahedral.glsl"
 //
 // Both terms are traced *demodulated*: L_ID / (albedo_d · intensity · AO) = irradiance/π and
 // L_IS / (E · intensity · AO) = ⟨L⟩, the lobe-averaged radiance. These vary slowly across a
@@ -51,19 +52,6 @@ void unpackIndirect(uvec4 bits, out vec4 diffuse, out vec4 specular) {
     specular = vec4(unpackBfloat2(bits.z), unpackBfloat2(bits.w));
 }
 
-// Octahedral unit-vector encoding (Cigolle et al. 2014, "A Survey of Efficient Representations
-// for Independent Unit Vectors", JCGT 3(2)); 16 bits per coordinate keep it within 0.01°.
-vec2 octEncode(vec3 n) {
-    n /= abs(n.x) + abs(n.y) + abs(n.z);
-    vec2 signs = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(n.xy, vec2(0.0)));
-    return n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * signs;
-}
-vec3 octDecode(vec2 e) {
-    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
-    float t = max(-n.z, 0.0);
-    n.xy += mix(vec2(t), vec2(-t), greaterThanEqual(n.xy, vec2(0.0)));
-    return normalize(n);
-}
 uvec4 packGuide(vec3 position, vec3 normal) {
     return uvec4(floatBitsToUint(position), packSnorm2x16(octEncode(normal)));
 }

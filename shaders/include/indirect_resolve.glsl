@@ -126,7 +126,8 @@ void main() {
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);
     vec3 n = shadingNormal(s.normal, v);
     float NdotV = max(dot(n, v), 0.0);
-    vec3 albedo = indirectDiffuseAlbedo(s, NdotV);
+    float NcdotV = coatNdotV(s, n, v);
+    vec3 albedo = indirectDiffuseAlbedo(s, NdotV, NcdotV);
     bool diffuseSurface = max(albedo.r, max(albedo.g, albedo.b)) > 0.0;
     bool smoothSurface = s.roughness < uSmoothRoughness;
 
@@ -257,6 +258,6 @@ void main() {
     if (wantSpecular)
         outIndirectSpecular =
             vec4(indirectSpecularWeight(s.f0, s.f90, baseRoughness, sheenBaseScale(s, NdotV), s.clearcoat,
-                                        s.clearcoatRoughness, NdotV) *
+                                        s.clearcoatRoughness, NdotV, NcdotV) *
                      specular * scale, 1.0);
 }

@@ -26,6 +26,7 @@ layout(binding = LIT_TEX_SPECULAR) uniform sampler2D specularTexture;
 layout(binding = LIT_TEX_SPECULAR_COLOR) uniform sampler2D specularColorTexture;
 layout(binding = LIT_TEX_SHEEN_COLOR) uniform sampler2D sheenColorTexture;
 layout(binding = LIT_TEX_SHEEN_ROUGHNESS) uniform sampler2D sheenRoughnessTexture;
+layout(binding = LIT_TEX_CLEARCOAT_NORMAL) uniform sampler2D clearcoatNormalTexture;
 
 // Per texture reference (LIT_MATERIAL_SLOT_*), the two rows of its KHR_texture_transform as a
 // 2×3 matrix, xyz each (scene/TextureTransform.h; identity without the extension), and in the
@@ -93,6 +94,23 @@ LayerTexels materialLayerTexels(GpuMaterial m, vec4 uv) {
     }
 #endif
     return t;
+}
+
+// Normal `n` (unit, facing the viewer) bent by the normal map of texture reference `slot` (a
+// constant) sampled at mesh UVs `uv`, of strength `scale`, in the frame of the vertex tangent
+// `tangent` (xyz world, w handedness) turned by the reference's KHR_texture_transform.
+vec3 materialMappedNormal(sampler2D map, int slot, vec4 uv, vec3 n, vec4 tangent, float scale) {
+    vec3 t = tangent.xyz - n * dot(n, tangent.xyz);
+    if (dot(t, t) <= 1e-10) return n;
+    t = normalize(t);
+    float handedness = tangent.w < 0.0 ? -1.0 : 1.0;
+    // The map's frame follows its KHR_texture_transform (identity: t itself).
+    vec3 frame = materialUvTangent(slot);
+    t = normalize(t * frame.x + cross(n, t) * handedness * frame.y);
+    vec3 b = cross(n, t) * handedness * frame.z;
+    vec3 tn = texture(map, materialUv(slot, uv)).xyz * 2.0 - 1.0;
+    tn.xy *= scale;
+    return normalize(mat3(t, b, n) * tn);
 }
 
 // True when an alpha-masked fragment must be discarded.

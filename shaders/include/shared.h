@@ -37,8 +37,8 @@ using mat4 = glm::mat4;
 #define LIT_LOC_NORMAL_MATRIX 1    // mat4 inverse transpose of the model matrix
 #define LIT_LOC_MATERIAL 2         // int index into GpuMaterial[]
 #define LIT_LOC_NODE_ID 3          // uint node index + 1 the G-buffer writes to its ID target (0 = background)
-#define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS] at 4 .. 27: texture transforms (material.glsl)
-#define LIT_LOC_PRIMITIVE 28       // uint primitive index within the node's mesh the G-buffer writes beside the node ID
+#define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS] at 4 .. 29: texture transforms (material.glsl)
+#define LIT_LOC_PRIMITIVE 30       // uint primitive index within the node's mesh the G-buffer writes beside the node ID
 
 // ---- Texture units -----------------------------------------------------------------------
 // Material textures (G-buffer, shadow alpha test, voxelization).
@@ -137,10 +137,12 @@ using mat4 = glm::mat4;
 #define LIT_TEX_SPECULAR_COLOR (LIT_TEX_TRANSMISSION + 4)
 #define LIT_TEX_SHEEN_COLOR (LIT_TEX_TRANSMISSION + 5)
 #define LIT_TEX_SHEEN_ROUGHNESS (LIT_TEX_TRANSMISSION + 6)
-// The G-buffer's RG32UI layer texels (gbuffer.glsl): r the specular colour and specular texels,
-// g the sheen colour and sheen-roughness texels, each packUnorm4x8(rgb, a). Written and read only
-// for materials with such textures (GpuMaterial::layerTextures).
-#define LIT_TEX_GBUFFER_LAYERS (LIT_TEX_TRANSMISSION + 7)
+#define LIT_TEX_CLEARCOAT_NORMAL (LIT_TEX_TRANSMISSION + 7)
+// The G-buffer's RGBA32UI layer texels (gbuffer.glsl): r the specular colour and specular texels,
+// g the sheen colour and sheen-roughness texels, each packUnorm4x8(rgb, a), b the clear coat's
+// world normal (octahedral, packSnorm2x16), a unused. Written and read only for materials with
+// such textures or a coat normal of its own (GpuMaterial::layerTextures).
+#define LIT_TEX_GBUFFER_LAYERS (LIT_TEX_TRANSMISSION + 8)
 #define LIT_TEX_UNIT_COUNT (LIT_TEX_GBUFFER_LAYERS + 1)  // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
@@ -313,6 +315,10 @@ using mat4 = glm::mat4;
 #define LIT_LAYER_TEXTURE_SPECULAR_COLOR 8
 #define LIT_LAYER_TEXTURE_SHEEN_COLOR 16
 #define LIT_LAYER_TEXTURE_SHEEN_ROUGHNESS 32
+#define LIT_LAYER_TEXTURE_CLEARCOAT_NORMAL 64
+// Not a texture: the G-buffer stores the coat's own normal (its clearcoatNormalTexture, or the
+// interpolated normal where only the base is normal-mapped); without, the coat shares the base's.
+#define LIT_LAYER_COAT_NORMAL_STORED 128
 
 // A material's texture references in the order of Material's per-reference arrays (scene/Scene.h),
 // then the extensions' references;
@@ -330,7 +336,8 @@ using mat4 = glm::mat4;
 #define LIT_MATERIAL_SLOT_SPECULAR_COLOR 9
 #define LIT_MATERIAL_SLOT_SHEEN_COLOR 10
 #define LIT_MATERIAL_SLOT_SHEEN_ROUGHNESS 11
-#define LIT_MATERIAL_SLOTS 12
+#define LIT_MATERIAL_SLOT_CLEARCOAT_NORMAL 12
+#define LIT_MATERIAL_SLOTS 13
 
 // ---- Structs ------------------------------------------------------------------------------
 // Per-frame camera and output parameters. std140, binding LIT_UBO_FRAME.
@@ -370,7 +377,8 @@ struct GpuMaterial {
     vec4 alpha;               // x alpha cutoff, y transmission (KHR_materials_transmission), zw unused
     vec4 specular;            // rgb ((η − 1)/(η + 1))² · k · s before the clamp to s, a dielectric F90 = s
                               // (KHR_materials_ior, _specular; material_table.glsl materialDielectricF0)
-    vec4 clearcoat;           // x coat weight, y coat roughness (perceptual) (KHR_materials_clearcoat), zw unused
+    vec4 clearcoat;           // x coat weight, y coat roughness (perceptual), z the coat normal texture's scale
+                              // (KHR_materials_clearcoat), w unused
     vec4 sheen;               // rgb sheen colour, a sheen roughness (perceptual) (KHR_materials_sheen)
     ivec4 layerTextures;      // x LIT_LAYER_TEXTURE_* bits: the layers' textures the material has; yzw unused
 };

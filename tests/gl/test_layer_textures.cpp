@@ -1,8 +1,9 @@
 // The layers' textures (label gl): the Blender scene of tools/blender/make_layer_textures.py
 // (three dark matte planes under a low sun shining towards the camera: "coat" with a
 // checker-painted clear coat, "shine" with a checker-painted Specular that Blender bakes into a
-// specular colour texture, and "cloth", which this test gives a sheen whose colour texture is the
-// checker, since Blender 3.4 writes no sheen from a Principled BSDF). The reference tracer reads
+// specular colour texture, "cloth", which this test gives a sheen whose colour texture is the
+// checker, since Blender 3.4 writes no sheen from a Principled BSDF, and "ridges", whose clear
+// coat has a normal map tilting it towards the sun and away by texel). The reference tracer reads
 // each texture per hit; the rasterizer stores the texels in the G-buffer and its lighting reads
 // them there. Per plane, the texels with the layer and those without must each match the
 // reference; without the textures both halves of a plane look alike, so the comparison can fail.
@@ -50,9 +51,10 @@ protected:
         camera_ = cameraFor(scene_, settings_);
         std::map<int, std::string> planes;
         for (std::size_t i = 0; i < scene_.nodes.size(); ++i)
-            if (scene_.nodes[i].name == "coat" || scene_.nodes[i].name == "shine" || scene_.nodes[i].name == "cloth")
+            if (scene_.nodes[i].name == "coat" || scene_.nodes[i].name == "shine" || scene_.nodes[i].name == "cloth" ||
+                scene_.nodes[i].name == "ridges")
                 planes[static_cast<int>(i)] = scene_.nodes[i].name;
-        ASSERT_EQ(planes.size(), 3u);
+        ASSERT_EQ(planes.size(), 4u);
 
         // Regions from the reference's first hits: which plane, and whether its texel has the layer.
         const ReferenceScene rs(scene_, quiet_);
@@ -65,10 +67,15 @@ protected:
             const glm::vec3 toHit = hits[p].position - camera_.position;
             if (!rs.intersect({camera_.position, glm::normalize(toHit), 0.0f, INFINITY}, at) || at.node != plane->first)
                 continue;
+            // "ridges": "on" where the coat leans towards the sun (glTF's −z, Blender's +y).
             const bool layer = plane->second == "coat"    ? at.clearcoat > 0.5f
                                : plane->second == "shine" ? at.dielectricF0.g > 0.02f
-                                                          : at.sheenColor.g > 0.5f;
-            const int base = plane->second == "coat" ? 0 : plane->second == "shine" ? 2 : 4;
+                               : plane->second == "cloth" ? at.sheenColor.g > 0.5f
+                                                          : at.clearcoatNormal.z < -0.1f;
+            const int base = plane->second == "coat"    ? 0
+                             : plane->second == "shine" ? 2
+                             : plane->second == "cloth" ? 4
+                                                        : 6;
             region[p] = base + (layer ? 0 : 1);
         }
         const std::vector<std::vector<std::size_t>> inner =
@@ -90,8 +97,8 @@ protected:
         return out;
     }
 
-    inline static const char* const kRegions[] = {"coat_on",   "coat_off", "shine_on",
-                                                  "shine_off", "cloth_on", "cloth_off"};
+    inline static const char* const kRegions[] = {"coat_on",  "coat_off",  "shine_on",  "shine_off",
+                                                  "cloth_on", "cloth_off", "ridges_on", "ridges_off"};
     Log quiet_;
     std::string warnings_;
     Scene scene_;
@@ -107,6 +114,10 @@ TEST_F(LayerTextures, BlendersImagesAreReadAsTheTextures) {
     EXPECT_EQ(coat->clearcoatFactor, 1.0f);
     EXPECT_GE(coat->clearcoatTexture.texture, 0);
     EXPECT_GE(shine->specularColorTexture.texture, 0) << "Blender bakes the Specular input into this texture";
+    const Material* ridges = material("ridges");
+    ASSERT_TRUE(ridges);
+    EXPECT_GE(ridges->clearcoatNormalTexture.texture, 0);
+    EXPECT_EQ(ridges->clearcoatNormalTexture.scale, 1.0f);
     EXPECT_EQ(warnings_.find("is not drawn"), std::string::npos) << warnings_;
 }
 
@@ -127,12 +138,38 @@ TEST_F(LayerTextures, DirectLightMatchesTheReferencePerTexel) {
     // Each texture must change its plane by more than the comparison's tolerance, or this test
     // proves nothing: the coat and the shine add a highlight; the sheen, seen at 28° over a dark
     // base, takes more of the base's light than its own lobe gives back.
-    for (const char* plane : {"coat", "shine", "cloth"}) {
+    for (const char* plane : {"coat", "shine", "cloth", "ridges"}) {
         const std::string on = std::string(plane) + "_on", off = std::string(plane) + "_off";
         const double contrast = ref.at(on).g / ref.at(off).g;
         EXPECT_GT(std::abs(contrast - 1.0), 0.08) << plane << ": the layer must show";
         EXPECT_NEAR(lit.at(on).g / lit.at(off).g, contrast, 0.03) << plane;
     }
+}
+
+// A clear coat over a normal-mapped base keeps the interpolated normal (KHR_materials_clearcoat):
+// the ridges' coat loses its own map and their base gets it instead, so the base's (dim, rough)
+// lobe follows the ridges and the coat's highlight stays where a flat coat has it.
+TEST_F(LayerTextures, CoatOverANormalMappedBaseKeepsTheInterpolatedNormal) {
+    Scene mapped = scene_;
+    for (Material& m : mapped.materials)
+        if (m.name == "ridges") {
+            m.normalTexture = m.clearcoatNormalTexture.texture;
+            m.clearcoatNormalTexture = {};
+        }
+    RenderSettings s = settings_;
+    s.gi.enabled = false;
+    const std::map<std::string, glm::dvec3> lit = perRegion(render(mapped, s).rgb);
+    const std::map<std::string, glm::dvec3> ref = perRegion(
+        tracedAtPixelCentres(ReferenceScene(mapped, quiet_), camera_, kWidth, kHeight, 0, 16).viewRgb(View::Final, s));
+    const std::map<std::string, glm::dvec3> own = perRegion(render(scene_, s).rgb);
+    for (const char* name : {"ridges_on", "ridges_off"}) {
+        std::printf("%-10s base mapped: Lit %.4f reference %.4f ratio %.3f (the coat mapped: %.4f)\n", name,
+                    lit.at(name).g, ref.at(name).g, lit.at(name).g / ref.at(name).g, own.at(name).g);
+        EXPECT_NEAR(lit.at(name).g / ref.at(name).g, 1.0, 0.05) << name;
+    }
+    // A coat bent by the base's map would tilt its highlight away as its own map does (the
+    // flat coat reflects the low sun towards the camera): the comparison above must tell them apart.
+    for (const char* name : {"ridges_on", "ridges_off"}) EXPECT_GT(ref.at(name).g, 3.0 * own.at(name).g) << name;
 }
 
 // The voxels take each texel's layers into the one albedo they reflect (voxelize.frag.glsl

@@ -86,7 +86,8 @@ TEST(MaterialLayers, TexturesAreReadAndOutOfRangeFactorsClamped) {
                   {"clearcoatRoughnessFactor", -1.0},
                   {"clearcoatTexture", {{"index", 0}}},
                   {"clearcoatRoughnessTexture", {{"index", 0}, {"texCoord", 1}}},
-                  {"clearcoatNormalTexture", {{"index", 0}}}});
+                  {"clearcoatNormalTexture", {{"index", 0}, {"scale", 0.5}}}});
+    addExtension(doc, "KHR_materials_volume", {{"thicknessFactor", 0.0}, {"thicknessTexture", {{"index", 0}}}});
     addExtension(doc, "KHR_materials_ior", {{"ior", 0.5}});
     addExtension(doc, "KHR_materials_specular",
                  {{"specularColorFactor", {1.0, "red", 1.0}},
@@ -104,20 +105,24 @@ TEST(MaterialLayers, TexturesAreReadAndOutOfRangeFactorsClamped) {
     EXPECT_EQ(m.ior, 1.0f);
     EXPECT_EQ(m.specularColorFactor, glm::vec3(1.0f));
     EXPECT_EQ(m.sheenColorFactor, glm::vec3(1.0f, 0.5f, 0.5f));
-    for (const ExtensionTexture* t : {&m.clearcoatTexture, &m.clearcoatRoughnessTexture, &m.specularTexture,
-                                      &m.specularColorTexture, &m.sheenColorTexture, &m.sheenRoughnessTexture})
+    for (const ExtensionTexture* t :
+         {&m.clearcoatTexture, &m.clearcoatRoughnessTexture, &m.clearcoatNormalTexture, &m.specularTexture,
+          &m.specularColorTexture, &m.sheenColorTexture, &m.sheenRoughnessTexture})
         EXPECT_EQ(t->texture, 0);
+    EXPECT_EQ(m.clearcoatNormalTexture.scale, 0.5f);
+    EXPECT_EQ(m.clearcoatTexture.scale, 1.0f);
     EXPECT_EQ(m.clearcoatRoughnessTexture.texCoord, 1);
     EXPECT_TRUE(m.specularColorTexture.transform.present);
     EXPECT_EQ(m.specularColorTexture.transform.scale, glm::dvec2(2.0, 2.0));
     for (const char* expected :
          {"KHR_materials_clearcoat clearcoatFactor 2.000000 is outside its range; Lit uses 1.000000",
-          "KHR_materials_clearcoat clearcoatNormalTexture is not drawn", "KHR_materials_ior ior 0.500000 is below 1",
+          "KHR_materials_volume thicknessTexture is not drawn", "KHR_materials_ior ior 0.500000 is below 1",
           "KHR_materials_specular specularColorFactor is not three finite numbers",
           "KHR_materials_sheen sheenColorFactor has a value outside its range; Lit clamps it"})
         EXPECT_NE(loaded.warnings.find(expected), std::string::npos) << expected << "\n" << loaded.warnings;
-    for (const char* drawn : {"clearcoatTexture is not drawn", "clearcoatRoughnessTexture is not drawn",
-                              "specularTexture is not drawn", "sheenRoughnessTexture is not drawn"})
+    for (const char* drawn :
+         {"clearcoatTexture is not drawn", "clearcoatRoughnessTexture is not drawn",
+          "clearcoatNormalTexture is not drawn", "specularTexture is not drawn", "sheenRoughnessTexture is not drawn"})
         EXPECT_EQ(loaded.warnings.find(drawn), std::string::npos) << drawn << "\n" << loaded.warnings;
 }
 

@@ -9,6 +9,9 @@
 #     KHR_materials_ior 1.45).
 #   - "cloth": plain; Blender 3.4's exporter writes no sheen from a Principled BSDF, so the test
 #     gives this one its sheen texture itself (the checker as sheenColorTexture).
+#   - "ridges", behind "shine": a clear coat (roughness 0.2) whose Clearcoat Normal is a Normal Map
+#     node reading a 2×2 checker of normals tilted 25° to +v and to −v: the exporter writes
+#     KHR_materials_clearcoat's clearcoatNormalTexture.
 #
 #   tools/install-deps.sh --scene-tools
 #   blender -b --factory-startup --python tools/blender/make_layer_textures.py -- [OUT_DIR]
@@ -16,6 +19,7 @@
 # Writes OUT_DIR (default tests/data/blender/layer_textures): layer_textures.gltf + .bin and the
 # images (the sun: KHR_lights_punctual, 683 lm/W).
 
+import math
 import os
 import sys
 
@@ -49,8 +53,8 @@ def checker_into(material, image, socket):
     links.new(separate.outputs["R"], nodes["Principled BSDF"].inputs[socket])
 
 
-def plane(name, x, material):
-    bpy.ops.mesh.primitive_plane_add(size=1.6, location=(x, 0.0, 0.0))
+def plane(name, x, material, y=0.0):
+    bpy.ops.mesh.primitive_plane_add(size=1.6, location=(x, y, 0.0))
     obj = bpy.context.object
     obj.name = obj.data.name = name
     obj.data.materials.append(material)
@@ -71,6 +75,25 @@ def build(folder):
     plane("shine", 0.0, shine)
 
     plane("cloth", 1.8, principled("cloth", DARK, roughness=0.9))
+
+    # Tangent-space normals (0, sin 25°, cos 25°) and (0, −sin 25°, cos 25°), encoded n/2 + ½:
+    # tilted towards the sun and away from it.
+    tilt = math.radians(25.0)
+    up = (0.5, 0.5 + 0.5 * math.sin(tilt), 0.5 + 0.5 * math.cos(tilt), 1.0)
+    down = (0.5, 0.5 - 0.5 * math.sin(tilt), 0.5 + 0.5 * math.cos(tilt), 1.0)
+    normals = checker_image(folder, "ridge_normals", up, down, is_data=True)
+    ridges = principled("ridges", DARK, roughness=0.9)
+    nodes, links = ridges.node_tree.nodes, ridges.node_tree.links
+    bsdf = nodes["Principled BSDF"]
+    bsdf.inputs["Clearcoat"].default_value = 1.0
+    bsdf.inputs["Clearcoat Roughness"].default_value = 0.2
+    tex = nodes.new("ShaderNodeTexImage")
+    tex.image = normals
+    tex.interpolation = "Closest"
+    normal_map = nodes.new("ShaderNodeNormalMap")
+    links.new(tex.outputs["Color"], normal_map.inputs["Color"])
+    links.new(normal_map.outputs["Normal"], bsdf.inputs["Clearcoat Normal"])
+    plane("ridges", 0.0, ridges, y=2.0)
 
 
 def add_lights():
