@@ -292,6 +292,8 @@ void GpuScene::updateMaterials(const Scene& scene) {
     hasSheets_ = std::find(sheetMaterials_.begin(), sheetMaterials_.end(), true) != sheetMaterials_.end();
     materialTextures_.push_back({});
     materialLayerBits_.push_back(0);
+    // A specular texture under the default factors still needs the layers read per pixel.
+    materialLayers_ = materialLayers_ || layerTextures_;
     materialUvTransforms_.push_back(uvTransformsOf(fallback));
     materials_ = gl::Buffer::fromSpan<gpu::GpuMaterial>("materials", table);
 }

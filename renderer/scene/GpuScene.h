@@ -99,7 +99,7 @@ public:
     bool empty() const { return items_.empty(); }
     const gl::Buffer& materials() const { return materials_; }
     // Whether a material has KHR_materials_ior / _specular / _sheen / _clearcoat values other than the
-    // defaults (the lighting passes' MaterialLayersVariant).
+    // defaults, or a layer texture (the lighting passes' MaterialLayersVariant).
     bool hasMaterialLayers() const { return materialLayers_; }
     // Whether a material has a layer texture (KHR_materials_specular, _sheen, _clearcoat) or a coat
     // normal of its own: the G-buffer then stores their texels (GBufferPass's layers target).

@@ -146,6 +146,29 @@ TEST_F(LayerTextures, DirectLightMatchesTheReferencePerTexel) {
     }
 }
 
+// A texture under the extension's default factors (no factor of any material away from its
+// default) is drawn all the same: the shine with IOR 1.5 and no tint factor.
+TEST_F(LayerTextures, ATextureUnderDefaultFactorsIsDrawn) {
+    Scene plain = scene_;
+    for (Material& m : plain.materials) {
+        m.ior = 1.5f;
+        m.specularColorFactor = glm::vec3(1.0f);
+        m.clearcoatFactor = 0.0f;
+        m.sheenColorFactor = glm::vec3(0.0f);
+    }
+    RenderSettings s = settings_;
+    s.gi.enabled = false;
+    const std::map<std::string, glm::dvec3> lit = perRegion(render(plain, s).rgb);
+    const std::map<std::string, glm::dvec3> ref = perRegion(
+        tracedAtPixelCentres(ReferenceScene(plain, quiet_), camera_, kWidth, kHeight, 0, 16).viewRgb(View::Final, s));
+    for (const char* name : {"shine_on", "shine_off"}) {
+        std::printf("%-10s default factors: Lit %.4f reference %.4f ratio %.3f\n", name, lit.at(name).g, ref.at(name).g,
+                    lit.at(name).g / ref.at(name).g);
+        EXPECT_NEAR(lit.at(name).g / ref.at(name).g, 1.0, 0.05) << name;
+    }
+    EXPECT_GT(ref.at("shine_on").g, 1.5 * ref.at("shine_off").g) << "the texture must show";
+}
+
 // A clear coat over a normal-mapped base keeps the interpolated normal (KHR_materials_clearcoat):
 // the ridges' coat loses its own map and their base gets it instead, so the base's (dim, rough)
 // lobe follows the ridges and the coat's highlight stays where a flat coat has it.
