@@ -7,7 +7,9 @@
 #include <cmath>
 #include <filesystem>
 #include <glm/glm.hpp>
+#include <map>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -159,6 +161,28 @@ protected:
         for (int i = 0; i < frames; ++i) renderer_->render(scene, camera, settings);
         HdrImage image{settings.output.width, settings.output.height, renderer_->readHdrRgb()};
         return image;
+    }
+
+    // Each region's mean RGB (`regions`: pixel indices by name) in the direct light alone: Lit with
+    // GI off, and the reference without bounces at 16 samples on the pixel centres.
+    struct DirectLightPerRegion {
+        std::map<std::string, glm::dvec3> lit, reference;
+    };
+    DirectLightPerRegion directLightPerRegion(const Scene& scene, RenderSettings settings,
+                                              const std::map<std::string, std::vector<std::size_t>>& regions,
+                                              Log& log) {
+        settings.gi.enabled = false;
+        const std::vector<float> lit = render(scene, settings).rgb;
+        const std::vector<float> reference =
+            tracedAtPixelCentres(reference::ReferenceScene(scene, log), cameraFor(scene, settings),
+                                 settings.output.width, settings.output.height, 0, 16)
+                .viewRgb(View::Final, settings);
+        DirectLightPerRegion out;
+        for (const auto& [name, pixels] : regions) {
+            out.lit[name] = meanRgb(lit, pixels);
+            out.reference[name] = meanRgb(reference, pixels);
+        }
+        return out;
     }
 
     // L_ID + L_IS rendered with `settings` (its view is set here; the first frame does the GI update).

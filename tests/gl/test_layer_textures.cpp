@@ -124,11 +124,7 @@ TEST_F(LayerTextures, BlendersImagesAreReadAsTheTextures) {
 // Direct light only (GI off, the reference without bounces): each plane's texels with the layer
 // and without it, against the reference.
 TEST_F(LayerTextures, DirectLightMatchesTheReferencePerTexel) {
-    RenderSettings s = settings_;
-    s.gi.enabled = false;
-    const std::map<std::string, glm::dvec3> lit = perRegion(render(scene_, s).rgb);
-    const std::map<std::string, glm::dvec3> ref = perRegion(
-        tracedAtPixelCentres(ReferenceScene(scene_, quiet_), camera_, kWidth, kHeight, 0, 16).viewRgb(View::Final, s));
+    const auto [lit, ref] = directLightPerRegion(scene_, settings_, pixels_, quiet_);
     for (const char* name : kRegions) {
         const glm::dvec3 l = lit.at(name), r = ref.at(name);
         std::printf("%-10s Lit (%.4f %.4f %.4f) reference (%.4f %.4f %.4f) ratio %.3f\n", name, l.r, l.g, l.b, r.r, r.g,
@@ -156,11 +152,7 @@ TEST_F(LayerTextures, ATextureUnderDefaultFactorsIsDrawn) {
         m.clearcoatFactor = 0.0f;
         m.sheenColorFactor = glm::vec3(0.0f);
     }
-    RenderSettings s = settings_;
-    s.gi.enabled = false;
-    const std::map<std::string, glm::dvec3> lit = perRegion(render(plain, s).rgb);
-    const std::map<std::string, glm::dvec3> ref = perRegion(
-        tracedAtPixelCentres(ReferenceScene(plain, quiet_), camera_, kWidth, kHeight, 0, 16).viewRgb(View::Final, s));
+    const auto [lit, ref] = directLightPerRegion(plain, settings_, pixels_, quiet_);
     for (const char* name : {"shine_on", "shine_off"}) {
         std::printf("%-10s default factors: Lit %.4f reference %.4f ratio %.3f\n", name, lit.at(name).g, ref.at(name).g,
                     lit.at(name).g / ref.at(name).g);
@@ -179,12 +171,8 @@ TEST_F(LayerTextures, CoatOverANormalMappedBaseKeepsTheInterpolatedNormal) {
             m.normalTexture = m.clearcoatNormalTexture.texture;
             m.clearcoatNormalTexture = {};
         }
-    RenderSettings s = settings_;
-    s.gi.enabled = false;
-    const std::map<std::string, glm::dvec3> lit = perRegion(render(mapped, s).rgb);
-    const std::map<std::string, glm::dvec3> ref = perRegion(
-        tracedAtPixelCentres(ReferenceScene(mapped, quiet_), camera_, kWidth, kHeight, 0, 16).viewRgb(View::Final, s));
-    const std::map<std::string, glm::dvec3> own = perRegion(render(scene_, s).rgb);
+    const auto [lit, ref] = directLightPerRegion(mapped, settings_, pixels_, quiet_);
+    const std::map<std::string, glm::dvec3> own = directLightPerRegion(scene_, settings_, pixels_, quiet_).lit;
     for (const char* name : {"ridges_on", "ridges_off"}) {
         std::printf("%-10s base mapped: Lit %.4f reference %.4f ratio %.3f (the coat mapped: %.4f)\n", name,
                     lit.at(name).g, ref.at(name).g, lit.at(name).g / ref.at(name).g, own.at(name).g);

@@ -100,9 +100,7 @@ TEST_F(TransmissionTexture, BlendersImageIsReadAsTheTexture) {
 TEST_F(TransmissionTexture, DirectLightMatchesTheReferencePerTexel) {
     RenderSettings s = settings_;
     s.gi.enabled = false;
-    const std::map<std::string, glm::dvec3> lit = perRegion(render(scene_, s).rgb);
-    const std::map<std::string, glm::dvec3> ref = perRegion(
-        tracedAtPixelCentres(ReferenceScene(scene_, quiet_), camera_, kWidth, kHeight, 0, 16).viewRgb(View::Final, s));
+    const auto [lit, ref] = directLightPerRegion(scene_, s, pixels_, quiet_);
     for (const char* name : kRegions) {
         const glm::dvec3 l = lit.at(name), r = ref.at(name);
         std::printf("%-18s Lit (%.4f %.4f %.4f) reference (%.4f %.4f %.4f) ratio %.3f\n", name, l.r, l.g, l.b, r.r, r.g,
