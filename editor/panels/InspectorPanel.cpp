@@ -192,8 +192,10 @@ void drawExtensionTextures(const Material& material) {
         ImGui::TextDisabled("%s %d, %s%s%s", kWhat[k][0], t.texture, kWhat[k][1],
                             drawnTexCoord(t) == 1 ? ", TEXCOORD_1" : "", t.transform.present ? ", transformed" : "");
         ImGui::PopTextWrapPos();
-        const std::string tip = std::string("Multiplies its factor (") + kExtensionTextureSlots[k].extension +
-                                "; from the file, saved back as it is)";
+        const bool normalMap = kExtensionTextureSlots[k].member == &Material::clearcoatNormalTexture;
+        const std::string tip = std::string(normalMap ? "Bends the coat's normal, scale " + std::to_string(t.scale)
+                                                      : "Multiplies its factor") +
+                                " (" + kExtensionTextureSlots[k].extension + "; from the file, saved back as it is)";
         tooltip(tip.c_str());
     }
 }
