@@ -42,10 +42,20 @@ constexpr std::size_t kSlotBaseColor = 0, kSlotMetallicRoughness = 1, kSlotNorma
 
 // The UVs reference `slot` samples at mesh UVs `uvs` (xy TEXCOORD_0, zw TEXCOORD_1): its set and
 // KHR_texture_transform, as material.glsl's materialUv applies them.
+// The UVs a texture reference reading UV set `set` (0 or 1) through `transform` samples at mesh
+// UVs `uvs` (xy TEXCOORD_0, zw TEXCOORD_1).
+glm::vec2 transformedUv(int set, const TextureTransform& transform, const glm::vec4& uvs) {
+    const glm::vec2 uv = set == 1 ? glm::vec2(uvs.z, uvs.w) : glm::vec2(uvs.x, uvs.y);
+    return transform.present ? applyUvTransform(uvTransformRows(transform), uv) : uv;
+}
+
 glm::vec2 slotUv(const Material& m, std::size_t slot, const glm::vec4& uvs) {
-    const glm::vec2 uv = drawnTexCoord(m, slot) == 1 ? glm::vec2(uvs.z, uvs.w) : glm::vec2(uvs.x, uvs.y);
-    const TextureTransform& t = m.textureTransforms[slot];
-    return t.present ? applyUvTransform(uvTransformRows(t), uv) : uv;
+    return transformedUv(drawnTexCoord(m, slot), m.textureTransforms[slot], uvs);
+}
+
+// The same for a reference inside a material extension.
+glm::vec2 extensionUv(const ExtensionTexture& t, const glm::vec4& uvs) {
+    return transformedUv(drawnTexCoord(t), t.transform, uvs);
 }
 
 // What Embree hands the alpha-mask filter of one geometry.
@@ -340,12 +350,8 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::ve
     hit.emission = emissive;
     // docs/MATERIALS.md: the dielectric's F0 and F90, the sheen, the clear coat and the
     // transmission, each factor times its texture where the material has one.
-    const auto extensionUv = [&](const ExtensionTexture& t) {
-        const glm::vec2 set = drawnTexCoord(t) == 1 ? glm::vec2(uv.z, uv.w) : glm::vec2(uv.x, uv.y);
-        return t.transform.present ? applyUvTransform(uvTransformRows(t.transform), set) : set;
-    };
     const auto extensionTexel = [&](const ExtensionTexture& t) {
-        return t.texture < 0 ? glm::vec4(1.0f) : sampleTexture(t.texture, extensionUv(t));
+        return t.texture < 0 ? glm::vec4(1.0f) : sampleTexture(t.texture, extensionUv(t, uv));
     };
     const float specular = m.specularFactor * extensionTexel(m.specularTexture).a;
     hit.dielectricF0 =
@@ -360,7 +366,7 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::ve
     hit.clearcoatNormal = interpolatedNormal;
     if (const ExtensionTexture& t = m.clearcoatNormalTexture; t.texture >= 0)
         hit.clearcoatNormal = mappedNormal(interpolatedNormal, tangent, uvTransformRows(t.transform),
-                                           sampleTexture(t.texture, extensionUv(t)), t.scale);
+                                           sampleTexture(t.texture, extensionUv(t, uv)), t.scale);
     const float transmission = m.transmission * extensionTexel(m.transmissionTexture).r;
     hit.transmission = std::clamp(transmission, 0.0f, 1.0f);
     return baseColor.a;
