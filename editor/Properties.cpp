@@ -137,6 +137,14 @@ void setMaterial(Parser& p, std::string_view name, Material& m, int rememberedTe
             m.clearcoatRoughness = *v;
     } else if (name == "material.transmission") {
         if (auto v = p.number(); v && p.require(*v >= 0.0f && *v <= 1.0f, "must be in [0, 1]")) m.transmission = *v;
+    } else if (name == "material.thickness") {
+        if (auto v = p.number(); v && p.require(*v >= 0.0f, "must not be negative")) m.thickness = *v;
+    } else if (name == "material.attenuationDistance") {
+        if (auto v = p.number(); v && p.require(*v >= 0.0f, "must not be negative (0: infinite)"))
+            m.attenuationDistance = *v;
+    } else if (name == "material.attenuationColor") {
+        if (auto v = p.vec3(); v && p.require(allIn(*v, 0.0f, 1.0f), "values must be in [0, 1]"))
+            m.attenuationColor = *v;
     }
 }
 
@@ -194,14 +202,37 @@ bool isPropertyName(std::string_view name) {
 
 const std::vector<std::string>& propertyNames() {
     static const std::vector<std::string> names{
-        "node.translation",  "node.rotation",      "node.scale",       "node.name",
-        "material.albedo",   "material.albedoTexture", "material.roughness", "material.metalness",
-        "material.emissive", "material.emissiveStrength", "material.ior", "material.specular",
-        "material.specularTint", "material.sheen", "material.sheenRoughness", "material.clearcoat",
-        "material.clearcoatRoughness", "material.transmission",
-        "light.type",        "light.color",        "light.intensity",  "light.range",
-        "light.inner",       "light.outer",        "light.shadow",
-        "camera.fov",        "camera.near",        "camera.far",
+        "node.translation",
+        "node.rotation",
+        "node.scale",
+        "node.name",
+        "material.albedo",
+        "material.albedoTexture",
+        "material.roughness",
+        "material.metalness",
+        "material.emissive",
+        "material.emissiveStrength",
+        "material.ior",
+        "material.specular",
+        "material.specularTint",
+        "material.sheen",
+        "material.sheenRoughness",
+        "material.clearcoat",
+        "material.clearcoatRoughness",
+        "material.transmission",
+        "material.thickness",
+        "material.attenuationDistance",
+        "material.attenuationColor",
+        "light.type",
+        "light.color",
+        "light.intensity",
+        "light.range",
+        "light.inner",
+        "light.outer",
+        "light.shadow",
+        "camera.fov",
+        "camera.near",
+        "camera.far",
     };
     return names;
 }

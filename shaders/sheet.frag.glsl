@@ -3,6 +3,7 @@
 // "Transmission"): drawn after the composite over its HDR image, farthest first, with dual-source
 // blending
 //   image = own + T(n·v) · image,   T = t·(1 − m)·c·(1 − F(n·v))   (brdf.glsl transmittanceOfSheet)
+// times, for a material with a volume, what its medium lets through (materialVolumeTransmittance),
 // where `own` is the sheet's own light, term by term as the view shows them:
 //   L_DD = Σ V·E·(albedo_d·(1 − t)/π · t_s + f_sheen)·(n·l) · b + emission     (direct_lighting)
 //   L_DS = Σ V·E·(f_spec · t_s · b + cc·f_coat)·(n·l)
@@ -24,6 +25,7 @@
 layout(location = 0, index = 0) out vec4 outOwn;
 layout(location = 0, index = 1) out vec4 outTransmittance;
 
+layout(location = LIT_LOC_MODEL) uniform mat4 uModel;
 uniform ivec4 uTerms;              // which of DD, ID, DS, IS the view adds (1/0)
 uniform int uIndirect;             // 1: the voxel volume is bound (GI on)
 uniform float uShadowNormalOffset; // shadow lookup offset along the normal, in shadow texels
@@ -87,6 +89,7 @@ void main() {
                float(uTerms.w) * indirectSpecular;
     outOwn = vec4(own, 0.0);
     outTransmittance = vec4(transmittanceOfSheet(s.baseColor, s.metalness, transmission, materialDielectricF0(m, layerTexels),
-                                                 materialDielectricF90(m, layerTexels), NdotV),
+                                                 materialDielectricF90(m, layerTexels), NdotV) *
+                                materialVolumeTransmittance(m, fs.uv, NdotV, meshLengthScale(uModel)),
                             1.0);
 }

@@ -76,6 +76,13 @@ layers="$root/tests/data/blender/layer_textures/layer_textures.gltf"
 "$render" "$layers" --reference --bounces all --spp "$spp" --size 640x360 --out "$out/layer_textures_reference.png"
 "$render" "$layers" --size 640x360 --gi on --voxels 128 --out "$out/layer_textures.png"
 
+# The glass-volume scene (tools/blender/make_glass_volume.py): amber glass slabs 5 cm and 20 cm
+# thick (KHR_materials_volume) over a sunlit floor; Lit's defaults at 128³ beside the every-bounce
+# reference.
+volume="$root/tests/data/blender/glass_volume/glass_volume.gltf"
+"$render" "$volume" --reference --bounces all --spp "$spp" --size 640x360 --out "$out/glass_volume_reference.png"
+"$render" "$volume" --size 640x360 --gi on --voxels 128 --out "$out/glass_volume.png"
+
 # The generated city (make-gi-suite, docs/GI.md "Near level"): a street 640 m of town across, the
 # shaded side lit only by bounced light; Lit's defaults at 128³ (with the 64 m near level around
 # the camera), the same with one volume around it all, the every-bounce reference, and the

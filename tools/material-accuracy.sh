@@ -2,8 +2,9 @@
 # The material layers against the reference: the Blender scene of
 # tools/blender/make_material_layers.py (seven spheres: plain, clear-coated smooth and rough,
 # Blender's Specular 1, IOR 2.2 with a specular tint, clear-coated gold, a sheen from a Velvet
-# BSDF), and the glass scene of tools/blender/make_glass.py (a clear pane, a tinted panel:
-# KHR_materials_transmission) rendered with Lit's defaults and with Lit's reference path tracer
+# BSDF), the glass scene of tools/blender/make_glass.py (a clear pane, a tinted panel:
+# KHR_materials_transmission) and the glass-volume scene of tools/blender/make_glass_volume.py
+# (amber slabs 5 cm and 20 cm thick: KHR_materials_volume) rendered with Lit's defaults and with Lit's reference path tracer
 # (every bounce), each object's mean per term (tools/material_accuracy.py). Writes
 # docs/tables/material-accuracy.md, headed by the date, the commit and the machine;
 # docs/MATERIALS.md explains it.
@@ -21,6 +22,7 @@ build="${LIT_BUILD_DIR:-$root/build}"
 render="$build/tools/lit-render"
 scene="$root/tests/data/blender/material_layers/material_layers.gltf"
 glass="$root/tests/data/blender/glass/glass.gltf"
+volume="$root/tests/data/blender/glass_volume/glass_volume.gltf"
 out="${MATERIAL_OUT:-$root/docs/tables/material-accuracy.md}"
 spp="${MATERIAL_SPP:-1024}"
 voxels="${MATERIAL_VOXELS:-128}"
@@ -71,6 +73,7 @@ quiet "$render" "$tmp/unreflecting.gltf" --size "$size" --reference --bounces al
     --hdr "$tmp/unreflecting-ref.hdr" --out "$tmp/ref.png"
 (cd "$root/tools" && "$python" material_accuracy.py --nodes pane,tinted,floor,back_wall "$tmp/glass-nodes.txt" \
     "indirect-diffuse, the panels without reflection=$tmp/unreflecting-lit.hdr:$tmp/unreflecting-ref.hdr") >> "$tmp/glass.rows"
+compare "$volume" volume --nodes thin_block,thick_block,floor
 rows="$(cat "$tmp/layers.rows")"
 ref_seconds="$(cat "$tmp/layers.seconds")"
 
@@ -105,5 +108,16 @@ mkdir -p "$(dirname "$out")"
     echo "| term | pane (clear, seen through to the box and the floor) | tinted (0.3, 0.75, 0.9) | floor (with both panels' shadows) | back_wall |"
     echo "|---|---:|---:|---:|---:|"
     cat "$tmp/glass.rows"
+    echo
+    echo "## Glass volume"
+    echo
+    echo "- Scene: \`tests/data/blender/glass_volume\` (tools/blender/make_glass_volume.py), ${size/x/×} pixels: slabs of amber glass 5 cm and 20 cm thick (KHR_materials_volume: (0.8, 0.5, 0.25) left after 0.2 m) over a floor under a sun 60° high"
+    echo "- Lit and the reference as above; the reference took $(cat "$tmp/volume.seconds") s for the five views"
+    echo
+    echo "Each object's mean over its inner pixels as the camera sees it first (a slab: its own light and what it lets through of the floor behind it), Lit ÷ the reference, per term:"
+    echo
+    echo "| term | thin_block (5 cm) | thick_block (20 cm) | floor (with both slabs' shadows) |"
+    echo "|---|---:|---:|---:|"
+    cat "$tmp/volume.rows"
 } > "$out"
 echo "wrote $out"

@@ -183,6 +183,7 @@ void drawExtensionTextures(const Material& material) {
         {"Sheen colour texture", "rgb"},
         {"Sheen roughness texture", "alpha channel"},
         {"Coat normal texture", "normal map"},
+        {"Thickness texture", "green channel"},
     }};
     static_assert(kWhat.back()[0] != nullptr, "a line for every kExtensionTextureSlots entry");
     for (std::size_t k = 0; k < kExtensionTextureSlots.size(); ++k) {
@@ -319,6 +320,28 @@ void InspectorPanel::drawSpecularLayers(Document& doc, Material& material) {
     tooltip("Share of the dielectric's light that passes straight through, tinted by the base colour "
             "(KHR_materials_transmission; drawn as a thin sheet: glass panes, film)");
     track(doc, "Transmission", Change::Material, changed, [&] { material.transmission = transmission; });
+
+    float thickness = material.thickness;
+    changed = ImGui::DragFloat("Thickness", &thickness, 0.001f, 0.0f, 10.0f, "%.3f m");
+    tooltip(
+        "Thickness of the volume a transmissive mesh encloses, metres in the mesh's space; 0: a thin wall "
+        "without a volume (KHR_materials_volume; light crosses it straight, absorbed, not refracted)");
+    track(doc, "Thickness", Change::Material, changed, [&] { material.thickness = std::max(thickness, 0.0f); });
+
+    float attenuationDistance = material.attenuationDistance;
+    changed = ImGui::DragFloat("Attenuation distance", &attenuationDistance, 0.01f, 0.0f, 1000.0f,
+                               attenuationDistance > 0.0f ? "%.3f m" : "infinite");
+    tooltip(
+        "Distance in the volume after which the attenuation colour is what is left of the light, metres; "
+        "0: infinite, no absorption (KHR_materials_volume)");
+    track(doc, "Attenuation Distance", Change::Material, changed,
+          [&] { material.attenuationDistance = std::max(attenuationDistance, 0.0f); });
+
+    glm::vec3 attenuationColor = material.attenuationColor;
+    changed = ImGui::ColorEdit3("Attenuation colour", &attenuationColor.x, kColourFlags);
+    tooltip("Colour the volume's medium leaves of white light after the attenuation distance, linear RGB");
+    track(doc, "Attenuation Colour", Change::Material, changed,
+          [&] { material.attenuationColor = glm::clamp(attenuationColor, glm::vec3(0.0f), glm::vec3(1.0f)); });
     drawExtensionTextures(material);
     ImGui::TreePop();
 }

@@ -181,7 +181,8 @@ public:
     // through, term by term (the rasterizer blends its sheets over the image the same way).
     void trace(const Ray& cameraRay, Random& random, Contribution& out) {
         Ray ray = cameraRay;
-        glm::vec3 behind(1.0f);  // the product of the sheets' transmittances so far
+        glm::vec3 behind(1.0f);  // the product of the sheets' and their media's transmittances so far
+        float from = ray.tnear;  // where the ray crossed the last sheet
         for (int sheets = 0; sheets < kMaxSheets; ++sheets) {
             SurfaceHit hit;
             ++rays;
@@ -189,6 +190,8 @@ public:
                 out.add(Term::DirectDiffuse, behind * environment(ray.direction));
                 return;
             }
+            behind *= ReferenceScene::mediumTransmittance(hit, from);
+            from = hit.t;
             Contribution own;
             shade(hit, ray, random, own);
             for (int t = 0; t < kTermCount; ++t) out.terms[t] += behind * own.terms[t];
@@ -238,6 +241,7 @@ private:
         // by its share of the light leaving the sheet and weighted by the chance's inverse.
         SurfaceHit next;
         const auto segment = [&](Ray ray, Term diffuseTerm, Term specularTerm) {
+            float from = ray.tnear;  // where the ray crossed the last sheet
             for (int sheets = 0;; ++sheets) {
                 ++rays;
                 if (!scene_.intersect(ray, next)) {
@@ -246,6 +250,11 @@ private:
                     out.add(specularTerm, throughputS * sky);
                     return false;
                 }
+                // A volume's medium on the way (the ray met its face from inside).
+                const glm::vec3 medium = ReferenceScene::mediumTransmittance(next, from);
+                throughputD *= medium;
+                throughputS *= medium;
+                from = next.t;
                 if (maxComponent(next.emission) > 0.0f) {
                     const glm::vec3 e = next.emission * emissionWeight(next, ray.direction, pdf);
                     out.add(diffuseTerm, throughputD * e);

@@ -369,6 +369,8 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::ve
                                            sampleTexture(t.texture, extensionUv(t, uv)), t.scale);
     const float transmission = m.transmission * extensionTexel(m.transmissionTexture).r;
     hit.transmission = std::clamp(transmission, 0.0f, 1.0f);
+    // A ray that meets a closed volume's face from behind travelled through its medium.
+    hit.absorption = frontFacing ? glm::vec3(0.0f) : volumeAbsorption(m);
     return baseColor.a;
 }
 
@@ -432,15 +434,22 @@ glm::vec3 ReferenceScene::sheetTransmittance(const SurfaceHit& hit, const glm::v
                                 glm::dot(hit.normal, direction));
 }
 
+glm::vec3 ReferenceScene::mediumTransmittance(const SurfaceHit& hit, float from) {
+    if (hit.absorption == glm::vec3(0.0f)) return glm::vec3(1.0f);
+    return glm::exp(-hit.absorption * std::max(hit.t - from, 0.0f));
+}
+
 glm::vec3 ReferenceScene::transmittance(const Ray& ray) const {
     if (!hasSheets_) return occluded(ray) ? glm::vec3(0.0f) : glm::vec3(1.0f);
     glm::vec3 through(1.0f);
     Ray rest = ray;
+    float from = ray.tnear;  // where the ray crossed the last sheet (or started)
     // A bound on the sheets crossed, so a degenerate stack of coplanar sheets cannot loop forever.
     for (int crossed = 0; crossed < 64; ++crossed) {
         SurfaceHit hit;
         if (!intersect(rest, hit)) return through;
-        through *= sheetTransmittance(hit, rest.direction);
+        through *= mediumTransmittance(hit, from) * sheetTransmittance(hit, rest.direction);
+        from = hit.t;
         if (std::max(through.r, std::max(through.g, through.b)) <= 0.0f) return glm::vec3(0.0f);
         rest.tnear = pastHit(hit.t);
         if (rest.tnear >= rest.tfar) return through;

@@ -56,6 +56,10 @@ struct SurfaceHit {
     // KHR_materials_transmission's t: a thin sheet that lets transmittanceOfSheet through
     // (MicrofacetBrdf.h; 0: opaque).
     float transmission = 0.0f;
+    // KHR_materials_volume: the absorption coefficient σ_a (1/m) of the medium the ray crossed to
+    // get here, the material's where the ray met the face of a closed volume from behind (it was
+    // inside), else 0 (scene/Sheets.h volumeAbsorption; mediumTransmittance).
+    glm::vec3 absorption{0.0f};
     glm::vec3 emission{0.0f};       // W/(sr·m²)
     int node = -1;                  // scene node index
     int emitter = -1;               // index into emitters() when the triangle emits, else -1
@@ -91,12 +95,16 @@ public:
     // True when anything blocks the ray between tnear and tfar.
     bool occluded(const Ray& ray) const;
     // What reaches tfar along the ray: 0 when an opaque surface blocks it, else the product of the
-    // transmittanceOfSheet of every transmissive surface it crosses (1 through empty space).
+    // transmittanceOfSheet of every transmissive surface it crosses and of what the volumes'
+    // media between them let through (1 through empty space).
     glm::vec3 transmittance(const Ray& ray) const;
     // Whether a surface of the scene is a transmissive sheet (scene/Sheets.h drawnAsSheet).
     bool hasSheets() const { return hasSheets_; }
     // The light a ray crossing `hit` passes through it (0 for an opaque surface).
     static glm::vec3 sheetTransmittance(const SurfaceHit& hit, const glm::vec3& direction);
+    // What the medium the ray crossed to reach `hit` lets through since distance `from` along the
+    // same ray (its last sheet, or its start): exp(−σ_a · (t − from)), 1 outside any volume.
+    static glm::vec3 mediumTransmittance(const SurfaceHit& hit, float from);
     // Where a ray that met a surface at distance t goes on past it (relative to the distance, so far
     // hits keep float precision).
     static float pastHit(float t) { return t + std::max(1e-4f, t * 1e-5f); }

@@ -71,12 +71,6 @@ glm::vec3 colorIn(const tinygltf::Value& object, const char* key, const glm::vec
     return out;
 }
 
-void warnTextures(const tinygltf::Value& object, std::initializer_list<const char*> keys, const std::string& where,
-                  const std::function<void(const std::string&)>& warn) {
-    for (const char* key : keys)
-        if (object.Has(key)) warn(where + " " + key + " is not drawn (the texture is kept and saved)");
-}
-
 // The extension object the file had for `name` (Material::kept), if any.
 std::optional<nlohmann::json> keptObject(const nlohmann::json& kept, const char* name) {
     if (!kept.is_object()) return std::nullopt;
@@ -165,10 +159,8 @@ void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& mate
                      " is not a positive distance; Lit uses infinity (no absorption)");
         }
         material.attenuationColor = colorIn(*volume, "attenuationColor", glm::vec3(1.0f), 1.0, where, warn);
-        warnTextures(*volume, {"thicknessTexture"}, where, warn);
         if (material.thickness > 0.0f)
-            warn(where + ": Lit draws the volume as a thin sheet (no refraction or absorption); its numbers are kept "
-                         "and saved");
+            warn(where + ": Lit draws the volume's absorption along straight paths, without refraction");
     }
 }
 

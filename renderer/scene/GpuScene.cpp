@@ -108,6 +108,7 @@ gpu::GpuMaterial toGpu(const Material& m) {
     const float f0FromIor = reflectance * reflectance;
     g.specular = glm::vec4(glm::vec3(f0FromIor) * m.specularColorFactor * m.specularFactor, m.specularFactor);
     g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughness, m.clearcoatNormalTexture.scale, 0.0f);
+    g.volume = glm::vec4(volumeAbsorption(m), m.thickness);
     g.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughness);
     return g;
 }
@@ -269,13 +270,14 @@ void GpuScene::updateMaterials(const Scene& scene) {
         g.modes.x = present(LIT_MATERIAL_SLOT_OCCLUSION);
         g.modes.w = present(LIT_MATERIAL_SLOT_TRANSMISSION);
         // LIT_LAYER_TEXTURE_* bit k is layer slot LIT_MATERIAL_SLOT_CLEARCOAT + k.
-        for (int k = 0; LIT_MATERIAL_SLOT_CLEARCOAT + k < LIT_MATERIAL_SLOTS; ++k)
+        for (int k = 0; LIT_MATERIAL_SLOT_CLEARCOAT + k <= LIT_MATERIAL_SLOT_CLEARCOAT_NORMAL; ++k)
             if (present(LIT_MATERIAL_SLOT_CLEARCOAT + k)) g.layerTextures.x |= 1 << k;
         // A coat over a normal-mapped base keeps the interpolated normal (KHR_materials_clearcoat),
         // which the G-buffer then stores beside the base's.
         if (m.clearcoatFactor > 0.0f &&
             (present(LIT_MATERIAL_SLOT_CLEARCOAT_NORMAL) || present(LIT_MATERIAL_SLOT_NORMAL)))
             g.layerTextures.x |= LIT_LAYER_COAT_NORMAL_STORED;
+        g.layerTextures.y = present(LIT_MATERIAL_SLOT_THICKNESS);
         layerTextures_ = layerTextures_ || g.layerTextures.x != 0;
         materialLayerBits_.push_back(g.layerTextures.x);
         table.push_back(g);

@@ -285,10 +285,13 @@ struct Material {
     ExtensionTexture clearcoatTexture{};
     ExtensionTexture clearcoatRoughnessTexture{};
     ExtensionTexture clearcoatNormalTexture{};
-    // KHR_materials_volume, read and saved; Lit draws no refraction or absorption (a thin sheet).
-    float thickness = 0.0f;                        // metres in the mesh's space; 0: thin-walled
-    float attenuationDistance = 0.0f;              // metres; 0: infinite (the file leaves it out)
+    // KHR_materials_volume: a transmissive mesh with a thickness encloses a medium that absorbs
+    // what crosses it, attenuationColor left after attenuationDistance (Beer–Lambert); light still
+    // passes straight through, without refraction (docs/MATERIALS.md, "Volume").
+    float thickness = 0.0f;                        // metres in the mesh's space; 0: thin-walled (no volume)
+    float attenuationDistance = 0.0f;              // metres, world; 0: infinite (the file leaves it out)
     glm::vec3 attenuationColor{1.0f};              // linear RGB, 0..1
+    ExtensionTexture thicknessTexture{};           // its green channel multiplies `thickness`
     KeptGltf kept{};
     // Extensions of each texture reference other than KHR_texture_transform, JSON object text, in
     // the order base colour, metallic-roughness, normal, emissive, occlusion.
@@ -336,7 +339,7 @@ struct ExtensionTextureSlot {
     ExtensionTexture Material::*member;
     bool colour;  // sRGB-encoded colour (else linear data)
 };
-inline constexpr std::array<ExtensionTextureSlot, 8> kExtensionTextureSlots{{
+inline constexpr std::array<ExtensionTextureSlot, 9> kExtensionTextureSlots{{
     {"KHR_materials_transmission", "transmissionTexture", &Material::transmissionTexture, false},
     {"KHR_materials_clearcoat", "clearcoatTexture", &Material::clearcoatTexture, false},
     {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", &Material::clearcoatRoughnessTexture, false},
@@ -345,6 +348,7 @@ inline constexpr std::array<ExtensionTextureSlot, 8> kExtensionTextureSlots{{
     {"KHR_materials_sheen", "sheenColorTexture", &Material::sheenColorTexture, true},
     {"KHR_materials_sheen", "sheenRoughnessTexture", &Material::sheenRoughnessTexture, false},
     {"KHR_materials_clearcoat", "clearcoatNormalTexture", &Material::clearcoatNormalTexture, false},
+    {"KHR_materials_volume", "thicknessTexture", &Material::thicknessTexture, false},
 }};
 
 enum class LightType { Directional, Point, Spot };

@@ -3,6 +3,8 @@
 // materials are sheets, for the rasterizer (GpuScene) and the reference (ReferenceScene) alike.
 // As material_table.glsl materialIsSheet.
 
+#include <glm/exponential.hpp>
+
 #include "scene/Scene.h"
 
 namespace lit {
@@ -11,5 +13,15 @@ namespace lit {
 // from a file's factors before they are loaded: the memory budget's colour layers).
 inline bool drawnAsSheet(double transmission, double metallic) { return transmission > 0.0 && metallic < 1.0; }
 inline bool drawnAsSheet(const Material& m) { return drawnAsSheet(m.transmission, m.metallic); }
+
+// KHR_materials_volume's absorption coefficient σ_a (1/m, world, per channel): a sheet with a
+// thickness encloses a medium that leaves attenuationColor of the light after attenuationDistance,
+// exp(−σ_a·x) = attenuationColor^(x / attenuationDistance) (docs/MATERIALS.md, "Volume"). 0 for a
+// thin-walled material (thickness 0), an infinite distance, or a material that is no sheet.
+inline glm::vec3 volumeAbsorption(const Material& m) {
+    if (!drawnAsSheet(m) || m.thickness <= 0.0f || m.attenuationDistance <= 0.0f) return glm::vec3(0.0f);
+    // A channel the colour leaves at 0 absorbs everything over any distance worth drawing.
+    return -glm::log(glm::max(m.attenuationColor, glm::vec3(1e-6f))) / m.attenuationDistance;
+}
 
 }  // namespace lit

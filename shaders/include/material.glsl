@@ -27,6 +27,7 @@ layout(binding = LIT_TEX_SPECULAR_COLOR) uniform sampler2D specularColorTexture;
 layout(binding = LIT_TEX_SHEEN_COLOR) uniform sampler2D sheenColorTexture;
 layout(binding = LIT_TEX_SHEEN_ROUGHNESS) uniform sampler2D sheenRoughnessTexture;
 layout(binding = LIT_TEX_CLEARCOAT_NORMAL) uniform sampler2D clearcoatNormalTexture;
+layout(binding = LIT_TEX_THICKNESS) uniform sampler2D thicknessTexture;
 
 // Per texture reference (LIT_MATERIAL_SLOT_*), the two rows of its KHR_texture_transform as a
 // 2×3 matrix, xyz each (scene/TextureTransform.h; identity without the extension), and in the
@@ -71,6 +72,22 @@ float materialTransmission(GpuMaterial m, vec4 uv) {
     if (m.modes.w != 0) t *= texture(transmissionTexture, materialUv(LIT_MATERIAL_SLOT_TRANSMISSION, uv)).r;
     return t;
 }
+
+// What KHR_materials_volume's medium lets through at one face of a sheet the light crosses at
+// cosθ to the normal (docs/MATERIALS.md, "Volume"): exp(−σ_a · x), x half the straight path
+// through a slab of the material's thickness, thickness / |cosθ| (a closed mesh is crossed at two
+// faces, which each take half), the thickness being the factor × the texture's green channel in
+// the mesh's space, × `meshScale` (the model matrix's scale, cube root of its determinant).
+vec3 materialVolumeTransmittance(GpuMaterial m, vec4 uv, float cosTheta, float meshScale) {
+    if (m.volume.a <= 0.0 || max(m.volume.r, max(m.volume.g, m.volume.b)) <= 0.0) return vec3(1.0);
+    float thickness = m.volume.a * meshScale;
+    if (m.layerTextures.y != 0) thickness *= texture(thicknessTexture, materialUv(LIT_MATERIAL_SLOT_THICKNESS, uv)).g;
+    // Grazing paths are capped at 10 thicknesses: a face seen edge-on is not a slab that long.
+    return exp(-m.volume.rgb * (0.5 * thickness / max(abs(cosTheta), 0.1)));
+}
+
+// The scale of model matrix `model` for lengths in the mesh's space (exact for a uniform scale).
+float meshLengthScale(mat4 model) { return pow(abs(determinant(mat3(model))), 1.0 / 3.0); }
 
 // The texels of the layers' textures at mesh UVs `uv` (LayerTexels, material_table.glsl).
 LayerTexels materialLayerTexels(GpuMaterial m, vec4 uv) {

@@ -37,8 +37,8 @@ using mat4 = glm::mat4;
 #define LIT_LOC_NORMAL_MATRIX 1    // mat4 inverse transpose of the model matrix
 #define LIT_LOC_MATERIAL 2         // int index into GpuMaterial[]
 #define LIT_LOC_NODE_ID 3          // uint node index + 1 the G-buffer writes to its ID target (0 = background)
-#define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS] at 4 .. 29: texture transforms (material.glsl)
-#define LIT_LOC_PRIMITIVE 30       // uint primitive index within the node's mesh the G-buffer writes beside the node ID
+#define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS] at 4 .. 31: texture transforms (material.glsl)
+#define LIT_LOC_PRIMITIVE 32       // uint primitive index within the node's mesh the G-buffer writes beside the node ID
 
 // ---- Texture units -----------------------------------------------------------------------
 // Material textures (G-buffer, shadow alpha test, voxelization).
@@ -138,11 +138,14 @@ using mat4 = glm::mat4;
 #define LIT_TEX_SHEEN_COLOR (LIT_TEX_TRANSMISSION + 5)
 #define LIT_TEX_SHEEN_ROUGHNESS (LIT_TEX_TRANSMISSION + 6)
 #define LIT_TEX_CLEARCOAT_NORMAL (LIT_TEX_TRANSMISSION + 7)
+// KHR_materials_volume's thicknessTexture (sheets and their shadows; material.glsl
+// materialVolumeTransmittance).
+#define LIT_TEX_THICKNESS (LIT_TEX_TRANSMISSION + 8)
 // The G-buffer's RGBA32UI layer texels (gbuffer.glsl): r the specular colour and specular texels,
 // g the sheen colour and sheen-roughness texels, each packUnorm4x8(rgb, a), b the clear coat's
 // world normal (octahedral, packSnorm2x16), a unused. Written and read only for materials with
 // such textures or a coat normal of its own (GpuMaterial::layerTextures).
-#define LIT_TEX_GBUFFER_LAYERS (LIT_TEX_TRANSMISSION + 8)
+#define LIT_TEX_GBUFFER_LAYERS (LIT_TEX_TRANSMISSION + 9)
 #define LIT_TEX_UNIT_COUNT (LIT_TEX_GBUFFER_LAYERS + 1)  // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
@@ -337,7 +340,8 @@ using mat4 = glm::mat4;
 #define LIT_MATERIAL_SLOT_SHEEN_COLOR 10
 #define LIT_MATERIAL_SLOT_SHEEN_ROUGHNESS 11
 #define LIT_MATERIAL_SLOT_CLEARCOAT_NORMAL 12
-#define LIT_MATERIAL_SLOTS 13
+#define LIT_MATERIAL_SLOT_THICKNESS 13  // Material::thicknessTexture (KHR_materials_volume; not a layer)
+#define LIT_MATERIAL_SLOTS 14
 
 // ---- Structs ------------------------------------------------------------------------------
 // Per-frame camera and output parameters. std140, binding LIT_UBO_FRAME.
@@ -380,7 +384,11 @@ struct GpuMaterial {
     vec4 clearcoat;           // x coat weight, y coat roughness (perceptual), z the coat normal texture's scale
                               // (KHR_materials_clearcoat), w unused
     vec4 sheen;               // rgb sheen colour, a sheen roughness (perceptual) (KHR_materials_sheen)
-    ivec4 layerTextures;      // x LIT_LAYER_TEXTURE_* bits: the layers' textures the material has; yzw unused
+    ivec4 layerTextures;      // x LIT_LAYER_TEXTURE_* bits: the layers' textures the material has; y 1: the
+                              // volume's thickness texture present; zw unused
+    vec4 volume;              // rgb absorption coefficient σ_a = −ln(attenuation colour) / attenuation distance
+                              // (1/m, world), a thickness (m, the mesh's space); 0, 0: no volume
+                              // (KHR_materials_volume; material.glsl materialVolumeTransmittance)
 };
 
 // The light view a shadow pass renders. std140, binding LIT_UBO_SHADOW_PASS.
@@ -418,7 +426,7 @@ struct VoxelUniforms {
 static_assert(sizeof(VoxelUniforms) == 6 * 16);
 static_assert(sizeof(FrameUniforms) == 4 * 64 + 7 * 16);
 static_assert(sizeof(GpuLight) == 5 * 16 + 64);
-static_assert(sizeof(GpuMaterial) == 10 * 16);
+static_assert(sizeof(GpuMaterial) == 11 * 16);
 static_assert(sizeof(ShadowPassUniforms) == 64 + 16);
 static_assert(sizeof(GpuShadowCascade) == 64 + 16);
 static_assert(sizeof(ShadowCascadeUniforms) == LIT_MAX_CASCADED_LIGHTS * LIT_MAX_SHADOW_CASCADES * (64 + 16) + 16);

@@ -107,7 +107,7 @@ TEST(MaterialLayers, TexturesAreReadAndOutOfRangeFactorsClamped) {
     EXPECT_EQ(m.sheenColorFactor, glm::vec3(1.0f, 0.5f, 0.5f));
     for (const ExtensionTexture* t :
          {&m.clearcoatTexture, &m.clearcoatRoughnessTexture, &m.clearcoatNormalTexture, &m.specularTexture,
-          &m.specularColorTexture, &m.sheenColorTexture, &m.sheenRoughnessTexture})
+          &m.specularColorTexture, &m.sheenColorTexture, &m.sheenRoughnessTexture, &m.thicknessTexture})
         EXPECT_EQ(t->texture, 0);
     EXPECT_EQ(m.clearcoatNormalTexture.scale, 0.5f);
     EXPECT_EQ(m.clearcoatTexture.scale, 1.0f);
@@ -116,13 +116,13 @@ TEST(MaterialLayers, TexturesAreReadAndOutOfRangeFactorsClamped) {
     EXPECT_EQ(m.specularColorTexture.transform.scale, glm::dvec2(2.0, 2.0));
     for (const char* expected :
          {"KHR_materials_clearcoat clearcoatFactor 2.000000 is outside its range; Lit uses 1.000000",
-          "KHR_materials_volume thicknessTexture is not drawn", "KHR_materials_ior ior 0.500000 is below 1",
+          "KHR_materials_ior ior 0.500000 is below 1",
           "KHR_materials_specular specularColorFactor is not three finite numbers",
           "KHR_materials_sheen sheenColorFactor has a value outside its range; Lit clamps it"})
         EXPECT_NE(loaded.warnings.find(expected), std::string::npos) << expected << "\n" << loaded.warnings;
-    for (const char* drawn :
-         {"clearcoatTexture is not drawn", "clearcoatRoughnessTexture is not drawn",
-          "clearcoatNormalTexture is not drawn", "specularTexture is not drawn", "sheenRoughnessTexture is not drawn"})
+    for (const char* drawn : {"clearcoatTexture is not drawn", "clearcoatRoughnessTexture is not drawn",
+                              "clearcoatNormalTexture is not drawn", "specularTexture is not drawn",
+                              "sheenRoughnessTexture is not drawn", "thicknessTexture is not drawn"})
         EXPECT_EQ(loaded.warnings.find(drawn), std::string::npos) << drawn << "\n" << loaded.warnings;
 }
 
@@ -177,8 +177,8 @@ TEST(MaterialLayers, SaveWritesTheFactorsIntoTheFilesObjects) {
 }
 
 // Transmission and volume: read (the transmission texture with its UV set and transform; the
-// volume's numbers kept though Lit draws a thin sheet, and named in one warning), an attenuation
-// distance that is no distance refused, edits saved.
+// volume's numbers, with one warning that Lit draws no refraction), an attenuation distance that
+// is no distance refused, edits saved.
 TEST(MaterialLayers, TransmissionAndVolumeAreReadAndSaved) {
     TempDir dir;
     nlohmann::json doc = baseDoc();
@@ -206,7 +206,8 @@ TEST(MaterialLayers, TransmissionAndVolumeAreReadAndSaved) {
     EXPECT_EQ(loaded.scene.materials.at(1).transmission, 0.0f);
     EXPECT_EQ(loaded.warnings.find("transmissionTexture is not drawn"), std::string::npos) << loaded.warnings;
     for (const char* expected : {"has no TEXCOORD_1, which its material's transmissionTexture reads",
-                                 "KHR_materials_volume: Lit draws the volume as a thin sheet",
+                                 "KHR_materials_volume: Lit draws the volume's absorption along straight paths, "
+                                 "without refraction",
                                  "KHR_materials_volume attenuationDistance -1.000000 is not a positive distance"})
         EXPECT_NE(loaded.warnings.find(expected), std::string::npos) << expected << "\n" << loaded.warnings;
 
