@@ -83,6 +83,13 @@ volume="$root/tests/data/blender/glass_volume/glass_volume.gltf"
 "$render" "$volume" --reference --bounces all --spp "$spp" --size 640x360 --out "$out/glass_volume_reference.png"
 "$render" "$volume" --size 640x360 --gi on --voxels 128 --out "$out/glass_volume.png"
 
+# The glass-refraction scene (tools/blender/make_glass_refraction.py): a 30 cm block of clear
+# glass before a checkered wall, seen at an angle; Lit's defaults at 128³ beside the every-bounce
+# reference.
+refraction="$root/tests/data/blender/glass_refraction/glass_refraction.gltf"
+"$render" "$refraction" --reference --bounces all --spp "$spp" --size 640x360 --out "$out/glass_refraction_reference.png"
+"$render" "$refraction" --size 640x360 --gi on --voxels 128 --out "$out/glass_refraction.png"
+
 # The generated city (make-gi-suite, docs/GI.md "Near level"): a street 640 m of town across, the
 # shaded side lit only by bounced light; Lit's defaults at 128³ (with the 64 m near level around
 # the camera), the same with one volume around it all, the every-bounce reference, and the

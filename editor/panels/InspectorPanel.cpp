@@ -325,7 +325,7 @@ void InspectorPanel::drawSpecularLayers(Document& doc, Material& material) {
     changed = ImGui::DragFloat("Thickness", &thickness, 0.001f, 0.0f, 10.0f, "%.3f m");
     tooltip(
         "Thickness of the volume a transmissive mesh encloses, metres in the mesh's space; 0: a thin wall "
-        "without a volume (KHR_materials_volume; light crosses it straight, absorbed, not refracted)");
+        "without a volume (KHR_materials_volume: a solid that bends the view by its IOR and absorbs what crosses it)");
     track(doc, "Thickness", Change::Material, changed, [&] { material.thickness = std::max(thickness, 0.0f); });
 
     float attenuationDistance = material.attenuationDistance;

@@ -66,6 +66,22 @@ void SheetPass::execute(const Scene& scene, const GpuScene& gpuScene, const Targ
         depthId_ = targets.depth.id();
         nodeIdId_ = targets.nodeId.id();
     }
+    if (gpuScene.hasRefractingSheets()) {
+        // Copies, not the targets themselves: the sheets draw into the image and test against the
+        // depth, which they must not also sample.
+        const auto copy = [](const gl::Texture& from, gl::Texture& to, const char* label) {
+            const gl::TextureDesc& desc = from.desc();
+            if (!to.id() || to.desc().width != desc.width || to.desc().height != desc.height ||
+                to.desc().format != desc.format)
+                to = gl::Texture(label, {GL_TEXTURE_2D, desc.format, desc.width, desc.height, 1, 1});
+            glCopyImageSubData(from.id(), GL_TEXTURE_2D, 0, 0, 0, 0, to.id(), GL_TEXTURE_2D, 0, 0, 0, 0, desc.width,
+                               desc.height, 1);
+        };
+        copy(targets.hdr, behind_, "sheets: the image behind");
+        copy(targets.depth, behindDepth_, "sheets: the depth behind");
+        behind_.bind(LIT_TEX_SHEET_BEHIND);
+        behindDepth_.bind(LIT_TEX_SHEET_BEHIND_DEPTH);
+    }
     framebuffer_.bind();
     glViewport(0, 0, targets.hdr.desc().width, targets.hdr.desc().height);
     glEnable(GL_DEPTH_TEST);

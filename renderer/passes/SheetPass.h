@@ -4,7 +4,8 @@
 // HDR image and lets its transmittance of the image behind it through (sheet.frag.glsl), farthest
 // first. The G-buffer, the shadow maps and the voxels leave sheets out, so the image under a
 // sheet is what lies behind it. Then the sheets' node IDs go into the G-buffer's ID target, for
-// picking and the selection outline (sheet_id.frag.glsl).
+// picking and the selection outline (sheet_id.frag.glsl). A refracting volume's front face reads
+// what lies where its bent path leaves it from a copy of the image taken before the sheets.
 
 #include "gl/ProgramVariants.h"
 #include "passes/LightSetup.h"
@@ -55,6 +56,8 @@ private:
     gl::ProgramVariants<ShadowKinds::kVariants> programs_;
     gl::Program idProgram_;
     gl::Framebuffer framebuffer_, idFramebuffer_;
+    // The image before the sheets and its depth (scenes with refracting volumes only).
+    gl::Texture behind_, behindDepth_;
     GLuint hdrId_ = 0, depthId_ = 0, nodeIdId_ = 0;  // the targets the framebuffers were made for
     std::vector<std::uint32_t> order_;  // the sheets of this frame, farthest first
     std::vector<std::pair<float, std::uint32_t>> byDistance_;  // squared distance, item (the sort's keys)

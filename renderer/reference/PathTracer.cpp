@@ -191,13 +191,14 @@ public:
                 return;
             }
             behind *= ReferenceScene::mediumTransmittance(hit, from);
-            from = hit.t;
             Contribution own;
             shade(hit, ray, random, own);
             for (int t = 0; t < kTermCount; ++t) out.terms[t] += behind * own.terms[t];
-            behind *= ReferenceScene::sheetTransmittance(hit, ray.direction);
+            const Crossing crossing = ReferenceScene::cross(hit, ray);
+            behind *= crossing.through;
             if (maxComponent(behind) <= 0.0f) return;
-            ray.tnear = ReferenceScene::pastHit(hit.t);
+            ray = crossing.ray;
+            from = crossing.from;
             if (ray.tnear >= ray.tfar) return;
         }
     }
@@ -236,12 +237,16 @@ private:
         // Follows `ray` one segment: the sky it escapes to, or the emission of the surface it
         // meets (into `next`), weighted by the two throughputs into the diffuse/specular terms.
         // False when the ray left the scene.
-        // A transmissive sheet on the way either lets the path through (on along the same
-        // direction, weighted by its transmittance) or scatters it (the next vertex), each chosen
+        // A transmissive sheet on the way either lets the path through (on past it, straight or
+        // bent at a volume's face, weighted by its transmittance) or scatters it (the next vertex), each chosen
         // by its share of the light leaving the sheet and weighted by the chance's inverse.
         SurfaceHit next;
-        const auto segment = [&](Ray ray, Term diffuseTerm, Term specularTerm) {
+        // `ray` ends as the segment's last piece, the direction it arrives at `next` from.
+        const auto segment = [&](Ray& ray, Term diffuseTerm, Term specularTerm) {
             float from = ray.tnear;  // where the ray crossed the last sheet
+            // Emission met past a volume's bent face is not weighted against the lights' sampling:
+            // shadow rays cross volumes straight and stand for it (ReferenceScene::cross).
+            bool refracted = false;
             for (int sheets = 0;; ++sheets) {
                 ++rays;
                 if (!scene_.intersect(ray, next)) {
@@ -254,19 +259,21 @@ private:
                 const glm::vec3 medium = ReferenceScene::mediumTransmittance(next, from);
                 throughputD *= medium;
                 throughputS *= medium;
-                from = next.t;
-                if (maxComponent(next.emission) > 0.0f) {
+                if (maxComponent(next.emission) > 0.0f && !(refracted && next.emitter >= 0)) {
                     const glm::vec3 e = next.emission * emissionWeight(next, ray.direction, pdf);
                     out.add(diffuseTerm, throughputD * e);
                     out.add(specularTerm, throughputS * e);
                 }
-                const glm::vec3 through = ReferenceScene::sheetTransmittance(next, ray.direction);
+                const Crossing crossing = ReferenceScene::cross(next, ray);
+                const glm::vec3& through = crossing.through;
                 if (maxComponent(through) <= 0.0f) return true;
                 const float passShare = passChance(next, ray.direction, through);
                 if (sheets + 1 < kMaxSheets && random.uniform() < passShare) {
                     throughputD *= through / passShare;
                     throughputS *= through / passShare;
-                    ray.tnear = ReferenceScene::pastHit(next.t);
+                    ray = crossing.ray;
+                    from = crossing.from;
+                    refracted = refracted || crossing.refracted;
                     continue;
                 }
                 throughputD /= 1.0f - passShare;

@@ -371,6 +371,8 @@ float ReferenceScene::resolveMaterial(int material, const glm::vec4& uv, glm::ve
     hit.transmission = std::clamp(transmission, 0.0f, 1.0f);
     // A ray that meets a closed volume's face from behind travelled through its medium.
     hit.absorption = frontFacing ? glm::vec3(0.0f) : volumeAbsorption(m);
+    hit.refractiveIndex = refractiveIndexOfVolume(m);
+    hit.inside = !frontFacing;
     return baseColor.a;
 }
 
@@ -432,6 +434,42 @@ bool ReferenceScene::occluded(const Ray& ray) const {
 glm::vec3 ReferenceScene::sheetTransmittance(const SurfaceHit& hit, const glm::vec3& direction) {
     return transmittanceOfSheet(hit.baseColor, hit.metalness, hit.transmission, hit.dielectricF0, hit.dielectricF90,
                                 glm::dot(hit.normal, direction));
+}
+
+Crossing ReferenceScene::cross(const SurfaceHit& hit, const Ray& ray) {
+    Crossing c;
+    if (hit.refractiveIndex <= 0.0f) {
+        c.ray = ray;
+        c.ray.tnear = pastHit(hit.t);
+        c.from = hit.t;
+        c.through = sheetTransmittance(hit, ray.direction);
+        return c;
+    }
+    // Snell's law about the shading normal, which faces the ray's origin.
+    const glm::vec3 n = hit.normal;
+    const float eta = hit.inside ? hit.refractiveIndex : 1.0f / hit.refractiveIndex;
+    const float cosIn = std::min(std::max(-glm::dot(n, ray.direction), 0.0f), 1.0f);
+    const float k = 1.0f - eta * eta * (1.0f - cosIn * cosIn);
+    const float scale = std::max(
+        1.0f, std::max(std::abs(hit.position.x), std::max(std::abs(hit.position.y), std::abs(hit.position.z))));
+    c.ray.tnear = 0.0f;
+    c.ray.tfar = INFINITY;
+    c.refracted = true;
+    if (k <= 0.0f) {
+        // Totally reflected inside: all of it goes on as a mirror's reflection, tinted as what
+        // passes (the dielectric's share of the base colour), and stays in the volume.
+        c.ray.direction = glm::normalize(ray.direction + 2.0f * cosIn * n);
+        c.ray.origin = hit.position + hit.geometricNormal * (1e-4f * scale);
+        c.through = glm::vec3(hit.transmission * (1.0f - hit.metalness)) * hit.baseColor;
+        return c;
+    }
+    const float cosOut = std::sqrt(k);
+    c.ray.direction = glm::normalize(eta * ray.direction + (eta * cosIn - cosOut) * n);
+    c.ray.origin = hit.position - hit.geometricNormal * (1e-4f * scale);  // just past the face
+    // Fresnel at the angle outside the volume, the same for the way in and the way out.
+    c.through = transmittanceOfSheet(hit.baseColor, hit.metalness, hit.transmission, hit.dielectricF0,
+                                     hit.dielectricF90, hit.inside ? cosOut : cosIn);
+    return c;
 }
 
 glm::vec3 ReferenceScene::mediumTransmittance(const SurfaceHit& hit, float from) {

@@ -60,9 +60,22 @@ struct SurfaceHit {
     // get here, the material's where the ray met the face of a closed volume from behind (it was
     // inside), else 0 (scene/Sheets.h volumeAbsorption; mediumTransmittance).
     glm::vec3 absorption{0.0f};
+    // KHR_materials_volume with KHR_materials_ior: the index of refraction η of a volume whose face
+    // this is (a crossing ray bends by Snell's law, ReferenceScene::cross), 0 for none (a thin sheet,
+    // an opaque surface). `inside`: the ray met the triangle's back (for a closed volume, from inside).
+    float refractiveIndex = 0.0f;
+    bool inside = false;
     glm::vec3 emission{0.0f};       // W/(sr·m²)
     int node = -1;                  // scene node index
     int emitter = -1;               // index into emitters() when the triangle emits, else -1
+};
+
+// A camera ray or path going on past a sheet (ReferenceScene::cross).
+struct Crossing {
+    Ray ray;                  // the ray that goes on
+    float from = 0.0f;        // where along `ray` the sheet lies (mediumTransmittance's start)
+    glm::vec3 through{0.0f};  // what the sheet lets through along it (0: nothing, e.g. totally reflected)
+    bool refracted = false;   // the ray bent (or was totally reflected) at a volume's face
 };
 
 struct Emitter {
@@ -102,6 +115,13 @@ public:
     bool hasSheets() const { return hasSheets_; }
     // The light a ray crossing `hit` passes through it (0 for an opaque surface).
     static glm::vec3 sheetTransmittance(const SurfaceHit& hit, const glm::vec3& direction);
+    // How a camera ray or path along `ray` goes on past the sheet `hit` it met: straight on through
+    // a thin sheet (sheetTransmittance); bent by Snell's law at a volume's face (into the volume on
+    // its front, η = 1/refractiveIndex, out of it on its back), letting through transmittanceOfSheet
+    // at the angle outside the volume; where the light is totally reflected inside, mirrored back
+    // into the volume, tinted as what passes.
+    // Shadow rays cross volumes straight (transmittance), as the rasterizer's shadow maps do.
+    static Crossing cross(const SurfaceHit& hit, const Ray& ray);
     // What the medium the ray crossed to reach `hit` lets through since distance `from` along the
     // same ray (its last sheet, or its start): exp(−σ_a · (t − from)), 1 outside any volume.
     static glm::vec3 mediumTransmittance(const SurfaceHit& hit, float from);

@@ -159,8 +159,6 @@ void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& mate
                      " is not a positive distance; Lit uses infinity (no absorption)");
         }
         material.attenuationColor = colorIn(*volume, "attenuationColor", glm::vec3(1.0f), 1.0, where, warn);
-        if (material.thickness > 0.0f)
-            warn(where + ": Lit draws the volume's absorption along straight paths, without refraction");
     }
 }
 

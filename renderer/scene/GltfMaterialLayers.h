@@ -20,8 +20,7 @@ inline constexpr const char* kTransmissionExtension = "KHR_materials_transmissio
 inline constexpr const char* kVolumeExtension = "KHR_materials_volume";
 
 // Reads the factors of the six extensions in `extensions` into `material`. A value outside its
-// range is clamped and reported through `warn`, and a volume gets one warning that Lit draws no
-// refraction. The textures are read by the importer.
+// range is clamped and reported through `warn`. The textures are read by the importer.
 void readMaterialLayers(const tinygltf::ExtensionMap& extensions, Material& material,
                         const std::function<void(const std::string&)>& warn);
 

@@ -100,7 +100,7 @@ gpu::GpuMaterial toGpu(const Material& m) {
                           : m.alphaMode == AlphaMode::Blend ? LIT_ALPHA_BLEND
                                                             : LIT_ALPHA_OPAQUE;
     g.modes = glm::ivec4(m.occlusionTexture >= 0, alphaMode, m.doubleSided ? 1 : 0, 0);
-    g.alpha = glm::vec4(m.alphaCutoff, std::clamp(m.transmission, 0.0f, 1.0f), 0.0f, 0.0f);
+    g.alpha = glm::vec4(m.alphaCutoff, std::clamp(m.transmission, 0.0f, 1.0f), refractiveIndexOfVolume(m), 0.0f);
     // docs/MATERIALS.md: F0 = min(((η − 1)/(η + 1))² · k, 1) · s, F90 = s. The table holds the
     // product before the clamp, ((η − 1)/(η + 1))² · k · s, which the shaders clamp to s after a
     // specular-colour texel has scaled it (material_table.glsl materialDielectricF0).
@@ -292,6 +292,8 @@ void GpuScene::updateMaterials(const Scene& scene) {
     table.push_back(toGpu(fallback));
     sheetMaterials_.push_back(false);
     hasSheets_ = std::find(sheetMaterials_.begin(), sheetMaterials_.end(), true) != sheetMaterials_.end();
+    hasRefractingSheets_ = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                       [](const Material& m) { return refractiveIndexOfVolume(m) > 0.0f; });
     materialTextures_.push_back({});
     materialLayerBits_.push_back(0);
     // A specular texture under the default factors still needs the layers read per pixel.

@@ -94,6 +94,8 @@ public:
     // (material_table.glsl).
     bool isSheet(const DrawItem& item) const;
     bool hasSheets() const { return hasSheets_; }
+    // Whether some sheet is a volume's face that bends the light (scene/Sheets.h refractiveIndexOfVolume).
+    bool hasRefractingSheets() const { return hasRefractingSheets_; }
     // The sheets among `candidates` (item indices; nullptr: every item), in their order, into `out`.
     void sheetItems(const std::vector<std::uint32_t>* candidates, std::vector<std::uint32_t>& out) const;
     bool empty() const { return items_.empty(); }
@@ -150,6 +152,7 @@ private:
     std::vector<DrawItem> items_;
     std::vector<bool> sheetMaterials_;     // per material, + default at the end: drawnAsSheet
     bool hasSheets_ = false;               // some material is a sheet
+    bool hasRefractingSheets_ = false;     // some sheet material is a refracting volume
     // Per material slot (LIT_MATERIAL_SLOT_*).
     using MaterialTextures = std::array<TextureBinding, LIT_MATERIAL_SLOTS>;
     std::vector<MaterialTextures> materialTextures_;  // per material, + default at the end

@@ -14,6 +14,13 @@ namespace lit {
 inline bool drawnAsSheet(double transmission, double metallic) { return transmission > 0.0 && metallic < 1.0; }
 inline bool drawnAsSheet(const Material& m) { return drawnAsSheet(m.transmission, m.metallic); }
 
+// KHR_materials_volume: the index of refraction of a sheet's volume (thickness > 0; its
+// KHR_materials_ior, at least 1), whose faces bend the light that crosses them; 0 for a thin-walled
+// material or one that is no sheet.
+inline float refractiveIndexOfVolume(const Material& m) {
+    return drawnAsSheet(m) && m.thickness > 0.0f && m.ior >= 1.0f ? m.ior : 0.0f;
+}
+
 // KHR_materials_volume's absorption coefficient σ_a (1/m, world, per channel): a sheet with a
 // thickness encloses a medium that leaves attenuationColor of the light after attenuationDistance,
 // exp(−σ_a·x) = attenuationColor^(x / attenuationDistance) (docs/MATERIALS.md, "Volume"). 0 for a

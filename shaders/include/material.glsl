@@ -73,6 +73,14 @@ float materialTransmission(GpuMaterial m, vec4 uv) {
     return t;
 }
 
+// KHR_materials_volume's thickness at mesh UVs `uv` in metres, world: the factor × the thickness
+// texture's green channel × `meshScale` (meshLengthScale of the model matrix).
+float materialThickness(GpuMaterial m, vec4 uv, float meshScale) {
+    float thickness = m.volume.a * meshScale;
+    if (m.layerTextures.y != 0) thickness *= texture(thicknessTexture, materialUv(LIT_MATERIAL_SLOT_THICKNESS, uv)).g;
+    return thickness;
+}
+
 // What KHR_materials_volume's medium lets through at one face of a sheet the light crosses at
 // cosθ to the normal (docs/MATERIALS.md, "Volume"): exp(−σ_a · x), x half the straight path
 // through a slab of the material's thickness, thickness / |cosθ| (a closed mesh is crossed at two
@@ -80,10 +88,8 @@ float materialTransmission(GpuMaterial m, vec4 uv) {
 // the mesh's space, × `meshScale` (the model matrix's scale, cube root of its determinant).
 vec3 materialVolumeTransmittance(GpuMaterial m, vec4 uv, float cosTheta, float meshScale) {
     if (m.volume.a <= 0.0 || max(m.volume.r, max(m.volume.g, m.volume.b)) <= 0.0) return vec3(1.0);
-    float thickness = m.volume.a * meshScale;
-    if (m.layerTextures.y != 0) thickness *= texture(thicknessTexture, materialUv(LIT_MATERIAL_SLOT_THICKNESS, uv)).g;
     // Grazing paths are capped at 10 thicknesses: a face seen edge-on is not a slab that long.
-    return exp(-m.volume.rgb * (0.5 * thickness / max(abs(cosTheta), 0.1)));
+    return exp(-m.volume.rgb * (0.5 * materialThickness(m, uv, meshScale) / max(abs(cosTheta), 0.1)));
 }
 
 // The scale of model matrix `model` for lengths in the mesh's space (exact for a uniform scale).

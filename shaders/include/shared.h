@@ -146,7 +146,11 @@ using mat4 = glm::mat4;
 // world normal (octahedral, packSnorm2x16), a unused. Written and read only for materials with
 // such textures or a coat normal of its own (GpuMaterial::layerTextures).
 #define LIT_TEX_GBUFFER_LAYERS (LIT_TEX_TRANSMISSION + 9)
-#define LIT_TEX_UNIT_COUNT (LIT_TEX_GBUFFER_LAYERS + 1)  // units 0 .. this − 1 are bound (Capabilities.cpp)
+// The lit image before the sheets, which a refracting volume's front face samples where its bent
+// path leaves it (SheetPass, sheet.frag.glsl).
+#define LIT_TEX_SHEET_BEHIND (LIT_TEX_TRANSMISSION + 10)
+#define LIT_TEX_SHEET_BEHIND_DEPTH (LIT_TEX_TRANSMISSION + 11)  // and its depth (window space)
+#define LIT_TEX_UNIT_COUNT (LIT_TEX_SHEET_BEHIND_DEPTH + 1)     // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0
@@ -378,7 +382,9 @@ struct GpuMaterial {
     ivec4 textures;           // x base colour, y metallic-roughness, z normal, w emissive (1 = present)
     ivec4 modes;              // x occlusion texture present, y alpha mode (LIT_ALPHA_*), z double sided,
                               // w transmission texture present
-    vec4 alpha;               // x alpha cutoff, y transmission (KHR_materials_transmission), zw unused
+    vec4 alpha;               // x alpha cutoff, y transmission (KHR_materials_transmission), z the volume's
+                              // index of refraction (0: none, a thin sheet; scene/Sheets.h
+                              // refractiveIndexOfVolume), w unused
     vec4 specular;            // rgb ((η − 1)/(η + 1))² · k · s before the clamp to s, a dielectric F90 = s
                               // (KHR_materials_ior, _specular; material_table.glsl materialDielectricF0)
     vec4 clearcoat;           // x coat weight, y coat roughness (perceptual), z the coat normal texture's scale
