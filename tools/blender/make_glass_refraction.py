@@ -28,23 +28,13 @@ import bpy
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from scene_parts import (  # noqa: E402  (this folder, put on the path above)
     black_world, box, build_and_export, checker_image, enable_gltf_exporter, floor_plane, hard_sun,
-    mapped_image, principled, scene_camera)
+    mapped_image, principled, scene_camera, volume_thickness)
 
 enable_gltf_exporter()
 
 WIDTH, HEIGHT = 320, 180
 BLACK, WHITE = (0.02, 0.02, 0.02, 1.0), (0.8, 0.8, 0.8, 1.0)
 WALL_WIDTH, WALL_HEIGHT, CELL = 6.0, 2.5, 0.2
-
-
-def settings_group():
-    """The glTF exporter's "glTF Material Output" node group, whose Thickness input it writes as
-    KHR_materials_volume's thicknessFactor (Blender's own add-on menu makes the same group)."""
-    group = bpy.data.node_groups.get("glTF Material Output")
-    if group is None:
-        group = bpy.data.node_groups.new("glTF Material Output", "ShaderNodeTree")
-        group.inputs.new("NodeSocketFloat", "Thickness")
-    return group
 
 
 def clear_glass(name, thickness):
@@ -54,9 +44,7 @@ def clear_glass(name, thickness):
     bsdf = nodes["Principled BSDF"]
     bsdf.inputs["Transmission"].default_value = 1.0
     bsdf.inputs["IOR"].default_value = 1.5
-    group = nodes.new("ShaderNodeGroup")
-    group.node_tree = settings_group()
-    group.inputs["Thickness"].default_value = thickness
+    volume_thickness(m, thickness)
     return m
 
 

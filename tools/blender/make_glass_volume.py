@@ -25,23 +25,14 @@ import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from scene_parts import (  # noqa: E402  (this folder, put on the path above)
-    black_world, box, build_and_export, enable_gltf_exporter, floor_plane, hard_sun, principled, scene_camera)
+    black_world, box, build_and_export, enable_gltf_exporter, floor_plane, hard_sun, principled, scene_camera,
+    volume_thickness)
 
 enable_gltf_exporter()
 
 WIDTH, HEIGHT = 160, 90
 ATTENUATION_COLOR = (0.8, 0.5, 0.25)
 ATTENUATION_DISTANCE = 0.2  # metres
-
-
-def settings_group():
-    """The glTF exporter's "glTF Material Output" node group, whose Thickness input it writes as
-    KHR_materials_volume's thicknessFactor (Blender's own add-on menu makes the same group)."""
-    group = bpy.data.node_groups.get("glTF Material Output")
-    if group is None:
-        group = bpy.data.node_groups.new("glTF Material Output", "ShaderNodeTree")
-        group.inputs.new("NodeSocketFloat", "Thickness")
-    return group
 
 
 def amber_glass(name, thickness):
@@ -55,9 +46,7 @@ def amber_glass(name, thickness):
     absorption.inputs["Color"].default_value = (*ATTENUATION_COLOR, 1.0)
     absorption.inputs["Density"].default_value = 1.0 / ATTENUATION_DISTANCE
     links.new(absorption.outputs["Volume"], nodes["Material Output"].inputs["Volume"])
-    group = nodes.new("ShaderNodeGroup")
-    group.node_tree = settings_group()
-    group.inputs["Thickness"].default_value = thickness
+    volume_thickness(m, thickness)
     return m
 
 

@@ -34,6 +34,19 @@ def principled(name, color, roughness=0.8, metallic=0.0):
     return m
 
 
+def volume_thickness(material, thickness):
+    """Gives `material` a volume `thickness` metres thick the way Blender's glTF exporter reads it:
+    the Thickness input of a "glTF Material Output" node group (the add-on's own menu makes the
+    same group), written as KHR_materials_volume's thicknessFactor."""
+    group = bpy.data.node_groups.get("glTF Material Output")
+    if group is None:
+        group = bpy.data.node_groups.new("glTF Material Output", "ShaderNodeTree")
+        group.inputs.new("NodeSocketFloat", "Thickness")
+    node = material.node_tree.nodes.new("ShaderNodeGroup")
+    node.node_tree = group
+    node.inputs["Thickness"].default_value = thickness
+
+
 def box(name, lo, hi, mat):
     """A box from corner `lo` to corner `hi` (Blender axes, metres), scale applied, material `mat`."""
     centre = [(a + b) / 2 for a, b in zip(lo, hi)]
