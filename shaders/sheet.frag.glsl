@@ -3,8 +3,8 @@
 // "Transmission"): drawn after the composite over its HDR image, farthest first, with dual-source
 // blending
 //   image = own + T(n·v) · image,   T = t·(1 − m)·c·(1 − F(n·v))   (brdf.glsl transmittanceOfSheet)
-// times, for a material with a volume, what its medium lets through (materialVolumeTransmittance),
-// where `own` is the sheet's own light, term by term as the view shows them:
+// (times its medium's share for a volume that does not bend, materialVolumeTransmittance), where
+// `own` is the sheet's own light, term by term as the view shows them:
 //   L_DD = Σ V·E·(albedo_d·(1 − t)/π · t_s + f_sheen)·(n·l) · b + emission     (direct_lighting)
 //   L_DS = Σ V·E·(f_spec · t_s · b + cc·f_coat)·(n·l)
 //   L_ID = albedo_d·(1 − t) (and the sheen's) × the six diffuse cones' irradiance/π    (cone_trace)
@@ -16,7 +16,7 @@
 // volume, crosses a slab of its thickness and leaves it, and what lies there is read from the
 // image before the sheets (LIT_TEX_SHEET_BEHIND) where that exit point projects:
 //   own += T(n·v)² · exp(−σ_a · d / cosθ_t) · behind(exit),   T · image = 0
-// (docs/MATERIALS.md, "Refraction").
+// (docs/MATERIALS.md, "Volume").
 #include "frame.glsl"
 #include "material.glsl"
 #include "gbuffer.glsl"
@@ -59,6 +59,7 @@ vec3 seenBehind(vec3 exitPoint, vec3 direction) {
     }
     return texelFetch(sheetBehind, texel, 0).rgb;
 }
+
 uniform ivec4 uTerms;              // which of DD, ID, DS, IS the view adds (1/0)
 uniform int uIndirect;             // 1: the voxel volume is bound (GI on)
 uniform float uShadowNormalOffset; // shadow lookup offset along the normal, in shadow texels
