@@ -131,8 +131,7 @@ void main() {
         vec3 bent = refract(-v, n, 1.0 / eta);
         float cosBent = max(-dot(bent, n), 0.1);
         float path = materialThickness(m, fs.uv, meshLengthScale(uModel)) / cosBent;
-        vec3 absorbed = max(m.volume.r, max(m.volume.g, m.volume.b)) > 0.0 ? exp(-m.volume.rgb * path) : vec3(1.0);
-        own += through * through * absorbed * seenBehind(s.position + bent * path, -v);
+        own += through * through * exp(-m.volume.rgb * path) * seenBehind(s.position + bent * path, -v);
         through = vec3(0.0);
     } else {
         through *= materialVolumeTransmittance(m, fs.uv, NdotV, meshLengthScale(uModel));

@@ -249,6 +249,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
                m.clearcoatFactor != 0.0f || m.sheenColorFactor != glm::vec3(0.0f);
     });
     layerTextures_ = false;
+    hasRefractingSheets_ = false;
     const auto textureId = [this](int index) -> TextureBinding {
         if (index < 0 || static_cast<std::size_t>(index) >= textures_.size()) return {};
         return textures_[static_cast<std::size_t>(index)];
@@ -279,6 +280,7 @@ void GpuScene::updateMaterials(const Scene& scene) {
             g.layerTextures.x |= LIT_LAYER_COAT_NORMAL_STORED;
         g.layerTextures.y = present(LIT_MATERIAL_SLOT_THICKNESS);
         layerTextures_ = layerTextures_ || g.layerTextures.x != 0;
+        hasRefractingSheets_ = hasRefractingSheets_ || g.alpha.z > 0.0f;  // refractiveIndexOfVolume
         materialLayerBits_.push_back(g.layerTextures.x);
         table.push_back(g);
         sheetMaterials_.push_back(drawnAsSheet(m));
@@ -292,8 +294,6 @@ void GpuScene::updateMaterials(const Scene& scene) {
     table.push_back(toGpu(fallback));
     sheetMaterials_.push_back(false);
     hasSheets_ = std::find(sheetMaterials_.begin(), sheetMaterials_.end(), true) != sheetMaterials_.end();
-    hasRefractingSheets_ = std::any_of(scene.materials.begin(), scene.materials.end(),
-                                       [](const Material& m) { return refractiveIndexOfVolume(m) > 0.0f; });
     materialTextures_.push_back({});
     materialLayerBits_.push_back(0);
     // A specular texture under the default factors still needs the layers read per pixel.

@@ -285,9 +285,9 @@ struct Material {
     ExtensionTexture clearcoatTexture{};
     ExtensionTexture clearcoatRoughnessTexture{};
     ExtensionTexture clearcoatNormalTexture{};
-    // KHR_materials_volume: a transmissive mesh with a thickness encloses a medium that absorbs
-    // what crosses it, attenuationColor left after attenuationDistance (Beer–Lambert); light still
-    // passes straight through, without refraction (docs/MATERIALS.md, "Volume").
+    // KHR_materials_volume: a transmissive mesh with a thickness is a solid that bends the view by
+    // its `ior` and holds a medium that absorbs what crosses it, attenuationColor left after
+    // attenuationDistance (Beer–Lambert) (docs/MATERIALS.md, "Volume").
     float thickness = 0.0f;                        // metres in the mesh's space; 0: thin-walled (no volume)
     float attenuationDistance = 0.0f;              // metres, world; 0: infinite (the file leaves it out)
     glm::vec3 attenuationColor{1.0f};              // linear RGB, 0..1
