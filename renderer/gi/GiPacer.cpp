@@ -27,21 +27,56 @@ double spreadGiMs(const std::vector<PassTiming>& timings, SpreadWork which) {
     return ms;
 }
 
-GiBudget GiPacer::paced(const GiBudget& budget) const {
+EditGiTime editGiMs(const std::vector<PassTiming>& timings, SpreadWork which) {
+    EditGiTime out;
+    bool injected = false;
+    for (const PassTiming& t : timings) {
+        if (!t.ran) continue;
+        std::string_view name = t.name;
+        const bool near = name.starts_with("near ");
+        if (near != (which == SpreadWork::NearLevels)) continue;
+        if (near) name = name.substr(5);
+        const bool voxelizing = name == "scroll" || name == "voxelize" || name == "solid voxels" || name == "mip lists";
+        if (!voxelizing && name != "inject" && name != "mipmap") continue;
+        out.ms += t.gpuMs;
+        out.voxelized = out.voxelized || voxelizing;
+        injected = injected || name == "inject";
+    }
+    return injected ? out : EditGiTime{};
+}
+
+GiBudget GiPacer::paced(const GiBudget& budget, Work update, Edit edit) const {
     if (!(budget.milliseconds > 0.0)) return budget;
     GiBudget out = budget;
+    // What the edit's whole work leaves (an edit that takes it all leaves the least share, so that
+    // an animation that moves every frame still brings its light up to date).
+    const double ms = std::max(budget.milliseconds - editCost(edit), 0.0);
     // kAll asks for the whole update in the edit's frame, time or not.
     if (budget.updateVoxels != GiBudget::kAll)
-        out.updateVoxels = voxelsFor(Work::Update, budget.milliseconds, budget.updateVoxels);
-    if (budget.refineVoxels > 0 && budget.refineVoxels != GiBudget::kAll) out.refineVoxels = voxelsFor(Work::Refine, budget.milliseconds, budget.refineVoxels);
+        out.updateVoxels = voxelsFor(update == Work::Refine ? Work::Update : update, ms, budget.updateVoxels);
+    if (budget.refineVoxels > 0 && budget.refineVoxels != GiBudget::kAll)
+        out.refineVoxels = voxelsFor(Work::Refine, ms, budget.refineVoxels);
     return out;
+}
+
+void GiPacer::editMeasured(Edit edit, double gpuMs) {
+    if (edit == Edit::None || !(gpuMs > 0.0) || !std::isfinite(gpuMs)) return;
+    double& estimate = editCost_[static_cast<std::size_t>(edit)];
+    estimate = estimate > 0.0 ? estimate + kSmoothing * (gpuMs - estimate) : gpuMs;
 }
 
 std::uint32_t GiPacer::voxelsFor(Work work, double milliseconds, std::uint32_t most) const {
     const std::size_t i = index(work);
     double voxels = kFirstVoxels;
-    if (cost_[i] > 0.0) {
-        voxels = milliseconds / cost_[i];
+    // An update work not measured yet takes the dearest known cost of the update's others (they are
+    // counted in units that make them cost alike), not kFirstVoxels' slow start: every edit begins
+    // a new kind of pass, and a move's update passes through four.
+    double cost = cost_[i];
+    if (!(cost > 0.0) && work != Work::Refine)
+        for (std::size_t k = 0; k < kWorks; ++k)
+            if (k != index(Work::Refine)) cost = std::max(cost, cost_[k]);
+    if (cost > 0.0) {
+        voxels = milliseconds / cost;
         // Growth is bounded by what the last measured frames traced, not by the last budget given:
         // frames that waited (no work of this kind) do not ratchet it up.
         if (lastTraced_[i] > 0) voxels = std::min(voxels, kMaxGrowth * lastTraced_[i]);

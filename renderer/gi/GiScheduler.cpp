@@ -101,7 +101,10 @@ std::uint32_t GiScheduler::voxelsPerFrame(const GiBudget& budget, int rays) cons
 
 bool GiScheduler::spreadsOverFrames(const GiLightKey& light, const GiBudget& budget) const {
     const std::uint32_t perFrame = voxelsPerFrame(budget, light.voxelRays);
-    return light.voxelIrradiance && perFrame > 0 && perFrame < state_.occupied && state_.listComplete;
+    // Under a time budget a pass that fits one frame is still one pass of several (the bounces,
+    // then the irradiance): run all at once they would take the frame several times over.
+    const bool timed = budget.milliseconds > 0.0;
+    return light.voxelIrradiance && perFrame > 0 && (timed || perFrame < state_.occupied) && state_.listComplete;
 }
 
 bool GiScheduler::replaysRayHits(int rays) const {

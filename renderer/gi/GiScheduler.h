@@ -179,7 +179,7 @@ public:
     // recorded ray hits take kReplayVoxelsPerFrameFactor times as many.
     std::uint32_t voxelsPerFrame(const GiBudget& budget, int rays) const;
     // Whether the cached mode's update runs over several frames with `budget`: only over a complete
-    // list longer than a frame's share.
+    // list, and with a time budget or a list longer than a frame's share.
     bool spreadsOverFrames(const GiLightKey& light, const GiBudget& budget) const;
     // Whether a trace with `rays` rays would replay the recorded hits.
     bool replaysRayHits(int rays) const;

@@ -112,8 +112,10 @@ void VoxelGi::measureSpreadWork() {
     for (const std::vector<PassTiming>& timings : profiler_.recentFrames()) {
         if (timings.empty() || timings.front().frame <= lastMeasuredFrame_) continue;
         lastMeasuredFrame_ = timings.front().frame;
-        pacer_.measured(lastMeasuredFrame_,
-                        spreadGiMs(timings, level_ == VoxelGiLevel::Near ? SpreadWork::NearLevels : SpreadWork::SceneVolume));
+        const SpreadWork which = level_ == VoxelGiLevel::Near ? SpreadWork::NearLevels : SpreadWork::SceneVolume;
+        pacer_.measured(lastMeasuredFrame_, spreadGiMs(timings, which));
+        const EditGiTime edit = editGiMs(timings, which);
+        pacer_.editMeasured(edit.voxelized ? GiPacer::Edit::Voxelize : GiPacer::Edit::Inject, edit.ms);
     }
 }
 
@@ -121,7 +123,6 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                               DrawCounters& counters) {
     GiFrameReport report;
     if (asked.milliseconds > 0.0) measureSpreadWork();
-    const GiBudget budget = pacer_.paced(asked);
     const bool reallocated = volume_.ensure(settings.gi.voxelResolution, settings.gi.radianceRgba8, log_);
     const VoxelPlacement placedBefore = volume_.placement();
     const bool moved = level_ == VoxelGiLevel::Near ? volume_.placeAt(frame.bounds) : volume_.fitTo(frame.bounds);
@@ -182,6 +183,16 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                        : changedBoxes(items, voxels, settings, reallocated, moved);
         changes.changedBoxesOnly = boxes.has_value();
     }
+    // A time budget's share: what the edit's whole work leaves of it, in voxels that march or replay
+    // (after a voxelization of changed boxes the recorded hits stay; the entries whose rays cross
+    // the boxes march again).
+    const bool replays =
+        scheduler_.replaysRayHits(light.voxelRays) && (!changes.voxelize || (boxes.has_value() && !scroll));
+    const GiPacer::Edit edit = changes.voxelize ? GiPacer::Edit::Voxelize
+                               : changes.inject ? GiPacer::Edit::Inject
+                                                : GiPacer::Edit::None;
+    // (continueUpdate paces each pass's share by its own kind of work.)
+    const GiBudget budget = pacer_.paced(asked, replays ? GiPacer::Work::Replay : GiPacer::Work::Update, edit);
     // Every bounce after a geometry edit, spread over frames: the bounces start from the last
     // update's light (BouncePass::keepIndirect; the old list is read before the voxelization
     // replaces it), unless level 0 keeps that light (changed boxes only: keepLastUpdate).
@@ -189,6 +200,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
     bool warmStart = changes.voxelize && !GiScheduler::keepsLastUpdate(changes, light) && keepShownLight &&
                      light.untilConverged && before.light.bounces > 1 && before.listComplete && volume_.direct() &&
                      scheduler_.spreadsOverFrames(light, budget);
+    const bool keptIndirect = warmStart;
     if (warmStart) {
         Profiler::Scope scope(profiler_, step("bounces"));
         bounce_.keepIndirect(volume_);
@@ -374,7 +386,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
         // The refinement waits for the slabs' light.
         GiBudget updateBudget = budget;
         if (!slabs_.boxes.empty()) updateBudget.refineVoxels = 0;
-        continueUpdate(settings, light, updateBudget, changes.inject, report);
+        continueUpdate(settings, light, updateBudget, {asked, edit}, keptIndirect, report);
     }
     // Under a time budget a move's frame has done its share (the scroll, the slabs' voxelization,
     // injection and mips cost more than the budget on llvmpipe): the slabs' light starts next frame.
@@ -412,7 +424,7 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
 }
 
 void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget,
-                             bool injected, GiFrameReport& report) {
+                             const Pace& pace, bool unmeasured, GiFrameReport& report) {
     const ConeFeatures features = featuresFor(settings);
     const bool overList = scheduler_.state().listComplete;
     // The list ranges traced this frame, and whether the frame completed an update or a
@@ -423,8 +435,14 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
     bool filterAll = false;
     // The update's voxels traced this frame in the budget's units (the pacer's measure).
     double updateVoxels = 0.0;
-    const auto countUpdate = [&](std::uint32_t entries, std::uint32_t perFrame) {
-        if (perFrame > 0) updateVoxels += static_cast<double>(budget.updateVoxels) * entries / perFrame;
+    GiPacer::Work updateWork = GiPacer::Work::Update;  // ... of this kind
+    // The budget for this frame's share of `work`: each kind of pass paced by its own cost.
+    const auto budgetFor = [&](GiPacer::Work work) {
+        updateWork = work;
+        return pace.asked.milliseconds > 0.0 ? pacer_.paced(pace.asked, work, pace.edit) : budget;
+    };
+    const auto countUpdate = [&](const GiBudget& share, std::uint32_t entries, std::uint32_t perFrame) {
+        if (perFrame > 0) updateVoxels += static_cast<double>(share.updateVoxels) * entries / perFrame;
     };
     const GiProgress& progress = scheduler_.state().progress;
     if (progress.bounce > 0) {
@@ -443,13 +461,18 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
         const int changeSubset = bounceGathersChange_ && sameLight
                                      ? changeSubsetFor(bounceNumber, features.voxelRays, light.laterBounceRayStride)
                                      : -1;
-        std::uint32_t perFrame = scheduler_.voxelsPerFrame(budget, light.voxelRays);
+        const RayHits hits = rayHitsFor(features.voxelRays);
+        // Replaying after a voxelization of changed boxes, the entries whose rays cross them march.
+        const GiBudget share = budgetFor(hits != RayHits::Replay           ? GiPacer::Work::Update
+                                         : rayHitCache_.changedBoxes() > 0 ? GiPacer::Work::ReplayChangedBoxes
+                                         : changeSubset >= 0               ? GiPacer::Work::ReplayChange
+                                                                           : GiPacer::Work::Replay);
+        std::uint32_t perFrame = scheduler_.voxelsPerFrame(share, light.voxelRays);
         if (changeSubset >= 0 && perFrame > 0)
             perFrame = static_cast<std::uint32_t>(std::min<std::uint64_t>(
                 std::uint64_t{perFrame} * kChangeVoxelsPerFrameFactor, std::numeric_limits<std::uint32_t>::max()));
         const VoxelRange range = scheduler_.bounceShare(perFrame);
-        countUpdate(range.count, perFrame);
-        const RayHits hits = rayHitsFor(features.voxelRays);
+        countUpdate(share, range.count, perFrame);
         if (light.untilConverged && range.first == 0) bounce_.resetChange();
         if (range.first == 0) rayHitCache_.beginPass();
         const bool fromDirect = progress.bounce == 2 && !warmStart_;
@@ -480,15 +503,17 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             scheduler_.irradianceDone();
             report.updateCompleted = true;
         } else {
-            const std::uint32_t perFrame = scheduler_.voxelsPerFrame(budget, light.voxelRays);
+            const RayHits hits = rayHitsFor(features.voxelRays);
+            const GiBudget share =
+                budgetFor(hits == RayHits::Replay ? GiPacer::Work::ReplayIrradiance : GiPacer::Work::Update);
+            const std::uint32_t perFrame = scheduler_.voxelsPerFrame(share, light.voxelRays);
             // The first share of a pass over the whole list (from where the round robin stands).
             if (scheduler_.state().progress.irradianceLeft >= scheduler_.state().occupied) rayHitCache_.beginPass();
             const std::vector<VoxelRange> ranges = scheduler_.takeIrradiance(perFrame);
-            const RayHits hits = rayHitsFor(features.voxelRays);
             for (const VoxelRange& range : ranges) {
                 irradiance_.trace(volume_, irradianceCache_, rayHitCache_, {features, true, range, 0, hits});
                 traced.push_back(range);
-                countUpdate(range.count, perFrame);
+                countUpdate(share, range.count, perFrame);
             }
             // Every entry was traced once since the edit: recorded, if that is what it did. The
             // accumulated indirect light holds the update's frames (old light in the voxels not
@@ -534,10 +559,10 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             for (const VoxelRange& range : traced) filter_.execute(volume_, irradianceCache_, true, range);
         }
     }
-    if (budget.milliseconds > 0.0 && !injected) {
+    if (budget.milliseconds > 0.0 && !unmeasured) {
         const std::uint64_t frame = profiler_.currentFrame();
         if (updateVoxels > 0.0) {
-            pacer_.traced(frame, GiPacer::Work::Update, static_cast<std::uint32_t>(std::ceil(updateVoxels)));
+            pacer_.traced(frame, updateWork, static_cast<std::uint32_t>(std::ceil(updateVoxels)));
         } else if (report.refinedVoxels > 0) {
             pacer_.traced(frame, GiPacer::Work::Refine, report.refinedVoxels);
         }

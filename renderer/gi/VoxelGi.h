@@ -145,9 +145,16 @@ private:
     void listTraced(RayHits hits);
     // The work of the update after the injection frame: this frame's share of a spread bounce, of
     // the irradiance and of the refinement, and the filter after them.
-    // Records the voxels it traced with the pacer unless `injected` (the frame did other work).
+    // Records the voxels it traced with the pacer unless `unmeasured` (the frame's "bounces" time
+    // also holds a warm start's copies: no measure of the share).
+    // `pace`: the budget asked and the edit's work this frame, which under a time budget give each
+    // pass's share by its own cost (GiPacer::Work).
+    struct Pace {
+        GiBudget asked;
+        GiPacer::Edit edit = GiPacer::Edit::None;
+    };
     void continueUpdate(const RenderSettings& settings, const GiLightKey& light, const GiBudget& budget,
-                        bool injected, GiFrameReport& report);
+                        const Pace& pace, bool unmeasured, GiFrameReport& report);
 
     VoxelGiLevel level_;
     Profiler& profiler_;

@@ -14,8 +14,8 @@ std::uint32_t runFrames(GiPacer& pacer, const GiBudget& budget, Work work, doubl
     std::vector<std::pair<std::uint64_t, double>> inFlight;
     std::uint32_t voxels = 0;
     for (int i = 0; i < frames; ++i, ++frame) {
-        const GiBudget paced = pacer.paced(budget);
-        voxels = work == Work::Update ? paced.updateVoxels : paced.refineVoxels;
+        const GiBudget paced = pacer.paced(budget, work == Work::Refine ? Work::Update : work);
+        voxels = work == Work::Refine ? paced.refineVoxels : paced.updateVoxels;
         pacer.traced(frame, work, voxels);
         inFlight.emplace_back(frame, voxels * msPerVoxel);
         if (inFlight.size() > static_cast<std::size_t>(lag)) {
@@ -95,6 +95,58 @@ TEST(GiPacer, NeverBelowTheLeastAFrameTraces) {
     pacer.traced(1, Work::Update, 100);
     pacer.measured(1, 1000.0);  // 10 ms a voxel: 25 ms would allow 2
     EXPECT_EQ(pacer.paced({1u << 24, 0, 25.0}).updateVoxels, GiPacer::kMinVoxels);
+}
+
+// Each kind of update pass is paced by its own cost; one not measured yet starts from the dearest
+// known cost of the others rather than from kFirstVoxels (a move's update passes through several).
+TEST(GiPacer, UpdateKindsArePacedApartAndANewOneStartsFromTheDearestKnown) {
+    GiPacer pacer;
+    const GiBudget budget{1u << 24, 0, 20.0};
+    std::uint64_t frame = 1;
+    runFrames(pacer, budget, Work::Replay, 0.002, 40, frame);
+    EXPECT_NEAR(pacer.costPerVoxel(Work::Replay), 0.002, 1e-9);
+    EXPECT_EQ(pacer.costPerVoxel(Work::ReplayChange), 0.0);
+    EXPECT_NEAR(pacer.paced(budget, Work::ReplayChange).updateVoxels, 10000.0, 1.0) << "Replay's cost as the prior";
+    pacer.traced(frame, Work::ReplayChange, 1000);
+    pacer.measured(frame, 1.0);  // 0.001 ms a unit
+    ++frame;
+    EXPECT_NEAR(pacer.paced(budget, Work::ReplayChange).updateVoxels, 2000.0, 1.0) << "grows at most twice a frame";
+    EXPECT_NEAR(pacer.paced(budget, Work::Replay).updateVoxels, 10000.0, 1.0) << "Replay keeps its own cost";
+    EXPECT_NEAR(pacer.paced(budget, Work::ReplayIrradiance).updateVoxels, 10000.0, 1.0) << "the dearer of the two";
+}
+
+// An edit's frame voxelizes, injects and rebuilds the mips whole: their measured cost comes off the
+// frame's time, and an edit that takes it all leaves the least share.
+TEST(GiPacer, AnEditsWholeWorkComesOffItsFrame) {
+    GiPacer pacer;
+    const GiBudget budget{1u << 24, 0, 25.0};
+    std::uint64_t frame = 1;
+    runFrames(pacer, budget, Work::Update, 0.01, 40, frame);
+    EXPECT_EQ(pacer.paced(budget, Work::Update, GiPacer::Edit::Voxelize).updateVoxels, 2500u) << "not measured yet";
+    pacer.editMeasured(GiPacer::Edit::Voxelize, 15.0);
+    pacer.editMeasured(GiPacer::Edit::Inject, 5.0);
+    EXPECT_NEAR(pacer.paced(budget, Work::Update, GiPacer::Edit::Voxelize).updateVoxels, 1000.0, 1.0);
+    EXPECT_NEAR(pacer.paced(budget, Work::Update, GiPacer::Edit::Inject).updateVoxels, 2000.0, 1.0);
+    EXPECT_NEAR(pacer.paced(budget).updateVoxels, 2500.0, 1.0) << "a frame without an edit keeps its whole time";
+    pacer.editMeasured(GiPacer::Edit::Voxelize, 200.0);
+    EXPECT_EQ(pacer.paced(budget, Work::Update, GiPacer::Edit::Voxelize).updateVoxels, GiPacer::kMinVoxels);
+    EXPECT_EQ(pacer.paced(GiBudget::converge(), Work::Update, GiPacer::Edit::Voxelize), GiBudget::converge());
+}
+
+TEST(GiPacer, AnEditsWholeWorkAmongAFramesTimings) {
+    const auto timing = [](const char* name, double ms) { return PassTiming{name, ms, 0.0, true, 7}; };
+    const std::vector<PassTiming> moved{
+        timing("voxelize", 3.0), timing("solid voxels", 1.0), timing("mip lists", 2.0),  timing("inject", 4.0),
+        timing("mipmap", 10.0),  timing("bounces", 80.0),     timing("near inject", 9.0)};
+    EditGiTime edit = editGiMs(moved, SpreadWork::SceneVolume);
+    EXPECT_DOUBLE_EQ(edit.ms, 20.0);
+    EXPECT_TRUE(edit.voxelized);
+    EXPECT_DOUBLE_EQ(spreadGiMs(moved, SpreadWork::SceneVolume), 80.0) << "the share is measured apart";
+    edit = editGiMs(moved, SpreadWork::NearLevels);
+    EXPECT_DOUBLE_EQ(edit.ms, 9.0);
+    EXPECT_FALSE(edit.voxelized);
+    // The mips rebuilt after a spread update's last bounce are no edit.
+    EXPECT_DOUBLE_EQ(editGiMs({timing("mipmap", 10.0), timing("bounces", 50.0)}, SpreadWork::SceneVolume).ms, 0.0);
 }
 
 TEST(GiBudget, WidenedScalesTheTimeAndTheCountsAlike) {

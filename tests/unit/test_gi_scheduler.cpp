@@ -60,6 +60,19 @@ TEST(GiScheduler, TheFirstFrameVoxelizesAndInjectsEverythingAtOnce) {
     EXPECT_EQ(s.state().light, light);
 }
 
+// Under a time budget an update is spread whenever the list is complete, also when one pass fits a
+// frame's share: run all at once, its bounces and irradiance would take the frame several times.
+TEST(GiScheduler, ATimeBudgetAlwaysSpreadsTheUpdate) {
+    GiScheduler s;
+    const GiLightKey light = cachedTwoBounces();
+    s.voxelized({1, 1, nullptr}, 5000, true);
+    EXPECT_FALSE(s.spreadsOverFrames(light, {10000, 0, 0.0})) << "a share that covers the list: all at once";
+    EXPECT_TRUE(s.spreadsOverFrames(light, {10000, 0, 25.0}));
+    EXPECT_FALSE(s.spreadsOverFrames(light, {GiBudget::kAll, 0, 25.0})) << "kAll asks for everything now";
+    s.voxelized({1, 1, nullptr}, 5000, false);
+    EXPECT_FALSE(s.spreadsOverFrames(light, {10000, 0, 25.0})) << "an incomplete list runs over the grid at once";
+}
+
 TEST(GiScheduler, NothingChangedIsNoWorkAndTheStateStaysEqual) {
     GiScheduler s = injected(5000);
     s.irradianceDone();
