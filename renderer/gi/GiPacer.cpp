@@ -68,13 +68,7 @@ void GiPacer::editMeasured(Edit edit, double gpuMs) {
 std::uint32_t GiPacer::voxelsFor(Work work, double milliseconds, std::uint32_t most) const {
     const std::size_t i = index(work);
     double voxels = kFirstVoxels;
-    // An update work not measured yet takes the dearest known cost of the update's others (they are
-    // counted in units that make them cost alike), not kFirstVoxels' slow start: every edit begins
-    // a new kind of pass, and a move's update passes through four.
-    double cost = cost_[i];
-    if (!(cost > 0.0) && work != Work::Refine)
-        for (std::size_t k = 0; k < kWorks; ++k)
-            if (k != index(Work::Refine)) cost = std::max(cost, cost_[k]);
+    const double cost = estimatedCostPerVoxel(work);
     if (cost > 0.0) {
         voxels = milliseconds / cost;
         // Growth is bounded by what the last measured frames traced, not by the last budget given:
@@ -85,23 +79,54 @@ std::uint32_t GiPacer::voxelsFor(Work work, double milliseconds, std::uint32_t m
     return static_cast<std::uint32_t>(std::max(std::floor(voxels), 1.0));
 }
 
-void GiPacer::traced(std::uint64_t frame, Work work, std::uint32_t voxels) {
+double GiPacer::estimatedCostPerVoxel(Work work) const {
+    // An update work not measured yet takes the dearest known cost of the update's others (they are
+    // counted in units that make them cost alike), not kFirstVoxels' slow start: every edit begins
+    // a new kind of pass, and a move's update passes through four.
+    double cost = cost_[index(work)];
+    if (!(cost > 0.0) && work != Work::Refine)
+        for (std::size_t k = 0; k < kWorks; ++k)
+            if (k != index(Work::Refine)) cost = std::max(cost, cost_[k]);
+    return cost;
+}
+
+void GiPacer::traced(std::uint64_t frame, Work work, std::uint32_t voxels, std::uint32_t allowed) {
     if (voxels == 0) return;
+    const auto same = std::find_if(traced_.begin(), traced_.end(),
+                                   [&](const Traced& t) { return t.frame == frame && t.work == work; });
+    if (same != traced_.end()) {
+        same->voxels += voxels;
+        lastTraced_[index(work)] = std::max(same->voxels, allowed);
+        return;
+    }
     traced_.push_back({frame, work, voxels});
-    lastTraced_[index(work)] = voxels;
+    lastTraced_[index(work)] = std::max(voxels, allowed);
     while (traced_.size() > kMaxWaiting) traced_.pop_front();
 }
 
 void GiPacer::measured(std::uint64_t frame, double gpuMs) {
     // Frames older than this one will not be measured any more (timings arrive in frame order).
     while (!traced_.empty() && traced_.front().frame < frame) traced_.pop_front();
-    if (traced_.empty() || traced_.front().frame != frame) return;
-    const Traced t = traced_.front();
-    traced_.pop_front();
-    if (!(gpuMs > 0.0) || !std::isfinite(gpuMs)) return;
-    const double cost = gpuMs / t.voxels;
-    double& estimate = cost_[index(t.work)];
-    estimate = estimate > 0.0 ? estimate + kSmoothing * (cost - estimate) : cost;
+    std::vector<Traced> kinds;
+    while (!traced_.empty() && traced_.front().frame == frame) {
+        kinds.push_back(traced_.front());
+        traced_.pop_front();
+    }
+    if (kinds.empty() || !(gpuMs > 0.0) || !std::isfinite(gpuMs)) return;
+    // Each kind's share of the time by what its voxels were expected to cost (alike while no cost
+    // is known).
+    std::vector<double> expected;
+    double total = 0.0;
+    for (const Traced& t : kinds) {
+        const double cost = estimatedCostPerVoxel(t.work);
+        expected.push_back(t.voxels * (cost > 0.0 ? cost : 1.0));
+        total += expected.back();
+    }
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+        const double cost = gpuMs * expected[k] / total / kinds[k].voxels;
+        double& estimate = cost_[index(kinds[k].work)];
+        estimate = estimate > 0.0 ? estimate + kSmoothing * (cost - estimate) : cost;
+    }
 }
 
 }  // namespace lit

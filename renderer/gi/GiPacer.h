@@ -59,16 +59,22 @@ public:
     GiBudget paced(const GiBudget& budget, Work update = Work::Update, Edit edit = Edit::None) const;
 
     // Frame `frame` traced `voxels` of `work` (in GiBudget's units: a voxel that replays its ray
-    // hits counts 1 / kReplayVoxelsPerFrameFactor). A frame records one kind: its spread passes'
-    // time (spreadGiMs, which leaves an edit's whole work out) is the measure of that kind.
-    void traced(std::uint64_t frame, Work work, std::uint32_t voxels);
-    // The spread passes of frame `frame` took `gpuMs` (once its timings are in).
+    // hits counts 1 / kReplayVoxelsPerFrameFactor); a frame may trace several kinds (the update's
+    // bounces one after the other), and a kind several times (their voxels add up). `allowed`:
+    // the voxels its budget allowed, when more than it traced (a pass's last share, cut by the end
+    // of the list): the next frame's growth is bounded by that, not by the short share.
+    void traced(std::uint64_t frame, Work work, std::uint32_t voxels, std::uint32_t allowed = 0);
+    // The spread passes of frame `frame` took `gpuMs` (once its timings are in; spreadGiMs, which
+    // leaves an edit's whole work out). A frame of several kinds gives each the share of the time
+    // their estimated costs say.
     void measured(std::uint64_t frame, double gpuMs);
     // An edit's frame spent `gpuMs` on the work it does whole (edit: Inject or Voxelize).
     void editMeasured(Edit edit, double gpuMs);
 
     // ms per voxel of `work`, 0 while unknown.
     double costPerVoxel(Work work) const { return cost_[index(work)]; }
+    // ... or, for a kind of the update not measured yet, the dearest known cost of the others.
+    double estimatedCostPerVoxel(Work work) const;
     // ms of an edit's whole work, 0 while unknown (and for Edit::None).
     double editCost(Edit edit) const { return editCost_[static_cast<std::size_t>(edit)]; }
 

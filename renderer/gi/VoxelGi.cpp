@@ -1,5 +1,6 @@
 #include "gi/VoxelGi.h"
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -433,22 +434,49 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
     // the trace it follows at 256³; docs/PERFORMANCE.md, "GI update").
     std::vector<VoxelRange> traced;
     bool filterAll = false;
-    // The update's voxels traced this frame in the budget's units (the pacer's measure).
+    // The update's voxels traced this frame in the budget's units (the pacer's measure), and of
+    // each kind of work.
     double updateVoxels = 0.0;
-    GiPacer::Work updateWork = GiPacer::Work::Update;  // ... of this kind
-    // The budget for this frame's share of `work`: each kind of pass paced by its own cost.
+    std::array<double, GiPacer::kWorks> voxelsOfWork{};
+    std::array<std::uint32_t, GiPacer::kWorks> allowedOfWork{};  // ... and the shares the budget allowed
+    // Under a time budget: the frame's time the edit's whole work left, less what the shares traced
+    // so far are expected to cost.
+    const bool timed = pace.asked.milliseconds > 0.0;
+    double msLeft = timed ? pace.asked.milliseconds - pacer_.editCost(pace.edit) : 0.0;
+    // The budget for this frame's next share of `work`: each kind of pass paced by its own cost.
     const auto budgetFor = [&](GiPacer::Work work) {
-        updateWork = work;
-        return pace.asked.milliseconds > 0.0 ? pacer_.paced(pace.asked, work, pace.edit) : budget;
+        if (!timed) return budget;
+        GiBudget left = pace.asked;
+        left.milliseconds = std::max(msLeft, 1e-3);  // none left: the least share
+        return pacer_.paced(left, work);
     };
-    const auto countUpdate = [&](const GiBudget& share, std::uint32_t entries, std::uint32_t perFrame) {
-        if (perFrame > 0) updateVoxels += static_cast<double>(share.updateVoxels) * entries / perFrame;
+    const auto countUpdate = [&](GiPacer::Work work, const GiBudget& share, std::uint32_t entries,
+                                 std::uint32_t perFrame) {
+        if (perFrame == 0) return;
+        const double units = static_cast<double>(share.updateVoxels) * entries / perFrame;
+        updateVoxels += units;
+        voxelsOfWork[static_cast<std::size_t>(work)] += units;
+        // An edit's frame leaves its share less time: what a frame without the edit would have been
+        // allowed bounds the next frame's growth.
+        allowedOfWork[static_cast<std::size_t>(work)] +=
+            pace.edit == GiPacer::Edit::None || !timed ? share.updateVoxels
+                                                       : pacer_.paced(pace.asked, work).updateVoxels;
+        msLeft -= units * pacer_.estimatedCostPerVoxel(work);
     };
     const GiProgress& progress = scheduler_.state().progress;
-    if (progress.bounce > 0) {
+    // A bounce that ends with more than this share of a time budget left lets the next bounce start
+    // in the same frame (later bounces that gather their change take a fraction of the first's time:
+    // one a frame, a small scene's update took twice the frames its work needed).
+    constexpr double kNextBounceShare = 0.25;
+    bool nextBounce = progress.bounce > 0;
+    // The irradiance runs in a frame without a bounce, or after the last bounce with time left.
+    bool irradianceNow = !nextBounce;
+    if (nextBounce) {
         // A spread bounce: the last share ends it (level 0 and its mips); after the last bounce
         // the irradiance starts in the next frame.
         Profiler::Scope scope(profiler_, step("bounces"));
+      while (nextBounce) {
+        nextBounce = false;
         if (progress.bounceNext == 0) {
             bounceGathersChange_ = changeReady_;
             bounceStartInjections_ = injections_;
@@ -463,16 +491,17 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
                                      : -1;
         const RayHits hits = rayHitsFor(features.voxelRays);
         // Replaying after a voxelization of changed boxes, the entries whose rays cross them march.
-        const GiBudget share = budgetFor(hits != RayHits::Replay           ? GiPacer::Work::Update
-                                         : rayHitCache_.changedBoxes() > 0 ? GiPacer::Work::ReplayChangedBoxes
-                                         : changeSubset >= 0               ? GiPacer::Work::ReplayChange
-                                                                           : GiPacer::Work::Replay);
+        const GiPacer::Work work = hits != RayHits::Replay           ? GiPacer::Work::Update
+                                   : rayHitCache_.changedBoxes() > 0 ? GiPacer::Work::ReplayChangedBoxes
+                                   : changeSubset >= 0               ? GiPacer::Work::ReplayChange
+                                                                     : GiPacer::Work::Replay;
+        const GiBudget share = budgetFor(work);
         std::uint32_t perFrame = scheduler_.voxelsPerFrame(share, light.voxelRays);
         if (changeSubset >= 0 && perFrame > 0)
             perFrame = static_cast<std::uint32_t>(std::min<std::uint64_t>(
                 std::uint64_t{perFrame} * kChangeVoxelsPerFrameFactor, std::numeric_limits<std::uint32_t>::max()));
         const VoxelRange range = scheduler_.bounceShare(perFrame);
-        countUpdate(share, range.count, perFrame);
+        countUpdate(work, share, range.count, perFrame);
         if (light.untilConverged && range.first == 0) bounce_.resetChange();
         if (range.first == 0) rayHitCache_.beginPass();
         const bool fromDirect = progress.bounce == 2 && !warmStart_;
@@ -492,8 +521,14 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             // Voxel rays need the mips' occupancy only (see update()): rebuilt after the last bounce.
             if (features.voxelRays == 0 || scheduler_.state().progress.bounce == 0)
                 mipmap_.execute(volume_, light.anisotropic, overList);
+            const bool timeLeft =
+                timed && features.voxelRays > 0 && msLeft > kNextBounceShare * pace.asked.milliseconds;
+            nextBounce = timeLeft && progress.bounce > 0;
+            irradianceNow = timeLeft && progress.bounce == 0;
         }
-    } else if (light.voxelIrradiance && progress.irradianceLeft > 0) {
+      }
+    }
+    if (irradianceNow && light.voxelIrradiance && progress.irradianceLeft > 0) {
         Profiler::Scope scope(profiler_, step("voxel irradiance"));
         if (!scheduler_.spreadsOverFrames(light, budget)) {
             const RayHits hits = rayHitsFor(features.voxelRays);
@@ -504,8 +539,9 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             report.updateCompleted = true;
         } else {
             const RayHits hits = rayHitsFor(features.voxelRays);
-            const GiBudget share =
-                budgetFor(hits == RayHits::Replay ? GiPacer::Work::ReplayIrradiance : GiPacer::Work::Update);
+            const GiPacer::Work work =
+                hits == RayHits::Replay ? GiPacer::Work::ReplayIrradiance : GiPacer::Work::Update;
+            const GiBudget share = budgetFor(work);
             const std::uint32_t perFrame = scheduler_.voxelsPerFrame(share, light.voxelRays);
             // The first share of a pass over the whole list (from where the round robin stands).
             if (scheduler_.state().progress.irradianceLeft >= scheduler_.state().occupied) rayHitCache_.beginPass();
@@ -513,7 +549,7 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
             for (const VoxelRange& range : ranges) {
                 irradiance_.trace(volume_, irradianceCache_, rayHitCache_, {features, true, range, 0, hits});
                 traced.push_back(range);
-                countUpdate(share, range.count, perFrame);
+                countUpdate(work, share, range.count, perFrame);
             }
             // Every entry was traced once since the edit: recorded, if that is what it did. The
             // accumulated indirect light holds the update's frames (old light in the voxels not
@@ -562,7 +598,10 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
     if (budget.milliseconds > 0.0 && !unmeasured) {
         const std::uint64_t frame = profiler_.currentFrame();
         if (updateVoxels > 0.0) {
-            pacer_.traced(frame, updateWork, static_cast<std::uint32_t>(std::ceil(updateVoxels)));
+            for (std::size_t k = 0; k < GiPacer::kWorks; ++k)
+                if (voxelsOfWork[k] > 0.0)
+                    pacer_.traced(frame, static_cast<GiPacer::Work>(k),
+                                  static_cast<std::uint32_t>(std::ceil(voxelsOfWork[k])), allowedOfWork[k]);
         } else if (report.refinedVoxels > 0) {
             pacer_.traced(frame, GiPacer::Work::Refine, report.refinedVoxels);
         }

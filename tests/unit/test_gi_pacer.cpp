@@ -149,6 +149,39 @@ TEST(GiPacer, AnEditsWholeWorkAmongAFramesTimings) {
     EXPECT_DOUBLE_EQ(editGiMs({timing("mipmap", 10.0), timing("bounces", 50.0)}, SpreadWork::SceneVolume).ms, 0.0);
 }
 
+// A frame that traced several kinds (the next bounce started in the time the last one left) gives
+// each the share of its time their estimated costs say: a frame that took twice the estimate
+// doubles both.
+TEST(GiPacer, AFrameOfSeveralKindsSplitsItsTimeByTheirEstimates) {
+    GiPacer pacer;
+    pacer.traced(1, Work::Replay, 1000);
+    pacer.measured(1, 10.0);  // 0.01 ms a unit
+    pacer.traced(2, Work::ReplayChange, 1000);
+    pacer.measured(2, 5.0);  // 0.005
+    pacer.traced(3, Work::Replay, 600);
+    pacer.traced(3, Work::ReplayChange, 400);
+    pacer.traced(3, Work::ReplayChange, 400);  // the same kind twice in a frame adds up
+    pacer.measured(3, 2.0 * (600 * 0.01 + 800 * 0.005));
+    // Each new cost is twice the old, weighed in at kSmoothing.
+    EXPECT_NEAR(pacer.costPerVoxel(Work::Replay), 0.01 * (1.0 + GiPacer::kSmoothing), 1e-12);
+    EXPECT_NEAR(pacer.costPerVoxel(Work::ReplayChange), 0.005 * (1.0 + GiPacer::kSmoothing), 1e-12);
+}
+
+// A pass's last share is cut by the end of the list, and an edit's frame by the edit's work: the
+// growth after them is bounded by what the budget allowed, not by the short share.
+TEST(GiPacer, AShortShareDoesNotSlowTheNextFrame) {
+    GiPacer pacer;
+    const GiBudget budget{1u << 24, 0, 20.0};
+    std::uint64_t frame = 1;
+    runFrames(pacer, budget, Work::Replay, 0.002, 40, frame);
+    const std::uint32_t full = pacer.paced(budget, Work::Replay).updateVoxels;
+    EXPECT_NEAR(full, 10000.0, 1.0);
+    pacer.traced(frame, Work::Replay, 64, full);
+    EXPECT_EQ(pacer.paced(budget, Work::Replay).updateVoxels, full);
+    pacer.traced(frame + 1, Work::Replay, 64);  // cut by the budget itself: growth from there
+    EXPECT_EQ(pacer.paced(budget, Work::Replay).updateVoxels, 128u);
+}
+
 TEST(GiBudget, WidenedScalesTheTimeAndTheCountsAlike) {
     const GiBudget editor{16384, 8192, 25.0};
     const GiBudget idle = editor.widenedTo(50.0);
