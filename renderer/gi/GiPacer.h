@@ -8,9 +8,10 @@
 // update marches or replays its rays through several bounces, one of the refinement traces one
 // cone set: their costs differ tenfold, and a replay's share of a march's depends on the scene).
 // An edit's frame also voxelizes, injects and rebuilds the mips, which are not spread: their cost,
-// measured on earlier edits of the same kind, comes off that frame's time. Until a cost is known the pacer starts small
-// (kFirstVoxels) and grows at most kMaxGrowth times a frame, so a cost measured on a few voxels (where a dispatch's
-// fixed cost weighs most) cannot make one frame overshoot. No GL here: tests/unit/test_gi_pacer.cpp.
+// measured on earlier edits of the same kind, comes off that frame's time. Until a cost is known
+// the pacer starts small (kFirstVoxels) and grows at most kMaxGrowth times a frame, so a cost
+// measured on a few voxels (where a dispatch's fixed cost weighs most) cannot make one frame
+// overshoot. No GL here: tests/unit/test_gi_pacer.cpp.
 
 #include <array>
 #include <cstdint>
@@ -48,6 +49,7 @@ public:
     // The work an edit's frame does before its share, whole: none, an injection and the mips, or a
     // voxelization (of changed boxes or the whole volume) before them.
     enum class Edit : std::uint8_t { None, Inject, Voxelize };
+    static constexpr std::size_t kEdits = 3;
     static constexpr std::uint32_t kFirstVoxels = 512;  // before any cost of the work is known
     static constexpr std::uint32_t kMinVoxels = 64;     // the least a frame with a budget traces
     static constexpr double kMaxGrowth = 2.0;           // per frame, over the voxels last given
@@ -90,7 +92,7 @@ private:
     std::deque<Traced> traced_;  // frames whose timings have not come yet
     std::array<double, kWorks> cost_{};
     std::array<std::uint32_t, kWorks> lastTraced_{};  // the voxels the last recorded frame of each work traced
-    std::array<double, 3> editCost_{0.0, 0.0, 0.0};
+    std::array<double, kEdits> editCost_{};  // ms, by Edit
 };
 
 }  // namespace lit

@@ -1,7 +1,7 @@
 #include "gi/VoxelGi.h"
 
-#include <array>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -473,60 +473,60 @@ void VoxelGi::continueUpdate(const RenderSettings& settings, const GiLightKey& l
     bool irradianceNow = !nextBounce;
     if (nextBounce) {
         // A spread bounce: the last share ends it (level 0 and its mips); after the last bounce
-        // the irradiance starts in the next frame.
+        // the irradiance starts in the next frame, or in this one with time left.
         Profiler::Scope scope(profiler_, step("bounces"));
-      while (nextBounce) {
-        nextBounce = false;
-        if (progress.bounceNext == 0) {
-            bounceGathersChange_ = changeReady_;
-            bounceStartInjections_ = injections_;
-            bounceSourceHoldsDirect_ = sourceHoldsDirect_;
+        while (nextBounce) {
+            nextBounce = false;
+            if (progress.bounceNext == 0) {
+                bounceGathersChange_ = changeReady_;
+                bounceStartInjections_ = injections_;
+                bounceSourceHoldsDirect_ = sourceHoldsDirect_;
+            }
+            // After an injection while the bounce ran (a light dragged) its other voxels gather the
+            // light whole, and so does the next bounce: the change holds the old direct light.
+            const bool sameLight = injections_ == bounceStartInjections_;
+            const int bounceNumber = progress.bounce;
+            const int changeSubset = bounceGathersChange_ && sameLight
+                                         ? changeSubsetFor(bounceNumber, features.voxelRays, light.laterBounceRayStride)
+                                         : -1;
+            const RayHits hits = rayHitsFor(features.voxelRays);
+            // Replaying after a voxelization of changed boxes, the entries whose rays cross them march.
+            const GiPacer::Work work = hits != RayHits::Replay           ? GiPacer::Work::Update
+                                       : rayHitCache_.changedBoxes() > 0 ? GiPacer::Work::ReplayChangedBoxes
+                                       : changeSubset >= 0               ? GiPacer::Work::ReplayChange
+                                                                         : GiPacer::Work::Replay;
+            const GiBudget share = budgetFor(work);
+            std::uint32_t perFrame = scheduler_.voxelsPerFrame(share, light.voxelRays);
+            if (changeSubset >= 0 && perFrame > 0)
+                perFrame = static_cast<std::uint32_t>(std::min<std::uint64_t>(
+                    std::uint64_t{perFrame} * kChangeVoxelsPerFrameFactor, std::numeric_limits<std::uint32_t>::max()));
+            const VoxelRange range = scheduler_.bounceShare(perFrame);
+            countUpdate(work, share, range.count, perFrame);
+            if (light.untilConverged && range.first == 0) bounce_.resetChange();
+            if (range.first == 0) rayHitCache_.beginPass();
+            const bool fromDirect = progress.bounce == 2 && !warmStart_;
+            bounce_.trace(volume_, rayHitCache_,
+                          {features, fromDirect, true, range, hits, light.untilConverged, changeSubset,
+                           light.laterBounceRayStride});
+            const bool passEnds = range.first + range.count >= scheduler_.state().occupied;
+            const bool converged = passEnds && light.untilConverged && convergence_.add(bounce_.readChange().relative());
+            if (light.untilConverged && convergence_.expectedBounces() > 0)
+                scheduler_.estimateBounces(converged ? progress.bounce : convergence_.expectedBounces());
+            if (scheduler_.advanceBounce(range, converged)) {
+                listTraced(hits);  // the pass ran over the whole list from 0
+                bounce_.finish(volume_, {true, converged ? static_cast<float>(convergence_.tail()) : 0.0f, fromDirect,
+                                         !converged && light.gathersChanges()});
+                changeReady_ = bounce_.changeKept() && sameLight && (fromDirect || bounceSourceHoldsDirect_);
+                sourceHoldsDirect_ = sameLight;
+                // Voxel rays need the mips' occupancy only (see update()): rebuilt after the last bounce.
+                if (features.voxelRays == 0 || scheduler_.state().progress.bounce == 0)
+                    mipmap_.execute(volume_, light.anisotropic, overList);
+                const bool timeLeft =
+                    timed && features.voxelRays > 0 && msLeft > kNextBounceShare * pace.asked.milliseconds;
+                nextBounce = timeLeft && progress.bounce > 0;
+                irradianceNow = timeLeft && progress.bounce == 0;
+            }
         }
-        // After an injection while the bounce ran (a light dragged) its other voxels gather the
-        // light whole, and so does the next bounce: the change holds the old direct light.
-        const bool sameLight = injections_ == bounceStartInjections_;
-        const int bounceNumber = progress.bounce;
-        const int changeSubset = bounceGathersChange_ && sameLight
-                                     ? changeSubsetFor(bounceNumber, features.voxelRays, light.laterBounceRayStride)
-                                     : -1;
-        const RayHits hits = rayHitsFor(features.voxelRays);
-        // Replaying after a voxelization of changed boxes, the entries whose rays cross them march.
-        const GiPacer::Work work = hits != RayHits::Replay           ? GiPacer::Work::Update
-                                   : rayHitCache_.changedBoxes() > 0 ? GiPacer::Work::ReplayChangedBoxes
-                                   : changeSubset >= 0               ? GiPacer::Work::ReplayChange
-                                                                     : GiPacer::Work::Replay;
-        const GiBudget share = budgetFor(work);
-        std::uint32_t perFrame = scheduler_.voxelsPerFrame(share, light.voxelRays);
-        if (changeSubset >= 0 && perFrame > 0)
-            perFrame = static_cast<std::uint32_t>(std::min<std::uint64_t>(
-                std::uint64_t{perFrame} * kChangeVoxelsPerFrameFactor, std::numeric_limits<std::uint32_t>::max()));
-        const VoxelRange range = scheduler_.bounceShare(perFrame);
-        countUpdate(work, share, range.count, perFrame);
-        if (light.untilConverged && range.first == 0) bounce_.resetChange();
-        if (range.first == 0) rayHitCache_.beginPass();
-        const bool fromDirect = progress.bounce == 2 && !warmStart_;
-        bounce_.trace(volume_, rayHitCache_,
-                      {features, fromDirect, true, range, hits, light.untilConverged, changeSubset,
-                       light.laterBounceRayStride});
-        const bool passEnds = range.first + range.count >= scheduler_.state().occupied;
-        const bool converged = passEnds && light.untilConverged && convergence_.add(bounce_.readChange().relative());
-        if (light.untilConverged && convergence_.expectedBounces() > 0)
-            scheduler_.estimateBounces(converged ? progress.bounce : convergence_.expectedBounces());
-        if (scheduler_.advanceBounce(range, converged)) {
-            listTraced(hits);  // the pass ran over the whole list from 0
-            bounce_.finish(volume_, {true, converged ? static_cast<float>(convergence_.tail()) : 0.0f, fromDirect,
-                                     !converged && light.gathersChanges()});
-            changeReady_ = bounce_.changeKept() && sameLight && (fromDirect || bounceSourceHoldsDirect_);
-            sourceHoldsDirect_ = sameLight;
-            // Voxel rays need the mips' occupancy only (see update()): rebuilt after the last bounce.
-            if (features.voxelRays == 0 || scheduler_.state().progress.bounce == 0)
-                mipmap_.execute(volume_, light.anisotropic, overList);
-            const bool timeLeft =
-                timed && features.voxelRays > 0 && msLeft > kNextBounceShare * pace.asked.milliseconds;
-            nextBounce = timeLeft && progress.bounce > 0;
-            irradianceNow = timeLeft && progress.bounce == 0;
-        }
-      }
     }
     if (irradianceNow && light.voxelIrradiance && progress.irradianceLeft > 0) {
         Profiler::Scope scope(profiler_, step("voxel irradiance"));
