@@ -184,16 +184,13 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
                        : changedBoxes(items, voxels, settings, reallocated, moved);
         changes.changedBoxesOnly = boxes.has_value();
     }
-    // A time budget's share: what the edit's whole work leaves of it, in voxels that march or replay
-    // (after a voxelization of changed boxes the recorded hits stay; the entries whose rays cross
-    // the boxes march again).
-    const bool replays =
-        scheduler_.replaysRayHits(light.voxelRays) && (!changes.voxelize || (boxes.has_value() && !scroll));
+    // A time budget's share: what the edit's whole work leaves of it. This budget paces the near
+    // level's slab update, whose voxels march their rays, and the refinement; continueUpdate paces
+    // each share of the update by its own kind of work.
     const GiPacer::Edit edit = changes.voxelize ? GiPacer::Edit::Voxelize
                                : changes.inject ? GiPacer::Edit::Inject
                                                 : GiPacer::Edit::None;
-    // (continueUpdate paces each pass's share by its own kind of work.)
-    const GiBudget budget = pacer_.paced(asked, replays ? GiPacer::Work::Replay : GiPacer::Work::Update, edit);
+    const GiBudget budget = pacer_.paced(asked, GiPacer::Work::Update, edit);
     // Every bounce after a geometry edit, spread over frames: the bounces start from the last
     // update's light (BouncePass::keepIndirect; the old list is read before the voxelization
     // replaces it), unless level 0 keeps that light (changed boxes only: keepLastUpdate).
