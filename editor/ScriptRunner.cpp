@@ -13,6 +13,7 @@
 #include "SettingCommand.h"
 #include "TextParse.h"
 #include "ViewportOverlay.h"
+#include "passes/TemporalAntialiasPass.h"
 
 namespace lit::editor {
 
@@ -38,7 +39,12 @@ void ScriptRunner::step() {
     if (waitForGi_ > 0) {
         // The frame just rendered tells how far the update is (renderer stats of the last frame).
         const FrameStats& stats = target_.renderer.stats();
-        const bool busy = stats.giUpdateDone < 1.0f || (waitForRefinement_ && stats.giRefining);
+        // The converged image also holds a full anti-aliasing history, which starts once the
+        // refinement stops changing the light.
+        const RenderSettings& settings = target_.doc.settings;
+        const bool antialiasing = waitForRefinement_ && TemporalAntialiasPass::applies(settings) &&
+                                  stats.antialiasFrames < TemporalAntialiasPass::frames(settings);
+        const bool busy = stats.giUpdateDone < 1.0f || (waitForRefinement_ && stats.giRefining) || antialiasing;
         if (busy) {
             if (--waitForGi_ == 0) {
                 fail(commands_[next_ - 1], waitForRefinement_ ? "wait refined: the GI refinement did not finish in " +

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "passes/TemporalAntialiasPass.h"
+
 namespace lit::editor {
 
 namespace {
@@ -113,15 +115,20 @@ void ViewportRedraw::rendered(FrameInputs inputs, RedrawReason reason, double no
     giLightChanged_ = false;
     const RenderSettings& settings = inputs.settings;
     const bool temporal = settings.indirect.temporalAccumulation && settings.gi.enabled;
+    const bool antialiased = TemporalAntialiasPass::applies(settings);
+    // Frames after this one until both histories are full (anti-aliasing's starts again in the
+    // frame after the GI's light last changed, which may be this one).
+    const int settleFrames = std::max(temporal ? settings.indirect.temporalMaxFrames - 1 : 0,
+                                      antialiased ? TemporalAntialiasPass::frames(settings) : 0);
     const bool exposure = settings.output.autoExposure;
     if (!keepsSettling(reason) || !last_) {
         // This frame shows something new: the history holds one frame of it, and the exposure
         // has all of its way to go (counted from the next frame, conservatively).
-        temporalFramesLeft_ = temporal ? std::max(settings.indirect.temporalMaxFrames - 1, 0) : 0;
+        temporalFramesLeft_ = std::max(settleFrames, 0);
         const double speed = settings.output.autoExposureSpeed;
         exposureSecondsLeft_ = exposure && speed > 0.0 ? -std::log(kExposureRest) / speed : 0.0;
     } else {
-        temporalFramesLeft_ = temporal ? std::max(temporalFramesLeft_ - 1, 0) : 0;
+        temporalFramesLeft_ = settleFrames > 0 ? std::max(temporalFramesLeft_ - 1, 0) : 0;
         // The renderer adapts by the time since its last metered frame, at most kMaxExposureStep.
         exposureSecondsLeft_ =
             exposure ? std::max(exposureSecondsLeft_ - std::min(now - lastRenderAt_, kMaxExposureStep), 0.0) : 0.0;

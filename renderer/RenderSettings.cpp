@@ -88,6 +88,8 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("output", "autoExposureMinEv", o.autoExposureMinEv);
     visit("output", "autoExposureMaxEv", o.autoExposureMaxEv);
     visit("output", "frustumCulling", o.frustumCulling);
+    visit("output", "antialiasing", o.antialiasing);
+    visit("output", "antialiasingFrames", o.antialiasingFrames);
     SkySettings& sky = s.sky;
     visit("sky", "mode", sky.mode);
     visit("sky", "zenith", sky.zenith);

@@ -102,6 +102,12 @@ struct OutputSettings {
     float autoExposureMinEv = -10.0f;  // metered exposure is clamped to [min, max] stops
     float autoExposureMaxEv = 20.0f;
     bool frustumCulling = true;  // G-buffer and shadow views draw only items their frustum may see
+    // Temporal anti-aliasing (TemporalAntialiasPass, docs/ARCHITECTURE.md "Anti-aliasing"): each
+    // frame is drawn with a sub-pixel offset and the HDR image is blended with the last frames'.
+    // A still converges to the mean of `antialiasingFrames` offsets over each pixel's area (the
+    // first frame after a reset is drawn at the pixel centres, as without it).
+    bool antialiasing = true;
+    int antialiasingFrames = 8;  // offsets in the cycle, and the history's length (blend weight ≥ 1/N), 1..64
 
     float exposureScale() const { return std::exp2(exposureEv); }
     bool operator==(const OutputSettings&) const = default;

@@ -28,6 +28,7 @@
 #include "passes/ShadowPass.h"
 #include "passes/SheetPass.h"
 #include "passes/SkyTexture.h"
+#include "passes/TemporalAntialiasPass.h"
 #include "passes/VoxelDebugPass.h"
 #include "scene/Bvh.h"
 #include "scene/Frustum.h"
@@ -103,12 +104,13 @@ struct Renderer::Impl {
           voxelDebug(shaderRoot),
           autoExposure(shaderRoot),
           sheets(shaderRoot),
+          antialias(shaderRoot),
           frameUniforms("frame uniforms", sizeof(gpu::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT),
           lightBuffer("lights", sizeof(gpu::GpuLight) * LIT_MAX_LIGHTS, nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
     std::vector<Pass*> passes() {
-        std::vector<Pass*> all{&shadow,  &gbuffer,  &direct,      &post,       &coneTrace,
-                               &resolve, &fallback, &overlayPass, &voxelDebug, &autoExposure, &sheets};
+        std::vector<Pass*> all{&shadow,   &gbuffer,     &direct,     &post,         &coneTrace, &resolve,
+                               &fallback, &overlayPass, &voxelDebug, &autoExposure, &sheets,    &antialias};
         for (Pass* pass : gi.passes()) all.push_back(pass);
         for (const std::unique_ptr<VoxelGi>& level : nearGi)
             if (level)
@@ -119,7 +121,9 @@ struct Renderer::Impl {
     // The steps of a frame, in order (Renderer::render).
     void syncScene(const Scene& scene);                                     // materials, world bounds, BVH boxes
     bool updateLights(const Scene& scene, const RenderSettings& settings);  // true: the lights changed
-    gpu::FrameUniforms bindFrame(const Scene& scene, const CameraView& camera, const RenderSettings& settings);
+    // `image`: the frame draws an image (render), not only GI work (advanceGi).
+    gpu::FrameUniforms bindFrame(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
+                                 bool image);
     void drawShadowMaps(const Scene& scene, const RenderSettings& settings);
     void drawShadowCascades(const Scene& scene, const CameraView& camera, const RenderSettings& settings,
                             bool shadowsDirty);
@@ -129,7 +133,7 @@ struct Renderer::Impl {
         gpu::FrameUniforms uniforms;
         bool shadowsDirty = false;
     };
-    SceneFrame beginScene(const Scene& scene, const CameraView& camera, const RenderSettings& settings);
+    SceneFrame beginScene(const Scene& scene, const CameraView& camera, const RenderSettings& settings, bool image);
     void drawGBuffer(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
     void updateGi(const Scene& scene, const CameraView& camera, const RenderSettings& settings, const GiBudget& budget,
                   bool shadowsDirty);
@@ -154,7 +158,7 @@ struct Renderer::Impl {
     void composite(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
     // The transmissive sheets over the composite's image (SheetPass).
     void drawSheets(const Scene& scene, const RenderSettings& settings, const gpu::FrameUniforms& frame);
-    void drawOverlay(const gpu::FrameUniforms& frame);
+    void drawOverlay();
 
     // The sky image of settings.sky.hdrPath, loaded and uploaded when the path changes; nullptr
     // when the mode is not Hdr or the file could not be read (logged once per path).
@@ -192,6 +196,7 @@ struct Renderer::Impl {
     VoxelDebugPass voxelDebug;
     AutoExposurePass autoExposure;
     SheetPass sheets;
+    TemporalAntialiasPass antialias;
     std::chrono::steady_clock::time_point lastMetered{};  // when auto exposure last ran
     bool meteredLastFrame = false;
     SkyImage skyImage;
@@ -200,6 +205,17 @@ struct Renderer::Impl {
     ViewportOverlay overlay;
     // What picking needs of the last frame: its camera (to unproject depth) and voxel volume.
     std::optional<gpu::FrameUniforms> lastFrame;
+    // TemporalAntialiasPass: the frame's camera without the jitter (the overlay uses it), what the
+    // last image was drawn from, and whether the GI's light changed in the last GI work (an
+    // update's or a refinement's frame, rendered or not).
+    glm::mat4 unjitteredViewProjection{1.0f};
+    struct AntialiasKey {
+        std::uint64_t geometryRevision = 0, materialRevision = 0, lightRevision = 0;
+        RenderSettings settings;
+        bool operator==(const AntialiasKey&) const = default;
+    };
+    std::optional<AntialiasKey> antialiasKey;
+    bool giLightChanging = false;
     float lastVoxelSize = 0.0f, lastVolumeSide = 0.0f;  // m; 0 when that frame had no GI
     LightingTerms terms;
     gl::Texture sheenAlbedo;  // E_s of KHR_materials_sheen (scene/SheenAlbedo.h), made for the first scene with layers
@@ -278,6 +294,7 @@ void Renderer::setScene(const Scene& scene) {
     for (const std::unique_ptr<VoxelGi>& level : impl_->nearGi)
         if (level) level->invalidate();
     impl_->resolve.resetHistory();
+    impl_->antialias.reset();
     impl_->meteredLastFrame = false;  // a new scene is metered afresh, not adapted to
     impl_->lastFrame.reset();  // the G-buffer's node IDs belong to the previous scene
 }
@@ -296,11 +313,14 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
     r.stats = {};
     r.counters = {};
 
-    const auto [frame, shadowsDirty] = r.beginScene(scene, camera, requested);
+    const auto [frame, shadowsDirty] = r.beginScene(scene, camera, requested, true);
     const RenderSettings& settings = r.withNearLevelFitted(requested);
     r.drawGBuffer(scene, settings, frame);
     // GI: the voxel volume follows the scene; nothing is allocated while GI is off.
-    if (settings.gi.enabled) r.updateGi(scene, camera, settings, budget, shadowsDirty);
+    if (settings.gi.enabled)
+        r.updateGi(scene, camera, settings, budget, shadowsDirty);
+    else
+        r.giLightChanging = false;
     r.gbuffer.bindTargets();
     // The data and voxel views show no lighting term (the composite does not use them there), so
     // they skip lighting and cone tracing; the terms are redone by the next frame that shows them.
@@ -310,7 +330,7 @@ void Renderer::render(const Scene& scene, const CameraView& camera, const Render
         r.resolve.resetHistory();  // no terms this frame: the next one starts afresh
     }
     r.composite(scene, settings, frame);
-    r.drawOverlay(frame);
+    r.drawOverlay();
 
     r.lastFrame = frame;
     r.lastVoxelSize = settings.gi.enabled ? r.gi.volume().voxelSize() : 0.0f;
@@ -329,7 +349,7 @@ void Renderer::advanceGi(const Scene& scene, const CameraView& camera, const Ren
     r.gi.reportUpdate();
     for (const std::unique_ptr<VoxelGi>& level : r.nearGi)
         if (level) level->reportUpdate();
-    const bool shadowsDirty = r.beginScene(scene, camera, requested).shadowsDirty;
+    const bool shadowsDirty = r.beginScene(scene, camera, requested, false).shadowsDirty;
     const RenderSettings& settings = r.withNearLevelFitted(requested);
     r.updateGi(scene, camera, settings, budget, shadowsDirty);
     r.recordGiMemory(settings);
@@ -337,11 +357,11 @@ void Renderer::advanceGi(const Scene& scene, const CameraView& camera, const Ren
 }
 
 Renderer::Impl::SceneFrame Renderer::Impl::beginScene(const Scene& scene, const CameraView& camera,
-                                                       const RenderSettings& settings) {
+                                                      const RenderSettings& settings, bool image) {
     syncScene(scene);
     SceneFrame f;
     f.shadowsDirty = updateLights(scene, settings);
-    f.uniforms = bindFrame(scene, camera, settings);
+    f.uniforms = bindFrame(scene, camera, settings, image);
     if (f.shadowsDirty) drawShadowMaps(scene, settings);
     drawShadowCascades(scene, camera, settings, f.shadowsDirty);
     return f;
@@ -417,10 +437,22 @@ void Renderer::Impl::drawShadowCascades(const Scene& scene, const CameraView& ca
 
 // The frame's uniforms (camera, view, light count, sky) and the light table, bound for every pass.
 gpu::FrameUniforms Renderer::Impl::bindFrame(const Scene& scene, const CameraView& camera,
-                                             const RenderSettings& settings) {
+                                             const RenderSettings& settings, bool image) {
     const Sky sky = resolveSky(scene, settings, updateSkyImage(settings));
     if (sky.mode == SkyMode::Hdr) skyTexture.bind(LIT_TEX_SKY);
-    const gpu::FrameUniforms frame = makeFrameUniforms(camera, settings, toShaderView(settings.debug.view),
+    // A frame that draws an image is drawn and read through the jittered camera
+    // (TemporalAntialiasPass); GI work alone (advanceGi) uses the camera as it is.
+    CameraView drawn = camera;
+    unjitteredViewProjection = camera.projection * camera.view;
+    if (image) {
+        const AntialiasKey key{scene.geometryRevision, scene.materialRevision, scene.lightRevision, settings};
+        const bool changed = giLightChanging || !antialiasKey || !(*antialiasKey == key);
+        antialiasKey = key;
+        drawn.projection = TemporalAntialiasPass::jittered(
+            camera.projection, antialias.begin(settings, {unjitteredViewProjection, changed}), settings.output.width,
+            settings.output.height);
+    }
+    const gpu::FrameUniforms frame = makeFrameUniforms(drawn, settings, toShaderView(settings.debug.view),
                                                        static_cast<int>(lights.lights.size()), &sky);
     frameUniforms.update(frame);
     frameUniforms.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FRAME);
@@ -502,6 +534,7 @@ void Renderer::Impl::updateGi(const Scene& scene, const CameraView& camera, cons
     }
     if (levels > 0) gi.volume().uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);  // the scene volume's, for the frame's passes
     if (report.lightChanged) resolve.resetHistory();  // accumulated indirect light is stale
+    giLightChanging = report.lightChanged || report.updateDone < 1.0f || report.refinedVoxels > 0;
     stats.voxelized = report.voxelized;
     stats.voxelizedBoxes = report.voxelizedBoxes;
     stats.giUpdateCompleted = report.updateCompleted;
@@ -665,6 +698,13 @@ void Renderer::Impl::composite(const Scene& scene, const RenderSettings& setting
         post.composite(settings, shadow.maps2d(), shadowLayer);
         drawSheets(scene, settings, frame);
     }
+    if (TemporalAntialiasPass::applies(settings)) {
+        Profiler::Scope antialiasScope(profiler, "anti-aliasing");
+        antialias.execute(settings, post.hdr(), gbuffer.depth(), settings.gi.enabled && giLightChanging);
+        stats.antialiasFrames = antialias.historyFrames();
+    } else {
+        antialias.reset();
+    }
     if (settings.output.autoExposure && !isDataView(settings.debug.view)) {
         const auto now = std::chrono::steady_clock::now();
         // A pause (a still render, an idle editor) does not count as adaptation time.
@@ -683,7 +723,7 @@ void Renderer::Impl::composite(const Scene& scene, const RenderSettings& setting
 }
 
 // The selection outline, gizmo lines and markers over the output image.
-void Renderer::Impl::drawOverlay(const gpu::FrameUniforms& frame) {
+void Renderer::Impl::drawOverlay() {
     if (overlay.empty()) return;
     Profiler::Scope scope(profiler, "overlay");
     frameUniforms.bindBase(GL_UNIFORM_BUFFER, LIT_UBO_FRAME);
@@ -696,7 +736,8 @@ void Renderer::Impl::drawOverlay(const gpu::FrameUniforms& frame) {
         if (items[i].node >= 0 && id < outlined.size() && outlined[id] != 0) outlineBounds.extend(bvh.itemBounds()[i]);
     }
     post.bindOutputTarget();
-    overlayPass.execute(overlay, gbuffer, outlineBounds, frame.viewProjection);
+    // Lines stay put: the overlay is drawn without the frame's jitter.
+    overlayPass.execute(overlay, gbuffer, outlineBounds, unjitteredViewProjection);
 }
 
 const gl::Texture& Renderer::outputTexture() const { return impl_->post.output(); }

@@ -68,6 +68,9 @@ struct FrameStats {
     // The bounces of light the voxels hold (GiFrameReport::bounces) and whether that is every
     // bounce, the light iterated until it converged (GiSettings::bounces kAllBounces).
     int giBounces = 0;
+    // Frames the anti-aliased image holds (TemporalAntialiasPass::historyFrames; 0 when it is off
+    // or the view is not anti-aliased): output.antialiasingFrames once a still view has settled.
+    int antialiasFrames = 0;
     bool giEveryBounce = false;
     // The indirect diffuse light shown is the last complete update's while the update after a
     // geometry edit is traced (GiFrameReport::showingPrevious).

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The camera-flight table: `lit-render --bench-path` down the generated city's street
 # (assets/gi/city.gltf, assets/city_street.path.json: 100 m in 10 s) under the editor's GI budget,
-# with the near level scrolling (the defaults), with it voxelized and lit whole at every move
-# (gi.voxelizeChangesOnly false), without a near level, and with GI off (the flicker figure's own
-# floor: resampling the last frame at moving shadow edges), with GI off and no shadow cascades, and
-# with GI off and one 4096² map (edges about as sharp as the cascades', none of them moving). The variants run interleaved, FLIGHT_ROUNDS
+# with the near level scrolling (the defaults), the same without anti-aliasing, with the level
+# voxelized and lit whole at every move (gi.voxelizeChangesOnly false), without a near level, and
+# with GI off (the flicker figure's own floor: resampling the last frame at moving shadow edges),
+# with and without anti-aliasing, with GI off and no shadow cascades, and with GI off and one
+# 4096² map (edges about as sharp as the cascades', none of them moving). The variants run interleaved, FLIGHT_ROUNDS
 # rounds, and each cell is the median over the rounds. Written to docs/tables/flight.md, headed
 # by the date, the commit, this machine's GL renderer and CPU; docs/GI.md ("Near levels") and
 # docs/PERFORMANCE.md say how to read it.
@@ -33,8 +34,10 @@ command -v python3 >/dev/null || { echo "flight-table: needs python3 to read the
 
 results="$(mktemp -d)"
 trap 'rm -rf "$results"' EXIT
-variants=(scroll whole none off flat sharp)
+variants=(scroll aliased whole none off offaliased flat sharp)
 flags_scroll=()
+flags_aliased=(--antialiasing off)
+flags_offaliased=(--gi off --antialiasing off)
 flags_whole=(--set gi.voxelizeChangesOnly=false)
 flags_none=(--set gi.nearLevels=0)
 flags_off=(--gi off)
@@ -57,8 +60,9 @@ python3 - "$results" "$out" "$rounds" "$size" "$fps" "$budget" "$(date -u '+%Y-%
 import json, statistics, sys
 results, out, rounds, size, fps, budget, date, commit, cpu, load = sys.argv[1:]
 rounds = int(rounds)
-names = {"scroll": "near level scrolls (defaults)", "whole": "near level voxelized and lit whole at each move",
-         "none": "no near level", "off": "GI off",
+names = {"scroll": "near level scrolls (defaults)", "aliased": "near level scrolls, no anti-aliasing",
+         "whole": "near level voxelized and lit whole at each move",
+         "none": "no near level", "off": "GI off", "offaliased": "GI off, no anti-aliasing",
          "flat": "GI off, one shadow map over the scene (no cascades)",
          "sharp": "GI off, one 4096² shadow map over the scene (no cascades)"}
 # The passes of a near level's move frame: the scroll, the voxelization of its slabs (or of the
@@ -102,7 +106,7 @@ with open(out, "w") as f:
         ratio = r["worst"] / r["median"] if r["median"] > 0 else 0.0
         share = r["move"] / r["median"] if r["median"] > 0 and r["move"] > 0 else 0.0
         movecells = (f"{r['move']:.1f} | {share:.2f} | {r['scroll']:.1f} | {r['moves']:.0f} | {r['lit']:.0f}"
-                     if v in ("scroll", "whole") else "– | – | – | – | –")
+                     if v in ("scroll", "aliased", "whole") else "– | – | – | – | –")
         w(f"| {name} | {r['median']:.1f} | {r['worst']:.1f} | {ratio:.2f} | {movecells} | {r['cascades']:.1f} | {r['flicker']:.2f} % | {r['flickerWorst']:.2f} % |")
     w()
     w("Move frame's GI work: the medians, over the frames they ran in, of the near level's passes that a move runs"
@@ -112,6 +116,7 @@ with open(out, "w") as f:
       " drawn again (at most one a frame), GPU time over every frame. Flicker: `--bench-path`'s figure, the mean"
       " |frame-to-frame change| of pixels whose surface did not move, relative to the mean luminance; each pixel is"
       " compared with the previous frame interpolated where its point was, so sharper shadow edges raise it (the"
-      " last three rows: no map moves there, the 4096² map's edges are about as sharp as the cascades').")
+       last two rows: no map moves there, the 4096² map's edges are about as sharp as the cascades'). Anti-aliasing"
+      " (docs/ARCHITECTURE.md, \"Anti-aliasing\") is on in every row but the two that say otherwise.")
 print(open(out).read())
 PY

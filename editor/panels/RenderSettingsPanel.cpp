@@ -76,6 +76,14 @@ bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
         changed |= ImGui::SliderFloat("Adaptation", &s.output.autoExposureSpeed, 0.0f, 10.0f, "%.1f /s");
         tooltip("How fast the exposure follows the image (exponential rate per second; 0 = at once)");
     }
+    changed |= ImGui::Checkbox("Anti-aliasing", &s.output.antialiasing);
+    tooltip(
+        "Temporal: each frame drawn at a sub-pixel offset and blended with the last ones, so edges,\n"
+        "shadow edges and small highlights show each pixel's mean; a still view settles in that many frames");
+    if (s.output.antialiasing) {
+        changed |= ImGui::SliderInt("AA frames", &s.output.antialiasingFrames, 2, 64);
+        tooltip("Offsets in the cycle and frames in the history (the blend weight never drops below 1/N)");
+    }
     ImGui::SliderFloat("Render scale", &viewport.renderScale, 0.25f, 1.0f, "%.2f");
     tooltip("Render resolution as a fraction of the window (stretched to fit)");
     ImGui::SliderFloat("Interactive FPS", &viewport.interactiveFpsTarget, 0.0f, 60.0f, "%.0f FPS");

@@ -63,6 +63,7 @@ using mat4 = glm::mat4;
 #define LIT_TEX_TERM_INDIRECT_DIFFUSE 15
 #define LIT_TEX_TERM_INDIRECT_SPECULAR 16
 #define LIT_TEX_DEBUG_INPUT 17       // whatever a debug view shows (shadow map layer, ...)
+#define LIT_TEX_TAA_HISTORY 17       // TemporalAntialiasPass: the last frames' resolved image (after the composite)
 // The voxel-levels view: each running volume's radiance, finest first (its pass binds nothing else
 // on the material units it reuses).
 #define LIT_TEX_DEBUG_LEVELS_FIRST 0

@@ -27,6 +27,7 @@ script=$out/legends.txt
     # The whole GI update in the edit's frame and no refinement after it: the 3D image stays the
     # same while only the legend is toggled, so the pictures with and without it compare.
     echo "setting gi.voxelResolution 64"
+    echo "setting output.antialiasing false"  # the legend tests compare screenshots taken frames apart
     echo "setting editor.giUpdateVoxelsPerFrame 0"
     echo "setting editor.giRefineVoxelsPerFrame 0"
     echo "select -"

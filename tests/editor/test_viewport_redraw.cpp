@@ -14,6 +14,7 @@ FrameInputs someInputs() {
     inputs.settings.output.width = 640;
     inputs.settings.output.height = 360;
     inputs.camera.position = {0.0f, 1.0f, 3.0f};
+    inputs.settings.output.antialiasing = false;  // its settling frames: AntialiasingRendersUntilItsHistoryIsFull
     return inputs;
 }
 
@@ -153,6 +154,36 @@ TEST(ViewportRedraw, TemporalAccumulationRendersUntilItsHistoryIsFull) {
     noGi.settings.gi.enabled = false;
     redraw.rendered(noGi, redraw.decide(noGi, {}, true), now += 0.1);
     EXPECT_EQ(redraw.decide(noGi, {}, true), RedrawReason::None);
+}
+
+TEST(ViewportRedraw, AntialiasingRendersUntilItsHistoryIsFull) {
+    FrameInputs inputs = someInputs();
+    inputs.settings.output.antialiasing = true;
+    inputs.settings.output.antialiasingFrames = 6;
+    ViewportRedraw redraw = renderedOnce(inputs);
+    // Its history starts again in the frame after the GI's light last changed, which may have been
+    // the one that rendered: six more frames fill it, with GI off too (edges need it as much).
+    double now = 10.0;
+    for (int frame = 0; frame < 6; ++frame) {
+        ASSERT_EQ(redraw.decide(inputs, {}, true), RedrawReason::Temporal) << frame;
+        redraw.rendered(inputs, RedrawReason::Temporal, now += 0.1);
+    }
+    EXPECT_EQ(redraw.decide(inputs, {}, true), RedrawReason::None);
+    FrameInputs noGi = inputs;
+    noGi.settings.gi.enabled = false;
+    redraw.rendered(noGi, redraw.decide(noGi, {}, true), now += 0.1);
+    EXPECT_EQ(redraw.temporalFramesLeft(), 6);
+    // With temporal accumulation too, the longer of the two histories.
+    FrameInputs both = inputs;
+    both.settings.indirect.temporalAccumulation = true;
+    both.settings.indirect.temporalMaxFrames = 16;
+    redraw.rendered(both, redraw.decide(both, {}, true), now += 0.1);
+    EXPECT_EQ(redraw.temporalFramesLeft(), 15);
+    // The data views are not anti-aliased.
+    FrameInputs albedo = inputs;
+    albedo.settings.debug.view = View::Albedo;
+    redraw.rendered(albedo, redraw.decide(albedo, {}, true), now += 0.1);
+    EXPECT_EQ(redraw.decide(albedo, {}, true), RedrawReason::None);
 }
 
 TEST(ViewportRedraw, AutoExposureRendersUntilItHasAdapted) {

@@ -202,6 +202,10 @@ protected:
         s.output.height = size;
         s.gi.enabled = false;
         s.gi.voxelResolution = 64;
+        // These tests measure a frame's light, mostly against references sampled at the pixel
+        // centres, and how it converges over frames; anti-aliasing (which blends jittered frames)
+        // has its own tests (test_antialiasing.cpp).
+        s.output.antialiasing = false;
         return s;
     }
 

@@ -24,6 +24,7 @@ protected:
         RenderSettings settings;
         settings.gi.voxelResolution = 64;
         settings.gi.nearLevelSide = 64.0f;
+        settings.output.antialiasing = false;  // a frame's light against one rendered afresh
         settings.output.width = w;
         settings.output.height = h;
         settings.debug.view = view;

@@ -464,6 +464,9 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
         settings.output.height = size;
         settings.gi.enabled = true;
         settings.gi.voxelResolution = voxels;
+        // The reference samples the pixel centres: so does each frame without anti-aliasing (with
+        // --frames N it would average jittered frames over the pixels' area instead).
+        settings.output.antialiasing = false;
         VctRun run;
         run.voxels = voxels;
         const auto frame = [&](View view) {

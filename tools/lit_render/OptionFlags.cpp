@@ -189,8 +189,8 @@ std::vector<Flag> flagTable() {
          .value = "N",
          .expects = "a frame count",
          .group = G::Output,
-         .help = "frames rendered before the image is read (default 1; with --temporal on, "
-                 "indirect.temporalMaxFrames)",
+         .help = "frames rendered before the image is read (default: output.antialiasingFrames with "
+                 "--antialiasing on, the more of it and indirect.temporalMaxFrames with --temporal on; else 1)",
          .store = integerInto(&Options::frames, 1, kMaxFrames, "an integer from 1 to " + std::to_string(kMaxFrames))});
     flags.push_back({.names = {"--ev"},
                      .value = "STOPS",
@@ -225,6 +225,15 @@ std::vector<Flag> flagTable() {
                      .help = "frustum culling of the camera and shadow views against a BVH (default " +
                              onOff(defaults.output.frustumCulling) + ")",
                      .store = &Options::culling});
+    flags.push_back({.names = {"--antialiasing"},
+                     .group = G::Output,
+                     .help = "temporal anti-aliasing: each frame drawn at a sub-pixel offset and blended with "
+                             "the last ones (default " +
+                             onOff(defaults.output.antialiasing) +
+                             "); a still then renders output.antialiasingFrames (" +
+                             std::to_string(defaults.output.antialiasingFrames) +
+                             ") frames unless --frames says otherwise, each pixel the mean over its area",
+                     .store = &Options::antialiasing});
 
     // ---- Sky (RenderSettings::sky)
     flags.push_back({.names = {"--sky"},

@@ -205,6 +205,7 @@ RenderSettings applyOptions(const Options& options, RenderSettings base, std::ve
     if (options.culling) base.output.frustumCulling = *options.culling;
     if (options.indirectScale) base.indirect.scale = *options.indirectScale;
     if (options.temporal) base.indirect.temporalAccumulation = *options.temporal;
+    if (options.antialiasing) base.output.antialiasing = *options.antialiasing;
     if (options.coneSubsets) base.indirect.temporalConeSubsets = *options.coneSubsets;
     return base;
 }

@@ -72,6 +72,7 @@ struct Options {
     std::optional<int> giMsPerFrame;      // --gi-ms-per-frame MS: GPU time the spread GI work may take a frame
     bool singleFrame = false;             // --single-frame: the update in the first frame, no refinement
     std::optional<bool> culling;       // --culling on|off: frustum culling of the G-buffer and shadow views
+    std::optional<bool> antialiasing;  // --antialiasing on|off: temporal anti-aliasing
     std::optional<int> indirectScale;  // --indirect-scale 1|2|4
     std::optional<bool> temporal;      // --temporal on|off
     std::optional<bool> coneSubsets;   // --cone-subsets on|off

@@ -13,6 +13,7 @@
 #include "Renderer.h"
 #include "gl/Capabilities.h"
 #include "image/ImageIO.h"
+#include "passes/TemporalAntialiasPass.h"
 #include "scene/CameraView.h"
 #include "scene/Scene.h"
 
@@ -25,13 +26,19 @@ int runStill(const RunContext& run, Scene& scene, const CameraView& camera, cons
 
     const Clock::time_point renderStart = Clock::now();
     BenchResult bench;
-    // With temporal accumulation a still renders until the history is full, so it shows the
-    // converged image (docs/GI.md, "Temporal accumulation"); --frames or --bench choose the count
-    // themselves.
-    const int frames = settings.indirect.temporalAccumulation && !options.frames && options.benchFrames == 0
+    // With temporal accumulation or anti-aliasing a still renders until the history is full, so
+    // it shows the converged image (docs/GI.md, "Temporal accumulation"; docs/ARCHITECTURE.md,
+    // "Anti-aliasing"); --frames or --bench choose the count themselves.
+    // Anti-aliasing's history starts once the GI's light has stopped changing (a frame or two).
+    const bool settle = !options.frames && options.benchFrames == 0;
+    const int frames = settle && settings.indirect.temporalAccumulation
                            ? std::max(settings.indirect.temporalMaxFrames, 1)
                            : options.frameCount();
-    for (int frame = 0; frame < frames; ++frame) {
+    const int antialiasFrames =
+        settle && TemporalAntialiasPass::applies(settings) ? TemporalAntialiasPass::frames(settings) : 0;
+    for (int frame = 0;
+         frame < frames || (renderer.stats().antialiasFrames < antialiasFrames && frame < frames + antialiasFrames + 2);
+         ++frame) {
         const Clock::time_point frameStart = Clock::now();
         renderer.render(scene, camera, settings, giBudgetFor(options));
         if (options.benchFrames > 0) recordBenchFrame(bench, renderer, frameStart);

@@ -1,0 +1,130 @@
+#include "passes/TemporalAntialiasPass.h"
+
+#include <shared.h>
+
+#include <algorithm>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "passes/PostPass.h"
+
+namespace lit {
+
+namespace {
+
+// Radical inverse of `index` in `base`: the Halton sequence's coordinate in [0, 1).
+float halton(std::uint32_t index, std::uint32_t base) {
+    float result = 0.0f, scale = 1.0f;
+    while (index > 0) {
+        scale /= static_cast<float>(base);
+        result += scale * static_cast<float>(index % base);
+        index /= base;
+    }
+    return result;
+}
+
+}  // namespace
+
+TemporalAntialiasPass::TemporalAntialiasPass(const std::filesystem::path& shaderRoot)
+    : resolve_(shaderRoot, "temporal anti-aliasing",
+               {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "taa_resolve.frag.glsl"}}),
+      linearSampler_("anti-aliasing history, bilinear") {
+    linearSampler_.set(GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    linearSampler_.set(GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    linearSampler_.set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    linearSampler_.set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+glm::vec2 TemporalAntialiasPass::sampleOffset(std::uint32_t index, int frames) {
+    const std::uint32_t k = index % static_cast<std::uint32_t>(std::max(frames, 1));
+    if (k == 0) return glm::vec2(0.0f);
+    return glm::vec2(halton(k, 2), halton(k, 3)) - 0.5f;
+}
+
+glm::mat4 TemporalAntialiasPass::jittered(const glm::mat4& projection, glm::vec2 offsetPixels, int width, int height) {
+    // clip.xy += 2·offset/size · clip.w: a translation in NDC, for perspective and orthographic
+    // projections alike.
+    glm::mat4 shift(1.0f);
+    shift[3][0] = 2.0f * offsetPixels.x / static_cast<float>(std::max(width, 1));
+    shift[3][1] = 2.0f * offsetPixels.y / static_cast<float>(std::max(height, 1));
+    return shift * projection;
+}
+
+int TemporalAntialiasPass::frames(const RenderSettings& settings) {
+    return std::clamp(settings.output.antialiasingFrames, 1, kMaxFrames);
+}
+
+bool TemporalAntialiasPass::applies(const RenderSettings& settings) {
+    return settings.output.antialiasing && frames(settings) > 1 && !isDataView(settings.debug.view);
+}
+
+glm::vec2 TemporalAntialiasPass::begin(const RenderSettings& settings, const FrameStart& frame) {
+    viewProjection_ = frame.viewProjection;
+    if (!applies(settings)) {
+        restart_ = true;
+        return glm::vec2(0.0f);
+    }
+    const Targets& t = *targets_.operator->();
+    const bool history =
+        t.generation == generation_ && t.width == settings.output.width && t.height == settings.output.height;
+    moved_ = history && t.viewProjection != frame.viewProjection;
+    // A still history holds only still samples: it starts again when the camera stops.
+    restart_ = !history || (!moved_ && (frame.changed || movedLast_));
+    if (restart_) sample_ = 0;
+    return sampleOffset(sample_, frames(settings));
+}
+
+void TemporalAntialiasPass::reset() {
+    ++generation_;
+    sample_ = 0;
+    historyFrames_ = 0;
+}
+
+void TemporalAntialiasPass::execute(const RenderSettings& settings, const gl::Texture& hdr, const gl::Texture& depth,
+                                    bool giChanged) {
+    const int width = settings.output.width, height = settings.output.height;
+    if (targets_.select(width, height) == TargetsBySize<Targets>::Selected::Empty) {
+        Targets& t = targets_.current();
+        for (int i = 0; i < 2; ++i) {
+            t.history[i] = gl::Texture("anti-aliasing history", {GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, 1});
+            t.history[i].setFilter(GL_NEAREST, GL_NEAREST);
+            t.framebuffer[i] = gl::Framebuffer::withColours("anti-aliasing history", {&t.history[i]});
+        }
+    }
+    Targets& t = targets_.current();
+    // Moving, the history is reprojected and clamped, which also bounds what a change leaves
+    // behind; still, it is the pixel's own mean, read unclamped, and a change starts it again.
+    const bool moved = moved_ && t.generation == generation_;
+    const bool hasHistory = t.generation == generation_ && !restart_ && (moved || !giChanged);
+    // Still, a full history is the mean of every offset in the cycle, which the next frames only
+    // repeat: it is kept as it is (weight 0), exactly the still's converged image.
+    const bool full = hasHistory && !moved && historyFrames_ >= frames(settings);
+    historyFrames_ = hasHistory ? std::min(historyFrames_ + 1, frames(settings)) : 1;
+    const float weight = full ? 0.0f : 1.0f / static_cast<float>(historyFrames_);
+
+    const int previous = t.current, next = 1 - t.current;
+    t.framebuffer[next].bind();
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    resolve_.use();
+    resolve_.set("uHasHistory", hasHistory ? 1 : 0);
+    resolve_.set("uMoved", moved ? 1 : 0);
+    resolve_.set("uWeight", weight);
+    resolve_.set("uViewProjection", glm::value_ptr(viewProjection_));
+    resolve_.set("uPreviousViewProjection", glm::value_ptr(t.viewProjection));
+    hdr.bind(LIT_TEX_HDR_INPUT);
+    depth.bind(LIT_TEX_GBUFFER_DEPTH);
+    t.history[previous].bind(LIT_TEX_TAA_HISTORY);
+    linearSampler_.bind(LIT_TEX_TAA_HISTORY);
+    triangle_.draw();
+    glBindSampler(LIT_TEX_TAA_HISTORY, 0);
+    glCopyImageSubData(t.history[next].id(), GL_TEXTURE_2D, 0, 0, 0, 0, hdr.id(), GL_TEXTURE_2D, 0, 0, 0, 0, width,
+                       height, 1);
+    t.current = next;
+    t.viewProjection = viewProjection_;
+    t.generation = generation_;
+    ++sample_;
+    restart_ = false;
+    movedLast_ = moved;
+}
+
+}  // namespace lit

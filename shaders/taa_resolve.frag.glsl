@@ -1,0 +1,61 @@
+#version 450 core
+// Temporal anti-aliasing (TemporalAntialiasPass): this frame's jittered composite blended with the
+// history of the frames before. Still camera: the history is read at the pixel's own texel and not
+// clamped, so the image converges to the mean of the cycle's offsets over the pixel. Moving
+// camera: the history is read where this pixel's surface point was (the unjittered cameras'
+// motion of the point, bilinear) and clamped to this frame's 3 × 3 neighbourhood.
+#include "frame.glsl"
+
+in vec2 vUv;
+layout(location = 0) out vec4 outColor;
+
+layout(binding = LIT_TEX_HDR_INPUT) uniform sampler2D current;
+layout(binding = LIT_TEX_GBUFFER_DEPTH) uniform sampler2D depthImage;
+layout(binding = LIT_TEX_TAA_HISTORY) uniform sampler2D history;
+
+uniform int uHasHistory;  // 0: the history is stale (first frame, an edit): this frame alone
+uniform int uMoved;       // 1: the camera moved since the history was written
+uniform float uWeight;    // this frame's share: 1 / frames in the history
+uniform mat4 uViewProjection;          // this frame's, without the jitter
+uniform mat4 uPreviousViewProjection;  // the history's, without the jitter
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 color = texelFetch(current, pixel, 0).rgb;
+    if (uHasHistory == 0) {
+        outColor = vec4(color, 1.0);
+        return;
+    }
+    if (uMoved == 0) {
+        vec3 kept = texelFetch(history, pixel, 0).rgb;
+        outColor = vec4(mix(kept, color, uWeight), 1.0);
+        return;
+    }
+    // The pixel's point (its jittered sample's depth; the background's at the far plane), moved
+    // by the unjittered cameras: the history pixel that saw it.
+    float depth = texelFetch(depthImage, pixel, 0).r;
+    vec2 uv = (vec2(pixel) + 0.5) * frame.viewport.zw;
+    vec3 world = worldPositionFromDepth(uv, depth);
+    vec4 now = uViewProjection * vec4(world, 1.0);
+    vec4 before = uPreviousViewProjection * vec4(world, 1.0);
+    if (now.w <= 0.0 || before.w <= 0.0) {
+        outColor = vec4(color, 1.0);
+        return;
+    }
+    vec2 previousUv = uv + (before.xy / before.w - now.xy / now.w) * 0.5;
+    if (any(lessThan(previousUv, vec2(0.0))) || any(greaterThan(previousUv, vec2(1.0)))) {
+        outColor = vec4(color, 1.0);  // off the last frame
+        return;
+    }
+    vec3 lo = color, hi = color;
+    ivec2 last = ivec2(frame.viewport.xy) - 1;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            if (x == 0 && y == 0) continue;
+            vec3 c = texelFetch(current, clamp(pixel + ivec2(x, y), ivec2(0), last), 0).rgb;
+            lo = min(lo, c);
+            hi = max(hi, c);
+        }
+    vec3 kept = clamp(textureLod(history, previousUv, 0.0).rgb, lo, hi);
+    outColor = vec4(mix(kept, color, uWeight), 1.0);
+}
