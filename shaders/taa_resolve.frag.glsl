@@ -3,7 +3,9 @@
 // history of the frames before. Still camera: the history is read at the pixel's own texel and not
 // clamped, so the image converges to the mean of the cycle's offsets over the pixel. Moving
 // camera: the history is read where this pixel's surface point was (the unjittered cameras'
-// motion of the point, bilinear) and clamped to this frame's 3 × 3 neighbourhood.
+// motion of the point, bilinear) and clamped to this frame's 3 × 3 neighbourhood. One program
+// each (LIT_TAA_MOVING 0 / 1): llvmpipe pays for both sides of a branch, and the still one reads
+// two texels where the moving one reads twelve.
 #include "frame.glsl"
 
 in vec2 vUv;
@@ -13,24 +15,22 @@ layout(binding = LIT_TEX_HDR_INPUT) uniform sampler2D current;
 layout(binding = LIT_TEX_GBUFFER_DEPTH) uniform sampler2D depthImage;
 layout(binding = LIT_TEX_TAA_HISTORY) uniform sampler2D history;
 
-uniform int uHasHistory;  // 0: the history is stale (first frame, an edit): this frame alone
-uniform int uMoved;       // 1: the camera moved since the history was written
-uniform float uWeight;    // this frame's share: 1 / frames in the history
+uniform float uWeight;  // this frame's share: 1 / frames in the history (1: this frame alone, 0: the history)
+
+#if !LIT_TAA_MOVING
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 color = texelFetch(current, pixel, 0).rgb;
+    vec3 kept = texelFetch(history, pixel, 0).rgb;
+    outColor = vec4(mix(kept, color, uWeight), 1.0);
+}
+#else
 uniform mat4 uViewProjection;          // this frame's, without the jitter
 uniform mat4 uPreviousViewProjection;  // the history's, without the jitter
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 color = texelFetch(current, pixel, 0).rgb;
-    if (uHasHistory == 0) {
-        outColor = vec4(color, 1.0);
-        return;
-    }
-    if (uMoved == 0) {
-        vec3 kept = texelFetch(history, pixel, 0).rgb;
-        outColor = vec4(mix(kept, color, uWeight), 1.0);
-        return;
-    }
     // The pixel's point (its jittered sample's depth; the background's at the far plane), moved
     // by the unjittered cameras: the history pixel that saw it.
     float depth = texelFetch(depthImage, pixel, 0).r;
@@ -59,3 +59,4 @@ void main() {
     vec3 kept = clamp(textureLod(history, previousUv, 0.0).rgb, lo, hi);
     outColor = vec4(mix(kept, color, uWeight), 1.0);
 }
+#endif

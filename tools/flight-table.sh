@@ -116,7 +116,7 @@ with open(out, "w") as f:
       " drawn again (at most one a frame), GPU time over every frame. Flicker: `--bench-path`'s figure, the mean"
       " |frame-to-frame change| of pixels whose surface did not move, relative to the mean luminance; each pixel is"
       " compared with the previous frame interpolated where its point was, so sharper shadow edges raise it (the"
-       last two rows: no map moves there, the 4096² map's edges are about as sharp as the cascades'). Anti-aliasing"
+      " last two rows: no map moves there, the 4096² map's edges are about as sharp as the cascades'). Anti-aliasing"
       " (docs/ARCHITECTURE.md, \"Anti-aliasing\") is on in every row but the two that say otherwise.")
 print(open(out).read())
 PY

@@ -25,8 +25,12 @@ float halton(std::uint32_t index, std::uint32_t base) {
 }  // namespace
 
 TemporalAntialiasPass::TemporalAntialiasPass(const std::filesystem::path& shaderRoot)
-    : resolve_(shaderRoot, "temporal anti-aliasing",
-               {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "taa_resolve.frag.glsl"}}),
+    : still_(shaderRoot, "temporal anti-aliasing (still)",
+             {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "taa_resolve.frag.glsl"}},
+             "#define LIT_TAA_MOVING 0\n"),
+      moving_(shaderRoot, "temporal anti-aliasing (moving)",
+              {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "taa_resolve.frag.glsl"}},
+              "#define LIT_TAA_MOVING 1\n"),
       linearSampler_("anti-aliasing history, bilinear") {
     linearSampler_.set(GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     linearSampler_.set(GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -96,35 +100,44 @@ void TemporalAntialiasPass::execute(const RenderSettings& settings, const gl::Te
     const bool moved = moved_ && t.generation == generation_;
     const bool hasHistory = t.generation == generation_ && !restart_ && (moved || !giChanged);
     // Still, a full history is the mean of every offset in the cycle, which the next frames only
-    // repeat: it is kept as it is (weight 0), exactly the still's converged image.
+    // repeat: it is shown as it is, exactly the still's converged image.
     const bool full = hasHistory && !moved && historyFrames_ >= frames(settings);
     historyFrames_ = hasHistory ? std::min(historyFrames_ + 1, frames(settings)) : 1;
-    const float weight = full ? 0.0f : 1.0f / static_cast<float>(historyFrames_);
+    const auto showHistory = [&] {
+        glCopyImageSubData(t.history[t.current].id(), GL_TEXTURE_2D, 0, 0, 0, 0, hdr.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                           width, height, 1);
+        t.viewProjection = viewProjection_;
+        t.generation = generation_;
+        ++sample_;
+        restart_ = false;
+        movedLast_ = moved;
+    };
+    if (full) {
+        showHistory();
+        return;
+    }
+    const float weight = 1.0f / static_cast<float>(historyFrames_);
 
     const int previous = t.current, next = 1 - t.current;
     t.framebuffer[next].bind();
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
-    resolve_.use();
-    resolve_.set("uHasHistory", hasHistory ? 1 : 0);
-    resolve_.set("uMoved", moved ? 1 : 0);
-    resolve_.set("uWeight", weight);
-    resolve_.set("uViewProjection", glm::value_ptr(viewProjection_));
-    resolve_.set("uPreviousViewProjection", glm::value_ptr(t.viewProjection));
+    // Without history the still program takes this frame alone (weight 1).
+    const gl::Program& program = moved && hasHistory ? moving_ : still_;
+    program.use();
+    program.set("uWeight", hasHistory ? weight : 1.0f);
+    if (&program == &moving_) {
+        moving_.set("uViewProjection", glm::value_ptr(viewProjection_));
+        moving_.set("uPreviousViewProjection", glm::value_ptr(t.viewProjection));
+    }
     hdr.bind(LIT_TEX_HDR_INPUT);
     depth.bind(LIT_TEX_GBUFFER_DEPTH);
     t.history[previous].bind(LIT_TEX_TAA_HISTORY);
     linearSampler_.bind(LIT_TEX_TAA_HISTORY);
     triangle_.draw();
     glBindSampler(LIT_TEX_TAA_HISTORY, 0);
-    glCopyImageSubData(t.history[next].id(), GL_TEXTURE_2D, 0, 0, 0, 0, hdr.id(), GL_TEXTURE_2D, 0, 0, 0, 0, width,
-                       height, 1);
     t.current = next;
-    t.viewProjection = viewProjection_;
-    t.generation = generation_;
-    ++sample_;
-    restart_ = false;
-    movedLast_ = moved;
+    showHistory();
 }
 
 }  // namespace lit

@@ -63,10 +63,10 @@ public:
     // Frames in the history after the last execute (1 after a reset; at most antialiasingFrames).
     int historyFrames() const { return historyFrames_; }
 
-    std::vector<gl::Program*> programs() override { return {&resolve_}; }
+    std::vector<gl::Program*> programs() override { return {&still_, &moving_}; }
 
 private:
-    gl::Program resolve_;
+    gl::Program still_, moving_;  // taa_resolve.frag.glsl, LIT_TAA_MOVING 0 and 1
     FullscreenTriangle triangle_;
     gl::Sampler linearSampler_;
     struct Targets {
