@@ -29,16 +29,18 @@ int runStill(const RunContext& run, Scene& scene, const CameraView& camera, cons
     // With temporal accumulation or anti-aliasing a still renders until the history is full, so
     // it shows the converged image (docs/GI.md, "Temporal accumulation"; docs/ARCHITECTURE.md,
     // "Anti-aliasing"); --frames or --bench choose the count themselves.
-    // Anti-aliasing's history starts once the GI's light has stopped changing (a frame or two).
     const bool settle = !options.frames && options.benchFrames == 0;
     const int frames = settle && settings.indirect.temporalAccumulation
                            ? std::max(settings.indirect.temporalMaxFrames, 1)
                            : options.frameCount();
+    // Anti-aliasing's history starts in the frame after the GI's light last changed: the frame
+    // count it needs is known once it runs (at most two more than its own).
     const int antialiasFrames =
         settle && TemporalAntialiasPass::applies(settings) ? TemporalAntialiasPass::frames(settings) : 0;
-    for (int frame = 0;
-         frame < frames || (renderer.stats().antialiasFrames < antialiasFrames && frame < frames + antialiasFrames + 2);
-         ++frame) {
+    const auto antialiasing = [&](int frame) {
+        return renderer.stats().antialiasFrames < antialiasFrames && frame < frames + antialiasFrames + 2;
+    };
+    for (int frame = 0; frame < frames || antialiasing(frame); ++frame) {
         const Clock::time_point frameStart = Clock::now();
         renderer.render(scene, camera, settings, giBudgetFor(options));
         if (options.benchFrames > 0) recordBenchFrame(bench, renderer, frameStart);
