@@ -8,9 +8,10 @@
 // (FrameInputs: camera, render settings with the render size, the scene's revisions and uploads,
 // the overlay) or when work is still in flight with the same inputs (PendingWork: the GI update
 // and refinement, playback, a viewport screenshot, reloaded shaders). After each such frame a
-// few more settle what accumulates over frames: temporal accumulation until its history is full
-// (IndirectSettings::temporalMaxFrames frames) and auto exposure until it has adapted (to 1 % of
-// the step, a time that follows from OutputSettings::autoExposureSpeed).
+// few more settle what accumulates over frames: temporal accumulation and anti-aliasing until
+// their histories are full (IndirectSettings::temporalMaxFrames, OutputSettings::
+// antialiasingFrames frames) and auto exposure until it has adapted (to 1 % of the step, a time
+// that follows from OutputSettings::autoExposureSpeed).
 //
 // A frame that would render only for the GI work in flight (GiUpdate, GiRefine) advances the GI
 // alone (Renderer::advanceGi) and shows the last image again, unless the image is due: an update
@@ -79,7 +80,7 @@ enum class RedrawReason : std::uint8_t {
     Playback,
     Screenshot,
     Shaders,
-    Temporal,  // temporal accumulation filling its history
+    Temporal,  // temporal accumulation or anti-aliasing filling its history
     Exposure,  // auto exposure adapting
 };
 
@@ -126,7 +127,8 @@ public:
     // auto exposure's adaptation time).
     void rendered(FrameInputs inputs, RedrawReason reason, double now);
 
-    // Rendered frames still to come for temporal accumulation and auto exposure.
+    // Rendered frames still to come for temporal accumulation and anti-aliasing, and auto
+    // exposure's adaptation time left.
     int temporalFramesLeft() const { return temporalFramesLeft_; }
     double exposureSecondsLeft() const { return exposureSecondsLeft_; }
 
