@@ -124,7 +124,7 @@ void ViewportRedraw::rendered(FrameInputs inputs, RedrawReason reason, double no
     if (!keepsSettling(reason) || !last_) {
         // This frame shows something new: the history holds one frame of it, and the exposure
         // has all of its way to go (counted from the next frame, conservatively).
-        temporalFramesLeft_ = std::max(settleFrames, 0);
+        temporalFramesLeft_ = settleFrames;
         const double speed = settings.output.autoExposureSpeed;
         exposureSecondsLeft_ = exposure && speed > 0.0 ? -std::log(kExposureRest) / speed : 0.0;
     } else {

@@ -700,7 +700,7 @@ void Renderer::Impl::composite(const Scene& scene, const RenderSettings& setting
     }
     if (TemporalAntialiasPass::applies(settings)) {
         Profiler::Scope antialiasScope(profiler, "anti-aliasing");
-        antialias.execute(settings, post.hdr(), gbuffer.depth(), settings.gi.enabled && giLightChanging);
+        antialias.execute(settings, post.hdr(), gbuffer.depth(), giLightChanging);
         stats.antialiasFrames = antialias.historyFrames();
     } else {
         antialias.reset();

@@ -67,7 +67,7 @@ glm::vec2 TemporalAntialiasPass::begin(const RenderSettings& settings, const Fra
         restart_ = true;
         return glm::vec2(0.0f);
     }
-    const Targets& t = *targets_.operator->();
+    const Targets& t = targets_.current();
     const bool history =
         t.generation == generation_ && t.width == settings.output.width && t.height == settings.output.height;
     moved_ = history && t.viewProjection != frame.viewProjection;
@@ -97,11 +97,11 @@ void TemporalAntialiasPass::execute(const RenderSettings& settings, const gl::Te
     Targets& t = targets_.current();
     // Moving, the history is reprojected and clamped, which also bounds what a change leaves
     // behind; still, it is the pixel's own mean, read unclamped, and a change starts it again.
-    const bool moved = moved_ && t.generation == generation_;
-    const bool hasHistory = t.generation == generation_ && !restart_ && (moved || !giChanged);
+    // (begin() found this size's history unless it restarted, so select() kept these targets.)
+    const bool hasHistory = !restart_ && (moved_ || !giChanged);
     // Still, a full history is the mean of every offset in the cycle, which the next frames only
     // repeat: it is shown as it is, exactly the still's converged image.
-    const bool full = hasHistory && !moved && historyFrames_ >= frames(settings);
+    const bool full = hasHistory && !moved_ && historyFrames_ >= frames(settings);
     historyFrames_ = hasHistory ? std::min(historyFrames_ + 1, frames(settings)) : 1;
     const auto showHistory = [&] {
         glCopyImageSubData(t.history[t.current].id(), GL_TEXTURE_2D, 0, 0, 0, 0, hdr.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
@@ -110,7 +110,7 @@ void TemporalAntialiasPass::execute(const RenderSettings& settings, const gl::Te
         t.generation = generation_;
         ++sample_;
         restart_ = false;
-        movedLast_ = moved;
+        movedLast_ = moved_;
     };
     if (full) {
         showHistory();
@@ -123,7 +123,7 @@ void TemporalAntialiasPass::execute(const RenderSettings& settings, const gl::Te
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
     // Without history the still program takes this frame alone (weight 1).
-    const gl::Program& program = moved && hasHistory ? moving_ : still_;
+    const gl::Program& program = moved_ && hasHistory ? moving_ : still_;
     program.use();
     program.set("uWeight", hasHistory ? weight : 1.0f);
     if (&program == &moving_) {
