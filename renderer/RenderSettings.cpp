@@ -90,6 +90,7 @@ void visitFields(RenderSettings& s, Visitor&& visit) {
     visit("output", "frustumCulling", o.frustumCulling);
     visit("output", "antialiasing", o.antialiasing);
     visit("output", "antialiasingFrames", o.antialiasingFrames);
+    visit("output", "specularAntialiasing", o.specularAntialiasing);
     SkySettings& sky = s.sky;
     visit("sky", "mode", sky.mode);
     visit("sky", "zenith", sky.zenith);

@@ -108,6 +108,10 @@ struct OutputSettings {
     // first frame after a reset is drawn at the pixel centres, as without it).
     bool antialiasing = true;
     int antialiasingFrames = 8;  // offsets in the cycle, and the history's length (blend weight ≥ 1/N), 1..64
+    // Geometric specular anti-aliasing (docs/MATERIALS.md "Specular anti-aliasing"): every
+    // specular lobe is widened by the spread of its normal over the pixel, so highlights smaller
+    // than a pixel neither alias nor flicker.
+    bool specularAntialiasing = true;
 
     float exposureScale() const { return std::exp2(exposureEv); }
     bool operator==(const OutputSettings&) const = default;

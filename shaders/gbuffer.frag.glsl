@@ -3,11 +3,12 @@
 #include "frame.glsl"
 #include "material.glsl"
 #include "octahedral.glsl"
+#include "specular_footprint.glsl"
 
 #include "geometry_varyings.glsl"
 
 layout(location = 0) out vec4 outAlbedo;    // rgb base colour (linear, stored sRGB), a occlusion
-layout(location = 1) out vec4 outNormal;    // rgb world normal
+layout(location = 1) out vec4 outNormal;    // rgb world normal, a the clear coat's footprint α² (specular_footprint.glsl)
 layout(location = 2) out vec4 outMaterial;  // r roughness, g metalness, b clear-coat texel, a coat-roughness texel
 layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance
 // r: scene node index + 1 (0 = background); g: the primitive's index within the node's mesh;
@@ -26,7 +27,8 @@ void main() {
     GpuMaterial m = materials[uMaterialIndex];
     if (materialIsSheet(m)) discard;  // drawn over the lit image by SheetPass
     vec4 baseColor = materialBaseColor(m, fs.uv);
-    if (materialAlphaDiscard(m, baseColor.a)) discard;
+    // Discarded after the footprints' derivatives, which need the whole quad.
+    bool cutOut = materialAlphaDiscard(m, baseColor.a);
 
     vec3 n = normalize(fs.worldNormal);
     // Double-sided materials (and back faces seen through open geometry) face the viewer.
@@ -61,16 +63,25 @@ void main() {
 
     LayerTexels layers = materialLayerTexels(m, fs.uv);
 
-    outAlbedo = vec4(baseColor.rgb, occlusion);
-    outNormal = vec4(n, 1.0);
-    outMaterial = vec4(clamp(roughness, 0.0, 1.0), clamp(metalness, 0.0, 1.0), layers.clearcoat, layers.clearcoatRoughness);
-#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
     // The coat's own normal (KHR_materials_clearcoat): its map on the interpolated normal, or
     // that normal alone where only the base is normal-mapped.
     vec3 coatNormal = interpolatedNormal;
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
     if ((m.layerTextures.x & LIT_LAYER_TEXTURE_CLEARCOAT_NORMAL) != 0)
         coatNormal = materialMappedNormal(clearcoatNormalTexture, LIT_MATERIAL_SLOT_CLEARCOAT_NORMAL, fs.uv,
                                           interpolatedNormal, fs.worldTangent, m.clearcoat.z);
+#endif
+    // The base's roughness is stored widened; the coat's footprint is stored for the lighting
+    // passes, which know the coat's roughness (gbuffer.glsl readMaterialLayers).
+    float baseFootprint = footprintAlphaSquared(n);
+    float coatFootprint = footprintAlphaSquared(coatNormal);
+    if (cutOut) discard;
+
+    outAlbedo = vec4(baseColor.rgb, occlusion);
+    outNormal = vec4(n, coatFootprint);
+    outMaterial = vec4(widenedRoughness(clamp(roughness, 0.0, 1.0), baseFootprint), clamp(metalness, 0.0, 1.0),
+                       layers.clearcoat, layers.clearcoatRoughness);
+#if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
     outLayerTexels = uvec4(packUnorm4x8(layers.specular), packUnorm4x8(layers.sheen),
                            packSnorm2x16(octEncode(coatNormal)), 0u);
 #endif

@@ -67,6 +67,8 @@ uniform float uShadowNormalOffset; // shadow lookup offset along the normal, in 
 void main() {
     GpuMaterial m = materials[uMaterialIndex];
     vec4 baseColor = materialBaseColor(m, fs.uv);
+    // Taken before any discard: the derivatives need the whole quad.
+    float footprint = footprintAlphaSquared(normalize(fs.worldNormal));
     if (materialAlphaDiscard(m, baseColor.a)) discard;
 
     Surface s;
@@ -81,12 +83,13 @@ void main() {
         s.roughness *= mr.g;
         s.metalness *= mr.b;
     }
-    s.roughness = clamp(s.roughness, 0.0, 1.0);
+    s.roughness = widenedRoughness(clamp(s.roughness, 0.0, 1.0), footprint);
     s.metalness = clamp(s.metalness, 0.0, 1.0);
     s.emissive = m.emissive.rgb;
     if (m.textures.w != 0) s.emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;
     LayerTexels layerTexels = materialLayerTexels(m, fs.uv);
     setMaterialLayers(m, layerTexels, s);
+    s.clearcoatRoughness = widenedRoughness(s.clearcoatRoughness, footprint);
     float transmission = materialTransmission(m, fs.uv);
 
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);

@@ -84,6 +84,10 @@ bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
         changed |= ImGui::SliderInt("AA frames", &s.output.antialiasingFrames, 2, 64);
         tooltip("Offsets in the cycle and frames in the history (the blend weight never drops below 1/N)");
     }
+    changed |= ImGui::Checkbox("Specular AA", &s.output.specularAntialiasing);
+    tooltip(
+        "Widen each highlight by the spread of its normal over the pixel, so highlights smaller\n"
+        "than a pixel neither alias nor flicker (curved, smooth surfaces read a little rougher)");
     ImGui::SliderFloat("Render scale", &viewport.renderScale, 0.25f, 1.0f, "%.2f");
     tooltip("Render resolution as a fraction of the window (stretched to fit)");
     ImGui::SliderFloat("Interactive FPS", &viewport.interactiveFpsTarget, 0.0f, 60.0f, "%.0f FPS");

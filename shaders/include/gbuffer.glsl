@@ -4,6 +4,7 @@
 #include "material_table.glsl"
 #include "brdf.glsl"
 #include "octahedral.glsl"
+#include "specular_footprint.glsl"
 
 layout(binding = LIT_TEX_GBUFFER_ALBEDO) uniform sampler2D gbufferAlbedo;
 layout(binding = LIT_TEX_GBUFFER_NORMAL) uniform sampler2D gbufferNormal;
@@ -67,6 +68,8 @@ void readMaterialLayers(ivec2 pixel, inout Surface s) {
     }
     setMaterialLayers(m, t, s);
     if ((m.layerTextures.x & LIT_LAYER_COAT_NORMAL_STORED) != 0) s.clearcoatNormal = octDecode(unpackSnorm2x16(texels.z));
+    // The coat's lobe widened by its normal's footprint (the G-buffer stored the base's widened).
+    if (s.clearcoat > 0.0) s.clearcoatRoughness = widenedRoughness(s.clearcoatRoughness, texelFetch(gbufferNormal, pixel, 0).a);
 #else
     s.f0 = specularF0(s.baseColor, s.metalness, vec3(0.04));
     s.f90 = 1.0;

@@ -357,7 +357,8 @@ struct FrameUniforms {
     mat4 inverseViewProjection;
     vec4 cameraPosition;   // xyz world position (m), w unused
     vec4 viewport;         // width, height (pixels), 1/width, 1/height
-    vec4 exposure;         // x linear exposure multiplier, y shadow PCF radius (texels), zw unused
+    vec4 exposure;  // x linear exposure multiplier, y shadow PCF radius (texels), z specular footprint σ² (pixels²;
+                    // 0: off), w unused
     ivec4 counts;          // x light count, y view (LIT_VIEW_*), z shadow debug layer, w flags
     vec4 skyZenith;        // rgb sky radiance straight up (W/(sr·m²)), w mode (LIT_SKY_*)
     vec4 skyHorizon;       // rgb at the horizon, w intensity multiplier (all modes)

@@ -204,8 +204,10 @@ protected:
         s.gi.voxelResolution = 64;
         // These tests measure a frame's light, mostly against references sampled at the pixel
         // centres, and how it converges over frames; anti-aliasing (which blends jittered frames)
-        // has its own tests (test_antialiasing.cpp).
+        // has its own tests (test_antialiasing.cpp), as has specular anti-aliasing, which widens
+        // the lobes by the pixel's footprint (test_specular_antialiasing.cpp).
         s.output.antialiasing = false;
+        s.output.specularAntialiasing = false;
         return s;
     }
 

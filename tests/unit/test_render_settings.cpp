@@ -116,7 +116,7 @@ TEST(RenderSettingsJson, BadValuesNameTheKey) {
 // Every key renderSettingKeys lists is one setRenderSetting takes, with the value toJson writes.
 TEST(RenderSettingsJson, EveryKeyCanBeSetByName) {
     const std::vector<std::string> keys = lit::renderSettingKeys();
-    EXPECT_EQ(keys.size(), 62u);
+    EXPECT_EQ(keys.size(), 63u);
     EXPECT_EQ(keys.front(), "output.width");
     RenderSettings changed;
     changed.output.exposureEv = 2.0f;

@@ -465,8 +465,11 @@ SceneReport measure(const SuiteScene& entry, const Args& args, Renderer& rendere
         settings.gi.enabled = true;
         settings.gi.voxelResolution = voxels;
         // The reference samples the pixel centres: so does each frame without anti-aliasing (with
-        // --frames N it would average jittered frames over the pixels' area instead).
+        // --frames N it would average jittered frames over the pixels' area instead), and each
+        // lobe at its own roughness without specular anti-aliasing (which widens it by the pixel's
+        // footprint).
         settings.output.antialiasing = false;
+        settings.output.specularAntialiasing = false;
         VctRun run;
         run.voxels = voxels;
         const auto frame = [&](View view) {
