@@ -109,7 +109,7 @@ struct OutputSettings {
     bool antialiasing = true;
     int antialiasingFrames = 8;  // offsets in the cycle, and the history's length (blend weight ≥ 1/N), 1..64
     // Geometric specular anti-aliasing (docs/MATERIALS.md "Specular anti-aliasing"): every
-    // specular lobe is widened by the spread of its normal over the pixel, so highlights smaller
+    // direct-light specular lobe is widened by the spread of its normal over the pixel, so highlights smaller
     // than a pixel neither alias nor flicker.
     bool specularAntialiasing = true;
 

@@ -8,9 +8,9 @@
 #include "geometry_varyings.glsl"
 
 layout(location = 0) out vec4 outAlbedo;    // rgb base colour (linear, stored sRGB), a occlusion
-layout(location = 1) out vec4 outNormal;    // rgb world normal, a the clear coat's footprint α² (specular_footprint.glsl)
+layout(location = 1) out vec4 outNormal;    // rgb world normal, a the coat's footprint α² (specular_footprint.glsl)
 layout(location = 2) out vec4 outMaterial;  // r roughness, g metalness, b clear-coat texel, a coat-roughness texel
-layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance
+layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance, a the base's footprint α²
 // r: scene node index + 1 (0 = background); g: the primitive's index within the node's mesh;
 // b: the material index (the lighting passes read the material's specular layers by it).
 layout(location = 4) out uvec4 outNodeId;
@@ -71,20 +71,18 @@ void main() {
         coatNormal = materialMappedNormal(clearcoatNormalTexture, LIT_MATERIAL_SLOT_CLEARCOAT_NORMAL, fs.uv,
                                           interpolatedNormal, fs.worldTangent, m.clearcoat.z);
 #endif
-    // The base's roughness is stored widened; the coat's footprint is stored for the lighting
-    // passes, which know the coat's roughness (gbuffer.glsl readMaterialLayers).
+    // What the pixel's footprint adds to each lobe's α² in the direct light (gbuffer.glsl).
     float baseFootprint = footprintAlphaSquared(n);
     float coatFootprint = footprintAlphaSquared(coatNormal);
     if (cutOut) discard;
 
     outAlbedo = vec4(baseColor.rgb, occlusion);
     outNormal = vec4(n, coatFootprint);
-    outMaterial = vec4(widenedRoughness(clamp(roughness, 0.0, 1.0), baseFootprint), clamp(metalness, 0.0, 1.0),
-                       layers.clearcoat, layers.clearcoatRoughness);
+    outMaterial = vec4(clamp(roughness, 0.0, 1.0), clamp(metalness, 0.0, 1.0), layers.clearcoat, layers.clearcoatRoughness);
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
     outLayerTexels = uvec4(packUnorm4x8(layers.specular), packUnorm4x8(layers.sheen),
                            packSnorm2x16(octEncode(coatNormal)), 0u);
 #endif
-    outEmissive = vec4(emissive, 1.0);
+    outEmissive = vec4(emissive, baseFootprint);
     outNodeId = uvec4(uNodeId, uPrimitive, uint(uMaterialIndex), 0u);
 }

@@ -20,6 +20,7 @@
 #include "frame.glsl"
 #include "material.glsl"
 #include "gbuffer.glsl"
+#include "specular_footprint.glsl"
 #include "brdf.glsl"
 #define LIT_SHADOW_CASCADES 1  // the camera's cascades sharpen the directional lights' shadows
 #include "lights.glsl"
@@ -83,13 +84,14 @@ void main() {
         s.roughness *= mr.g;
         s.metalness *= mr.b;
     }
-    s.roughness = widenedRoughness(clamp(s.roughness, 0.0, 1.0), footprint);
+    s.roughness = clamp(s.roughness, 0.0, 1.0);
+    s.footprint = footprint;
+    s.coatFootprint = footprint;
     s.metalness = clamp(s.metalness, 0.0, 1.0);
     s.emissive = m.emissive.rgb;
     if (m.textures.w != 0) s.emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;
     LayerTexels layerTexels = materialLayerTexels(m, fs.uv);
     setMaterialLayers(m, layerTexels, s);
-    s.clearcoatRoughness = widenedRoughness(s.clearcoatRoughness, footprint);
     float transmission = materialTransmission(m, fs.uv);
 
     vec3 v = normalize(frame.cameraPosition.xyz - s.position);

@@ -86,7 +86,7 @@ bool drawOutput(RenderSettings& s, ViewportSettings& viewport) {
     }
     changed |= ImGui::Checkbox("Specular AA", &s.output.specularAntialiasing);
     tooltip(
-        "Widen each highlight by the spread of its normal over the pixel, so highlights smaller\n"
+        "Widen the lights' highlights by the spread of the normal over the pixel, so highlights smaller\n"
         "than a pixel neither alias nor flicker (curved, smooth surfaces read a little rougher)");
     ImGui::SliderFloat("Render scale", &viewport.renderScale, 0.25f, 1.0f, "%.2f");
     tooltip("Render resolution as a fraction of the window (stretched to fit)");

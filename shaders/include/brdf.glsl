@@ -50,6 +50,13 @@ float alphaFromRoughness(float roughness) {
     return r * r;
 }
 
+// Perceptual roughness widened by `footprint`, an increment of α² = r⁴ (specular anti-aliasing,
+// specular_footprint.glsl): r = (r⁴ + footprint)^¼, at most 1.
+float widenedRoughness(float roughness, float footprint) {
+    float alphaSquared = roughness * roughness * roughness * roughness;
+    return sqrt(sqrt(min(alphaSquared + footprint, 1.0)));
+}
+
 // The specular microfacet BRDF f_s = D·G·F / (4 (n·l)(n·v)).
 vec3 specularBrdf(vec3 n, vec3 v, vec3 l, vec3 f0, float f90, float alpha) {
     vec3 h = normalize(v + l);

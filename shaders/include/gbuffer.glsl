@@ -4,7 +4,6 @@
 #include "material_table.glsl"
 #include "brdf.glsl"
 #include "octahedral.glsl"
-#include "specular_footprint.glsl"
 
 layout(binding = LIT_TEX_GBUFFER_ALBEDO) uniform sampler2D gbufferAlbedo;
 layout(binding = LIT_TEX_GBUFFER_NORMAL) uniform sampler2D gbufferNormal;
@@ -29,6 +28,10 @@ struct Surface {
     vec3 clearcoatNormal;     // world, unit; 0: the coat shares the shading normal (coatNormal)
     vec3 sheenColor;          // 0: no sheen
     float sheenRoughness;     // perceptual
+    // What the pixel's footprint adds to the base's and the coat's α² in the direct light
+    // (specular_footprint.glsl; 0 where no pass measured it).
+    float footprint;
+    float coatFootprint;
 };
 
 // Whether any material of the scene has a specular layer (MaterialLayersVariant): without, the
@@ -68,8 +71,6 @@ void readMaterialLayers(ivec2 pixel, inout Surface s) {
     }
     setMaterialLayers(m, t, s);
     if ((m.layerTextures.x & LIT_LAYER_COAT_NORMAL_STORED) != 0) s.clearcoatNormal = octDecode(unpackSnorm2x16(texels.z));
-    // The coat's lobe widened by its normal's footprint (the G-buffer stored the base's widened).
-    if (s.clearcoat > 0.0) s.clearcoatRoughness = widenedRoughness(s.clearcoatRoughness, texelFetch(gbufferNormal, pixel, 0).a);
 #else
     s.f0 = specularF0(s.baseColor, s.metalness, vec3(0.04));
     s.f90 = 1.0;
@@ -117,14 +118,18 @@ Surface readSurface(ivec2 pixel, vec2 uv) {
     float depth = texelFetch(gbufferDepth, pixel, 0).r;
     s.valid = depth < 1.0;
     s.position = worldPositionFromDepth(uv, depth);
-    s.normal = normalize(texelFetch(gbufferNormal, pixel, 0).xyz);
+    vec4 normal = texelFetch(gbufferNormal, pixel, 0);
+    s.normal = normalize(normal.xyz);
+    s.coatFootprint = normal.a;
     vec4 albedo = texelFetch(gbufferAlbedo, pixel, 0);
     s.baseColor = albedo.rgb;
     s.occlusion = albedo.a;
     vec4 material = texelFetch(gbufferMaterial, pixel, 0);
     s.roughness = material.r;
     s.metalness = material.g;
-    s.emissive = texelFetch(gbufferEmissive, pixel, 0).rgb;
+    vec4 emissive = texelFetch(gbufferEmissive, pixel, 0);
+    s.emissive = emissive.rgb;
+    s.footprint = emissive.a;
     readMaterialLayers(pixel, s);
     return s;
 }

@@ -3,7 +3,8 @@
 // narrower than that spread is under-sampled at any one point of the pixel (a sub-pixel
 // highlight that comes and goes as the camera moves). The spread, from the screen-space
 // derivatives of the normal, widens GGX's α² by 2σ²(|∂n/∂x|² + |∂n/∂y|²), capped at κ, for
-// every lobe the pixel shades (docs/MATERIALS.md, "Specular anti-aliasing").
+// the direct light's lobes (brdf.glsl widenedRoughness; docs/MATERIALS.md, "Specular
+// anti-aliasing").
 #include "frame.glsl"
 
 // κ: the most α² a footprint adds, so silhouettes, where the normal swings across a pixel, do
@@ -15,10 +16,4 @@ const float kFootprintMaxAlphaSquared = 0.18;
 float footprintAlphaSquared(vec3 n) {
     vec3 dx = dFdx(n), dy = dFdy(n);
     return min(2.0 * frame.exposure.z * (dot(dx, dx) + dot(dy, dy)), kFootprintMaxAlphaSquared);
-}
-
-// Perceptual roughness widened by `footprint` (an α² increment): α² = r⁴ grows, r = (α²)^¼.
-float widenedRoughness(float roughness, float footprint) {
-    float alphaSquared = roughness * roughness * roughness * roughness;
-    return sqrt(sqrt(min(alphaSquared + footprint, 1.0)));
 }
