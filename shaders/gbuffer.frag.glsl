@@ -8,9 +8,9 @@
 #include "geometry_varyings.glsl"
 
 layout(location = 0) out vec4 outAlbedo;    // rgb base colour (linear, stored sRGB), a occlusion
-layout(location = 1) out vec4 outNormal;    // rgb world normal, a the coat's footprint α² (specular_footprint.glsl)
+layout(location = 1) out vec4 outNormal;    // rgb world normal, a the footprint's α² (specular_footprint.glsl)
 layout(location = 2) out vec4 outMaterial;  // r roughness, g metalness, b clear-coat texel, a coat-roughness texel
-layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance, a the base's footprint α²
+layout(location = 3) out vec4 outEmissive;  // rgb emitted radiance
 // r: scene node index + 1 (0 = background); g: the primitive's index within the node's mesh;
 // b: the material index (the lighting passes read the material's specular layers by it).
 layout(location = 4) out uvec4 outNodeId;
@@ -27,10 +27,15 @@ void main() {
     GpuMaterial m = materials[uMaterialIndex];
     if (materialIsSheet(m)) discard;  // drawn over the lit image by SheetPass
     vec4 baseColor = materialBaseColor(m, fs.uv);
-    // Discarded after the footprints' derivatives, which need the whole quad.
+    // Discarded after the footprint's derivatives, which need the whole quad.
     bool cutOut = materialAlphaDiscard(m, baseColor.a);
 
     vec3 n = normalize(fs.worldNormal);
+    // What the pixel's footprint adds to the lobes' α² in the direct light (gbuffer.glsl), from the
+    // interpolated normal before anything branches: values computed in a branch may be undefined
+    // in a quad's helper lanes (llvmpipe leaves them out), and so are their derivatives. A normal
+    // map's own bumps are left to its mipmaps.
+    float footprint = footprintAlphaSquared(n);
     // Double-sided materials (and back faces seen through open geometry) face the viewer.
     if (!gl_FrontFacing) n = -n;
     vec3 interpolatedNormal = n;
@@ -71,18 +76,15 @@ void main() {
         coatNormal = materialMappedNormal(clearcoatNormalTexture, LIT_MATERIAL_SLOT_CLEARCOAT_NORMAL, fs.uv,
                                           interpolatedNormal, fs.worldTangent, m.clearcoat.z);
 #endif
-    // What the pixel's footprint adds to each lobe's α² in the direct light (gbuffer.glsl).
-    float baseFootprint = footprintAlphaSquared(n);
-    float coatFootprint = footprintAlphaSquared(coatNormal);
     if (cutOut) discard;
 
     outAlbedo = vec4(baseColor.rgb, occlusion);
-    outNormal = vec4(n, coatFootprint);
+    outNormal = vec4(n, footprint);
     outMaterial = vec4(clamp(roughness, 0.0, 1.0), clamp(metalness, 0.0, 1.0), layers.clearcoat, layers.clearcoatRoughness);
 #if LIT_HAS_MATERIAL_TEXTURE(LIT_MATERIAL_TEXTURE_LAYERS)
     outLayerTexels = uvec4(packUnorm4x8(layers.specular), packUnorm4x8(layers.sheen),
                            packSnorm2x16(octEncode(coatNormal)), 0u);
 #endif
-    outEmissive = vec4(emissive, baseFootprint);
+    outEmissive = vec4(emissive, 1.0);
     outNodeId = uvec4(uNodeId, uPrimitive, uint(uMaterialIndex), 0u);
 }

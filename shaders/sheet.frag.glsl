@@ -86,7 +86,6 @@ void main() {
     }
     s.roughness = clamp(s.roughness, 0.0, 1.0);
     s.footprint = footprint;
-    s.coatFootprint = footprint;
     s.metalness = clamp(s.metalness, 0.0, 1.0);
     s.emissive = m.emissive.rgb;
     if (m.textures.w != 0) s.emissive *= texture(emissiveTexture, materialUv(LIT_MATERIAL_SLOT_EMISSIVE, fs.uv)).rgb;

@@ -6,15 +6,15 @@
 // n_c is the coat's normal (coatNormal: its own map, else n).
 // `albedo` is the diffuse albedo (a transmissive sheet passes its (1 − t) share). Used by the
 // deferred direct pass and the sheet pass. Needs gbuffer.glsl (Surface, the sheen table) and
-// lights.glsl. Each lobe is widened by the pixel's footprint (Surface::footprint, coatFootprint:
-// specular anti-aliasing).
+// lights.glsl. Each lobe is widened by the pixel's footprint (Surface::footprint: specular
+// anti-aliasing).
 void directLight(Surface s, vec3 n, vec3 v, vec3 albedo, float shadowNormalOffset, out vec3 diffuse, out vec3 specular) {
     float alpha = alphaFromRoughness(widenedRoughness(s.roughness, s.footprint));
     float NdotV = max(dot(n, v), 0.0);
     vec3 nc = coatNormal(s, n, v);
     float coatScale = clearcoatBaseScale(s.clearcoat, max(dot(nc, v), 0.0));
     float base = coatScale * sheenBaseScale(s, NdotV);
-    float coatAlpha = alphaFromRoughness(widenedRoughness(s.clearcoatRoughness, s.coatFootprint));
+    float coatAlpha = alphaFromRoughness(widenedRoughness(s.clearcoatRoughness, s.footprint));
     bool sheen = max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b)) > 0.0;
     float alphaSheen = sheenAlpha(s.sheenRoughness);
     diffuse = vec3(0.0);

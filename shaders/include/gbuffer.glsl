@@ -31,7 +31,6 @@ struct Surface {
     // What the pixel's footprint adds to the base's and the coat's α² in the direct light
     // (specular_footprint.glsl; 0 where no pass measured it).
     float footprint;
-    float coatFootprint;
 };
 
 // Whether any material of the scene has a specular layer (MaterialLayersVariant): without, the
@@ -120,16 +119,14 @@ Surface readSurface(ivec2 pixel, vec2 uv) {
     s.position = worldPositionFromDepth(uv, depth);
     vec4 normal = texelFetch(gbufferNormal, pixel, 0);
     s.normal = normalize(normal.xyz);
-    s.coatFootprint = normal.a;
+    s.footprint = normal.a;
     vec4 albedo = texelFetch(gbufferAlbedo, pixel, 0);
     s.baseColor = albedo.rgb;
     s.occlusion = albedo.a;
     vec4 material = texelFetch(gbufferMaterial, pixel, 0);
     s.roughness = material.r;
     s.metalness = material.g;
-    vec4 emissive = texelFetch(gbufferEmissive, pixel, 0);
-    s.emissive = emissive.rgb;
-    s.footprint = emissive.a;
+    s.emissive = texelFetch(gbufferEmissive, pixel, 0).rgb;
     readMaterialLayers(pixel, s);
     return s;
 }

@@ -117,7 +117,6 @@ void main() {
     s.roughness = material.r;
     s.metalness = material.g;
     s.footprint = 0.0;  // the direct light's alone
-    s.coatFootprint = 0.0;
     readMaterialLayers(pixel, s);
     // The lobe is traced, upsampled and accumulated at the lobe's roughness (a smoother clear coat
     // sets it); the base's own roughness weighs it at the end.
