@@ -109,10 +109,10 @@ TEST_F(SpecularAntialiasing, FlatSurfacesAreDrawnAsWithout) {
     const Scene planes =
         loadGltf(sourceDir() / "tests" / "data" / "blender" / "layer_textures" / "layer_textures.gltf", log_);
     for (const Scene* scene : {&cornell, &planes}) {
-        RenderSettings off = smallSettings(160), on = off;
+        RenderSettings off = smallSettings(160);
         off.output.height = 90;
         off.debug.view = View::DirectSpecular;
-        on = off;
+        RenderSettings on = off;
         on.output.specularAntialiasing = true;
         const HdrImage a = render(*scene, off), b = render(*scene, on);
         ASSERT_EQ(a.rgb.size(), b.rgb.size());
