@@ -22,12 +22,9 @@ inline gpu::FrameUniforms makeFrameUniforms(const CameraView& camera, const Rend
     frame.cameraPosition = glm::vec4(camera.position, 1.0f);
     const float w = static_cast<float>(settings.output.width), h = static_cast<float>(settings.output.height);
     frame.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
-    // σ² of the pixel filter the specular footprint is taken over (specular_footprint.glsl): the
-    // value Tokuyoshi and Kaplanyan give for a pixel-sized box.
-    const float specularFootprintVariance = settings.output.specularAntialiasing ? 0.25f : 0.0f;
-    frame.exposure =
-        glm::vec4(settings.output.exposureScale(), settings.shadows.pcfRadius, specularFootprintVariance, 0.0f);
-    frame.counts = glm::ivec4(lightCount, shaderView, 0, 0);
+    frame.exposure = glm::vec4(settings.output.exposureScale(), settings.shadows.pcfRadius, 0.0f, 0.0f);
+    const int flags = settings.output.specularAntialiasing ? LIT_FRAME_SPECULAR_ANTIALIASING : 0;
+    frame.counts = glm::ivec4(lightCount, shaderView, 0, flags);
     if (sky) {
         const int mode = sky->mode == SkyMode::Uniform    ? LIT_SKY_UNIFORM
                          : sky->mode == SkyMode::Gradient ? LIT_SKY_GRADIENT

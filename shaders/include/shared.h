@@ -252,6 +252,9 @@ using mat4 = glm::mat4;
 #define LIT_CONE_APERTURE_MAX 3.0                // rad, widest cone traceCone marches (apertures are clamped)
 #define LIT_CONE_REUSE_TOLERANCE 1e-3            // rad: specular cones this much narrower still reuse diffuse ones
 
+// ---- FrameUniforms::counts.w flags ----------------------------------------------------------------
+#define LIT_FRAME_SPECULAR_ANTIALIASING 1  // the direct light's lobes widened by the pixel's footprint
+
 // ---- Sky and exposure (sky.glsl = scene/Sky.cpp; AutoExposurePass) ------------------------------
 #define LIT_SKY_NONE 0       // black
 #define LIT_SKY_UNIFORM 1    // FrameUniforms::skyZenith everywhere
@@ -357,9 +360,8 @@ struct FrameUniforms {
     mat4 inverseViewProjection;
     vec4 cameraPosition;   // xyz world position (m), w unused
     vec4 viewport;         // width, height (pixels), 1/width, 1/height
-    vec4 exposure;  // x linear exposure multiplier, y shadow PCF radius (texels), z specular footprint σ² (pixels²;
-                    // 0: off), w unused
-    ivec4 counts;          // x light count, y view (LIT_VIEW_*), z shadow debug layer, w flags
+    vec4 exposure;         // x linear exposure multiplier, y shadow PCF radius (texels), zw unused
+    ivec4 counts;          // x light count, y view (LIT_VIEW_*), z shadow debug layer, w flags (LIT_FRAME_*)
     vec4 skyZenith;        // rgb sky radiance straight up (W/(sr·m²)), w mode (LIT_SKY_*)
     vec4 skyHorizon;       // rgb at the horizon, w intensity multiplier (all modes)
     vec4 skyGround;        // rgb below the horizon, w unused
