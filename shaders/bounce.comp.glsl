@@ -356,6 +356,9 @@ vec3 outerRayRadiance(vec3 origin, vec3 dir) {
 }
 #endif
 
+// Two-sided voxels' direct light by side (voxel.glsl, "Sides").
+layout(binding = LIT_TEX_VOXEL_SIDES) uniform usampler3D voxelSidesTexture;
+
 vec3 rayHitRadiance(uint hit, vec3 origin, vec3 dir) {
 #if LIT_NEAR_LEVEL
     if (hit == kRayHitSky) return outerRayRadiance(origin, dir);
@@ -368,7 +371,8 @@ vec3 rayHitRadiance(uint hit, vec3 origin, vec3 dir) {
 #else
     vec4 s = imageLoad(voxelRaySource, unpackVoxelCoord(hit));
 #endif
-    return s.a > 0.0 ? decodeRadiance(s.rgb / s.a) : vec3(0.0);
+    if (s.a == 0.0) return vec3(0.0);
+    return radianceSeenFrom(decodeRadiance(s.rgb / s.a), texelFetch(voxelSidesTexture, unpackVoxelCoord(hit), 0).xy, dir);
 }
 
 // Irradiance/π at `origin` over the hemisphere of `normal`: the mean radiance of uVoxelRays

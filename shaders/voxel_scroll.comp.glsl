@@ -6,8 +6,8 @@
 // the scratch buffer and zeroes them at the old place, uPhase 1 writes them at the new one. An
 // entry whose voxel left the volume writes nothing: its texels stay zero.
 //
-// LIT_SCROLL_WRITTEN 0: the material volumes, level 0 of the radiance and the texels the pixels
-// gather; phase 1 also gives each entry its voxel's new coordinates, in place (the progress of an
+// LIT_SCROLL_WRITTEN 0: the material volumes, level 0 of the radiance, its sides and the texels the
+// pixels gather; phase 1 also gives each entry its voxel's new coordinates, in place (the progress of an
 // update under way over the list stays valid). An entry whose voxel left wraps round into the slab
 // the scroll uncovered, where it becomes the entry of whatever the slab's voxelization puts there
 // (its listed bit is set, so no second entry is appended), or an empty one. Every entry sets its
@@ -37,6 +37,7 @@ layout(binding = LIT_IMG_VOXEL_EMISSION, r32ui) uniform uimage3D emission;
 layout(binding = LIT_IMG_VOXEL_SURFACE, r32ui) uniform uimage3D surface;
 layout(binding = LIT_IMG_VOXEL_RADIANCE, LIT_RADIANCE_IMAGE_FORMAT) uniform image3D radiance;
 layout(binding = LIT_IMG_SCROLL_SHOWN_TEXELS, rgba32ui) uniform uimage3D shownTexels;
+layout(binding = LIT_IMG_VOXEL_SIDES, rg32ui) uniform uimage3D sides;
 #endif
 
 uniform uint uEntries;  // entries stored: min(count, capacity)
@@ -69,12 +70,14 @@ void main() {
                             imageLoad(surface, v).r);
         saved[slot + 1u] = floatBitsToUint(imageLoad(radiance, v));
         saved[slot + 2u] = imageLoad(shownTexels, v);
+        saved[slot + 3u] = uvec4(imageLoad(sides, v).xy, 0u, 0u);
         imageStore(albedo, v, uvec4(0u));
         imageStore(normal, v, uvec4(0u));
         imageStore(emission, v, uvec4(0u));
         imageStore(surface, v, uvec4(0u));
         imageStore(radiance, v, vec4(0.0));
         imageStore(shownTexels, v, uvec4(0u));
+        imageStore(sides, v, uvec4(0u));
 #endif
         return;
     }
@@ -95,6 +98,7 @@ void main() {
         imageStore(surface, moved, uvec4(materials.w));
         imageStore(radiance, moved, uintBitsToFloat(saved[slot + 1u]));
         imageStore(shownTexels, moved, saved[slot + 2u]);
+        imageStore(sides, moved, saved[slot + 3u]);
     }
     ivec3 w = (moved + n) % n;  // a voxel that left wraps into the uncovered slab
     occupiedVoxels[index] = packVoxelCoord(w);

@@ -57,4 +57,15 @@ private:
 // it was injected with. Stalls the pipeline (tests, debug tools).
 std::vector<glm::vec4> readRadianceVoxels(const VoxelVolume& volume, int level = 0, float rgba8Range = 1.0f);
 
+// A two-sided voxel's split of its direct light by side (VoxelVolume::sides, voxel.glsl "Sides"):
+// the axis of its slab and the half difference Δ of its sides' direct light (W/(sr·m²)); a ray
+// that ends on the +axis side sees level 0 + Δ, one on the other side level 0 − Δ.
+struct VoxelSides {
+    bool split = false;  // false: the voxel sends the same light to both sides
+    glm::vec3 axis{0.0f};
+    glm::vec3 delta{0.0f};
+};
+// Every voxel's sides, in readRadianceVoxels' order and decoding. Stalls the pipeline (tests).
+std::vector<VoxelSides> readVoxelSides(const VoxelVolume& volume, float rgba8Range = 1.0f);
+
 }  // namespace lit

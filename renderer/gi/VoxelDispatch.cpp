@@ -67,6 +67,7 @@ void useWithVoxelSurfaces(const gl::Program& program, const VoxelVolume& volume,
     if (features.voxelRays > 0) {
         glProgramUniform1i(program.id(), program.location("uVoxelRays"), features.voxelRays);
         glBindImageTexture(LIT_IMG_VOXEL_SURFACE, volume.surface().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+        volume.sides().bind(LIT_TEX_VOXEL_SIDES);
     }
     glBindImageTexture(LIT_IMG_VOXEL_ALBEDO, volume.albedo().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);

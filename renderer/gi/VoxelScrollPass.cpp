@@ -75,6 +75,7 @@ void VoxelScrollPass::execute(const VoxelVolume& volume, const VoxelIrradianceCa
         glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
         glBindImageTexture(LIT_IMG_VOXEL_EMISSION, volume.emission().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
         glBindImageTexture(LIT_IMG_VOXEL_SURFACE, volume.surface().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+        glBindImageTexture(LIT_IMG_VOXEL_SIDES, volume.sides().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32UI);
         glBindImageTexture(LIT_IMG_VOXEL_RADIANCE, volume.radiance().id(), 0, GL_TRUE, 0, GL_READ_WRITE,
                            radianceFormat);
         glBindImageTexture(LIT_IMG_SCROLL_SHOWN_TEXELS, cache.shownTexels().id(), 0, GL_TRUE, 0, GL_READ_WRITE,

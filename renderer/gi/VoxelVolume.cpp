@@ -34,7 +34,8 @@ std::size_t voxelVolumeBytes(int n, bool rgba8, bool bounces) {
     // A full 3D mip chain adds 1/8 + 1/64 + ... ≈ 1/7 of the base level; each directional volume
     // (one per axis, its two faces and a gap between them side by side) starts at 3·(N/2)³, 3/8 of
     // the base, so the three add 9/7 of it.
-    const std::size_t radiance = voxels * texel * 8 / 7 + 9 * (voxels / 8) * texel * 8 / 7;
+    // Plus the two-sided voxels' split of their direct light by side (RG32UI).
+    const std::size_t radiance = voxels * texel * 8 / 7 + 9 * (voxels / 8) * texel * 8 / 7 + voxels * 8;
     // The cached GI mode's irradiance volumes (VoxelIrradianceCache::prepare: the traced one,
     // N × N × 2N for two sides in the radiance format, and two sets of RGBA32UI gather texels, the
     // one shown while the other is written after a geometry edit); counted in every mode.
@@ -108,6 +109,10 @@ bool VoxelVolume::ensure(int requested, bool radianceRgba8, Log& log) {
     for (const gl::Texture* t : materialVolumes()) t->setFilter(GL_NEAREST, GL_NEAREST);
     radiance_ = gl::Texture("voxel radiance", {GL_TEXTURE_3D, radianceFormat(), n, n, n, mipCount_});
     radiance_.setFilter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    sides_ = gl::Texture("voxel sides", {GL_TEXTURE_3D, GL_RG32UI, n, n, n, 1});
+    sides_.setFilter(GL_NEAREST, GL_NEAREST);
+    const std::uint32_t noSplit[2] = {0, 0};
+    glClearTexImage(sides_.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, noSplit);
     radiance_.setWrap(GL_CLAMP_TO_BORDER);  // outside the volume is empty: opacity 0
     const float transparent[4] = {0, 0, 0, 0};
     glTextureParameterfv(radiance_.id(), GL_TEXTURE_BORDER_COLOR, transparent);
@@ -335,7 +340,7 @@ std::size_t VoxelVolume::radianceBytes() const {
     for (int level = 0, n = resolution_; level < mipCount_; ++level, n = std::max(n / 2, 1))
         bytes += static_cast<std::size_t>(n) * n * n * (rgba8_ ? 4 : 8) *
                  (level == 0 || !directional_[0] ? 1 : 1 + 3 * LIT_VOXEL_AXIS_COUNT);
-    return bytes;
+    return bytes + static_cast<std::size_t>(resolution_) * resolution_ * resolution_ * 8;  // the sides
 }
 
 std::size_t VoxelVolume::bounceBytes() const {

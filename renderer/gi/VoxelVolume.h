@@ -138,6 +138,10 @@ public:
     // Where in each voxel its surface lies (LIT_IMG_VOXEL_SURFACE, voxelize.frag.glsl).
     const gl::Texture& surface() const { return surface_; }
     const gl::Texture& radiance() const { return radiance_; }
+    // Two-sided voxels' direct light by side (RG32UI, LIT_IMG_VOXEL_SIDES / LIT_TEX_VOXEL_SIDES): the
+    // axis of the slab a voxel holding faces back to back lies in, and the half difference of its two
+    // sides' direct light, which level 0 holds the mean of (inject.comp.glsl; voxel.glsl, "Sides").
+    const gl::Texture& sides() const { return sides_; }
     // The directional volume of axis 0 X, 1 Y, 2 Z: both faces of the axis side by side along x
     // (see the layout at the top).
     const gl::Texture& directional(int axis) const { return directional_[static_cast<std::size_t>(axis)]; }
@@ -158,7 +162,7 @@ public:
 
     // Bytes of GPU memory per volume and in total (radiance counted with its mip chain).
     std::size_t materialBytes() const;  // albedo + normal + emission + surface
-    std::size_t radianceBytes() const;  // isotropic chain + the six directional chains while they exist
+    std::size_t radianceBytes() const;  // isotropic chain + the six directional chains while they exist + sides
     std::size_t bounceBytes() const;    // direct + bounce + change volumes (0 until allocated)
     std::size_t listBytes() const;      // the occupied-voxel list, its bit per voxel and the solid bits
     std::size_t totalBytes() const { return materialBytes() + radianceBytes() + bounceBytes() + listBytes(); }
@@ -175,7 +179,7 @@ private:
     bool rgba8_ = false;
     glm::vec3 min_{0.0f};
     float side_ = 1.0f;
-    gl::Texture albedo_, normal_, emission_, surface_, radiance_;
+    gl::Texture albedo_, normal_, emission_, surface_, radiance_, sides_;
     // The r32ui volumes the voxelization writes (kMaterialVolumeCount of them).
     std::array<const gl::Texture*, kMaterialVolumeCount> materialVolumes() const {
         return {&albedo_, &normal_, &emission_, &surface_};

@@ -71,6 +71,9 @@ using mat4 = glm::mat4;
 #define LIT_TEX_VOXEL_RADIANCE 18
 #define LIT_TEX_VOXEL_ALBEDO 19
 #define LIT_TEX_VOXEL_EMISSION 21
+// Two-sided voxels' direct light by side (VoxelVolume::sides, RG32UI; voxel.glsl, "Sides"): the
+// voxel rays read it where they end (bounce.comp.glsl).
+#define LIT_TEX_VOXEL_SIDES 20
 // Cone tracing (ConeTracePass): the GGX lobe's directional albedo table, RG16F, x = n·v,
 // y = roughness, E = F0·r + g (cone.glsl, specularAlbedo).
 #define LIT_TEX_SPECULAR_ALBEDO 22
@@ -177,6 +180,9 @@ using mat4 = glm::mat4;
 // A bounce's change from the one before (VoxelVolume::change): written by the bounce copy, read by
 // the later bounces' voxel rays. Unit 2 is the emission volume's, which neither pass binds.
 #define LIT_IMG_VOXEL_CHANGE 2
+// The injection writes the two-sided voxels' split of their direct light by side
+// (VoxelVolume::sides). Unit 5 is the bounce volume's, which the injection does not bind.
+#define LIT_IMG_VOXEL_SIDES 5
 
 // ---- Voxelization and radiance injection (VoxelizePass, InjectPass) ------------------------
 #define LIT_VOXEL_EMISSION_RANGE 16.0  // radiance (W/(sr·m²)) stored as 1.0 in the emission volume; = VoxelVolume::kEmissionRange

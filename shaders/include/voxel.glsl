@@ -34,6 +34,40 @@ const float kOneSidedMinLength = 0.5;
 const float kDirectionMinLength = 0.05;
 vec3 unpackAveragedNormal(uint bits) { return unpackVoxel(bits).xyz * 2.0 - 1.0; }
 
+// Sides. A two-sided voxel (faces back to back: a slab thinner than a voxel) sends each face's
+// direct light to that face's side only. The injection finds the axis of the slab it lies in
+// (inject.comp.glsl, twoSidedAxis) and stores in VoxelVolume::sides the half difference of its two
+// sides' direct light, Δ = (D₊ − D₋)/2, in the radiance volume's encoding; level 0 and the direct
+// volume hold the mean (D₊ + D₋)/2. A voxel ray that ends on the +axis side (travelling against the
+// axis) sees what the volume it reads holds + Δ, one on the other side − Δ: every such volume holds
+// the direct mean (the later bounces' changes do not, and take none). Bounced light stays the mean of
+// the sides.
+//   x: packHalf2x16(Δr, Δg); y: bits 0–15 half Δb, 16–29 the axis (octahedral, 7 bits per
+//   coordinate), 31 set (0 everywhere else: one-sided voxels, no slab found).
+const uint kSidesSplit = 0x80000000u;
+uvec2 packSides(vec3 axis, vec3 delta) {
+    axis /= abs(axis.x) + abs(axis.y) + abs(axis.z);
+    vec2 signs = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(axis.xy, vec2(0.0)));
+    vec2 oct = axis.z >= 0.0 ? axis.xy : (1.0 - abs(axis.yx)) * signs;
+    uvec2 q = uvec2(round(clamp(oct * 0.5 + 0.5, 0.0, 1.0) * 127.0));
+    return uvec2(packHalf2x16(delta.rg), (packHalf2x16(vec2(delta.b, 0.0)) & 0xffffu) | (q.x << 16u) | (q.y << 23u) |
+                                             kSidesSplit);
+}
+vec3 unpackSidesAxis(uint y) {
+    vec2 e = vec2(float((y >> 16u) & 127u), float((y >> 23u) & 127u)) / 127.0 * 2.0 - 1.0;
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    float t = max(-n.z, 0.0);
+    n.xy += mix(vec2(t), vec2(-t), greaterThanEqual(n.xy, vec2(0.0)));
+    return normalize(n);
+}
+// The radiance a ray along `dir` sees where it ends in a voxel whose volume holds `stored` (decoded)
+// and whose sides texel is `sides`.
+vec3 radianceSeenFrom(vec3 stored, uvec2 sides, vec3 dir) {
+    if ((sides.y & kSidesSplit) == 0u) return stored;
+    vec3 delta = decodeRadiance(vec3(unpackHalf2x16(sides.x), unpackHalf2x16(sides.y).x));
+    return max(stored + (dot(dir, unpackSidesAxis(sides.y)) < 0.0 ? delta : -delta), vec3(0.0));
+}
+
 // The format qualifier of the voxel compute passes' images that hold radiance or irradiance, as the
 // radiance volume stores it (VoxelVolume::radianceFormat): InjectPass defines LIT_BOUNCE_RGBA8 for
 // its bounce, irradiance, filter and copy programs.
