@@ -215,6 +215,11 @@ struct Renderer::Impl {
         bool operator==(const AntialiasKey&) const = default;
     };
     std::optional<AntialiasKey> antialiasKey;
+    // Each node's world transform when the last image was drawn, and whether nodes moved since with
+    // the materials and the settings as they were (a node animation, a gizmo drag): that frame's
+    // G-buffer writes each point's motion, and the anti-aliasing follows it.
+    std::vector<glm::mat4> previousNodeWorld;
+    bool nodesMoved = false;
     bool giLightChanging = false;
     float lastVoxelSize = 0.0f, lastVolumeSide = 0.0f;  // m; 0 when that frame had no GI
     LightingTerms terms;
@@ -295,6 +300,7 @@ void Renderer::setScene(const Scene& scene) {
         if (level) level->invalidate();
     impl_->resolve.resetHistory();
     impl_->antialias.reset();
+    impl_->previousNodeWorld.clear();
     impl_->meteredLastFrame = false;  // a new scene is metered afresh, not adapted to
     impl_->lastFrame.reset();  // the G-buffer's node IDs belong to the previous scene
 }
@@ -447,10 +453,15 @@ gpu::FrameUniforms Renderer::Impl::bindFrame(const Scene& scene, const CameraVie
     if (image) {
         const AntialiasKey key{scene.geometryRevision, scene.materialRevision, scene.lightRevision, settings};
         const bool changed = giLightChanging || !antialiasKey || !(*antialiasKey == key);
+        nodesMoved = false;
+        if (changed && antialiasKey && key.materialRevision == antialiasKey->materialRevision &&
+            key.settings == antialiasKey->settings && previousNodeWorld.size() == scene.nodes.size())
+            for (std::size_t i = 0; i < scene.nodes.size() && !nodesMoved; ++i)
+                nodesMoved = scene.nodes[i].world != previousNodeWorld[i];
         antialiasKey = key;
         drawn.projection = TemporalAntialiasPass::jittered(
-            camera.projection, antialias.begin(settings, {unjitteredViewProjection, changed}), settings.output.width,
-            settings.output.height);
+            camera.projection, antialias.begin(settings, {unjitteredViewProjection, changed, nodesMoved}),
+            settings.output.width, settings.output.height);
     }
     const gpu::FrameUniforms frame = makeFrameUniforms(drawn, settings, toShaderView(settings.debug.view),
                                                        static_cast<int>(lights.lights.size()), &sky);
@@ -467,8 +478,10 @@ void Renderer::Impl::drawGBuffer(const Scene& scene, const RenderSettings& setti
     cullView(frame.viewProjection, settings.output.frustumCulling, cameraItems);
     Profiler::Scope scope(profiler, "g-buffer");
     const std::size_t trianglesBefore = counters.triangles;  // the shadow pass counts its own
-    gbuffer.execute(scene, *gpuScene, counters, &cameraItems);
+    gbuffer.execute(scene, *gpuScene, counters, &cameraItems, nodesMoved ? &previousNodeWorld : nullptr);
     stats.triangles = counters.triangles - trianglesBefore;
+    previousNodeWorld.resize(scene.nodes.size());
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i) previousNodeWorld[i] = scene.nodes[i].world;
 }
 
 Aabb Renderer::Impl::nearLevelBox(const glm::vec3& eye, float side) {
@@ -700,7 +713,7 @@ void Renderer::Impl::composite(const Scene& scene, const RenderSettings& setting
     }
     if (TemporalAntialiasPass::applies(settings)) {
         Profiler::Scope antialiasScope(profiler, "anti-aliasing");
-        antialias.execute(settings, post.hdr(), gbuffer.depth(), giLightChanging);
+        antialias.execute(settings, post.hdr(), gbuffer.depth(), gbuffer.motion(), giLightChanging);
         stats.antialiasFrames = antialias.historyFrames();
     } else {
         antialias.reset();

@@ -148,6 +148,10 @@ bool gVoxelChanged = false;  // its voxel changed since (main): every ray is mar
 int rayHitMode() { return LIT_RAY_HIT_CACHE != 0 ? uRayHits : 0; }
 const uint kRayHitSky = 0xffffffffu;   // left the volume: the sky
 const uint kRayHitBack = 0x40000000u;  // flag: met a one-sided surface from behind (black)
+// Flag: ended in a two-sided voxel, whose light depends on the side met (voxel.glsl, "Sides"; only
+// these hits read the sides volume). Bit 29 is z's tenth bit, which volumes up to 512³ leave 0.
+const uint kRayHitTwoSided = 0x20000000u;
+ivec3 rayHitVoxel(uint hit) { return unpackVoxelCoord(hit & ~(kRayHitBack | kRayHitTwoSided)); }
 
 // Whether the ray g0 + t'·d (in voxels from the volume's corner, t' ≥ t; inv = 1/d) meets the surface of the
 // occupied voxel `cell` it is in, whose averaged normal is `averaged` (of length `agreement`) and
@@ -198,7 +202,8 @@ uint marchVoxelRay(vec3 origin, vec3 dir) {
             float agreement = length(averaged);
             if (rayMeetsVoxelSurface(cell, averaged, agreement, voxelSurfacePoint(cell), g0, d, inv, t)) {
                 bool fromBehind = seenFromBehind(averaged, agreement, dir);
-                return packVoxelCoord(cell) | (fromBehind ? kRayHitBack : 0u);
+                return packVoxelCoord(cell) | (fromBehind ? kRayHitBack : 0u) |
+                       (agreement < kOneSidedMinLength ? kRayHitTwoSided : 0u);
             }
         }
         // The cell to leave: the empty 16³ or 4³ block around the ray, else its voxel.
@@ -230,7 +235,7 @@ bool voxelChanged(ivec3 v) {
 bool rayCrossesChange(vec3 origin, vec3 dir, uint hit) {
     float n = voxel.voxelInfo.x;
     vec3 g0 = (origin - voxel.volumeMin.xyz) / voxel.voxelInfo.z;
-    float tEnd = hit == kRayHitSky ? 2.0 * n : dot(vec3(unpackVoxelCoord(hit & ~kRayHitBack)) + 0.5 - g0, dir) + 1.5;
+    float tEnd = hit == kRayHitSky ? 2.0 * n : dot(vec3(rayHitVoxel(hit)) + 0.5 - g0, dir) + 1.5;
     vec3 d = mix(dir, vec3(1e-7), lessThan(abs(dir), vec3(1e-7)));
     vec3 inv = 1.0 / d;
     const float block = float(1 << kRaySkipLevelCoarse);
@@ -267,7 +272,7 @@ layout(binding = LIT_IMG_VOXEL_CHANGE, LIT_RADIANCE_IMAGE_FORMAT) uniform readon
 bool gathersChange() { return uChangeSubset >= 0; }
 vec3 rayHitChange(uint hit) {
     if (hit == kRayHitSky || (hit & kRayHitBack) != 0u) return vec3(0.0);
-    return decodeRadiance(imageLoad(voxelChange, unpackVoxelCoord(hit)).rgb);
+    return decodeRadiance(imageLoad(voxelChange, rayHitVoxel(hit)).rgb);
 }
 #else
 bool gathersChange() { return false; }
@@ -367,12 +372,14 @@ vec3 rayHitRadiance(uint hit, vec3 origin, vec3 dir) {
 #endif
     if ((hit & kRayHitBack) != 0u) return vec3(0.0);
 #if LIT_BOUNCE_IRRADIANCE
-    vec4 s = texelFetch(voxelRadianceTexture, unpackVoxelCoord(hit), 0);
+    vec4 s = texelFetch(voxelRadianceTexture, rayHitVoxel(hit), 0);
 #else
-    vec4 s = imageLoad(voxelRaySource, unpackVoxelCoord(hit));
+    vec4 s = imageLoad(voxelRaySource, rayHitVoxel(hit));
 #endif
     if (s.a == 0.0) return vec3(0.0);
-    return radianceSeenFrom(decodeRadiance(s.rgb / s.a), texelFetch(voxelSidesTexture, unpackVoxelCoord(hit), 0).xy, dir);
+    vec3 stored = decodeRadiance(s.rgb / s.a);
+    if ((hit & kRayHitTwoSided) == 0u) return stored;
+    return radianceSeenFrom(stored, texelFetch(voxelSidesTexture, rayHitVoxel(hit), 0).xy, dir);
 }
 
 // Irradiance/π at `origin` over the hemisphere of `normal`: the mean radiance of uVoxelRays

@@ -19,6 +19,9 @@ layout(location = 4) out uvec4 outNodeId;
 // x specular colour and specular, y sheen colour and sheen roughness; z the coat's normal.
 layout(location = 5) out uvec4 outLayerTexels;
 #endif
+// xyz: how far the point moved since the last frame (world m); drawn only in frames where nodes
+// moved (GBufferPass), for the temporal anti-aliasing.
+layout(location = 6) out vec4 outMotion;
 
 layout(location = LIT_LOC_NODE_ID) uniform uint uNodeId;
 layout(location = LIT_LOC_PRIMITIVE) uniform uint uPrimitive;
@@ -30,6 +33,7 @@ void main() {
     // Discarded after the footprint's derivatives, which need the whole quad.
     bool cutOut = materialAlphaDiscard(m, baseColor.a);
 
+    outMotion = vec4(fs.worldMotion, 0.0);
     vec3 n = normalize(fs.worldNormal);
     // What the pixel's footprint adds to the lobes' α² in the direct light (gbuffer.glsl), from the
     // interpolated normal before anything branches: values computed in a branch may be undefined

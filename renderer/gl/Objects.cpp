@@ -96,6 +96,17 @@ void Framebuffer::setDrawBuffers(int count) {
     glNamedFramebufferDrawBuffers(handle_.id(), count, buffers);
 }
 
+void Framebuffer::setDrawBuffers(std::initializer_list<bool> written) {
+    GLenum buffers[8];
+    assert(written.size() <= 8);
+    GLsizei count = 0;
+    for (const bool w : written) {
+        buffers[count] = w ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(count) : GL_NONE;
+        ++count;
+    }
+    glNamedFramebufferDrawBuffers(handle_.id(), count, buffers);
+}
+
 Framebuffer Framebuffer::withColours(std::string_view label, std::initializer_list<const Texture*> colours) {
     Framebuffer framebuffer(label);
     int index = 0;

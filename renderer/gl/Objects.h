@@ -76,6 +76,8 @@ public:
     void attachLayer(GLenum attachment, const Texture& texture, int layer, int level = 0);
     // Sets glNamedFramebufferDrawBuffers for `count` colour attachments (0 = depth only).
     void setDrawBuffers(int count);
+    // Colour attachment i is drawn when written[i], else GL_NONE (at most 8).
+    void setDrawBuffers(std::initializer_list<bool> written);
     // Throws GlError naming the status when incomplete.
     void checkComplete(std::string_view what) const;
     void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, handle_.id()); }

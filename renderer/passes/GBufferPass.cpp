@@ -23,8 +23,10 @@ void GBufferPass::resize(int width, int height) {
     t.emissive = gl::Texture("gbuffer emissive", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
     t.nodeId = gl::Texture("gbuffer node id", {GL_TEXTURE_2D, GL_RGBA32UI, width, height, 1, 1});
     t.layers = gl::Texture("gbuffer layer texels", {GL_TEXTURE_2D, GL_RGBA32UI, width, height, 1, 1});
+    t.motion = gl::Texture("gbuffer motion", {GL_TEXTURE_2D, GL_RGBA16F, width, height, 1, 1});
     t.depth = gl::Texture("gbuffer depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, 1});
-    for (const gl::Texture* texture : {&t.albedo, &t.normal, &t.material, &t.emissive, &t.nodeId, &t.layers, &t.depth})
+    for (const gl::Texture* texture :
+         {&t.albedo, &t.normal, &t.material, &t.emissive, &t.nodeId, &t.layers, &t.motion, &t.depth})
         texture->setFilter(GL_NEAREST, GL_NEAREST);
     t.framebuffer = gl::Framebuffer("gbuffer");
     t.framebuffer.attach(GL_COLOR_ATTACHMENT0, t.albedo);
@@ -33,22 +35,26 @@ void GBufferPass::resize(int width, int height) {
     t.framebuffer.attach(GL_COLOR_ATTACHMENT3, t.emissive);
     t.framebuffer.attach(GL_COLOR_ATTACHMENT4, t.nodeId);
     t.framebuffer.attach(GL_COLOR_ATTACHMENT5, t.layers);
+    t.framebuffer.attach(GL_COLOR_ATTACHMENT6, t.motion);
     t.framebuffer.attach(GL_DEPTH_ATTACHMENT, t.depth);
-    t.framebuffer.setDrawBuffers(6);
+    t.framebuffer.setDrawBuffers(7);
     t.framebuffer.checkComplete("gbuffer");
 }
 
 void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters,
-                          const std::vector<std::uint32_t>* visibleItems) {
+                          const std::vector<std::uint32_t>* visibleItems, const std::vector<glm::mat4>* previousWorld) {
     // The layer texels are written only for scenes with layer textures, and read only at pixels
-    // whose material has them (gbuffer.glsl readMaterialLayers): otherwise the target stays out.
-    targets_->framebuffer.setDrawBuffers(gpuScene.hasLayerTextures() ? 6 : 5);
+    // whose material has them (gbuffer.glsl readMaterialLayers), the motion only in frames whose
+    // nodes moved (the anti-aliasing reads it then): otherwise those targets stay out.
+    const bool motion = previousWorld != nullptr;
+    targets_->framebuffer.setDrawBuffers({true, true, true, true, true, gpuScene.hasLayerTextures(), motion});
     targets_->framebuffer.bind();
     glViewport(0, 0, targets_->width, targets_->height);
     const float zero[4] = {0, 0, 0, 0};
     for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(targets_->framebuffer.id(), GL_COLOR, i, zero);
     const GLuint background[4] = {0, 0, 0, 0};
     glClearNamedFramebufferuiv(targets_->framebuffer.id(), GL_COLOR, 4, background);
+    if (motion) glClearNamedFramebufferfv(targets_->framebuffer.id(), GL_COLOR, 6, zero);
     const float one = 1.0f;
     glClearNamedFramebufferfv(targets_->framebuffer.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
@@ -70,6 +76,11 @@ void GBufferPass::execute(const Scene& scene, const GpuScene& gpuScene, DrawCoun
         }
         glProgramUniform1ui(itemProgram.id(), LIT_LOC_NODE_ID, static_cast<GLuint>(item.node + 1));
         glProgramUniform1ui(itemProgram.id(), LIT_LOC_PRIMITIVE, static_cast<GLuint>(item.primitive));
+        if (motion) {
+            const auto node = static_cast<std::size_t>(item.node);
+            const glm::mat4& before = node < previousWorld->size() ? (*previousWorld)[node] : scene.nodes[node].world;
+            glProgramUniformMatrix4fv(itemProgram.id(), LIT_LOC_PREVIOUS_MODEL, 1, GL_FALSE, &before[0][0]);
+        }
         gpuScene.drawItem(scene, item, itemProgram, GpuScene::Bind::Everything, counters);
     };
     gpuScene.bindGeometry();

@@ -5,17 +5,19 @@
 // radiance), node ID (RGBA32UI: index of the scene node drawn there + 1, 0 = background, for
 // picking and the selection outline; the primitive; the material), layer texels (RGBA32UI: the
 // specular and sheen textures' texels and the coat's normal, shared.h LIT_TEX_GBUFFER_LAYERS),
-// depth (32F).
-
-#include "gl/ProgramVariants.h"
-#include "passes/Pass.h"
-#include "passes/TargetsBySize.h"
+// motion (RGBA16F: how far the surface point moved with its node since the last frame, world
+// metres; written only in frames where nodes moved, for the temporal anti-aliasing), depth (32F).
 
 #include <shared.h>
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
+
+#include "gl/ProgramVariants.h"
+#include "passes/Pass.h"
+#include "passes/TargetsBySize.h"
 
 namespace lit {
 
@@ -29,9 +31,12 @@ public:
 
     void resize(int width, int height);
     // Draws the items listed in `visibleItems` (indices into gpuScene.items(), e.g. the camera's
-    // culling result), or every item when it is null.
+    // culling result), or every item when it is null. `previousWorld`: each node's world transform
+    // in the last frame (by node index); when given, the motion target holds each point's motion
+    // since (world − previous world), else it is left out.
     void execute(const Scene& scene, const GpuScene& gpuScene, DrawCounters& counters,
-                 const std::vector<std::uint32_t>* visibleItems = nullptr);
+                 const std::vector<std::uint32_t>* visibleItems = nullptr,
+                 const std::vector<glm::mat4>* previousWorld = nullptr);
     // Binds the targets to LIT_TEX_GBUFFER_* for the full-screen passes.
     void bindTargets() const;
 
@@ -40,6 +45,7 @@ public:
     const gl::Texture& normal() const { return targets_->normal; }
     const gl::Texture& material() const { return targets_->material; }
     const gl::Texture& nodeId() const { return targets_->nodeId; }
+    const gl::Texture& motion() const { return targets_->motion; }
     std::vector<gl::Program*> programs() override { return programs_.built(); }
 
 private:
@@ -53,7 +59,7 @@ private:
         std::string label() const { return " (textures " + std::to_string(mask) + ")"; }
     };
     struct Targets {
-        gl::Texture albedo, normal, material, emissive, nodeId, layers, depth;
+        gl::Texture albedo, normal, material, emissive, nodeId, layers, motion, depth;
         gl::Framebuffer framebuffer;
         int width = 0, height = 0;
     };

@@ -70,7 +70,8 @@ glm::vec2 TemporalAntialiasPass::begin(const RenderSettings& settings, const Fra
     const Targets& t = targets_.current();
     const bool history =
         t.generation == generation_ && t.width == settings.output.width && t.height == settings.output.height;
-    moved_ = history && t.viewProjection != frame.viewProjection;
+    nodesMoved_ = history && frame.nodesMoved;
+    moved_ = history && (t.viewProjection != frame.viewProjection || nodesMoved_);
     // A still history holds only still samples: it starts again when the camera stops.
     restart_ = !history || (!moved_ && (frame.changed || movedLast_));
     if (restart_) sample_ = 0;
@@ -84,7 +85,7 @@ void TemporalAntialiasPass::reset() {
 }
 
 void TemporalAntialiasPass::execute(const RenderSettings& settings, const gl::Texture& hdr, const gl::Texture& depth,
-                                    bool giChanged) {
+                                    const gl::Texture& motion, bool giChanged) {
     const int width = settings.output.width, height = settings.output.height;
     if (targets_.select(width, height) == TargetsBySize<Targets>::Selected::Empty) {
         Targets& t = targets_.current();
@@ -93,6 +94,9 @@ void TemporalAntialiasPass::execute(const RenderSettings& settings, const gl::Te
             t.history[i].setFilter(GL_NEAREST, GL_NEAREST);
             t.framebuffer[i] = gl::Framebuffer::withColours("anti-aliasing history", {&t.history[i]});
         }
+        t.depth =
+            gl::Texture("anti-aliasing history depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, 1});
+        t.depth.setFilter(GL_NEAREST, GL_NEAREST);
     }
     Targets& t = targets_.current();
     // Moving, the history is reprojected and clamped, which also bounds what a change leaves
@@ -106,6 +110,8 @@ void TemporalAntialiasPass::execute(const RenderSettings& settings, const gl::Te
     const auto showHistory = [&] {
         glCopyImageSubData(t.history[t.current].id(), GL_TEXTURE_2D, 0, 0, 0, 0, hdr.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                            width, height, 1);
+        glCopyImageSubData(depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, t.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, width,
+                           height, 1);
         t.viewProjection = viewProjection_;
         t.generation = generation_;
         ++sample_;
@@ -129,6 +135,11 @@ void TemporalAntialiasPass::execute(const RenderSettings& settings, const gl::Te
     if (&program == &moving_) {
         moving_.set("uViewProjection", glm::value_ptr(viewProjection_));
         moving_.set("uPreviousViewProjection", glm::value_ptr(t.viewProjection));
+        moving_.set("uNodesMoved", nodesMoved_ ? 1 : 0);
+        const glm::mat4 previousInverse = glm::inverse(t.viewProjection);
+        moving_.set("uPreviousInverseViewProjection", glm::value_ptr(previousInverse));
+        motion.bind(LIT_TEX_GBUFFER_MOTION);
+        t.depth.bind(LIT_TEX_TAA_HISTORY_DEPTH);
     }
     hdr.bind(LIT_TEX_HDR_INPUT);
     depth.bind(LIT_TEX_GBUFFER_DEPTH);

@@ -10,12 +10,13 @@
 //
 // With the camera and the scene still, nothing is clamped: after N frames each pixel holds the
 // mean of N samples spread over its area, and later frames keep it (they would repeat the cycle). When the camera
-// moves, each pixel reads the history where its surface point was in the last frame (bilinear), clamped to the range of
-// this frame's 3 × 3 neighbourhood, so what the last frame saw elsewhere (a disocclusion, a moving node) does not
-// trail. With the camera still, a change of what is drawn (an edit, other settings, the GI's light while an update or
-// its refinement runs) starts the cycle and the history again: such a frame is drawn at the pixel centres and shown
-// alone, as without anti-aliasing, so an edit shows at once instead of fading in and light that converges over frames
-// is not blended with itself.
+// or a node moves, each pixel reads the history where its surface point was in the last frame (bilinear): the point
+// moved back by its node's motion (the G-buffer's motion target) and seen through the last frame's camera. It is
+// clamped to the range of this frame's 3 × 3 neighbourhood, so what the last frame saw elsewhere (a disocclusion, a
+// shadow that moved with its node) does not trail. With the camera and the nodes still, a change of what is drawn (an
+// edit, other settings, the GI's light while an update or its refinement runs) starts the cycle and the history
+// again: such a frame is drawn at the pixel centres and shown alone, as without anti-aliasing, so an edit shows at
+// once instead of fading in and light that converges over frames is not blended with itself.
 
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -48,14 +49,19 @@ public:
         // What is drawn changed since the last frame (the scene's revisions, the render settings),
         // or the GI's light was still changing in it.
         bool changed = false;
+        // Nodes moved since the last frame and nothing else changed in the scene (a node animation
+        // playing, a gizmo drag): the history follows them through the G-buffer's motion target.
+        bool nodesMoved = false;
     };
     // Before the frame is drawn: the offset it uses, in pixels ((0, 0) when the pass does not
     // apply, or when the camera is still and `frame.changed`: the cycle starts again).
     glm::vec2 begin(const RenderSettings& settings, const FrameStart& frame);
     // Blends `hdr` (the composite, RGBA32F, written back in place) with the history, reading
-    // `depth` (the G-buffer's, window space) for each pixel's point. `giChanged`: the GI's light
+    // `depth` (the G-buffer's, window space) for each pixel's point and, when begin() was told the
+    // nodes moved, `motion` (the G-buffer's) for how far it moved. `giChanged`: the GI's light
     // changed during this frame. Needs the frame UBO bound; after begin() for the same frame.
-    void execute(const RenderSettings& settings, const gl::Texture& hdr, const gl::Texture& depth, bool giChanged);
+    void execute(const RenderSettings& settings, const gl::Texture& hdr, const gl::Texture& depth,
+                 const gl::Texture& motion, bool giChanged);
     // The next frame starts without history and at the cycle's first sample (a new scene, a view
     // the pass does not apply to).
     void reset();
@@ -74,6 +80,7 @@ private:
         // composite's format, so the result is copied back into it whole.
         gl::Texture history[2];
         gl::Framebuffer framebuffer[2];
+        gl::Texture depth;               // the G-buffer's depth of the frame written last (DEPTH_COMPONENT32F)
         int current = 0;                 // the one written last
         glm::mat4 viewProjection{1.0f};  // the unjittered camera it was written with
         std::uint64_t generation = 0;    // 0: never written
@@ -86,6 +93,7 @@ private:
     // begin()'s decisions for execute().
     glm::mat4 viewProjection_{1.0f};
     bool moved_ = false, restart_ = true;
+    bool nodesMoved_ = false;
     bool movedLast_ = false;  // the last frame's camera had moved
 };
 

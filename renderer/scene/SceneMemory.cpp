@@ -21,8 +21,9 @@ namespace lit {
 namespace {
 
 // Per output pixel: the G-buffer, the lighting terms, the reduced-resolution indirect targets, the
-// output and its read-back copies (a 16384² render measured 17.5 GB, 65 bytes a pixel).
-constexpr std::uint64_t kTargetBytesPerPixel = 64;
+// output and its read-back copies (a 16384² render measured 17.5 GB, 65 bytes a pixel, before the
+// G-buffer's motion target and the anti-aliasing history's depth, 12 bytes more).
+constexpr std::uint64_t kTargetBytesPerPixel = 80;
 
 std::uint64_t saturatingAdd(std::uint64_t a, std::uint64_t b) {
     return a > std::numeric_limits<std::uint64_t>::max() - b ? std::numeric_limits<std::uint64_t>::max() : a + b;

@@ -5,4 +5,5 @@ in VertexData {
     vec3 worldNormal;
     vec4 uv;  // xy TEXCOORD_0, zw TEXCOORD_1
     vec4 worldTangent;
+    vec3 worldMotion;  // the world position minus the last frame's (gbuffer.vert.glsl, uPreviousModel)
 } fs;

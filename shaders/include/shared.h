@@ -39,6 +39,7 @@ using mat4 = glm::mat4;
 #define LIT_LOC_NODE_ID 3          // uint node index + 1 the G-buffer writes to its ID target (0 = background)
 #define LIT_LOC_UV_TRANSFORMS 4    // vec4[2 × LIT_MATERIAL_SLOTS] at 4 .. 31: texture transforms (material.glsl)
 #define LIT_LOC_PRIMITIVE 32       // uint primitive index within the node's mesh the G-buffer writes beside the node ID
+#define LIT_LOC_PREVIOUS_MODEL 33  // mat4 object → world in the last frame (the G-buffer's motion target)
 
 // ---- Texture units -----------------------------------------------------------------------
 // Material textures (G-buffer, shadow alpha test, voxelization).
@@ -64,6 +65,8 @@ using mat4 = glm::mat4;
 #define LIT_TEX_TERM_INDIRECT_SPECULAR 16
 #define LIT_TEX_DEBUG_INPUT 17       // whatever a debug view shows (shadow map layer, ...)
 #define LIT_TEX_TAA_HISTORY 17       // TemporalAntialiasPass: the last frames' resolved image (after the composite)
+#define LIT_TEX_TAA_HISTORY_DEPTH \
+    13  // ... and the depth it was drawn with (the unit of a lighting term, which the pass does not bind)
 // The voxel-levels view: each running volume's radiance, finest first (its pass binds nothing else
 // on the material units it reuses).
 #define LIT_TEX_DEBUG_LEVELS_FIRST 0
@@ -154,7 +157,10 @@ using mat4 = glm::mat4;
 // path leaves it (SheetPass, sheet.frag.glsl).
 #define LIT_TEX_SHEET_BEHIND (LIT_TEX_TRANSMISSION + 10)
 #define LIT_TEX_SHEET_BEHIND_DEPTH (LIT_TEX_TRANSMISSION + 11)  // and its depth (window space)
-#define LIT_TEX_UNIT_COUNT (LIT_TEX_SHEET_BEHIND_DEPTH + 1)     // units 0 .. this − 1 are bound (Capabilities.cpp)
+// The G-buffer's motion target (GBufferPass::motion): each point's world position minus where it
+// was in the last frame, in frames where nodes moved (TemporalAntialiasPass).
+#define LIT_TEX_GBUFFER_MOTION (LIT_TEX_SHEET_BEHIND_DEPTH + 1)
+#define LIT_TEX_UNIT_COUNT (LIT_TEX_GBUFFER_MOTION + 1)  // units 0 .. this − 1 are bound (Capabilities.cpp)
 
 // ---- Image units (image load/store) ------------------------------------------------------
 #define LIT_IMG_VOXEL_ALBEDO 0

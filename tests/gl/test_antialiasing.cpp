@@ -1,7 +1,9 @@
 // Temporal anti-aliasing (TemporalAntialiasPass) on the Cornell box with its direct light: the
 // first frame is the unjittered image, a still converges towards the reference's pixel-area mean,
-// and a moving camera reprojects its history instead of smearing it.
+// and a moving camera or a moving node reprojects its history instead of smearing it.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "GlTestSupport.h"
@@ -97,6 +99,46 @@ TEST_F(Antialiasing, AMovingCameraReprojectsItsHistory) {
     // image than one aliased frame is. History read at the old place would put every edge 2.5
     // pixels off, clamped to this frame's aliased neighbourhood.
     EXPECT_LT(movedError, 0.6 * aliasedError) << "moved " << movedError << ", aliased " << aliasedError;
+}
+
+// A node that moves while the camera stays (a node animation playing, a gizmo drag): the history
+// follows it through the G-buffer's motion target. After a settled still the short box moves 2.5
+// pixels sideways; the moved frame keeps its history (it does not start the cycle again, as an edit
+// does) and is nearer the settled image of the box's new place than one aliased frame is. Where
+// the box uncovered or covered the floor the history saw another surface and the frame is shown
+// alone, as aliased as without anti-aliasing; the box's shadow moves on the floor with no motion of
+// its own, which the clamp to the frame's neighbourhood bounds. Measured: 0.75 of the aliased
+// frame's error (0.64 with shadows off); history read at the pixel's own place (the camera's motion
+// alone) 1.63, kept where the box uncovered the floor 1.17, started again (as before nodes had
+// their motion) 1.0. Bar: 0.85.
+TEST_F(Antialiasing, AMovingNodeKeepsItsHistory) {
+    Scene scene = loadCornellBox();
+    const RenderSettings on = settingsFor(true), off = settingsFor(false);
+    const CameraView camera = cameraFor(scene, on);
+    const auto box =
+        std::find_if(scene.nodes.begin(), scene.nodes.end(), [](const Node& n) { return n.name == "short_box"; });
+    ASSERT_NE(box, scene.nodes.end());
+    const float distance = glm::length(camera.position - box->translation);
+    const float pixel = 2.0f * distance / (camera.projection[1][1] * on.output.height);
+    const glm::vec3 right = glm::vec3(glm::inverse(camera.view)[0]);
+
+    renderer_->setScene(scene);
+    renderFrom(scene, camera, on, on.output.antialiasingFrames);
+    box->translation += right * 2.5f * pixel;
+    scene.updateWorldTransforms();
+    ++scene.geometryRevision;
+    const HdrImage moved = renderFrom(scene, camera, on, 1);
+    EXPECT_GT(renderer_->stats().antialiasFrames, 1) << "the move started the history again";
+    renderer_->setScene(scene);
+    const HdrImage settled = renderFrom(scene, camera, on, on.output.antialiasingFrames);
+    renderer_->setScene(scene);
+    const HdrImage aliased = renderFrom(scene, camera, off, 1);
+    const double movedError = relativeRms(moved, settled.rgb), aliasedError = relativeRms(aliased, settled.rgb);
+    RecordProperty("moved_rms_percent", std::to_string(100.0 * movedError));
+    RecordProperty("aliased_rms_percent", std::to_string(100.0 * aliasedError));
+    std::printf("a node moved 2.5 pixels: moved frame %.2f %%, one aliased frame %.2f %% from the settled image\n",
+                100.0 * movedError, 100.0 * aliasedError);
+    EXPECT_LT(movedError, 0.85 * aliasedError) << "moved " << movedError << ", aliased " << aliasedError;
 }
 
 }  // namespace

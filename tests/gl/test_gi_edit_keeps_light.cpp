@@ -26,6 +26,9 @@ protected:
         settings.gi.voxelResolution = 64;
         settings.debug.view = View::IndirectDiffuse;
         settings.indirect.temporalAccumulation = false;
+        // Each frame's own light: the anti-aliasing blends a moved node's first frame with the
+        // last ones (its own tests: test_antialiasing.cpp).
+        settings.output.antialiasing = false;
         return settings;
     }
     HdrImage frame(const Scene& scene, const CameraView& camera, const RenderSettings& settings,

@@ -97,7 +97,7 @@ TEST(SceneMemory, RenderSettingsAddVoxelsRayHitsAndTargets) {
     settings.gi.nearLevels = 0;
     const RenderFootprint footprint = RenderFootprint::of(settings);
     const SceneMemory memory = estimateSceneMemory(Scene{}, footprint);
-    EXPECT_EQ(memory.targets, 640u * 360 * 64);
+    EXPECT_EQ(memory.targets, 640u * 360 * 80);
     EXPECT_EQ(memory.voxels, voxelVolumeBytes(64, false, true));
     EXPECT_EQ(memory.rayHits, 64u * 64 * 64 * 2 * 16 * 4);  // every voxel, both sides, 16 rays
     settings.gi.nearLevels = 2;  // two more volumes like it, each with its ray hits
