@@ -3,6 +3,7 @@
 // "Octree-Based Sparse Voxelization Using the GPU Hardware Rasterizer", OpenGL Insights ch. 22).
 #include "shared.h"
 #include "bfloat.glsl"
+#include "octahedral.glsl"
 
 layout(std140, binding = LIT_UBO_VOXEL) uniform VoxelBlock {
     VoxelUniforms voxel;
@@ -46,19 +47,12 @@ vec3 unpackAveragedNormal(uint bits) { return unpackVoxel(bits).xyz * 2.0 - 1.0;
 //   coordinate), 31 set (0 everywhere else: one-sided voxels, no slab found).
 const uint kSidesSplit = 0x80000000u;
 uvec2 packSides(vec3 axis, vec3 delta) {
-    axis /= abs(axis.x) + abs(axis.y) + abs(axis.z);
-    vec2 signs = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(axis.xy, vec2(0.0)));
-    vec2 oct = axis.z >= 0.0 ? axis.xy : (1.0 - abs(axis.yx)) * signs;
-    uvec2 q = uvec2(round(clamp(oct * 0.5 + 0.5, 0.0, 1.0) * 127.0));
+    uvec2 q = uvec2(round(clamp(octEncode(axis) * 0.5 + 0.5, 0.0, 1.0) * 127.0));
     return uvec2(packHalf2x16(delta.rg), (packHalf2x16(vec2(delta.b, 0.0)) & 0xffffu) | (q.x << 16u) | (q.y << 23u) |
                                              kSidesSplit);
 }
 vec3 unpackSidesAxis(uint y) {
-    vec2 e = vec2(float((y >> 16u) & 127u), float((y >> 23u) & 127u)) / 127.0 * 2.0 - 1.0;
-    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
-    float t = max(-n.z, 0.0);
-    n.xy += mix(vec2(t), vec2(-t), greaterThanEqual(n.xy, vec2(0.0)));
-    return normalize(n);
+    return octDecode(vec2(float((y >> 16u) & 127u), float((y >> 23u) & 127u)) / 127.0 * 2.0 - 1.0);
 }
 // The radiance a ray along `dir` sees where it ends in a voxel whose volume holds `stored` (decoded)
 // and whose sides texel is `sides`.
