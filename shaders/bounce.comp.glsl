@@ -402,12 +402,21 @@ uvec3 patternCoord(ivec3 v) {
 #endif
 }
 
+// Ray i's direction in voxel v's pattern (rayIrradiance): `shift` is v's shift, `frame` its side's.
+vec3 patternRay(int i, int rays, int set, vec2 shift, mat3 frame) {
+    float u1 = (float(i) + (float(set) + shift.x) / float(kConeSetCount)) / float(rays);
+    float phi = 6.28318530718 * fract(radicalInverse(uint(i)) + float(set) / float(kConeSetCount) + shift.y);
+    float r = sqrt(u1);
+    return frame * vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u1, 0.0)));
+}
+
 vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
     mat3 frame = tangentFrame(normal);
     int rays = max(uVoxelRays, 1);
     uvec3 p = patternCoord(v);
     uint hash = pcgHash(p.x + pcgHash(p.y + pcgHash(p.z)));
     vec2 shift = vec2(float(hash & 0xffffu), float(hash >> 16u)) / 65536.0;
+    uint firstSlot = (gListIndex * 2u + uint(side)) * uint(rays);
     vec3 sum = vec3(0.0);
     // A change gathers ray i = stride·j + (j + subset) mod stride, j = 0 .. rays/stride − 1: every
     // stride-th sin²θ stratum, and (rays being a Hammersley set, whose azimuth is the radical
@@ -420,17 +429,31 @@ vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
     int subset = change ? (uChangeSubset + int((hash >> 7u) & 0xffu)) % stride : 0;
 #endif
     int count = max(rays / stride, 1);
+    // A replay whose recorded hits all hold (no box changed since) has loops of its own that march
+    // nothing: a SIMD compiler (llvmpipe) runs every path of a loop's body whatever its branches
+    // take, so the general loop below paid for a march, the change test and (in a change gather)
+    // the whole radiance's reads on every ray. Sun room, 128³: a light edit's update in half the time
+    // (docs/PERFORMANCE.md, "GI update").
+    if (rayHitMode() == 2 && gRecordedEpoch >= uRayEpoch) {
+#if !LIT_BOUNCE_IRRADIANCE
+        if (change) {
+            for (int j = 0; j < count; ++j)
+                sum += rayHitChange(rayHits[firstSlot + uint(stride * j + (j + subset) % stride)]);
+            return sum / float(count);
+        }
+#endif
+        for (int i = 0; i < rays; ++i)
+            sum += rayHitRadiance(rayHits[firstSlot + uint(i)], origin, patternRay(i, rays, set, shift, frame));
+        return sum / float(rays);
+    }
     for (int j = 0; j < count; ++j) {
         int i = stride * j + (j + subset) % stride;
-        float u1 = (float(i) + (float(set) + shift.x) / float(kConeSetCount)) / float(rays);
-        float phi = 6.28318530718 * fract(radicalInverse(uint(i)) + float(set) / float(kConeSetCount) + shift.y);
-        float r = sqrt(u1);
-        vec3 dir = frame * vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u1, 0.0)));
-        uint slot = (gListIndex * 2u + uint(side)) * uint(rays) + uint(i);
+        vec3 dir = patternRay(i, rays, set, shift, frame);
+        uint slot = firstSlot + uint(i);
         uint hit;
         if (rayHitMode() == 2) {
             hit = rayHits[slot];
-            if (gRecordedEpoch < uRayEpoch && (gVoxelChanged || rayCrossesChange(origin, dir, hit))) {
+            if (gVoxelChanged || rayCrossesChange(origin, dir, hit)) {
                 hit = marchVoxelRay(origin, dir);
                 rayHits[slot] = hit;
             }
