@@ -2,9 +2,10 @@
 // A near level scrolled by uShift voxels (VoxelScrollPass): a voxel at v moves to v − uShift. Only
 // listed voxels hold anything in the per-voxel volumes (the voxelization lists every voxel it
 // writes; injection, bounces, irradiance and its filter write listed voxels only), so the move
-// runs over the occupied-voxel list, in two dispatches: uPhase 0 lifts each entry's texels into
-// the scratch buffer and zeroes them at the old place, uPhase 1 writes them at the new one. An
-// entry whose voxel left the volume writes nothing: its texels stay zero.
+// runs over the occupied-voxel list, in two dispatches of two programs: LIT_SCROLL_PHASE 0 lifts
+// each entry's texels into the scratch buffer and zeroes them at the old place, LIT_SCROLL_PHASE 1
+// writes them at the new one. An entry whose voxel left the volume writes nothing: its texels stay
+// zero.
 //
 // LIT_SCROLL_WRITTEN 0: the material volumes, level 0 of the radiance, its sides and the texels the
 // pixels gather; phase 1 also gives each entry its voxel's new coordinates, in place (the progress of an
@@ -42,7 +43,6 @@ layout(binding = LIT_IMG_VOXEL_SIDES, rg32ui) uniform uimage3D sides;
 
 uniform uint uEntries;  // entries stored: min(count, capacity)
 uniform ivec3 uShift;   // voxels, |uShift| < N along each axis
-uniform int uPhase;     // 0 lift, 1 place
 
 void main() {
     uint index = gl_WorkGroupID.x * uint(LIT_INJECT_LIST_GROUP_SIZE) + gl_LocalInvocationIndex;
@@ -50,37 +50,36 @@ void main() {
     int n = int(voxel.voxelInfo.x);
     ivec3 v = unpackVoxelCoord(occupiedVoxels[index]);
     uint slot = index * uint(LIT_SCROLL_SAVED_TEXELS);
-    if (uPhase == 0) {
+#if LIT_SCROLL_PHASE == 0
 #if LIT_SCROLL_WRITTEN
-        ivec3 back = v + ivec3(0, 0, n);
-        saved[slot] = floatBitsToUint(imageLoad(traced, v));
-        saved[slot + 1u] = floatBitsToUint(imageLoad(traced, back));
-        imageStore(traced, v, vec4(0.0));
-        imageStore(traced, back, vec4(0.0));
-        if (uHasBounce) {
-            saved[slot + 2u] = floatBitsToUint(imageLoad(bounce, v));
-            imageStore(bounce, v, vec4(0.0));
-        }
-        if (uHasWrittenTexels) {
-            saved[slot + 3u] = imageLoad(writtenTexels, v);
-            imageStore(writtenTexels, v, uvec4(0u));
-        }
-#else
-        saved[slot] = uvec4(imageLoad(albedo, v).r, imageLoad(normal, v).r, imageLoad(emission, v).r,
-                            imageLoad(surface, v).r);
-        saved[slot + 1u] = floatBitsToUint(imageLoad(radiance, v));
-        saved[slot + 2u] = imageLoad(shownTexels, v);
-        saved[slot + 3u] = uvec4(imageLoad(sides, v).xy, 0u, 0u);
-        imageStore(albedo, v, uvec4(0u));
-        imageStore(normal, v, uvec4(0u));
-        imageStore(emission, v, uvec4(0u));
-        imageStore(surface, v, uvec4(0u));
-        imageStore(radiance, v, vec4(0.0));
-        imageStore(shownTexels, v, uvec4(0u));
-        imageStore(sides, v, uvec4(0u));
-#endif
-        return;
+    ivec3 back = v + ivec3(0, 0, n);
+    saved[slot] = floatBitsToUint(imageLoad(traced, v));
+    saved[slot + 1u] = floatBitsToUint(imageLoad(traced, back));
+    imageStore(traced, v, vec4(0.0));
+    imageStore(traced, back, vec4(0.0));
+    if (uHasBounce) {
+        saved[slot + 2u] = floatBitsToUint(imageLoad(bounce, v));
+        imageStore(bounce, v, vec4(0.0));
     }
+    if (uHasWrittenTexels) {
+        saved[slot + 3u] = imageLoad(writtenTexels, v);
+        imageStore(writtenTexels, v, uvec4(0u));
+    }
+#else
+    saved[slot] = uvec4(imageLoad(albedo, v).r, imageLoad(normal, v).r, imageLoad(emission, v).r,
+                        imageLoad(surface, v).r);
+    saved[slot + 1u] = floatBitsToUint(imageLoad(radiance, v));
+    saved[slot + 2u] = imageLoad(shownTexels, v);
+    saved[slot + 3u] = uvec4(imageLoad(sides, v).xy, 0u, 0u);
+    imageStore(albedo, v, uvec4(0u));
+    imageStore(normal, v, uvec4(0u));
+    imageStore(emission, v, uvec4(0u));
+    imageStore(surface, v, uvec4(0u));
+    imageStore(radiance, v, vec4(0.0));
+    imageStore(shownTexels, v, uvec4(0u));
+    imageStore(sides, v, uvec4(0u));
+#endif
+#else
     ivec3 moved = v - uShift;
     bool kept = all(greaterThanEqual(moved, ivec3(0))) && all(lessThan(moved, ivec3(n)));
 #if LIT_SCROLL_WRITTEN
@@ -104,5 +103,6 @@ void main() {
     occupiedVoxels[index] = packVoxelCoord(w);
     uint voxelIndex = uint(w.x) + uint(n) * (uint(w.y) + uint(n) * uint(w.z));
     atomicOr(listedBits[voxelIndex >> 5u], 1u << (voxelIndex & 31u));
+#endif
 #endif
 }

@@ -33,12 +33,12 @@ public:
     std::vector<gl::Program*> programs() override;
 
 private:
-    // The program for the texels kept or written (LIT_SCROLL_WRITTEN) in the radiance format, built
-    // on first use.
-    const gl::Program& program(bool written, bool rgba8);
+    // The program for the texels kept or written (LIT_SCROLL_WRITTEN) in the radiance format, for
+    // the phase (LIT_SCROLL_PHASE 0 lift, 1 place), built on first use.
+    const gl::Program& program(bool written, bool rgba8, int phase);
 
     std::filesystem::path shaderRoot_;
-    gl::Program programs_[2][2];  // [written][rgba8]
+    gl::Program programs_[2][2][2];  // [written][rgba8][phase]
     gl::Buffer saved_;            // LIT_SSBO_VOXEL_SCROLL, grown to the list
 };
 
