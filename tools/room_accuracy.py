@@ -19,9 +19,11 @@ column:
   RMSE − noise  √(RMSE² − σ²): the image's RMSE against the noise-free truth, the reference's
              noise taken out of it; and the first line says σ, and what a reference with a quarter
              of the samples would score (2σ: noise falls as 1/√samples).
-With --nodes (lit-render --reference --node-map: the node each pixel sees), a second table follows
-a blank line: per surface (scene node with at least 40 of those pixels), each image's mean ÷ the
-reference's there.
+With --nodes (lit-render --reference --node-map: the node each pixel sees), two more tables follow,
+each after a blank line, per surface (scene node with at least 40 of those pixels): each image's
+mean ÷ the reference's there, and the blotches within the surface (as above, with the level
+matched and the filter run over the surface's pixels alone), which tell a cloud-like blotch on a
+wall from light that differs between surfaces.
 Prints a line on the pixels compared, then one markdown table row per image.
 """
 
@@ -150,6 +152,28 @@ def main():
                 continue
             ref = reference[surface].mean()
             cells = [f"{image[surface].mean() / ref:.2f}" if image.shape == reference.shape else "" for _, image in images]
+            print(f"| {names[index]} | {surface.sum()} | " + " | ".join(cells) + " |")
+        print()
+        print("Per surface, blotches within it: each image scaled to the reference's mean over the surface's pixels, "
+              "both box-filtered 7 × 7 over those pixels alone, the RMS of the difference ÷ the reference's mean "
+              "there (light that differs from surface to surface, the table above, does not count; a gradient "
+              "across the surface that differs does):")
+        print()
+        print("| surface | pixels | " + " | ".join(name for name, _ in images) + " |")
+        print("|---|---:|" + "---:|" * len(images))
+        for index in sorted(names):
+            surface = mask & (nodes == index)
+            if surface.sum() < 40:
+                continue
+            ref = reference[surface].mean()
+            ref_surface_smooth = box_filter(reference, surface, 3)
+            cells = []
+            for _, image in images:
+                if image.shape != reference.shape:
+                    cells.append("")
+                    continue
+                smooth = box_filter(image * (ref / max(image[surface].mean(), 1e-12)), surface, 3)
+                cells.append(f"{100 * np.sqrt(((smooth - ref_surface_smooth)[surface] ** 2).mean()) / ref:.1f} %")
             print(f"| {names[index]} | {surface.sum()} | " + " | ".join(cells) + " |")
 
 
