@@ -430,10 +430,9 @@ vec3 rayIrradiance(ivec3 v, vec3 origin, vec3 normal, int set, int side) {
 #endif
     int count = max(rays / stride, 1);
     // A replay whose recorded hits all hold (no box changed since) has loops of its own that march
-    // nothing: a SIMD compiler (llvmpipe) runs every path of a loop's body whatever its branches
-    // take, so the general loop below paid for a march, the change test and (in a change gather)
-    // the whole radiance's reads on every ray. Sun room, 128³: a light edit's update in half the time
-    // (docs/PERFORMANCE.md, "GI update").
+    // nothing: llvmpipe runs every path of a loop's body whatever its branches take, so in the
+    // general loop below every replayed ray paid for a march, the change test and (in a change
+    // gather) the whole radiance's reads (docs/PERFORMANCE.md, "llvmpipe").
     if (rayHitMode() == 2 && gRecordedEpoch >= uRayEpoch) {
 #if !LIT_BOUNCE_IRRADIANCE
         if (change) {

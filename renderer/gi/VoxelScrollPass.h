@@ -39,7 +39,7 @@ private:
 
     std::filesystem::path shaderRoot_;
     gl::Program programs_[2][2][2];  // [written][rgba8][phase]
-    gl::Buffer saved_;            // LIT_SSBO_VOXEL_SCROLL, grown to the list
+    gl::Buffer saved_;               // LIT_SSBO_VOXEL_SCROLL, grown to the list
 };
 
 }  // namespace lit
