@@ -4,9 +4,10 @@
 # Renders it with Lit's defaults (the editor's converged image), with Lit's defaults and a given
 # bounce count, and with Lit's reference path tracer (every bounce), and compares each, and the
 # committed Cycles renders, with Cycles' render of the same file (every bounce) over the pixels lit
-# only by bounced light (tools/room_accuracy.py explains the columns), and times the room at
-# 1280×720: GI on against off, and a light edit's update. Writes docs/tables/room-accuracy.md,
-# headed by the date, the commit and the machine.
+# only by bounced light (tools/room_accuracy.py explains the columns), renders the room with every
+# material Lambertian (Lit's defaults and its reference) against Cycles' Diffuse BSDF render, and
+# times the room at 1280×720: GI on against off, and a light edit's update. Writes
+# docs/tables/room-accuracy.md, headed by the date, the commit and the machine.
 #
 # Usage: tools/room-accuracy.sh     (a built lit-render; python3 with numpy: install-deps.sh --scene-tools)
 # Environment (all optional):
@@ -44,6 +45,28 @@ ref_seconds=$(( $(date +%s) - start ))
 quiet "$render" "$scene" --size "$size" --reference --bounces all --spp "$spp" --seed 2 --hdr "$tmp/ref2.hdr" --out "$tmp/ref2.png"
 # Which surface each pixel sees, for the per-surface tables.
 quiet "$render" "$scene" --size "$size" --reference --spp 1 --node-map "$tmp/nodes.txt" --out "$tmp/nodes.png"
+# The room with every material Lambertian, as Cycles' Diffuse BSDF render has it: no specular layer
+# (KHR_materials_specular factor 0) and no metal (the gold sphere a diffuse gold). Lit's defaults and
+# its reference against that render tell the reference's transport from its BRDF, and Lit's diffuse
+# transport from what its voxels make of specular light (the metal sphere's reflected sun).
+mkdir -p "$tmp/lambert"
+cp "$scene_dir"/*.bin "$tmp/lambert/"
+"$python" - "$scene" "$tmp/lambert/sun_room.gltf" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+for material in scene.get("materials", []):
+    material.setdefault("extensions", {})["KHR_materials_specular"] = {"specularFactor": 0.0}
+    material.setdefault("pbrMetallicRoughness", {})["metallicFactor"] = 0.0
+used = scene.setdefault("extensionsUsed", [])
+if "KHR_materials_specular" not in used:
+    used.append("KHR_materials_specular")
+json.dump(scene, open(sys.argv[2], "w"))
+PY
+lambert="$tmp/lambert/sun_room.gltf"
+quiet "$render" "$lambert" --size "$size" --gi off --hdr "$tmp/lambert-direct.hdr" --out "$tmp/lambert-direct.png"
+quiet "$render" "$lambert" --size "$size" --voxels "$voxels" --hdr "$tmp/lambert-lit.hdr" --out "$tmp/lambert-lit.png"
+quiet "$render" "$lambert" --size "$size" --reference --bounces all --spp "$spp" --hdr "$tmp/lambert-ref.hdr" \
+    --out "$tmp/lambert-ref.png"
 
 # The cost at the editor's size, 1280×720: ROOM_COST_ROUNDS interleaved rounds of GI off and the
 # defaults, each the single-frame steady state benchmarks time (docs/PERFORMANCE.md, "The GI budget
@@ -112,6 +135,10 @@ rows_ref="$("$python" "$root/tools/room_accuracy.py" "$tmp/direct.hdr" "$tmp/ref
     "Lit, defaults (${voxels}³, converged)=$tmp/lit.hdr" \
     "Lit, one frame's GI (--single-frame)=$tmp/lit1f.hdr" \
     "Lit reference, second seed=$tmp/ref2.hdr")"
+rows_lambert="$("$python" "$root/tools/room_accuracy.py" "$tmp/lambert-direct.hdr" "$scene_dir/sun_room_cycles_diffuse.hdr" \
+    --nodes "$tmp/nodes.txt" \
+    "Lit, defaults (${voxels}³, converged)=$tmp/lambert-lit.hdr" \
+    "Lit reference, every bounce, ${spp} spp=$tmp/lambert-ref.hdr")"
 # Lit's own sampling noise: one frame's GI against the refined still (each voxel's 16 ray sets).
 rows_self="$("$python" "$root/tools/room_accuracy.py" "$tmp/direct.hdr" "$tmp/lit.hdr" \
     "Lit, one frame's GI (--single-frame)=$tmp/lit1f.hdr")"
@@ -144,6 +171,13 @@ mkdir -p "$(dirname "$out")"
     echo "| image | mean ÷ reference | RMSE | blotches (7×7 box, level matched) | RMSE − the reference's noise |"
     echo "|---|---:|---:|---:|---:|"
     echo "$rows_ref" | tail -n +2
+    echo
+    echo "Every material Lambertian (the scene with KHR_materials_specular factor 0 and metallic 0, the gold"
+    echo "sphere a diffuse gold) against Cycles' Diffuse BSDF render, $(echo "$rows_lambert" | head -1):"
+    echo
+    echo "| image | mean ÷ Cycles | RMSE | blotches (7×7 box, level matched) |"
+    echo "|---|---:|---:|---:|"
+    echo "$rows_lambert" | tail -n +2
     echo
     echo "Lit's own sampling noise: against Lit's defaults (converged, every voxel's 16 ray sets), $(echo "$rows_self" | head -1):"
     echo
