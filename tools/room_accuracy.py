@@ -140,42 +140,35 @@ def main():
         print(row)
     if node_map is not None:
         names, nodes = node_map
-        print()
-        print("Per surface (scene node): each image's mean ÷ the reference's over the surface's pixels lit only by "
-              "bounced light (surfaces with at least 40):")
-        print()
-        print("| surface | pixels | " + " | ".join(name for name, _ in images) + " |")
-        print("|---|---:|" + "---:|" * len(images))
-        for index in sorted(names):
-            surface = mask & (nodes == index)
-            if surface.sum() < 40:
-                continue
-            ref = reference[surface].mean()
-            cells = [f"{image[surface].mean() / ref:.2f}" if image.shape == reference.shape else "" for _, image in images]
-            print(f"| {names[index]} | {surface.sum()} | " + " | ".join(cells) + " |")
-        print()
-        print("Per surface, blotches within it: each image scaled to the reference's mean over the surface's pixels, "
-              "both box-filtered 7 × 7 over those pixels alone, the RMS of the difference ÷ the reference's mean "
-              "there (light that differs from surface to surface, the table above, does not count; a gradient "
-              "across the surface that differs does):")
-        print()
-        print("| surface | pixels | " + " | ".join(name for name, _ in images) + " |")
-        print("|---|---:|" + "---:|" * len(images))
-        for index in sorted(names):
-            surface = mask & (nodes == index)
-            if surface.sum() < 40:
-                continue
-            ref = reference[surface].mean()
-            ref_surface_smooth = box_filter(reference, surface, 3)
-            cells = []
-            for _, image in images:
-                if image.shape != reference.shape:
-                    cells.append("")
-                    continue
-                smooth = box_filter(image * (ref / max(image[surface].mean(), 1e-12)), surface, 3)
-                cells.append(f"{100 * np.sqrt(((smooth - ref_surface_smooth)[surface] ** 2).mean()) / ref:.1f} %")
-            print(f"| {names[index]} | {surface.sum()} | " + " | ".join(cells) + " |")
 
+        def surface_table(caption, cell):
+            """Prints `caption`, then a row per surface of at least 40 pixels: cell(image, surface, ref_mean)."""
+            print()
+            print(caption)
+            print()
+            print("| surface | pixels | " + " | ".join(name for name, _ in images) + " |")
+            print("|---|---:|" + "---:|" * len(images))
+            for index in sorted(names):
+                surface = mask & (nodes == index)
+                if surface.sum() < 40:
+                    continue
+                ref = reference[surface].mean()
+                cells = [cell(image, surface, ref) if image.shape == reference.shape else "" for _, image in images]
+                print(f"| {names[index]} | {surface.sum()} | " + " | ".join(cells) + " |")
+
+        surface_table("Per surface (scene node): each image's mean ÷ the reference's over the surface's pixels lit "
+                      "only by bounced light (surfaces with at least 40):",
+                      lambda image, surface, ref: f"{image[surface].mean() / ref:.2f}")
+
+        def blotches_within(image, surface, ref):
+            smooth = box_filter(image * (ref / max(image[surface].mean(), 1e-12)), surface, 3)
+            ref_smooth_here = box_filter(reference, surface, 3)
+            return f"{100 * np.sqrt(((smooth - ref_smooth_here)[surface] ** 2).mean()) / ref:.1f} %"
+
+        surface_table("Per surface, blotches within it: each image scaled to the reference's mean over the surface's "
+                      "pixels, both box-filtered 7 × 7 over those pixels alone, the RMS of the difference ÷ the "
+                      "reference's mean there (light that differs from surface to surface, the table above, does not "
+                      "count; a gradient across the surface that differs does):", blotches_within)
 
 if __name__ == "__main__":
     main()
