@@ -6,7 +6,7 @@
 // inner edges, and the sunlit outside's light in a closed room (docs/GI.md, "Solid voxels").
 //
 // Each column along y is walked up and down. Walking up, a surface facing down (its voxels'
-// averaged normal y < −kFaceY) is a way into a solid and one facing up a way out; walking down,
+// averaged normal y < −kSolidFaceY, voxelFaceY) is a way into a solid and one facing up a way out; walking down,
 // the other way round. An empty voxel is inside only when both walks say so, so a lone surface
 // (a ceiling made of one quad facing down) puts nothing inside: the walk from above never enters.
 // Faces buried back to back cancel in their voxels' averaged normal and change nothing, so two
@@ -19,9 +19,6 @@ layout(local_size_x = LIT_SOLID_VOXELS_GROUP_SIZE) in;
 layout(binding = LIT_IMG_VOXEL_NORMAL, r32ui) uniform readonly uimage3D voxelNormal;
 layout(std430, binding = LIT_SSBO_SOLID_VOXELS) buffer SolidVoxels { uint solidBits[]; };
 
-// A voxel's averaged normal y (−1..1, shorter where its faces disagree) past which it counts as
-// facing down or up: a room's inner edge (floor and wall, y ½) counts, a wall (y 0) does not.
-const float kFaceY = 0.25;
 
 // The columns to walk (SolidVoxelsPass): x in words of 32 columns, z in voxels, [min, end).
 uniform ivec2 uColumnMin, uColumnEnd;
@@ -32,11 +29,11 @@ uvec3 faceBits(int x0, int y, int z) {
     for (int i = 0; i < 32; ++i) {
         vec4 texel = unpackVoxel(imageLoad(voxelNormal, ivec3(x0 + i, y, z)).r);
         if (texel.a == 0.0) continue;
-        float ny = texel.y * 2.0 - 1.0;
+        int faceY = voxelFaceY(texel);
         uint bit = 1u << uint(i);
         bits.x |= bit;
-        if (ny < -kFaceY) bits.y |= bit;
-        if (ny > kFaceY) bits.z |= bit;
+        if (faceY < 0) bits.y |= bit;
+        if (faceY > 0) bits.z |= bit;
     }
     return bits;
 }

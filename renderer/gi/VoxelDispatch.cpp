@@ -11,10 +11,15 @@
 namespace lit {
 
 void dispatchOverVoxels(const VoxelVolume& volume, const gl::Program& program, bool overList) {
+    dispatchOverVoxels(volume, program, overList, volume.onlyBoxes());
+}
+
+void dispatchOverVoxels(const VoxelVolume& volume, const gl::Program& program, bool overList,
+                        std::span<const VoxelBox> onlyBoxes) {
     overList = overList && volume.occupiedList();
     glProgramUniform1i(program.id(), program.location("uFromList"), overList ? 1 : 0);
     glProgramUniform1ui(program.id(), program.location("uOccupiedCapacity"), volume.occupiedCapacity());
-    setBoxUniforms(program, "uOnlyBox", volume.onlyBoxes());
+    setBoxUniforms(program, "uOnlyBox", onlyBoxes);
     if (overList) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
         volume.occupiedList().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_OCCUPIED_VOXELS);

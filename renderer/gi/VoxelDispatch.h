@@ -25,6 +25,10 @@ struct VoxelRange {
 // voxelization) when `overList` and the volume has one, else over the whole grid. Sets the
 // program's uFromList and uOccupiedCapacity.
 void dispatchOverVoxels(const VoxelVolume& volume, const gl::Program& program, bool overList);
+// The same, limited to `onlyBoxes` (uOnlyBox*) instead of the volume's VoxelVolume::onlyBoxes
+// (empty: every voxel).
+void dispatchOverVoxels(const VoxelVolume& volume, const gl::Program& program, bool overList,
+                        std::span<const VoxelBox> onlyBoxes);
 
 // The list range `range` when `overList` and range.count > 0 (a direct dispatch sized for it),
 // else the whole list or grid as dispatchOverVoxels; for programs with LIT_VOXEL_LIST_RANGE_READER.

@@ -231,7 +231,8 @@ GiFrameReport VoxelGi::update(const Frame& frame, const RenderSettings& settings
             // columns through them (their whole height: a box can open or close a solid above or below it).
             Profiler::Scope scope(profiler_, step("solid voxels"));
             // After a scroll every column: the solid bits did not move.
-            solid_.execute(volume_, boxes && !scroll ? std::span<const VoxelBox>(*boxes) : std::span<const VoxelBox>());
+            solid_.execute(volume_, boxes ? std::span<const VoxelBox>(*boxes) : std::span<const VoxelBox>(),
+                           scroll ? SolidVoxelsPass::Columns::Every : SolidVoxelsPass::Columns::ThroughBoxes);
         }
         {
             // Once per voxelization: the mip chain is then built over these (light edits too).

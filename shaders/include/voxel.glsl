@@ -35,6 +35,23 @@ const float kOneSidedMinLength = 0.5;
 const float kDirectionMinLength = 0.05;
 vec3 unpackAveragedNormal(uint bits) { return unpackVoxel(bits).xyz * 2.0 - 1.0; }
 
+// The running averages' counts (averageRgbAdd) and the junction markers above them.
+const int kVoxelMaxCount = 250;
+const int kJunctionCount = 252;  // + 0: level, 1: facing down, 2: facing up (in the walk's terms)
+
+// How the solid mask's column walk (solid_voxels.comp.glsl) reads a normal texel: −1 a face
+// looking down (a way into a solid walking up), 1 one looking up, 0 neither (a wall, faces buried
+// back to back, empty). A junction made one-sided after the walk (buried_faces.comp.glsl) reads as
+// it did before, so a walk of some columns again gives what the whole walk gave.
+const float kSolidFaceY = 0.25;
+int voxelFaceY(vec4 texel) {
+    int count = int(texel.a * 255.0 + 0.5);
+    if (count >= kJunctionCount) return count == kJunctionCount + 1 ? -1 : (count == kJunctionCount + 2 ? 1 : 0);
+    if (count == 0) return 0;
+    float ny = texel.y * 2.0 - 1.0;
+    return ny < -kSolidFaceY ? -1 : (ny > kSolidFaceY ? 1 : 0);
+}
+
 // Sides. A two-sided voxel (faces back to back: a slab thinner than a voxel) sends each face's
 // direct light to that face's side only. The injection finds the axis of the slab it lies in
 // (inject.comp.glsl, twoSidedAxis) and stores in VoxelVolume::sides the half difference of its two
@@ -116,12 +133,14 @@ vec3 gatherTexelIrradiance(uvec4 t, bool otherSide) {
 }
 
 // The packed running average `current` with `value` (rgb in [0,1]) added. The alpha byte counts
-// the samples averaged so far (saturating at 255, after which it is a moving average).
+// the samples averaged so far, up to kVoxelMaxCount (after which it is a moving average); the
+// counts above it mark the normals of the junction voxels that buried_faces.comp.glsl made
+// one-sided, and keep how the solid mask's walk read them before (voxelFaceY).
 uint averageRgbAdd(uint current, vec3 value) {
     vec4 average = unpackUnorm4x8(current);
     float count = average.a * 255.0;
     vec3 sum = average.rgb * count + value;
-    return packUnorm4x8(vec4(sum / (count + 1.0), min(count + 1.0, 255.0) / 255.0));
+    return packUnorm4x8(vec4(sum / (count + 1.0), min(count + 1.0, float(kVoxelMaxCount)) / 255.0));
 }
 
 // Adds `value` (rgb in [0,1]) to the running average stored in `image` at `coord`, with a
