@@ -1,12 +1,12 @@
 #version 450 core
-// The voxels where two solids touch (SolidVoxelsPass, beside the solid voxels' walk): a wall standing on
-// a floor slab buries the slab's top under the wall's bottom, back to back, and the voxels along
-// the room's inner edge hold those two buried faces beside the visible floor and wall. Their
-// averaged normal keeps the visible faces' direction, but the buried pair shortens it below
-// kOneSidedMinLength, so the voxel reads as two-sided (a wall thinner than a voxel): it starts its
-// rays along the floor's or the wall's normal only, from the voxel centre, and one side in the
-// buried row or in the wall, where they meet back faces; such voxels took about half the light of
-// the room around them (a furnace room of touching slabs, docs/GI.md, "Solid voxels").
+// The voxels where two solids touch (SolidVoxelsPass, beside the solid voxels' walk): a wall
+// standing on a floor slab buries the slab's top under the wall's bottom, back to back, and the
+// voxels along the room's inner edge hold those two buried faces beside the visible floor and
+// wall. Their averaged normal keeps the visible faces' direction, but the buried pair shortens it
+// below kOneSidedMinLength, so the voxel reads as two-sided (a wall thinner than a voxel): it
+// starts its rays along the floor's or the wall's normal only, from the voxel centre, and one side
+// in the buried row or in the wall, where they meet back faces; such voxels took about half the
+// light of the room around them (docs/GI.md, "Solid voxels").
 //
 // Here a two-sided voxel with one-sided neighbours (of its 26) whose faces run through it and
 // agree on a side is such a junction: its normal becomes the mean of theirs, at full length (the
@@ -39,7 +39,8 @@ void main() {
         if (!listedVoxel(v)) return;
     } else {  // the list overflowed: over the grid, in groups of 8³
         uint i = gl_LocalInvocationIndex;
-        v = ivec3(gl_WorkGroupID * uint(LIT_INJECT_GROUP_SIZE) + uvec3(i & 7u, (i >> 3u) & 7u, i >> 6u));
+        uvec3 local = uvec3(i & 7u, (i >> 3u) & 7u, i >> 6u);
+        v = ivec3(gl_WorkGroupID * uint(LIT_INJECT_GROUP_SIZE) + local);
         if (!inOnlyBoxes(v)) return;
     }
     int n = int(voxel.voxelInfo.x);

@@ -46,7 +46,10 @@ const int kJunctionCount = 252;  // + 0: level, 1: facing down, 2: facing up (in
 const float kSolidFaceY = 0.25;
 int voxelFaceY(vec4 texel) {
     int count = int(texel.a * 255.0 + 0.5);
-    if (count >= kJunctionCount) return count == kJunctionCount + 1 ? -1 : (count == kJunctionCount + 2 ? 1 : 0);
+    if (count >= kJunctionCount) {
+        int marker = count - kJunctionCount;
+        return marker == 1 ? -1 : (marker == 2 ? 1 : 0);
+    }
     if (count == 0) return 0;
     float ny = texel.y * 2.0 - 1.0;
     return ny < -kSolidFaceY ? -1 : (ny > kSolidFaceY ? 1 : 0);
