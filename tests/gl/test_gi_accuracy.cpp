@@ -295,6 +295,24 @@ TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
     }
 }
 
+// A closed box of `material` from `lo` to `hi` (m).
+void addBoxNode(Scene& scene, const char* name, glm::vec3 lo, glm::vec3 hi, int material) {
+    addMeshNode(scene, makeBoxMesh(name, hi - lo, material), 0.5f * (lo + hi));
+}
+
+// The rooms of touching slabs below: a floor slab, a roof slab and the walls standing between
+// them, closed boxes kSlab thick around an inside kRoomWidth square and kRoomHeight high, the
+// inside from y = kSlab; the +z wall (x in ±kRoomWidth/2, z from kRoomWidth/2 out) is the test's.
+constexpr float kSlab = 0.3f, kRoomWidth = 4.0f, kRoomHeight = 2.6f;
+void addSlabRoom(Scene& scene, int material) {
+    const float t = kSlab, h = kRoomHeight, o = 0.5f * kRoomWidth + t, z = 0.5f * kRoomWidth;
+    addBoxNode(scene, "floor", {-o, 0.0f, -o}, {o, t, o}, material);
+    addBoxNode(scene, "roof", {-o, t + h, -o}, {o, 2 * t + h, o}, material);
+    addBoxNode(scene, "wall -x", {-o, t, -o}, {-z, t + h, o}, material);
+    addBoxNode(scene, "wall +x", {z, t, -o}, {o, t + h, o}, material);
+    addBoxNode(scene, "wall -z", {-z, t, -o}, {z, t + h, -z}, material);
+}
+
 // A room built as users build one in Blender: a floor slab, walls standing on it and a roof slab
 // resting on them, each a closed box 0.3 m thick that touches the next, lit by a sun through one
 // window, and the same room with the window closed by a box that touches its reveals. Where two
@@ -307,25 +325,18 @@ TEST_F(GiAccuracy, SealedRoomWithWallsAFractionOfItsConesWidthDoesNotLeak) {
 // room's light, 0.25 % with the insides marked alone, 3.1 % with neither (the sun room made in
 // Blender, closed the same way, at 128³: 1.0 % and 6.0 % without the edges). Bar: 1 %.
 TEST_F(GiAccuracy, ClosedWindowLetsNoLightAlongTheRoomsEdges) {
-    constexpr float t = 0.3f, w = 4.0f, h = 2.6f;        // slab thickness, inner width and height (m)
+    constexpr float t = kSlab, h = kRoomHeight;
     constexpr float x0 = -0.6f, x1 = 0.6f, y0 = 1.1f, y1 = 2.3f;  // the window in the +z wall
     const auto room = [&](bool closed) {
         Scene scene;
         const int white = addMaterial(scene, glm::vec3(0.8f), 0.8f, 0.0f, "white");
-        const auto box = [&](const char* name, glm::vec3 lo, glm::vec3 hi) {
-            addMeshNode(scene, makeBoxMesh(name, hi - lo, white), 0.5f * (lo + hi));
-        };
-        const float o = 0.5f * w + t, z = 0.5f * w;
-        box("floor", {-o, 0.0f, -o}, {o, t, o});
-        box("roof", {-o, t + h, -o}, {o, 2 * t + h, o});
-        box("wall -x", {-o, t, -o}, {-z, t + h, o});
-        box("wall +x", {z, t, -o}, {o, t + h, o});
-        box("wall -z", {-z, t, -o}, {z, t + h, -z});
-        box("window left", {-z, t, z}, {x0, t + h, o});
-        box("window right", {x1, t, z}, {z, t + h, o});
-        box("window below", {x0, t, z}, {x1, y0, o});
-        box("window above", {x0, y1, z}, {x1, t + h, o});
-        if (closed) box("window plug", {x0, y0, z}, {x1, y1, o});
+        addSlabRoom(scene, white);
+        const float o = 0.5f * kRoomWidth + t, z = 0.5f * kRoomWidth;
+        addBoxNode(scene, "window left", {-z, t, z}, {x0, t + h, o}, white);
+        addBoxNode(scene, "window right", {x1, t, z}, {z, t + h, o}, white);
+        addBoxNode(scene, "window below", {x0, t, z}, {x1, y0, o}, white);
+        addBoxNode(scene, "window above", {x0, y1, z}, {x1, t + h, o}, white);
+        if (closed) addBoxNode(scene, "window plug", {x0, y0, z}, {x1, y1, o}, white);
         addLightNode(scene, directionalLight(50.0f), {0.0f, 8.0f, 0.0f}, glm::normalize(glm::vec3(0.2f, -0.55f, -0.8f)));
         scene.updateWorldTransforms();
         return scene;
@@ -352,24 +363,17 @@ TEST_F(GiAccuracy, ClosedWindowLetsNoLightAlongTheRoomsEdges) {
 // started a side of their rays in the buried row (SolidVoxelsPass, buried_faces.comp.glsl).
 // Bar: within 2.5 % of 5e.
 TEST_F(GiAccuracy, FurnaceOfTouchingSlabsHoldsTheSeriesLimit) {
-    constexpr float t = 0.3f, w = 4.0f, h = 2.6f;  // slab thickness, inner width and height (m)
+    constexpr float t = kSlab, h = kRoomHeight;
     constexpr float albedo = 0.8f;
     Scene scene;
     const int glowing = addMaterial(scene, glm::vec3(albedo), 0.8f, 0.0f, "glowing");
     Material& material = scene.materials[std::size_t(glowing)];
     material.emissiveFactor = glm::vec3(1.0f);
     material.specularFactor = 0.0f;
-    const auto box = [&](const char* name, glm::vec3 lo, glm::vec3 hi) {
-        addMeshNode(scene, makeBoxMesh(name, hi - lo, glowing), 0.5f * (lo + hi));
-    };
-    const float o = 0.5f * w + t, z = 0.5f * w;
-    box("floor", {-o, 0.0f, -o}, {o, t, o});
-    box("roof", {-o, t + h, -o}, {o, 2 * t + h, o});
-    box("wall -x", {-o, t, -o}, {-z, t + h, o});
-    box("wall +x", {z, t, -o}, {o, t + h, o});
-    box("wall -z", {-z, t, -o}, {z, t + h, -z});
-    box("wall +z", {-z, t, z}, {z, t + h, o});
-    box("block", {-1.2f, t, -1.0f}, {-0.4f, t + 0.8f, -0.2f});  // standing on the floor
+    addSlabRoom(scene, glowing);
+    const float o = 0.5f * kRoomWidth + t, z = 0.5f * kRoomWidth;
+    addBoxNode(scene, "wall +z", {-z, t, z}, {z, t + h, o}, glowing);
+    addBoxNode(scene, "block", {-1.2f, t, -1.0f}, {-0.4f, t + 0.8f, -0.2f}, glowing);  // standing on the floor
     scene.updateWorldTransforms();
     const CameraView inside = lookAt({1.2f, 1.5f, 1.2f}, {-1.6f, 1.0f, -1.8f}, 1.0f, 1.4f);
     RenderSettings settings = defaultSettings(64, 48);
@@ -379,7 +383,8 @@ TEST_F(GiAccuracy, FurnaceOfTouchingSlabsHoldsTheSeriesLimit) {
     ASSERT_GT(t / renderer_->voxels()->voxelSize(), 2.5f) << "slabs must be more than two voxels thick";
     settings.gi.enabled = false;
     const HdrImage emission = renderFrom(scene, inside, settings);
-    const float ratio = luminance(meanOf(lit, 0.0f, 0.0f, 1.0f, 1.0f)) / luminance(meanOf(emission, 0.0f, 0.0f, 1.0f, 1.0f));
+    const float ratio =
+        luminance(meanOf(lit, 0.0f, 0.0f, 1.0f, 1.0f)) / luminance(meanOf(emission, 0.0f, 0.0f, 1.0f, 1.0f));
     const float exact = 1.0f / (1.0f - albedo);
     std::printf("furnace of touching slabs at 64³: %.4f × the emission (exact %.1f): %.4f of it\n", ratio, exact,
                 ratio / exact);
