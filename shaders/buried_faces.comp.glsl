@@ -45,8 +45,9 @@ void main() {
     }
     int n = int(voxel.voxelInfo.x);
     if (any(greaterThanEqual(v, ivec3(n)))) return;
-    vec4 texel = unpackVoxel(imageLoad(voxelNormal, v).r);
-    if (texel.a == 0.0 || length(texel.xyz * 2.0 - 1.0) >= kOneSidedMinLength) return;
+    uint bits = imageLoad(voxelNormal, v).r;
+    vec4 texel = unpackVoxel(bits);
+    if (texel.a == 0.0 || length(unpackAveragedNormal(bits)) >= kOneSidedMinLength) return;
     vec3 sum = vec3(0.0);
     float count = 0.0;
     for (int z = -1; z <= 1; ++z)
@@ -54,14 +55,13 @@ void main() {
             for (int x = -1; x <= 1; ++x) {
                 ivec3 c = v + ivec3(x, y, z);
                 if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(n)))) continue;
-                vec4 neighbour = unpackVoxel(imageLoad(voxelNormal, c).r);
-                vec3 averaged = neighbour.xyz * 2.0 - 1.0;
+                uint neighbour = imageLoad(voxelNormal, c).r;
+                vec3 averaged = unpackAveragedNormal(neighbour);
                 float agreement = length(averaged);
                 // Empty, two-sided (a thin wall, another junction, this voxel itself), or written
                 // by this pass.
-                if (neighbour.a == 0.0 || int(neighbour.a * 255.0 + 0.5) >= kJunctionCount ||
-                    agreement < kOneSidedMinLength)
-                    continue;
+                int fragments = voxelCount(unpackVoxel(neighbour));
+                if (fragments == 0 || fragments >= kJunctionCount || agreement < kOneSidedMinLength) continue;
                 // Only a face that runs through this voxel: the faces beside the voxels buried
                 // under a box (its sides, a voxel further out) do not, and those stay as they are.
                 vec3 m = averaged / agreement;
@@ -72,6 +72,6 @@ void main() {
             }
     if (count == 0.0 || length(sum) < kAgreement * count) return;
     vec3 side = normalize(sum);
-    int marker = kJunctionCount + (voxelFaceY(texel) < 0 ? 1 : (voxelFaceY(texel) > 0 ? 2 : 0));
-    imageStore(voxelNormal, v, uvec4(packUnorm4x8(vec4(side * 0.5 + 0.5, float(marker) / 255.0))));
+    float marker = float(junctionMarker(voxelFaceY(texel))) / 255.0;
+    imageStore(voxelNormal, v, uvec4(packUnorm4x8(vec4(side * 0.5 + 0.5, marker))));
 }

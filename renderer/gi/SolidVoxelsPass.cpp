@@ -31,6 +31,7 @@ void SolidVoxelsPass::execute(const VoxelVolume& volume, std::span<const VoxelBo
                                          std::min(box.max.z, n)));
         }
     }
+    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     if (hi.x > lo.x && hi.y > lo.y) walk(volume, lo, hi);
     findJunctions(volume, boxes);
 }
@@ -40,7 +41,6 @@ void SolidVoxelsPass::walk(const VoxelVolume& volume, glm::ivec2 lo, glm::ivec2 
     program_.use();
     glProgramUniform2i(program_.id(), program_.location("uColumnMin"), lo.x, lo.y);
     glProgramUniform2i(program_.id(), program_.location("uColumnEnd"), hi.x, hi.y);
-    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     volume.solidVoxels().bindBase(GL_SHADER_STORAGE_BUFFER, LIT_SSBO_SOLID_VOXELS);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     const int invocations = (hi.x - lo.x) * (hi.y - lo.y);
@@ -59,7 +59,6 @@ void SolidVoxelsPass::findJunctions(const VoxelVolume& volume, std::span<const V
         box.max = glm::min(box.max + 1, glm::ivec3(n));
     }
     buriedFaces_.use();
-    volume.uniforms().bindBase(GL_UNIFORM_BUFFER, LIT_UBO_VOXEL);
     glBindImageTexture(LIT_IMG_VOXEL_NORMAL, volume.normal().id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
     glBindImageTexture(LIT_IMG_VOXEL_SURFACE, volume.surface().id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     dispatchOverVoxels(volume, buriedFaces_, true, padded);

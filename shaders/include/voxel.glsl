@@ -44,8 +44,11 @@ const int kJunctionCount = 252;  // + 0: level, 1: facing down, 2: facing up (in
 // back to back, empty). A junction made one-sided after the walk (buried_faces.comp.glsl) reads as
 // it did before, so a walk of some columns again gives what the whole walk gave.
 const float kSolidFaceY = 0.25;
+int voxelCount(vec4 texel) { return int(texel.a * 255.0 + 0.5); }
+// The count that marks a junction the walk read as `faceY` (voxelFaceY's −1, 0 or 1).
+int junctionMarker(int faceY) { return kJunctionCount + (faceY < 0 ? 1 : (faceY > 0 ? 2 : 0)); }
 int voxelFaceY(vec4 texel) {
-    int count = int(texel.a * 255.0 + 0.5);
+    int count = voxelCount(texel);
     if (count >= kJunctionCount) {
         int marker = count - kJunctionCount;
         return marker == 1 ? -1 : (marker == 2 ? 1 : 0);
